@@ -1,0 +1,84 @@
+# Top-level build. GNU make; out-of-tree objects in $(BUILD); header
+# dependencies from -MMD; safe under make -j.
+#
+# Each area of the project adds its programs, tests and targets in a fragment
+# under mk/ (mk/<area>.mk); this file holds only what they share.
+
+BUILD   ?= build
+OUT     ?= out
+CC      ?= cc
+# make's built-in CC is "cc"; keep it unless the user overrides it.
+PYTHON  ?= python3
+
+# Quiet by default; V=1 shows the commands.
+ifeq ($(V),1)
+Q :=
+else
+Q := @
+endif
+
+WARN      := -Wall -Wextra -Werror -pedantic
+CSTD      := -std=c11 -D_POSIX_C_SOURCE=200809L
+# No FMA contraction: the double build is the reference and must be exact.
+HOST_OPT  := -O2 -g -ffp-contract=off
+ASAN_OPT  := -O1 -g -ffp-contract=off -fno-omit-frame-pointer \
+             -fsanitize=address,undefined -fno-sanitize-recover=all
+INCLUDES  := -I. -Ifirmware/core -Ihal -Itools/scene
+
+# Numeric modes of the renderer core: the value of NUM_MODE for each.
+NUM_MODES        := fixed float double
+NUM_MODE_fixed   := 1
+NUM_MODE_float   := 2
+NUM_MODE_double  := 3
+
+# Build variants of host code: "host" (optimised) and "asan" (ASan+UBSan).
+VARIANTS     := host asan
+VFLAGS_host  := $(HOST_OPT)
+VFLAGS_asan  := $(ASAN_OPT)
+LDFLAGS_host :=
+LDFLAGS_asan := -fsanitize=address,undefined
+
+# Object of SRC for VARIANT and MODE ("none" for mode-independent code):
+#   $(BUILD)/<variant>/<mode>/<src>.o
+obj = $(patsubst %.c,$(BUILD)/$(1)/$(2)/%.o,$(3))
+
+define COMPILE_RULES
+$(BUILD)/$(1)/$(2)/%.o: %.c
+	@mkdir -p $$(@D)
+	$(Q)$$(CC) $(CSTD) $(WARN) $(VFLAGS_$(1)) $(if $(filter none,$(2)),,-DNUM_MODE=$(NUM_MODE_$(2))) \
+		$(INCLUDES) $$(EXTRA_CFLAGS) -MMD -MP -c $$< -o $$@
+endef
+$(foreach v,$(VARIANTS),$(foreach m,none $(NUM_MODES),$(eval $(call COMPILE_RULES,$(v),$(m)))))
+
+# Programs built by `make`, tests run by `make test` (commands, one per
+# word; each prints PASS/FAIL lines, see tests/run.sh), and bench steps.
+PROGRAMS :=
+TESTS    :=
+TEST_DEPS :=
+BENCH_DEPS :=
+
+.PHONY: all run test firmware bench charts flash clean deps deps-test deps-firmware
+all: programs
+
+include $(sort $(wildcard mk/*.mk))
+
+.PHONY: programs
+programs: $(PROGRAMS)
+
+# Distribution packages: installed when root or passwordless sudo, otherwise
+# one line with the exact command to run. See tools/deps.sh.
+deps:
+	$(Q)tools/deps.sh run
+deps-test:
+	$(Q)tools/deps.sh test
+deps-firmware:
+	$(Q)tools/deps.sh firmware
+
+test: deps-test
+	$(Q)$(MAKE) --no-print-directory $(TEST_DEPS) $(PROGRAMS)
+	$(Q)tests/run.sh $(TESTS)
+
+clean:
+	rm -rf $(BUILD) $(OUT)
+
+-include $(shell find $(BUILD) -name '*.d' 2>/dev/null)

@@ -1,0 +1,168 @@
+/* num.h — the numeric layer: one scalar type, three builds.
+ *
+ * Every renderer algorithm is written once against this interface; the build
+ * picks the arithmetic with NUM_MODE:
+ *   NUM_MODE_FIXED  (1, firmware default)  num = int32_t, Q(31-NUM_FRAC).NUM_FRAC
+ *   NUM_MODE_FLOAT  (2)                    num = float
+ *   NUM_MODE_DOUBLE (3, the reference)     num = double
+ * Only files named num*.h / num*.c may test NUM_MODE; algorithms never do.
+ *
+ * Conventions that hold in every mode:
+ * - Comparisons (<, <=, ==, ...) are the plain C operators on num.
+ * - Arithmetic goes through the functions below (never +, -, * on num): in
+ *   fixed point they round to nearest and saturate instead of overflowing.
+ * - NUM_C(x) turns a double literal into a num constant at compile time
+ *   (no floating-point code is emitted in the fixed build).
+ * - wnum is the wide type for intermediates whose range argument needs it
+ *   (int64_t with the same NUM_FRAC fraction bits in fixed point; the mode's
+ *   floating type otherwise).
+ *
+ * Fixed point (default NUM_FRAC = 16, Q15.16):
+ *   range [-32768, 32768 - 2^-16], resolution 2^-16 = 1.53e-5.
+ *   Kinds of quantity and the ranges the renderers keep them in:
+ *     positions, distances, t      Q15.16, |x| < 32768 (scene units)
+ *     directions, normals          Q15.16, components in [-1, 1] once normalised
+ *     colours                      Q15.16, channels 0..255 (intermediates may exceed)
+ *     intensities                  Q15.16, 0..~16
+ *     depths (1/z)                 Q15.16 (1/z in (0, 1] for z >= 1)
+ *     texture coordinates          Q15.16, [0, 1] plus margin
+ *   Overflow saturates to NUM_MAX / NUM_MIN and increments num_saturations
+ *   when NUM_COUNT_SAT is defined (debug and test builds).
+ */
+#ifndef NUM_H
+#define NUM_H
+
+#include <stdint.h>
+
+#define NUM_MODE_FIXED  1
+#define NUM_MODE_FLOAT  2
+#define NUM_MODE_DOUBLE 3
+
+#ifndef NUM_MODE
+#define NUM_MODE NUM_MODE_FIXED
+#endif
+
+#if NUM_MODE == NUM_MODE_FIXED
+#ifndef NUM_FRAC
+#define NUM_FRAC 16
+#endif
+typedef int32_t num;
+typedef int64_t wnum;
+#define NUM_ONE_RAW   ((int32_t)1 << NUM_FRAC)
+/* Compile-time constant from a double literal, rounded to nearest. */
+#define NUM_C(x)      ((num)((x) * (double)NUM_ONE_RAW + ((x) >= 0 ? 0.5 : -0.5)))
+#define NUM_MAX       INT32_MAX
+#define NUM_MIN       (-INT32_MAX) /* symmetric: negation never overflows */
+#define NUM_EPS       ((num)1)     /* smallest positive value */
+#define NUM_NAME      "fixed"
+#elif NUM_MODE == NUM_MODE_FLOAT
+typedef float num;
+typedef float wnum;
+#define NUM_C(x)      ((num)(x))
+#define NUM_MAX       3.0e38f
+#define NUM_MIN       (-3.0e38f)
+#define NUM_EPS       1.0e-30f
+#define NUM_NAME      "float"
+#elif NUM_MODE == NUM_MODE_DOUBLE
+typedef double num;
+typedef double wnum;
+#define NUM_C(x)      ((num)(x))
+#define NUM_MAX       1.0e300
+#define NUM_MIN       (-1.0e300)
+#define NUM_EPS       1.0e-300
+#define NUM_NAME      "double"
+#else
+#error "NUM_MODE must be NUM_MODE_FIXED, NUM_MODE_FLOAT or NUM_MODE_DOUBLE"
+#endif
+
+#define NUM_ZERO NUM_C(0.0)
+#define NUM_ONE  NUM_C(1.0)
+#define NUM_HALF NUM_C(0.5)
+
+/* Saturation counter (debug and test builds; always 0 otherwise). */
+extern uint32_t num_saturations;
+
+/* ---- conversions ---------------------------------------------------- */
+num     num_from_int(int32_t i);          /* saturates outside the range */
+int32_t num_to_int(num a);                /* truncates toward zero (the book's T) */
+int32_t num_floor_int(num a);             /* floor */
+num     num_from_ratio(int32_t p, int32_t q); /* p/q rounded; q == 0 saturates */
+num     num_frac(num a);                  /* a - floor(a), in [0, 1) */
+/* Host-side only (parsers, tests): never called by the firmware core. */
+num     num_from_double(double d);        /* rounds to nearest, saturates */
+double  num_to_double(num a);
+
+/* ---- arithmetic (all modes; fixed point rounds to nearest, saturates) -- */
+num num_add(num a, num b);
+num num_sub(num a, num b);
+num num_neg(num a);
+num num_abs(num a);
+num num_mul(num a, num b);
+num num_mul_int(num a, int32_t k);
+num num_div(num a, num b);                /* b == 0: saturated, sign of a (0/0 = 0) */
+num num_div_int(num a, int32_t k);
+num num_recip(num a);                     /* 1/a; a == 0 saturates */
+num num_sqrt(num a);                      /* a <= 0 gives 0 */
+num num_rsqrt(num a);                     /* 1/sqrt(a); a <= 0 saturates to NUM_MAX */
+num num_powi(num base, uint32_t e);       /* base^e, e up to at least 1000 */
+num num_sin_deg(num deg);                 /* angles in degrees */
+num num_cos_deg(num deg);
+num num_min(num a, num b);
+num num_max(num a, num b);
+num num_clamp(num a, num lo, num hi);
+/* Colour channel quantisation, channel clamped to [0, 255] first (NaN -> 0):
+ * num_chan_levels(c, L) = floor(c*L/255 + 1/2) (L = 31 or 63 for RGB565);
+ * num_chan_byte(c) = c rounded to nearest, ties to even (the book's store). */
+uint32_t num_chan_levels(num c, uint32_t levels);
+uint8_t  num_chan_byte(num c);
+
+/* ---- wide intermediates ---------------------------------------------- */
+wnum wnum_from_num(num a);
+num  wnum_to_num(wnum a);                 /* saturates */
+wnum wnum_add(wnum a, wnum b);
+wnum wnum_sub(wnum a, wnum b);
+wnum wnum_mul(wnum a, wnum b);            /* saturates */
+wnum num_mul_wide(num a, num b);          /* exact product, one rounding, no saturation */
+num  wnum_div(wnum a, wnum b);            /* saturates; b == 0 as num_div */
+wnum wnum_sqrt(wnum a);                   /* a <= 0 gives 0 */
+num  wnum_to_num_shr(wnum a, int bits);   /* a / 2^bits, saturated */
+
+/* ---- vectors, matrices, colours (mode-independent code in vec.c) ------- */
+typedef struct { num x, y, z; } vec3;
+typedef struct { num x, y, z, w; } vec4;
+typedef struct { num m[3][3]; } mat3;     /* row-major, acts on column vectors */
+typedef struct { num m[4][4]; } mat4;     /* row-major, acts on column vectors */
+typedef struct { num r, g, b; } rgb;      /* channels 0..255, unclamped */
+
+vec3 v3(num x, num y, num z);
+vec3 v3_add(vec3 a, vec3 b);
+vec3 v3_sub(vec3 a, vec3 b);
+vec3 v3_neg(vec3 a);
+vec3 v3_scale(vec3 a, num s);
+num  v3_dot(vec3 a, vec3 b);              /* summed wide, rounded once */
+wnum v3_dot_wide(vec3 a, vec3 b);
+vec3 v3_cross(vec3 a, vec3 b);
+num  v3_len(vec3 a);
+vec3 v3_normalize(vec3 a);                /* zero vector stays zero */
+vec3 m3_mul_v3(const mat3 *m, vec3 v);
+mat3 m3_mul(const mat3 *a, const mat3 *b);
+mat3 m3_transpose(const mat3 *a);
+mat3 m3_identity(void);
+mat3 m3_rot_y_deg(num deg);               /* the book's MakeOYRotationMatrix */
+vec4 m4_mul_v4(const mat4 *m, vec4 v);
+mat4 m4_mul(const mat4 *a, const mat4 *b);
+mat4 m4_transpose(const mat4 *a);
+mat4 m4_identity(void);
+mat4 m4_from_m3(const mat3 *r);
+mat4 m4_translation(vec3 t);
+mat4 m4_scale(num k);
+
+rgb  rgb_make(num r, num g, num b);
+rgb  rgb_scale(rgb c, num k);
+rgb  rgb_add(rgb a, rgb b);
+/* Final colour write (contract's colour rules): channel clamped to [0, 255],
+ * RGB565 by r5 = floor(c*31/255 + 1/2) etc.; 8-bit by round half to even. */
+uint16_t rgb_to_565(rgb c);
+void     rgb_to_888(rgb c, uint8_t out[3]);
+
+#endif

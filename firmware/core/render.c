@@ -1,0 +1,61 @@
+/* render.c — dispatch to the scene's renderer, and the shared pixel write. */
+#include "render.h"
+
+void render_put(struct render_target *t, int x, int y, rgb c)
+{
+    size_t i = (size_t)(y - t->y0) * t->width + (size_t)x;
+    t->rgb565[i] = rgb_to_565(c);
+    if (t->rgb888) rgb_to_888(c, t->rgb888 + 3 * i);
+}
+
+/* Placeholder until the renderers exist: background and a test pattern. */
+static int placeholder_strip(struct render_ctx *ctx, struct render_target *t,
+                             struct render_stats *st)
+{
+    const struct scene *s = ctx->scene;
+    rgb bg = s->background_set ? s->background : rgb_make(NUM_C(255.0), NUM_C(255.0), NUM_C(255.0));
+    for (int y = t->y0; y < t->y1; y++)
+        for (int x = 0; x < t->width; x++) {
+            rgb c = bg;
+            int bar = x * 8 / t->width;
+            if (y >= t->height * 3 / 4)
+                c = rgb_make((bar & 1) ? NUM_C(255.0) : NUM_ZERO, (bar & 2) ? NUM_C(255.0) : NUM_ZERO,
+                             (bar & 4) ? NUM_C(255.0) : NUM_ZERO);
+            render_put(t, x, y, c);
+        }
+    st->pixels_written += (uint32_t)((t->y1 - t->y0) * t->width);
+    return 0;
+}
+
+size_t render_work_size(const struct scene *s, uint16_t width, uint16_t height, uint16_t strip_rows)
+{
+    (void)s; (void)width; (void)height; (void)strip_rows;
+    return 0;
+}
+
+int render_init(struct render_ctx *ctx, const struct scene *s, uint16_t width, uint16_t height,
+                uint16_t strip_rows, void *work, size_t work_size)
+{
+    if (width == 0 || height == 0 || strip_rows == 0) return -1;
+    if (work_size < render_work_size(s, width, height, strip_rows)) return -1;
+    ctx->scene = s;
+    ctx->width = width;
+    ctx->height = height;
+    ctx->strip_rows = strip_rows;
+    ctx->frame = 0;
+    ctx->work = work;
+    ctx->work_size = work_size;
+    return 0;
+}
+
+int render_begin_frame(struct render_ctx *ctx, uint16_t frame)
+{
+    ctx->frame = frame;
+    return 0;
+}
+
+int render_strip(struct render_ctx *ctx, struct render_target *t, struct render_stats *st)
+{
+    if (t->y0 >= t->y1 || t->y1 > ctx->height || t->width != ctx->width) return -1;
+    return placeholder_strip(ctx, t, st);
+}

@@ -1,0 +1,66 @@
+/* render.h — the renderer core's entry points, shared by both renderers.
+ *
+ * Conventions (the book's, with what real firmware adds):
+ * - Screen: width x height pixels, row 0 at the top. Canvas coordinates have
+ *   their origin at the centre, +x right, +y up: canvas (x, y) is column
+ *   width/2 + x, row height/2 - y - 1 (PutPixel of the book).
+ * - The scene's viewport keeps its height; its width follows the render
+ *   size's aspect ratio (viewport_w = viewport_h * width / height), so a
+ *   320x240 panel sees more to the sides, never a stretched image.
+ * - A frame is rendered strip by strip: render_strip() fills rows
+ *   [t->y0, t->y1) of a caller-provided buffer; a full frame is one strip.
+ *   Pixels the scene does not cover get the scene background (white for raster
+ *   scenes without one, as the book's page shows unwritten pixels).
+ * - Memory: no heap. The caller provides `work` memory of render_work_size()
+ *   bytes for the chosen size and strip height, and the strip buffers.
+ * - Not thread-safe per context; two cores may render different strips with
+ *   two contexts built from the same scene.
+ */
+#ifndef RENDER_H
+#define RENDER_H
+
+#include <stddef.h>
+#include <stdint.h>
+#include "scene.h"
+
+struct render_target {
+    uint16_t width, height;  /* whole frame */
+    uint16_t y0, y1;         /* rows of this strip: y0 <= row < y1 */
+    uint16_t *rgb565;        /* (y1-y0)*width pixels, native endian, row y at (y-y0)*width */
+    uint8_t *rgb888;         /* optional (NULL on firmware): 3 bytes a pixel, the colour
+                                before RGB565 quantisation (clamped, rounded half to even) */
+};
+
+struct render_stats {
+    uint32_t rays;
+    uint32_t triangles_in, triangles_drawn;
+    uint32_t pixels_written;
+};
+
+struct render_ctx {
+    const struct scene *scene;
+    uint16_t width, height, strip_rows;
+    uint16_t frame;
+    void *work;              /* renderer state, in caller memory */
+    size_t work_size;
+};
+
+/* Bytes of work memory the renderer needs for this scene at this size with
+ * strips of at most strip_rows rows. */
+size_t render_work_size(const struct scene *s, uint16_t width, uint16_t height, uint16_t strip_rows);
+
+/* 0 on success; -1 if work_size is too small or the size is invalid. */
+int render_init(struct render_ctx *ctx, const struct scene *s, uint16_t width, uint16_t height,
+                uint16_t strip_rows, void *work, size_t work_size);
+
+/* Prepares frame `frame` (animation, per-frame constants, binning). */
+int render_begin_frame(struct render_ctx *ctx, uint16_t frame);
+
+/* Renders rows [t->y0, t->y1) of the current frame into t. */
+int render_strip(struct render_ctx *ctx, struct render_target *t, struct render_stats *st);
+
+/* Writes one pixel of a strip (both outputs); x, y are screen coordinates
+ * inside the strip. Shared by both renderers. */
+void render_put(struct render_target *t, int x, int y, rgb c);
+
+#endif

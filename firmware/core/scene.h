@@ -1,0 +1,213 @@
+/* scene.h — what a scene contains, in the renderer's numbers.
+ *
+ * The one data model shared by the scene parser (host, tools/scene/), the
+ * scene compiler (tools/scenec, which emits this struct as const C data for
+ * the firmware) and both renderers. All numbers are `num` (see num.h), so a
+ * scene exists once per numeric mode; all arrays are pointers to data owned
+ * by whoever built the scene (the parser's arena on the host, flash on the
+ * firmware). Nothing in here is written by a renderer.
+ *
+ * Conventions (the book's): world space has +x right, +y up, +z forward;
+ * the camera looks along +z from `camera.position`, turned by
+ * `camera.rotation`; angles in the scene files are degrees.
+ * Canvas coordinates (2D primitives): origin at the centre, +y up, in units
+ * of the scene canvas (canvas_w x canvas_h, normally 600 x 600); the
+ * renderer scales them to the render size.
+ */
+#ifndef SCENE_H
+#define SCENE_H
+
+#include <stdint.h>
+#include "num.h"
+
+enum scene_kind { SCENE_RAYTRACE = 0, SCENE_RASTER = 1 };
+
+enum light_type { LIGHT_AMBIENT = 0, LIGHT_POINT = 1, LIGHT_DIRECTIONAL = 2 };
+
+struct scene_light {
+    uint8_t type;         /* enum light_type */
+    num intensity;
+    vec3 v;               /* position (point) or direction toward the light (directional),
+                             world space, unnormalised as given */
+};
+
+struct scene_camera {
+    vec3 position;
+    mat3 rotation;        /* applied to primary directions (ray tracer) / inverse applied
+                             to the world (rasterizer), as the book does */
+};
+
+/* Animation: per-frame increments applied before frame f (f = 0 is the
+ * scene as written). Angles in degrees per frame about the y axis. */
+struct scene_anim {
+    num rot_y_per_frame;
+    vec3 move_per_frame;
+};
+
+/* ---- ray tracer objects (part I) ---------------------------------------- */
+
+/* Material of a ray-traced object. specular < 0: no highlight (the book's -1). */
+struct rt_material {
+    rgb color;
+    num specular;         /* exponent, integral, 0..1000+; < 0 none */
+    num reflective;       /* 0..1 */
+    num transparency;     /* 0..1, chapter 5 extension */
+    num refraction;       /* index of refraction (1 = none) */
+};
+
+enum rt_shape { RT_SPHERE = 0, RT_PLANE = 1, RT_TRIANGLE = 2 };
+
+struct rt_object {
+    uint8_t shape;        /* enum rt_shape */
+    uint8_t csg_only;     /* 1: only used as a CSG operand, not drawn on its own */
+    struct rt_material mat;
+    vec3 center;          /* sphere centre */
+    num radius;           /* sphere radius */
+    vec3 normal;          /* plane: unit normal; plane points p satisfy dot(normal, p) = dist */
+    num dist;
+    vec3 p[3];            /* triangle corners */
+};
+
+enum csg_op { CSG_UNION = 0, CSG_INTERSECTION = 1, CSG_DIFFERENCE = 2 };
+
+/* Constructive solid geometry of two spheres (indices into objects[]). The
+ * result takes operand a's material. */
+struct rt_csg {
+    uint8_t op;           /* enum csg_op */
+    uint16_t a, b;
+};
+
+/* Chapter 5 switches of the ray tracer. */
+struct rt_options {
+    uint8_t recursion_depth;   /* reflection depth of primary rays (book: 3) */
+    uint8_t diffuse;           /* lighting step 4 on/off */
+    uint8_t specular;          /* lighting step 5 on/off */
+    uint8_t shadows;           /* lighting step 3 on/off */
+    uint8_t supersample;       /* rays per pixel side: 1 (off), 2, 3, 4 (=4/9/16 rays) */
+    uint8_t adaptive_ss;       /* adaptive supersampling */
+    uint8_t subsample;         /* primary-ray subsampling step (1 = off) */
+    uint8_t bvh;               /* bounding-sphere hierarchy */
+    uint8_t shadow_any_hit;    /* any-hit shadow rays */
+    uint8_t shadow_cache;      /* last-occluder cache */
+    num t_min_primary;         /* book: 1 */
+    num epsilon;               /* shadow/reflection ray start, book: 0.001 */
+};
+
+/* ---- rasterizer data (part II) ------------------------------------------ */
+
+struct tri_uv { num u, v; };
+
+struct ras_triangle {
+    uint16_t v[3];        /* vertex indices */
+    rgb color;
+    vec3 n[3];            /* per-corner normals (model space); unused if has_normals == 0 */
+    struct tri_uv uv[3];  /* per-corner texture coordinates; unused if model untextured */
+};
+
+struct ras_model {
+    const char *name;
+    uint16_t nverts, ntris;
+    const vec3 *verts;
+    const struct ras_triangle *tris;
+    uint8_t has_normals;
+    uint8_t has_uvs;
+    vec3 bound_center;
+    num bound_radius;
+};
+
+enum tex_filter { TEX_NEAREST = 0, TEX_BILINEAR = 1, TEX_TRILINEAR = 2, TEX_BILINEAR_BOOK = 3 };
+
+struct ras_texture {
+    uint16_t w, h;
+    const uint8_t *rgb;   /* w*h*3 bytes, row 0 at the top */
+    uint8_t filter;       /* enum tex_filter */
+    uint8_t mip_levels;   /* >1 when mipmaps are present (level i at mip[i]) */
+    const uint8_t *const *mip;
+};
+
+struct ras_instance {
+    uint16_t model;
+    int16_t texture;      /* -1: none */
+    int16_t normal_map;   /* -1: none */
+    vec3 position;
+    mat3 rotation;
+    num scale;
+    num specular;         /* exponent; < 0 none */
+    struct scene_anim anim;
+};
+
+enum shading { SHADE_FLAT = 0, SHADE_GOURAUD = 1, SHADE_PHONG = 2, SHADE_NONE = 3 };
+
+/* 2D canvas primitives of raster-01 … raster-04. */
+enum prim2d_kind {
+    P2D_LINE_BROKEN = 0,  /* raster-01 DrawLineBroken */
+    P2D_LINE = 1,         /* DrawLine */
+    P2D_WIRE_TRI = 2,     /* DrawWireframeTriangle */
+    P2D_FILLED_TRI = 3,   /* DrawFilledTriangle (untruncated spans) */
+    P2D_SHADED_TRI = 4,   /* DrawShadedTriangle, h per corner */
+};
+
+struct prim2d {
+    uint8_t kind;         /* enum prim2d_kind */
+    uint8_t npts;         /* 2 (lines) or 3 */
+    num x[3], y[3], h[3]; /* canvas coordinates, intensities */
+    rgb color;
+};
+
+/* 3D lines in world space drawn through ProjectVertex (raster-05). */
+struct line3d { vec3 a, b; rgb color; };
+
+struct ras_options {
+    uint8_t shading;          /* enum shading; SHADE_NONE = flat triangle colour */
+    uint8_t wireframe;        /* draw triangles as wireframes (raster-06 … 09) */
+    uint8_t project_truncate; /* T() on projected points (raster-10 +) */
+    uint8_t clip;             /* 0 off, 1 book (cull instances, drop straddling
+                                 triangles), 2 split triangles at the planes */
+    uint8_t depth_test;       /* 1/z depth buffer */
+    uint8_t depth_bits;       /* 16 or 32 */
+    uint8_t backface_cull;
+    uint8_t computed_normals; /* use face normals instead of model normals */
+    uint8_t diffuse, specular;
+    uint8_t perspective_uv;   /* u/z, v/z interpolation (default on) */
+    uint8_t instance_transform; /* 0: raster-07 plain translation of vertices */
+    uint8_t camera_transform;   /* apply the camera matrix */
+    uint8_t shadow_map;         /* chapter 15: 0 off, 1 shadow map + PCF */
+    uint8_t shadow_volume;      /* chapter 15: stencil shadow volumes (depth-fail) */
+    uint8_t env_map;            /* chapter 15: environment mapping */
+    uint8_t subpixel_bits;      /* sub-pixel vertex precision (0 = book's integer) */
+    uint8_t book_exact;         /* reproduce the demos' quirks bit for bit */
+};
+
+/* ---- the scene ------------------------------------------------------- */
+
+struct scene {
+    const char *name;
+    uint8_t kind;                 /* enum scene_kind */
+    uint16_t canvas_w, canvas_h;  /* the scene's own canvas (book: 600 x 600) */
+    num viewport_w, viewport_h, projection_d;
+    rgb background;               /* colour of pixels nothing covers */
+    uint8_t background_set;       /* 0: raster default (unwritten = white) */
+    struct scene_camera camera;
+    struct scene_anim camera_anim;
+    uint16_t frames;              /* frames of animation the scene defines (>= 1) */
+
+    uint16_t nlights;
+    const struct scene_light *lights;
+
+    /* ray tracer */
+    uint16_t nobjects, ncsg;
+    const struct rt_object *objects;
+    const struct rt_csg *csg;
+    struct rt_options rt;
+
+    /* rasterizer */
+    uint16_t nmodels, ninstances, ntextures, nprims, nlines;
+    const struct ras_model *models;
+    const struct ras_instance *instances;
+    const struct ras_texture *textures;
+    const struct prim2d *prims;
+    const struct line3d *lines;
+    struct ras_options ras;
+};
+
+#endif

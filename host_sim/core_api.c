@@ -1,0 +1,49 @@
+/* core_api.c — the per-mode table (compiled once per NUM_MODE). */
+#include "core_api.h"
+#include "scene_parse.h"
+
+#define CAT2(a, b) a##b
+#define CAT(a, b) CAT2(a, b)
+#if NUM_MODE == NUM_MODE_FIXED
+#define API core_api_fixed
+#elif NUM_MODE == NUM_MODE_FLOAT
+#define API core_api_float
+#else
+#define API core_api_double
+#endif
+
+static int load(const char *path, void **scene, char *err, size_t errlen)
+{
+    struct scene *s = NULL;
+    int rc = scene_load(path, &s, err, errlen);
+    *scene = s;
+    return rc;
+}
+
+static void free_scene(void *scene) { scene_free(scene); }
+
+static void info(const void *scene, struct scene_info *out)
+{
+    const struct scene *s = scene;
+    out->name = s->name;
+    out->kind = s->kind;
+    out->canvas_w = s->canvas_w;
+    out->canvas_h = s->canvas_h;
+    out->frames = s->frames;
+}
+
+static size_t work_size(const void *scene, uint16_t w, uint16_t h, uint16_t strip_rows)
+{
+    return render_work_size(scene, w, h, strip_rows);
+}
+
+static int init(struct render_ctx *ctx, const void *scene, uint16_t w, uint16_t h,
+                uint16_t strip_rows, void *work, size_t work_size)
+{
+    return render_init(ctx, scene, w, h, strip_rows, work, work_size);
+}
+
+const struct core_api API = {
+    NUM_NAME, load, free_scene, info, work_size, init, render_begin_frame, render_strip,
+    &num_saturations,
+};

@@ -1,0 +1,41 @@
+/* core_api.h — one renderer core per numeric mode, side by side in one program.
+ *
+ * The core (firmware/core) and the scene parser (tools/scene) are compiled
+ * three times, once per NUM_MODE, and each copy is linked into a single
+ * relocatable object whose only global symbol is its core_api_<mode>; host
+ * programs pick a mode at run time through this table. Scenes are opaque
+ * here because their numbers differ between modes.
+ */
+#ifndef CORE_API_H
+#define CORE_API_H
+
+#include <stddef.h>
+#include <stdint.h>
+#include "render.h"
+
+struct scene_info {
+    const char *name;
+    int kind;                  /* enum scene_kind */
+    uint16_t canvas_w, canvas_h;
+    uint16_t frames;
+};
+
+struct core_api {
+    const char *numeric;       /* "fixed", "float", "double" */
+    int (*scene_load)(const char *path, void **scene, char *err, size_t errlen);
+    void (*scene_free)(void *scene);
+    void (*scene_info)(const void *scene, struct scene_info *info);
+    size_t (*work_size)(const void *scene, uint16_t w, uint16_t h, uint16_t strip_rows);
+    int (*init)(struct render_ctx *ctx, const void *scene, uint16_t w, uint16_t h,
+                uint16_t strip_rows, void *work, size_t work_size);
+    int (*begin_frame)(struct render_ctx *ctx, uint16_t frame);
+    int (*render_strip)(struct render_ctx *ctx, struct render_target *t, struct render_stats *st);
+    uint32_t *saturations;     /* the mode's saturation counter */
+};
+
+extern const struct core_api core_api_fixed, core_api_float, core_api_double;
+
+/* The table for "fixed", "float" or "double"; NULL otherwise. */
+const struct core_api *core_api_by_name(const char *numeric);
+
+#endif

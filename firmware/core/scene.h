@@ -91,6 +91,8 @@ struct rt_options {
     uint8_t shadow_cache;      /* last-occluder cache */
     num t_min_primary;         /* book: 1 */
     num epsilon;               /* shadow/reflection ray start, book: 0.001 */
+    uint8_t unlit;             /* 1: no ComputeLighting, a hit shows the object's colour
+                                  as is (raytracer-01); 0 (default): lit */
 };
 
 /* ---- rasterizer data (part II) ------------------------------------------ */

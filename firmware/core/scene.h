@@ -93,6 +93,9 @@ struct rt_options {
     num epsilon;               /* shadow/reflection ray start, book: 0.001 */
     uint8_t unlit;             /* 1: no ComputeLighting, a hit shows the object's colour
                                   as is (raytracer-01); 0 (default): lit */
+    uint8_t formulation;       /* 0 (default): the mode's own (book operation order in double,
+                                  robust intersection elsewhere); 1: book order; 2: robust */
+    uint8_t no_frame_cache;    /* 1: recompute per-frame constants per ray (to measure the cache) */
 };
 
 /* ---- rasterizer data (part II) ------------------------------------------ */

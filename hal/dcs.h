@@ -64,6 +64,7 @@ struct dcs {
     const struct hal *hal;       /* not owned; must outlive the dcs */
     uint16_t x_off, y_off;       /* added to CASET / RASET addresses */
     uint32_t bytes_sent;         /* SPI bytes sent so far (statistics; wraps) */
+    uint8_t next_buf;            /* buffer to fill next (the other may be on the bus) */
     uint8_t buf[2][DCS_CHUNK_BYTES];
 };
 

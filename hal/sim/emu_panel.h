@@ -51,7 +51,7 @@ struct emu_panel {
     const struct emu_module *mod;
     uint8_t view;                /* glass viewed turned by view*90 degrees, see emu_panel_init */
     /* bus state */
-    uint8_t cs, dc, reset;       /* line levels */
+    uint8_t cs, dc, reset, bl;   /* line levels */
     uint8_t cs_tied_low;         /* module without CS pin: always selected */
     uint64_t offset;             /* SPI bytes seen */
     uint64_t reset_low_ns;
@@ -67,9 +67,13 @@ struct emu_panel {
     uint8_t cont_valid;          /* RAMWRC may continue */
     uint16_t xs, xe, ys, ye;     /* window (logical, inclusive) */
     uint16_t cx, cy;             /* address counter (logical) */
-    uint64_t busy_until_ns;      /* no command before this time */
-    uint64_t slpout_ok_ns;       /* no SLPOUT before this time */
-    uint64_t slpin_ok_ns;        /* no SLPIN before this time */
+    uint64_t busy_until_ns;      /* no command before this time ... */
+    uint64_t busy_since_ns;      /* ... counted from this event */
+    const char *busy_why;        /* ... named so */
+    uint64_t slpout_ok_ns, slpout_since_ns;  /* no SLPOUT before this time */
+    const char *slpout_why;
+    uint64_t slpin_ok_ns, slpin_since_ns;    /* no SLPIN before this time */
+    const char *slpin_why;
     uint64_t pixels_written;
     char violation[EMU_MSG_LEN]; /* empty: none */
     uint16_t mem[EMU_MEM_H][EMU_MEM_W];

@@ -1,0 +1,109 @@
+/* panel.c — the generic part of the panel drivers: runs a descriptor's
+ * tables through the DCS layer. Controller specifics live in the
+ * descriptors (panel_st7789.c, panel_ili9341.c). */
+#include <string.h>
+#include "panel.h"
+
+const struct panel_desc *const panel_all[] = {
+    &panel_st7789_240x240, &panel_st7789_240x320,
+    &panel_ili9341_320x240, &panel_ili9341_240x320, NULL,
+};
+
+const struct panel_desc *panel_find(const char *name)
+{
+    if (!name)
+        return NULL;
+    if (strcmp(name, "st7789") == 0)
+        return &panel_st7789_240x240;
+    if (strcmp(name, "ili9341") == 0)
+        return &panel_ili9341_320x240;
+    for (size_t i = 0; panel_all[i]; i++)
+        if (strcmp(name, panel_all[i]->name) == 0)
+            return panel_all[i];
+    return NULL;
+}
+
+int panel_set_rotation(struct panel *p, uint8_t rotation)
+{
+    if (rotation > 3)
+        return -1;
+    const struct panel_desc *d = p->desc;
+    p->rotation = rotation;
+    p->width = (rotation & 1) ? d->height : d->width;
+    p->height = (rotation & 1) ? d->width : d->height;
+    p->dcs.x_off = d->x_off[rotation];
+    p->dcs.y_off = d->y_off[rotation];
+    return dcs_command(&p->dcs, DCS_MADCTL, &d->madctl[rotation], 1);
+}
+
+int panel_init(struct panel *p, const struct panel_desc *d, const struct hal *hal, uint8_t rotation)
+{
+    if (rotation > 3 || !d || !hal)
+        return -1;
+    p->desc = d;
+    int rc = dcs_init(&p->dcs, hal);
+    hal->line_set(hal->ctx, HAL_LINE_BL, 0);
+    if (rc == 0)
+        rc = dcs_hw_reset(&p->dcs, d->reset_low_ms, d->reset_wait_ms);
+    for (size_t i = 0; rc == 0 && i < d->init_len; i++) {
+        const struct panel_cmd *c = &d->init[i];
+        rc = dcs_command(&p->dcs, c->cmd, c->params, c->n);
+        if (rc == 0 && c->delay_ms)
+            dcs_delay_ms(&p->dcs, c->delay_ms);
+    }
+    if (rc == 0)
+        rc = panel_set_rotation(p, rotation);
+    if (rc == 0)
+        rc = dcs_command(&p->dcs, d->invert ? DCS_INVON : DCS_INVOFF, NULL, 0);
+    /* Memory holds noise after power-on: clear it before the glass shows it. */
+    if (rc == 0)
+        rc = panel_fill(p, 0, 0, p->width, p->height, 0x0000);
+    if (rc == 0)
+        rc = panel_display(p, 1);
+    if (rc == 0)
+        hal->line_set(hal->ctx, HAL_LINE_BL, 1);
+    return rc;
+}
+
+static int rect_ok(const struct panel *p, uint16_t x, uint16_t y, uint16_t w, uint16_t h)
+{
+    return w > 0 && h > 0 && (uint32_t)x + w <= p->width && (uint32_t)y + h <= p->height;
+}
+
+int panel_flush(struct panel *p, uint16_t x, uint16_t y, uint16_t w, uint16_t h, const uint16_t *px)
+{
+    if (!rect_ok(p, x, y, w, h) || !px)
+        return -1;
+    return dcs_flush(&p->dcs, x, y, w, h, px);
+}
+
+int panel_fill(struct panel *p, uint16_t x, uint16_t y, uint16_t w, uint16_t h, uint16_t colour)
+{
+    if (!rect_ok(p, x, y, w, h))
+        return -1;
+    int rc = dcs_set_window(&p->dcs, x, y, (uint16_t)(x + w - 1), (uint16_t)(y + h - 1));
+    if (rc == 0)
+        rc = dcs_write_begin(&p->dcs, 0);
+    if (rc == 0)
+        rc = dcs_write_fill(&p->dcs, colour, (size_t)w * h);
+    int rc2 = dcs_write_end(&p->dcs);
+    return rc ? rc : rc2;
+}
+
+int panel_display(struct panel *p, int on)
+{
+    return dcs_command(&p->dcs, on ? DCS_DISPON : DCS_DISPOFF, NULL, 0);
+}
+
+/* Both controllers: 5 ms before the next command after SLPIN/SLPOUT, and
+ * 120 ms between SLPOUT and a following SLPIN (and back). Waiting 120 ms
+ * after either covers all cases. */
+int panel_sleep(struct panel *p, int sleep)
+{
+    int rc = dcs_command(&p->dcs, sleep ? DCS_SLPIN : DCS_SLPOUT, NULL, 0);
+    dcs_delay_ms(&p->dcs, 120);
+    return rc;
+}
+
+uint16_t panel_width(const struct panel *p) { return p->width; }
+uint16_t panel_height(const struct panel *p) { return p->height; }

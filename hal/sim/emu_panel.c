@@ -1,0 +1,567 @@
+/* emu_panel.c — emulated ST7789 / ILI9341 controller behind a module glass.
+ *
+ * Model (datasheet behaviour; the rules are listed in docs/hal.md):
+ * - A byte with D/C low is a command; with D/C high, a parameter of the
+ *   current command (or pixel data after RAMWR/RAMWRC). A command's
+ *   parameters end at the next command byte, a reset, or emu_panel_finish.
+ * - Memory address mapping (MADCTL): MV exchanges the window's x/y with
+ *   memory row/column, then MX mirrors the column and MY the row.
+ * - The address counter moves along x, wraps to xs and steps y at xe, and
+ *   wraps to (xs, ys) after (xe, ye).
+ * - Waits: any command at least 5 ms after SWRESET, hardware reset, SLPIN and
+ *   SLPOUT; SLPOUT at least 120 ms after SLPIN, a hardware reset, or a
+ *   SWRESET sent while awake; SLPIN at least 120 ms after SLPOUT.
+ */
+#include <stdio.h>
+#include <string.h>
+#include "emu_panel.h"
+
+#define MS 1000000ull
+#define M_ST (1u << EMU_ST7789)
+#define M_IL (1u << EMU_ILI9341)
+#define M_ALL (M_ST | M_IL)
+
+enum { F_PIXELS = 1, F_NOTEMU = 2 };
+
+struct cmd_info {
+    uint8_t code;
+    uint8_t models;
+    uint8_t min, max;   /* parameter bytes */
+    uint8_t flags;
+    const char *name;
+};
+
+static const struct cmd_info cmds[] = {
+    { 0x00, M_ALL, 0, 0, 0, "NOP" },
+    { 0x01, M_ALL, 0, 0, 0, "SWRESET" },
+    { 0x10, M_ALL, 0, 0, 0, "SLPIN" },
+    { 0x11, M_ALL, 0, 0, 0, "SLPOUT" },
+    { 0x12, M_ALL, 0, 0, F_NOTEMU, "PTLON" },
+    { 0x13, M_ALL, 0, 0, 0, "NORON" },
+    { 0x20, M_ALL, 0, 0, 0, "INVOFF" },
+    { 0x21, M_ALL, 0, 0, 0, "INVON" },
+    { 0x26, M_ALL, 1, 1, 0, "GAMSET" },
+    { 0x28, M_ALL, 0, 0, 0, "DISPOFF" },
+    { 0x29, M_ALL, 0, 0, 0, "DISPON" },
+    { 0x2A, M_ALL, 4, 4, 0, "CASET" },
+    { 0x2B, M_ALL, 4, 4, 0, "RASET" },
+    { 0x2C, M_ALL, 0, 0, F_PIXELS, "RAMWR" },
+    { 0x30, M_ALL, 4, 4, F_NOTEMU, "PTLAR" },
+    { 0x33, M_ALL, 6, 6, F_NOTEMU, "VSCRDEF" },
+    { 0x34, M_ALL, 0, 0, 0, "TEOFF" },
+    { 0x35, M_ALL, 1, 1, 0, "TEON" },
+    { 0x36, M_ALL, 1, 1, 0, "MADCTL" },
+    { 0x37, M_ALL, 2, 2, F_NOTEMU, "VSCSAD" },
+    { 0x38, M_ALL, 0, 0, 0, "IDMOFF" },
+    { 0x39, M_ALL, 0, 0, 0, "IDMON" },
+    { 0x3A, M_ALL, 1, 1, 0, "COLMOD" },
+    { 0x3C, M_ALL, 0, 0, F_PIXELS, "RAMWRC" },
+    { 0x44, M_ALL, 2, 2, 0, "TESCAN" },
+    { 0x51, M_ALL, 1, 1, 0, "WRDISBV" },
+    { 0x53, M_ALL, 1, 1, 0, "WRCTRLD" },
+    { 0x55, M_ALL, 1, 1, 0, "WRCACE" },
+    { 0x5E, M_ALL, 1, 1, 0, "WRCABCMB" },
+    /* ST7789 panel/power registers */
+    { 0xB0, M_ST, 2, 2, 0, "RAMCTRL" },
+    { 0xB2, M_ST, 5, 5, 0, "PORCTRL" },
+    { 0xB3, M_ST, 3, 3, 0, "FRCTRL1" },
+    { 0xB7, M_ST, 1, 1, 0, "GCTRL" },
+    { 0xBA, M_ST, 1, 1, 0, "DGMEN" },
+    { 0xBB, M_ST, 1, 1, 0, "VCOMS" },
+    { 0xC0, M_ST, 1, 1, 0, "LCMCTRL" },
+    { 0xC2, M_ST, 1, 2, 0, "VDVVRHEN" },
+    { 0xC3, M_ST, 1, 1, 0, "VRHS" },
+    { 0xC4, M_ST, 1, 1, 0, "VDVS" },
+    { 0xC5, M_ST, 1, 1, 0, "VCMOFSET" },
+    { 0xC6, M_ST, 1, 1, 0, "FRCTRL2" },
+    { 0xD0, M_ST, 2, 2, 0, "PWCTRL1" },
+    { 0xE0, M_ST, 14, 14, 0, "PVGAMCTRL" },
+    { 0xE1, M_ST, 14, 14, 0, "NVGAMCTRL" },
+    { 0xE4, M_ST, 3, 3, 0, "GATECTRL" },
+    { 0xE7, M_ST, 1, 1, 0, "SPI2EN" },
+    { 0xE9, M_ST, 3, 3, 0, "EQCTRL" },
+    /* ILI9341 panel/power registers */
+    { 0xB0, M_IL, 1, 1, 0, "IFMODE" },
+    { 0xB1, M_IL, 2, 2, 0, "FRMCTR1" },
+    { 0xB2, M_IL, 2, 2, 0, "FRMCTR2" },
+    { 0xB3, M_IL, 2, 2, 0, "FRMCTR3" },
+    { 0xB4, M_IL, 1, 1, 0, "INVTR" },
+    { 0xB5, M_IL, 4, 4, 0, "PRCTR" },
+    { 0xB6, M_IL, 3, 4, 0, "DISCTRL" },
+    { 0xB7, M_IL, 1, 1, 0, "ETMOD" },
+    { 0xC0, M_IL, 1, 1, 0, "PWCTRL1" },
+    { 0xC1, M_IL, 1, 1, 0, "PWCTRL2" },
+    { 0xC5, M_IL, 2, 2, 0, "VMCTRL1" },
+    { 0xC7, M_IL, 1, 1, 0, "VMCTRL2" },
+    { 0xCB, M_IL, 5, 5, 0, "PWCTRLA" },
+    { 0xCF, M_IL, 3, 3, 0, "PWCTRLB" },
+    { 0xE0, M_IL, 15, 15, 0, "PGAMCTRL" },
+    { 0xE1, M_IL, 15, 15, 0, "NGAMCTRL" },
+    { 0xE8, M_IL, 3, 3, 0, "DTCA" },
+    { 0xEA, M_IL, 2, 2, 0, "DTCB" },
+    { 0xED, M_IL, 4, 4, 0, "PWRSEQ" },
+    { 0xF2, M_IL, 1, 1, 0, "EN3G" },
+    { 0xF6, M_IL, 3, 3, 0, "IFCTL" },
+    { 0xF7, M_IL, 1, 1, 0, "PRC" },
+};
+
+static const char *const model_name[] = { "ST7789", "ILI9341" };
+
+const struct emu_module emu_module_st7789_240x240 = {
+    "st7789_240x240", EMU_ST7789, 240, 240, 0, 0, 0, 0, 1, 1,
+};
+const struct emu_module emu_module_st7789_240x320 = {
+    "st7789_240x320", EMU_ST7789, 240, 320, 0, 0, 0, 0, 1, 1,
+};
+const struct emu_module emu_module_ili9341_240x320 = {
+    "ili9341_240x320", EMU_ILI9341, 240, 320, 0, 0, 1, 1, 0, 0,
+};
+
+const struct emu_module *emu_module_find(const char *name, uint8_t *view)
+{
+    static const struct { const char *name; const struct emu_module *m; uint8_t view; } t[] = {
+        { "st7789", &emu_module_st7789_240x240, 0 },
+        { "st7789_240x240", &emu_module_st7789_240x240, 0 },
+        { "st7789_240x320", &emu_module_st7789_240x320, 0 },
+        { "ili9341", &emu_module_ili9341_240x320, 1 },
+        { "ili9341_320x240", &emu_module_ili9341_240x320, 1 },
+        { "ili9341_240x320", &emu_module_ili9341_240x320, 0 },
+    };
+    for (size_t i = 0; name && i < sizeof t / sizeof t[0]; i++)
+        if (strcmp(name, t[i].name) == 0) {
+            if (view)
+                *view = t[i].view;
+            return t[i].m;
+        }
+    return NULL;
+}
+
+static const struct cmd_info *lookup(const struct emu_panel *p, uint8_t code)
+{
+    unsigned bit = 1u << p->mod->model;
+    for (size_t i = 0; i < sizeof cmds / sizeof cmds[0]; i++)
+        if (cmds[i].code == code && (cmds[i].models & bit))
+            return &cmds[i];
+    return NULL;
+}
+
+static const char *cmd_name(const struct emu_panel *p, int code)
+{
+    const struct cmd_info *c = code < 0 ? NULL : lookup(p, (uint8_t)code);
+    return c ? c->name : "UNKNOWN";
+}
+
+/* Records the first violation: "<NAME> (0x<HH>) at byte <N>: <what>", or
+ * "<LINE> at byte <N>: <what>" when code < 0 (name is then the line). */
+static void violate(struct emu_panel *p, const char *name, int code, uint64_t at, const char *what)
+{
+    if (p->violation[0])
+        return;
+    if (code >= 0)
+        snprintf(p->violation, sizeof p->violation, "%s (0x%02X) at byte %llu: %s",
+                 name, (unsigned)code, (unsigned long long)at, what);
+    else
+        snprintf(p->violation, sizeof p->violation, "%s at byte %llu: %s",
+                 name, (unsigned long long)at, what);
+}
+
+static void vcmd(struct emu_panel *p, int code, const char *what)
+{
+    violate(p, cmd_name(p, code), code, p->offset, what);
+}
+
+/* Register state after a hardware reset or SWRESET (memory is kept). */
+static void reset_regs(struct emu_panel *p)
+{
+    p->cur = -1;
+    p->nparam = 0;
+    p->half = 0;
+    p->asleep = 1;
+    p->display_on = 0;
+    p->inverted = 0;
+    p->idle = 0;
+    p->colmod = 0x66;
+    p->madctl = 0;
+    p->window_set = 0;
+    p->cont_valid = 0;
+    p->xs = 0;
+    p->xe = EMU_MEM_W - 1;
+    p->ys = 0;
+    p->ye = EMU_MEM_H - 1;
+    p->cx = 0;
+    p->cy = 0;
+}
+
+static void set_wait(uint64_t *until, const char **why, uint64_t t, uint64_t d, const char *reason,
+                     uint64_t *since)
+{
+    *until = t + d;
+    *why = reason;
+    *since = t;
+}
+
+/* A hardware reset is released at t. */
+static void hw_reset_done(struct emu_panel *p, uint64_t t)
+{
+    reset_regs(p);
+    set_wait(&p->busy_until_ns, &p->busy_why, t, 5 * MS, "hardware reset", &p->busy_since_ns);
+    set_wait(&p->slpout_ok_ns, &p->slpout_why, t, 120 * MS, "hardware reset", &p->slpout_since_ns);
+    p->slpin_ok_ns = 0;
+}
+
+int emu_panel_init(struct emu_panel *p, const struct emu_module *mod, uint8_t view)
+{
+    if (!mod || view > 3)
+        return -1;
+    memset(p, 0, sizeof *p);
+    p->mod = mod;
+    p->view = view;
+    p->cs = 1;
+    p->dc = 1;
+    p->reset = 1;
+    p->bl = 1;
+    /* Power-on memory content is undefined; a fixed xorshift32 sequence
+     * stands for it so that unwritten areas are visible and reproducible. */
+    uint32_t s = 0x2545F491u;
+    for (int r = 0; r < EMU_MEM_H; r++)
+        for (int c = 0; c < EMU_MEM_W; c++) {
+            s ^= s << 13;
+            s ^= s >> 17;
+            s ^= s << 5;
+            p->mem[r][c] = (uint16_t)s;
+        }
+    hw_reset_done(p, 0);
+    return 0;
+}
+
+/* Memory limits of the window's x and y in the current orientation. */
+static uint16_t lim_x(const struct emu_panel *p) { return (p->madctl & 0x20) ? EMU_MEM_H : EMU_MEM_W; }
+static uint16_t lim_y(const struct emu_panel *p) { return (p->madctl & 0x20) ? EMU_MEM_W : EMU_MEM_H; }
+
+/* The current command ends (a new command, a reset, or the end). */
+static void end_command(struct emu_panel *p)
+{
+    if (p->cur < 0)
+        return;
+    const struct cmd_info *c = lookup(p, (uint8_t)p->cur);
+    char what[80];
+    if (c->flags & F_PIXELS) {
+        if (p->half)
+            vcmd(p, p->cur, "ended with half a pixel (odd number of data bytes)");
+    } else if (p->nparam < c->min) {
+        snprintf(what, sizeof what, "%u parameter bytes, needs %u", (unsigned)p->nparam,
+                 (unsigned)c->min);
+        vcmd(p, p->cur, what);
+    }
+    p->cur = -1;
+    p->nparam = 0;
+    p->half = 0;
+}
+
+static int too_soon(struct emu_panel *p, uint8_t code, uint64_t t, uint64_t until,
+                    uint64_t since, const char *why)
+{
+    if (t >= until)
+        return 0;
+    char what[100];
+    snprintf(what, sizeof what, "sent %llu us after %s, needs %llu us",
+             (unsigned long long)((t - since) / 1000), why,
+             (unsigned long long)((until - since) / 1000));
+    vcmd(p, code, what);
+    return 1;
+}
+
+/* Checks before pixel data may follow RAMWR / RAMWRC. */
+static void start_write(struct emu_panel *p, uint8_t code)
+{
+    char what[100];
+    if (p->asleep) {
+        vcmd(p, code, "memory write while asleep (no SLPOUT since reset or SLPIN)");
+    } else if (p->window_set != 3) {
+        vcmd(p, code, (p->window_set & 1) ? "memory write before RASET set the rows"
+                     : (p->window_set & 2) ? "memory write before CASET set the columns"
+                     : "memory write before CASET/RASET set a window");
+    } else if ((p->colmod & 7) != 5) {
+        snprintf(what, sizeof what, "memory write with COLMOD 0x%02X (only 16-bit, 0x55, emulated)",
+                 (unsigned)p->colmod);
+        vcmd(p, code, what);
+    } else if (p->xe >= lim_x(p) || p->ye >= lim_y(p)) {
+        snprintf(what, sizeof what, "window %u..%u x %u..%u outside the memory (%ux%u)",
+                 (unsigned)p->xs, (unsigned)p->xe, (unsigned)p->ys, (unsigned)p->ye,
+                 (unsigned)lim_x(p), (unsigned)lim_y(p));
+        vcmd(p, code, what);
+    } else if (code == 0x3C && !p->cont_valid) {
+        vcmd(p, code, "no RAMWR to continue since the window or MADCTL changed");
+    } else if (code == 0x2C) {
+        p->cx = p->xs;
+        p->cy = p->ys;
+        p->cont_valid = 1;
+    }
+}
+
+static void command(struct emu_panel *p, uint8_t code, uint64_t t)
+{
+    end_command(p);
+    if (p->violation[0])
+        return;
+    const struct cmd_info *c = lookup(p, code);
+    char what[60];
+    if (!c) {
+        snprintf(what, sizeof what, "not a %s command", model_name[p->mod->model]);
+        vcmd(p, code, what);
+        return;
+    }
+    if (c->flags & F_NOTEMU) {
+        vcmd(p, code, "not emulated");
+        return;
+    }
+    if (too_soon(p, code, t, p->busy_until_ns, p->busy_since_ns, p->busy_why))
+        return;
+    p->cur = code;
+    p->nparam = 0;
+    switch (code) {
+    case 0x01: {    /* SWRESET */
+        int awake = !p->asleep;
+        reset_regs(p);
+        set_wait(&p->busy_until_ns, &p->busy_why, t, 5 * MS, "SWRESET", &p->busy_since_ns);
+        if (awake)
+            set_wait(&p->slpout_ok_ns, &p->slpout_why, t, 120 * MS, "SWRESET", &p->slpout_since_ns);
+        p->slpin_ok_ns = 0;
+        p->cur = code;
+        break;
+    }
+    case 0x10:      /* SLPIN */
+        if (too_soon(p, code, t, p->slpin_ok_ns, p->slpin_since_ns, p->slpin_why))
+            return;
+        if (!p->asleep) {
+            p->asleep = 1;
+            set_wait(&p->slpout_ok_ns, &p->slpout_why, t, 120 * MS, "SLPIN", &p->slpout_since_ns);
+        }
+        set_wait(&p->busy_until_ns, &p->busy_why, t, 5 * MS, "SLPIN", &p->busy_since_ns);
+        break;
+    case 0x11:      /* SLPOUT */
+        if (too_soon(p, code, t, p->slpout_ok_ns, p->slpout_since_ns, p->slpout_why))
+            return;
+        if (p->asleep) {
+            p->asleep = 0;
+            set_wait(&p->slpin_ok_ns, &p->slpin_why, t, 120 * MS, "SLPOUT", &p->slpin_since_ns);
+        }
+        set_wait(&p->busy_until_ns, &p->busy_why, t, 5 * MS, "SLPOUT", &p->busy_since_ns);
+        break;
+    case 0x20: p->inverted = 0; break;
+    case 0x21: p->inverted = 1; break;
+    case 0x28: p->display_on = 0; break;
+    case 0x29: p->display_on = 1; break;
+    case 0x38: p->idle = 0; break;
+    case 0x39: p->idle = 1; break;
+    case 0x2C:
+    case 0x3C: start_write(p, code); break;
+    default: break;
+    }
+}
+
+/* The last parameter of a command with parameters arrived. */
+static void execute(struct emu_panel *p)
+{
+    const uint8_t *a = p->param;
+    char what[100];
+    switch (p->cur) {
+    case 0x2A:
+    case 0x2B: {
+        uint16_t s = (uint16_t)(a[0] << 8 | a[1]), e = (uint16_t)(a[2] << 8 | a[3]);
+        int col = p->cur == 0x2A;
+        uint16_t lim = col ? lim_x(p) : lim_y(p);
+        if (s > e) {
+            snprintf(what, sizeof what, "start %u after end %u", (unsigned)s, (unsigned)e);
+            vcmd(p, p->cur, what);
+        } else if (e >= lim) {
+            snprintf(what, sizeof what, "%s %u..%u outside the memory (0..%u)",
+                     col ? "columns" : "rows", (unsigned)s, (unsigned)e, (unsigned)(lim - 1));
+            vcmd(p, p->cur, what);
+        } else if (col) {
+            p->xs = s; p->xe = e; p->window_set |= 1;
+        } else {
+            p->ys = s; p->ye = e; p->window_set |= 2;
+        }
+        p->cont_valid = 0;
+        break;
+    }
+    case 0x36: p->madctl = a[0]; p->cont_valid = 0; break;
+    case 0x3A: p->colmod = a[0]; break;
+    default: break;
+    }
+}
+
+static void pixel(struct emu_panel *p, uint16_t v)
+{
+    uint16_t c = p->cx, r = p->cy;
+    if (p->madctl & 0x20) { c = p->cy; r = p->cx; }
+    if (p->madctl & 0x40) c = (uint16_t)(EMU_MEM_W - 1 - c);
+    if (p->madctl & 0x80) r = (uint16_t)(EMU_MEM_H - 1 - r);
+    p->mem[r][c] = v;
+    p->pixels_written++;
+    if (p->cx < p->xe) {
+        p->cx++;
+    } else {
+        p->cx = p->xs;
+        p->cy = p->cy < p->ye ? (uint16_t)(p->cy + 1) : p->ys;
+    }
+}
+
+static void data(struct emu_panel *p, uint8_t b)
+{
+    if (p->cur < 0) {
+        char what[60];
+        snprintf(what, sizeof what, "data byte 0x%02X without a command", (unsigned)b);
+        violate(p, "DATA", -1, p->offset, what);
+        return;
+    }
+    const struct cmd_info *c = lookup(p, (uint8_t)p->cur);
+    if (c->flags & F_PIXELS) {
+        if (p->half) {
+            p->half = 0;
+            pixel(p, (uint16_t)(p->hi << 8 | b));
+        } else {
+            p->half = 1;
+            p->hi = b;
+        }
+        return;
+    }
+    if (p->nparam >= c->max) {
+        char what[60];
+        snprintf(what, sizeof what, "more than %u parameter bytes", (unsigned)c->max);
+        vcmd(p, p->cur, what);
+        return;
+    }
+    if (p->nparam < sizeof p->param)
+        p->param[p->nparam] = b;
+    p->nparam++;
+    if (p->nparam == c->max)
+        execute(p);
+}
+
+void emu_panel_spi(struct emu_panel *p, const uint8_t *bytes, size_t n, uint64_t t_ns, uint32_t ns_per_byte)
+{
+    for (size_t i = 0; i < n; i++, p->offset++) {
+        if (p->violation[0])
+            continue;
+        uint64_t t = t_ns + (uint64_t)i * ns_per_byte;
+        if (!p->reset)
+            violate(p, "RESET", -1, p->offset, "byte sent while RESET is low");
+        else if (p->cs && !p->cs_tied_low)   /* a real controller would drop it */
+            violate(p, "CS", -1, p->offset, "byte sent while CS is high (controller deselected)");
+        else if (p->dc == 0)
+            command(p, bytes[i], t);
+        else
+            data(p, bytes[i]);
+    }
+}
+
+void emu_panel_line(struct emu_panel *p, int line, int level, uint64_t t_ns)
+{
+    if (p->violation[0])
+        return;
+    level = level != 0;
+    switch (line) {
+    case 0: p->dc = (uint8_t)level; break;
+    case 1:
+        if (p->reset && !level) {
+            p->reset_low_ns = t_ns;
+            p->cur = -1;    /* a reset aborts the command in progress */
+            p->half = 0;
+        } else if (!p->reset && level) {
+            if (t_ns - p->reset_low_ns < 10000) {
+                char what[60];
+                snprintf(what, sizeof what, "pulse of %llu ns, needs 10 us",
+                         (unsigned long long)(t_ns - p->reset_low_ns));
+                violate(p, "RESET", -1, p->offset, what);
+            } else {
+                hw_reset_done(p, t_ns);
+            }
+        }
+        p->reset = (uint8_t)level;
+        break;
+    case 2: p->cs = (uint8_t)level; break;
+    case 3: p->bl = (uint8_t)level; break;
+    default: break;
+    }
+}
+
+int emu_panel_finish(struct emu_panel *p, uint64_t t_ns)
+{
+    (void)t_ns;
+    if (!p->violation[0] && p->cur >= 0) {
+        /* Checked as if the command ended, but it stays current: more
+         * data may still follow. */
+        const struct cmd_info *c = lookup(p, (uint8_t)p->cur);
+        char what[80];
+        if (c->flags & F_PIXELS) {
+            if (p->half)
+                vcmd(p, p->cur, "ended with half a pixel (odd number of data bytes)");
+        } else if (p->nparam < c->min) {
+            snprintf(what, sizeof what, "%u parameter bytes, needs %u", (unsigned)p->nparam,
+                     (unsigned)c->min);
+            vcmd(p, p->cur, what);
+        }
+    }
+    return p->violation[0] ? -1 : 0;
+}
+
+const char *emu_panel_violation(const struct emu_panel *p)
+{
+    return p->violation[0] ? p->violation : NULL;
+}
+
+uint16_t emu_panel_glass_width(const struct emu_panel *p)
+{
+    return (p->view & 1) ? p->mod->glass_h : p->mod->glass_w;
+}
+
+uint16_t emu_panel_glass_height(const struct emu_panel *p)
+{
+    return (p->view & 1) ? p->mod->glass_w : p->mod->glass_h;
+}
+
+uint16_t emu_panel_mem(const struct emu_panel *p, uint16_t col, uint16_t row)
+{
+    return (col < EMU_MEM_W && row < EMU_MEM_H) ? p->mem[row][col] : 0;
+}
+
+int emu_panel_glass(const struct emu_panel *p, uint16_t *out, uint16_t w, uint16_t h)
+{
+    const struct emu_module *m = p->mod;
+    if (w != emu_panel_glass_width(p) || h != emu_panel_glass_height(p))
+        return -1;
+    int dark = p->asleep || !p->display_on || !p->bl || !p->reset;
+    uint16_t off = (m->normally_black || !p->bl) ? 0x0000 : 0xFFFF;
+    int invert = p->inverted != m->inverted;
+    int swap = ((p->madctl & 0x08) != 0) != (m->bgr != 0);
+    uint16_t gw = m->glass_w, gh = m->glass_h;
+    for (uint16_t oy = 0; oy < h; oy++)
+        for (uint16_t ox = 0; ox < w; ox++) {
+            /* Viewed pixel -> glass pixel: the glass turned view*90 degrees. */
+            uint16_t gx, gy;
+            switch (p->view) {
+            case 1: gx = (uint16_t)(gw - 1 - oy); gy = ox; break;
+            case 2: gx = (uint16_t)(gw - 1 - ox); gy = (uint16_t)(gh - 1 - oy); break;
+            case 3: gx = oy; gy = (uint16_t)(gh - 1 - ox); break;
+            default: gx = ox; gy = oy; break;
+            }
+            uint16_t col = (uint16_t)(m->mem_x + (m->mirror_x ? gw - 1 - gx : gx));
+            uint16_t row = (uint16_t)(m->mem_y + gy);
+            uint16_t v = p->mem[row][col];
+            if (dark) {
+                v = off;
+            } else {
+                if (invert)
+                    v = (uint16_t)~v;
+                if (p->idle)    /* 8 colours: each channel's top bit */
+                    v = (uint16_t)((v & 0x8000 ? 0xF800 : 0) | (v & 0x0400 ? 0x07E0 : 0) |
+                                   (v & 0x0010 ? 0x001F : 0));
+                if (swap)
+                    v = (uint16_t)((v & 0x07E0) | (v >> 11) | ((v & 0x1F) << 11));
+            }
+            out[(size_t)oy * w + ox] = v;
+        }
+    return 0;
+}

@@ -1,0 +1,51 @@
+/* imgio.h — host_sim's output files, written atomically.
+ *
+ * Every writer creates a temporary file in the destination's directory,
+ * writes it completely, fsyncs it and renames it over the destination; on
+ * any failure the temporary file is removed, so the destination is either
+ * the old file (or absent) or the complete new one, never half-written.
+ *
+ * Return values follow host_sim's exit codes: 0 success; 2 the destination
+ * cannot be created (missing or non-writable directory, bad name: a usage
+ * error); 1 any other failure (short write, fsync, rename, libpng). One line
+ * naming the file and the reason is written into err (no newline).
+ */
+#ifndef HOST_SIM_IMGIO_H
+#define HOST_SIM_IMGIO_H
+
+#include <stddef.h>
+#include <stdint.h>
+
+/* Image formats of --out, chosen by the file name's extension. */
+enum img_format { IMG_NONE = 0, IMG_PNG, IMG_PPM };
+
+/* IMG_PNG for *.png, IMG_PPM for *.ppm (case-insensitive), IMG_NONE otherwise. */
+enum img_format img_format_of(const char *path);
+
+/* RGB565 (native-endian uint16, row-major, top row first, `stride` pixels a
+ * row) as 8-bit RGB by bit replication: r8 = r5<<3 | r5>>2, g8 = g6<<2 | g6>>4. */
+int img_write_565(const char *path, enum img_format fmt, const uint16_t *px,
+                  unsigned w, unsigned h, size_t stride, char *err, size_t errlen);
+
+/* The same pixels as raw RGB565, little-endian uint16, row-major, top row first. */
+int img_write_raw565(const char *path, const uint16_t *px, unsigned w, unsigned h,
+                     size_t stride, char *err, size_t errlen);
+
+/* 8-bit RGB triples (3*w*h bytes, row-major) as binary PPM (P6). */
+int img_write_ppm888(const char *path, const uint8_t *rgb, unsigned w, unsigned h,
+                     char *err, size_t errlen);
+
+/* 0 if a file could be created next to `path` (its directory exists and is
+ * writable), else 2 with a message: lets host_sim refuse before rendering. */
+int img_check_dest(const char *path, char *err, size_t errlen);
+
+/* Expands one RGB565 pixel to 8-bit r, g, b (bit replication). */
+static inline void img_565_to_888(uint16_t p, uint8_t out[3])
+{
+    unsigned r5 = (p >> 11) & 31u, g6 = (p >> 5) & 63u, b5 = p & 31u;
+    out[0] = (uint8_t)(r5 << 3 | r5 >> 2);
+    out[1] = (uint8_t)(g6 << 2 | g6 >> 4);
+    out[2] = (uint8_t)(b5 << 3 | b5 >> 2);
+}
+
+#endif

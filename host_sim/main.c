@@ -1,0 +1,442 @@
+/* main.c — host_sim: renders a scene strip by strip with one of the three
+ * renderer cores and sends every strip through the panel driver into the
+ * emulated controller (or a memory framebuffer), then writes what the glass
+ * shows. The command line, exit codes and --stats fields are the project's
+ * outside contract (docs/host_sim.md).
+ */
+#include <errno.h>
+#include <math.h>
+#include <stdarg.h>
+#include <stdint.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+#include <time.h>
+
+#include "host_sim/core_api.h"
+#include "host_sim/imgio.h"
+#include "host_sim/panel_out.h"
+
+/* Rows a strip has: what a small MCU can hold (16 rows x 320 x 2 bytes = 10 KiB). */
+#define STRIP_ROWS_DEFAULT 16
+/* Largest side accepted with --panel none (memory, not the panel, limits it). */
+#define MAX_SIDE 8192
+
+enum { EXIT_OK = 0, EXIT_INTERNAL = 1, EXIT_USAGE = 2, EXIT_PROTOCOL = 3 };
+
+static const char usage_text[] =
+    "usage: host_sim --scene FILE [options]\n"
+    "  --panel st7789|ili9341|none   emulated controller (default st7789)\n"
+    "  --size WxH                    render size (default: the panel's native size;\n"
+    "                                with --panel none, the scene's canvas size)\n"
+    "  --numeric fixed|float|double  arithmetic of the renderer (default fixed)\n"
+    "  --out FILE.png|FILE.ppm       what the glass shows after the last frame\n"
+    "  --out-raw FILE                the same as raw RGB565 (little-endian uint16)\n"
+    "  --out-rgb888 FILE.ppm         the renderer's colour before RGB565 quantisation\n"
+    "  --frames N                    render N frames (default 1)\n"
+    "  --stats                       one JSON object per frame on stdout\n"
+    "  --backend sim|linux           where the HAL's bytes go (default sim)\n"
+    "tool options:\n"
+    "  --compare fixed|float|double  also render with this core (memory framebuffer)\n"
+    "                                and report psnr/max_err of the last frame's colours\n"
+    "  --summary                     one line: scene, size, numeric, time, accuracy\n"
+    "  --strip-rows N                rows per strip (default 16)\n"
+    "  --inject-fault NAME           make the panel driver misbehave (tests): %s\n"
+    "exit status: 0 ok, 1 internal error, 2 usage or input error,\n"
+    "             3 panel protocol violation\n";
+
+struct opts {
+    const char *scene, *panel, *numeric, *out, *out_raw, *out_rgb888, *backend;
+    const char *compare, *fault;
+    int has_size, stats, summary;
+    unsigned width, height, frames, strip_rows;
+};
+
+static int fail(int code, const char *fmt, ...) __attribute__((format(printf, 2, 3)));
+
+static int fail(int code, const char *fmt, ...)
+{
+    va_list ap;
+    fputs("host_sim: ", stderr);
+    va_start(ap, fmt);
+    vfprintf(stderr, fmt, ap);
+    va_end(ap);
+    fputc('\n', stderr);
+    return code;
+}
+
+/* A decimal count in 1..max, digits only; returns 0 if it is not one. */
+static unsigned parse_count(const char *s, unsigned max)
+{
+    unsigned long v = 0;
+    if (*s < '1' || *s > '9') return 0;
+    for (; *s; s++) {
+        if (*s < '0' || *s > '9') return 0;
+        v = v * 10 + (unsigned long)(*s - '0');
+        if (v > max) return 0;
+    }
+    return (unsigned)v;
+}
+
+/* "WxH" with both sides in 1..MAX_SIDE. */
+static int parse_size(const char *s, unsigned *w, unsigned *h)
+{
+    char buf[32];
+    const char *x = strchr(s, 'x');
+    if (!x || (size_t)(x - s) >= sizeof buf) return -1;
+    memcpy(buf, s, (size_t)(x - s));
+    buf[x - s] = 0;
+    *w = parse_count(buf, MAX_SIDE);
+    *h = parse_count(x + 1, MAX_SIDE);
+    return *w && *h ? 0 : -1;
+}
+
+static int parse_args(int argc, char **argv, struct opts *o)
+{
+    static const char *const with_arg[] = {
+        "--scene", "--panel", "--size", "--numeric", "--out", "--out-raw", "--out-rgb888",
+        "--frames", "--backend", "--compare", "--strip-rows", "--inject-fault", NULL,
+    };
+    for (int i = 1; i < argc; i++) {
+        const char *a = argv[i], *val = NULL;
+        char name[32];
+        const char *eq = strchr(a, '=');
+        size_t n = eq ? (size_t)(eq - a) : strlen(a);
+        if (strncmp(a, "--", 2) || n >= sizeof name)
+            return fail(EXIT_USAGE, "unknown option '%s' (try --help)", a);
+        memcpy(name, a, n);
+        name[n] = 0;
+        if (!strcmp(name, "--help") || !strcmp(name, "-h")) {
+            printf(usage_text, panel_out_faults);
+            exit(EXIT_OK);
+        }
+        if (!strcmp(name, "--stats") || !strcmp(name, "--summary")) {
+            if (eq) return fail(EXIT_USAGE, "option %s takes no argument", name);
+            if (!strcmp(name, "--stats")) o->stats = 1; else o->summary = 1;
+            continue;
+        }
+        int known = 0;
+        for (int k = 0; with_arg[k]; k++) known |= !strcmp(name, with_arg[k]);
+        if (!known) return fail(EXIT_USAGE, "unknown option '%s' (try --help)", name);
+        if (eq) val = eq + 1;
+        else if (i + 1 < argc) val = argv[++i];
+        if (!val || !*val) return fail(EXIT_USAGE, "option %s needs an argument", name);
+
+        if (!strcmp(name, "--scene")) o->scene = val;
+        else if (!strcmp(name, "--panel")) {
+            if (strcmp(val, "st7789") && strcmp(val, "ili9341") && strcmp(val, "none"))
+                return fail(EXIT_USAGE, "unknown panel '%s' (st7789|ili9341|none)", val);
+            o->panel = val;
+        } else if (!strcmp(name, "--size")) {
+            if (parse_size(val, &o->width, &o->height))
+                return fail(EXIT_USAGE, "bad size '%s' (WxH, each side 1..%d)", val, MAX_SIDE);
+            o->has_size = 1;
+        } else if (!strcmp(name, "--numeric") || !strcmp(name, "--compare")) {
+            if (!core_api_by_name(val))
+                return fail(EXIT_USAGE, "unknown numeric mode '%s' (fixed|float|double)", val);
+            if (!strcmp(name, "--numeric")) o->numeric = val; else o->compare = val;
+        } else if (!strcmp(name, "--out")) o->out = val;
+        else if (!strcmp(name, "--out-raw")) o->out_raw = val;
+        else if (!strcmp(name, "--out-rgb888")) o->out_rgb888 = val;
+        else if (!strcmp(name, "--frames")) {
+            if (!(o->frames = parse_count(val, 65535)))
+                return fail(EXIT_USAGE, "bad frame count '%s' (1..65535)", val);
+        } else if (!strcmp(name, "--strip-rows")) {
+            if (!(o->strip_rows = parse_count(val, MAX_SIDE)))
+                return fail(EXIT_USAGE, "bad strip height '%s' (1..%d)", val, MAX_SIDE);
+        } else if (!strcmp(name, "--backend")) {
+            if (strcmp(val, "sim") && strcmp(val, "linux"))
+                return fail(EXIT_USAGE, "unknown backend '%s' (sim|linux)", val);
+            o->backend = val;
+        } else if (!strcmp(name, "--inject-fault")) o->fault = val;
+    }
+    if (!o->scene) return fail(EXIT_USAGE, "--scene FILE is required (try --help)");
+    return EXIT_OK;
+}
+
+static uint64_t now_us(void)
+{
+    struct timespec ts;
+    clock_gettime(CLOCK_MONOTONIC, &ts);
+    return (uint64_t)ts.tv_sec * 1000000u + (uint64_t)ts.tv_nsec / 1000u;
+}
+
+/* The scene's name as the contract spells it: the path after "scenes/"
+ * without ".scene" (book/raytracer-05), or the file name without it. */
+static void scene_name(const char *path, char *out, size_t len)
+{
+    const char *s = NULL, *p = path;
+    while ((p = strstr(p, "scenes/")) != NULL) s = p += 7;
+    if (!s) {
+        s = strrchr(path, '/');
+        s = s ? s + 1 : path;
+    }
+    size_t n = strlen(s);
+    if (n > 6 && !strcmp(s + n - 6, ".scene")) n -= 6;
+    if (n >= len) n = len - 1;
+    memcpy(out, s, n);
+    out[n] = 0;
+}
+
+/* Writes s as a JSON string. */
+static void json_str(const char *s)
+{
+    putchar('"');
+    for (; *s; s++) {
+        unsigned char c = (unsigned char)*s;
+        if (c == '"' || c == '\\') printf("\\%c", c);
+        else if (c < 0x20) printf("\\u%04x", c);
+        else putchar(c);
+    }
+    putchar('"');
+}
+
+/* One renderer core set up for a scene and size. */
+struct core {
+    const struct core_api *api;
+    void *scene;
+    struct scene_info info;
+    struct render_ctx ctx;
+    void *work;
+};
+
+static int core_open(struct core *c, const struct core_api *api, const char *path)
+{
+    char err[512] = "";
+    c->api = api;
+    if (api->scene_load(path, &c->scene, err, sizeof err)) {
+        fprintf(stderr, "%s\n", err[0] ? err : "scene: cannot load");
+        return EXIT_USAGE;
+    }
+    api->scene_info(c->scene, &c->info);
+    return EXIT_OK;
+}
+
+static int core_init(struct core *c, unsigned w, unsigned h, unsigned strip_rows)
+{
+    size_t ws = c->api->work_size(c->scene, (uint16_t)w, (uint16_t)h, (uint16_t)strip_rows);
+    c->work = malloc(ws ? ws : 1);
+    if (!c->work) return fail(EXIT_INTERNAL, "out of memory (%zu bytes of renderer work memory)", ws);
+    if (c->api->init(&c->ctx, c->scene, (uint16_t)w, (uint16_t)h, (uint16_t)strip_rows, c->work, ws))
+        return fail(EXIT_INTERNAL, "renderer (%s) refused size %ux%u", c->api->numeric, w, h);
+    return EXIT_OK;
+}
+
+static void core_close(struct core *c)
+{
+    if (c->scene) c->api->scene_free(c->scene);
+    free(c->work);
+}
+
+/* Renders frame f of c into full-frame buffers (memory only, no panel):
+ * the reference of --compare. */
+static int core_render_memory(struct core *c, unsigned f, uint16_t *fb, uint8_t *rgb)
+{
+    struct render_stats st = { 0 };
+    if (c->api->begin_frame(&c->ctx, (uint16_t)f))
+        return fail(EXIT_INTERNAL, "renderer (%s) failed to begin frame %u", c->api->numeric, f);
+    unsigned w = c->ctx.width, h = c->ctx.height, rows = c->ctx.strip_rows;
+    for (unsigned y0 = 0; y0 < h; y0 += rows) {
+        unsigned y1 = y0 + rows < h ? y0 + rows : h;
+        struct render_target t = { (uint16_t)w, (uint16_t)h, (uint16_t)y0, (uint16_t)y1,
+                                   fb + (size_t)y0 * w, rgb + (size_t)y0 * w * 3 };
+        if (c->api->render_strip(&c->ctx, &t, &st))
+            return fail(EXIT_INTERNAL, "renderer (%s) failed on rows %u..%u", c->api->numeric, y0, y1);
+    }
+    return EXIT_OK;
+}
+
+/* PSNR (dB, over the three 8-bit channels) and largest channel difference. */
+static void compare_rgb(const uint8_t *a, const uint8_t *b, size_t n, double *psnr, int *max_err)
+{
+    double se = 0;
+    int mx = 0;
+    for (size_t i = 0; i < n; i++) {
+        int d = (int)a[i] - (int)b[i];
+        se += (double)(d * d);
+        if (abs(d) > mx) mx = abs(d);
+    }
+    *psnr = se == 0 ? INFINITY : 10.0 * log10(255.0 * 255.0 * (double)n / se);
+    *max_err = mx;
+}
+
+/* Everything allocated by run(), freed in one place. */
+struct bufs {
+    uint16_t *strip, *fb, *ref_fb;
+    uint8_t *rgb, *ref_rgb;
+};
+
+static int run(const struct opts *o, struct core *c, struct core *ref, struct panel_out **pp,
+               struct bufs *b)
+{
+    char err[512];
+    char name[256];
+    int rc;
+    const char *panel = o->panel ? o->panel : "st7789";
+    const char *backend = o->backend ? o->backend : "sim";
+    const char *numeric = o->numeric ? o->numeric : "fixed";
+    const int none = !strcmp(panel, "none");
+
+    /* Usage checks that need no scene first, so a bad command fails at once. */
+    if (o->out && img_format_of(o->out) == IMG_NONE)
+        return fail(EXIT_USAGE, "--out %s: the file name must end in .png or .ppm", o->out);
+    if (o->out_rgb888 && img_format_of(o->out_rgb888) != IMG_PPM)
+        return fail(EXIT_USAGE, "--out-rgb888 %s: the file name must end in .ppm", o->out_rgb888);
+    if (o->fault && none)
+        return fail(EXIT_USAGE, "--inject-fault needs an emulated panel, not --panel none");
+    if (o->compare && !strcmp(backend, "linux"))
+        return fail(EXIT_USAGE, "--compare needs --backend sim");
+    const char *outs[3] = { o->out, o->out_raw, o->out_rgb888 };
+    for (int i = 0; i < 3; i++)
+        if (outs[i] && (rc = img_check_dest(outs[i], err, sizeof err)))
+            return fail(rc, "%s", err);
+
+    struct stat st;
+    if (stat(o->scene, &st))
+        return fail(EXIT_USAGE, "%s: cannot open scene: %s", o->scene, strerror(errno));
+    if (S_ISDIR(st.st_mode))
+        return fail(EXIT_USAGE, "%s: cannot open scene: is a directory", o->scene);
+    if ((rc = core_open(c, core_api_by_name(numeric), o->scene))) return rc;
+
+    unsigned w = o->width, h = o->height;
+    if (!o->has_size) {
+        uint16_t nw, nh;
+        if (none) {
+            nw = c->info.canvas_w;
+            nh = c->info.canvas_h;
+        } else if (panel_out_native(panel, &nw, &nh)) {
+            return fail(EXIT_USAGE, "unknown panel '%s'", panel);
+        }
+        w = nw;
+        h = nh;
+        if (!w || !h || w > MAX_SIDE || h > MAX_SIDE)
+            return fail(EXIT_USAGE, "%s: canvas size %ux%u is not renderable (1..%d a side)",
+                        o->scene, w, h, MAX_SIDE);
+    }
+    unsigned rows = o->strip_rows ? o->strip_rows : STRIP_ROWS_DEFAULT;
+    if (rows > h) rows = h;
+
+    struct panel_out_opts po = { panel, backend, o->fault, (uint16_t)w, (uint16_t)h };
+    if ((rc = panel_out_open(pp, &po, err, sizeof err))) return fail(rc, "%s", err);
+    if ((rc = core_init(c, w, h, rows))) return rc;
+
+    size_t npx = (size_t)w * h;
+    int want_rgb = o->out_rgb888 || o->compare;
+    b->strip = malloc((size_t)rows * w * sizeof *b->strip);
+    b->fb = malloc(npx * sizeof *b->fb);
+    b->rgb = want_rgb ? malloc(npx * 3) : NULL;
+    if (!b->strip || !b->fb || (want_rgb && !b->rgb))
+        return fail(EXIT_INTERNAL, "out of memory for a %ux%u image", w, h);
+    memset(b->fb, 0, npx * sizeof *b->fb);
+    if (want_rgb) memset(b->rgb, 0, npx * 3);
+
+    scene_name(o->scene, name, sizeof name);
+    unsigned frames = o->frames ? o->frames : 1;
+    uint64_t total_render_us = 0;
+    for (unsigned f = 0; f < frames; f++) {
+        struct render_stats rs = { 0 };
+        uint32_t sat0 = *c->api->saturations;
+        uint64_t spi0 = panel_out_spi_bytes(*pp), bus0 = panel_out_bus_us(*pp);
+        uint64_t render_us = 0, flush_us = 0, t0 = now_us();
+        if (c->api->begin_frame(&c->ctx, (uint16_t)f))
+            return fail(EXIT_INTERNAL, "renderer failed to begin frame %u", f);
+        render_us += now_us() - t0;
+        for (unsigned y0 = 0; y0 < h; y0 += rows) {
+            unsigned y1 = y0 + rows < h ? y0 + rows : h;
+            struct render_target t = { (uint16_t)w, (uint16_t)h, (uint16_t)y0, (uint16_t)y1,
+                                       b->strip, b->rgb ? b->rgb + (size_t)y0 * w * 3 : NULL };
+            t0 = now_us();
+            if (c->api->render_strip(&c->ctx, &t, &rs))
+                return fail(EXIT_INTERNAL, "renderer failed on rows %u..%u of frame %u", y0, y1, f);
+            uint64_t t1 = now_us();
+            render_us += t1 - t0;
+            if ((rc = panel_out_flush(*pp, (uint16_t)y0, (uint16_t)y1, b->strip, err, sizeof err))) {
+                return fail(rc, "%s", err);
+            }
+            flush_us += now_us() - t1;
+        }
+        total_render_us += render_us;
+        if (o->stats) {
+            printf("{\"scene\":");
+            json_str(name);
+            printf(",\"file\":");
+            json_str(o->scene);
+            printf(",\"numeric\":\"%s\",\"panel\":\"%s\",\"backend\":\"%s\",\"width\":%u,"
+                   "\"height\":%u,\"frame\":%u,\"strip_rows\":%u,\"render_us\":%llu,"
+                   "\"flush_us\":%llu,\"bus_us\":%llu,\"pixels_written\":%lu,\"spi_bytes\":%llu,"
+                   "\"triangles_in\":%lu,\"triangles_drawn\":%lu,\"rays\":%lu,\"saturations\":%lu",
+                   c->api->numeric, panel, backend, w, h, f, rows, (unsigned long long)render_us,
+                   (unsigned long long)flush_us, (unsigned long long)(panel_out_bus_us(*pp) - bus0),
+                   (unsigned long)rs.pixels_written,
+                   (unsigned long long)(panel_out_spi_bytes(*pp) - spi0),
+                   (unsigned long)rs.triangles_in, (unsigned long)rs.triangles_drawn,
+                   (unsigned long)rs.rays, (unsigned long)(uint32_t)(*c->api->saturations - sat0));
+            if (!(o->compare && f + 1 == frames)) printf("}\n");
+        }
+    }
+
+    if ((rc = panel_out_finish(*pp, err, sizeof err))) return fail(rc, "%s", err);
+
+    double psnr = 0;
+    int max_err = 0;
+    if (o->compare) {
+        if ((rc = core_open(ref, core_api_by_name(o->compare), o->scene))) return rc;
+        if ((rc = core_init(ref, w, h, rows))) return rc;
+        b->ref_fb = malloc(npx * sizeof *b->ref_fb);
+        b->ref_rgb = malloc(npx * 3);
+        if (!b->ref_fb || !b->ref_rgb) return fail(EXIT_INTERNAL, "out of memory");
+        memset(b->ref_rgb, 0, npx * 3);
+        for (unsigned f = 0; f < frames; f++)  /* animation state may carry over */
+            if ((rc = core_render_memory(ref, f, b->ref_fb, b->ref_rgb))) return rc;
+        compare_rgb(b->rgb, b->ref_rgb, npx * 3, &psnr, &max_err);
+        if (o->stats) {
+            printf(",\"compare\":\"%s\",", o->compare);
+            if (isinf(psnr)) printf("\"psnr\":null"); else printf("\"psnr\":%.2f", psnr);
+            printf(",\"max_err\":%d}\n", max_err);
+        }
+    }
+    fflush(stdout);
+
+    /* What the glass shows (or the framebuffer) after the last frame. */
+    if (o->out || o->out_raw) {
+        if ((rc = panel_out_read(*pp, b->fb, err, sizeof err))) return fail(rc, "%s", err);
+        if (o->out && (rc = img_write_565(o->out, img_format_of(o->out), b->fb, w, h, w, err, sizeof err)))
+            return fail(rc, "%s", err);
+        if (o->out_raw && (rc = img_write_raw565(o->out_raw, b->fb, w, h, w, err, sizeof err)))
+            return fail(rc, "%s", err);
+    }
+    if (o->out_rgb888 && (rc = img_write_ppm888(o->out_rgb888, b->rgb, w, h, err, sizeof err)))
+        return fail(rc, "%s", err);
+
+    if (o->summary) {
+        printf("%-28s %4ux%-4u %-6s %-7s %9.1f ms", name, w, h, c->api->numeric, panel,
+               (double)total_render_us / 1000.0 / frames);
+        if (o->compare) {
+            if (isinf(psnr)) printf("  exact vs %s", o->compare);
+            else printf("  PSNR %.1f dB, max err %d vs %s", psnr, max_err, o->compare);
+        }
+        putchar('\n');
+    }
+    return fflush(stdout) ? EXIT_INTERNAL : EXIT_OK;
+}
+
+int main(int argc, char **argv)
+{
+    struct opts o = { 0 };
+    int rc = parse_args(argc, argv, &o);
+    if (rc) return rc;
+    struct core c = { 0 }, ref = { 0 };
+    struct panel_out *p = NULL;
+    struct bufs b = { 0 };
+    rc = run(&o, &c, &ref, &p, &b);
+    if (p) panel_out_close(p);
+    core_close(&c);
+    core_close(&ref);
+    free(b.strip);
+    free(b.fb);
+    free(b.rgb);
+    free(b.ref_fb);
+    free(b.ref_rgb);
+    return rc;
+}

@@ -1,0 +1,322 @@
+/* panel_out.c — host_sim's display path (see panel_out.h).
+ *
+ * sim backend:   panel driver (hal/panel.c) -> DCS layer -> hal_sim ->
+ *                emulated controller (hal/sim/emu_panel.c); the image files
+ *                come from the emulated glass.
+ * linux backend: panel driver -> DCS layer -> spidev + libgpiod; the image
+ *                files come from a copy of what was sent (a real glass cannot
+ *                be read back).
+ * --panel none:  a plain memory framebuffer.
+ *
+ * The HAL parts are compiled in when the HAL sources are present
+ * (mk/host_sim.mk defines HOST_SIM_HAVE_HAL, HOST_SIM_HAVE_LINUX).
+ */
+#include "panel_out.h"
+
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#ifdef HOST_SIM_HAVE_HAL
+#include "hal/panel.h"
+#include "hal/sim/hal_sim.h"
+#endif
+#ifdef HOST_SIM_HAVE_LINUX
+#include "hal/linux/hal_linux.h"
+#endif
+
+/* The emulated bus clock: what an ST7789 accepts (62.5 MHz write cycle
+ * limit) rounded down to a clock an RP2040 or a Raspberry Pi can make. It
+ * only sets the simulated time the bus takes (bus_us in --stats). */
+#define SIM_SPI_HZ 40000000u
+
+const char panel_out_faults[] = "ramwr-no-window|early-after-slpout";
+
+enum kind { OUT_MEMORY, OUT_SIM, OUT_LINUX };
+
+struct panel_out {
+    enum kind kind;
+    uint16_t width, height;
+    uint16_t *fb;                /* memory framebuffer, or the copy of what was sent (linux) */
+#ifdef HOST_SIM_HAVE_HAL
+    struct hal hal;
+    struct hal_sim sim;
+    struct emu_panel *emu;       /* ~150 KiB, so on the heap */
+    struct panel panel;
+#endif
+#ifdef HOST_SIM_HAVE_LINUX
+    struct hal_linux lx;
+    int lx_open;
+#endif
+};
+
+int panel_out_native(const char *panel, uint16_t *w, uint16_t *h)
+{
+    if (!strcmp(panel, "st7789")) { *w = 240; *h = 240; return 0; }
+    if (!strcmp(panel, "ili9341")) { *w = 320; *h = 240; return 0; }
+    return -1;
+}
+
+/* Both controllers have 240x320 pixels of memory; MADCTL's row/column
+ * exchange makes it 320x240. */
+static int fits(unsigned w, unsigned h)
+{
+    return (w <= 240 && h <= 320) || (w <= 320 && h <= 240);
+}
+
+#ifdef HOST_SIM_HAVE_HAL
+/* The module and rotation that show a w x h image: the smallest module of
+ * the controller that holds it, turned if it is wider than tall. */
+static const char *pick_module(const char *panel, unsigned w, unsigned h, uint8_t *rot)
+{
+    *rot = 0;
+    if (!strcmp(panel, "st7789")) {
+        if (w <= 240 && h <= 240) return "st7789_240x240";
+        if (w <= 240) return "st7789_240x320";
+        *rot = 1;
+        return "st7789_240x320";
+    }
+    if (w <= 320 && h <= 240) return "ili9341_320x240";
+    return "ili9341_240x320";
+}
+
+/* A protocol violation recorded by the emulated panel: 3 and its line. */
+static int violation(struct panel_out *p, char *err, size_t errlen)
+{
+    const char *v = p->emu ? emu_panel_violation(p->emu) : NULL;
+    if (!v) return 0;
+    snprintf(err, errlen, "%s", v);
+    return 3;
+}
+
+/* Drives the panel the wrong way on purpose, so that tests can see the
+ * emulated controller catch it (--inject-fault). */
+static int inject_fault(struct panel_out *p, const struct panel_desc *d, const char *fault,
+                        char *err, size_t errlen)
+{
+    struct dcs *dcs = &p->panel.dcs;
+    const uint8_t colmod = DCS_COLMOD_16BIT;
+    const uint16_t px[4] = { 0xf800, 0x07e0, 0x001f, 0xffff };
+    dcs_init(dcs, &p->hal);
+    if (!strcmp(fault, "ramwr-no-window")) {
+        /* A correct wake-up, then a memory write with no CASET/RASET since reset. */
+        dcs_hw_reset(dcs, d->reset_low_ms, d->reset_wait_ms);
+        dcs_command(dcs, DCS_SLPOUT, NULL, 0);
+        dcs_delay_ms(dcs, 120);
+        dcs_command(dcs, DCS_COLMOD, &colmod, 1);
+        dcs_command(dcs, DCS_DISPON, NULL, 0);
+        dcs_write_begin(dcs, 0);
+        dcs_write_pixels(dcs, px, 4);
+        dcs_write_end(dcs);
+    } else if (!strcmp(fault, "early-after-slpout")) {
+        /* The next command right after SLPOUT, without the wait it needs. */
+        dcs_hw_reset(dcs, d->reset_low_ms, d->reset_wait_ms);
+        dcs_command(dcs, DCS_SLPOUT, NULL, 0);
+        dcs_command(dcs, DCS_COLMOD, &colmod, 1);
+    } else {
+        snprintf(err, errlen, "unknown fault '%s' (%s)", fault, panel_out_faults);
+        return 2;
+    }
+    emu_panel_finish(p->emu, p->sim.t_ns);
+    if (violation(p, err, errlen)) return 3;
+    snprintf(err, errlen, "injected fault %s was not reported by the emulated panel", fault);
+    return 1;
+}
+#endif
+
+static int open_memory(struct panel_out *p, char *err, size_t errlen)
+{
+    p->fb = calloc((size_t)p->width * p->height, sizeof *p->fb);
+    if (!p->fb) {
+        snprintf(err, errlen, "out of memory for a %ux%u framebuffer", p->width, p->height);
+        return 1;
+    }
+    return 0;
+}
+
+int panel_out_open(struct panel_out **out, const struct panel_out_opts *o, char *err, size_t errlen)
+{
+    int linux_be = !strcmp(o->backend, "linux");
+    int none = !strcmp(o->panel, "none");
+    *out = NULL;
+#ifndef HOST_SIM_HAVE_LINUX
+    if (linux_be) {
+        snprintf(err, errlen, "backend linux not available in this build");
+        return 2;
+    }
+#endif
+    if (none && linux_be) {
+        snprintf(err, errlen, "--backend linux needs a panel, not --panel none");
+        return 2;
+    }
+    if (!none && !fits(o->width, o->height)) {
+        snprintf(err, errlen, "size %ux%u is larger than the %s panel's memory (240x320 or 320x240)",
+                 o->width, o->height, o->panel);
+        return 2;
+    }
+    struct panel_out *p = calloc(1, sizeof *p);
+    if (!p) {
+        snprintf(err, errlen, "out of memory");
+        return 1;
+    }
+    *out = p;
+    p->width = o->width;
+    p->height = o->height;
+    if (none) {
+        p->kind = OUT_MEMORY;
+        return open_memory(p, err, errlen);
+    }
+#ifndef HOST_SIM_HAVE_HAL
+    snprintf(err, errlen, "panel %s not available in this build", o->panel);
+    return 2;
+#else
+    uint8_t rot;
+    const char *name = pick_module(o->panel, o->width, o->height, &rot);
+    const struct panel_desc *d = panel_find(name);
+    if (!d) {
+        snprintf(err, errlen, "no panel driver for %s in this build", name);
+        return 1;
+    }
+    int rc;
+    if (linux_be) {
+#ifdef HOST_SIM_HAVE_LINUX
+        struct hal_linux_config cfg;
+        if (o->fault) {
+            snprintf(err, errlen, "--inject-fault needs the emulated panel (--backend sim)");
+            return 2;
+        }
+        p->kind = OUT_LINUX;
+        if ((rc = open_memory(p, err, errlen))) return rc;
+        hal_linux_default_config(&cfg);
+        if (hal_linux_open(&p->lx, &p->hal, &cfg)) {
+            snprintf(err, errlen, "backend linux: %s", hal_linux_error(&p->lx));
+            return 2;
+        }
+        p->lx_open = 1;
+        if (panel_init(&p->panel, d, &p->hal, rot)) {
+            snprintf(err, errlen, "backend linux: %s init failed: %s", name, hal_linux_error(&p->lx));
+            return 1;
+        }
+        return 0;
+#endif
+    }
+    p->kind = OUT_SIM;
+    uint8_t view;
+    const struct emu_module *m = emu_module_find(name, &view);
+    p->emu = malloc(sizeof *p->emu);
+    if (!m || !p->emu) {
+        snprintf(err, errlen, m ? "out of memory" : "no emulated module %s in this build", name);
+        return 1;
+    }
+    if (emu_panel_init(p->emu, m, (uint8_t)((view + rot) & 3))) {
+        snprintf(err, errlen, "emulated panel %s refused view %u", name, (unsigned)((view + rot) & 3));
+        return 1;
+    }
+    hal_sim_init(&p->sim, &p->hal, p->emu);
+    hal_sim_set_spi_hz(&p->sim, SIM_SPI_HZ);
+    if (o->fault) return inject_fault(p, d, o->fault, err, errlen);
+    rc = panel_init(&p->panel, d, &p->hal, rot);
+    if (violation(p, err, errlen)) return 3;
+    if (rc) {
+        snprintf(err, errlen, "%s: panel_init failed (%d)", name, rc);
+        return 1;
+    }
+    return 0;
+#endif
+}
+
+int panel_out_flush(struct panel_out *p, uint16_t y0, uint16_t y1, const uint16_t *px,
+                    char *err, size_t errlen)
+{
+    if (y0 >= y1 || y1 > p->height) {
+        snprintf(err, errlen, "flush of rows %u..%u outside the %u-row image", y0, y1, p->height);
+        return 1;
+    }
+    if (p->fb) memcpy(p->fb + (size_t)y0 * p->width, px, (size_t)(y1 - y0) * p->width * sizeof *px);
+#ifdef HOST_SIM_HAVE_HAL
+    if (p->kind != OUT_MEMORY) {
+        int rc = panel_flush(&p->panel, 0, y0, p->width, (uint16_t)(y1 - y0), px);
+        if (violation(p, err, errlen)) return 3;
+        if (rc) {
+            snprintf(err, errlen, "panel_flush of rows %u..%u failed (%d)", y0, y1, rc);
+            return 1;
+        }
+    }
+#endif
+    return 0;
+}
+
+int panel_out_finish(struct panel_out *p, char *err, size_t errlen)
+{
+#ifdef HOST_SIM_HAVE_HAL
+    if (p->kind == OUT_SIM) {
+        emu_panel_finish(p->emu, p->sim.t_ns);
+        return violation(p, err, errlen);
+    }
+#endif
+    (void)p; (void)err; (void)errlen;
+    return 0;
+}
+
+uint64_t panel_out_spi_bytes(const struct panel_out *p)
+{
+#ifdef HOST_SIM_HAVE_HAL
+    if (p->kind == OUT_SIM) return p->sim.spi_bytes;
+    if (p->kind == OUT_LINUX) return p->panel.dcs.bytes_sent;
+#endif
+    (void)p;
+    return 0;
+}
+
+uint64_t panel_out_bus_us(const struct panel_out *p)
+{
+#ifdef HOST_SIM_HAVE_HAL
+    if (p->kind == OUT_SIM) return hal_sim_now_us(&p->sim);
+#endif
+    (void)p;
+    return 0;
+}
+
+int panel_out_read(struct panel_out *p, uint16_t *dst, char *err, size_t errlen)
+{
+#ifdef HOST_SIM_HAVE_HAL
+    if (p->kind == OUT_SIM) {
+        uint16_t gw = emu_panel_glass_width(p->emu), gh = emu_panel_glass_height(p->emu);
+        if (gw < p->width || gh < p->height) {
+            snprintf(err, errlen, "the emulated glass is %ux%u, smaller than the %ux%u image",
+                     gw, gh, p->width, p->height);
+            return 1;
+        }
+        uint16_t *g = malloc((size_t)gw * gh * sizeof *g);
+        if (!g) {
+            snprintf(err, errlen, "out of memory");
+            return 1;
+        }
+        if (emu_panel_glass(p->emu, g, gw, gh)) {
+            free(g);
+            snprintf(err, errlen, "cannot read the emulated glass");
+            return 1;
+        }
+        for (unsigned y = 0; y < p->height; y++)
+            memcpy(dst + (size_t)y * p->width, g + (size_t)y * gw, (size_t)p->width * sizeof *dst);
+        free(g);
+        return 0;
+    }
+#endif
+    (void)err; (void)errlen;
+    memcpy(dst, p->fb, (size_t)p->width * p->height * sizeof *dst);
+    return 0;
+}
+
+void panel_out_close(struct panel_out *p)
+{
+    if (!p) return;
+#ifdef HOST_SIM_HAVE_LINUX
+    if (p->lx_open) hal_linux_close(&p->lx);
+#endif
+#ifdef HOST_SIM_HAVE_HAL
+    free(p->emu);
+#endif
+    free(p->fb);
+    free(p);
+}

@@ -1,0 +1,62 @@
+/* panel_out.h — where host_sim's strips go: a panel driver over a HAL
+ * backend (the emulated controller by default), or a plain memory
+ * framebuffer (--panel none).
+ *
+ * Every pixel host_sim shows leaves the renderer through panel_out_flush(),
+ * a rectangle of whole rows, as on the board. The image files are read back
+ * afterwards: from the emulated panel's glass (what the controller's memory
+ * shows through MADCTL, inversion and DISPON), or from the framebuffer.
+ *
+ * Return codes match host_sim's exit status: 0 ok, 1 internal error, 2 usage
+ * error, 3 protocol violation found by the emulated controller; err then
+ * holds one line without a newline.
+ */
+#ifndef HOST_SIM_PANEL_OUT_H
+#define HOST_SIM_PANEL_OUT_H
+
+#include <stddef.h>
+#include <stdint.h>
+
+struct panel_out;
+
+struct panel_out_opts {
+    const char *panel;    /* "st7789", "ili9341" or "none" */
+    const char *backend;  /* "sim" or "linux" */
+    const char *fault;    /* NULL, or a fault to inject (see panel_out_faults) */
+    uint16_t width, height;
+};
+
+/* Names accepted in panel_out_opts.fault, separated by '|', for messages. */
+extern const char panel_out_faults[];
+
+/* The panel's native size (the default --size); -1 for an unknown panel.
+ * "none" has no native size (returns -1 too). */
+int panel_out_native(const char *panel, uint16_t *w, uint16_t *h);
+
+/* Opens the path and brings the panel up (reset, init sequence, display on).
+ * Returns 2 if the panel is unknown, the size does not fit its memory or the
+ * backend is not available in this build. */
+int panel_out_open(struct panel_out **out, const struct panel_out_opts *o, char *err, size_t errlen);
+
+/* Sends rows [y0, y1) of the image: px holds (y1-y0)*width pixels, row-major. */
+int panel_out_flush(struct panel_out *p, uint16_t y0, uint16_t y1, const uint16_t *px,
+                    char *err, size_t errlen);
+
+/* After the last flush: the end of the stream (a command left without its
+ * parameters, half a pixel) is checked too. 0 or 3. */
+int panel_out_finish(struct panel_out *p, char *err, size_t errlen);
+
+/* Bytes that went over the SPI bus so far (0 for --panel none). */
+uint64_t panel_out_spi_bytes(const struct panel_out *p);
+
+/* Simulated time of the emulated bus so far, microseconds (0 without one). */
+uint64_t panel_out_bus_us(const struct panel_out *p);
+
+/* Copies what the glass shows, width x height pixels at the flushed origin,
+ * into dst (width*height RGB565 pixels, row-major). Returns 2 if the backend
+ * has no readable glass (real hardware). */
+int panel_out_read(struct panel_out *p, uint16_t *dst, char *err, size_t errlen);
+
+void panel_out_close(struct panel_out *p);
+
+#endif

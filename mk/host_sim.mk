@@ -1,0 +1,56 @@
+# host_sim: the host simulator (see docs/host_sim.md).
+#
+# Built in two variants: $(BUILD)/host_sim (optimised, what `make` and
+# `make run` use) and $(BUILD)/asan/host_sim (ASan+UBSan, what the tests run).
+# Its own sources are mode-independent ("none"); the renderer comes in as
+# the three core bundles of mk/core.mk.
+
+HOST_SIM_SRCS := host_sim/main.c host_sim/imgio.c host_sim/panel_out.c
+
+# The panel path needs the HAL (mk/hal.mk: hal_objs, HAL_LDLIBS); without its
+# sources host_sim still builds, with --panel none only.
+HOST_SIM_HAVE_HAL   := $(and $(wildcard hal/sim/hal_sim.c),$(value hal_objs))
+HOST_SIM_HAVE_LINUX := $(and $(HOST_SIM_HAVE_HAL),$(wildcard hal/linux/hal_linux.c))
+# (only the HAL sources present: the Linux backend may come later)
+host_sim_hal = $(if $(HOST_SIM_HAVE_HAL),$(call obj,$(1),none,$(wildcard $(HAL_SRCS) $(HAL_SIM_SRCS) $(HAL_LINUX_SRCS))))
+HOST_SIM_DEFS := $(if $(HOST_SIM_HAVE_HAL),-DHOST_SIM_HAVE_HAL) $(if $(HOST_SIM_HAVE_LINUX),-DHOST_SIM_HAVE_LINUX)
+$(foreach v,$(VARIANTS),$(call obj,$(v),none,host_sim/panel_out.c)): EXTRA_CFLAGS += $(HOST_SIM_DEFS)
+# Rebuild panel_out when those flags change (the HAL arriving): a file that
+# holds them, rewritten only when they differ.
+HOST_SIM_CONFIG := $(BUILD)/host_sim.config
+$(shell mkdir -p $(BUILD) && { echo '$(HOST_SIM_DEFS)' | cmp -s - $(HOST_SIM_CONFIG) || \
+          echo '$(HOST_SIM_DEFS)' >$(HOST_SIM_CONFIG); })
+$(HOST_SIM_CONFIG):
+	@mkdir -p $(@D) && echo '$(HOST_SIM_DEFS)' >$@
+$(foreach v,$(VARIANTS),$(call obj,$(v),none,host_sim/panel_out.c)): $(HOST_SIM_CONFIG)
+
+# libpng through pkg-config; recursive (=) so that it is asked only when a
+# recipe runs, after tools/deps.sh may have installed it.
+PNG_CFLAGS = $(shell pkg-config --cflags libpng 2>/dev/null)
+PNG_LIBS   = $(or $(shell pkg-config --libs libpng 2>/dev/null),-lpng)
+
+$(foreach v,$(VARIANTS),$(call obj,$(v),none,host_sim/imgio.c)): EXTRA_CFLAGS += $(PNG_CFLAGS)
+# libpng is a distribution package: install it first if it is missing.
+$(foreach v,$(VARIANTS),$(call obj,$(v),none,host_sim/imgio.c)): | deps
+
+HOST_SIM_BIN_host := $(BUILD)/host_sim
+HOST_SIM_BIN_asan := $(BUILD)/asan/host_sim
+
+define HOST_SIM_LINK
+$(HOST_SIM_BIN_$(1)): $(call obj,$(1),none,$(HOST_SIM_SRCS)) $(call core_bundles,$(1)) $(call host_sim_hal,$(1))
+	@mkdir -p $$(@D)
+	$(Q)$$(CC) $(LDFLAGS_$(1)) -o $$@ $$^ $$(PNG_LIBS) $(if $(HOST_SIM_HAVE_HAL),$$(HAL_LDLIBS)) -lm
+endef
+$(foreach v,$(VARIANTS),$(eval $(call HOST_SIM_LINK,$(v))))
+
+PROGRAMS  += $(HOST_SIM_BIN_host)
+TEST_DEPS += $(HOST_SIM_BIN_asan) $(HOST_SIM_BIN_host)
+TESTS     += tests/test_host_sim.sh:$(HOST_SIM_BIN_asan)
+TESTS     += tests/test_make_run.sh:$(BUILD)
+
+# `make run`: every scene in firmware/scenes/ through host_sim (ST7789
+# 240x240, fixed point) into $(OUT)/<scene>.png, one line per scene.
+run:
+	$(Q)tools/deps.sh run
+	$(Q)$(MAKE) --no-print-directory $(HOST_SIM_BIN_host)
+	$(Q)tools/run_scenes.sh $(HOST_SIM_BIN_host) firmware/scenes $(OUT)

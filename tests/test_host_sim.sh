@@ -1,0 +1,265 @@
+#!/bin/sh
+# host_sim's command line: exit codes and messages for bad input, output
+# sizes and formats, atomic output, --stats, --frames, and protocol
+# violations injected into the panel driver (exit 3).
+#   tests/test_host_sim.sh HOST_SIM
+set -u
+hs=${1:?usage: test_host_sim.sh HOST_SIM}
+tmp=$(mktemp -d)
+trap 'chmod -R u+w "$tmp" 2>/dev/null; rm -rf "$tmp"' EXIT
+
+# A scene to render: the book's raytracer-02 once it exists, else a small
+# scene of the tests.
+scene=firmware/scenes/book/raytracer-02.scene
+[ -f "$scene" ] || scene=tests/data/spheres.scene
+
+pass() { echo "PASS $1"; }
+fail() { echo "FAIL $1: $2"; }
+skip() { echo "SKIP $1: $2"; }
+
+# run NAME ARGS...: runs host_sim, leaving status in $rc, stdout in $tmp/o,
+# stderr in $tmp/e.
+run() {
+  "$hs" "$@" >"$tmp/o" 2>"$tmp/e"
+  rc=$?
+}
+
+# expect_err NAME STATUS PATTERN ARGS...: exit status STATUS and exactly one
+# line on stderr matching the grep pattern PATTERN.
+expect_err() {
+  name=$1 want=$2 pat=$3
+  shift 3
+  run "$@"
+  lines=$(wc -l <"$tmp/e" | tr -d ' ')
+  if [ "$rc" -ne "$want" ]; then
+    fail "$name" "exit $rc, want $want; stderr: $(head -c 300 "$tmp/e")"
+  elif [ "$lines" -ne 1 ]; then
+    fail "$name" "$lines lines on stderr, want 1: $(head -c 300 "$tmp/e")"
+  elif ! grep -q -- "$pat" "$tmp/e"; then
+    fail "$name" "stderr does not match '$pat': $(cat "$tmp/e")"
+  else
+    pass "$name"
+  fi
+}
+
+# png_size FILE: "WxH" from the PNG signature and IHDR, or "bad".
+png_size() {
+  sig=$(od -An -tx1 -N8 "$1" 2>/dev/null | tr -d ' \n')
+  [ "$sig" = 89504e470d0a1a0a ] || { echo bad; return; }
+  set -- $(od -An -tu1 -j16 -N8 "$1")
+  echo "$(( ($1 << 24) | ($2 << 16) | ($3 << 8) | $4 ))x$(( ($5 << 24) | ($6 << 16) | ($7 << 8) | $8 ))"
+}
+
+fsize() { wc -c <"$1" | tr -d ' '; }
+
+# Panel path available in this build?
+run --scene "$scene" --size 8x8
+if grep -q "not available in this build" "$tmp/e"; then panels=0; else panels=1; fi
+
+# ---- usage errors -----------------------------------------------------------
+expect_err no_args 2 "scene" 
+expect_err unknown_option 2 "unknown option '--frobnicate'" --scene "$scene" --frobnicate
+expect_err unknown_short_option 2 "unknown option" -x --scene "$scene"
+expect_err missing_argument 2 "option --size needs an argument" --scene "$scene" --size
+expect_err missing_argument_empty 2 "option --out needs an argument" --scene "$scene" --out=
+expect_err unknown_panel 2 "unknown panel 'st9999'" --scene "$scene" --panel st9999
+expect_err unknown_numeric 2 "unknown numeric mode 'posit'" --scene "$scene" --numeric posit
+expect_err unknown_backend 2 "unknown backend 'usb'" --scene "$scene" --backend usb
+expect_err bad_frames 2 "bad frame count" --scene "$scene" --frames 0
+for s in 0x10 10x0 -5x10 10x-5 abc 10x x10 10x10x10 12345678901234567890x10 9000x10 10X10 " 10x10" 10.5x10; do
+  expect_err "bad_size[$s]" 2 "bad size" --scene "$scene" --panel none --size "$s"
+done
+expect_err missing_scene 2 "$tmp/nope.scene" --scene "$tmp/nope.scene"
+expect_err scene_is_directory 2 "is a directory" --scene "$tmp"
+expect_err no_scene_option 2 "--scene FILE is required" --panel none
+expect_err out_extension 2 "must end in .png or .ppm" --scene "$scene" --out "$tmp/x.bmp"
+expect_err rgb888_extension 2 "must end in .ppm" --scene "$scene" --out-rgb888 "$tmp/x.png"
+expect_err size_larger_than_st7789 2 "larger than" --scene "$scene" --panel st7789 --size 241x321
+expect_err size_larger_than_st7789_wide 2 "larger than" --scene "$scene" --panel st7789 --size 400x200
+expect_err size_larger_than_ili9341 2 "larger than" --scene "$scene" --panel ili9341 --size 321x240
+
+# --help
+run --help
+if [ "$rc" -eq 0 ] && grep -q -- "--scene FILE" "$tmp/o"; then pass help; else fail help "exit $rc"; fi
+
+# Scene errors are printed as the parser returns them: FILE:LINE:COLUMN: error: MESSAGE.
+run --scene tests/data/bad.scene --panel none --size 4x4
+if [ "$rc" -eq 0 ]; then
+  skip scene_error_format "the parser in this build accepts any readable file"
+elif [ "$rc" -eq 2 ] && [ "$(wc -l <"$tmp/e")" -eq 1 ] &&
+     grep -q '^tests/data/bad.scene:[0-9][0-9]*:[0-9][0-9]*: error: ' "$tmp/e"; then
+  pass scene_error_format
+else
+  fail scene_error_format "exit $rc: $(cat "$tmp/e")"
+fi
+
+# --backend linux: either built in, or refused with exit 2.
+run --scene "$scene" --backend linux --size 8x8
+if grep -q "backend linux not available in this build" "$tmp/e"; then
+  [ "$rc" -eq 2 ] && pass backend_linux_unavailable || fail backend_linux_unavailable "exit $rc"
+else
+  skip backend_linux_unavailable "the linux backend is built in"
+fi
+
+# ---- outputs ----------------------------------------------------------------
+run --scene "$scene" --panel none --size 64x48 --out "$tmp/n.png" --out-raw "$tmp/n.raw" \
+    --out-rgb888 "$tmp/n888.ppm"
+if [ "$rc" -eq 0 ]; then pass none_renders; else fail none_renders "exit $rc: $(cat "$tmp/e")"; fi
+[ "$(png_size "$tmp/n.png")" = 64x48 ] && pass none_png_size || fail none_png_size "$(png_size "$tmp/n.png")"
+[ "$(fsize "$tmp/n.raw")" = $((64 * 48 * 2)) ] && pass out_raw_size || fail out_raw_size "$(fsize "$tmp/n.raw") bytes"
+hdr=$(head -c 13 "$tmp/n888.ppm" | tr '\n' ' ')
+if [ "$hdr" = "P6 64 48 255 " ] && [ "$(fsize "$tmp/n888.ppm")" = $((13 + 64 * 48 * 3)) ]; then
+  pass out_rgb888_ppm
+else
+  fail out_rgb888_ppm "header '$hdr', $(fsize "$tmp/n888.ppm") bytes"
+fi
+run --scene "$scene" --panel none --size 64x48 --out "$tmp/n.ppm"
+hdr=$(head -c 13 "$tmp/n.ppm" | tr '\n' ' ')
+[ "$rc" -eq 0 ] && [ "$hdr" = "P6 64 48 255 " ] && [ "$(fsize "$tmp/n.ppm")" = $((13 + 64 * 48 * 3)) ] &&
+  pass out_ppm || fail out_ppm "exit $rc, header '$hdr'"
+# The PNG and the PPM hold the same pixels: compare through python if present.
+if command -v python3 >/dev/null 2>&1 && python3 -c 'import zlib' 2>/dev/null; then
+  if python3 - "$tmp/n.png" "$tmp/n.ppm" "$tmp/n.raw" <<'PY'
+import struct, sys, zlib
+png = open(sys.argv[1], 'rb').read()
+pos, idat, w, h = 8, b'', 0, 0
+while pos < len(png):
+    n, t = struct.unpack('>I4s', png[pos:pos + 8])
+    d = png[pos + 8:pos + 8 + n]
+    if t == b'IHDR': w, h = struct.unpack('>II', d[:8])
+    if t == b'IDAT': idat += d
+    pos += 12 + n
+raw, out, prev, i = zlib.decompress(idat), bytearray(), bytearray(3 * w), 0
+for y in range(h):
+    f, line = raw[i], bytearray(raw[i + 1:i + 1 + 3 * w]); i += 1 + 3 * w
+    for x in range(3 * w):
+        a = line[x - 3] if x >= 3 else 0; b = prev[x]; c = prev[x - 3] if x >= 3 else 0
+        if f == 1: line[x] = (line[x] + a) & 255
+        elif f == 2: line[x] = (line[x] + b) & 255
+        elif f == 3: line[x] = (line[x] + (a + b) // 2) & 255
+        elif f == 4:
+            p = a + b - c; pa, pb, pc = abs(p - a), abs(p - b), abs(p - c)
+            line[x] = (line[x] + (a if pa <= pb and pa <= pc else b if pb <= pc else c)) & 255
+    out += line; prev = line
+ppm = open(sys.argv[2], 'rb').read()[13:]
+rw = open(sys.argv[3], 'rb').read()
+exp = bytearray()
+for k in range(0, len(rw), 2):
+    p = rw[k] | rw[k + 1] << 8
+    r, g, b = p >> 11, (p >> 5) & 63, p & 31
+    exp += bytes((r << 3 | r >> 2, g << 2 | g >> 4, b << 3 | b >> 2))
+sys.exit(0 if bytes(out) == ppm == bytes(exp) else 1)
+PY
+  then pass png_ppm_raw_same_pixels; else fail png_ppm_raw_same_pixels "PNG, PPM and raw differ"; fi
+fi
+
+# Default size with --panel none: the scene's canvas.
+run --scene "$scene" --panel none --out "$tmp/c.png"
+[ "$rc" -eq 0 ] && [ "$(png_size "$tmp/c.png")" = 600x600 ] && pass none_default_canvas_size ||
+  fail none_default_canvas_size "exit $rc, $(png_size "$tmp/c.png")"
+
+# ---- atomic output ----------------------------------------------------------
+expect_err out_missing_dir 2 "does not exist" --scene "$scene" --panel none --size 8x8 --out "$tmp/no/such/x.png"
+[ ! -e "$tmp/no" ] && pass out_missing_dir_no_file || fail out_missing_dir_no_file "something was created"
+: >"$tmp/afile"
+expect_err out_dir_is_file 2 "" --scene "$scene" --panel none --size 8x8 --out "$tmp/afile/x.png"
+# A directory the program cannot create files in: /proc even for root.
+run --scene "$scene" --panel none --size 8x8 --out /proc/host_sim_test.png
+[ "$rc" -ne 0 ] && [ ! -e /proc/host_sim_test.png ] && pass out_unwritable_dir ||
+  fail out_unwritable_dir "exit $rc"
+if [ "$(id -u)" != 0 ]; then
+  mkdir "$tmp/ro" && chmod 555 "$tmp/ro"
+  run --scene "$scene" --panel none --size 8x8 --out "$tmp/ro/x.png"
+  [ "$rc" -eq 2 ] && [ -z "$(ls -A "$tmp/ro")" ] && pass out_readonly_dir || fail out_readonly_dir "exit $rc"
+fi
+# A write that fails half-way (file size limit): the old file stays as it
+# was and no temporary file is left.
+mkdir "$tmp/lim" && echo old >"$tmp/lim/x.ppm"
+(trap '' XFSZ; ulimit -f 1; exec "$hs" --scene "$scene" --panel none --size 200x200 \
+   --out "$tmp/lim/x.ppm") >/dev/null 2>"$tmp/e"
+rc=$?
+left=$(ls -A "$tmp/lim" | tr '\n' ' ')
+if [ "$rc" -eq 1 ] && [ "$left" = "x.ppm " ] && [ "$(cat "$tmp/lim/x.ppm")" = old ]; then
+  pass out_failed_write_atomic
+else
+  fail out_failed_write_atomic "exit $rc, directory holds '$left': $(head -n 1 "$tmp/e")"
+fi
+# Overwriting succeeds and replaces the file whole.
+run --scene "$scene" --panel none --size 16x8 --out "$tmp/lim/x.ppm"
+[ "$rc" -eq 0 ] && [ "$(fsize "$tmp/lim/x.ppm")" = $((12 + 16 * 8 * 3)) ] && pass out_replaces ||
+  fail out_replaces "exit $rc"
+[ "$(ls -A "$tmp/lim" | tr '\n' ' ')" = "x.ppm " ] && pass out_no_temp_left || fail out_no_temp_left "$(ls -A "$tmp/lim")"
+
+# ---- --stats and --frames ---------------------------------------------------
+stats_check() {
+  python3 - "$1" "$2" <<'PY'
+import json, sys
+want = ["scene", "numeric", "width", "height", "frame", "render_us", "pixels_written",
+        "spi_bytes", "triangles_in", "triangles_drawn", "rays", "saturations"]
+lines = open(sys.argv[1]).read().splitlines()
+n = int(sys.argv[2])
+if len(lines) != n:
+    sys.exit("%d lines, want %d" % (len(lines), n))
+for i, l in enumerate(lines):
+    o = json.loads(l)
+    miss = [k for k in want if k not in o]
+    if miss: sys.exit("missing " + ",".join(miss))
+    if o["frame"] != i: sys.exit("frame %r, want %d" % (o["frame"], i))
+    for k in want[2:]:
+        if not isinstance(o[k], int) or o[k] < 0: sys.exit("%s not a count: %r" % (k, o[k]))
+PY
+}
+if command -v python3 >/dev/null 2>&1; then
+  run --scene "$scene" --panel none --size 32x24 --stats
+  if [ "$rc" -eq 0 ] && msg=$(stats_check "$tmp/o" 1 2>&1); then pass stats_json; else fail stats_json "exit $rc: $msg"; fi
+  run --scene "$scene" --panel none --size 32x24 --stats --frames 3
+  if [ "$rc" -eq 0 ] && msg=$(stats_check "$tmp/o" 3 2>&1); then pass stats_frames; else fail stats_frames "exit $rc: $msg"; fi
+  run --scene "$scene" --panel none --size 32x24 --stats --numeric double --compare fixed
+  if [ "$rc" -eq 0 ] && msg=$(stats_check "$tmp/o" 1 2>&1) &&
+     python3 -c 'import json,sys; o=json.loads(open(sys.argv[1]).read()); assert "psnr" in o and "max_err" in o' "$tmp/o"
+  then pass stats_compare; else fail stats_compare "exit $rc: $msg"; fi
+else
+  skip stats_json "python3 not installed"
+fi
+run --scene "$scene" --panel none --size 32x24 --frames 4
+[ "$rc" -eq 0 ] && [ ! -s "$tmp/o" ] && pass frames_quiet_without_stats || fail frames_quiet_without_stats "exit $rc"
+
+# ---- the panel path ---------------------------------------------------------
+if [ "$panels" -eq 0 ]; then
+  skip panels "the panel drivers are not in this build"
+  exit 0
+fi
+run --scene "$scene" --panel st7789 --out "$tmp/s.png"
+[ "$rc" -eq 0 ] && [ "$(png_size "$tmp/s.png")" = 240x240 ] && pass st7789_png_240x240 ||
+  fail st7789_png_240x240 "exit $rc, $(png_size "$tmp/s.png"): $(head -n 1 "$tmp/e")"
+run --scene "$scene" --out "$tmp/d.png"
+[ "$rc" -eq 0 ] && [ "$(png_size "$tmp/d.png")" = 240x240 ] && pass default_panel_st7789 ||
+  fail default_panel_st7789 "exit $rc, $(png_size "$tmp/d.png")"
+run --scene "$scene" --panel ili9341 --out "$tmp/i.png"
+[ "$rc" -eq 0 ] && [ "$(png_size "$tmp/i.png")" = 320x240 ] && pass ili9341_png_320x240 ||
+  fail ili9341_png_320x240 "exit $rc, $(png_size "$tmp/i.png"): $(head -n 1 "$tmp/e")"
+
+# The panel path is lossless: the glass shows exactly the renderer's RGB565.
+for p in st7789:240x240 st7789:240x320 st7789:100x37 ili9341:320x240 ili9341:240x320 ili9341:17x5; do
+  panel=${p%%:*} size=${p#*:}
+  run --scene "$scene" --panel "$panel" --size "$size" --out-raw "$tmp/p.raw" --strip-rows 7
+  rc1=$rc
+  run --scene "$scene" --panel none --size "$size" --out-raw "$tmp/m.raw"
+  if [ "$rc1" -eq 0 ] && [ "$rc" -eq 0 ] && cmp -s "$tmp/p.raw" "$tmp/m.raw"; then
+    pass "glass_equals_framebuffer[$p]"
+  else
+    fail "glass_equals_framebuffer[$p]" "exit $rc1/$rc: $(head -n 1 "$tmp/e")"
+  fi
+done
+
+# spi_bytes counts the pixel bytes of a frame (2 a pixel) plus the commands.
+run --scene "$scene" --panel st7789 --stats
+spi=$(sed -n 's/.*"spi_bytes":\([0-9]*\).*/\1/p' "$tmp/o")
+[ "$rc" -eq 0 ] && [ -n "$spi" ] && [ "$spi" -ge $((240 * 240 * 2)) ] && [ "$spi" -lt $((240 * 240 * 2 + 4096)) ] &&
+  pass stats_spi_bytes || fail stats_spi_bytes "exit $rc, spi_bytes '$spi'"
+
+# ---- protocol violations (exit 3, one line naming the command) --------------
+expect_err fault_ramwr_no_window 3 "RAMWR" --scene "$scene" --inject-fault ramwr-no-window
+expect_err fault_early_after_slpout 3 "SLPOUT" --scene "$scene" --inject-fault early-after-slpout
+expect_err fault_unknown 2 "unknown fault" --scene "$scene" --inject-fault frob
+exit 0

@@ -23,7 +23,7 @@ png_size() {
 check_tree() {
   name=$1 scenes=$2 out=$3 log=$4
   n=0 bad=""
-  for f in $(find "$scenes" -type f -name '*.scene' | LC_ALL=C sort); do
+  for f in $(find "$scenes" -type f -name '*.scene' 2>/dev/null | LC_ALL=C sort); do
     n=$((n + 1))
     s=${f#"$scenes"/}
     s=${s%.scene}

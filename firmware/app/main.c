@@ -1,0 +1,236 @@
+/* main.c — the firmware application: cycles through the scenes compiled
+ * into the image, rendering each frame strip by strip while DMA sends the
+ * previous strip, and shows the frame rate on screen and over UART.
+ *
+ * Strips: FW_STRIP_ROWS rows of FW_WIDTH pixels. With one core, strips
+ * alternate between two buffers: strip k renders into buffer k&1 while DMA
+ * sends strip k-1. With two cores, core 0 renders the even strips and core 1
+ * the odd ones, each into its own pair of buffers; core 0 sends all strips
+ * in order. Core 1 reuses a buffer only after core 0 returns a credit for it
+ * (sent when that strip's DMA has finished).
+ *
+ * UART lines (115200 8N1), one per event, parsed by tools/rp2040sim:
+ *   boot board=B cores=N cpu_hz=H size=WxH strip_rows=R scenes=S
+ *   begin scene=NAME frame=F
+ *   fps scene=NAME frame=F us=U fps=X.Y
+ *   error scene=NAME what
+ * The first frame of each scene carries no overlay (no frame was timed yet),
+ * so it is exactly the renderer's image; later frames show "X.Y fps" in the
+ * top-left corner. */
+#include <stddef.h>
+#include <stdint.h>
+#include "fw_board.h"
+#include "fw_scenes.h"
+#include "font5x7.h"
+#include "panel.h"
+#include "render.h"
+
+#ifndef FW_WIDTH
+#define FW_WIDTH 240
+#endif
+#ifndef FW_HEIGHT
+#define FW_HEIGHT 240
+#endif
+#ifndef FW_STRIP_ROWS
+#define FW_STRIP_ROWS 8
+#endif
+#ifndef FW_FRAMES_PER_SCENE
+#define FW_FRAMES_PER_SCENE 3
+#endif
+#ifndef FW_PANEL
+#define FW_PANEL panel_st7789_240x240
+#endif
+
+#define NSTRIPS ((FW_HEIGHT + FW_STRIP_ROWS - 1) / FW_STRIP_ROWS)
+#define MSG_FRAME 0x80000000u
+#define MSG_CREDIT 1u
+#define MSG_ERROR 0xffffffffu
+
+/* [0], [1]: core 0's strips; [2], [3]: core 1's. */
+static uint16_t strip_buf[4][FW_WIDTH * FW_STRIP_ROWS];
+static struct render_ctx ctx[2];
+static struct hal hal;
+static struct panel panel;
+
+static void strip_rows(unsigned k, uint16_t *y0, uint16_t *y1)
+{
+    *y0 = (uint16_t)(k * FW_STRIP_ROWS);
+    *y1 = (uint16_t)(*y0 + FW_STRIP_ROWS > FW_HEIGHT ? FW_HEIGHT : *y0 + FW_STRIP_ROWS);
+}
+
+static int render_one(struct render_ctx *c, unsigned k, uint16_t *buf)
+{
+    struct render_target t = { FW_WIDTH, FW_HEIGHT, 0, 0, buf, NULL };
+    struct render_stats st = { 0, 0, 0, 0 };
+    strip_rows(k, &t.y0, &t.y1);
+    return render_strip(c, &t, &st);
+}
+
+static int scene_init(struct render_ctx *c, unsigned si, unsigned core)
+{
+    const struct fw_scene *fs = &fw_scenes[si];
+    return render_init(c, fs->scene, FW_WIDTH, FW_HEIGHT, FW_STRIP_ROWS, fs->work[core],
+                       fs->work_size);
+}
+
+/* ---- text helpers (no printf: it would cost more flash than the app) ---- */
+
+static char *put_str(char *p, const char *s)
+{
+    while (*s) *p++ = *s++;
+    return p;
+}
+
+static char *put_u32(char *p, uint32_t v)
+{
+    char tmp[10];
+    int n = 0;
+    do {
+        tmp[n++] = (char)('0' + v % 10u);
+        v /= 10u;
+    } while (v);
+    while (n) *p++ = tmp[--n];
+    return p;
+}
+
+/* "X.Y" frames per second from a frame time in microseconds. */
+static char *put_fps(char *p, uint32_t us)
+{
+    uint32_t tenths = us ? (10000000u + us / 2u) / us : 0;
+    p = put_u32(p, tenths / 10u);
+    *p++ = '.';
+    *p++ = (char)('0' + tenths % 10u);
+    return p;
+}
+
+/* ---- core 1 --------------------------------------------------------------- */
+
+static void core1_main(void)
+{
+    int cur = -1;
+    for (;;) {
+        uint32_t m = fw_board_recv();
+        if (!(m & MSG_FRAME)) continue;
+        unsigned si = (m >> 16) & 0x7fffu;
+        int ok = 1;
+        if ((int)si != cur) {
+            ok = scene_init(&ctx[1], si, 1) == 0;
+            cur = ok ? (int)si : -1;
+        }
+        if (ok) ok = render_begin_frame(&ctx[1], (uint16_t)(m & 0xffffu)) == 0;
+        unsigned j = 0;
+        for (unsigned k = 1; k < NSTRIPS; k += 2, j++) {
+            if (j >= 2) (void)fw_board_recv();  /* credit for buffer j & 1 */
+            int rc = ok ? render_one(&ctx[1], k, strip_buf[2 + (j & 1u)]) : -1;
+            fw_board_send(rc == 0 ? k : MSG_ERROR);
+        }
+        for (unsigned i = 0; i < (j < 2 ? j : 2); i++) (void)fw_board_recv();
+    }
+}
+
+static void strip_sent_credit(void *arg)
+{
+    (void)arg;
+    fw_board_send(MSG_CREDIT);
+}
+
+/* ---- core 0 --------------------------------------------------------------- */
+
+static void say(const char *a, const char *name, const char *b)
+{
+    char line[160], *p = line;
+    p = put_str(p, a);
+    p = put_str(p, name);
+    p = put_str(p, b);
+    *p = 0;
+    fw_board_puts(line);
+}
+
+/* Renders and sends frame f of scene si; returns its time in us, 0 on error. */
+static uint32_t frame(unsigned si, uint16_t f, uint32_t last_us, int dual)
+{
+    const char *name = fw_scenes[si].name;
+    char text[16], line[160], *p;
+    int overlay = last_us != 0;
+    if (overlay) *put_str(put_fps(text, last_us), " fps") = 0;
+
+    p = put_str(put_str(line, "begin scene="), name);
+    p = put_str(p, " frame=");
+    p = put_str(put_u32(p, f), "\r\n");
+    *p = 0;
+    fw_board_puts(line);
+
+    uint64_t t0 = hal.now_us(hal.ctx);
+    if (render_begin_frame(&ctx[0], f) != 0) return 0;
+    if (dual) fw_board_send(MSG_FRAME | ((uint32_t)si << 16) | f);
+    dcs_set_window(&panel.dcs, 0, 0, FW_WIDTH - 1, FW_HEIGHT - 1);
+    dcs_write_begin(&panel.dcs, 0);
+    int err = 0;
+    for (unsigned k = 0; k < NSTRIPS; k++) {
+        uint16_t *buf;
+        uint16_t y0, y1;
+        strip_rows(k, &y0, &y1);
+        if (dual && (k & 1u)) {
+            uint32_t m = fw_board_recv();
+            if (m != k) err = 1;
+            buf = strip_buf[2 + ((k / 2u) & 1u)];
+        } else {
+            buf = strip_buf[(dual ? k / 2u : k) & 1u];
+            if (render_one(&ctx[0], k, buf) != 0) err = 1;
+        }
+        if (overlay)
+            font5x7_draw(buf, FW_WIDTH, y0, y1, 2, 2, 2, text, 0xffffu, 0x0000u);
+        fw_board_pixels_async(&hal, buf, (size_t)(y1 - y0) * FW_WIDTH,
+                              dual && (k & 1u) ? strip_sent_credit : NULL, NULL);
+    }
+    hal.spi_wait(hal.ctx);
+    dcs_write_end(&panel.dcs);
+    uint64_t us = hal.now_us(hal.ctx) - t0;
+    if (err) {
+        say("error scene=", name, " render_strip failed\r\n");
+        return 0;
+    }
+    uint32_t u = us > 0xffffffffu ? 0xffffffffu : (us ? (uint32_t)us : 1u);
+    p = put_str(put_str(line, "fps scene="), name);
+    p = put_str(p, " frame=");
+    p = put_str(put_u32(p, f), " us=");
+    p = put_str(put_u32(p, u), " fps=");
+    p = put_str(put_fps(p, u), "\r\n");
+    *p = 0;
+    fw_board_puts(line);
+    return u;
+}
+
+int main(void)
+{
+    char line[160], *p;
+    if (fw_board_init(&hal) != 0) return 1;
+    int dual = fw_board_cores() == 2;
+
+    p = put_str(put_str(line, "boot board="), fw_board_name);
+    p = put_str(put_u32(put_str(p, " cores="), dual ? 2u : 1u), " cpu_hz=");
+    p = put_u32(p, fw_board_cpu_hz());
+    p = put_str(put_u32(put_str(p, " size="), FW_WIDTH), "x");
+    p = put_u32(p, FW_HEIGHT);
+    p = put_u32(put_str(p, " strip_rows="), FW_STRIP_ROWS);
+    p = put_str(put_u32(put_str(p, " scenes="), fw_scene_count), "\r\n");
+    *p = 0;
+    fw_board_puts(line);
+
+    if (panel_init(&panel, &FW_PANEL, &hal, 0) != 0) {
+        fw_board_puts("error panel_init failed\r\n");
+        return 1;
+    }
+    if (dual) fw_board_core1_start(core1_main);
+
+    for (;;) {
+        for (unsigned si = 0; si < fw_scene_count; si++) {
+            if (scene_init(&ctx[0], si, 0) != 0) {
+                say("error scene=", fw_scenes[si].name, " work memory too small\r\n");
+                continue;
+            }
+            uint32_t last = 0;
+            for (uint16_t f = 0; f < FW_FRAMES_PER_SCENE; f++) last = frame(si, f, last, dual);
+        }
+    }
+}

@@ -1,0 +1,141 @@
+/* board.c — RP2040 clocks, resets, UART0, timer and the second core. */
+#include "board.h"
+#include "rp2040_regs.h"
+
+static void unreset(uint32_t mask)
+{
+    REG_CLR(RESETS_RESET) = mask;
+    while ((REG(RESETS_DONE) & mask) != mask) {}
+}
+
+/* f_out = 12 MHz * fbdiv / (pd1 * pd2); VCO = 12 MHz * fbdiv in 750..1600 MHz. */
+static void pll_start(uint32_t base, uint32_t reset_bit, uint32_t fbdiv, uint32_t pd1, uint32_t pd2)
+{
+    REG_SET(RESETS_RESET) = reset_bit;
+    unreset(reset_bit);
+    REG(PLL_CS(base)) = 1;  /* REFDIV = 1 */
+    REG(PLL_FBDIV(base)) = fbdiv;
+    REG_CLR(PLL_PWR(base)) = PLL_PWR_PD | PLL_PWR_VCOPD;
+    while (!(REG(PLL_CS(base)) & PLL_LOCK)) {}
+    REG(PLL_PRIM(base)) = (pd1 << 16) | (pd2 << 12);
+    REG_CLR(PLL_PWR(base)) = PLL_PWR_POSTDIVPD;
+}
+
+static void clocks_init(void)
+{
+    REG(CLK_SYS_RESUS_CTRL) = 0;
+    REG(XOSC_CTRL) = XOSC_RANGE_1_15MHZ;
+    REG(XOSC_STARTUP) = 47;  /* ~1 ms: (12 MHz / 1000 + 128) / 256 */
+    REG_SET(XOSC_CTRL) = XOSC_ENABLE;
+    while (!(REG(XOSC_STATUS) & XOSC_STABLE)) {}
+
+    /* Run from clk_ref while the PLLs change. */
+    REG_CLR(CLK_SYS_CTRL) = CLK_SYS_SRC_AUX;
+    while (!(REG(CLK_SYS_SELECTED) & 1u)) {}
+    REG(CLK_REF_CTRL) = CLK_REF_SRC_XOSC;
+    while (!(REG(CLK_REF_SELECTED) & (1u << CLK_REF_SRC_XOSC))) {}
+
+#if RP2040_SYS_MHZ == 133
+    pll_start(PLL_SYS_BASE, RESET_PLL_SYS, 133, 6, 2);  /* VCO 1596 MHz */
+#elif RP2040_SYS_MHZ == 125
+    pll_start(PLL_SYS_BASE, RESET_PLL_SYS, 125, 6, 2);  /* VCO 1500 MHz */
+#else
+#error "RP2040_SYS_MHZ must be 125 or 133"
+#endif
+    pll_start(PLL_USB_BASE, RESET_PLL_USB, 125, 6, 2);  /* 125 MHz for clk_peri */
+
+    REG(CLK_SYS_DIV) = 1u << 8;
+    REG(CLK_SYS_CTRL) = CLK_SYS_AUX_PLL_SYS;  /* AUXSRC first, then switch SRC */
+    REG(CLK_SYS_CTRL) = CLK_SYS_AUX_PLL_SYS | CLK_SYS_SRC_AUX;
+    while (!(REG(CLK_SYS_SELECTED) & 2u)) {}
+
+    REG(CLK_PERI_CTRL) = 0;
+    REG(CLK_PERI_CTRL) = CLK_PERI_ENABLE | CLK_PERI_AUX_PLL_USB;
+
+    /* Timer tick: 1 us from the 12 MHz clk_ref. */
+    REG(WATCHDOG_TICK) = WATCHDOG_TICK_EN | 12u;
+}
+
+static void uart_init(void)
+{
+    unreset(RESET_UART0);
+    /* 125 MHz / (16 * 115200) = 67.817: IBRD 67, FBRD round(0.817 * 64) = 52 */
+    REG(UARTIBRD) = 67;
+    REG(UARTFBRD) = 52;
+    REG(UARTLCR_H) = (3u << 5) | (1u << 4);  /* 8 bits, FIFOs on */
+    REG(UARTCR) = (1u << 0) | (1u << 8);     /* UARTEN, TXE */
+    REG(GPIO_CTRL(RP2040_UART_TX)) = GPIO_FUNC_UART;
+}
+
+void board_init(void)
+{
+    clocks_init();
+    unreset(RESET_IO_BANK0 | RESET_PADS_BANK0 | RESET_TIMER | RESET_DMA | RESET_SPI0);
+    uart_init();
+}
+
+uint64_t board_now_us(void)
+{
+    /* Read high, low, high again: retry if the low word wrapped in between. */
+    uint32_t hi, lo;
+    do {
+        hi = REG(TIMER_RAWH);
+        lo = REG(TIMER_RAWL);
+    } while (hi != REG(TIMER_RAWH));
+    return ((uint64_t)hi << 32) | lo;
+}
+
+void board_delay_us(uint32_t us)
+{
+    uint64_t end = board_now_us() + us;
+    while (board_now_us() < end) {}
+}
+
+void board_putc(char c)
+{
+    while (REG(UARTFR) & UARTFR_TXFF) {}
+    REG(UARTDR) = (uint8_t)c;
+}
+
+void board_puts(const char *s)
+{
+    while (*s) board_putc(*s++);
+}
+
+uint32_t board_core_id(void) { return REG(SIO_CPUID); }
+
+void board_fifo_push(uint32_t v)
+{
+    while (!(REG(SIO_FIFO_ST) & SIO_FIFO_RDY)) {}
+    REG(SIO_FIFO_WR) = v;
+    __asm__ volatile("sev");
+}
+
+uint32_t board_fifo_pop(void)
+{
+    while (!(REG(SIO_FIFO_ST) & SIO_FIFO_VLD)) __asm__ volatile("wfe");
+    return REG(SIO_FIFO_RD);
+}
+
+static void fifo_drain(void)
+{
+    while (REG(SIO_FIFO_ST) & SIO_FIFO_VLD) (void)REG(SIO_FIFO_RD);
+}
+
+void board_core1_launch(void (*entry)(void), uint32_t *stack_top)
+{
+    /* The boot ROM on core 1 waits for 0, 0, 1, VTOR, SP, PC, echoing each
+     * word; a wrong echo restarts the sequence. A 0 is sent only after
+     * draining, since core 1 may have stale words queued. */
+    const uint32_t seq[6] = { 0, 0, 1, (uint32_t)(uintptr_t)rp2040_vectors,
+                              (uint32_t)(uintptr_t)stack_top, (uint32_t)(uintptr_t)entry };
+    unsigned i = 0;
+    while (i < 6) {
+        if (seq[i] == 0) {
+            fifo_drain();
+            __asm__ volatile("sev");
+        }
+        board_fifo_push(seq[i]);
+        i = (board_fifo_pop() == seq[i]) ? i + 1 : 0;
+    }
+}

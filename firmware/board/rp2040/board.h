@@ -1,0 +1,46 @@
+/* board.h — what the RP2040 start-up code offers the application.
+ *
+ * Clocks after board_init(): XOSC 12 MHz -> PLL_SYS -> clk_sys at
+ * RP2040_SYS_MHZ (default 133); PLL_USB at 125 MHz -> clk_peri, so SPI0 can
+ * run at exactly clk_peri/2 = 62.5 MHz, the ST7789's fastest write clock,
+ * whatever clk_sys is. The 1 MHz timer counts from clk_ref = XOSC.
+ * UART0 on RP2040_UART_TX (default GP0), 115200 8N1. */
+#ifndef BOARD_H
+#define BOARD_H
+
+#include <stdint.h>
+
+#ifndef RP2040_SYS_MHZ
+#define RP2040_SYS_MHZ 133
+#endif
+#define RP2040_PERI_HZ 125000000u
+#ifndef RP2040_UART_TX
+#define RP2040_UART_TX 0
+#endif
+
+/* The vector table (crt0.c); core 1 starts with the same table. */
+typedef void (*vector_fn)(void);
+extern const vector_fn rp2040_vectors[16 + 26];
+
+void board_init(void);
+
+/* Microseconds since boot (64-bit timer, never wraps in practice). */
+uint64_t board_now_us(void);
+void board_delay_us(uint32_t us);
+
+/* Blocking UART0 output. */
+void board_putc(char c);
+void board_puts(const char *s);
+
+/* Core id (0 or 1) of the caller. */
+uint32_t board_core_id(void);
+
+/* Starts core 1 at entry(), with its stack top at stack_top (8-byte aligned),
+ * through the boot ROM's SIO FIFO handshake. */
+void board_core1_launch(void (*entry)(void), uint32_t *stack_top);
+
+/* Inter-core FIFO (8 words each direction); blocking push and pop. */
+void board_fifo_push(uint32_t v);
+uint32_t board_fifo_pop(void);
+
+#endif

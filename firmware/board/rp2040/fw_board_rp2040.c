@@ -1,0 +1,38 @@
+/* fw_board_rp2040.c — the application's board interface on the RP2040.
+ *
+ * RP2040_SINGLE_CORE=1 renders on core 0 only (the rp2040js emulator models
+ * one core and no SIO FIFO). */
+#include "fw_board.h"
+#include "board.h"
+#include "hal_rp2040.h"
+
+#ifndef RP2040_SINGLE_CORE
+#define RP2040_SINGLE_CORE 0
+#endif
+#ifndef RP2040_CORE1_STACK
+#define RP2040_CORE1_STACK 8192  /* bytes */
+#endif
+
+const char fw_board_name[] = "rp2040";
+
+static uint64_t core1_stack[RP2040_CORE1_STACK / 8];
+
+int fw_board_init(struct hal *h) { return hal_rp2040_init(h); }
+
+int fw_board_pixels_async(struct hal *h, const uint16_t *px, size_t n, hal_done_fn done, void *arg)
+{
+    return hal_rp2040_write_pixels_async(h->ctx, px, n, done, arg);
+}
+
+void fw_board_puts(const char *s) { board_puts(s); }
+
+unsigned fw_board_cores(void) { return RP2040_SINGLE_CORE ? 1u : 2u; }
+
+void fw_board_core1_start(void (*entry)(void))
+{
+    board_core1_launch(entry, (uint32_t *)(core1_stack + RP2040_CORE1_STACK / 8));
+}
+
+void fw_board_send(uint32_t v) { board_fifo_push(v); }
+uint32_t fw_board_recv(void) { return board_fifo_pop(); }
+uint32_t fw_board_cpu_hz(void) { return RP2040_SYS_MHZ * 1000000u; }

@@ -1,0 +1,341 @@
+'use strict';
+/* emu_panel.js — the emulated ST7789 / ILI9341 controller of hal/sim/emu_panel.c,
+ * ported line for line so the emulated Pico and host_sim decode the same bus
+ * the same way (same rules, same violation lines; tests/test_rp2040sim_vectors
+ * runs the shared vectors through both). Keep the two in step. */
+
+const MS = 1000000;
+const MEM_W = 240;
+const MEM_H = 320;
+const ST = 0;
+const IL = 1;
+const M_ST = 1 << ST;
+const M_IL = 1 << IL;
+const M_ALL = M_ST | M_IL;
+const F_PIXELS = 1;
+const F_NOTEMU = 2;
+
+/* [code, models, min, max, flags, name] */
+const CMDS = [
+  [0x00, M_ALL, 0, 0, 0, 'NOP'], [0x01, M_ALL, 0, 0, 0, 'SWRESET'],
+  [0x10, M_ALL, 0, 0, 0, 'SLPIN'], [0x11, M_ALL, 0, 0, 0, 'SLPOUT'],
+  [0x12, M_ALL, 0, 0, F_NOTEMU, 'PTLON'], [0x13, M_ALL, 0, 0, 0, 'NORON'],
+  [0x20, M_ALL, 0, 0, 0, 'INVOFF'], [0x21, M_ALL, 0, 0, 0, 'INVON'],
+  [0x26, M_ALL, 1, 1, 0, 'GAMSET'], [0x28, M_ALL, 0, 0, 0, 'DISPOFF'],
+  [0x29, M_ALL, 0, 0, 0, 'DISPON'], [0x2A, M_ALL, 4, 4, 0, 'CASET'],
+  [0x2B, M_ALL, 4, 4, 0, 'RASET'], [0x2C, M_ALL, 0, 0, F_PIXELS, 'RAMWR'],
+  [0x30, M_ALL, 4, 4, F_NOTEMU, 'PTLAR'], [0x33, M_ALL, 6, 6, F_NOTEMU, 'VSCRDEF'],
+  [0x34, M_ALL, 0, 0, 0, 'TEOFF'], [0x35, M_ALL, 1, 1, 0, 'TEON'],
+  [0x36, M_ALL, 1, 1, 0, 'MADCTL'], [0x37, M_ALL, 2, 2, F_NOTEMU, 'VSCSAD'],
+  [0x38, M_ALL, 0, 0, 0, 'IDMOFF'], [0x39, M_ALL, 0, 0, 0, 'IDMON'],
+  [0x3A, M_ALL, 1, 1, 0, 'COLMOD'], [0x3C, M_ALL, 0, 0, F_PIXELS, 'RAMWRC'],
+  [0x44, M_ALL, 2, 2, 0, 'TESCAN'], [0x51, M_ALL, 1, 1, 0, 'WRDISBV'],
+  [0x53, M_ALL, 1, 1, 0, 'WRCTRLD'], [0x55, M_ALL, 1, 1, 0, 'WRCACE'],
+  [0x5E, M_ALL, 1, 1, 0, 'WRCABCMB'],
+  [0xB0, M_ST, 2, 2, 0, 'RAMCTRL'], [0xB2, M_ST, 5, 5, 0, 'PORCTRL'],
+  [0xB3, M_ST, 3, 3, 0, 'FRCTRL1'], [0xB7, M_ST, 1, 1, 0, 'GCTRL'],
+  [0xBA, M_ST, 1, 1, 0, 'DGMEN'], [0xBB, M_ST, 1, 1, 0, 'VCOMS'],
+  [0xC0, M_ST, 1, 1, 0, 'LCMCTRL'], [0xC2, M_ST, 1, 2, 0, 'VDVVRHEN'],
+  [0xC3, M_ST, 1, 1, 0, 'VRHS'], [0xC4, M_ST, 1, 1, 0, 'VDVS'],
+  [0xC5, M_ST, 1, 1, 0, 'VCMOFSET'], [0xC6, M_ST, 1, 1, 0, 'FRCTRL2'],
+  [0xD0, M_ST, 2, 2, 0, 'PWCTRL1'], [0xE0, M_ST, 14, 14, 0, 'PVGAMCTRL'],
+  [0xE1, M_ST, 14, 14, 0, 'NVGAMCTRL'], [0xE4, M_ST, 3, 3, 0, 'GATECTRL'],
+  [0xE7, M_ST, 1, 1, 0, 'SPI2EN'], [0xE9, M_ST, 3, 3, 0, 'EQCTRL'],
+  [0xB0, M_IL, 1, 1, 0, 'IFMODE'], [0xB1, M_IL, 2, 2, 0, 'FRMCTR1'],
+  [0xB2, M_IL, 2, 2, 0, 'FRMCTR2'], [0xB3, M_IL, 2, 2, 0, 'FRMCTR3'],
+  [0xB4, M_IL, 1, 1, 0, 'INVTR'], [0xB5, M_IL, 4, 4, 0, 'PRCTR'],
+  [0xB6, M_IL, 3, 4, 0, 'DISCTRL'], [0xB7, M_IL, 1, 1, 0, 'ETMOD'],
+  [0xC0, M_IL, 1, 1, 0, 'PWCTRL1'], [0xC1, M_IL, 1, 1, 0, 'PWCTRL2'],
+  [0xC5, M_IL, 2, 2, 0, 'VMCTRL1'], [0xC7, M_IL, 1, 1, 0, 'VMCTRL2'],
+  [0xCB, M_IL, 5, 5, 0, 'PWCTRLA'], [0xCF, M_IL, 3, 3, 0, 'PWCTRLB'],
+  [0xE0, M_IL, 15, 15, 0, 'PGAMCTRL'], [0xE1, M_IL, 15, 15, 0, 'NGAMCTRL'],
+  [0xE8, M_IL, 3, 3, 0, 'DTCA'], [0xEA, M_IL, 2, 2, 0, 'DTCB'],
+  [0xED, M_IL, 4, 4, 0, 'PWRSEQ'], [0xF2, M_IL, 1, 1, 0, 'EN3G'],
+  [0xF6, M_IL, 3, 3, 0, 'IFCTL'], [0xF7, M_IL, 1, 1, 0, 'PRC'],
+].map(([code, models, min, max, flags, name]) => ({ code, models, min, max, flags, name }));
+
+const MODEL_NAME = ['ST7789', 'ILI9341'];
+
+/* name, model, glass_w, glass_h, mem_x, mem_y, mirror_x, bgr, inverted, normally_black */
+const MODULES = {
+  st7789_240x240: { name: 'st7789_240x240', model: ST, gw: 240, gh: 240, memX: 0, memY: 0, mirrorX: 0, bgr: 0, inverted: 1, normallyBlack: 1 },
+  st7789_240x320: { name: 'st7789_240x320', model: ST, gw: 240, gh: 320, memX: 0, memY: 0, mirrorX: 0, bgr: 0, inverted: 1, normallyBlack: 1 },
+  ili9341_240x320: { name: 'ili9341_240x320', model: IL, gw: 240, gh: 320, memX: 0, memY: 0, mirrorX: 1, bgr: 1, inverted: 0, normallyBlack: 0 },
+};
+const FIND = {
+  st7789: ['st7789_240x240', 0], st7789_240x240: ['st7789_240x240', 0],
+  st7789_240x320: ['st7789_240x320', 0], ili9341: ['ili9341_240x320', 1],
+  ili9341_320x240: ['ili9341_240x320', 1], ili9341_240x320: ['ili9341_240x320', 0],
+};
+
+function hex2(v) { return v.toString(16).toUpperCase().padStart(2, '0'); }
+
+class EmuPanel {
+  /* name as emu_module_find accepts; throws for an unknown name. */
+  constructor(name, view) {
+    const f = FIND[name];
+    if (!f) throw new Error(`unknown panel '${name}'`);
+    this.mod = MODULES[f[0]];
+    this.view = view === undefined ? f[1] : view;
+    this.cs = 1; this.dc = 1; this.reset = 1; this.bl = 1;
+    this.csTiedLow = 0;
+    this.offset = 0;
+    this.resetLowNs = 0;
+    this.param = new Uint8Array(16);
+    this.violation = '';
+    this.pixelsWritten = 0;
+    this.mem = new Uint16Array(MEM_W * MEM_H);
+    let s = 0x2545F491;
+    for (let i = 0; i < MEM_W * MEM_H; i++) {
+      s = (s ^ (s << 13)) >>> 0;
+      s = (s ^ (s >>> 17)) >>> 0;
+      s = (s ^ (s << 5)) >>> 0;
+      this.mem[i] = s & 0xffff;
+    }
+    this.slpinOk = 0; this.slpinSince = 0; this.slpinWhy = '';
+    this.hwResetDone(0);
+  }
+
+  lookup(code) {
+    const bit = 1 << this.mod.model;
+    for (const c of CMDS) if (c.code === code && (c.models & bit)) return c;
+    return null;
+  }
+
+  cmdName(code) {
+    const c = code < 0 ? null : this.lookup(code);
+    return c ? c.name : 'UNKNOWN';
+  }
+
+  violate(name, code, at, what) {
+    if (this.violation) return;
+    this.violation = code >= 0 ? `${name} (0x${hex2(code)}) at byte ${at}: ${what}` : `${name} at byte ${at}: ${what}`;
+  }
+
+  vcmd(code, what) { this.violate(this.cmdName(code), code, this.offset, what); }
+
+  resetRegs() {
+    this.cur = -1; this.nparam = 0; this.half = 0; this.hi = 0;
+    this.asleep = 1; this.displayOn = 0; this.inverted = 0; this.idle = 0;
+    this.colmod = 0x66; this.madctl = 0; this.windowSet = 0; this.contValid = 0;
+    this.xs = 0; this.xe = MEM_W - 1; this.ys = 0; this.ye = MEM_H - 1; this.cx = 0; this.cy = 0;
+  }
+
+  hwResetDone(t) {
+    this.resetRegs();
+    this.busyUntil = t + 5 * MS; this.busyWhy = 'hardware reset'; this.busySince = t;
+    this.slpoutOk = t + 120 * MS; this.slpoutWhy = 'hardware reset'; this.slpoutSince = t;
+    this.slpinOk = 0;
+  }
+
+  limX() { return (this.madctl & 0x20) ? MEM_H : MEM_W; }
+  limY() { return (this.madctl & 0x20) ? MEM_W : MEM_H; }
+
+  endCommand() {
+    if (this.cur < 0) return;
+    const c = this.lookup(this.cur);
+    if (c.flags & F_PIXELS) {
+      if (this.half) this.vcmd(this.cur, 'ended with half a pixel (odd number of data bytes)');
+    } else if (this.nparam < c.min) {
+      this.vcmd(this.cur, `${this.nparam} parameter bytes, needs ${c.min}${c.max > c.min ? ' or more' : ''}`);
+    }
+    this.cur = -1; this.nparam = 0; this.half = 0;
+  }
+
+  tooSoon(code, t, until, since, why) {
+    if (t >= until) return false;
+    this.vcmd(code, `sent ${Math.floor((t - since) / 1000)} us after ${why}, needs ${Math.floor((until - since) / 1000)} us`);
+    return true;
+  }
+
+  startWrite(code) {
+    if (this.asleep) {
+      this.vcmd(code, 'memory write while asleep (no SLPOUT since reset or SLPIN)');
+    } else if (this.windowSet !== 3) {
+      this.vcmd(code, (this.windowSet & 1) ? 'memory write before RASET set the rows'
+        : (this.windowSet & 2) ? 'memory write before CASET set the columns'
+          : 'memory write before CASET/RASET set a window');
+    } else if ((this.colmod & 7) !== 5) {
+      this.vcmd(code, `memory write with COLMOD 0x${hex2(this.colmod)} (only 16-bit, 0x55, emulated)`);
+    } else if (this.xe >= this.limX() || this.ye >= this.limY()) {
+      this.vcmd(code, `window ${this.xs}..${this.xe} x ${this.ys}..${this.ye} outside the memory (${this.limX()}x${this.limY()})`);
+    } else if (code === 0x3C && !this.contValid) {
+      this.vcmd(code, 'no RAMWR to continue since the window or MADCTL changed');
+    } else if (code === 0x2C) {
+      this.cx = this.xs; this.cy = this.ys; this.contValid = 1;
+    }
+  }
+
+  command(code, t) {
+    this.endCommand();
+    if (this.violation) return;
+    const c = this.lookup(code);
+    if (!c) { this.vcmd(code, `not a ${MODEL_NAME[this.mod.model]} command`); return; }
+    if (c.flags & F_NOTEMU) { this.vcmd(code, 'not emulated'); return; }
+    if (this.tooSoon(code, t, this.busyUntil, this.busySince, this.busyWhy)) return;
+    this.cur = code; this.nparam = 0;
+    switch (code) {
+      case 0x01: {
+        const awake = !this.asleep;
+        this.resetRegs();
+        this.busyUntil = t + 5 * MS; this.busyWhy = 'SWRESET'; this.busySince = t;
+        if (awake) { this.slpoutOk = t + 120 * MS; this.slpoutWhy = 'SWRESET'; this.slpoutSince = t; }
+        this.slpinOk = 0;
+        this.cur = code;
+        break;
+      }
+      case 0x10:
+        if (this.tooSoon(code, t, this.slpinOk, this.slpinSince, this.slpinWhy)) return;
+        if (!this.asleep) { this.asleep = 1; this.slpoutOk = t + 120 * MS; this.slpoutWhy = 'SLPIN'; this.slpoutSince = t; }
+        this.busyUntil = t + 5 * MS; this.busyWhy = 'SLPIN'; this.busySince = t;
+        break;
+      case 0x11:
+        if (this.tooSoon(code, t, this.slpoutOk, this.slpoutSince, this.slpoutWhy)) return;
+        if (this.asleep) { this.asleep = 0; this.slpinOk = t + 120 * MS; this.slpinWhy = 'SLPOUT'; this.slpinSince = t; }
+        this.busyUntil = t + 5 * MS; this.busyWhy = 'SLPOUT'; this.busySince = t;
+        break;
+      case 0x20: this.inverted = 0; break;
+      case 0x21: this.inverted = 1; break;
+      case 0x28: this.displayOn = 0; break;
+      case 0x29: this.displayOn = 1; break;
+      case 0x38: this.idle = 0; break;
+      case 0x39: this.idle = 1; break;
+      case 0x2C: case 0x3C: this.startWrite(code); break;
+      default: break;
+    }
+  }
+
+  execute() {
+    const a = this.param;
+    switch (this.cur) {
+      case 0x2A: case 0x2B: {
+        const s = (a[0] << 8) | a[1], e = (a[2] << 8) | a[3];
+        const col = this.cur === 0x2A;
+        const lim = col ? this.limX() : this.limY();
+        if (s > e) this.vcmd(this.cur, `start ${s} after end ${e}`);
+        else if (e >= lim) this.vcmd(this.cur, `${col ? 'columns' : 'rows'} ${s}..${e} outside the memory (0..${lim - 1})`);
+        else if (col) { this.xs = s; this.xe = e; this.windowSet |= 1; }
+        else { this.ys = s; this.ye = e; this.windowSet |= 2; }
+        this.contValid = 0;
+        break;
+      }
+      case 0x36: this.madctl = a[0]; this.contValid = 0; break;
+      case 0x3A: this.colmod = a[0]; break;
+      default: break;
+    }
+  }
+
+  pixel(v) {
+    let c = this.cx, r = this.cy;
+    if (this.madctl & 0x20) { c = this.cy; r = this.cx; }
+    if (this.madctl & 0x40) c = MEM_W - 1 - c;
+    if (this.madctl & 0x80) r = MEM_H - 1 - r;
+    this.mem[r * MEM_W + c] = v;
+    this.pixelsWritten++;
+    if (this.cx < this.xe) {
+      this.cx++;
+    } else {
+      this.cx = this.xs;
+      this.cy = this.cy < this.ye ? this.cy + 1 : this.ys;
+      if (this.cy === this.ys && this.onWrap) this.onWrap();
+    }
+  }
+
+  data(b) {
+    if (this.cur < 0) { this.violate('DATA', -1, this.offset, `data byte 0x${hex2(b)} without a command`); return; }
+    const c = this.lookup(this.cur);
+    if (c.flags & F_PIXELS) {
+      if (this.half) { this.half = 0; this.pixel((this.hi << 8) | b); } else { this.half = 1; this.hi = b; }
+      return;
+    }
+    if (this.nparam >= c.max) { this.vcmd(this.cur, `more than ${c.max} parameter bytes`); return; }
+    if (this.nparam < 16) this.param[this.nparam] = b;
+    this.nparam++;
+    if (this.nparam === c.max) this.execute();
+  }
+
+  /* One SPI byte at time t (ns). */
+  spiByte(b, t) {
+    if (!this.violation) {
+      if (!this.reset) this.violate('RESET', -1, this.offset, 'byte sent while RESET is low');
+      else if (this.cs && !this.csTiedLow) { /* deselected */ }
+      else if (this.dc === 0) this.command(b, t);
+      else this.data(b);
+    }
+    this.offset++;
+  }
+
+  spi(bytes, t, nsPerByte) {
+    for (let i = 0; i < bytes.length; i++) this.spiByte(bytes[i], t + i * nsPerByte);
+  }
+
+  /* line: 0 DC, 1 RESET, 2 CS, 3 BL */
+  line(line, level, t) {
+    if (this.violation) return;
+    level = level ? 1 : 0;
+    switch (line) {
+      case 0: this.dc = level; break;
+      case 1:
+        if (this.reset && !level) { this.resetLowNs = t; this.cur = -1; this.half = 0; }
+        else if (!this.reset && level) {
+          if (t - this.resetLowNs < 10000) this.violate('RESET', -1, this.offset, `pulse of ${t - this.resetLowNs} ns, needs 10 us`);
+          else this.hwResetDone(t);
+        }
+        this.reset = level;
+        break;
+      case 2: this.cs = level; break;
+      case 3: this.bl = level; break;
+      default: break;
+    }
+  }
+
+  finish() {
+    if (!this.violation && this.cur >= 0) {
+      const c = this.lookup(this.cur);
+      this.endCommand();
+      if (!this.violation && (c.flags & F_PIXELS)) this.cur = c.code;
+    }
+    return this.violation ? -1 : 0;
+  }
+
+  glassWidth() { return (this.view & 1) ? this.mod.gh : this.mod.gw; }
+  glassHeight() { return (this.view & 1) ? this.mod.gw : this.mod.gh; }
+
+  /* What the glass shows: Uint16Array of w*h RGB565 values, true RGB order. */
+  glass() {
+    const m = this.mod, w = this.glassWidth(), h = this.glassHeight();
+    const out = new Uint16Array(w * h);
+    const dark = this.asleep || !this.displayOn || !this.bl || !this.reset;
+    const off = (m.normallyBlack || !this.bl) ? 0x0000 : 0xFFFF;
+    const invert = this.inverted !== m.inverted;
+    const swap = ((this.madctl & 0x08) !== 0) !== (m.bgr !== 0);
+    const gw = m.gw, gh = m.gh;
+    for (let oy = 0; oy < h; oy++) {
+      for (let ox = 0; ox < w; ox++) {
+        let gx, gy;
+        switch (this.view) {
+          case 1: gx = gw - 1 - oy; gy = ox; break;
+          case 2: gx = gw - 1 - ox; gy = gh - 1 - oy; break;
+          case 3: gx = oy; gy = gh - 1 - ox; break;
+          default: gx = ox; gy = oy; break;
+        }
+        const col = m.memX + (m.mirrorX ? gw - 1 - gx : gx);
+        const row = m.memY + gy;
+        let v = this.mem[row * MEM_W + col];
+        if (dark) {
+          v = off;
+        } else {
+          if (invert) v = (~v) & 0xffff;
+          if (this.idle) v = ((v & 0x8000) ? 0xF800 : 0) | ((v & 0x0400) ? 0x07E0 : 0) | ((v & 0x0010) ? 0x001F : 0);
+          if (swap) v = (v & 0x07E0) | (v >> 11) | ((v & 0x1F) << 11);
+        }
+        out[oy * w + ox] = v;
+      }
+    }
+    return out;
+  }
+
+  memAt(col, row) { return (col < MEM_W && row < MEM_H) ? this.mem[row * MEM_W + col] : 0; }
+}
+
+module.exports = { EmuPanel, MEM_W, MEM_H };

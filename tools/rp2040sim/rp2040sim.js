@@ -1,0 +1,216 @@
+#!/usr/bin/env node
+'use strict';
+/* rp2040sim.js — runs a firmware image on the rp2040js emulator with an
+ * emulated ST7789 on SPI0 and the DC/CS/RST/BL pins, and writes the frames
+ * the glass shows.
+ *
+ * usage: node rp2040sim.js --image FILE.elf|FILE.bin [options]
+ *   --frames N          stop after N frames announced by the firmware (default 1)
+ *   --max-cycles N      stop with an error after N emulated cycles (default 4e9)
+ *   --out-dir DIR       write DIR/frame-<i>.raw (RGB565 little-endian, as
+ *                       host_sim --out-raw) and DIR/frame-<i>.ppm
+ *   --out-raw FILE      the last frame as raw RGB565 little-endian
+ *   --panel NAME        emulated module (default st7789)
+ *   --pins dc=16,cs=17,rst=20,bl=21   the firmware's pin options
+ *   --uart              echo the firmware's UART output to stderr
+ *   --json              one JSON object per frame on stdout (scene, frame,
+ *                       cycles at the firmware's clk_sys, us, fps, spi_bytes)
+ *
+ * Image loading without the boot ROM (facts of rp2040js 1.4.1): the image is
+ * copied into the flash array and SP/PC come from the vector table at
+ * 0x10000100 (boot2 is not run). Time: each instruction advances the clock
+ * by its cycles at the current clk_sys; SPI words complete after their bit
+ * count at the configured SPI clock, so frame times include transfer time.
+ *
+ * Exit status: 0 done; 1 emulator or internal error (cycle limit, firmware
+ * error line); 2 usage; 3 panel protocol violation (one line). */
+const fs = require('fs');
+const path = require('path');
+const { RP2040, GPIOPinState } = require('rp2040js');
+const { EmuPanel } = require('./emu_panel.js');
+
+const FLASH_BASE = 0x10000000;
+
+function usage(msg) {
+  process.stderr.write(`rp2040sim: ${msg}\n`);
+  process.exit(2);
+}
+
+function parseArgs(argv) {
+  const o = { frames: 1, maxCycles: 4e9, panel: 'st7789', pins: { dc: 16, cs: 17, rst: 20, bl: 21 }, uart: false, json: false };
+  for (let i = 0; i < argv.length; i++) {
+    const a = argv[i];
+    const val = () => { if (i + 1 >= argv.length) usage(`${a} needs a value`); return argv[++i]; };
+    switch (a) {
+      case '--image': o.image = val(); break;
+      case '--frames': o.frames = Number(val()); if (!(o.frames >= 1)) usage('--frames must be >= 1'); break;
+      case '--max-cycles': o.maxCycles = Number(val()); if (!(o.maxCycles > 0)) usage('bad --max-cycles'); break;
+      case '--out-dir': o.outDir = val(); break;
+      case '--out-raw': o.outRaw = val(); break;
+      case '--panel': o.panel = val(); break;
+      case '--pins':
+        for (const kv of val().split(',')) {
+          const [k, v] = kv.split('=');
+          if (!(k in o.pins) || !/^\d+$/.test(v || '') || Number(v) > 29) usage(`bad pin '${kv}'`);
+          o.pins[k] = Number(v);
+        }
+        break;
+      case '--uart': o.uart = true; break;
+      case '--json': o.json = true; break;
+      default: usage(`unknown option '${a}'`);
+    }
+  }
+  if (!o.image) usage('--image FILE is required');
+  return o;
+}
+
+/* Flash contents from an ELF (PT_LOAD segments at flash addresses) or a flat
+ * binary at 0x10000000. */
+function loadImage(file, flash) {
+  let buf;
+  try { buf = fs.readFileSync(file); } catch (e) { usage(`${file}: ${e.code === 'ENOENT' ? 'no such file' : e.message}`); }
+  if (buf.length >= 52 && buf.readUInt32BE(0) === 0x7f454c46) {
+    if (buf[4] !== 1 || buf[5] !== 1) usage(`${file}: not a 32-bit little-endian ELF`);
+    const phoff = buf.readUInt32LE(28), phentsize = buf.readUInt16LE(42), phnum = buf.readUInt16LE(44);
+    let n = 0;
+    for (let i = 0; i < phnum; i++) {
+      const ph = phoff + i * phentsize;
+      const type = buf.readUInt32LE(ph), off = buf.readUInt32LE(ph + 4), paddr = buf.readUInt32LE(ph + 12);
+      const filesz = buf.readUInt32LE(ph + 16);
+      if (type !== 1 || filesz === 0) continue;
+      if (paddr < FLASH_BASE || paddr + filesz > FLASH_BASE + flash.length) continue;
+      flash.set(buf.subarray(off, off + filesz), paddr - FLASH_BASE);
+      n++;
+    }
+    if (!n) usage(`${file}: no loadable segment in flash`);
+  } else {
+    if (buf.length > flash.length) usage(`${file}: larger than the flash`);
+    flash.set(buf, 0);
+  }
+}
+
+function writePpm(file, px, w, h) {
+  const head = Buffer.from(`P6\n${w} ${h}\n255\n`);
+  const body = Buffer.alloc(w * h * 3);
+  for (let i = 0; i < w * h; i++) {
+    const v = px[i], r = v >> 11, g = (v >> 5) & 63, b = v & 31;
+    body[3 * i] = (r << 3) | (r >> 2);
+    body[3 * i + 1] = (g << 2) | (g >> 4);
+    body[3 * i + 2] = (b << 3) | (b >> 2);
+  }
+  fs.writeFileSync(file, Buffer.concat([head, body]));
+}
+
+function rawLE(px) {
+  const b = Buffer.alloc(px.length * 2);
+  for (let i = 0; i < px.length; i++) b.writeUInt16LE(px[i], 2 * i);
+  return b;
+}
+
+function main() {
+  const o = parseArgs(process.argv.slice(2));
+  const mcu = new RP2040();
+  mcu.logger = { debug() {}, info() {}, warn() {}, error(tag, msg) { process.stderr.write(`rp2040js: ${msg}\n`); } };
+  loadImage(o.image, mcu.flash);
+  const vt = FLASH_BASE + 0x100;
+  mcu.core.VTOR = vt;
+  mcu.core.SP = mcu.readUint32(vt);
+  mcu.core.PC = mcu.readUint32(vt + 4) & ~1;
+
+  let panel;
+  try { panel = new EmuPanel(o.panel); } catch (e) { usage(e.message); }
+  const clock = mcu.clock;
+  const gpio = mcu.gpio;
+  /* Undriven pins read high: the module pulls its control inputs up. */
+  const level = (pin) => gpio[pin].value !== GPIOPinState.Low;
+  let spiBytes = 0;
+
+  /* Lines: sampled on change (line events carry the emulated time). */
+  const lines = [[0, o.pins.dc], [1, o.pins.rst], [2, o.pins.cs], [3, o.pins.bl]];
+  for (const [line, pin] of lines) {
+    let last = 1;
+    gpio[pin].addListener(() => {
+      const v = level(pin) ? 1 : 0;
+      if (v !== last) { last = v; panel.line(line, v, clock.nanos); }
+    });
+  }
+
+  /* SPI0: each word reaches the panel when it leaves the FIFO and completes
+   * after bits / f_spi; 16-bit frames go high byte first. */
+  const spi = mcu.spi[0];
+  const spiAlarm = clock.createAlarm(() => spi.completeTransmit(0));
+  spi.onTransmit = (value) => {
+    const t = clock.nanos, bits = spi.dataBits, f = spi.clockFrequency || 1e6;
+    if (bits > 8) { panel.spiByte((value >> 8) & 0xff, t); panel.spiByte(value & 0xff, t); spiBytes += 2; }
+    else { panel.spiByte(value & 0xff, t); spiBytes += 1; }
+    spiAlarm.schedule(Math.max(1, Math.round(bits * 1e9 / f)));
+  };
+
+  /* UART lines: "begin scene=... frame=..." labels the next frame. */
+  let uartLine = '', pending = null, fwError = null, cpuHz = 133e6;
+  const frames = [];
+  let frameStartNs = 0, frameStartBytes = 0;
+  mcu.uart[0].onByte = (b) => {
+    const ch = String.fromCharCode(b);
+    if (o.uart) process.stderr.write(ch);
+    if (ch === '\n') {
+      const l = uartLine.replace(/\r$/, '');
+      uartLine = '';
+      const kv = Object.fromEntries(l.split(' ').slice(1).map((s) => s.split('=')));
+      if (l.startsWith('boot ')) cpuHz = Number(kv.cpu_hz) || cpuHz;
+      if (l.startsWith('begin ')) { pending = { scene: kv.scene, frame: Number(kv.frame) }; frameStartNs = clock.nanos; frameStartBytes = spiBytes; }
+      if (l.startsWith('fps ') && frames.length) frames[frames.length - 1].fw_us = Number(kv.us);
+      if (l.startsWith('error')) fwError = l;
+    } else {
+      uartLine += ch;
+    }
+  };
+  panel.onWrap = () => {
+    if (!pending) return;
+    const ns = clock.nanos - frameStartNs;
+    frames.push({ scene: pending.scene, frame: pending.frame, ns, spi_bytes: spiBytes - frameStartBytes, px: panel.glass() });
+    pending = null;
+  };
+
+  const t0 = Date.now();
+  const maxNs = o.maxCycles / cpuHz * 1e9;
+  const core = mcu.core;
+  while (frames.length < o.frames && !fwError && !panel.violation) {
+    for (let i = 0; i < 100000; i++) {
+      if (core.waiting) {
+        const n = clock.nanosToNextAlarm;
+        if (n <= 0) break;
+        clock.tick(n);
+      } else {
+        const cycles = core.executeInstruction();
+        clock.tick(cycles * 1e9 / mcu.clkSys);
+      }
+    }
+    if (core.waiting && clock.nanosToNextAlarm <= 0) { fwError = 'firmware sleeps with nothing to wake it'; break; }
+    if (clock.nanos > maxNs) { fwError = `no frame after ${o.maxCycles} cycles`; break; }
+  }
+  if (panel.violation) { process.stderr.write(`rp2040sim: panel protocol violation: ${panel.violation}\n`); process.exit(3); }
+  if (fwError) { process.stderr.write(`rp2040sim: ${fwError}\n`); process.exit(1); }
+
+  const w = panel.glassWidth(), h = panel.glassHeight();
+  if (o.outDir) fs.mkdirSync(o.outDir, { recursive: true });
+  frames.forEach((f, i) => {
+    const cycles = Math.round(f.ns * cpuHz / 1e9);
+    if (o.outDir) {
+      fs.writeFileSync(path.join(o.outDir, `frame-${i}.raw`), rawLE(f.px));
+      writePpm(path.join(o.outDir, `frame-${i}.ppm`), f.px, w, h);
+    }
+    if (o.json) {
+      process.stdout.write(JSON.stringify({
+        target: 'rp2040-sim', what: `scene:${f.scene}`, frame: f.frame, width: w, height: h,
+        cycles, per: 'frame', cpu_hz: cpuHz, us: Math.round(f.ns / 1000),
+        fps: Number((1e9 / f.ns).toFixed(3)), spi_bytes: f.spi_bytes,
+      }) + '\n');
+    }
+  });
+  if (o.outRaw) fs.writeFileSync(o.outRaw, rawLE(frames[frames.length - 1].px));
+  const simS = (Date.now() - t0) / 1000;
+  process.stderr.write(`rp2040sim: ${frames.length} frame(s), ${Math.round(clock.nanos * cpuHz / 1e9)} cycles emulated in ${simS.toFixed(1)} s\n`);
+}
+
+main();

@@ -239,8 +239,9 @@ static int core_render_memory(struct core *c, unsigned f, uint16_t *fb, uint8_t 
     unsigned w = c->ctx.width, h = c->ctx.height, rows = c->ctx.strip_rows;
     for (unsigned y0 = 0; y0 < h; y0 += rows) {
         unsigned y1 = y0 + rows < h ? y0 + rows : h;
-        struct render_target t = { (uint16_t)w, (uint16_t)h, (uint16_t)y0, (uint16_t)y1,
-                                   fb + (size_t)y0 * w, rgb + (size_t)y0 * w * 3 };
+        struct render_target t = { .width = (uint16_t)w, .height = (uint16_t)h,
+                                   .y0 = (uint16_t)y0, .y1 = (uint16_t)y1,
+                                   .rgb565 = fb + (size_t)y0 * w, .rgb888 = rgb + (size_t)y0 * w * 3 };
         if (c->api->render_strip(&c->ctx, &t, &st))
             return fail(EXIT_INTERNAL, "renderer (%s) failed on rows %u..%u", c->api->numeric, y0, y1);
     }
@@ -344,8 +345,9 @@ static int run(const struct opts *o, struct core *c, struct core *ref, struct pa
         render_us += now_us() - t0;
         for (unsigned y0 = 0; y0 < h; y0 += rows) {
             unsigned y1 = y0 + rows < h ? y0 + rows : h;
-            struct render_target t = { (uint16_t)w, (uint16_t)h, (uint16_t)y0, (uint16_t)y1,
-                                       b->strip, b->rgb ? b->rgb + (size_t)y0 * w * 3 : NULL };
+            struct render_target t = { .width = (uint16_t)w, .height = (uint16_t)h,
+                                       .y0 = (uint16_t)y0, .y1 = (uint16_t)y1, .rgb565 = b->strip,
+                                       .rgb888 = b->rgb ? b->rgb + (size_t)y0 * w * 3 : NULL };
             t0 = now_us();
             if (c->api->render_strip(&c->ctx, &t, &rs))
                 return fail(EXIT_INTERNAL, "renderer failed on rows %u..%u of frame %u", y0, y1, f);

@@ -97,8 +97,12 @@ fi
 run --scene "$scene" --backend linux --size 8x8
 if grep -q "backend linux not available in this build" "$tmp/e"; then
   [ "$rc" -eq 2 ] && pass backend_linux_unavailable || fail backend_linux_unavailable "exit $rc"
+elif [ ! -e /dev/spidev0.0 ]; then
+  # Built in, but no SPI device here: a one-line error, exit 2, no file written.
+  expect_err backend_linux_no_device 2 "backend linux" --scene "$scene" --backend linux --out "$tmp/l.png"
+  [ ! -e "$tmp/l.png" ] && pass backend_linux_no_file || fail backend_linux_no_file "l.png was written"
 else
-  skip backend_linux_unavailable "the linux backend is built in"
+  skip backend_linux_no_device "this machine has /dev/spidev0.0"
 fi
 
 # ---- outputs ----------------------------------------------------------------

@@ -1,7 +1,15 @@
 /* scene_parse.h — the scene file parser (host side: host_sim and scenec).
  *
  * Compiled once per numeric mode: the scene it builds is in that mode's
- * numbers (num.h). Memory comes from an arena owned by the scene handle.
+ * numbers (num.h). Every literal is read as the nearest double and turned
+ * into `num` once (num_from_double); a value the mode cannot hold is an
+ * input error, not a saturation. Memory comes from an arena owned by the
+ * scene handle: scene_free() releases the scene and everything it points to.
+ *
+ * The notation is specified in docs/scene-format.md.
+ *
+ * Limits (anything beyond is an input error): file size SCENE_MAX_BYTES,
+ * nesting depth 32, counts as in docs/scene-format.md.
  */
 #ifndef SCENE_PARSE_H
 #define SCENE_PARSE_H
@@ -9,9 +17,17 @@
 #include <stddef.h>
 #include "scene.h"
 
+#define SCENE_MAX_BYTES (4u << 20)
+
 /* Loads FILE. Returns 0 and sets *out, or returns 2 (input error) and writes
  * one line "FILE:LINE:COLUMN: error: MESSAGE" (no newline) into err. */
 int scene_load(const char *path, struct scene **out, char *err, size_t errlen);
+
+/* The same from memory (fuzzing, tests). `name` is used in messages and as
+ * the default scene name; image files cannot be referenced (no directory). */
+int scene_parse_mem(const char *name, const char *text, size_t len, struct scene **out,
+                    char *err, size_t errlen);
+
 void scene_free(struct scene *s);
 
 #endif

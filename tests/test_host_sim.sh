@@ -244,7 +244,7 @@ run --scene "$scene" --panel ili9341 --out "$tmp/i.png"
   fail ili9341_png_320x240 "exit $rc, $(png_size "$tmp/i.png"): $(head -n 1 "$tmp/e")"
 
 # The panel path is lossless: the glass shows exactly the renderer's RGB565.
-for p in st7789:240x240 st7789:240x320 st7789:100x37 ili9341:320x240 ili9341:240x320 ili9341:17x5; do
+for p in st7789:240x240 st7789:240x320 st7789:320x240 st7789:300x200 st7789:100x37 ili9341:320x240 ili9341:240x320 ili9341:17x5; do
   panel=${p%%:*} size=${p#*:}
   run --scene "$scene" --panel "$panel" --size "$size" --out-raw "$tmp/p.raw" --strip-rows 7
   rc1=$rc

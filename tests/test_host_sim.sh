@@ -263,7 +263,7 @@ spi=$(sed -n 's/.*"spi_bytes":\([0-9]*\).*/\1/p' "$tmp/o")
   pass stats_spi_bytes || fail stats_spi_bytes "exit $rc, spi_bytes '$spi'"
 
 # ---- protocol violations (exit 3, one line naming the command) --------------
-expect_err fault_ramwr_no_window 3 "RAMWR" --scene "$scene" --inject-fault ramwr-no-window
-expect_err fault_early_after_slpout 3 "SLPOUT" --scene "$scene" --inject-fault early-after-slpout
+expect_err fault_ramwr_no_window 3 "RAMWR (0x2C) at byte [0-9]" --scene "$scene" --inject-fault ramwr-no-window
+expect_err fault_early_after_slpout 3 "(0x[0-9A-F][0-9A-F]) at byte [0-9][0-9]*: .*SLPOUT" --scene "$scene" --inject-fault early-after-slpout
 expect_err fault_unknown 2 "unknown fault" --scene "$scene" --inject-fault frob
 exit 0

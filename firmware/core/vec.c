@@ -26,14 +26,7 @@ vec3 v3_cross(vec3 a, vec3 b)
               wnum_to_num(wnum_sub(num_mul_wide(a.x, b.y), num_mul_wide(a.y, b.x))));
 }
 
-num v3_len(vec3 a) { return wnum_to_num(wnum_sqrt(v3_dot_wide(a, a))); }
-
-vec3 v3_normalize(vec3 a)
-{
-    num len = v3_len(a);
-    if (len == 0) return v3(NUM_ZERO, NUM_ZERO, NUM_ZERO);
-    return v3(num_div(a.x, len), num_div(a.y, len), num_div(a.z, len));
-}
+/* v3_len and v3_normalize depend on the mode: see num.c. */
 
 vec3 m3_mul_v3(const mat3 *m, vec3 v)
 {

@@ -1,0 +1,71 @@
+/* num_int.h — integer kernels of the fixed-point build, shared by num.c and
+ * vec.c. Internal to the numeric layer (algorithms use num.h only).
+ *
+ * Everything here gives the same bits on every target; the ARMv6-M paths
+ * (Cortex-M0+, no long multiply, no CLZ, no divide) avoid library calls. */
+#ifndef NUM_INT_H
+#define NUM_INT_H
+
+#include <stdint.h>
+
+/* 32x32 -> 64 unsigned product. */
+static inline uint64_t num_umul32(uint32_t a, uint32_t b)
+{
+#if defined(__ARM_ARCH_6M__) || defined(NUM_PORTABLE_INT)
+    /* MULS is 32x32->32 only: four 16x16 partial products, no __aeabi_lmul. */
+    uint32_t al = a & 0xFFFFu, ah = a >> 16, bl = b & 0xFFFFu, bh = b >> 16;
+    uint32_t ll = al * bl, lh = al * bh, hl = ah * bl, hh = ah * bh;
+    uint32_t mid = (ll >> 16) + (lh & 0xFFFFu) + (hl & 0xFFFFu); /* < 3 * 2^16 */
+    uint32_t lo = (ll & 0xFFFFu) | (mid << 16);
+    uint32_t hi = hh + (lh >> 16) + (hl >> 16) + (mid >> 16);
+    return (uint64_t)hi << 32 | lo;
+#else
+    return (uint64_t)a * b;
+#endif
+}
+
+/* 32x32 -> 64 signed product (two's complement correction of the unsigned one). */
+static inline int64_t num_smul32(int32_t a, int32_t b)
+{
+#if defined(__ARM_ARCH_6M__) || defined(NUM_PORTABLE_INT)
+    uint64_t p = num_umul32((uint32_t)a, (uint32_t)b);
+    if (a < 0) p -= (uint64_t)(uint32_t)b << 32;
+    if (b < 0) p -= (uint64_t)(uint32_t)a << 32;
+    return (int64_t)p;
+#else
+    return (int64_t)a * b;
+#endif
+}
+
+/* Leading zeros of x != 0. */
+static inline int num_clz32(uint32_t x)
+{
+#if (defined(__GNUC__) || defined(__clang__)) && !defined(__ARM_ARCH_6M__) && !defined(NUM_PORTABLE_INT)
+    return __builtin_clz(x);
+#else
+    int n = 0;
+    if (!(x & 0xFFFF0000u)) { n += 16; x <<= 16; }
+    if (!(x & 0xFF000000u)) { n += 8; x <<= 8; }
+    if (!(x & 0xF0000000u)) { n += 4; x <<= 4; }
+    if (!(x & 0xC0000000u)) { n += 2; x <<= 2; }
+    if (!(x & 0x80000000u)) n += 1;
+    return n;
+#endif
+}
+
+/* Leading zeros of x != 0. */
+static inline int num_clz64(uint64_t x)
+{
+    uint32_t h = (uint32_t)(x >> 32);
+    return h ? num_clz32(h) : 32 + num_clz32((uint32_t)x);
+}
+
+/* floor(n / d) for d != 0 and n < d * 2^32 (the quotient fits 32 bits);
+ * *rem (if not null) gets the remainder. Exact: reciprocal seed from a
+ * 256-entry table, two Newton-Raphson steps, remainder correction. */
+uint32_t num_udiv64_32(uint64_t n, uint32_t d, uint32_t *rem);
+
+/* floor(sqrt(v)); *rem (if not null) gets v - root^2. Digit recurrence. */
+uint64_t num_isqrt64(uint64_t v, uint64_t *rem);
+
+#endif

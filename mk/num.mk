@@ -1,0 +1,36 @@
+# Numeric layer (firmware/core/num*): accuracy tests, report, soft-float check.
+#
+# test_num is built per numeric mode, and for fixed point also with
+# NUM_FRAC = 12 and 20 (modes "fixed12", "fixed20"; fixed12 also forces the
+# portable integer kernels that ARMv6-M uses, so they are tested on the host).
+#   make num-report     prints the markdown accuracy table of docs/numerics.md
+
+NUM_SRCS       := firmware/core/num.c firmware/core/vec.c
+NUM_TEST_MODES := fixed fixed12 fixed20 float double
+NUMX_CFLAGS_fixed12 := -DNUM_MODE=1 -DNUM_FRAC=12 -DNUM_PORTABLE_INT
+NUMX_CFLAGS_fixed20 := -DNUM_MODE=1 -DNUM_FRAC=20
+
+define NUM_EXTRA_MODE
+$(BUILD)/$(1)/$(2)/%.o: %.c
+	@mkdir -p $$(@D)
+	$(Q)$$(CC) $(CSTD) $(WARN) $(VFLAGS_$(1)) $(NUMX_CFLAGS_$(2)) $(INCLUDES) -Itests $$(EXTRA_CFLAGS) -MMD -MP -c $$< -o $$@
+endef
+$(foreach v,$(VARIANTS),$(foreach m,fixed12 fixed20,$(eval $(call NUM_EXTRA_MODE,$(v),$(m)))))
+
+# tests/test_num.c includes tests/check.h
+$(BUILD)/host/%/tests/test_num.o $(BUILD)/asan/%/tests/test_num.o: EXTRA_CFLAGS += -Itests
+
+define NUM_TEST_PROG
+$(BUILD)/$(1)/test_num_$(2): $(call obj,$(1),$(2),tests/test_num.c $(NUM_SRCS))
+	$(Q)$$(CC) $(LDFLAGS_$(1)) -o $$@ $$^ -lm
+endef
+$(foreach v,$(VARIANTS),$(foreach m,$(NUM_TEST_MODES),$(eval $(call NUM_TEST_PROG,$(v),$(m)))))
+
+TEST_DEPS += $(foreach m,$(NUM_TEST_MODES),$(BUILD)/asan/test_num_$(m))
+TESTS     += $(foreach m,$(NUM_TEST_MODES),$(BUILD)/asan/test_num_$(m))
+
+.PHONY: num-report
+num-report: $(foreach m,$(NUM_TEST_MODES),$(BUILD)/host/test_num_$(m))
+	@echo "| mode | operation | domain | samples | max err | mean err | bound |"
+	@echo "|---|---|---|---|---|---|---|"
+	$(Q)for m in $(NUM_TEST_MODES); do $(BUILD)/host/test_num_$$m --report || exit 1; done

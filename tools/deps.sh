@@ -10,7 +10,7 @@ run_pkgs="libpng-dev pkg-config"
 firmware_pkgs="gcc-arm-none-eabi libnewlib-arm-none-eabi binutils-arm-none-eabi"
 flash_pkgs="libusb-1.0-0-dev libgpiod-dev pkg-config"
 charts_pkgs="python3 python3-matplotlib"
-bench_pkgs="$firmware_pkgs qemu-system-arm valgrind nodejs npm"
+bench_pkgs="$firmware_pkgs qemu-system-arm valgrind nodejs"
 test_pkgs="$run_pkgs $firmware_pkgs $flash_pkgs $bench_pkgs clang"
 
 case "$group" in
@@ -34,6 +34,11 @@ for p in $want; do
     case " $missing " in *" $p "*) ;; *) missing="$missing $p" ;; esac
   fi
 done
+# npm comes with nodejs on some distributions (NodeSource) and as its own
+# package on others (Debian); ask for it only when the command is missing.
+case " $want " in *" nodejs "*)
+  command -v npm >/dev/null 2>&1 || missing="$missing npm" ;;
+esac
 [ -z "$missing" ] && exit 0
 
 if [ "$(id -u)" = 0 ]; then

@@ -19,3 +19,18 @@ $(BUILD)/%/none/hal/linux/hal_linux.o: EXTRA_CFLAGS += -DHAL_LINUX_NO_GPIOD
 endif
 
 hal_objs = $(call obj,$(1),none,$(HAL_SRCS) $(HAL_SIM_SRCS) $(HAL_LINUX_SRCS))
+
+# Tests (ASan+UBSan build).
+HAL_TEST_NAMES := test_dcs test_panel test_emu_panel test_panel_vectors test_hal_linux
+HAL_TEST_BINS  := $(addprefix $(BUILD)/asan/tests/,$(HAL_TEST_NAMES))
+
+$(BUILD)/asan/tests/%: $(BUILD)/asan/none/tests/%.o $(call hal_objs,asan)
+	@mkdir -p $(@D)
+	$(Q)$(CC) $(LDFLAGS_asan) -o $@ $^ $(HAL_LDLIBS)
+
+TEST_DEPS += $(HAL_TEST_BINS)
+TESTS += $(BUILD)/asan/tests/test_dcs $(BUILD)/asan/tests/test_panel \
+         $(BUILD)/asan/tests/test_emu_panel \
+         $(BUILD)/asan/tests/test_panel_vectors:tests/vectors/panel \
+         $(BUILD)/asan/tests/test_hal_linux
+.PRECIOUS: $(BUILD)/asan/none/tests/%.o

@@ -5,7 +5,7 @@
  * "gpiochip0", DC 25, RESET 27, BL 18, CS handled by spidev (cs = -1).
  *
  * Built without libgpiod (no pkg-config libgpiod at build time),
- * hal_linux_open fails with a message saying so.
+ * hal_linux_open fails with a message saying so unless every line is -1.
  */
 #ifndef HAL_LINUX_H
 #define HAL_LINUX_H

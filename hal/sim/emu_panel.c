@@ -307,7 +307,7 @@ static void command(struct emu_panel *p, uint8_t code, uint64_t t)
     const struct cmd_info *c = lookup(p, code);
     char what[60];
     if (!c) {
-        snprintf(what, sizeof what, "not a %s command", model_name[p->mod->model]);
+        snprintf(what, sizeof what, "not an %s command", model_name[p->mod->model]);
         vcmd(p, code, what);
         return;
     }
@@ -429,7 +429,7 @@ static void data(struct emu_panel *p, uint8_t b)
     }
     if (p->nparam >= c->max) {
         char what[60];
-        snprintf(what, sizeof what, "more than %u parameter bytes", (unsigned)c->max);
+        snprintf(what, sizeof what, "too many parameter bytes (takes %u)", (unsigned)c->max);
         vcmd(p, p->cur, what);
         return;
     }

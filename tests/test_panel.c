@@ -1,0 +1,169 @@
+/* Panel drivers: exact init streams, and round trips through the emulated
+ * controller in every rotation of every descriptor. */
+#include <stdlib.h>
+#include <string.h>
+#include "check.h"
+#include "panel.h"
+#include "sim/hal_sim.h"
+#include "hal_rec.h"
+
+static void expect_log(const char *name, const char *got, const char *want)
+{
+    check(strcmp(got, want) == 0, name, "got \"%.600s\", want \"%.600s\"", got, want);
+}
+
+static void test_init_streams(void)
+{
+    struct rec r; struct hal h; struct panel p;
+    rec_init(&r, &h, 0);
+    panel_init(&p, &panel_st7789_240x240, &h, 0);
+    expect_log("st7789_240x240_init_stream", rec_take(&r),
+        "CS1 DC1 BL0 RST1 RST0 D1 RST1 D120 "
+        "CS0 DC0 01 DC1 CS1 D120 "                         /* SWRESET */
+        "CS0 DC0 11 DC1 CS1 D120 "                         /* SLPOUT */
+        "CS0 DC0 3A DC1 55 CS1 "                           /* COLMOD 16-bit */
+        "CS0 DC0 B2 DC1 0C 0C 00 33 33 CS1 "               /* PORCTRL */
+        "CS0 DC0 B7 DC1 35 CS1 CS0 DC0 BB DC1 20 CS1 "     /* GCTRL, VCOMS */
+        "CS0 DC0 C0 DC1 2C CS1 CS0 DC0 C6 DC1 0F CS1 "     /* LCMCTRL, FRCTRL2 */
+        "CS0 DC0 13 DC1 CS1 "                              /* NORON */
+        "CS0 DC0 36 DC1 00 CS1 "                           /* MADCTL */
+        "CS0 DC0 21 DC1 CS1 "                              /* INVON */
+        "CS0 DC0 2A DC1 00 00 00 EF CS1 CS0 DC0 2B DC1 00 00 00 EF CS1 "
+        "CS0 DC0 2C DC1 00x115200 CS1 "                    /* memory cleared */
+        "CS0 DC0 29 DC1 CS1 BL1");                         /* DISPON, backlight */
+
+    rec_init(&r, &h, 1);
+    panel_init(&p, &panel_ili9341_320x240, &h, 0);
+    expect_log("ili9341_320x240_init_stream", rec_take(&r),
+        "CS1 DC1 BL0 RST1 RST0 D1 RST1 D120 "
+        "CS0 DC0 01 DC1 CS1 D120 "
+        "CS0 DC0 11 DC1 CS1 D120 "
+        "CS0 DC0 3A DC1 55 CS1 "
+        "CS0 DC0 C0 DC1 23 CS1 CS0 DC0 C1 DC1 10 CS1 "     /* PWCTRL1, PWCTRL2 */
+        "CS0 DC0 C5 DC1 3E 28 CS1 CS0 DC0 C7 DC1 86 CS1 "  /* VMCTRL1, VMCTRL2 */
+        "CS0 DC0 B1 DC1 00 1B CS1 "                        /* FRMCTR1 */
+        "CS0 DC0 26 DC1 01 CS1 "                           /* GAMSET */
+        "CS0 DC0 13 DC1 CS1 "
+        "CS0 DC0 36 DC1 28 CS1 "                           /* MADCTL MV|BGR */
+        "CS0 DC0 20 DC1 CS1 "                              /* INVOFF */
+        "CS0 DC0 2A DC1 00 00 01 3F CS1 CS0 DC0 2B DC1 00 00 00 EF CS1 "
+        "CS0 DC0 2C DC1 00x153600 CS1 "
+        "CS0 DC0 29 DC1 CS1 BL1");
+
+    rec_init(&r, &h, 0);
+    panel_init(&p, &panel_st7789_240x240, &h, 2);
+    rec_take(&r);
+    uint16_t px[2] = { 0xABCD, 0x0102 };
+    panel_flush(&p, 3, 4, 2, 1, px);
+    expect_log("st7789_240x240_rotation2_row_offset_80", rec_take(&r),
+        "CS0 DC0 2A DC1 00 03 00 04 CS1 CS0 DC0 2B DC1 00 54 00 54 CS1 "
+        "CS0 DC0 2C DC1 AB CD 01 02 CS1");
+    panel_set_rotation(&p, 3);
+    panel_flush(&p, 3, 4, 1, 1, px);
+    expect_log("st7789_240x240_rotation3_column_offset_80", rec_take(&r),
+        "CS0 DC0 36 DC1 A0 CS1 "
+        "CS0 DC0 2A DC1 00 53 00 53 CS1 CS0 DC0 2B DC1 00 04 00 04 CS1 "
+        "CS0 DC0 2C DC1 AB CD CS1");
+    check(panel_flush(&p, 239, 0, 2, 1, px) == -1 && panel_flush(&p, 0, 0, 0, 1, px) == -1 &&
+          strcmp(rec_take(&r), "") == 0, "panel_flush_rejects_rectangles_off_the_panel", "sent");
+    check(panel_init(&p, &panel_st7789_240x240, &h, 4) == -1, "panel_init_rejects_rotation_4", "accepted");
+}
+
+static void test_find(void)
+{
+    check(panel_find("st7789") == &panel_st7789_240x240 && panel_find("ili9341") == &panel_ili9341_320x240 &&
+          panel_find("st7789_240x320") == &panel_st7789_240x320 &&
+          panel_find("ili9341_240x320") == &panel_ili9341_240x320 && panel_find("ssd1306") == NULL,
+          "panel_find_names", "mismatch");
+}
+
+static uint16_t pattern(uint32_t x, uint32_t y)
+{
+    return (uint16_t)(x * 0x9E37u + y * 0x79B9u + x * y);
+}
+
+/* A full-screen pattern flushed in strips, and a small rectangle, in
+ * rotation r must show on the glass (viewed as the descriptor's rotation 0)
+ * turned r*90 degrees clockwise. */
+static void round_trip(const struct panel_desc *d, uint8_t rot, struct emu_panel *e, uint16_t *img, uint16_t *glass)
+{
+    char name[80];
+    uint8_t view;
+    const struct emu_module *m = emu_module_find(d->name, &view);
+    struct hal_sim s; struct hal h; struct panel p;
+    emu_panel_init(e, m, view);
+    hal_sim_init(&s, &h, e);
+    int rc = panel_init(&p, d, &h, rot);
+    uint16_t W = panel_width(&p), H = panel_height(&p);
+    for (uint32_t y = 0; y < H; y++)
+        for (uint32_t x = 0; x < W; x++)
+            img[y * W + x] = pattern(x, y);
+    for (uint16_t y = 0; y < H && rc == 0; y += 16) {
+        uint16_t rows = (uint16_t)(H - y < 16 ? H - y : 16);
+        rc = panel_flush(&p, 0, y, W, rows, img + (size_t)y * W);
+    }
+    /* A 3x2 marker at (5, 7) over the pattern. */
+    uint16_t mk[6] = { 1, 2, 3, 4, 5, 6 };
+    if (rc == 0)
+        rc = panel_flush(&p, 5, 7, 3, 2, mk);
+    for (int i = 0; i < 6; i++)
+        img[(7 + i / 3) * W + 5 + i % 3] = mk[i];
+    emu_panel_finish(e, s.t_ns);
+    uint16_t gw = emu_panel_glass_width(e), gh = emu_panel_glass_height(e);
+    snprintf(name, sizeof name, "round_trip_%s_rotation%u", d->name, (unsigned)rot);
+    if (!check(rc == 0 && !emu_panel_violation(e) && gw == d->width && gh == d->height, name,
+               "rc %d, %s, glass %ux%u", rc, emu_panel_violation(e) ? emu_panel_violation(e) : "-", gw, gh))
+        return;
+    emu_panel_glass(e, glass, gw, gh);
+    long bad = 0, first = -1;
+    for (uint32_t y = 0; y < H; y++)
+        for (uint32_t x = 0; x < W; x++) {
+            uint32_t dx, dy;
+            switch (rot) {
+            case 1: dx = H - 1 - y; dy = x; break;
+            case 2: dx = W - 1 - x; dy = H - 1 - y; break;
+            case 3: dx = y; dy = W - 1 - x; break;
+            default: dx = x; dy = y; break;
+            }
+            if (glass[dy * gw + dx] != img[y * W + x]) {
+                if (first < 0)
+                    first = (long)(y * W + x);
+                bad++;
+            }
+        }
+    check(bad == 0, name, "%ld pixels misplaced, first at logical (%ld, %ld)", bad,
+          first < 0 ? 0 : first % W, first < 0 ? 0 : first / W);
+}
+
+/* SPI timing moves the simulated clock: a full 240x240 frame at 62.5 MHz. */
+static void test_sim_timing(struct emu_panel *e)
+{
+    struct hal_sim s; struct hal h; struct panel p;
+    uint8_t view = 0;
+    const struct emu_module *m = emu_module_find("st7789", &view);
+    emu_panel_init(e, m, view);
+    hal_sim_init(&s, &h, e);
+    panel_init(&p, &panel_st7789_240x240, &h, 0);
+    hal_sim_set_spi_hz(&s, 62500000);
+    uint64_t t0 = hal_sim_now_us(&s), b0 = s.spi_bytes;
+    panel_fill(&p, 0, 0, 240, 240, 0xFFFF);
+    uint64_t us = hal_sim_now_us(&s) - t0;
+    check(s.spi_bytes - b0 == 115200 + 11 && us == (115211ull * 128) / 1000, "sim_spi_time_at_62_5mhz",
+          "%llu bytes in %llu us", (unsigned long long)(s.spi_bytes - b0), (unsigned long long)us);
+}
+
+int main(void)
+{
+    struct emu_panel *e = malloc(sizeof *e);
+    uint16_t *img = malloc(sizeof(uint16_t) * 320 * 240), *glass = malloc(sizeof(uint16_t) * 320 * 240);
+    if (!e || !img || !glass)
+        return 1;
+    test_init_streams();
+    test_find();
+    for (size_t i = 0; panel_all[i]; i++)
+        for (uint8_t r = 0; r < 4; r++)
+            round_trip(panel_all[i], r, e, img, glass);
+    test_sim_timing(e);
+    free(e); free(img); free(glass);
+    return check_exit();
+}

@@ -29,6 +29,8 @@ struct render_target {
     uint16_t *rgb565;        /* (y1-y0)*width pixels, native endian, row y at (y-y0)*width */
     uint8_t *rgb888;         /* optional (NULL on firmware): 3 bytes a pixel, the colour
                                 before RGB565 quantisation (clamped, rounded half to even) */
+    uint8_t *written;        /* optional (NULL on firmware): (y1-y0)*width bytes, set to 1 where
+                                the scene wrote the pixel, 0 where only the background is */
 };
 
 struct render_stats {

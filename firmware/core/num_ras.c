@@ -1,0 +1,88 @@
+/* num_ras.c — mode-specific rasterizer primitives (see num_ras.h). */
+#include "num_ras.h"
+
+#if NUM_MODE == NUM_MODE_FIXED
+
+void ras_interp_init(struct ras_interp *it, num i0, num d0, num i1, num d1)
+{
+    it->base = d0;
+    it->val = 0;
+    it->q = it->r = 0;
+    it->den = (int64_t)i1 - i0;
+    if (it->den <= 0) { it->den = 1; it->rem = 0; return; }
+    int64_t numer = ((int64_t)d1 - d0) * NUM_ONE_RAW; /* |.| < 2^48 */
+    it->q = numer / it->den;
+    it->r = numer % it->den;
+    if (it->r < 0) { it->q -= 1; it->r += it->den; }
+    it->rem = it->den / 2; /* rounds k*q to nearest */
+}
+
+num ras_interp_value(const struct ras_interp *it)
+{
+    int64_t v = it->base + it->val;
+    if (v > INT32_MAX) return NUM_MAX;
+    if (v < -(int64_t)INT32_MAX) return NUM_MIN;
+    return (num)v;
+}
+
+void ras_interp_next(struct ras_interp *it)
+{
+    it->val += it->q;
+    it->rem += it->r;
+    if (it->rem >= it->den) { it->val++; it->rem -= it->den; }
+    /* keep far-off streams bounded (they saturate when read anyway) */
+    if (it->val > ((int64_t)1 << 40)) it->val = (int64_t)1 << 40;
+    if (it->val < -((int64_t)1 << 40)) it->val = -((int64_t)1 << 40);
+}
+
+num ras_ratio(int64_t p, int64_t q)
+{
+    if (q == 0) return p == 0 ? 0 : (p > 0 ? NUM_MAX : NUM_MIN);
+    if (q < 0) { p = -p; q = -q; }
+    int neg = p < 0;
+    uint64_t up = neg ? (uint64_t)0 - (uint64_t)p : (uint64_t)p;
+    if (up > ((uint64_t)1 << 46)) { /* keep p * 2^16 inside 64 bits */
+        int s = 0;
+        while (up > ((uint64_t)1 << 46)) { up >>= 1; s++; }
+        q >>= s;
+        if (q == 0) return neg ? NUM_MIN : NUM_MAX;
+    }
+    uint64_t r = ((up << NUM_FRAC) + (uint64_t)q / 2) / (uint64_t)q;
+    if (r > (uint64_t)INT32_MAX) r = INT32_MAX;
+    return neg ? -(num)r : (num)r;
+}
+
+uint32_t ras_depth32(num near_z, num z)
+{
+    if (z <= 0 || z <= near_z) return UINT32_MAX;
+    uint64_t v = ((uint64_t)(uint32_t)near_z << 32) / (uint64_t)(uint32_t)z;
+    return v > UINT32_MAX ? UINT32_MAX : (uint32_t)v;
+}
+
+#else
+
+void ras_interp_init(struct ras_interp *it, num i0, num d0, num i1, num d1)
+{
+    it->d = d0;
+    it->a = i1 == i0 ? 0 : (d1 - d0) / (i1 - i0);
+}
+
+num ras_interp_value(const struct ras_interp *it) { return it->d; }
+void ras_interp_next(struct ras_interp *it) { it->d = it->d + it->a; }
+
+num ras_ratio(int64_t p, int64_t q)
+{
+    if (q == 0) return p == 0 ? 0 : (p > 0 ? NUM_MAX : NUM_MIN);
+    return (num)p / (num)q;
+}
+
+uint32_t ras_depth32(num near_z, num z)
+{
+    if (!(z > near_z)) return UINT32_MAX;
+    double v = (double)(near_z / z) * 4294967295.0;
+    if (v >= 4294967295.0) return UINT32_MAX;
+    if (v <= 0) return 0;
+    return (uint32_t)v;
+}
+
+#endif

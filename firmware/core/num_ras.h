@@ -1,0 +1,41 @@
+/* num_ras.h — the few rasterizer primitives whose best form depends on the
+ * numeric mode (see num.h). Algorithms in raster_*.c call only these and
+ * num.h; only this file and num_ras.c test NUM_MODE.
+ */
+#ifndef NUM_RAS_H
+#define NUM_RAS_H
+
+#include <stdint.h>
+#include "num.h"
+
+/* The book's Interpolate(i0, d0, i1, d1) as a stream: value k is d0 at
+ * k = 0 and moves by (d1 - d0)/(i1 - i0) per step (i1 > i0; for i1 == i0
+ * the value stays d0).
+ * - float/double: the book's accumulation d = d + a, so the double build
+ *   reproduces the demos bit for bit.
+ * - fixed: exact rational stepping (quotient + remainder), value k is
+ *   d0 + round(k*(d1-d0)/(i1-i0)): accumulating a rounded slope in Q15.16
+ *   would drift by up to k/2 LSB, which moves 1/z by percents over a
+ *   600-row edge.
+ * ras_interp_value() reads the current value, ras_interp_next() steps once. */
+struct ras_interp {
+#if NUM_MODE == NUM_MODE_FIXED
+    int64_t base, val, q, r, rem, den;
+#else
+    num d, a;
+#endif
+};
+void ras_interp_init(struct ras_interp *it, num i0, num d0, num i1, num d1);
+num  ras_interp_value(const struct ras_interp *it);
+void ras_interp_next(struct ras_interp *it);
+
+/* p/q as a num (q != 0; result saturates). p, q are integers of up to 48
+ * bits (edge functions in sub-pixel units). */
+num ras_ratio(int64_t p, int64_t q);
+
+/* near/z as an unsigned 32-bit fraction, floor(near/z * (2^32 - 1)), for
+ * z >= near > 0 (z < near gives 2^32 - 1, z <= 0 gives 2^32 - 1).
+ * Fixed point: exact from the Q15.16 inputs. float: 24 significant bits. */
+uint32_t ras_depth32(num near_z, num z);
+
+#endif

@@ -1,0 +1,555 @@
+/* raster.c — the rasterizer's frame and strip loop: work memory, per-frame
+ * transforms and binning (render_instance), and render_triangle for the
+ * book path and the default path. */
+#include <string.h>
+#include "raster_int.h"
+
+#define ALIGN 8
+static size_t al(size_t n) { return (n + (ALIGN - 1)) & ~(size_t)(ALIGN - 1); }
+
+struct layout {
+    size_t ctx, inst, verts, tri_rows, prim_rows, line_rows, lights, mips, mipmem, depth, total;
+    uint32_t nverts, ntris;
+};
+
+static int depth_bytes(const struct scene *s)
+{
+    if (!s->ras.depth_test) return 0;
+    if (s->ras.book_exact) return (int)sizeof(num);
+    return s->ras.depth_bits == 16 ? 2 : 4;
+}
+
+static int make_layout(const struct scene *s, uint16_t w, uint16_t strip_rows, struct layout *L)
+{
+    memset(L, 0, sizeof *L);
+    for (uint16_t i = 0; i < s->ninstances; i++) {
+        if (s->instances[i].model >= s->nmodels) return -1;
+        const struct ras_model *m = &s->models[s->instances[i].model];
+        L->nverts += m->nverts;
+        L->ntris += m->ntris;
+    }
+    size_t off = 0;
+    L->ctx = off; off += al(sizeof(struct ras_ctx));
+    L->inst = off; off += al(sizeof(struct ras_inst) * s->ninstances);
+    L->verts = off; off += al(sizeof(struct ras_vert) * L->nverts);
+    L->tri_rows = off; off += al(sizeof(struct ras_range) * L->ntris);
+    L->prim_rows = off; off += al(sizeof(struct ras_range) * s->nprims);
+    L->line_rows = off; off += al(sizeof(struct ras_range) * s->nlines);
+    L->lights = off; off += al(sizeof(struct ras_light) * s->nlights);
+    L->mips = off; off += al(sizeof(struct ras_mips) * s->ntextures);
+    L->mipmem = off;
+    if (!s->ras.book_exact)
+        for (uint16_t i = 0; i < s->ntextures; i++) off += al(ras_mips_size(&s->textures[i]));
+    L->depth = off; off += al((size_t)depth_bytes(s) * w * strip_rows);
+    L->total = off + ALIGN; /* slack to align the caller's pointer */
+    return 0;
+}
+
+size_t raster_work_size(const struct scene *s, uint16_t width, uint16_t height, uint16_t strip_rows)
+{
+    struct layout L;
+    (void)height;
+    if (make_layout(s, width, strip_rows, &L)) return 0;
+    return L.total;
+}
+
+static struct ras_ctx *ctx_of(struct render_ctx *ctx)
+{
+    uintptr_t p = (uintptr_t)ctx->work;
+    p = (p + (ALIGN - 1)) & ~(uintptr_t)(ALIGN - 1);
+    return (struct ras_ctx *)p;
+}
+
+int raster_init(struct render_ctx *ctx)
+{
+    const struct scene *s = ctx->scene;
+    struct layout L;
+    if (make_layout(s, ctx->width, ctx->strip_rows, &L) || ctx->work_size < L.total) return -1;
+    if (s->canvas_h == 0 || s->viewport_h <= 0 || s->projection_d <= 0) return -1;
+    struct ras_ctx *rc = ctx_of(ctx);
+    uint8_t *base = (uint8_t *)rc;
+    memset(rc, 0, sizeof *rc);
+    rc->s = s;
+    rc->w = ctx->width;
+    rc->h = ctx->height;
+    rc->strip_rows = ctx->strip_rows;
+    rc->book = s->ras.book_exact;
+    rc->sub_bits = s->ras.subpixel_bits ? (s->ras.subpixel_bits > 8 ? 8 : s->ras.subpixel_bits) : RAS_SUBPIXEL_BITS;
+    rc->depth_bytes = (uint8_t)depth_bytes(s);
+    rc->nverts = L.nverts;
+    rc->ntris = L.ntris;
+    rc->inst = (struct ras_inst *)(void *)(base + L.inst);
+    rc->verts = (struct ras_vert *)(void *)(base + L.verts);
+    rc->tri_rows = (struct ras_range *)(void *)(base + L.tri_rows);
+    rc->prim_rows = (struct ras_range *)(void *)(base + L.prim_rows);
+    rc->line_rows = (struct ras_range *)(void *)(base + L.line_rows);
+    rc->lights = (struct ras_light *)(void *)(base + L.lights);
+    rc->mips = (struct ras_mips *)(void *)(base + L.mips);
+    rc->depth = base + L.depth;
+
+    /* the render size's canvas: viewport height kept, width by aspect */
+    rc->cw = num_from_int(rc->w);
+    rc->vh = s->viewport_h;
+    rc->vw = num_div(num_mul_int(s->viewport_h, rc->w), num_from_int(rc->h));
+    rc->d = s->projection_d;
+    rc->unproj = num_div(num_mul(rc->cw, rc->d), rc->vw);
+    rc->scale2d = num_from_ratio(rc->h, s->canvas_h);
+    rc->near_z = rc->d;
+    /* side planes two pixels outside the viewport: the guard band keeps
+     * rounded clip points from landing inside the image edge */
+    rc->side_x = num_div(num_add(num_mul(rc->vw, NUM_HALF), num_div_int(num_mul_int(rc->vw, 2), rc->w)), rc->d);
+    rc->side_y = num_div(num_add(num_mul(rc->vh, NUM_HALF), num_div_int(num_mul_int(rc->vh, 2), rc->h)), rc->d);
+
+    uint8_t *mm = base + L.mipmem;
+    for (uint16_t i = 0; i < s->ntextures; i++) {
+        size_t n = rc->book ? 0 : ras_mips_size(&s->textures[i]);
+        ras_mips_build(&s->textures[i], &rc->mips[i], n ? mm : NULL);
+        mm += al(n);
+    }
+    return 0;
+}
+
+/* ---- per frame ---------------------------------------------------------- */
+
+static struct ras_range rows_of_canvas_y(const struct ras_ctx *rc, num ymin, num ymax)
+{
+    struct ras_range r;
+    int64_t a = (int64_t)(rc->h / 2) - num_to_int(ymax) - 2, b = (int64_t)(rc->h / 2) - num_to_int(ymin) + 1;
+    if (a < 0) a = 0;
+    if (b > (int64_t)rc->h - 1) b = rc->h - 1;
+    if (a > b) { r.r0 = 1; r.r1 = 0; return r; }
+    r.r0 = (int16_t)a;
+    r.r1 = (int16_t)b;
+    return r;
+}
+
+static struct ras_range no_rows(void) { struct ras_range r = { 1, 0 }; return r; }
+
+static void range3(const num v[3], num *lo, num *hi)
+{
+    *lo = num_min(num_min(v[0], v[1]), v[2]);
+    *hi = num_max(num_max(v[0], v[1]), v[2]);
+}
+
+/* Screen position of a camera-space point inside the clip volume, in
+ * sub-pixel units (y down): the default path's projection. */
+static void project_sub(const struct ras_ctx *rc, vec3 p, int32_t *sx, int32_t *sy)
+{
+    num X = num_div(num_mul(p.x, rc->unproj), p.z);
+    num Y = num_div(num_mul(p.y, rc->unproj), p.z);
+    num fx = num_add(num_from_int(rc->w / 2), X);
+    num fy = num_sub(num_from_int(rc->h / 2), Y);
+    int sb = rc->sub_bits;
+    /* integer and fraction apart, so Q15.16 never holds pixels << 8 */
+    *sx = (int32_t)((uint32_t)num_floor_int(fx) << sb) + num_floor_int(num_add(num_mul_int(num_frac(fx), 1 << sb), NUM_HALF));
+    *sy = (int32_t)((uint32_t)num_floor_int(fy) << sb) + num_floor_int(num_add(num_mul_int(num_frac(fy), 1 << sb), NUM_HALF));
+}
+
+static struct ras_range default_tri_rows(const struct ras_ctx *rc, vec3 a, vec3 b, vec3 c)
+{
+    struct ras_cv in[3], out[RAS_CLIP_MAX];
+    in[0].p = a; in[1].p = b; in[2].p = c;
+    int n = clip_triangle(rc, in, 0, out);
+    if (n < 3) return no_rows();
+    int32_t lo = INT32_MAX, hi = INT32_MIN;
+    for (int k = 0; k < n; k++) {
+        int32_t sx, sy;
+        project_sub(rc, out[k].p, &sx, &sy);
+        if (sy < lo) lo = sy;
+        if (sy > hi) hi = sy;
+    }
+    struct ras_range r;
+    int32_t r0 = (lo >> rc->sub_bits) - 1, r1 = (hi >> rc->sub_bits) + 1;
+    if (r0 < 0) r0 = 0;
+    if (r1 > rc->h - 1) r1 = rc->h - 1;
+    if (r0 > r1) return no_rows();
+    r.r0 = (int16_t)r0;
+    r.r1 = (int16_t)r1;
+    return r;
+}
+
+int raster_begin_frame(struct render_ctx *ctx, uint16_t frame)
+{
+    struct ras_ctx *rc = ctx_of(ctx);
+    const struct scene *s = rc->s;
+    const struct ras_options *o = &s->ras;
+    mat4 id = m4_identity();
+    rc->cam = id;
+    rc->cam_rot_t = id;
+    rc->cam_pos = v3(NUM_ZERO, NUM_ZERO, NUM_ZERO);
+    if (o->camera_transform) rc->cam = ras_camera_matrix(s, frame, &rc->cam_rot_t, &rc->cam_pos);
+    else rc->cam_pos = s->camera.position;
+
+    for (uint16_t k = 0; k < s->nlights; k++) {
+        const struct scene_light *l = &s->lights[k];
+        struct ras_light *rl = &rc->lights[k];
+        vec4 v = { l->v.x, l->v.y, l->v.z, NUM_ONE };
+        rl->type = l->type;
+        rl->intensity = l->intensity;
+        v = m4_mul_v4(l->type == LIGHT_POINT ? &rc->cam : &rc->cam_rot_t, v);
+        rl->v = v3(v.x, v.y, v.z);
+    }
+
+    /* 2D primitives and 3D lines: rows they may touch */
+    for (uint16_t i = 0; i < s->nprims; i++) {
+        const struct prim2d *p = &s->prims[i];
+        num ys[3] = { p->y[0], p->y[1], p->npts > 2 ? p->y[2] : p->y[1] }, lo, hi;
+        range3(ys, &lo, &hi);
+        rc->prim_rows[i] = rows_of_canvas_y(rc, num_mul(lo, rc->scale2d), num_mul(hi, rc->scale2d));
+    }
+    for (uint16_t i = 0; i < s->nlines; i++) {
+        num ax, ay, bx, by;
+        project_vertex(rc, s->lines[i].a, &ax, &ay);
+        project_vertex(rc, s->lines[i].b, &bx, &by);
+        rc->line_rows[i] = rows_of_canvas_y(rc, num_min(ay, by), num_max(ay, by));
+    }
+
+    /* render_instance, first half: transform, cull, project, bin */
+    uint32_t vb = 0, tb = 0;
+    rc->tris_in = rc->tris_drawn = 0;
+    for (uint16_t i = 0; i < s->ninstances; i++) {
+        const struct ras_instance *in = &s->instances[i];
+        const struct ras_model *m = &s->models[in->model];
+        struct ras_inst *ri = &rc->inst[i];
+        ri->vbase = vb;
+        ri->tbase = tb;
+        mat3 r3 = ras_instance_rotation(in, frame);
+        mat4 r4 = m4_from_m3(&r3);
+        ri->nmat = m4_mul(&rc->cam_rot_t, &r4);
+        if (o->instance_transform) {
+            mat4 mi = ras_instance_matrix(in, frame);
+            ri->m = o->camera_transform ? m4_mul(&rc->cam, &mi) : mi;
+        } else {
+            /* raster-07: vertices simply moved by the position */
+            mat4 t = m4_translation(in->position);
+            ri->m = o->camera_transform ? m4_mul(&rc->cam, &t) : t;
+        }
+        ri->visible = o->clip ? (uint8_t)ras_instance_visible(rc, ri, m, o->instance_transform ? in->scale : NUM_ONE) : 1;
+        for (uint16_t k = 0; k < m->nverts; k++) {
+            struct ras_vert *v = &rc->verts[vb + k];
+            vec3 p = m->verts[k];
+            if (o->instance_transform) {
+                vec4 p4 = { p.x, p.y, p.z, NUM_ONE };
+                p4 = m4_mul_v4(&ri->m, p4);
+                v->c = v3(p4.x, p4.y, p4.z);
+            } else {
+                v->c = v3_add(p, in->position);
+                if (o->camera_transform) {
+                    vec4 p4 = { v->c.x, v->c.y, v->c.z, NUM_ONE };
+                    p4 = m4_mul_v4(&rc->cam, p4);
+                    v->c = v3(p4.x, p4.y, p4.z);
+                }
+            }
+            project_vertex(rc, v->c, &v->px, &v->py);
+            if (o->project_truncate) {
+                v->px = num_from_int(num_to_int(v->px));
+                v->py = num_from_int(num_to_int(v->py));
+            }
+        }
+        for (uint16_t k = 0; k < m->ntris; k++) {
+            const struct ras_triangle *t = &m->tris[k];
+            struct ras_range *rr = &rc->tri_rows[tb + k];
+            rc->tris_in++;
+            *rr = no_rows();
+            if (!ri->visible || t->v[0] >= m->nverts || t->v[1] >= m->nverts || t->v[2] >= m->nverts) continue;
+            const struct ras_vert *a = &rc->verts[vb + t->v[0]], *b = &rc->verts[vb + t->v[1]],
+                                  *c = &rc->verts[vb + t->v[2]];
+            if (rc->book || o->wireframe) {
+                if (o->clip && !ras_triangle_inside(a->c, b->c, c->c)) continue;
+                if (!rc->book && !o->clip && (a->c.z <= rc->near_z || b->c.z <= rc->near_z || c->c.z <= rc->near_z))
+                    continue; /* default path, clipping off: never project behind the camera */
+                num ys[3] = { a->py, b->py, c->py }, lo, hi;
+                range3(ys, &lo, &hi);
+                *rr = rows_of_canvas_y(rc, lo, hi);
+            } else {
+                *rr = default_tri_rows(rc, a->c, b->c, c->c);
+            }
+            if (rr->r0 <= rr->r1) rc->tris_drawn++;
+        }
+        vb += m->nverts;
+        tb += m->ntris;
+    }
+    return 0;
+}
+
+/* ---- render_triangle, book path (§1.7) ---------------------------------- */
+
+struct book_tri {
+    rgb color;
+    num flat_i;
+    num spec;
+    int shading, textured, nq;
+    const struct ras_texture *tex;
+};
+
+static void book_pixel(struct ras_ctx *rc, int32_t x, int32_t y, const num *q, void *ud)
+{
+    const struct book_tri *bt = ud;
+    const struct scene *s = rc->s;
+    int col = ras_canvas_col(rc, x), row = ras_canvas_row(rc, y);
+    if (col < 0 || col >= (int)rc->w || row < (int)rc->t->y0 || row >= (int)rc->t->y1) return;
+    num iz = q[0];
+    if (s->ras.depth_test) {
+        num *db = (num *)(void *)rc->depth;
+        size_t di = (size_t)(row - rc->t->y0) * rc->w + (size_t)col;
+        if (!(db[di] == NUM_ZERO || db[di] < iz)) return;
+        db[di] = iz;
+    }
+    num i = NUM_ONE;
+    int k = 1;
+    switch (bt->shading) {
+    case SHADE_FLAT: i = bt->flat_i; break;
+    case SHADE_GOURAUD: i = q[k++]; break;
+    case SHADE_PHONG: {
+        num oz = num_recip(iz);
+        vec3 p = v3(num_div(num_mul(num_from_int(x), oz), rc->unproj),
+                    num_div(num_mul(num_from_int(y), oz), rc->unproj), oz);
+        i = compute_illumination(rc, p, v3(q[k], q[k + 1], q[k + 2]), bt->spec);
+        k += 3;
+        break;
+    }
+    default: break;
+    }
+    rgb c = bt->color;
+    if (bt->textured) {
+        num u = q[k], v = q[k + 1];
+        if (s->ras.perspective_uv) { u = num_div(u, iz); v = num_div(v, iz); }
+        int nan = 0;
+        c = ras_texel_book(bt->tex, u, v, &nan);
+        if (nan) { ras_put(rc, col, row, rgb_make(NUM_ZERO, NUM_ZERO, NUM_ZERO)); return; }
+    }
+    if (bt->shading != SHADE_NONE) c = rgb_scale(c, i);
+    ras_put(rc, col, row, c);
+}
+
+static vec3 corner_normal(const struct ras_inst *ri, vec3 n)
+{
+    vec4 v = { n.x, n.y, n.z, NUM_ONE };
+    v = m4_mul_v4(&ri->nmat, v);
+    return v3(v.x, v.y, v.z);
+}
+
+static void book_render_triangle(struct ras_ctx *rc, const struct ras_instance *in, const struct ras_inst *ri,
+                                 const struct ras_model *m, const struct ras_triangle *t)
+{
+    const struct ras_options *o = &rc->s->ras;
+    const struct ras_vert *cv[3] = { &rc->verts[ri->vbase + t->v[0]], &rc->verts[ri->vbase + t->v[1]],
+                                     &rc->verts[ri->vbase + t->v[2]] };
+    num px[3] = { cv[0]->px, cv[1]->px, cv[2]->px }, py[3] = { cv[0]->py, cv[1]->py, cv[2]->py };
+    if (o->wireframe) { draw_wireframe_triangle(rc, px, py, t->color); return; }
+    vec3 nf = v3_cross(v3_sub(cv[1]->c, cv[0]->c), v3_sub(cv[2]->c, cv[0]->c));
+    if (o->backface_cull && v3_dot(v3_scale(cv[0]->c, num_neg(NUM_ONE)), nf) <= 0) return;
+    int idx[3];
+    book_sort_corners(py, idx);
+    num sx[3], sy[3], q[1 + RAS_MAX_ATTR][3];
+    vec3 V[3], N[3];
+    struct book_tri bt;
+    bt.color = t->color;
+    bt.spec = in->specular;
+    bt.shading = o->shading;
+    bt.textured = in->texture >= 0 && in->texture < rc->s->ntextures && m->has_uvs;
+    bt.tex = bt.textured ? &rc->s->textures[in->texture] : NULL;
+    bt.flat_i = NUM_ONE;
+    for (int k = 0; k < 3; k++) {
+        int c = idx[k];
+        sx[k] = px[c];
+        sy[k] = py[c];
+        V[k] = cv[c]->c;
+        N[k] = (o->computed_normals || !m->has_normals) ? nf : corner_normal(ri, t->n[c]);
+        q[0][k] = num_recip(V[k].z);
+    }
+    int nq = 1;
+    if (o->shading == SHADE_FLAT) {
+        vec3 centre = v3(num_div_int(num_add(num_add(V[0].x, V[1].x), V[2].x), 3),
+                         num_div_int(num_add(num_add(V[0].y, V[1].y), V[2].y), 3),
+                         num_div_int(num_add(num_add(V[0].z, V[1].z), V[2].z), 3));
+        bt.flat_i = compute_illumination(rc, centre, N[0], bt.spec);
+    } else if (o->shading == SHADE_GOURAUD) {
+        for (int k = 0; k < 3; k++) q[nq][k] = compute_illumination(rc, V[k], N[k], bt.spec);
+        nq++;
+    } else if (o->shading == SHADE_PHONG) {
+        for (int k = 0; k < 3; k++) { q[nq][k] = N[k].x; q[nq + 1][k] = N[k].y; q[nq + 2][k] = N[k].z; }
+        nq += 3;
+    }
+    if (bt.textured) {
+        for (int k = 0; k < 3; k++) {
+            int c = idx[k];
+            num u = t->uv[c].u, v = t->uv[c].v;
+            if (o->perspective_uv) { u = num_div(u, V[k].z); v = num_div(v, V[k].z); }
+            q[nq][k] = u;
+            q[nq + 1][k] = v;
+        }
+        nq += 2;
+    }
+    book_scan_triangle(rc, sx, sy, nq, (const num (*)[3])q, book_pixel, &bt);
+}
+
+/* ---- render_triangle, default path -------------------------------------- */
+
+struct def_tri {
+    rgb color;
+    num flat_i, spec;
+    int shading, tex;
+    int ai_i, ai_n, ai_uv;   /* attribute slots */
+    num lod_base, iz_eff;    /* trilinear: texels^2 per pixel at depth 1/iz_eff */
+};
+
+static void default_pixel(struct ras_ctx *rc, int col, int row, const num *a, num z, void *ud)
+{
+    const struct def_tri *dt = ud;
+    num i = NUM_ONE;
+    if (dt->shading == SHADE_FLAT) i = dt->flat_i;
+    else if (dt->shading == SHADE_GOURAUD) i = a[dt->ai_i];
+    else if (dt->shading == SHADE_PHONG) {
+        /* the pixel centre, unprojected at its depth */
+        num cx = num_add(num_from_int(col - rc->w / 2), NUM_HALF);
+        num cy = num_sub(num_from_int(rc->h / 2 - row), NUM_HALF);
+        vec3 p = v3(num_div(num_mul(cx, z), rc->unproj), num_div(num_mul(cy, z), rc->unproj), z);
+        i = compute_illumination(rc, p, v3(a[dt->ai_n], a[dt->ai_n + 1], a[dt->ai_n + 2]), dt->spec);
+    }
+    rgb c = dt->color;
+    if (dt->tex >= 0) {
+        num lod = NUM_ZERO;
+        if (rc->s->textures[dt->tex].filter == TEX_TRILINEAR) {
+            num zr = num_mul(z, dt->iz_eff);
+            lod = num_mul(ras_log2(num_mul(dt->lod_base, num_mul(zr, zr))), NUM_HALF);
+        }
+        c = ras_sample(rc, dt->tex, a[dt->ai_uv], a[dt->ai_uv + 1], lod);
+    }
+    if (dt->shading != SHADE_NONE) c = rgb_scale(c, i);
+    ras_put(rc, col, row, c);
+}
+
+static void default_render_triangle(struct ras_ctx *rc, const struct ras_instance *in, const struct ras_inst *ri,
+                                    const struct ras_model *m, const struct ras_triangle *t)
+{
+    const struct ras_options *o = &rc->s->ras;
+    vec3 V[3], N[3];
+    for (int k = 0; k < 3; k++) V[k] = rc->verts[ri->vbase + t->v[k]].c;
+    vec3 nf = v3_cross(v3_sub(V[1], V[0]), v3_sub(V[2], V[0]));
+    num facing = v3_dot(v3_neg(V[0]), nf);
+    if (facing == 0 && nf.x == 0 && nf.y == 0 && nf.z == 0) return; /* degenerate */
+    int front = facing > 0;
+    if (o->backface_cull && !front) return;
+    for (int k = 0; k < 3; k++)
+        N[k] = (o->computed_normals || !m->has_normals) ? nf : corner_normal(ri, t->n[k]);
+
+    struct def_tri dt;
+    dt.color = t->color;
+    dt.spec = in->specular;
+    dt.shading = o->shading;
+    dt.tex = (in->texture >= 0 && in->texture < rc->s->ntextures && m->has_uvs) ? in->texture : -1;
+    dt.flat_i = NUM_ONE;
+    dt.ai_i = dt.ai_n = dt.ai_uv = 0;
+    struct ras_cv cin[3], poly[RAS_CLIP_MAX];
+    int na = 0;
+    if (o->shading == SHADE_GOURAUD) dt.ai_i = na++;
+    if (o->shading == SHADE_PHONG) { dt.ai_n = na; na += 3; }
+    if (dt.tex >= 0) { dt.ai_uv = na; na += 2; }
+    for (int k = 0; k < 3; k++) {
+        cin[k].p = V[k];
+        if (o->shading == SHADE_GOURAUD) cin[k].a[dt.ai_i] = compute_illumination(rc, V[k], N[k], dt.spec);
+        if (o->shading == SHADE_PHONG) {
+            vec3 n = v3_normalize(N[k]);
+            cin[k].a[dt.ai_n] = n.x; cin[k].a[dt.ai_n + 1] = n.y; cin[k].a[dt.ai_n + 2] = n.z;
+        }
+        if (dt.tex >= 0) { cin[k].a[dt.ai_uv] = t->uv[k].u; cin[k].a[dt.ai_uv + 1] = t->uv[k].v; }
+    }
+    if (o->shading == SHADE_FLAT) {
+        vec3 centre = v3(num_div_int(num_add(num_add(V[0].x, V[1].x), V[2].x), 3),
+                         num_div_int(num_add(num_add(V[0].y, V[1].y), V[2].y), 3),
+                         num_div_int(num_add(num_add(V[0].z, V[1].z), V[2].z), 3));
+        dt.flat_i = compute_illumination(rc, centre, N[0], dt.spec);
+    }
+    int n = clip_triangle(rc, cin, na, poly);
+    if (n < 3) return;
+    struct ras_sv sv[RAS_CLIP_MAX];
+    for (int k = 0; k < n; k++) {
+        /* back faces (culling off) are drawn with their corners reversed */
+        const struct ras_cv *c = &poly[front ? k : n - 1 - k];
+        project_sub(rc, c->p, &sv[k].x, &sv[k].y);
+        sv[k].iz = num_recip(c->p.z);
+        sv[k].depth = ras_depth32(rc->near_z, c->p.z);
+        for (int j = 0; j < na; j++) sv[k].a[j] = c->a[j];
+    }
+    const struct ras_texture *tx = dt.tex >= 0 ? &rc->s->textures[dt.tex] : NULL;
+    for (int k = 1; k + 1 < n; k++) {
+        const struct ras_sv *a = &sv[0], *b = &sv[k], *c = &sv[k + 1];
+        dt.lod_base = NUM_ZERO;
+        dt.iz_eff = NUM_ONE;
+        if (tx && tx->filter == TEX_TRILINEAR) {
+            int64_t area = (int64_t)(b->x - a->x) * (c->y - a->y) - (int64_t)(b->y - a->y) * (c->x - a->x);
+            num du1 = num_sub(b->a[dt.ai_uv], a->a[dt.ai_uv]), dv1 = num_sub(b->a[dt.ai_uv + 1], a->a[dt.ai_uv + 1]);
+            num du2 = num_sub(c->a[dt.ai_uv], a->a[dt.ai_uv]), dv2 = num_sub(c->a[dt.ai_uv + 1], a->a[dt.ai_uv + 1]);
+            num uv2 = num_abs(num_sub(num_mul(du1, dv2), num_mul(du2, dv1)));
+            if (area > 0) {
+                num k2 = ras_ratio(((int64_t)tx->w * tx->h) << (2 * rc->sub_bits), area);
+                dt.lod_base = num_mul(uv2, k2);
+            }
+            dt.iz_eff = num_div_int(num_add(num_add(a->iz, b->iz), c->iz), 3);
+        }
+        ras_fill_triangle(rc, a, b, c, na, default_pixel, &dt);
+    }
+}
+
+/* ---- the strip ------------------------------------------------------------ */
+
+static int rows_hit(struct ras_range r, const struct render_target *t)
+{
+    return r.r0 <= r.r1 && r.r1 >= (int)t->y0 && r.r0 < (int)t->y1;
+}
+
+int raster_strip(struct render_ctx *ctx, struct render_target *t, struct render_stats *st)
+{
+    struct ras_ctx *rc = ctx_of(ctx);
+    const struct scene *s = rc->s;
+    if (t->y1 - t->y0 > rc->strip_rows) return -1;
+    rc->t = t;
+    rc->st = st;
+    rgb bg = s->background_set ? s->background : rgb_make(NUM_C(255.0), NUM_C(255.0), NUM_C(255.0));
+    for (int y = t->y0; y < t->y1; y++)
+        for (int x = 0; x < t->width; x++) render_put(t, x, y, bg);
+    if (t->written) memset(t->written, 0, (size_t)(t->y1 - t->y0) * t->width);
+    if (rc->depth_bytes) memset(rc->depth, 0, (size_t)rc->depth_bytes * rc->w * (size_t)(t->y1 - t->y0));
+
+    for (uint16_t i = 0; i < s->nprims; i++) {
+        if (!rows_hit(rc->prim_rows[i], t)) continue;
+        const struct prim2d *p = &s->prims[i];
+        num x[3], y[3];
+        for (int k = 0; k < 3; k++) {
+            x[k] = num_mul(p->x[k], rc->scale2d);
+            y[k] = num_mul(p->y[k], rc->scale2d);
+        }
+        switch (p->kind) {
+        case P2D_LINE_BROKEN: draw_line_broken(rc, x[0], y[0], x[1], y[1], p->color); break;
+        case P2D_LINE: draw_line(rc, x[0], y[0], x[1], y[1], p->color); break;
+        case P2D_WIRE_TRI: draw_wireframe_triangle(rc, x, y, p->color); break;
+        case P2D_FILLED_TRI: draw_filled_triangle(rc, x, y, p->color); break;
+        case P2D_SHADED_TRI: draw_shaded_triangle(rc, x, y, p->h, p->color); break;
+        default: break;
+        }
+    }
+    for (uint16_t i = 0; i < s->nlines; i++) {
+        if (!rows_hit(rc->line_rows[i], t)) continue;
+        num ax, ay, bx, by;
+        project_vertex(rc, s->lines[i].a, &ax, &ay);
+        project_vertex(rc, s->lines[i].b, &bx, &by);
+        draw_line(rc, ax, ay, bx, by, s->lines[i].color);
+    }
+    for (uint16_t i = 0; i < s->ninstances; i++) {
+        const struct ras_instance *in = &s->instances[i];
+        const struct ras_inst *ri = &rc->inst[i];
+        const struct ras_model *m = &s->models[in->model];
+        if (!ri->visible) continue;
+        for (uint16_t k = 0; k < m->ntris; k++) {
+            if (!rows_hit(rc->tri_rows[ri->tbase + k], t)) continue;
+            if (rc->book || s->ras.wireframe) book_render_triangle(rc, in, ri, m, &m->tris[k]);
+            else default_render_triangle(rc, in, ri, m, &m->tris[k]);
+        }
+    }
+    if (t->y0 == 0) {
+        st->triangles_in += rc->tris_in;
+        st->triangles_drawn += rc->tris_drawn;
+    }
+    return 0;
+}

@@ -1,0 +1,55 @@
+/* raster.h — the rasterizer of part II of the book (chapters 6–14), strip by strip.
+ *
+ * Coordinates (the book's): world and camera space have +x right, +y up, the
+ * camera looks along +z. Canvas coordinates have their origin at the centre,
+ * +y up; canvas (x, y) is screen column width/2 + x, row height/2 - y - 1
+ * (PutPixel). The scene canvas is scaled to the render size by
+ * height/canvas_h (2D primitives) and the viewport keeps its height, its
+ * width following the render aspect (3D), so 600x600 is the book exactly.
+ *
+ * Two paths, chosen per scene by ras_options.book_exact:
+ * - book_exact = 1: the demos' own pseudocode and quirks (Interpolate lists,
+ *   truncated projections and spans, triangles straddling a clipping plane
+ *   dropped whole, unnormalised normals, the world-space view vector). The
+ *   double build at 600x600 reproduces the reference digests.
+ * - book_exact = 0 (what real rasterizers add):
+ *   * Pixel centres at (column + 1/2, row + 1/2); vertices snapped to
+ *     1/2^RAS_SUBPIXEL_BITS pixel (ras_options.subpixel_bits overrides,
+ *     1..8); integer edge functions with the top-left fill rule: a pixel
+ *     whose centre lies on an edge belongs to the triangle for which the
+ *     edge is a top edge (horizontal, interior below) or a left edge, so
+ *     triangles sharing an edge never overlap or leave gaps, and
+ *     zero-area triangles draw nothing.
+ *   * Triangles are split against the near plane (z = projection_d) and
+ *     the four side planes of the render's viewport (with a small guard
+ *     band), so any camera position works; nothing is ever written
+ *     outside the strip.
+ *   * Colours, normals and texture coordinates are interpolated
+ *     perspective-correctly; depth is near/z stored in 16 or 32 bits
+ *     (larger is nearer, equal keeps the earlier triangle).
+ *   * Front faces are those whose corners run clockwise on screen
+ *     (counter-clockwise seen with +y up); back faces are culled when
+ *     ras_options.backface_cull is set.
+ * 2D primitives (raster-01 … 04) and wireframes are drawn with the book's
+ * routines in both paths.
+ *
+ * Memory: everything lives in the caller's work memory (raster_work_size()
+ * bytes, any alignment): per-frame transformed vertices of every instance,
+ * row ranges of every triangle (the binning of triangles to strips, done
+ * once per frame), light vectors, and one strip's depth buffer.
+ * Not thread-safe per context.
+ */
+#ifndef RASTER_H
+#define RASTER_H
+
+#include <stddef.h>
+#include "render.h"
+
+#define RAS_SUBPIXEL_BITS 4   /* default vertex precision: 1/16 pixel */
+
+size_t raster_work_size(const struct scene *s, uint16_t width, uint16_t height, uint16_t strip_rows);
+int raster_init(struct render_ctx *ctx);
+int raster_begin_frame(struct render_ctx *ctx, uint16_t frame);
+int raster_strip(struct render_ctx *ctx, struct render_target *t, struct render_stats *st);
+
+#endif

@@ -1,0 +1,132 @@
+/* raster_int.h — what the rasterizer's files share (not a public API). */
+#ifndef RASTER_INT_H
+#define RASTER_INT_H
+
+#include "raster.h"
+#include "num_ras.h"
+
+#define RAS_MAX_ATTR 8   /* interpolated attributes besides 1/z */
+#define RAS_CLIP_MAX 10  /* polygon corners after five planes: 3 + 5, plus slack */
+
+/* A light in camera space: direction toward the light (directional) or
+ * position (point). */
+struct ras_light { uint8_t type; num intensity; vec3 v; };
+
+/* Per-frame state of an instance. */
+struct ras_inst {
+    mat4 m;          /* model -> camera space */
+    mat4 nmat;       /* model normal -> camera space (rotations only) */
+    uint32_t vbase;  /* first of its vertices in ras_ctx.verts */
+    uint32_t tbase;  /* first of its triangles in ras_ctx.tri_rows */
+    uint8_t visible; /* survived bounding-sphere culling */
+};
+
+/* A transformed vertex: camera space and the book's projection. */
+struct ras_vert { vec3 c; num px, py; };
+
+/* Screen rows a primitive may touch (inclusive); r0 > r1: none. This is the
+ * binning of primitives to strips, computed once per frame. */
+struct ras_range { int16_t r0, r1; };
+
+/* Mip chain of a texture, built in work memory when the scene has none. */
+struct ras_mips { uint8_t levels; uint16_t w[12], h[12]; const uint8_t *p[12]; };
+
+struct ras_ctx {
+    const struct scene *s;
+    uint16_t w, h, strip_rows;
+    uint8_t book;            /* ras_options.book_exact */
+    uint8_t sub_bits;        /* sub-pixel bits of the default path */
+    uint8_t depth_bytes;     /* 2, 4 or sizeof(num) (book path) */
+    num cw, vw, vh, d;       /* render width, viewport (aspect-corrected), projection plane */
+    num unproj;              /* cw*d/vw: canvas units per unit of x/z */
+    num scale2d;             /* render height / scene canvas height */
+    num near_z;              /* near clipping plane (camera space z) */
+    num side_x, side_y;      /* default-path side planes: |x| <= side_x*z, |y| <= side_y*z */
+    mat4 cam, cam_rot_t;     /* camera matrix; transposed camera rotation */
+    vec3 cam_pos;            /* world-space camera position (the book's view-vector quirk) */
+    uint32_t nverts, ntris;
+    uint32_t tris_in, tris_drawn;
+    struct ras_inst *inst;
+    struct ras_vert *verts;
+    struct ras_range *tri_rows, *prim_rows, *line_rows;
+    struct ras_light *lights;
+    struct ras_mips *mips;   /* per texture */
+    uint8_t *depth;          /* strip_rows * w entries */
+    /* current strip */
+    struct render_target *t;
+    struct render_stats *st;
+};
+
+/* ---- pixel writes (raster_lines.c) ---- */
+/* Screen pixel; ignored outside the current strip. */
+void ras_put(struct ras_ctx *rc, int col, int row, rgb c);
+/* The book's PutPixel: column w/2 + T(x), row h/2 - T(y) - 1. */
+void ras_put_canvas(struct ras_ctx *rc, num x, num y, rgb c);
+int ras_canvas_col(const struct ras_ctx *rc, int32_t x);
+int ras_canvas_row(const struct ras_ctx *rc, int32_t y);
+
+/* ---- chapter 6: lines ---- */
+void draw_line_broken(struct ras_ctx *rc, num x0, num y0, num x1, num y1, rgb c);
+void draw_line(struct ras_ctx *rc, num x0, num y0, num x1, num y1, rgb c);
+void draw_wireframe_triangle(struct ras_ctx *rc, const num x[3], const num y[3], rgb c);
+
+/* ---- chapters 7, 8: the book's scan conversion (raster_triangles.c) ---- */
+/* Called per pixel with integer canvas coordinates and the span's attributes. */
+typedef void (*ras_book_pixel_fn)(struct ras_ctx *rc, int32_t x, int32_t y, const num *q, void *ud);
+/* Sort order of the book (§1.5 step 1): idx[] receives corner indices. */
+void book_sort_corners(const num y[3], int idx[3]);
+/* §1.5 steps 2–5 on corners already sorted by y; nq attributes q[k][corner];
+ * truncated spans (raster-04 and every 3D demo). */
+void book_scan_triangle(struct ras_ctx *rc, const num x[3], const num y[3], int nq,
+                        const num (*q)[3], ras_book_pixel_fn fn, void *ud);
+void draw_filled_triangle(struct ras_ctx *rc, const num x[3], const num y[3], rgb c);
+void draw_shaded_triangle(struct ras_ctx *rc, const num x[3], const num y[3], const num h[3], rgb c);
+
+/* ---- the default path's triangle (raster_triangles.c) ---- */
+struct ras_sv {
+    int32_t x, y;            /* screen position in 1/2^sub_bits pixel, y down */
+    num iz;                  /* 1/z */
+    uint32_t depth;          /* near/z, 32-bit fraction */
+    num a[RAS_MAX_ATTR];     /* attributes, interpolated perspective-correctly */
+};
+/* Called for each pixel that passes the depth test; a[] interpolated, z the
+ * camera-space depth of the pixel. */
+typedef void (*ras_pixel_fn)(struct ras_ctx *rc, int col, int row, const num *a, num z, void *ud);
+/* Fills a triangle whose corners run clockwise on screen (non-positive area
+ * draws nothing). Returns the number of pixels it wrote. */
+uint32_t ras_fill_triangle(struct ras_ctx *rc, const struct ras_sv *v0, const struct ras_sv *v1,
+                           const struct ras_sv *v2, int na, ras_pixel_fn fn, void *ud);
+
+/* ---- chapters 9, 10: projection and transforms (raster_project.c) ---- */
+void project_vertex(const struct ras_ctx *rc, vec3 v, num *x, num *y);
+mat4 ras_instance_matrix(const struct ras_instance *in, uint16_t frame);
+mat4 ras_camera_matrix(const struct scene *s, uint16_t frame, mat4 *rot_t, vec3 *pos);
+mat3 ras_instance_rotation(const struct ras_instance *in, uint16_t frame);
+
+/* ---- chapter 11: clipping (raster_clip.c) ---- */
+/* Bounding-sphere test of an instance against the book's five planes. */
+int ras_instance_visible(const struct ras_ctx *rc, const struct ras_inst *ri,
+                         const struct ras_model *m, num scale);
+/* The book's triangle test: 1 when all corners are strictly inside all planes. */
+int ras_triangle_inside(vec3 a, vec3 b, vec3 c);
+/* A clipped polygon corner: camera-space position plus attributes. */
+struct ras_cv { vec3 p; num a[RAS_MAX_ATTR]; };
+/* clip_triangle: Sutherland–Hodgman against the default path's planes;
+ * returns the corner count of out (0, or 3..RAS_CLIP_MAX). */
+int clip_triangle(const struct ras_ctx *rc, const struct ras_cv in[3], int na, struct ras_cv *out);
+
+/* ---- chapter 13: lighting (raster_shading.c) ---- */
+num compute_illumination(const struct ras_ctx *rc, vec3 p, vec3 n, num specular);
+
+/* ---- chapter 14: textures (raster_texture.c) ---- */
+/* The demos' lookups (nearest / raster-13 bilinear); *nan set when the
+ * address falls outside the image (the demos store such channels as 0). */
+rgb ras_texel_book(const struct ras_texture *t, num u, num v, int *nan);
+/* Default path: filter of the texture, clamped addressing; lod = log2 of
+ * texels per pixel (trilinear only). */
+rgb ras_sample(const struct ras_ctx *rc, int tex, num u, num v, num lod);
+num ras_log2(num x);
+size_t ras_mips_size(const struct ras_texture *t);
+void ras_mips_build(const struct ras_texture *t, struct ras_mips *m, uint8_t *mem);
+
+#endif

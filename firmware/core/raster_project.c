@@ -1,0 +1,56 @@
+/* raster_project.c — chapters 9 and 10: ProjectVertex, instance and camera
+ * transforms as homogeneous 4x4 matrices (the book's bracketing). */
+#include "raster_int.h"
+
+/* ProjectVertex + ViewportToCanvas: ((v.x*d)/v.z)*Cw/Vw, in that order so
+ * the double build matches the demos. Canvas units, +y up. */
+void project_vertex(const struct ras_ctx *rc, vec3 v, num *x, num *y)
+{
+    *x = num_div(num_mul(num_div(num_mul(v.x, rc->d), v.z), rc->cw), rc->vw);
+    *y = num_div(num_mul(num_div(num_mul(v.y, rc->d), v.z), num_from_int(rc->h)), rc->vh);
+}
+
+/* Animation (scene_anim): frame f turns by f*rot_y_per_frame about y after
+ * the scene's rotation and moves by f*move_per_frame. Frame 0 is the scene
+ * as written, untouched. */
+static vec3 anim_pos(vec3 p, const struct scene_anim *a, uint16_t frame)
+{
+    if (frame == 0) return p;
+    return v3_add(p, v3(num_mul_int(a->move_per_frame.x, frame), num_mul_int(a->move_per_frame.y, frame),
+                        num_mul_int(a->move_per_frame.z, frame)));
+}
+
+static mat3 anim_rot(const mat3 *r, const struct scene_anim *a, uint16_t frame)
+{
+    if (frame == 0 || a->rot_y_per_frame == NUM_ZERO) return *r;
+    /* reduce the angle first so fixed point never saturates */
+    int32_t deg100 = num_to_int(num_mul_int(a->rot_y_per_frame, 100));
+    int64_t total = ((int64_t)deg100 * frame) % 36000;
+    mat3 ry = m3_rot_y_deg(num_from_ratio((int32_t)total, 100));
+    return m3_mul(&ry, r);
+}
+
+mat3 ras_instance_rotation(const struct ras_instance *in, uint16_t frame)
+{
+    return anim_rot(&in->rotation, &in->anim, frame);
+}
+
+/* M_inst = Translation(position) . (Rotation . Scale(scale)). */
+mat4 ras_instance_matrix(const struct ras_instance *in, uint16_t frame)
+{
+    mat3 r3 = ras_instance_rotation(in, frame);
+    mat4 r = m4_from_m3(&r3), s = m4_scale(in->scale), t = m4_translation(anim_pos(in->position, &in->anim, frame));
+    mat4 rs = m4_mul(&r, &s);
+    return m4_mul(&t, &rs);
+}
+
+/* M_cam = Transpose(camera rotation) . Translation(-position). */
+mat4 ras_camera_matrix(const struct scene *s, uint16_t frame, mat4 *rot_t, vec3 *pos)
+{
+    mat3 r3 = anim_rot(&s->camera.rotation, &s->camera_anim, frame);
+    *pos = anim_pos(s->camera.position, &s->camera_anim, frame);
+    mat4 r = m4_from_m3(&r3);
+    *rot_t = m4_transpose(&r);
+    mat4 t = m4_translation(v3_scale(*pos, num_neg(NUM_ONE)));
+    return m4_mul(rot_t, &t);
+}

@@ -1,0 +1,31 @@
+/* raster_shading.c — chapter 13: ComputeIllumination (camera space). */
+#include "raster_int.h"
+
+/* Book path: N as given (never normalised), the view vector from the
+ * world-space camera position (the demos' quirk, wrong when the camera is
+ * not at the origin). Default path: N normalised, V = -P. Lights are in
+ * camera space (ras_ctx.lights, set per frame). */
+num compute_illumination(const struct ras_ctx *rc, vec3 p, vec3 n, num specular)
+{
+    const struct scene *s = rc->s;
+    num i = NUM_ZERO;
+    if (!rc->book) n = v3_normalize(n);
+    vec3 view = rc->book ? v3_sub(rc->cam_pos, p) : v3_neg(p);
+    num len_n = v3_len(n);
+    for (uint16_t k = 0; k < s->nlights; k++) {
+        const struct ras_light *l = &rc->lights[k];
+        if (l->type == LIGHT_AMBIENT) { i = num_add(i, l->intensity); continue; }
+        vec3 L = l->type == LIGHT_DIRECTIONAL ? l->v : v3_add(v3_scale(p, num_neg(NUM_ONE)), l->v);
+        if (s->ras.diffuse) {
+            num cos_a = num_div(v3_dot(L, n), num_mul(v3_len(L), len_n));
+            if (cos_a > 0) i = num_add(i, num_mul(cos_a, l->intensity));
+        }
+        if (s->ras.specular && specular >= 0) {
+            num nl2 = num_mul(NUM_C(2.0), v3_dot(n, L));
+            vec3 r = v3_sub(v3_scale(n, nl2), L);
+            num cos_b = num_div(v3_dot(r, view), num_mul(v3_len(r), v3_len(view)));
+            if (cos_b > 0) i = num_add(i, num_mul(num_powi(cos_b, (uint32_t)num_to_int(specular)), l->intensity));
+        }
+    }
+    return i;
+}

@@ -1,0 +1,36 @@
+# Rasterizer (firmware/core/raster*.c, num_ras.c): tests and docs in docs/rasterizer.md.
+#
+# Test programs link the core sources of one numeric mode directly, plus
+# tests/raster_scenes.c (the book's raster demos as C data). The cross-mode
+# accuracy test links three per-mode bundles (core + scenes + a small API),
+# each keeping only its raster_api_<mode> symbol, like mk/core.mk does.
+
+RASTER_TEST_SRCS := tests/raster_scenes.c
+
+define RASTER_PROG
+$(BUILD)/$(1)/tests/$(2)_$(3): $(call obj,$(1),$(3),tests/$(2).c $(RASTER_TEST_SRCS) $(CORE_SRCS))
+	@mkdir -p $$(@D)
+	$(Q)$$(CC) $(LDFLAGS_$(1)) -o $$@ $$^ -lm
+endef
+$(foreach v,$(VARIANTS),$(foreach m,$(NUM_MODES),$(foreach p,test_raster_book test_raster,$(eval $(call RASTER_PROG,$(v),$(p),$(m))))))
+
+define RASTER_BUNDLE
+$(BUILD)/$(1)/raster_api_$(2).o: $(call obj,$(1),$(2),$(CORE_SRCS) $(RASTER_TEST_SRCS) tests/raster_api.c)
+	@mkdir -p $$(@D)
+	$(Q)ld -r -o $$@.tmp $$^
+	$(Q)objcopy --keep-global-symbol=raster_api_$(2) $$@.tmp $$@
+	$(Q)rm -f $$@.tmp
+endef
+$(foreach v,$(VARIANTS),$(foreach m,$(NUM_MODES),$(eval $(call RASTER_BUNDLE,$(v),$(m)))))
+
+$(BUILD)/%/tests/test_raster_modes: $(BUILD)/%/none/tests/test_raster_modes.o \
+		$(BUILD)/%/raster_api_fixed.o $(BUILD)/%/raster_api_float.o $(BUILD)/%/raster_api_double.o
+	@mkdir -p $(@D)
+	$(Q)$(CC) $(LDFLAGS_$*) -o $@ $^ -lm
+
+RASTER_TESTS := $(BUILD)/asan/tests/test_raster_book_double:$(BUILD) \
+                $(BUILD)/asan/tests/test_raster_fixed $(BUILD)/asan/tests/test_raster_float \
+                $(BUILD)/asan/tests/test_raster_double \
+                $(BUILD)/host/tests/test_raster_modes
+TESTS += $(RASTER_TESTS)
+TEST_DEPS += $(foreach t,$(RASTER_TESTS),$(firstword $(subst :, ,$(t))))

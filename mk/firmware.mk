@@ -75,3 +75,58 @@ firmware-pico: deps-firmware
 
 firmware: firmware-pico
 	$(Q)$(ARM_SIZE) $(FW_RP_IMAGES:.uf2=.elf) $(FW_EXTRA_ELFS)
+
+# ---- flasher (host) --------------------------------------------------------------
+# build/flasher links the real libusb transport; tests drive the same sequence
+# through a fake transport (tests/test_flasher.c).
+USB_CFLAGS := $(shell pkg-config --cflags libusb-1.0 2>/dev/null)
+USB_LIBS   := $(shell pkg-config --libs libusb-1.0 2>/dev/null || echo -lusb-1.0)
+FLASHER_CORE := tools/flasher/picoboot.c tools/flasher/image.c
+FLASHER_SRCS := $(FLASHER_CORE) tools/flasher/usb_libusb.c tools/flasher/main.c
+FLASHER_BIN  := $(BUILD)/flasher
+$(BUILD)/host/none/tools/flasher/%.o $(BUILD)/asan/none/tools/flasher/%.o: EXTRA_CFLAGS += -Itools/flasher $(USB_CFLAGS)
+$(BUILD)/asan/none/tests/test_flasher.o: EXTRA_CFLAGS += -Itools/flasher -Itests
+
+$(FLASHER_BIN): $(call obj,host,none,$(FLASHER_SRCS))
+	$(Q)$(CC) $(LDFLAGS_host) $^ $(USB_LIBS) -o $@
+$(BUILD)/asan/tests/test_flasher: $(call obj,asan,none,$(FLASHER_CORE) tests/test_flasher.c)
+	@mkdir -p $(@D)
+	$(Q)$(CC) $(LDFLAGS_asan) $^ -o $@
+
+PROGRAMS  += $(FLASHER_BIN)
+TEST_DEPS += $(FLASHER_BIN) $(BUILD)/asan/tests/test_flasher
+TESTS     += $(BUILD)/asan/tests/test_flasher tests/test_flasher_noboard.sh:$(BUILD)
+
+# `make flash`: the two-core image through the flasher (FLASH_IMAGE to override).
+FLASH_IMAGE ?= $(FW_OUT)/pico/cgfs.uf2
+flash: $(FLASHER_BIN)
+	$(Q)tools/deps.sh flash
+	$(Q)$(MAKE) --no-print-directory $(FLASH_IMAGE)
+	$(Q)$(FLASHER_BIN) $(FLASH_IMAGE)
+
+# ---- rp2040js emulator (tools/rp2040sim) -------------------------------------------
+RP2040SIM_DEPS := tools/rp2040sim/node_modules/.package-lock.json
+$(RP2040SIM_DEPS): tools/rp2040sim/package.json tools/rp2040sim/package-lock.json
+	$(Q)cd tools/rp2040sim && npm ci --ignore-scripts --no-audit --no-fund --loglevel=error >/dev/null
+	@touch $@
+
+# The host reference of the firmware's scene table (fixed point, as on the MCU).
+FW_HOST_REF := $(BUILD)/fw_host_ref
+$(BUILD)/host/fixed/firmware/app/%.o: EXTRA_CFLAGS += -Ifirmware/app
+$(BUILD)/host/none/tests/fw_host_ref.o: EXTRA_CFLAGS += -Ifirmware/app -Ihost_sim
+$(FW_HOST_REF): $(call obj,host,none,tests/fw_host_ref.c) $(call obj,host,fixed,$(FW_SCENE_SRCS)) \
+                $(BUILD)/host/core_fixed.o
+	$(Q)$(CC) $^ -lm -o $@
+
+TEST_DEPS += $(RP2040SIM_DEPS) $(FW_HOST_REF) $(FW_OUT)/pico/cgfs-1core.elf $(FW_OUT)/pico/cgfs-1core.bin
+TESTS     += tests/test_rp2040sim.sh:$(BUILD)
+
+# `make bench`: the emulated Pico's frame time per scene of the single-core
+# image (cycles at 133 MHz including SPI time), appended to results.jsonl.
+RP2040SIM_BENCH_FRAMES ?= 1
+.PHONY: bench-rp2040
+bench-rp2040: $(RP2040SIM_DEPS) $(FW_OUT)/pico/cgfs-1core.elf
+	@mkdir -p $(BUILD)/bench
+	$(Q)node tools/rp2040sim/rp2040sim.js --image $(FW_OUT)/pico/cgfs-1core.elf \
+		--frames $(RP2040SIM_BENCH_FRAMES) --json >>$(BUILD)/bench/results.jsonl
+bench: bench-rp2040

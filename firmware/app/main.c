@@ -60,8 +60,8 @@ static void strip_rows(unsigned k, uint16_t *y0, uint16_t *y1)
 
 static int render_one(struct render_ctx *c, unsigned k, uint16_t *buf)
 {
-    struct render_target t = { FW_WIDTH, FW_HEIGHT, 0, 0, buf, NULL };
-    struct render_stats st = { 0, 0, 0, 0 };
+    struct render_target t = { .width = FW_WIDTH, .height = FW_HEIGHT, .rgb565 = buf };
+    struct render_stats st = { 0 };
     strip_rows(k, &t.y0, &t.y1);
     return render_strip(c, &t, &st);
 }

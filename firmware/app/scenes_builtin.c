@@ -16,7 +16,14 @@ static const struct scene builtin_pattern = {
     .frames = 1,
 };
 
+/* Work memory for the placeholder scene: enough for a raster scene's strip
+ * state at 240x240 with 8-row strips (the scene compiler sizes it exactly). */
+#ifndef FW_BUILTIN_WORK
+#define FW_BUILTIN_WORK 1024
+#endif
+static uint64_t work0[FW_BUILTIN_WORK / 8], work1[FW_BUILTIN_WORK / 8];
+
 const struct fw_scene fw_scenes[] = {
-    { "builtin/pattern", &builtin_pattern, { NULL, NULL }, 0 },
+    { "builtin/pattern", &builtin_pattern, { work0, work1 }, sizeof work0 },
 };
 const unsigned fw_scene_count = sizeof fw_scenes / sizeof fw_scenes[0];

@@ -1,0 +1,320 @@
+/* test_flasher.c — PICOBOOT command encoding, UF2 loading, and the whole
+ * flashing sequence against a fake USB device, with a failure injected at
+ * every step. */
+#include <stdlib.h>
+#include <string.h>
+#include "check.h"
+#include "image.h"
+#include "picoboot.h"
+
+/* ---- a fake RP2040 boot ROM behind the transport ------------------------- */
+
+#define FAKE_FLASH (2u * 1024u * 1024u)
+
+enum phase { CMD, DATA_OUT, DATA_IN, ACK_IN, ACK_OUT };
+
+struct fake {
+    int open_result;
+    long fail_at;          /* bulk call number from which every transfer fails (cable pulled); 0 = never */
+    int corrupt_read;      /* flips a bit in READ data */
+    long calls;
+    enum phase ph;
+    uint32_t token, addr, len;
+    int exclusive, xip_exited, rebooted, protocol_error, closed;
+    uint8_t flash[FAKE_FLASH];
+};
+
+static uint32_t g32(const uint8_t *p) { return p[0] | p[1] << 8 | p[2] << 16 | (uint32_t)p[3] << 24; }
+
+static int in_range(const struct fake *f, uint32_t a, uint32_t n)
+{
+    (void)f;
+    return a >= PB_FLASH_BASE && a - PB_FLASH_BASE + (uint64_t)n <= FAKE_FLASH;
+}
+
+static int f_open(void *ctx, char *detail, size_t n)
+{
+    struct fake *f = ctx;
+    if (f->open_result == PB_OPEN_WRONG) snprintf(detail, n, "USB 2e8a:000a is a running program");
+    return f->open_result;
+}
+
+static int bad(struct fake *f)
+{
+    f->protocol_error = 1;
+    return -1;
+}
+
+static int f_out(void *ctx, const uint8_t *d, size_t n)
+{
+    struct fake *f = ctx;
+    if (f->fail_at && ++f->calls >= f->fail_at) return -1;
+    if (!f->fail_at) f->calls++;
+    switch (f->ph) {
+    case CMD: {
+        if (n != 32 || g32(d) != PB_MAGIC || g32(d + 4) != f->token + 1) return bad(f);
+        f->token = g32(d + 4);
+        uint8_t id = d[8], sz = d[9];
+        uint32_t tl = g32(d + 12);
+        f->addr = g32(d + 16);
+        f->len = g32(d + 20);
+        switch (id) {
+        case PB_EXCLUSIVE_ACCESS:
+            if (sz != 1 || tl) return bad(f);
+            f->exclusive = d[16];
+            f->ph = ACK_IN;
+            break;
+        case PB_EXIT_XIP:
+            if (sz != 0 || tl || !f->exclusive) return bad(f);
+            f->xip_exited = 1;
+            f->ph = ACK_IN;
+            break;
+        case PB_FLASH_ERASE:
+            if (sz != 8 || tl || !f->xip_exited || f->addr % 4096 || f->len % 4096 || !in_range(f, f->addr, f->len))
+                return bad(f);
+            memset(f->flash + (f->addr - PB_FLASH_BASE), 0xFF, f->len);
+            f->ph = ACK_IN;
+            break;
+        case PB_WRITE:
+            if (sz != 8 || tl != f->len || f->addr % 256 || !in_range(f, f->addr, f->len)) return bad(f);
+            f->ph = DATA_OUT;
+            break;
+        case PB_READ:
+            if (sz != 8 || tl != f->len || !in_range(f, f->addr, f->len)) return bad(f);
+            f->ph = DATA_IN;
+            break;
+        case PB_REBOOT:
+            if (sz != 12 || tl) return bad(f);
+            f->rebooted = 1;
+            f->ph = ACK_IN;
+            break;
+        default:
+            return bad(f);
+        }
+        return (int)n;
+    }
+    case DATA_OUT:
+        if (n != f->len) return bad(f);
+        /* Programming only clears bits, as NOR flash does. */
+        for (size_t i = 0; i < n; i++) f->flash[f->addr - PB_FLASH_BASE + i] &= d[i];
+        f->ph = ACK_IN;
+        return (int)n;
+    case ACK_OUT:
+        if (n != 0) return bad(f);
+        f->ph = CMD;
+        return 0;
+    default:
+        return bad(f);
+    }
+}
+
+static int f_in(void *ctx, uint8_t *d, size_t n)
+{
+    struct fake *f = ctx;
+    if (f->fail_at && ++f->calls >= f->fail_at) return -1;
+    if (!f->fail_at) f->calls++;
+    switch (f->ph) {
+    case DATA_IN:
+        if (n != f->len) return bad(f);
+        memcpy(d, f->flash + (f->addr - PB_FLASH_BASE), n);
+        if (f->corrupt_read) d[n / 2] ^= 0x10;
+        f->ph = ACK_OUT;
+        return (int)n;
+    case ACK_IN:
+        if (n != 0) return bad(f);
+        f->ph = CMD;
+        return 0;
+    default:
+        return bad(f);
+    }
+}
+
+static void f_close(void *ctx) { ((struct fake *)ctx)->closed = 1; }
+
+static struct fake *fake_new(void)
+{
+    struct fake *f = calloc(1, sizeof *f);
+    memset(f->flash, 0x5A, sizeof f->flash);  /* old contents */
+    return f;
+}
+
+static struct pb_transport fake_transport(struct fake *f)
+{
+    struct pb_transport t = { f, f_open, f_out, f_in, f_close };
+    return t;
+}
+
+/* ---- helpers ------------------------------------------------------------- */
+
+static void make_image(struct pb_image *img, uint32_t addr, uint32_t len)
+{
+    img->addr = addr;
+    img->len = len;
+    img->data = malloc(len);
+    uint32_t s = 12345;
+    for (uint32_t i = 0; i < len; i++) {
+        s = s * 1103515245u + 12345u;
+        img->data[i] = (uint8_t)(s >> 16);
+    }
+}
+
+static void put32(uint8_t *p, uint32_t v)
+{
+    p[0] = (uint8_t)v; p[1] = (uint8_t)(v >> 8); p[2] = (uint8_t)(v >> 16); p[3] = (uint8_t)(v >> 24);
+}
+
+/* UF2 of `len` bytes at addr, family fam. */
+static uint8_t *make_uf2(const uint8_t *data, uint32_t addr, uint32_t len, uint32_t fam, size_t *out_len)
+{
+    uint32_t n = len / 256;
+    uint8_t *u = calloc(n, 512);
+    for (uint32_t i = 0; i < n; i++) {
+        uint8_t *b = u + 512 * i;
+        put32(b, 0x0A324655u); put32(b + 4, 0x9E5D5157u); put32(b + 8, 0x2000u);
+        put32(b + 12, addr + 256 * i); put32(b + 16, 256); put32(b + 20, i); put32(b + 24, n);
+        put32(b + 28, fam);
+        memcpy(b + 32, data + 256 * i, 256);
+        put32(b + 508, 0x0AB16F30u);
+    }
+    *out_len = (size_t)n * 512;
+    return u;
+}
+
+static int one_line(const char *s) { return s[0] && !strchr(s, '\n'); }
+
+/* ---- tests --------------------------------------------------------------- */
+
+static void test_encoding(void)
+{
+    uint8_t c[32];
+    pb_encode_write(c, 7, 0x10000100u, 256);
+    static const uint8_t want[32] = {
+        0x0b, 0xd1, 0x1f, 0x43, 7, 0, 0, 0, 0x05, 8, 0, 0, 0x00, 0x01, 0, 0,
+        0x00, 0x01, 0x00, 0x10, 0x00, 0x01, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0,
+    };
+    check(memcmp(c, want, 32) == 0, "picoboot_write_command_bytes", "encoding differs");
+    pb_encode_read(c, 9, 0x10000000u, 4096);
+    check(c[8] == 0x84 && c[9] == 8 && g32(c + 12) == 4096 && g32(c + 16) == 0x10000000u && g32(c + 20) == 4096,
+          "picoboot_read_command_has_in_bit_and_length", "id %02x size %u", c[8], c[9]);
+    pb_encode_erase(c, 3, 0x10001000u, 4096);
+    check(c[8] == 0x03 && c[9] == 8 && g32(c + 12) == 0 && g32(c + 16) == 0x10001000u,
+          "picoboot_erase_has_no_data_phase", "id %02x tl %u", c[8], g32(c + 12));
+    pb_encode_exclusive(c, 1, PB_EXCLUSIVE);
+    check(c[8] == 0x01 && c[9] == 1 && c[16] == 1 && g32(c + 12) == 0, "picoboot_exclusive_access_args",
+          "bad");
+    pb_encode_exit_xip(c, 2);
+    check(c[8] == 0x06 && c[9] == 0, "picoboot_exit_xip_no_args", "bad");
+    pb_encode_reboot(c, 5, 0, 0x20042000u, 100);
+    check(c[8] == 0x02 && c[9] == 12 && g32(c + 20) == 0x20042000u && g32(c + 24) == 100,
+          "picoboot_reboot_args_pc_sp_delay", "bad");
+}
+
+static void test_success(void)
+{
+    struct fake *f = fake_new();
+    struct pb_transport t = fake_transport(f);
+    struct pb_image img;
+    char err[512];
+    make_image(&img, 0x10000000u, 3 * 4096 + 512);
+    int rc = pb_flash(&t, &img, 1, err, sizeof err, NULL);
+    int same = memcmp(f->flash, img.data, img.len) == 0;
+    /* The rest of the last erased sector is erased (0xFF), beyond it untouched. */
+    int tail = f->flash[img.len] == 0xFF && f->flash[4 * 4096] == 0x5A;
+    check(rc == 0 && same && tail && f->rebooted && !f->protocol_error && f->closed,
+          "flash_sequence_writes_verifies_and_reboots", "rc %d same %d tail %d reboot %d proto %d: %s", rc,
+          same, tail, f->rebooted, f->protocol_error, err);
+    long total = f->calls;
+    free(f);
+
+    /* A failure at every bulk transfer: exit 2, one line, never a reboot
+     * before the image was verified. */
+    int all_ok = 1;
+    long bad_at = -1;
+    for (long k = 1; k <= total; k++) {
+        f = fake_new();
+        f->fail_at = k;
+        t = fake_transport(f);
+        rc = pb_flash(&t, &img, 1, err, sizeof err, NULL);
+        int reboot_cmd_sent = f->rebooted;
+        /* Only the last 2 transfers (REBOOT command and its ack) may come
+         * after the reboot was accepted. */
+        int ok = rc == 2 && one_line(err) && strstr(err, "USB transfer failed") && f->closed &&
+                 (!reboot_cmd_sent || k >= total);
+        if (!ok && all_ok) {
+            all_ok = 0;
+            bad_at = k;
+        }
+        free(f);
+    }
+    check(all_ok, "flash_failure_at_every_transfer_exits_2_without_reboot", "failed at transfer %ld of %ld",
+          bad_at, total);
+
+    f = fake_new();
+    f->corrupt_read = 1;
+    t = fake_transport(f);
+    rc = pb_flash(&t, &img, 1, err, sizeof err, NULL);
+    check(rc == 2 && one_line(err) && strstr(err, "verify failed") && !f->rebooted,
+          "verify_mismatch_exits_2_and_does_not_reboot", "rc %d reboot %d: %s", rc, f->rebooted, err);
+    free(f);
+
+    static const struct { int r; const char *word; const char *name; } opens[] = {
+        { PB_OPEN_NODEV, "no RP2040 in BOOTSEL mode", "no_device_exits_2" },
+        { PB_OPEN_ACCESS, "60-picoboot.rules", "permission_denied_names_the_udev_rule" },
+        { PB_OPEN_WRONG, "wrong device", "wrong_device_exits_2" },
+        { PB_OPEN_ERROR, "cannot open", "usb_error_exits_2" },
+    };
+    for (size_t i = 0; i < sizeof opens / sizeof opens[0]; i++) {
+        f = fake_new();
+        f->open_result = opens[i].r;
+        t = fake_transport(f);
+        rc = pb_flash(&t, &img, 1, err, sizeof err, NULL);
+        check(rc == 2 && one_line(err) && strstr(err, opens[i].word) && f->calls == 0, opens[i].name,
+              "rc %d: %s", rc, err);
+        free(f);
+    }
+    image_free(&img);
+}
+
+static void test_uf2(void)
+{
+    struct pb_image src, img;
+    char err[256];
+    size_t n;
+    make_image(&src, 0x10000000u, 8 * 256);
+    uint8_t *u = make_uf2(src.data, src.addr, src.len, UF2_FAMILY_RP2040, &n);
+    int rc = image_from_uf2(u, n, &img, err, sizeof err);
+    check(rc == 0 && img.addr == src.addr && img.len == src.len && memcmp(img.data, src.data, src.len) == 0,
+          "uf2_blocks_make_the_image", "rc %d: %s", rc, err);
+    if (rc == 0) image_free(&img);
+
+    u[512 * 3 + 508] ^= 1;
+    rc = image_from_uf2(u, n, &img, err, sizeof err);
+    check(rc == -1 && strstr(err, "block 3") && strstr(err, "magic"), "uf2_bad_magic_rejected", "%s", err);
+    free(u);
+
+    u = make_uf2(src.data, src.addr, src.len, 0x12345678u, &n);
+    rc = image_from_uf2(u, n, &img, err, sizeof err);
+    check(rc == -1 && strstr(err, "no RP2040 blocks"), "uf2_other_family_rejected", "%s", err);
+    free(u);
+
+    u = make_uf2(src.data, src.addr, src.len, UF2_FAMILY_RP2040, &n);
+    rc = image_from_uf2(u, n - 512, &img, err, sizeof err);
+    check(rc == -1 && strstr(err, "truncated"), "uf2_truncated_rejected", "%s", err);
+    rc = image_from_uf2(u, n - 5, &img, err, sizeof err);
+    check(rc == -1 && strstr(err, "multiple of 512"), "uf2_partial_block_rejected", "%s", err);
+    free(u);
+
+    rc = image_from_bin(src.data, 300, PB_FLASH_BASE, &img, err, sizeof err);
+    check(rc == 0 && img.len == 512 && img.data[300] == 0xFF && img.data[0] == src.data[0],
+          "bin_padded_to_pages_with_ff", "rc %d len %u", rc, (unsigned)img.len);
+    if (rc == 0) image_free(&img);
+    image_free(&src);
+}
+
+int main(void)
+{
+    test_encoding();
+    test_success();
+    test_uf2();
+    return check_exit();
+}

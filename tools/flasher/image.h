@@ -1,0 +1,24 @@
+/* image.h — loading a flash image from a UF2 or a flat .bin file. */
+#ifndef FLASHER_IMAGE_H
+#define FLASHER_IMAGE_H
+
+#include <stddef.h>
+#include <stdint.h>
+#include "picoboot.h"
+
+#define UF2_FAMILY_RP2040 0xE48BFF56u
+
+/* Parses UF2 bytes: every block must have the three magic numbers, a 256-
+ * byte payload at a page-aligned flash address, consistent block counts,
+ * and (when flagged) the RP2040 family ID; blocks of other families are
+ * skipped. The image spans the lowest to the highest block, gaps 0xFF.
+ * Returns 0, or -1 with a one-line reason in err. img->data is malloc'ed. */
+int image_from_uf2(const uint8_t *buf, size_t len, struct pb_image *img, char *err, size_t err_len);
+
+/* A flat binary placed at addr, padded to a page with 0xFF. */
+int image_from_bin(const uint8_t *buf, size_t len, uint32_t addr, struct pb_image *img, char *err,
+                   size_t err_len);
+
+void image_free(struct pb_image *img);
+
+#endif

@@ -1,0 +1,180 @@
+/* picoboot.c — PICOBOOT command encoding and the flashing sequence. */
+#include <stdio.h>
+#include <string.h>
+#include "picoboot.h"
+
+static void put32(uint8_t *p, uint32_t v)
+{
+    p[0] = (uint8_t)v; p[1] = (uint8_t)(v >> 8); p[2] = (uint8_t)(v >> 16); p[3] = (uint8_t)(v >> 24);
+}
+
+size_t pb_encode(uint8_t out[PB_CMD_LEN], uint32_t token, uint8_t cmd_id, uint32_t transfer_len,
+                 const uint8_t *args, uint8_t args_len)
+{
+    memset(out, 0, PB_CMD_LEN);
+    put32(out + 0, PB_MAGIC);
+    put32(out + 4, token);
+    out[8] = cmd_id;
+    out[9] = args_len;
+    put32(out + 12, transfer_len);
+    if (args && args_len) memcpy(out + 16, args, args_len > 16 ? 16 : args_len);
+    return PB_CMD_LEN;
+}
+
+size_t pb_encode_exclusive(uint8_t out[PB_CMD_LEN], uint32_t token, uint8_t mode)
+{
+    return pb_encode(out, token, PB_EXCLUSIVE_ACCESS, 0, &mode, 1);
+}
+
+size_t pb_encode_exit_xip(uint8_t out[PB_CMD_LEN], uint32_t token)
+{
+    return pb_encode(out, token, PB_EXIT_XIP, 0, NULL, 0);
+}
+
+static size_t range(uint8_t out[PB_CMD_LEN], uint32_t token, uint8_t id, uint32_t addr, uint32_t size,
+                    uint32_t transfer)
+{
+    uint8_t a[8];
+    put32(a, addr);
+    put32(a + 4, size);
+    return pb_encode(out, token, id, transfer, a, 8);
+}
+
+size_t pb_encode_erase(uint8_t out[PB_CMD_LEN], uint32_t token, uint32_t addr, uint32_t size)
+{
+    return range(out, token, PB_FLASH_ERASE, addr, size, 0);
+}
+
+size_t pb_encode_write(uint8_t out[PB_CMD_LEN], uint32_t token, uint32_t addr, uint32_t size)
+{
+    return range(out, token, PB_WRITE, addr, size, size);
+}
+
+size_t pb_encode_read(uint8_t out[PB_CMD_LEN], uint32_t token, uint32_t addr, uint32_t size)
+{
+    return range(out, token, PB_READ, addr, size, size);
+}
+
+size_t pb_encode_reboot(uint8_t out[PB_CMD_LEN], uint32_t token, uint32_t pc, uint32_t sp, uint32_t delay_ms)
+{
+    uint8_t a[12];
+    put32(a, pc);
+    put32(a + 4, sp);
+    put32(a + 8, delay_ms);
+    return pb_encode(out, token, PB_REBOOT, 0, a, 12);
+}
+
+/* ---- the sequence -------------------------------------------------------- */
+
+struct session {
+    const struct pb_transport *t;
+    uint32_t token;
+    char *err;
+    size_t err_len;
+};
+
+static int fail(struct session *s, const char *fmt, const char *what, uint32_t addr)
+{
+    snprintf(s->err, s->err_len, fmt, what, (unsigned)addr);
+    return 2;
+}
+
+#define USB_LOST "USB transfer failed during %s at 0x%08x: board unplugged or reset? Flash is not verified; nothing was rebooted"
+
+/* Sends a command, its data phase (OUT data or IN into `in`), and checks the
+ * acknowledgement. */
+static int run(struct session *s, const uint8_t cmd[PB_CMD_LEN], const char *what, uint32_t addr,
+               const uint8_t *out, uint8_t *in, uint32_t len)
+{
+    const struct pb_transport *t = s->t;
+    uint8_t ack;
+    if (t->bulk_out(t->ctx, cmd, PB_CMD_LEN) != (int)PB_CMD_LEN) return fail(s, USB_LOST, what, addr);
+    if (out && len && t->bulk_out(t->ctx, out, len) != (int)len) return fail(s, USB_LOST, what, addr);
+    if (in && len && t->bulk_in(t->ctx, in, len) != (int)len) return fail(s, USB_LOST, what, addr);
+    /* Acknowledgement: a zero-length packet the other way. */
+    int rc = in ? t->bulk_out(t->ctx, NULL, 0) : t->bulk_in(t->ctx, &ack, 0);
+    if (rc != 0) return fail(s, USB_LOST, what, addr);
+    s->token++;
+    return 0;
+}
+
+int pb_flash(const struct pb_transport *t, const struct pb_image *img, int reboot,
+             char *err, size_t err_len, void (*progress)(const char *stage, uint32_t done, uint32_t total))
+{
+    struct session s = { t, 1, err, err_len };
+    uint8_t cmd[PB_CMD_LEN];
+    static uint8_t back[PB_SECTOR];
+    char detail[160] = "";
+    err[0] = 0;
+
+    if (img->len == 0 || img->addr % PB_PAGE || img->len % PB_PAGE || img->addr < PB_FLASH_BASE ||
+        img->addr - PB_FLASH_BASE + (uint64_t)img->len > PB_FLASH_SIZE) {
+        snprintf(err, err_len, "image of %u bytes at 0x%08x is not page-aligned flash", (unsigned)img->len,
+                 (unsigned)img->addr);
+        return 2;
+    }
+
+    int o = t->open(t->ctx, detail, sizeof detail);
+    switch (o) {
+    case PB_OPEN_OK: break;
+    case PB_OPEN_NODEV:
+        snprintf(err, err_len, "no RP2040 in BOOTSEL mode found (USB %04x:%04x): hold BOOTSEL while "
+                 "plugging the board in%s%s", PB_VID, PB_PID_RP2040_BOOT, detail[0] ? "; " : "", detail);
+        return 2;
+    case PB_OPEN_ACCESS:
+        snprintf(err, err_len, "permission denied opening the RP2040 boot ROM (USB %04x:%04x): install "
+                 "tools/flasher/60-picoboot.rules in /etc/udev/rules.d (docs/firmware.md)", PB_VID,
+                 PB_PID_RP2040_BOOT);
+        return 2;
+    case PB_OPEN_WRONG:
+        snprintf(err, err_len, "wrong device: %s", detail[0] ? detail : "no PICOBOOT interface");
+        return 2;
+    default:
+        snprintf(err, err_len, "cannot open the RP2040 boot ROM: %s", detail[0] ? detail : "USB error");
+        return 2;
+    }
+
+    int rc = 0;
+    uint32_t erase_lo = img->addr & ~(PB_SECTOR - 1);
+    uint32_t erase_hi = (img->addr + img->len + PB_SECTOR - 1) & ~(PB_SECTOR - 1);
+
+    pb_encode_exclusive(cmd, s.token, PB_EXCLUSIVE);
+    if ((rc = run(&s, cmd, "EXCLUSIVE_ACCESS", img->addr, NULL, NULL, 0))) goto out;
+    pb_encode_exit_xip(cmd, s.token);
+    if ((rc = run(&s, cmd, "EXIT_XIP", img->addr, NULL, NULL, 0))) goto out;
+
+    /* The erase covers whole sectors: the bytes around the image in its first
+     * and last sector are rewritten from what the image holds (0xFF pad). */
+    for (uint32_t a = erase_lo; a < erase_hi; a += PB_SECTOR) {
+        if (progress) progress("erase", a - erase_lo, erase_hi - erase_lo);
+        pb_encode_erase(cmd, s.token, a, PB_SECTOR);
+        if ((rc = run(&s, cmd, "FLASH_ERASE", a, NULL, NULL, 0))) goto out;
+    }
+    for (uint32_t off = 0; off < img->len; off += PB_PAGE) {
+        if (progress && off % PB_SECTOR == 0) progress("write", off, img->len);
+        pb_encode_write(cmd, s.token, img->addr + off, PB_PAGE);
+        if ((rc = run(&s, cmd, "WRITE", img->addr + off, img->data + off, NULL, PB_PAGE))) goto out;
+    }
+    for (uint32_t off = 0; off < img->len; off += PB_SECTOR) {
+        uint32_t n = img->len - off < PB_SECTOR ? img->len - off : PB_SECTOR;
+        if (progress) progress("verify", off, img->len);
+        pb_encode_read(cmd, s.token, img->addr + off, n);
+        if ((rc = run(&s, cmd, "READ", img->addr + off, NULL, back, n))) goto out;
+        for (uint32_t i = 0; i < n; i++)
+            if (back[i] != img->data[off + i]) {
+                snprintf(err, err_len, "verify failed at 0x%08x (wrote 0x%02x, read 0x%02x): not rebooted "
+                         "into a bad image; flash again", (unsigned)(img->addr + off + i),
+                         img->data[off + i], back[i]);
+                rc = 2;
+                goto out;
+            }
+    }
+    if (reboot) {
+        /* pc = 0: a normal boot from flash after delay_ms. */
+        pb_encode_reboot(cmd, s.token, 0, 0x20042000u, 100);
+        if ((rc = run(&s, cmd, "REBOOT", 0, NULL, NULL, 0))) goto out;
+    }
+out:
+    t->close(t->ctx);
+    return rc;
+}

@@ -1,0 +1,88 @@
+/* picoboot.h — the RP2040 boot ROM's PICOBOOT USB interface (vendor
+ * interface of USB device 2e8a:0003 in BOOTSEL mode), and the flashing
+ * sequence built on it.
+ *
+ * A command is a 32-byte little-endian block sent on the bulk OUT endpoint:
+ *   u32 magic 0x431FD10B, u32 token, u8 command id (bit 7 set = data IN),
+ *   u8 size of the arguments, u16 0, u32 transfer length, 16 bytes of args.
+ * A data phase of `transfer length` bytes follows (OUT for WRITE, IN for
+ * READ); then the device acknowledges with a zero-length packet in the
+ * direction opposite to the data (IN after OUT commands, OUT after IN).
+ *
+ * The USB layer is behind struct pb_transport, so the whole sequence runs
+ * against a fake in tests. */
+#ifndef PICOBOOT_H
+#define PICOBOOT_H
+
+#include <stddef.h>
+#include <stdint.h>
+
+#define PB_MAGIC            0x431FD10Bu
+#define PB_VID              0x2E8Au
+#define PB_PID_RP2040_BOOT  0x0003u
+#define PB_FLASH_BASE       0x10000000u
+#define PB_FLASH_SIZE       (16u * 1024u * 1024u)  /* address space; the Pico has 2 MB */
+#define PB_SECTOR           4096u   /* erase unit */
+#define PB_PAGE             256u    /* program unit */
+#define PB_CMD_LEN          32u
+
+enum pb_cmd_id {
+    PB_EXCLUSIVE_ACCESS = 0x01,
+    PB_REBOOT = 0x02,
+    PB_FLASH_ERASE = 0x03,
+    PB_READ = 0x84,
+    PB_WRITE = 0x05,
+    PB_EXIT_XIP = 0x06,
+};
+
+enum pb_exclusive { PB_NOT_EXCLUSIVE = 0, PB_EXCLUSIVE = 1, PB_EXCLUSIVE_AND_EJECT = 2 };
+
+/* Result of pb_transport.open. */
+enum pb_open {
+    PB_OPEN_OK = 0,
+    PB_OPEN_NODEV = -1,       /* no device 2e8a:0003 */
+    PB_OPEN_ACCESS = -2,      /* found, but no permission to open it */
+    PB_OPEN_WRONG = -3,       /* an RP2040 is there, but not in the boot ROM (or no PICOBOOT interface) */
+    PB_OPEN_ERROR = -4,       /* anything else (libusb failure) */
+};
+
+struct pb_transport {
+    void *ctx;
+    /* Finds and claims the PICOBOOT interface; enum pb_open. `detail`
+     * (may be empty) receives a short description for the error line. */
+    int (*open)(void *ctx, char *detail, size_t detail_len);
+    /* Bulk transfers: bytes transferred, or < 0 on a USB error (cable
+     * pulled, stall, timeout). n == 0 is a zero-length packet. */
+    int (*bulk_out)(void *ctx, const uint8_t *data, size_t n);
+    int (*bulk_in)(void *ctx, uint8_t *data, size_t n);
+    void (*close)(void *ctx);
+};
+
+/* Encodes a command into out[32]; returns PB_CMD_LEN. args_len <= 16. */
+size_t pb_encode(uint8_t out[PB_CMD_LEN], uint32_t token, uint8_t cmd_id, uint32_t transfer_len,
+                 const uint8_t *args, uint8_t args_len);
+
+/* Encoders of each command (token as given). */
+size_t pb_encode_exclusive(uint8_t out[PB_CMD_LEN], uint32_t token, uint8_t mode);
+size_t pb_encode_exit_xip(uint8_t out[PB_CMD_LEN], uint32_t token);
+size_t pb_encode_erase(uint8_t out[PB_CMD_LEN], uint32_t token, uint32_t addr, uint32_t size);
+size_t pb_encode_write(uint8_t out[PB_CMD_LEN], uint32_t token, uint32_t addr, uint32_t size);
+size_t pb_encode_read(uint8_t out[PB_CMD_LEN], uint32_t token, uint32_t addr, uint32_t size);
+size_t pb_encode_reboot(uint8_t out[PB_CMD_LEN], uint32_t token, uint32_t pc, uint32_t sp, uint32_t delay_ms);
+
+/* An image to flash: `len` bytes at flash address `addr` (both multiples of
+ * PB_PAGE once loaded; the loader pads with 0xFF). */
+struct pb_image {
+    uint32_t addr;
+    uint32_t len;
+    uint8_t *data;
+};
+
+/* The whole sequence: open, exclusive access, exit XIP, erase the sectors
+ * the image covers, write it in pages, read it back and compare, and only
+ * then reboot into it (nothing half-written runs). Returns 0, or 2 with a
+ * one-line message (no newline) in err. `progress` may be NULL. */
+int pb_flash(const struct pb_transport *t, const struct pb_image *img, int reboot,
+             char *err, size_t err_len, void (*progress)(const char *stage, uint32_t done, uint32_t total));
+
+#endif

@@ -1,0 +1,140 @@
+/* usb_libusb.c — finds the RP2040 boot ROM (2e8a:0003), claims its vendor
+ * (class 0xFF) interface and moves bulk transfers. */
+#include <stdio.h>
+#include <string.h>
+#include <libusb.h>
+#include "usb_libusb.h"
+
+#define TIMEOUT_MS 3000
+
+struct usb_state {
+    libusb_context *usb;
+    libusb_device_handle *h;
+    int iface;
+    unsigned char ep_out, ep_in;
+};
+
+static struct usb_state st;
+
+/* The vendor interface's bulk endpoints; -1 if the device has none. */
+static int find_iface(libusb_device *dev, struct usb_state *s)
+{
+    struct libusb_config_descriptor *cfg;
+    if (libusb_get_active_config_descriptor(dev, &cfg) != 0) return -1;
+    int found = -1;
+    for (int i = 0; i < cfg->bNumInterfaces && found < 0; i++) {
+        const struct libusb_interface_descriptor *d = &cfg->interface[i].altsetting[0];
+        if (d->bInterfaceClass != 0xFF || d->bNumEndpoints != 2) continue;
+        s->ep_out = s->ep_in = 0;
+        for (int e = 0; e < 2; e++) {
+            const struct libusb_endpoint_descriptor *ep = &d->endpoint[e];
+            if ((ep->bmAttributes & 3) != LIBUSB_TRANSFER_TYPE_BULK) continue;
+            if (ep->bEndpointAddress & 0x80) s->ep_in = ep->bEndpointAddress;
+            else s->ep_out = ep->bEndpointAddress;
+        }
+        if (s->ep_in && s->ep_out) {
+            s->iface = d->bInterfaceNumber;
+            found = 0;
+        }
+    }
+    libusb_free_config_descriptor(cfg);
+    return found;
+}
+
+static int u_open(void *ctx, char *detail, size_t dlen)
+{
+    struct usb_state *s = ctx;
+    int rc = libusb_init(&s->usb);
+    if (rc != 0) {
+        snprintf(detail, dlen, "no USB access here (libusb: %s)", libusb_strerror(rc));
+        s->usb = NULL;
+        return PB_OPEN_NODEV;
+    }
+    libusb_device **list;
+    ssize_t n = libusb_get_device_list(s->usb, &list);
+    if (n < 0) {
+        snprintf(detail, dlen, "libusb: %s", libusb_strerror((int)n));
+        return PB_OPEN_ERROR;
+    }
+    libusb_device *boot = NULL;
+    int other_pid = -1;
+    for (ssize_t i = 0; i < n; i++) {
+        struct libusb_device_descriptor d;
+        if (libusb_get_device_descriptor(list[i], &d) != 0 || d.idVendor != PB_VID) continue;
+        if (d.idProduct == PB_PID_RP2040_BOOT) {
+            boot = list[i];
+            break;
+        }
+        other_pid = d.idProduct;
+    }
+    int res = PB_OPEN_OK;
+    if (!boot) {
+        if (other_pid >= 0) {
+            snprintf(detail, dlen, "USB %04x:%04x is a Raspberry Pi device running a program, not the "
+                     "RP2040 boot ROM (%04x:%04x): hold BOOTSEL and reset it", PB_VID, (unsigned)other_pid,
+                     PB_VID, PB_PID_RP2040_BOOT);
+            res = PB_OPEN_WRONG;
+        } else {
+            res = PB_OPEN_NODEV;
+        }
+    } else if (find_iface(boot, s) != 0) {
+        snprintf(detail, dlen, "USB %04x:%04x has no PICOBOOT interface (vendor class, 2 bulk endpoints)",
+                 PB_VID, PB_PID_RP2040_BOOT);
+        res = PB_OPEN_WRONG;
+    } else {
+        rc = libusb_open(boot, &s->h);
+        if (rc == LIBUSB_ERROR_ACCESS) res = PB_OPEN_ACCESS;
+        else if (rc != 0) {
+            snprintf(detail, dlen, "libusb_open: %s", libusb_strerror(rc));
+            res = PB_OPEN_ERROR;
+        } else if ((rc = libusb_claim_interface(s->h, s->iface)) != 0) {
+            snprintf(detail, dlen, "claiming the PICOBOOT interface: %s", libusb_strerror(rc));
+            res = rc == LIBUSB_ERROR_ACCESS ? PB_OPEN_ACCESS : PB_OPEN_ERROR;
+        }
+    }
+    libusb_free_device_list(list, 1);
+    return res;
+}
+
+static int bulk(struct usb_state *s, unsigned char ep, uint8_t *data, size_t n)
+{
+    int done = 0;
+    uint8_t dummy;
+    if (!s->h) return -1;
+    int rc = libusb_bulk_transfer(s->h, ep, n ? data : &dummy, (int)n, &done, TIMEOUT_MS);
+    return rc == 0 ? done : -1;
+}
+
+static int u_out(void *ctx, const uint8_t *data, size_t n)
+{
+    struct usb_state *s = ctx;
+    return bulk(s, s->ep_out, (uint8_t *)(uintptr_t)data, n);
+}
+
+static int u_in(void *ctx, uint8_t *data, size_t n)
+{
+    struct usb_state *s = ctx;
+    return bulk(s, s->ep_in, data, n);
+}
+
+static void u_close(void *ctx)
+{
+    struct usb_state *s = ctx;
+    if (s->h) {
+        libusb_release_interface(s->h, s->iface);
+        libusb_close(s->h);
+        s->h = NULL;
+    }
+    if (s->usb) libusb_exit(s->usb);
+    s->usb = NULL;
+}
+
+void usb_libusb_transport(struct pb_transport *t)
+{
+    memset(&st, 0, sizeof st);
+    t->ctx = &st;
+    t->open = u_open;
+    t->bulk_out = u_out;
+    t->bulk_in = u_in;
+    t->close = u_close;
+}

@@ -34,3 +34,6 @@ num-report: $(foreach m,$(NUM_TEST_MODES),$(BUILD)/host/test_num_$(m))
 	@echo "| mode | operation | domain | samples | max err | mean err | bound |"
 	@echo "|---|---|---|---|---|---|---|"
 	$(Q)for m in $(NUM_TEST_MODES); do $(BUILD)/host/test_num_$$m --report || exit 1; done
+
+# Soft-float check of the cross-compiled fixed-point core (all firmware/core/*.c).
+TESTS += tests/test_softfloat.sh:$(BUILD)

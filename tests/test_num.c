@@ -272,6 +272,37 @@ static void acc_chan(void)
     if (!report) check(bad == 0, "num_chan_levels_exhaustive", "%ld mismatches", bad);
 }
 
+/* The previous floating-point formula, kept as the reference of num_from_double. */
+static num ref_from_double(double d)
+{
+    double s = d * (double)NUM_ONE_RAW;
+    if (s != s) return 0;
+    if (s >= 2147483647.0) return NUM_MAX;
+    if (s <= -2147483647.0) return NUM_MIN;
+    return (num)(s >= 0 ? s + 0.5 : s - 0.5);
+}
+
+static void conversions(void)
+{
+    long bad = 0, bad2 = 0;
+    const double sp[] = { 0.0, -0.0, 1e-300, 5e-324, 0.5 / NUM_ONE_RAW, 1.5 / NUM_ONE_RAW, -0.5 / NUM_ONE_RAW,
+                          2147483647.0 / NUM_ONE_RAW, 2147483646.5 / NUM_ONE_RAW, 2147483646.49 / NUM_ONE_RAW,
+                          1e300, -1e300, HUGE_VAL, -HUGE_VAL, NAN };
+    for (unsigned i = 0; i < sizeof sp / sizeof sp[0]; i++)
+        if (num_from_double(sp[i]) != ref_from_double(sp[i])) bad++;
+    for (long i = 0; i < 2000000; i++) {
+        double d = ldexp((double)(rng() >> 11), (int)(rng() % 80) - 90 - NUM_FRAC);
+        if (rng() & 1) d = -d;
+        if (i & 1) d = ((double)(int32_t)(uint32_t)rng() + 0.5) / NUM_ONE_RAW; /* ties */
+        if (num_from_double(d) != ref_from_double(d)) bad++;
+        num a = (num)(uint32_t)rng();
+        if (a != INT32_MIN && num_to_double(a) != (double)a / NUM_ONE_RAW) bad2++;
+    }
+    check(bad == 0, "num_from_double_integer_only_matches_formula", "%ld mismatches", bad);
+    check(bad2 == 0 && num_to_double(INT32_MIN) == -2147483648.0 / NUM_ONE_RAW, "num_to_double_exact",
+          "%ld mismatches", bad2);
+}
+
 static void edges_fixed(void)
 {
     num_saturations = 0;
@@ -420,7 +451,10 @@ int main(int argc, char **argv)
     report = argc > 1 && strcmp(argv[1], "--report") == 0;
     if (!report) edges_all();
 #if NUM_MODE == NUM_MODE_FIXED
-    if (!report) edges_fixed();
+    if (!report) {
+        edges_fixed();
+        conversions();
+    }
     acc_mul();
     acc_div();
     acc_recip();

@@ -152,16 +152,43 @@ num num_from_ratio(int32_t p, int32_t q)
     return div_round_signed((uint64_t)uabs32(p) << NUM_FRAC, uabs32(q), (p < 0) != (q < 0));
 }
 
+/* The two conversions from and to double work on the IEEE-754 binary64
+ * bits with integer operations only, so the fixed build of the core emits no
+ * floating-point code even though these host-side helpers are linked in. */
+union num_dbits { double d; uint64_t u; };
+
 num num_from_double(double d)
 {
-    double s = d * (double)NUM_ONE_RAW;
-    if (s != s) return 0;
-    if (s >= 2147483647.0) { SAT_HIT(); return NUM_MAX; }
-    if (s <= -2147483647.0) { SAT_HIT(); return NUM_MIN; }
-    return (num)(s >= 0 ? s + 0.5 : s - 0.5);
+    /* raw = d * 2^F rounded half away from zero; |d * 2^F| >= INT32_MAX
+     * saturates (and counts); NaN gives 0. */
+    union num_dbits b;
+    b.d = d;
+    int neg = (int)(b.u >> 63);
+    int e = (int)((b.u >> 52) & 0x7FF);
+    uint64_t m = b.u & (((uint64_t)1 << 52) - 1);
+    if (e == 0x7FF && m) return 0;                   /* NaN */
+    if (e == 0) e = 1; else m |= (uint64_t)1 << 52;  /* subnormal / normal */
+    int k = 1075 - NUM_FRAC - e;                      /* |raw| = m / 2^k */
+    if (m == 0 || k >= 64) return 0;
+    if (k <= 0) { SAT_HIT(); return neg ? NUM_MIN : NUM_MAX; } /* >= 2^52 */
+    uint64_t q = m >> k;
+    if (q >= (uint64_t)INT32_MAX) { SAT_HIT(); return neg ? NUM_MIN : NUM_MAX; }
+    q += (m >> (k - 1)) & 1;
+    return sat_signed(q, neg);
 }
 
-double num_to_double(num a) { return (double)a / (double)NUM_ONE_RAW; }
+double num_to_double(num a)
+{
+    /* Exact: a 31-bit magnitude fits the 53-bit significand. */
+    union num_dbits b;
+    uint32_t u = uabs32(a);
+    if (u == 0) return 0.0;
+    int lz = num_clz32(u);
+    uint64_t mant = ((uint64_t)u << (lz + 21)) & (((uint64_t)1 << 52) - 1);
+    uint64_t exp = (uint64_t)(1023 + (31 - lz) - NUM_FRAC);
+    b.u = (uint64_t)(a < 0) << 63 | exp << 52 | mant;
+    return b.d;
+}
 
 /* ---- arithmetic ------------------------------------------------------- */
 

@@ -1,0 +1,49 @@
+#!/bin/sh
+# The fixed-point build of the renderer core links no floating-point code.
+#
+# Cross-compiles every firmware/core/*.c for the Cortex-M0+ (ARMv6-M, no FPU)
+# with NUM_MODE=1 and inspects the undefined symbols of each object: any
+# soft-float routine (__aeabi_f*, __aeabi_d*, conversions to float/double,
+# libgcc's *sf*/*df* helpers) or libm function fails the test. The numeric
+# layer's own objects (num.c, vec.c) must also avoid the software divide routines (the M0+
+# has no divide instruction). Usage: test_softfloat.sh BUILD_DIR
+set -u
+build=${1:-build}/m0plus-softfloat-check
+cc=arm-none-eabi-gcc
+nm=arm-none-eabi-nm
+if ! command -v $cc >/dev/null 2>&1; then
+  echo "FAIL core_fixed_no_softfloat: $cc not found (make deps-firmware)"
+  exit 1
+fi
+mkdir -p "$build"
+flags="-std=c11 -O2 -mcpu=cortex-m0plus -mthumb -ffunction-sections -DNUM_MODE=1 -I. -Ifirmware/core -Ihal -Itools/scene"
+softfloat='^(__aeabi_[fd].*|__aeabi_[a-z0-9]*2[fd]|__(add|sub|mul|div|neg|cmp|eq|ne|lt|le|gt|ge|unord)[sd]f[23]|__(fix|fixuns|float|floatun|extend|trunc)[a-z]*[sd]f[a-z0-9]*)$'
+libm='^(sqrt|sqrtf|pow|powf|sin|sinf|cos|cosf|tan|tanf|atan|atanf|atan2|atan2f|exp|expf|log|logf|floor|floorf|ceil|ceilf|fabs|fabsf|fmod|fmodf|ldexp|ldexpf|rint|rintf|lrint|round|roundf|trunc|truncf|hypot|hypotf)$'
+divide='^__aeabi_(u?idiv|u?idivmod|u?ldivmod)$'
+bad=0; nobj=0; errs=""
+for src in firmware/core/*.c; do
+  obj="$build/$(basename "$src" .c).o"
+  if ! $cc $flags -c "$src" -o "$obj" 2>"$obj.err"; then
+    echo "FAIL core_fixed_cross_compiles: $src does not build for cortex-m0plus:"
+    head -n 5 "$obj.err"
+    bad=1
+    continue
+  fi
+  nobj=$((nobj + 1))
+  syms=$($nm -u "$obj" | awk '{print $NF}')
+  found=$(printf '%s\n' "$syms" | grep -E "$softfloat|$libm" | tr '\n' ' ')
+  if [ -n "$found" ]; then errs="$errs $src: $found;"; fi
+  case $(basename "$src") in
+    num.c|vec.c)
+      d=$(printf '%s\n' "$syms" | grep -E "$divide" | tr '\n' ' ')
+      if [ -n "$d" ]; then echo "FAIL num_no_software_divide: $src references $d"; bad=1; fi ;;
+  esac
+done
+if [ -n "$errs" ]; then
+  echo "FAIL core_fixed_no_softfloat: soft-float/libm symbols referenced:$errs"
+  bad=1
+else
+  echo "PASS core_fixed_no_softfloat ($nobj objects)"
+fi
+[ $bad -eq 0 ] && echo "PASS num_no_software_divide"
+exit $bad

@@ -1,5 +1,6 @@
 /* render.c — dispatch to the scene's renderer, and the shared pixel write. */
 #include "render.h"
+#include "raytracer.h"
 #include "raster.h"
 
 void render_put(struct render_target *t, int x, int y, rgb c)
@@ -30,7 +31,8 @@ static int placeholder_strip(struct render_ctx *ctx, struct render_target *t,
 
 size_t render_work_size(const struct scene *s, uint16_t width, uint16_t height, uint16_t strip_rows)
 {
-    (void)s; (void)width; (void)height; (void)strip_rows;
+    (void)strip_rows;
+    if (s->kind == SCENE_RAYTRACE) return rt_work_size(s, width, height);
     if (s->kind == SCENE_RASTER) return raster_work_size(s, width, height, strip_rows);
     return 0;
 }
@@ -47,6 +49,7 @@ int render_init(struct render_ctx *ctx, const struct scene *s, uint16_t width, u
     ctx->frame = 0;
     ctx->work = work;
     ctx->work_size = work_size;
+    if (s->kind == SCENE_RAYTRACE) return rt_init(ctx);
     if (s->kind == SCENE_RASTER) return raster_init(ctx);
     return 0;
 }
@@ -54,6 +57,7 @@ int render_init(struct render_ctx *ctx, const struct scene *s, uint16_t width, u
 int render_begin_frame(struct render_ctx *ctx, uint16_t frame)
 {
     ctx->frame = frame;
+    if (ctx->scene->kind == SCENE_RAYTRACE) return rt_begin_frame(ctx, frame);
     if (ctx->scene->kind == SCENE_RASTER) return raster_begin_frame(ctx, frame);
     return 0;
 }
@@ -61,6 +65,7 @@ int render_begin_frame(struct render_ctx *ctx, uint16_t frame)
 int render_strip(struct render_ctx *ctx, struct render_target *t, struct render_stats *st)
 {
     if (t->y0 >= t->y1 || t->y1 > ctx->height || t->width != ctx->width) return -1;
+    if (ctx->scene->kind == SCENE_RAYTRACE) return rt_render_strip(ctx, t, st);
     if (ctx->scene->kind == SCENE_RASTER) return raster_strip(ctx, t, st);
     return placeholder_strip(ctx, t, st);
 }

@@ -1,0 +1,335 @@
+/* raytracer.c — the main loop (chapter 2), TraceRay with reflections
+ * (chapter 4), the camera (chapter 5), and chapter 5's transparency,
+ * supersampling and subsampling; rendering by strips of rows. */
+#include "raytracer.h"
+#include "num_rt.h"
+
+#define ALIGN8(n) (((n) + 7u) & ~(size_t)7u)
+/* Adaptive supersampling refines a pixel whose centre sample differs from
+ * its left or upper neighbour in object or by more than this per channel. */
+#define RT_ADAPTIVE_DIFF NUM_C(12.0)
+
+struct layout { size_t state, oc, items, unb, bvh, bvh_items, occ, row_c, row_item, total; };
+
+static struct layout layout_of(const struct scene *s, uint16_t width)
+{
+    struct layout l;
+    size_t nitems = (size_t)s->nobjects + s->ncsg;
+    size_t off = 0;
+    l.state = off; off += ALIGN8(sizeof(struct rt_state));
+    l.oc = off; off += ALIGN8(sizeof(struct rt_obj_cache) * (s->nobjects ? s->nobjects : 1));
+    l.items = off; off += ALIGN8(sizeof(int16_t) * (nitems ? nitems : 1));
+    l.unb = off; off += ALIGN8(sizeof(int16_t) * (nitems ? nitems : 1));
+    l.bvh = off; off += ALIGN8(sizeof(struct rt_bvh_node) * (2 * nitems + 1));
+    l.bvh_items = off; off += ALIGN8(sizeof(int16_t) * (nitems ? nitems : 1));
+    l.occ = off; off += ALIGN8(sizeof(int16_t) * (s->nlights ? s->nlights : 1));
+    l.row_c = off; off += ALIGN8(sizeof(rgb) * width);
+    l.row_item = off; off += ALIGN8(sizeof(int16_t) * width);
+    l.total = off;
+    return l;
+}
+
+size_t rt_work_size(const struct scene *s, uint16_t width, uint16_t height)
+{
+    (void)height;
+    return layout_of(s, width).total;
+}
+
+void rt_set_shadow_probe(struct render_ctx *ctx, uint8_t *probe)
+{
+    rt_state_of(ctx)->shadow_probe = probe;
+}
+
+int rt_init(struct render_ctx *ctx)
+{
+    const struct scene *s = ctx->scene;
+    if (((uintptr_t)ctx->work & 7u) != 0) return -1;
+    if ((size_t)s->nobjects + s->ncsg > 16000) return -1;
+    for (uint16_t k = 0; k < s->ncsg; k++)
+        if (s->csg[k].a >= s->nobjects || s->csg[k].b >= s->nobjects ||
+            s->objects[s->csg[k].a].shape != RT_SPHERE || s->objects[s->csg[k].b].shape != RT_SPHERE)
+            return -1;
+    struct layout l = layout_of(s, ctx->width);
+    unsigned char *w = ctx->work;
+    struct rt_state *rt = (struct rt_state *)(w + l.state);
+    *rt = (struct rt_state){ 0 };
+    rt->s = s;
+    rt->w = ctx->width;
+    rt->h = ctx->height;
+    rt->oc = (struct rt_obj_cache *)(w + l.oc);
+    rt->items = (int16_t *)(w + l.items);
+    rt->unbounded = (int16_t *)(w + l.unb);
+    rt->bvh = (struct rt_bvh_node *)(w + l.bvh);
+    rt->bvh_items = (int16_t *)(w + l.bvh_items);
+    rt->occluder = (int16_t *)(w + l.occ);
+    rt->row_c = (rgb *)(w + l.row_c);
+    rt->row_item = (int16_t *)(w + l.row_item);
+    const struct rt_options *o = &s->rt;
+    rt->book = o->formulation == 1 || (o->formulation == 0 && num_rt_reference_mode());
+    rt->depth = o->recursion_depth > RT_MAX_DEPTH ? RT_MAX_DEPTH : o->recursion_depth;
+    rt->cached = !o->no_frame_cache;
+    rt->skip_item = -1;
+    rt->ss = o->supersample < 1 ? 1 : (o->supersample > RT_MAX_SS ? RT_MAX_SS : o->supersample);
+    rt->ss_adaptive = o->adaptive_ss;
+    rt->subsample = o->subsample < 1 ? 1 : o->subsample;
+    /* drawn items in the book's order: objects, then CSG results */
+    for (uint16_t i = 0; i < s->nobjects; i++)
+        if (!s->objects[i].csg_only) rt->items[rt->nitems++] = (int16_t)i;
+    for (uint16_t k = 0; k < s->ncsg; k++) rt->items[rt->nitems++] = (int16_t)(s->nobjects + k);
+    for (uint16_t k = 0; k < s->nlights; k++) rt->occluder[k] = -1;
+    /* viewport: height kept, width follows the render size (render.h) */
+    rt->wn = num_from_int(ctx->width);
+    rt->hn = num_from_int(ctx->height);
+    rt->vh = s->viewport_h;
+    rt->vw = num_div(num_mul(s->viewport_h, rt->wn), rt->hn);
+    rt->d = s->projection_d;
+    rt->sx = num_div(rt->vw, rt->wn);
+    rt->sy = num_div(rt->vh, rt->hn);
+    rt->cam_pos = s->camera.position;
+    rt->cam_rot = s->camera.rotation;
+    rt_frame_constants(rt);
+    if (o->bvh) rt_build_bvh(rt);
+    return 0;
+}
+
+static int is_identity(const mat3 *m)
+{
+    for (int i = 0; i < 3; i++)
+        for (int j = 0; j < 3; j++)
+            if (m->m[i][j] != (i == j ? NUM_ONE : NUM_ZERO)) return 0;
+    return 1;
+}
+
+int rt_begin_frame(struct render_ctx *ctx, uint16_t frame)
+{
+    struct rt_state *rt = rt_state_of(ctx);
+    const struct scene *s = rt->s;
+    /* animation: the camera moves and turns about y by per-frame increments */
+    num f = num_from_int(frame);
+    rt->cam_pos = v3_add(s->camera.position, v3_scale(s->camera_anim.move_per_frame, f));
+    rt->cam_rot = s->camera.rotation;
+    if (frame && s->camera_anim.rot_y_per_frame != 0) {
+        mat3 ry = m3_rot_y_deg(num_mul(s->camera_anim.rot_y_per_frame, f));
+        rt->cam_rot = m3_mul(&ry, &s->camera.rotation);
+    }
+    rt->cam_rotated = !is_identity(&rt->cam_rot);
+    for (uint16_t k = 0; k < s->nlights; k++) rt->occluder[k] = -1;
+    rt->last_row = -2;
+    rt_frame_constants(rt);
+    return 0;
+}
+
+/* Notes on a primary sample: what it hit and which lights it found shadowed. */
+struct rt_prim {
+    int16_t item;
+    uint8_t shadow;
+};
+
+static rgb background(const struct rt_state *rt) { return rt->s->background; }
+
+static const struct rt_material *item_material(const struct rt_state *rt, int16_t item)
+{
+    const struct scene *s = rt->s;
+    if (item >= (int16_t)s->nobjects) return &s->objects[s->csg[item - s->nobjects].a].mat;
+    return &s->objects[item].mat;
+}
+
+/* ReflectRay: R = N*(2*(V.N)) - V. */
+static vec3 reflect_ray(vec3 v, vec3 n)
+{
+    return v3_sub(v3_scale(n, num_mul(NUM_C(2.0), v3_dot(v, n))), v);
+}
+
+int rt_refract(vec3 d, vec3 n, num ior, vec3 *out)
+{
+    vec3 dn = v3_normalize(d);
+    num cosi = num_neg(v3_dot(n, dn));
+    num eta;
+    if (cosi < 0) {            /* leaving the object */
+        n = v3_neg(n);
+        cosi = num_neg(cosi);
+        eta = ior;
+    } else {
+        eta = num_div(NUM_ONE, ior);
+    }
+    num k = num_sub(NUM_ONE, num_mul(num_mul(eta, eta), num_sub(NUM_ONE, num_mul(cosi, cosi))));
+    if (k < 0) return 0;
+    *out = v3_add(v3_scale(dn, eta), v3_scale(n, num_sub(num_mul(eta, cosi), num_sqrt(k))));
+    return 1;
+}
+
+/* TraceRay: colour seen along the ray with t in (t_min, t_max); `depth`
+ * more reflection/refraction bounces allowed (bounded recursion). */
+static rgb trace_ray(struct rt_state *rt, const struct rt_ray *ray, num t_min, num t_max, int depth,
+                     struct rt_prim *prim)
+{
+    const struct scene *s = rt->s;
+    struct rt_hit hit;
+    rt->n.rays++;
+    if (!closest_intersection(rt, ray, t_min, t_max, &hit, 0)) {
+        if (prim) prim->item = -1;
+        return background(rt);
+    }
+    if (prim) prim->item = hit.item;
+    const struct rt_material *m = item_material(rt, hit.item);
+    vec3 p = v3_add(ray->o, v3_scale(ray->d, hit.t));
+    vec3 n = rt_hit_normal(rt, &hit, p);
+    vec3 v = v3_neg(ray->d);
+    rgb local;
+    if (s->rt.unlit) {
+        local = m->color;
+    } else {
+        num i = compute_lighting(rt, p, n, v, m->specular, hit.surf, prim ? &prim->shadow : NULL);
+        local = rgb_scale(m->color, i);
+    }
+    num r = m->reflective;
+    num tr = m->transparency;
+    if (depth <= 0 || (r <= 0 && tr <= 0)) return local;
+
+    rgb out = local;
+    if (r > 0) {
+        struct rt_ray rr = rt_make_ray(p, reflect_ray(v, n), hit.surf, 0);
+        rgb reflected = trace_ray(rt, &rr, s->rt.epsilon, NUM_MAX, depth - 1, NULL);
+        out = rgb_add(rgb_scale(local, num_sub(NUM_ONE, r)), rgb_scale(reflected, r));
+    }
+    if (tr > 0) {
+        /* Transparency: what the refracted ray sees, by Snell's law; on total
+         * internal reflection the ray reflects instead. */
+        vec3 dir;
+        if (!rt_refract(ray->d, n, m->refraction > 0 ? m->refraction : NUM_ONE, &dir))
+            dir = reflect_ray(v, n);
+        struct rt_ray tr_ray = rt_make_ray(p, dir, hit.surf, 0);
+        rgb seen = trace_ray(rt, &tr_ray, s->rt.epsilon, NUM_MAX, depth - 1, NULL);
+        out = rgb_add(rgb_scale(out, num_sub(NUM_ONE, tr)), rgb_scale(seen, tr));
+    }
+    return out;
+}
+
+/* CanvasToViewport for canvas point (x, y) (num, sub-pixel allowed), then
+ * the camera rotation. */
+static vec3 canvas_to_viewport(const struct rt_state *rt, num x, num y)
+{
+    /* (x*Vw)/W rather than x*(Vw/W): Vw/W = 1/600 in Q15.16 is 0.02% off,
+     * a whole pixel at the edge of a 600-pixel canvas */
+    vec3 d = v3(num_div(num_mul(x, rt->vw), rt->wn), num_div(num_mul(y, rt->vh), rt->hn), rt->d);
+    if (!rt->cam_rotated) return d;
+    /* D'[i] = ((0 + D.x*M[i][0]) + D.y*M[i][1]) + D.z*M[i][2], the demo's order */
+    vec3 r;
+    const mat3 *m = &rt->cam_rot;
+    r.x = num_add(num_add(num_add(NUM_ZERO, num_mul(d.x, m->m[0][0])), num_mul(d.y, m->m[0][1])), num_mul(d.z, m->m[0][2]));
+    r.y = num_add(num_add(num_add(NUM_ZERO, num_mul(d.x, m->m[1][0])), num_mul(d.y, m->m[1][1])), num_mul(d.z, m->m[1][2]));
+    r.z = num_add(num_add(num_add(NUM_ZERO, num_mul(d.x, m->m[2][0])), num_mul(d.y, m->m[2][1])), num_mul(d.z, m->m[2][2]));
+    return r;
+}
+
+static rgb primary(struct rt_state *rt, num x, num y, struct rt_prim *prim)
+{
+    struct rt_ray ray = rt_make_ray(rt->cam_pos, canvas_to_viewport(rt, x, y), -1, 1);
+    rt->n.primary_rays++;
+    return trace_ray(rt, &ray, rt->s->rt.t_min_primary, NUM_MAX, rt->depth, prim);
+}
+
+/* n x n rays on a regular grid inside the pixel, averaged. */
+static rgb supersample(struct rt_state *rt, num x, num y, int n)
+{
+    rgb sum = rgb_make(NUM_ZERO, NUM_ZERO, NUM_ZERO);
+    for (int j = 0; j < n; j++)
+        for (int i = 0; i < n; i++) {
+            num ox = num_from_ratio(2 * i + 1 - n, 2 * n);
+            num oy = num_from_ratio(2 * j + 1 - n, 2 * n);
+            sum = rgb_add(sum, primary(rt, num_add(x, ox), num_add(y, oy), NULL));
+        }
+    return rgb_scale(sum, num_from_ratio(1, n * n));
+}
+
+static int colours_differ(rgb a, rgb b)
+{
+    return num_abs(num_sub(a.r, b.r)) > RT_ADAPTIVE_DIFF || num_abs(num_sub(a.g, b.g)) > RT_ADAPTIVE_DIFF ||
+           num_abs(num_sub(a.b, b.b)) > RT_ADAPTIVE_DIFF;
+}
+
+/* One pixel: plain, fixed supersampling, or adaptive (refine edges only).
+ * The centre sample's colour and object are kept in the row notes. */
+static rgb pixel(struct rt_state *rt, int col, int row, int have_left, int have_up, uint8_t *probe)
+{
+    num x = num_from_int(col - rt->w / 2);
+    num y = num_from_int(rt->h / 2 - 1 - row);
+    if (rt->ss > 1 && !rt->ss_adaptive) {
+        rt->row_item[col] = -2;
+        return supersample(rt, x, y, rt->ss);
+    }
+    struct rt_prim pr = { -1, 0 };
+    rgb c = primary(rt, x, y, &pr);
+    if (probe) *probe = pr.item < 0 ? 0x80 : pr.shadow;
+    if (rt->ss_adaptive) {
+        int n = rt->ss > 1 ? rt->ss : 2;
+        int edge = 0;
+        if (have_left && col > 0 && (rt->row_item[col - 1] != pr.item || colours_differ(rt->row_c[col - 1], c))) edge = 1;
+        if (have_up && (rt->row_item[col] != pr.item || colours_differ(rt->row_c[col], c))) edge = 1;
+        /* the row notes hold the centre samples: the left one is already this
+         * row's, the one at col still the row above's until written here */
+        rt->row_item[col] = pr.item;
+        rt->row_c[col] = c;
+        if (edge) return supersample(rt, x, y, n);
+        return c;
+    }
+    rt->row_item[col] = pr.item;
+    rt->row_c[col] = c;
+    return c;
+}
+
+/* Subsampling (chapter 5): trace every k-th column and the last; a pixel in
+ * between whose two traced neighbours hit the same object takes their
+ * linear interpolation, otherwise it is traced too. */
+static void subsampled_row(struct rt_state *rt, struct render_target *t, int row, uint8_t *probe)
+{
+    int w = rt->w, k = rt->subsample;
+    int col = 0;
+    for (;;) {
+        rt->row_c[col] = pixel(rt, col, row, 0, 0, probe ? probe + col : NULL);
+        if (col == w - 1) break;
+        col = col + k < w ? col + k : w - 1;
+    }
+    for (int a = 0; a < w - 1;) {
+        int b = a + k < w ? a + k : w - 1;
+        int same = rt->row_item[a] == rt->row_item[b] && rt->row_item[a] != -2;
+        for (int x = a + 1; x < b; x++) {
+            if (same) {
+                num wgt = num_from_ratio(x - a, b - a);
+                rgb c = rgb_add(rgb_scale(rt->row_c[a], num_sub(NUM_ONE, wgt)), rgb_scale(rt->row_c[b], wgt));
+                render_put(t, x, row, c);
+                if (probe) probe[x] = 0xFF;   /* not traced */
+            } else {
+                render_put(t, x, row, pixel(rt, x, row, 0, 0, probe ? probe + x : NULL));
+            }
+        }
+        render_put(t, a, row, rt->row_c[a]);
+        a = b;
+    }
+    render_put(t, w - 1, row, rt->row_c[w - 1]);
+}
+
+int rt_render_strip(struct render_ctx *ctx, struct render_target *t, struct render_stats *st)
+{
+    struct rt_state *rt = rt_state_of(ctx);
+    uint32_t rays0 = rt->n.rays;
+    for (int row = t->y0; row < t->y1; row++) {
+        uint8_t *probe = rt->shadow_probe ? rt->shadow_probe + (size_t)row * rt->w : NULL;
+        if (rt->subsample > 1 && rt->w > 1) {
+            subsampled_row(rt, t, row, probe);
+            rt->last_row = -2;
+            continue;
+        }
+        /* adaptive supersampling compares with the row above when that was
+         * the last row rendered (also across strips) */
+        int have_up = row == rt->last_row + 1;
+        for (int col = 0; col < rt->w; col++)
+            render_put(t, col, row, pixel(rt, col, row, 1, have_up, probe ? probe + col : NULL));
+        rt->last_row = row;
+    }
+    if (st) {
+        st->rays += rt->n.rays - rays0;
+        st->pixels_written += (uint32_t)(t->y1 - t->y0) * t->width;
+    }
+    return 0;
+}

@@ -1,0 +1,167 @@
+/* raytracer.h — part I of the book: the ray tracer (chapters 2–5).
+ *
+ * Conventions (the book's): world +x right, +y up, +z forward; the camera at
+ * scene->camera.position looks along +z turned by camera.rotation (applied to
+ * primary directions only). The viewport keeps the scene's height; its width
+ * follows the render size (Vw = Vh*W/H, see render.h). Pixel (column c, row r)
+ * is canvas (x, y) = (c - W/2, H/2 - 1 - r), and its primary ray is
+ *   D = canvas_to_viewport(x, y) = ((x*Vw)/W, (y*Vh)/H, d), rotated by the camera,
+ * traced from the camera with t in (t_min_primary, +inf). As in the book, D is
+ * not normalised: t is in units of |D|, so t = 1 is the projection plane and a
+ * point light sits at t = 1 on its (unnormalised) shadow ray.
+ *
+ * Numbers (num.h). In fixed point the scene must keep every coordinate and
+ * every hit distance along a ray (t*|D|) under 16000 in magnitude; sphere
+ * radii up to 16000 are fine (radius 5000 is the book's ground).
+ *
+ * Formulations (rt_options.formulation, num_rt.h):
+ * - book: IntersectRaySphere's quadratic k1 t^2 + k2 t + k3 with the demos'
+ *   operation order; normals N = (P - C) * (1/|P - C|); shadow and reflection
+ *   rays start at t = epsilon. The double build reproduces the demos exactly.
+ * - robust (fixed/float default): the same roots from a = D.D, b = -CO.D,
+ *   c = CO.CO - r^2 in wide intermediates (wnum), Δ/4 = b^2 - a c, and the
+ *   stable pair q = b + sign(b) sqrt(Δ/4), t = q/a and t = c/q (no
+ *   cancellation for the near root); N = (P - C)/r. A ray leaving a surface
+ *   carries that object: for a sphere its roots are then known exactly
+ *   ({0, 2b/a}), for a plane or triangle there is none, so there is no
+ *   self-shadowing ("acne") at any scene scale; epsilon only applies to other
+ *   objects. Range argument in raytracer.md.
+ *
+ * Memory: all state lives in the caller's work memory (rt_work_size bytes,
+ * 8-byte aligned); nothing is allocated and nothing is static. Stack: bounded
+ * recursion, at most RT_MAX_DEPTH levels of trace_ray (figures in raytracer.md).
+ * Not thread-safe per state; two states may render different strips of the
+ * same scene.
+ */
+#ifndef RAYTRACER_H
+#define RAYTRACER_H
+
+#include <stddef.h>
+#include <stdint.h>
+#include "render.h"
+
+/* Deepest reflection/refraction recursion honoured (rt_options.recursion_depth
+ * is clamped to it; the book's control allows 0..5). */
+#define RT_MAX_DEPTH 5
+/* Rays per pixel side for supersampling (4 -> 16 rays). */
+#define RT_MAX_SS 4
+
+/* Work memory the ray tracer needs (scene-dependent tables + one row of
+ * per-pixel notes for subsampling/adaptive supersampling). */
+size_t rt_work_size(const struct scene *s, uint16_t width, uint16_t height);
+/* Builds the state in ctx->work (tables, bounding-sphere hierarchy). */
+int rt_init(struct render_ctx *ctx);
+/* Per-frame constants: camera (with animation), per-object constants. */
+int rt_begin_frame(struct render_ctx *ctx, uint16_t frame);
+/* Rows [t->y0, t->y1) of the current frame. */
+int rt_render_strip(struct render_ctx *ctx, struct render_target *t, struct render_stats *st);
+
+/* ---- internals shared by raytracer.c, rt_intersect.c, rt_lighting.c ---- */
+
+/* A ray O + t*D; `origin` is the object whose surface O lies on (-1: none). */
+struct rt_ray {
+    vec3 o, d;
+    wnum a;               /* D.D, wide (computed once per ray; the book's k1) */
+    vec3 ds;              /* D / 2^k with ds.ds = as in [0.25, 4) (robust tests) */
+    wnum as;
+    num tscale;           /* 2^-k: t = t' * tscale for a root t' along ds */
+    int16_t origin;
+    uint8_t from_camera;  /* O is the camera: per-frame sphere constants apply */
+};
+
+/* What closest_intersection found. */
+struct rt_hit {
+    num t;
+    int16_t item;         /* drawn item: object index, or nobjects + CSG index */
+    int16_t surf;         /* object whose surface was hit (a CSG operand for CSG) */
+    uint8_t flip;         /* 1: the normal is the surface's, negated */
+};
+
+/* Per-object constants, recomputed per frame. */
+struct rt_obj_cache {
+    wnum r2;              /* radius^2 */
+    vec3 co_cam;          /* camera - centre */
+    num k3_cam;           /* book: CO.CO - r*r for rays from the camera */
+    wnum c_cam;           /* robust: the same, wide */
+    vec3 e1, e2, n;       /* triangle: p1 - p0, p2 - p0, unit normal */
+    vec3 bc;              /* bounding sphere of the item (BVH) */
+    num br;
+};
+
+/* Bounding-sphere hierarchy node: a leaf holds items [first, first+count). */
+struct rt_bvh_node {
+    vec3 c;
+    num r;
+    int16_t left, right;  /* children, -1 for a leaf */
+    int16_t first, count;
+};
+
+struct rt_counters {
+    uint32_t rays, primary_rays, shadow_rays;
+    uint32_t tests;       /* ray-object (or ray-bound) intersection tests */
+};
+
+struct rt_state {
+    const struct scene *s;
+    uint16_t w, h;
+    uint8_t book;         /* 1: book formulation, 0: robust */
+    uint8_t depth;        /* reflection depth of primary rays */
+    uint8_t cam_rotated;
+    uint8_t cached;       /* per-frame constants in use */
+    uint8_t ss, ss_adaptive, subsample;
+    mat3 cam_rot;
+    vec3 cam_pos;
+    num vw, vh, d;        /* viewport of this render size */
+    num sx, sy;           /* Vw/W, Vh/H (cached canvas_to_viewport scale) */
+    num wn, hn;           /* W, H as num */
+    struct rt_obj_cache *oc;   /* nobjects */
+    int16_t *items;            /* drawn items, book order */
+    uint16_t nitems;
+    int16_t *unbounded;        /* planes (not in the hierarchy) */
+    uint16_t nunbounded;
+    struct rt_bvh_node *bvh;   /* 2*nitems nodes */
+    uint16_t nbvh;
+    int16_t *bvh_items;
+    int16_t *occluder;         /* per light: last occluder (-1: none) */
+    rgb *row_c;                /* one row of colours (subsampling/adaptive) */
+    int16_t *row_item;
+    int16_t skip_item;         /* item closest_intersection skips (already tested), -1 none */
+    int32_t last_row;          /* row of the notes in row_c/row_item (-2: none) */
+    uint8_t *shadow_probe;     /* optional, w*h: shadow bits of primary hits */
+    struct rt_counters n;
+};
+
+/* The state inside a context (ctx->work). */
+static inline struct rt_state *rt_state_of(struct render_ctx *ctx) { return (struct rt_state *)ctx->work; }
+
+/* Records, for each primary hit, bit k set when light k is shadowed, 0x80 for
+ * no hit; probe is w*h bytes, row-major (tests compare shadow decisions). */
+void rt_set_shadow_probe(struct render_ctx *ctx, uint8_t *probe);
+
+/* rt_intersect.c */
+struct rt_ray rt_make_ray(vec3 o, vec3 d, int16_t origin, uint8_t from_camera);
+int intersect_ray_sphere(const struct rt_state *rt, int16_t obj, const struct rt_ray *ray,
+                         num *t1, num *t2);
+/* Closest hit with t_min < t < t_max (strict, earlier item wins ties); 0 if none.
+ * any_hit: stop at the first hit found (shadow rays). */
+int closest_intersection(struct rt_state *rt, const struct rt_ray *ray, num t_min, num t_max,
+                         struct rt_hit *hit, int any_hit);
+/* Whether `item` is hit with t_min < t < t_max. */
+int rt_item_hit(struct rt_state *rt, int16_t item, const struct rt_ray *ray, num t_min, num t_max,
+                struct rt_hit *hit);
+vec3 rt_hit_normal(const struct rt_state *rt, const struct rt_hit *hit, vec3 p);
+void rt_build_bvh(struct rt_state *rt);
+void rt_frame_constants(struct rt_state *rt);
+
+/* raytracer.c: refraction direction (unit) by Snell's law for incoming D
+ * (any length) at a surface with unit normal N and index of refraction ior
+ * (N facing the incoming ray: entering; otherwise leaving); 0 on total
+ * internal reflection. */
+int rt_refract(vec3 d, vec3 n, num ior, vec3 *out);
+
+/* rt_lighting.c: intensity at P (normal N, view V = -D) for specular exponent s.
+ * *shadow_bits gets bit k set when light k is shadowed (may be NULL). */
+num compute_lighting(struct rt_state *rt, vec3 p, vec3 n, vec3 v, num s, int16_t origin,
+                     uint8_t *shadow_bits);
+
+#endif

@@ -1,0 +1,455 @@
+/* rt_intersect.c — rays against objects: IntersectRaySphere (chapter 2),
+ * ClosestIntersection, and chapter 5's planes, triangles, CSG of spheres and
+ * the bounding-sphere hierarchy.
+ *
+ * Two formulations of the sphere test (raytracer.h): the book's, for the
+ * reference build, and a robust one for fixed point. Range argument of the
+ * robust one, in Q15.16 with wnum = int64 Q47.16 (saturating at 2^61 raw,
+ * 3.5e13 in value):
+ *   the direction is scaled by a power of two to |D'| in [0.5, 2) (t scales
+ *   back exactly by the same power), so with |CO| < 32768:
+ *   |b| = |CO.D'| < 65536, b^2 < 4.3e9; a = D'.D' < 4; |c| = |CO.CO - r^2| <
+ *   2.2e9; a*c < 8.6e9 — all far inside wnum. sqrt(b^2 - a c) <= |b|, q =
+ *   b + sign(b) sqrt(..) < 131072 stays wide; the roots q/a and c/q are
+ *   rounded once into num (saturating to +-NUM_MAX, which the strict range
+ *   tests then reject). The near root c/q has no cancellation: for the
+ *   book's ground seen from the camera c = 5001^2 - 5000^2 = 10001 exactly.
+ */
+#include "raytracer.h"
+
+#define CSG_ITEM(rt, item) ((item) - (int16_t)(rt)->s->nobjects)
+
+/* The ray, with a copy of its direction scaled by a power of two for the
+ * robust tests: D' = D / 2^k with D'.D' in [0.25, 4), and tscale = 2^-k,
+ * which turns a root t' along D' into t along D. */
+struct rt_ray rt_make_ray(vec3 o, vec3 d, int16_t origin, uint8_t from_camera)
+{
+    struct rt_ray r;
+    r.o = o;
+    r.d = d;
+    wnum a = v3_dot_wide(d, d);
+    r.a = a;
+    r.origin = origin;
+    r.from_camera = from_camera;
+    num ts = NUM_ONE;
+    int guard = 0;
+    while (a >= wnum_from_num(NUM_C(4.0)) && guard++ < 15) {
+        d = v3_scale(d, NUM_HALF);
+        ts = num_mul(ts, NUM_HALF);
+        a = v3_dot_wide(d, d);
+    }
+    guard = 0;
+    while (a < wnum_from_num(NUM_C(0.25)) && a > 0 && guard++ < 8) {
+        d = v3_scale(d, NUM_C(2.0));
+        ts = num_mul_int(ts, 2);
+        a = v3_dot_wide(d, d);
+    }
+    r.ds = d;
+    r.as = a;
+    r.tscale = ts;
+    return r;
+}
+
+static num scale_t(num t, num tscale)
+{
+    return tscale == NUM_ONE ? t : num_mul(t, tscale);
+}
+
+/* IntersectRaySphere: the two roots, t1 the far one and t2 the near one
+ * (the book's order); 0 when the ray misses. */
+int intersect_ray_sphere(const struct rt_state *rt, int16_t obj, const struct rt_ray *ray,
+                         num *t1, num *t2)
+{
+    const struct rt_object *o = &rt->s->objects[obj];
+    const struct rt_obj_cache *oc = &rt->oc[obj];
+    int cam = ray->from_camera && rt->cached;
+    vec3 co = cam ? oc->co_cam : v3_sub(ray->o, o->center);
+
+    if (rt->book) {
+        /* The demos' operation order, literally. */
+        num k1 = wnum_to_num(ray->a);
+        num k2 = num_mul(NUM_C(2.0), v3_dot(co, ray->d));
+        num k3 = cam ? oc->k3_cam : num_sub(v3_dot(co, co), num_mul(o->radius, o->radius));
+        num disc = num_sub(num_mul(k2, k2), num_mul(num_mul(NUM_C(4.0), k1), k3));
+        if (disc < 0) return 0;
+        num sq = num_sqrt(disc);
+        num den = num_mul(NUM_C(2.0), k1);
+        *t1 = num_div(num_add(num_neg(k2), sq), den);
+        *t2 = num_div(num_sub(num_neg(k2), sq), den);
+        return 1;
+    }
+
+    wnum a = ray->as;
+    num ts = ray->tscale;
+    vec3 d = ray->ds;
+    wnum b = wnum_sub(wnum_from_num(NUM_ZERO), v3_dot_wide(co, d));
+    if (ray->origin == obj) {
+        /* O lies on this sphere: the roots are exactly 0 and 2b/a. */
+        num far = scale_t(wnum_div(wnum_add(b, b), a), ts);
+        if (far > 0) { *t1 = far; *t2 = NUM_ZERO; }
+        else { *t1 = NUM_ZERO; *t2 = far; }
+        return 1;
+    }
+    wnum c = (cam && ts == NUM_ONE) ? oc->c_cam : wnum_sub(v3_dot_wide(co, co), oc->r2);
+    wnum disc = wnum_sub(wnum_mul(b, b), wnum_mul(a, c));
+    if (disc < 0) return 0;
+    wnum h = wnum_sqrt(disc);
+    wnum q = b >= 0 ? wnum_add(b, h) : wnum_sub(b, h);
+    if (q == 0) { *t1 = *t2 = NUM_ZERO; return 1; }
+    num ra = scale_t(wnum_div(q, a), ts);
+    num rc = scale_t(wnum_div(c, q), ts);
+    if (ra > rc) { *t1 = ra; *t2 = rc; }
+    else { *t1 = rc; *t2 = ra; }
+    return 1;
+}
+
+/* Plane n.p = dist: two-sided; the normal is turned toward the ray origin. */
+static int intersect_ray_plane(const struct rt_state *rt, int16_t obj, const struct rt_ray *ray,
+                               num *t, uint8_t *flip)
+{
+    const struct rt_object *o = &rt->s->objects[obj];
+    if (ray->origin == obj) return 0;   /* a flat surface never hits itself */
+    num ts = ray->tscale;
+    vec3 d = ray->ds;
+    num den = v3_dot(o->normal, d);
+    if (den == 0) return 0;
+    num num_ = num_sub(o->dist, v3_dot(o->normal, ray->o));
+    *t = scale_t(num_div(num_, den), ts);
+    *flip = den > 0;
+    return 1;
+}
+
+/* Triangle p0 p1 p2 (Möller–Trumbore on the cached edges). */
+static int intersect_ray_triangle(const struct rt_state *rt, int16_t obj, const struct rt_ray *ray,
+                                  num *t, uint8_t *flip)
+{
+    const struct rt_object *o = &rt->s->objects[obj];
+    const struct rt_obj_cache *oc = &rt->oc[obj];
+    if (ray->origin == obj) return 0;
+    num ts = ray->tscale;
+    vec3 d = ray->ds;
+    vec3 pv = v3_cross(d, oc->e2);
+    wnum det = v3_dot_wide(oc->e1, pv);
+    if (det == 0) return 0;
+    vec3 tv = v3_sub(ray->o, o->p[0]);
+    num u = wnum_div(v3_dot_wide(tv, pv), det);
+    if (u < 0 || u > NUM_ONE) return 0;
+    vec3 qv = v3_cross(tv, oc->e1);
+    num v = wnum_div(v3_dot_wide(d, qv), det);
+    if (v < 0 || num_add(u, v) > NUM_ONE) return 0;
+    *t = scale_t(wnum_div(v3_dot_wide(oc->e2, qv), det), ts);
+    *flip = v3_dot(oc->n, d) > 0;
+    return 1;
+}
+
+/* One span [t0, t1] of a solid along the ray, with the surfaces it enters
+ * and leaves by. */
+struct span {
+    num t0, t1;
+    int16_t s0, s1;
+    uint8_t f0, f1;
+};
+
+static int sphere_span(const struct rt_state *rt, int16_t obj, const struct rt_ray *ray,
+                       struct span *sp)
+{
+    num t1, t2;
+    if (!intersect_ray_sphere(rt, obj, ray, &t1, &t2)) return 0;
+    sp->t0 = t2 < t1 ? t2 : t1;
+    sp->t1 = t2 < t1 ? t1 : t2;
+    sp->s0 = sp->s1 = obj;
+    sp->f0 = sp->f1 = 0;
+    return 1;
+}
+
+/* Spans of a CSG of two spheres; returns how many (0..2). */
+static int csg_spans(const struct rt_state *rt, const struct rt_csg *g, const struct rt_ray *ray,
+                     struct span out[2])
+{
+    struct span A, B;
+    int ha = sphere_span(rt, (int16_t)g->a, ray, &A);
+    int hb = sphere_span(rt, (int16_t)g->b, ray, &B);
+    switch (g->op) {
+    case CSG_UNION:
+        if (!ha && !hb) return 0;
+        if (!hb) { out[0] = A; return 1; }
+        if (!ha) { out[0] = B; return 1; }
+        if (A.t0 <= B.t1 && B.t0 <= A.t1) {
+            struct span u = A;
+            if (B.t0 < u.t0) { u.t0 = B.t0; u.s0 = B.s0; }
+            if (B.t1 > u.t1) { u.t1 = B.t1; u.s1 = B.s1; }
+            out[0] = u;
+            return 1;
+        }
+        out[0] = A.t0 < B.t0 ? A : B;
+        out[1] = A.t0 < B.t0 ? B : A;
+        return 2;
+    case CSG_INTERSECTION: {
+        if (!ha || !hb) return 0;
+        struct span r = A;
+        if (B.t0 > r.t0) { r.t0 = B.t0; r.s0 = B.s0; }
+        if (B.t1 < r.t1) { r.t1 = B.t1; r.s1 = B.s1; }
+        if (!(r.t0 < r.t1)) return 0;
+        out[0] = r;
+        return 1;
+    }
+    default: { /* CSG_DIFFERENCE: A minus B; B's surface shows its inside */
+        if (!ha) return 0;
+        if (!hb || B.t1 <= A.t0 || B.t0 >= A.t1) { out[0] = A; return 1; }
+        int n = 0;
+        if (A.t0 < B.t0) {
+            struct span r = A;
+            r.t1 = B.t0; r.s1 = B.s0; r.f1 = 1;
+            out[n++] = r;
+        }
+        if (B.t1 < A.t1) {
+            struct span r = A;
+            r.t0 = B.t1; r.s0 = B.s1; r.f0 = 1;
+            out[n++] = r;
+        }
+        return n;
+    }
+    }
+}
+
+int rt_item_hit(struct rt_state *rt, int16_t item, const struct rt_ray *ray, num t_min, num t_max,
+                struct rt_hit *hit)
+{
+    const struct scene *s = rt->s;
+    num limit = t_max;
+    int got = 0;
+    rt->n.tests++;
+    if (item >= (int16_t)s->nobjects) {
+        struct span sp[2];
+        int n = csg_spans(rt, &s->csg[CSG_ITEM(rt, item)], ray, sp);
+        for (int i = 0; i < n; i++) {
+            if (t_min < sp[i].t0 && sp[i].t0 < limit) {
+                limit = sp[i].t0;
+                hit->surf = sp[i].s0; hit->flip = sp[i].f0; got = 1;
+            }
+            if (t_min < sp[i].t1 && sp[i].t1 < limit) {
+                limit = sp[i].t1;
+                hit->surf = sp[i].s1; hit->flip = sp[i].f1; got = 1;
+            }
+        }
+    } else {
+        const struct rt_object *o = &s->objects[item];
+        num t1, t2, t;
+        uint8_t flip = 0;
+        switch (o->shape) {
+        case RT_SPHERE:
+            if (!intersect_ray_sphere(rt, item, ray, &t1, &t2)) return 0;
+            /* book order: t1 first, then t2, strict comparisons */
+            if (t_min < t1 && t1 < limit) { limit = t1; got = 1; }
+            if (t_min < t2 && t2 < limit) { limit = t2; got = 1; }
+            break;
+        case RT_PLANE:
+            if (intersect_ray_plane(rt, item, ray, &t, &flip) && t_min < t && t < limit) { limit = t; got = 1; }
+            break;
+        default:
+            if (intersect_ray_triangle(rt, item, ray, &t, &flip) && t_min < t && t < limit) { limit = t; got = 1; }
+            break;
+        }
+        if (got) { hit->surf = item; hit->flip = flip; }
+    }
+    if (got) { hit->t = limit; hit->item = item; }
+    return got;
+}
+
+/* Conservative ray / bounding-sphere test (robust form, both formulations):
+ * 0 only when the ray certainly misses the sphere within t > 0. */
+static int bound_hit(struct rt_state *rt, vec3 c, num r, const struct rt_ray *ray)
+{
+    rt->n.tests++;
+    wnum a = ray->as;
+    vec3 d = ray->ds;
+    vec3 co = v3_sub(ray->o, c);
+    wnum cc = wnum_sub(v3_dot_wide(co, co), num_mul_wide(r, r));
+    if (cc <= 0) return 1;                 /* origin inside */
+    wnum b = wnum_sub(wnum_from_num(NUM_ZERO), v3_dot_wide(co, d));
+    if (b <= 0) return 0;                  /* outside and moving away */
+    return wnum_sub(wnum_mul(b, b), wnum_mul(a, cc)) >= 0;
+}
+
+int closest_intersection(struct rt_state *rt, const struct rt_ray *ray, num t_min, num t_max,
+                         struct rt_hit *hit, int any_hit)
+{
+    num limit = t_max;
+    int found = 0;
+    if (!rt->s->rt.bvh || rt->nbvh == 0) {
+        for (uint16_t i = 0; i < rt->nitems; i++)
+            if (rt->items[i] != rt->skip_item && rt_item_hit(rt, rt->items[i], ray, t_min, limit, hit)) {
+                limit = hit->t;
+                found = 1;
+                if (any_hit) return 1;
+            }
+        return found;
+    }
+    for (uint16_t i = 0; i < rt->nunbounded; i++)
+        if (rt->unbounded[i] != rt->skip_item && rt_item_hit(rt, rt->unbounded[i], ray, t_min, limit, hit)) {
+            limit = hit->t;
+            found = 1;
+            if (any_hit) return 1;
+        }
+    int16_t stack[48];
+    int sp = 0;
+    stack[sp++] = 0;
+    while (sp > 0) {
+        const struct rt_bvh_node *nd = &rt->bvh[stack[--sp]];
+        if (!bound_hit(rt, nd->c, nd->r, ray)) continue;
+        if (nd->left < 0) {
+            for (int16_t k = 0; k < nd->count; k++)
+                if (rt->bvh_items[nd->first + k] != rt->skip_item &&
+                    rt_item_hit(rt, rt->bvh_items[nd->first + k], ray, t_min, limit, hit)) {
+                    limit = hit->t;
+                    found = 1;
+                    if (any_hit) return 1;
+                }
+        } else if (sp + 2 <= (int)(sizeof stack / sizeof stack[0])) {
+            stack[sp++] = nd->right;
+            stack[sp++] = nd->left;
+        }
+    }
+    return found;
+}
+
+vec3 rt_hit_normal(const struct rt_state *rt, const struct rt_hit *hit, vec3 p)
+{
+    const struct rt_object *o = &rt->s->objects[hit->surf];
+    vec3 n;
+    if (o->shape == RT_SPHERE) {
+        n = v3_sub(p, o->center);
+        if (rt->book) {
+            n = v3_scale(n, num_div(NUM_ONE, v3_len(n)));  /* N * (1/|N|), as the demos */
+        } else {
+            /* divide by r: 1/r is too coarse in Q15.16 for r = 5000 */
+            n = v3(num_div(n.x, o->radius), num_div(n.y, o->radius), num_div(n.z, o->radius));
+        }
+    } else if (o->shape == RT_PLANE) {
+        n = o->normal;
+    } else {
+        n = rt->oc[hit->surf].n;
+    }
+    return hit->flip ? v3_neg(n) : n;
+}
+
+/* ---- per-frame constants and the bounding-sphere hierarchy ------------ */
+
+static void item_bound(const struct rt_state *rt, int16_t item, vec3 *c, num *r)
+{
+    const struct scene *s = rt->s;
+    if (item >= (int16_t)s->nobjects) {
+        const struct rt_csg *g = &s->csg[CSG_ITEM(rt, item)];
+        const struct rt_object *a = &s->objects[g->a], *b = &s->objects[g->b];
+        if (g->op != CSG_UNION) { *c = a->center; *r = a->radius; return; }
+        /* enclosing sphere of both operands (centred on a, simple and safe) */
+        *c = a->center;
+        *r = num_max(a->radius, num_add(v3_len(v3_sub(b->center, a->center)), b->radius));
+        return;
+    }
+    const struct rt_object *o = &s->objects[item];
+    if (o->shape == RT_SPHERE) { *c = o->center; *r = o->radius; return; }
+    /* triangle: centroid, farthest corner */
+    vec3 m = v3_scale(v3_add(v3_add(o->p[0], o->p[1]), o->p[2]), NUM_C(1.0 / 3.0));
+    num rr = NUM_ZERO;
+    for (int k = 0; k < 3; k++) rr = num_max(rr, v3_len(v3_sub(o->p[k], m)));
+    *c = m;
+    *r = rr;
+}
+
+void rt_frame_constants(struct rt_state *rt)
+{
+    const struct scene *s = rt->s;
+    for (uint16_t i = 0; i < s->nobjects; i++) {
+        const struct rt_object *o = &s->objects[i];
+        struct rt_obj_cache *oc = &rt->oc[i];
+        oc->r2 = num_mul_wide(o->radius, o->radius);
+        if (o->shape == RT_SPHERE) {
+            oc->co_cam = v3_sub(rt->cam_pos, o->center);
+            if (rt->book)
+                oc->k3_cam = num_sub(v3_dot(oc->co_cam, oc->co_cam), num_mul(o->radius, o->radius));
+            else
+                oc->c_cam = wnum_sub(v3_dot_wide(oc->co_cam, oc->co_cam), oc->r2);
+        } else if (o->shape == RT_TRIANGLE) {
+            oc->e1 = v3_sub(o->p[1], o->p[0]);
+            oc->e2 = v3_sub(o->p[2], o->p[0]);
+            oc->n = v3_normalize(v3_cross(oc->e1, oc->e2));
+        }
+    }
+}
+
+/* Top-down build: split the item range at the median of the longest axis
+ * of the centres. Recursion depth is log2(items) + 1. */
+static int16_t build_node(struct rt_state *rt, int16_t first, int16_t count)
+{
+    int16_t id = (int16_t)rt->nbvh++;
+    struct rt_bvh_node *nd = &rt->bvh[id];
+    int16_t *it = rt->bvh_items + first;
+    /* centre: mean of item centres; radius: farthest item surface */
+    vec3 lo = v3(NUM_MAX, NUM_MAX, NUM_MAX), hi = v3(NUM_MIN, NUM_MIN, NUM_MIN);
+    for (int16_t k = 0; k < count; k++) {
+        vec3 c;
+        num r;
+        item_bound(rt, it[k], &c, &r);
+        lo = v3(num_min(lo.x, c.x), num_min(lo.y, c.y), num_min(lo.z, c.z));
+        hi = v3(num_max(hi.x, c.x), num_max(hi.y, c.y), num_max(hi.z, c.z));
+    }
+    vec3 mid = v3_scale(v3_add(lo, hi), NUM_HALF);
+    num rad = NUM_ZERO;
+    for (int16_t k = 0; k < count; k++) {
+        vec3 c;
+        num r;
+        item_bound(rt, it[k], &c, &r);
+        rad = num_max(rad, num_add(v3_len(v3_sub(c, mid)), r));
+    }
+    /* a little margin so rounding never culls a real hit */
+    nd->c = mid;
+    nd->r = num_add(num_add(rad, num_mul(rad, NUM_C(1.0 / 256))), NUM_C(0.01));
+    nd->first = first;
+    nd->count = count;
+    nd->left = nd->right = -1;
+    if (count <= 2) return id;
+    vec3 ext = v3_sub(hi, lo);
+    int axis = ext.x >= ext.y && ext.x >= ext.z ? 0 : (ext.y >= ext.z ? 1 : 2);
+    /* insertion sort by centre along the axis */
+    for (int16_t k = 1; k < count; k++) {
+        int16_t v = it[k];
+        vec3 cv;
+        num rv;
+        item_bound(rt, v, &cv, &rv);
+        num kv = axis == 0 ? cv.x : (axis == 1 ? cv.y : cv.z);
+        int16_t j = k;
+        while (j > 0) {
+            vec3 cj;
+            num rj;
+            item_bound(rt, it[j - 1], &cj, &rj);
+            num kj = axis == 0 ? cj.x : (axis == 1 ? cj.y : cj.z);
+            if (kj <= kv) break;
+            it[j] = it[j - 1];
+            j--;
+        }
+        it[j] = v;
+    }
+    int16_t half = (int16_t)(count / 2);
+    int16_t l = build_node(rt, first, half);
+    int16_t r = build_node(rt, (int16_t)(first + half), (int16_t)(count - half));
+    rt->bvh[id].left = l;
+    rt->bvh[id].right = r;
+    return id;
+}
+
+void rt_build_bvh(struct rt_state *rt)
+{
+    const struct scene *s = rt->s;
+    uint16_t nb = 0;
+    rt->nunbounded = 0;
+    rt->nbvh = 0;
+    for (uint16_t i = 0; i < rt->nitems; i++) {
+        int16_t item = rt->items[i];
+        if (item < (int16_t)s->nobjects && s->objects[item].shape == RT_PLANE)
+            rt->unbounded[rt->nunbounded++] = item;
+        else
+            rt->bvh_items[nb++] = item;
+    }
+    if (nb > 0) build_node(rt, 0, (int16_t)nb);
+}

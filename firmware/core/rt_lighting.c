@@ -1,0 +1,75 @@
+/* rt_lighting.c — ComputeLighting (chapter 3) with shadows (chapter 4) and
+ * chapter 5's shadow-ray optimisations.
+ *
+ * The formulas keep the demos' operation order in every mode: N unit (or
+ * nearly), L and V unnormalised, i += (I*(n.l))/(|N|*|L|) and
+ * i += I*pow((r.v)/(|R|*|V|), s). In Q15.16 they hold for |L| up to 16000:
+ * n.l and r.v are wide dot products rounded once, |L| comes from a wide sum.
+ */
+#include "raytracer.h"
+
+/* Shadow test: is anything between P and the light (t in (epsilon, t_max))?
+ * With any-hit the search stops at the first occluder; with the cache the
+ * last occluder of this light is tried first (shadows are coherent). */
+static int in_shadow(struct rt_state *rt, const struct rt_ray *ray, num t_max, uint16_t light)
+{
+    const struct rt_options *o = &rt->s->rt;
+    struct rt_hit hit;
+    rt->n.shadow_rays++;
+    if (o->shadow_cache && rt->occluder[light] >= 0) {
+        if (rt_item_hit(rt, rt->occluder[light], ray, o->epsilon, t_max, &hit)) return 1;
+        rt->skip_item = rt->occluder[light];   /* tested already */
+    }
+    int found = closest_intersection(rt, ray, o->epsilon, t_max, &hit, o->shadow_any_hit);
+    rt->skip_item = -1;
+    if (!found) return 0;
+    if (o->shadow_cache) rt->occluder[light] = hit.item;
+    return 1;
+}
+
+num compute_lighting(struct rt_state *rt, vec3 p, vec3 n, vec3 v, num s, int16_t origin,
+                     uint8_t *shadow_bits)
+{
+    const struct scene *sc = rt->s;
+    const struct rt_options *o = &sc->rt;
+    num i = NUM_ZERO;
+    num len_n = v3_len(n);
+    num len_v = v3_len(v);
+    for (uint16_t k = 0; k < sc->nlights; k++) {
+        const struct scene_light *lt = &sc->lights[k];
+        if (lt->type == LIGHT_AMBIENT) {
+            i = num_add(i, lt->intensity);
+            continue;
+        }
+        vec3 l;
+        num t_max;
+        if (lt->type == LIGHT_POINT) {
+            l = v3_sub(lt->v, p);
+            t_max = NUM_ONE;       /* L unnormalised: the light is at t = 1 */
+        } else {
+            l = lt->v;
+            t_max = NUM_MAX;
+        }
+        if (o->shadows) {
+            struct rt_ray sr = rt_make_ray(p, l, origin, 0);
+            if (in_shadow(rt, &sr, t_max, k)) {
+                if (shadow_bits && k < 7) *shadow_bits |= (uint8_t)(1u << k);
+                continue;
+            }
+        }
+        num n_dot_l = v3_dot(n, l);
+        num len_l = v3_len(l);
+        if (o->diffuse && n_dot_l > 0)
+            i = num_add(i, num_div(num_mul(lt->intensity, n_dot_l), num_mul(len_n, len_l)));
+        /* The demos run this step even when n.l <= 0; only shadows stop it. */
+        if (o->specular && s >= 0) {
+            vec3 r = v3_sub(v3_scale(n, num_mul(NUM_C(2.0), n_dot_l)), l);
+            num r_dot_v = v3_dot(r, v);
+            if (r_dot_v > 0) {
+                num cosb = num_div(r_dot_v, num_mul(v3_len(r), len_v));
+                i = num_add(i, num_mul(lt->intensity, num_powi(cosb, (uint32_t)num_to_int(s))));
+            }
+        }
+    }
+    return i;
+}

@@ -1,0 +1,24 @@
+# Ray tracer (part I of the book): its tests and measurements.
+# See docs/raytracer.md. The renderer itself is part of CORE_SRCS (mk/core.mk).
+
+RT_TEST_HELPERS := tests/rt_book_scenes.c
+
+# test_raytracer_<mode>: one program per numeric mode (the core's symbols
+# clash between modes), in both variants.
+define RT_TEST_PROG
+$(BUILD)/$(1)/test_raytracer_$(2): $(call obj,$(1),$(2),tests/test_raytracer.c $(RT_TEST_HELPERS) $(CORE_SRCS))
+	@mkdir -p $$(@D)
+	$(Q)$$(CC) $(LDFLAGS_$(1)) -o $$@ $$^ -lm
+endef
+$(foreach v,$(VARIANTS),$(foreach m,$(NUM_MODES),$(eval $(call RT_TEST_PROG,$(v),$(m)))))
+
+RT_TEST_BINS := $(foreach m,$(NUM_MODES),$(BUILD)/asan/test_raytracer_$(m)) $(BUILD)/host/test_raytracer_double
+TEST_DEPS += $(RT_TEST_BINS)
+# Unit and feature tests under ASan+UBSan in every mode; the 600x600 book
+# digests in the optimised double build (12 full renders).
+TESTS += $(BUILD)/asan/test_raytracer_fixed:quick $(BUILD)/asan/test_raytracer_float:quick \
+         $(BUILD)/asan/test_raytracer_double:quick $(BUILD)/host/test_raytracer_double
+
+.PHONY: test-raytracer
+test-raytracer: $(RT_TEST_BINS)
+	$(Q)tests/run.sh $(filter %raytracer_fixed:quick %raytracer_float:quick %raytracer_double:quick %test_raytracer_double,$(TESTS))

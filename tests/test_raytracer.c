@@ -1,0 +1,357 @@
+/* test_raytracer.c — the ray tracer in one numeric mode (built per mode).
+ *
+ * Double mode: the book demos' reference digests (book-scenes.md Appendix A),
+ * SHA-256 over the 600x600 RGBA buffer, every pixel written (A = 255).
+ * Every mode: strips equal one full frame; the robust sphere test on the
+ * radius-5000 ground; CSG, planes, triangles, refraction; each chapter-5
+ * optimisation keeps the image (or stays close) and does less work. */
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+#include "check.h"
+#include "sha256.h"
+#include "rt_book_scenes.h"
+#include "rt_render.h"
+
+static int is_double(void) { return strcmp(NUM_NAME, "double") == 0; }
+
+static void digest(const uint8_t *rgb888, int w, int h, char hex[65])
+{
+    struct sha256 s;
+    sha256_init(&s);
+    for (int i = 0; i < w * h; i++) {
+        uint8_t px[4] = { rgb888[3 * i], rgb888[3 * i + 1], rgb888[3 * i + 2], 255 };
+        sha256_update(&s, px, 4);
+    }
+    sha256_hex(&s, hex);
+}
+
+static int max_diff(const uint8_t *a, const uint8_t *b, size_t n, size_t *count_over2)
+{
+    int m = 0;
+    size_t c = 0;
+    for (size_t i = 0; i < n; i++) {
+        int d = abs((int)a[i] - (int)b[i]);
+        if (d > m) m = d;
+        if (d > 2) c++;
+    }
+    if (count_over2) *count_over2 = c;
+    return m;
+}
+
+static void test_sha256(void)
+{
+    struct sha256 s;
+    char hex[65];
+    sha256_init(&s);
+    sha256_update(&s, "abc", 3);
+    sha256_hex(&s, hex);
+    check(strcmp(hex, "ba7816bf8f01cfea414140de5dae2223b00361a396177a9cb410ff61f20015ad") == 0,
+          "sha256_known_answer", "got %s", hex);
+}
+
+/* Appendix A: raytracer-01..06 and the non-default modes. */
+static void test_book_digests(void)
+{
+    static const struct { int n; int eps0; int depth; const char *want; } ref[] = {
+        { 1, 0, 3, "1663e7353794ec2b" }, { 2, 0, 3, "4949dfa183be85c2" }, { 3, 0, 3, "b641bd1d4c9572e9" },
+        { 4, 0, 3, "ef6e9c54551130b0" }, { 5, 0, 3, "f2ed4b7a0e946001" }, { 6, 0, 3, "bd5fe383188550a0" },
+        { 4, 1, 3, "a845155ea61bfd84" }, { 5, 0, 0, "7e39c2946a34cc91" }, { 5, 0, 1, "670ca0859204615d" },
+        { 5, 0, 2, "4e29ab18e6805deb" }, { 5, 0, 4, "8099d2d27a2ea28c" }, { 5, 0, 5, "926d7d338022e160" },
+    };
+    uint8_t *img = malloc(600 * 600 * 3);
+    for (size_t i = 0; i < sizeof ref / sizeof ref[0]; i++) {
+        struct scene *s = rt_book_scene(ref[i].n);
+        if (ref[i].eps0) s->rt.epsilon = NUM_ZERO;
+        s->rt.recursion_depth = (uint8_t)ref[i].depth;
+        memset(img, 0, 600 * 600 * 3);
+        char hex[65], name[64];
+        int rc = rt_render(s, 600, 600, 600, img, NULL, NULL);
+        digest(img, 600, 600, hex);
+        snprintf(name, sizeof name, "book_digest_raytracer-0%d%s_depth%d", ref[i].n, ref[i].eps0 ? "_eps0" : "",
+                 ref[i].depth);
+        check(rc == 0 && strncmp(hex, ref[i].want, 16) == 0, name, "rc %d, sha256 %.16s, want %s", rc, hex,
+              ref[i].want);
+    }
+    free(img);
+}
+
+/* Strips of any height give the same pixels as one full-frame strip. */
+static void test_strips(void)
+{
+    int w = 96, h = 72;
+    uint8_t *a = malloc((size_t)w * h * 3), *b = malloc((size_t)w * h * 3);
+    struct scene *sc[3] = { rt_book_scene(5), rt_book_scene(6), rt_ch5_scene() };
+    for (int k = 0; k < 3; k++) {
+        for (int mode = 0; mode < 3; mode++) {
+            struct scene *s = sc[k];
+            s->rt.subsample = mode == 1 ? 3 : 1;
+            s->rt.adaptive_ss = mode == 2;
+            s->rt.supersample = mode == 2 ? 3 : 1;
+            int ra = rt_render(s, w, h, h, a, NULL, NULL);
+            int rb = rt_render(s, w, h, 7, b, NULL, NULL);
+            char name[80];
+            snprintf(name, sizeof name, "strips_equal_full_frame_%s_%s", s->name,
+                     mode == 0 ? "plain" : mode == 1 ? "subsample" : "adaptive");
+            check(ra == 0 && rb == 0 && memcmp(a, b, (size_t)w * h * 3) == 0, name, "strip render differs");
+            s->rt.subsample = 1;
+            s->rt.adaptive_ss = 0;
+            s->rt.supersample = 1;
+        }
+    }
+    free(a);
+    free(b);
+}
+
+/* A minimal state around a scene to call the intersection routines. */
+struct probe_ctx {
+    struct render_ctx ctx;
+    void *work;
+};
+
+static struct rt_state *open_state(struct probe_ctx *p, const struct scene *s)
+{
+    size_t need = render_work_size(s, 64, 64, 64);
+    p->work = aligned_alloc(8, (need + 7) / 8 * 8);
+    if (render_init(&p->ctx, s, 64, 64, 64, p->work, need) != 0) return NULL;
+    render_begin_frame(&p->ctx, 0);
+    return rt_state_of(&p->ctx);
+}
+
+static double dd(num v) { return num_to_double(v); }
+
+/* The radius-5000 ground sphere: robust roots against the exact ones. */
+static void test_ground_sphere(void)
+{
+    struct scene *s = rt_book_scene(5);
+    uint8_t saved = s->rt.formulation;
+    s->rt.formulation = 2;
+    struct probe_ctx p;
+    struct rt_state *rt = open_state(&p, s);
+    double worst = 0;
+    int misses = 0;
+    /* primary rays toward the ground, shadow-like rays, and long reflected rays */
+    static const double rays[][6] = {
+        { 0, 0, 0, 0.1, -0.3, 1 },    { 0, 0, 0, -0.4, -0.05, 1 }, { 0, 0, 0, 0.45, -0.011, 1 },
+        { 2, 1, 0, 0.2, -0.9, 0.3 },  { 0.5, 0.9, 3.2, 0.01, -0.002, 1.2 },
+        { 3, 0, 1, -0.7, -0.15, 0.7 }, { -1.9, 0.95, 4.1, 700, -1, 900 },
+    };
+    for (size_t i = 0; i < sizeof rays / sizeof rays[0]; i++) {
+        const double *r = rays[i];
+        struct rt_ray ray = rt_make_ray(v3(num_from_double(r[0]), num_from_double(r[1]), num_from_double(r[2])),
+                                        v3(num_from_double(r[3]), num_from_double(r[4]), num_from_double(r[5])), -1, 0);
+        /* exact roots in double from the rounded inputs */
+        double o[3] = { dd(ray.o.x), dd(ray.o.y) + 5001, dd(ray.o.z) }, d[3] = { dd(ray.d.x), dd(ray.d.y), dd(ray.d.z) };
+        long double a = (long double)d[0] * d[0] + (long double)d[1] * d[1] + (long double)d[2] * d[2];
+        long double b = -((long double)o[0] * d[0] + (long double)o[1] * d[1] + (long double)o[2] * d[2]);
+        long double c = (long double)o[0] * o[0] + (long double)o[1] * o[1] + (long double)o[2] * o[2] - 25000000.0L;
+        long double disc = b * b - a * c;
+        num t1, t2;
+        int hit = intersect_ray_sphere(rt, 3, &ray, &t1, &t2);
+        if ((disc >= 0) != (hit != 0)) { misses++; continue; }
+        if (!hit) continue;
+        long double q = b + (b >= 0 ? sqrtl(disc) : -sqrtl(disc));
+        long double near = fminl(q / a, c / q);
+        /* error relative to the distance travelled, plus the resolution */
+        double err = fabs((double)(dd(t2) - near)) / (1e-4 + fabs((double)near));
+        if (fabs((double)near) < 16000 && err > worst) worst = err;
+    }
+    check(misses == 0 && worst < (strcmp(NUM_NAME, "float") == 0 ? 1e-3 : 2e-4), "robust_sphere_ground_radius_5000", "misses %d, worst relative error %g",
+          misses, worst);
+    /* analytic self-intersection: leaving the ground sphere upward finds nothing */
+    struct rt_ray up = rt_make_ray(v3(NUM_ZERO, NUM_C(-1.0), NUM_ZERO), v3(NUM_C(0.3), NUM_C(1.0), NUM_C(-0.2)), 3, 0);
+    struct rt_hit hit = { 0, -1, -1, 0 };
+    check(!closest_intersection(rt, &up, NUM_ZERO, NUM_MAX, &hit, 0), "robust_self_no_acne_at_epsilon_zero",
+          "upward ray from the ground hit item %d at t=%g", hit.item, dd(hit.t));
+    free(p.work);
+    s->rt.formulation = saved;
+}
+
+static void test_csg_planes_triangles(void)
+{
+    static struct rt_object o[6];
+    static struct rt_csg g[1];
+    struct scene *s = rt_book_scene(2);
+    struct scene save = *s;
+    const struct rt_object *so = s->objects;
+    o[0] = so[0];
+    o[0].center = v3(NUM_ZERO, NUM_ZERO, NUM_C(5.0));
+    o[0].csg_only = 1;
+    o[1] = o[0];
+    o[1].center = v3(NUM_ZERO, NUM_ZERO, NUM_C(4.5));
+    s->objects = o;
+    s->nobjects = 2;
+    s->csg = g;
+    s->ncsg = 1;
+    static const struct { uint8_t op; double bz; double want; int surf; double nz; } cases[] = {
+        { CSG_UNION, 4.5, 3.5, 1, -1 },        /* A [4,6] u B [3.5,5.5]: enter B at 3.5 */
+        { CSG_INTERSECTION, 4.5, 4.0, 0, -1 }, /* [4, 5.5]: enter by A */
+        { CSG_DIFFERENCE, 4.5, 5.5, 1, -1 },   /* [5.5, 6]: B's inside faces the viewer */
+        { CSG_DIFFERENCE, 7.5, 4.0, 0, -1 },   /* B [6.5,8.5] misses A: A as is */
+        { CSG_DIFFERENCE, 5.0, -1, -1, 0 },    /* B = A: nothing left */
+    };
+    for (int fm = 1; fm <= 2; fm++) {
+        for (size_t i = 0; i < sizeof cases / sizeof cases[0]; i++) {
+            o[1].center = v3(NUM_ZERO, NUM_ZERO, num_from_double(cases[i].bz));
+            g[0] = (struct rt_csg){ cases[i].op, 0, 1 };
+            s->rt.formulation = (uint8_t)fm;
+            struct probe_ctx p;
+            struct rt_state *rt = open_state(&p, s);
+            struct rt_ray ray = rt_make_ray(v3(NUM_ZERO, NUM_ZERO, NUM_ZERO), v3(NUM_ZERO, NUM_ZERO, NUM_ONE), -1, 0);
+            struct rt_hit hit;
+            int got = closest_intersection(rt, &ray, NUM_C(1.0), NUM_MAX, &hit, 0);
+            char name[64];
+            snprintf(name, sizeof name, "csg_%s_%s_bz%.1f", fm == 1 ? "book" : "robust",
+                     cases[i].op == CSG_UNION ? "union" : cases[i].op == CSG_INTERSECTION ? "intersection" : "difference",
+                     cases[i].bz);
+            if (cases[i].want < 0) {
+                check(!got, name, "unexpected hit at %g", got ? dd(hit.t) : 0.0);
+            } else {
+                vec3 pnt = v3(NUM_ZERO, NUM_ZERO, got ? hit.t : NUM_ZERO);
+                vec3 n = got ? rt_hit_normal(rt, &hit, pnt) : v3(NUM_ZERO, NUM_ZERO, NUM_ZERO);
+                check(got && fabs(dd(hit.t) - cases[i].want) < 1e-3 && hit.surf == cases[i].surf &&
+                          fabs(dd(n.z) - cases[i].nz) < 1e-3,
+                      name, "got %d t=%g surf %d nz %g", got, got ? dd(hit.t) : 0.0, hit.surf, dd(n.z));
+            }
+            free(p.work);
+        }
+    }
+    /* a plane y = -1 and a triangle */
+    o[0] = (struct rt_object){ 0 };
+    o[0].shape = RT_PLANE;
+    o[0].normal = v3(NUM_ZERO, NUM_ONE, NUM_ZERO);
+    o[0].dist = NUM_C(-1.0);
+    o[1] = (struct rt_object){ 0 };
+    o[1].shape = RT_TRIANGLE;
+    o[1].p[0] = v3(NUM_C(-1.0), NUM_C(-0.5), NUM_C(4.0));
+    o[1].p[1] = v3(NUM_C(1.0), NUM_C(-0.5), NUM_C(4.0));
+    o[1].p[2] = v3(NUM_ZERO, NUM_C(1.0), NUM_C(4.0));
+    s->nobjects = 2;
+    s->ncsg = 0;
+    s->rt.formulation = 0;
+    struct probe_ctx p;
+    struct rt_state *rt = open_state(&p, s);
+    struct rt_hit hit;
+    struct rt_ray down = rt_make_ray(v3(NUM_ZERO, NUM_ZERO, NUM_ZERO), v3(NUM_ZERO, NUM_C(-0.5), NUM_ONE), -1, 0);
+    int got = closest_intersection(rt, &down, NUM_C(0.5), NUM_MAX, &hit, 0);
+    vec3 n = rt_hit_normal(rt, &hit, v3(NUM_ZERO, NUM_C(-1.0), NUM_C(2.0)));
+    check(got && hit.item == 0 && fabs(dd(hit.t) - 2.0) < 1e-4 && dd(n.y) > 0.999, "plane_hit_y_minus_1",
+          "got %d item %d t=%g", got, hit.item, dd(hit.t));
+    struct rt_ray fwd = rt_make_ray(v3(NUM_ZERO, NUM_ZERO, NUM_ZERO), v3(NUM_C(0.05), NUM_C(0.05), NUM_ONE), -1, 0);
+    got = closest_intersection(rt, &fwd, NUM_C(0.5), NUM_MAX, &hit, 0);
+    n = rt_hit_normal(rt, &hit, v3(NUM_C(0.2), NUM_C(0.2), NUM_C(4.0)));
+    check(got && hit.item == 1 && fabs(dd(hit.t) - 4.0) < 1e-4 && dd(n.z) < -0.999, "triangle_hit_facing_viewer",
+          "got %d item %d t=%g nz=%g", got, hit.item, dd(hit.t), dd(n.z));
+    struct rt_ray side = rt_make_ray(v3(NUM_ZERO, NUM_ZERO, NUM_ZERO), v3(NUM_C(0.3), NUM_C(0.2), NUM_ONE), -1, 0);
+    got = closest_intersection(rt, &side, NUM_C(0.5), NUM_MAX, &hit, 0);
+    check(!got, "triangle_miss_outside_edge", "hit item %d", hit.item);
+    free(p.work);
+    *s = save;
+}
+
+static void test_refraction(void)
+{
+    vec3 out;
+    /* entering glass (1.5) at 30 degrees: sin t = 0.5/1.5 */
+    vec3 n = v3(NUM_ZERO, NUM_ONE, NUM_ZERO);
+    vec3 d = v3(num_from_double(0.5), num_from_double(-0.8660254), NUM_ZERO);
+    int ok = rt_refract(d, n, NUM_C(1.5), &out);
+    check(ok && fabs(dd(out.x) - 1.0 / 3.0) < 1e-3 && dd(out.y) < 0, "refraction_snell_entering", "ok %d x %g", ok,
+          dd(out.x));
+    /* leaving glass at 60 degrees: 1.5 sin 60 > 1, total internal reflection */
+    vec3 d2 = v3(num_from_double(0.8660254), num_from_double(0.5), NUM_ZERO);
+    check(!rt_refract(d2, n, NUM_C(1.5), &out), "refraction_total_internal_reflection", "refracted");
+    vec3 d3 = v3(num_from_double(0.5), num_from_double(0.8660254), NUM_ZERO);
+    ok = rt_refract(d3, n, NUM_C(1.5), &out);
+    check(ok && fabs(dd(out.x) - 0.75) < 1e-3 && dd(out.y) > 0, "refraction_snell_leaving", "ok %d x %g", ok, dd(out.x));
+}
+
+/* Each optimisation: the image it gives and the work it saves. */
+static void test_optimisations(void)
+{
+    int w = 120, h = 120;
+    size_t n = (size_t)w * h * 3;
+    uint8_t *ref = malloc(n), *img = malloc(n);
+    struct rt_run r0, r1;
+    struct scene *s = rt_book_scene(5);
+    char name[96];
+
+    rt_render(s, w, h, 16, ref, NULL, &r0);
+    s->rt.shadow_any_hit = 1;
+    rt_render(s, w, h, 16, img, NULL, &r1);
+    check(memcmp(ref, img, n) == 0 && r1.tests < r0.tests, "shadow_any_hit_same_image_fewer_tests",
+          "tests %u -> %u", r0.tests, r1.tests);
+    s->rt.shadow_cache = 1;
+    struct rt_run r2;
+    rt_render(s, w, h, 16, img, NULL, &r2);
+    check(memcmp(ref, img, n) == 0 && r2.tests <= r1.tests, "shadow_cache_same_image", "tests %u -> %u", r1.tests,
+          r2.tests);
+    s->rt.shadow_any_hit = s->rt.shadow_cache = 0;
+
+    s->rt.no_frame_cache = 1;
+    rt_render(s, w, h, 16, img, NULL, &r1);
+    size_t over;
+    int md = max_diff(ref, img, n, &over);
+    check(md <= 2, "frame_cache_off_same_image", "max diff %d", md);
+    s->rt.no_frame_cache = 0;
+
+    for (int ss = 2; ss <= 4; ss++) {
+        s->rt.supersample = (uint8_t)ss;
+        rt_render(s, w, h, 16, img, NULL, &r1);
+        snprintf(name, sizeof name, "supersample_%d_rays_per_pixel", ss * ss);
+        check(r1.primary_rays == (uint32_t)(w * h * ss * ss), name, "primary rays %u", r1.primary_rays);
+    }
+    s->rt.adaptive_ss = 1;
+    s->rt.supersample = 3;
+    rt_render(s, w, h, 16, img, NULL, &r1);
+    check(r1.primary_rays > (uint32_t)(w * h) && r1.primary_rays < (uint32_t)(w * h * 3), "adaptive_supersample_refines_edges_only",
+          "primary rays %u for %d pixels", r1.primary_rays, w * h);
+    s->rt.adaptive_ss = 0;
+    s->rt.supersample = 1;
+
+    s->rt.subsample = 2;
+    rt_render(s, w, h, 16, img, NULL, &r1);
+    md = max_diff(ref, img, n, &over);
+    check(r1.primary_rays < (uint32_t)(w * h * 3 / 4) && over < n / 20, "subsample_same_object_rule",
+          "primary rays %u, %zu channels off by > 2", r1.primary_rays, over);
+    s->rt.subsample = 1;
+
+    /* bounding-sphere hierarchy on a scene of many objects */
+    struct scene *g = rt_grid_scene(16);
+    rt_render(g, w, h, 16, ref, NULL, &r0);
+    g->rt.bvh = 1;
+    rt_render(g, w, h, 16, img, NULL, &r1);
+    md = max_diff(ref, img, n, &over);
+    check(over == 0 && r1.tests * 3 < r0.tests, "bvh_same_image_fewer_tests", "tests %u -> %u, %zu channels off",
+          r0.tests, r1.tests, over);
+    g->rt.bvh = 0;
+    free(ref);
+    free(img);
+}
+
+/* Chapter 5 scene renders in every mode; its glass sphere shows the plane through it. */
+static void test_ch5_scene(void)
+{
+    int w = 80, h = 80;
+    uint8_t *img = malloc((size_t)w * h * 3);
+    struct scene *s = rt_ch5_scene();
+    uint32_t sat0 = num_saturations;
+    int rc = rt_render(s, w, h, 8, img, NULL, NULL);
+    check(rc == 0 && num_saturations == sat0, "ch5_scene_renders_without_saturation", "rc %d, saturations %u", rc,
+          num_saturations - sat0);
+    free(img);
+}
+
+int main(int argc, char **argv)
+{
+    int quick = argc > 1 && strcmp(argv[1], "quick") == 0;
+    test_sha256();
+    if (is_double() && !quick) test_book_digests();
+    test_strips();
+    test_ground_sphere();
+    test_csg_planes_triangles();
+    test_refraction();
+    test_optimisations();
+    test_ch5_scene();
+    return check_exit();
+}

@@ -772,8 +772,9 @@ static void read_rt_options(struct parser *p, const struct node *n, struct rt_op
 {
     static const char *const keys[] = { "recursion_depth", "t_min", "epsilon", "lighting", "diffuse", "specular",
                                         "shadows", "supersample", "adaptive_supersample", "subsample", "bvh",
-                                        "shadow_any_hit", "shadow_cache", NULL };
-    const struct node *v[13];
+                                        "shadow_any_hit", "shadow_cache", "formulation", "frame_cache", NULL };
+    static const char *const forms[] = { "default", "book", "robust", NULL };
+    const struct node *v[15];
     fields(p, n, "raytracer", keys, v);
     if (v[0]) o->recursion_depth = (uint8_t)get_int(p, v[0], "recursion_depth", 0, 16);
     if (v[1]) o->t_min_primary = to_num(p, v[1], get_num_range(p, v[1], "t_min", 0, 1e6), "t_min");
@@ -788,6 +789,8 @@ static void read_rt_options(struct parser *p, const struct node *n, struct rt_op
     if (v[10]) o->bvh = (uint8_t)get_bool(p, v[10], "bvh");
     if (v[11]) o->shadow_any_hit = (uint8_t)get_bool(p, v[11], "shadow_any_hit");
     if (v[12]) o->shadow_cache = (uint8_t)get_bool(p, v[12], "shadow_cache");
+    if (v[13]) o->formulation = (uint8_t)get_choice(p, v[13], "formulation", forms);
+    if (v[14]) o->no_frame_cache = (uint8_t)!get_bool(p, v[14], "frame_cache");
 }
 
 static void read_ras_options(struct parser *p, const struct node *n, struct ras_options *o)

@@ -120,6 +120,9 @@ $(FW_HOST_REF): $(call obj,host,none,tests/fw_host_ref.c) $(call obj,host,fixed,
 
 TEST_DEPS += $(RP2040SIM_DEPS) $(FW_HOST_REF) $(FW_OUT)/pico/cgfs-1core.elf $(FW_OUT)/pico/cgfs-1core.bin
 TESTS     += tests/test_rp2040sim.sh:$(BUILD)
+# The JavaScript panel (emu_panel.js) replays the vectors the C emulator
+# replays (test_panel_vectors), so the two decoders cannot drift apart.
+TESTS     += node:tools/rp2040sim/replay_vectors.js:tests/vectors/panel
 
 # `make bench`: the emulated Pico's frame time per scene of the single-core
 # image (cycles at 133 MHz including SPI time), appended to results.jsonl.

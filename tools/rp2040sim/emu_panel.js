@@ -1,8 +1,8 @@
 'use strict';
 /* emu_panel.js — the emulated ST7789 / ILI9341 controller of hal/sim/emu_panel.c,
  * ported line for line so the emulated Pico and host_sim decode the same bus
- * the same way (same rules, same violation lines; tests/test_rp2040sim_vectors
- * runs the shared vectors through both). Keep the two in step. */
+ * the same way (same rules, same violation lines; tools/rp2040sim/replay_vectors.js
+ * and tests/test_panel_vectors.c replay the same vectors through both). Keep the two in step. */
 
 const MS = 1000000;
 const MEM_W = 240;
@@ -77,6 +77,7 @@ class EmuPanel {
     if (!f) throw new Error(`unknown panel '${name}'`);
     this.mod = MODULES[f[0]];
     this.view = view === undefined ? f[1] : view;
+    if (!Number.isInteger(this.view) || this.view < 0 || this.view > 3) throw new Error(`bad view ${view}`);
     this.cs = 1; this.dc = 1; this.reset = 1; this.bl = 1;
     this.csTiedLow = 0;
     this.offset = 0;
@@ -137,7 +138,7 @@ class EmuPanel {
     if (c.flags & F_PIXELS) {
       if (this.half) this.vcmd(this.cur, 'ended with half a pixel (odd number of data bytes)');
     } else if (this.nparam < c.min) {
-      this.vcmd(this.cur, `${this.nparam} parameter bytes, needs ${c.min}${c.max > c.min ? ' or more' : ''}`);
+      this.vcmd(this.cur, `${this.nparam} parameter bytes, needs ${c.min}`);
     }
     this.cur = -1; this.nparam = 0; this.half = 0;
   }
@@ -170,7 +171,7 @@ class EmuPanel {
     this.endCommand();
     if (this.violation) return;
     const c = this.lookup(code);
-    if (!c) { this.vcmd(code, `not a ${MODEL_NAME[this.mod.model]} command`); return; }
+    if (!c) { this.vcmd(code, `not an ${MODEL_NAME[this.mod.model]} command`); return; }
     if (c.flags & F_NOTEMU) { this.vcmd(code, 'not emulated'); return; }
     if (this.tooSoon(code, t, this.busyUntil, this.busySince, this.busyWhy)) return;
     this.cur = code; this.nparam = 0;
@@ -248,7 +249,7 @@ class EmuPanel {
       if (this.half) { this.half = 0; this.pixel((this.hi << 8) | b); } else { this.half = 1; this.hi = b; }
       return;
     }
-    if (this.nparam >= c.max) { this.vcmd(this.cur, `more than ${c.max} parameter bytes`); return; }
+    if (this.nparam >= c.max) { this.vcmd(this.cur, `too many parameter bytes (takes ${c.max})`); return; }
     if (this.nparam < 16) this.param[this.nparam] = b;
     this.nparam++;
     if (this.nparam === c.max) this.execute();
@@ -258,7 +259,7 @@ class EmuPanel {
   spiByte(b, t) {
     if (!this.violation) {
       if (!this.reset) this.violate('RESET', -1, this.offset, 'byte sent while RESET is low');
-      else if (this.cs && !this.csTiedLow) { /* deselected */ }
+      else if (this.cs && !this.csTiedLow) this.violate('CS', -1, this.offset, 'byte sent while CS is high (controller deselected)');
       else if (this.dc === 0) this.command(b, t);
       else this.data(b);
     }
@@ -290,10 +291,15 @@ class EmuPanel {
   }
 
   finish() {
+    /* Checked as if the command ended, but it stays current (with its
+     * parameter count and half pixel): more data may still follow. */
     if (!this.violation && this.cur >= 0) {
       const c = this.lookup(this.cur);
-      this.endCommand();
-      if (!this.violation && (c.flags & F_PIXELS)) this.cur = c.code;
+      if (c.flags & F_PIXELS) {
+        if (this.half) this.vcmd(this.cur, 'ended with half a pixel (odd number of data bytes)');
+      } else if (this.nparam < c.min) {
+        this.vcmd(this.cur, `${this.nparam} parameter bytes, needs ${c.min}`);
+      }
     }
     return this.violation ? -1 : 0;
   }

@@ -20,5 +20,29 @@ TESTS += $(BUILD)/asan/test_raytracer_fixed:quick $(BUILD)/asan/test_raytracer_f
          $(BUILD)/asan/test_raytracer_double:quick $(BUILD)/host/test_raytracer_double
 
 .PHONY: test-raytracer
-test-raytracer: $(RT_TEST_BINS)
-	$(Q)tests/run.sh $(filter %raytracer_fixed:quick %raytracer_float:quick %raytracer_double:quick %test_raytracer_double,$(TESTS))
+test-raytracer: $(RT_TEST_BINS) $(BUILD)/host/test_raytracer_accuracy
+	$(Q)tests/run.sh $(filter %raytracer_fixed:quick %raytracer_float:quick %raytracer_double:quick \
+	    %test_raytracer_double %test_raytracer_accuracy,$(TESTS))
+
+# Accuracy test: fixed and float against double in one program. Each mode's
+# core + test scenes become one object exporting only rtacc_<mode>.
+$(foreach v,$(VARIANTS),$(foreach m,$(NUM_MODES),$(eval \
+    $(call obj,$(v),$(m),tests/rt_acc_api.c): EXTRA_CFLAGS += -DRTACC_NAME=rtacc_$(m))))
+define RT_ACC_BUNDLE
+$(BUILD)/$(1)/rtacc_$(2).o: $(call obj,$(1),$(2),tests/rt_acc_api.c $(RT_TEST_HELPERS) $(CORE_SRCS))
+	@mkdir -p $$(@D)
+	$(Q)ld -r -o $$@.tmp $$^
+	$(Q)objcopy --keep-global-symbol=rtacc_$(2) $$@.tmp $$@
+	$(Q)rm -f $$@.tmp
+endef
+$(foreach v,$(VARIANTS),$(foreach m,$(NUM_MODES),$(eval $(call RT_ACC_BUNDLE,$(v),$(m)))))
+define RT_ACC_PROG
+$(BUILD)/$(1)/test_raytracer_accuracy: $(call obj,$(1),none,tests/test_raytracer_accuracy.c) \
+        $(foreach m,$(NUM_MODES),$(BUILD)/$(1)/rtacc_$(m).o)
+	@mkdir -p $$(@D)
+	$(Q)$$(CC) $(LDFLAGS_$(1)) -o $$@ $$^ -lm
+endef
+$(foreach v,$(VARIANTS),$(eval $(call RT_ACC_PROG,$(v))))
+TEST_DEPS += $(BUILD)/host/test_raytracer_accuracy
+# The big comparison runs optimised (30 renders, 15 of them 600x600).
+TESTS += $(BUILD)/host/test_raytracer_accuracy

@@ -1,0 +1,15 @@
+/* rt_acc_api.c — one mode's entry in the accuracy test (compiled per mode). */
+#include "rt_acc_api.h"
+#include "rt_book_scenes.h"
+#include "rt_render.h"
+
+static int render_book(int n, int w, int h, int formulation, uint8_t *rgb888, uint8_t *probe)
+{
+    struct scene *s = rt_book_scene(n);
+    if (!s) return -1;
+    s->rt.formulation = (uint8_t)formulation;
+    return rt_render(s, w, h, 16, rgb888, probe, NULL);
+}
+
+/* RTACC_NAME (rtacc_fixed, ...) comes from the build, one per mode. */
+const struct rtacc_api RTACC_NAME = { NUM_NAME, render_book, &num_saturations };

@@ -1,0 +1,20 @@
+/* rt_acc_api.h — the ray tracer of each numeric mode side by side in one
+ * program (the accuracy test). Each mode's core and test scenes are linked
+ * into one object whose only global symbol is rtacc_<mode> (mk/raytracer.mk). */
+#ifndef RT_ACC_API_H
+#define RT_ACC_API_H
+
+#include <stdint.h>
+
+struct rtacc_api {
+    const char *numeric;
+    /* Renders book scene raytracer-0n at w x h (formulation: 0 the mode's
+     * default, 1 book, 2 robust) into rgb888 (3*w*h) and, when probe is not
+     * NULL, the primary hits' shadow bits (w*h). 0 on success. */
+    int (*render_book)(int n, int w, int h, int formulation, uint8_t *rgb888, uint8_t *probe);
+    uint32_t *saturations;
+};
+
+extern const struct rtacc_api rtacc_fixed, rtacc_float, rtacc_double;
+
+#endif

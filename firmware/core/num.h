@@ -17,17 +17,31 @@
  *   (int64_t with the same NUM_FRAC fraction bits in fixed point; the mode's
  *   floating type otherwise).
  *
- * Fixed point (default NUM_FRAC = 16, Q15.16):
- *   range [-32768, 32768 - 2^-16], resolution 2^-16 = 1.53e-5.
- *   Kinds of quantity and the ranges the renderers keep them in:
- *     positions, distances, t      Q15.16, |x| < 32768 (scene units)
- *     directions, normals          Q15.16, components in [-1, 1] once normalised
- *     colours                      Q15.16, channels 0..255 (intermediates may exceed)
- *     intensities                  Q15.16, 0..~16
- *     depths (1/z)                 Q15.16 (1/z in (0, 1] for z >= 1)
- *     texture coordinates          Q15.16, [0, 1] plus margin
+ * Fixed point: int32 raw value r stands for r / 2^NUM_FRAC. NUM_FRAC is a
+ * compile-time choice in 8..20 (tested at 12, 16, 20); default 16, Q15.16:
+ *   range [-32768 + 2^-16, 32768 - 2^-16] (raw INT32_MIN is never produced),
+ *   resolution 1 ulp = 2^-16 = 1.53e-5. With NUM_FRAC = F the range is
+ *   +-2^(31-F) and 1 ulp = 2^-F. Every kind of quantity below uses this one
+ *   format; the column gives the range the renderers keep it in (Q15.16):
+ *     kind                      range kept           resolution / note
+ *     positions, distances, t   |x| < 32768          2^-16 scene units
+ *     directions, normals       components [-1, 1]   2^-16 (v3_normalize: 0.5 ulp)
+ *     colours                   channels 0..255      2^-16 of a level; may exceed
+ *                                                    255 before the final clamp
+ *     intensities               0..~16               2^-16
+ *     depths 1/z                (0, 1] for z >= 1    2^-16 (z up to 65536 distinct)
+ *     texture coordinates       [0, 1] plus margin   2^-16 (1/65536 texel at 1 px)
+ *     angles                    degrees, any value   reduced exactly modulo 360
+ *   Products of two positions (dot products, |v|^2) exceed the range: use
+ *   the wide forms (v3_dot_wide, num_mul_wide) or keep operands small.
  *   Overflow saturates to NUM_MAX / NUM_MIN and increments num_saturations
- *   when NUM_COUNT_SAT is defined (debug and test builds).
+ *   when NUM_COUNT_SAT is defined (debug and test builds); so does an input
+ *   outside an operation's domain (sqrt of a negative, rsqrt of <= 0,
+ *   division by zero). Nothing traps, nothing is undefined.
+ *   Errors (measured against the double result, see docs/numerics.md) are
+ *   given next to each function in ulps of the fixed format.
+ * Float and double modes call the C library (libm): the double build is the
+ *   book's reference (no FMA contraction).
  */
 #ifndef NUM_H
 #define NUM_H
@@ -97,16 +111,20 @@ num num_add(num a, num b);
 num num_sub(num a, num b);
 num num_neg(num a);
 num num_abs(num a);
-num num_mul(num a, num b);
+num num_mul(num a, num b);                /* rounded to nearest: <= 0.5 ulp */
 num num_mul_int(num a, int32_t k);
-num num_div(num a, num b);                /* b == 0: saturated, sign of a (0/0 = 0) */
+num num_div(num a, num b);                /* correctly rounded (<= 0.5 ulp, halves away
+                                           * from 0); b == 0: saturated, sign of a (0/0 = 0) */
 num num_div_int(num a, int32_t k);
-num num_recip(num a);                     /* 1/a; a == 0 saturates */
-num num_sqrt(num a);                      /* a <= 0 gives 0 */
-num num_rsqrt(num a);                     /* 1/sqrt(a); a <= 0 saturates to NUM_MAX */
-num num_powi(num base, uint32_t e);       /* base^e, e up to at least 1000 */
-num num_sin_deg(num deg);                 /* angles in degrees */
-num num_cos_deg(num deg);
+num num_recip(num a);                     /* 1/a, <= 0.5 ulp; a == 0 saturates */
+num num_sqrt(num a);                      /* <= 0.5 ulp; a <= 0 gives 0 (a < 0 counted) */
+num num_rsqrt(num a);                     /* 1/sqrt(a), <= 0.5 ulp; a <= 0 saturates to NUM_MAX */
+num num_powi(num base, uint32_t e);       /* base^e, any e (tested 1..1000): error
+                                           * <= 0.5 ulp + |base^e| * e * 2^-30 (relative
+                                           * part), i.e. <= 0.5 + e*2^(F-30) ulp for
+                                           * |base| <= 1; 0^0 = 1 */
+num num_sin_deg(num deg);                 /* angles in degrees, any value: <= 0.51 ulp */
+num num_cos_deg(num deg);                 /* <= 0.51 ulp */
 num num_min(num a, num b);
 num num_max(num a, num b);
 num num_clamp(num a, num lo, num hi);
@@ -123,7 +141,7 @@ wnum wnum_add(wnum a, wnum b);
 wnum wnum_sub(wnum a, wnum b);
 wnum wnum_mul(wnum a, wnum b);            /* saturates */
 wnum num_mul_wide(num a, num b);          /* exact product, one rounding, no saturation */
-num  wnum_div(wnum a, wnum b);            /* saturates; b == 0 as num_div */
+num  wnum_div(wnum a, wnum b);            /* correctly rounded; saturates; b == 0 as num_div */
 wnum wnum_sqrt(wnum a);                   /* a <= 0 gives 0 */
 num  wnum_to_num_shr(wnum a, int bits);   /* a / 2^bits, saturated */
 
@@ -142,8 +160,10 @@ vec3 v3_scale(vec3 a, num s);
 num  v3_dot(vec3 a, vec3 b);              /* summed wide, rounded once */
 wnum v3_dot_wide(vec3 a, vec3 b);
 vec3 v3_cross(vec3 a, vec3 b);
-num  v3_len(vec3 a);
-vec3 v3_normalize(vec3 a);                /* zero vector stays zero */
+num  v3_len(vec3 a);                      /* correctly rounded (exact sum of squares) */
+vec3 v3_normalize(vec3 a);                /* <= 0.51 ulp per component for any non-zero
+                                           * input, tiny ones included (pre-scaled);
+                                           * zero vector stays zero */
 vec3 m3_mul_v3(const mat3 *m, vec3 v);
 mat3 m3_mul(const mat3 *a, const mat3 *b);
 mat3 m3_transpose(const mat3 *a);

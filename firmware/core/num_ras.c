@@ -35,6 +35,9 @@ void ras_interp_next(struct ras_interp *it)
     if (it->val < -((int64_t)1 << 40)) it->val = -((int64_t)1 << 40);
 }
 
+num ras_count_next(num a, num a0, int32_t k) { (void)a0; (void)k; return num_add(a, NUM_ONE); }
+int32_t ras_count_index(num a, num a0, int32_t k) { (void)a; (void)a0; return k; }
+
 num ras_ratio(int64_t p, int64_t q)
 {
     if (q == 0) return p == 0 ? 0 : (p > 0 ? NUM_MAX : NUM_MIN);
@@ -52,6 +55,19 @@ num ras_ratio(int64_t p, int64_t q)
     return neg ? -(num)r : (num)r;
 }
 
+num ras_project(num x, num d, num z, num cw, num vw)
+{
+    /* numerator x*d*cw in Q.48, denominator z*vw in Q.32: both in int64
+     * for |x*d| < 2^15 and cw < 2^15 */
+    int64_t xd = ((int64_t)x * d + (1 << (NUM_FRAC - 1))) >> NUM_FRAC;     /* Q.16 */
+    int64_t zv = ((int64_t)z * vw + (1 << (NUM_FRAC - 1))) >> NUM_FRAC;    /* Q.16 */
+    int64_t cwi = cw >> NUM_FRAC;
+    if (zv == 0) return xd == 0 ? 0 : (xd > 0 ? NUM_MAX : NUM_MIN);
+    if ((cw & (NUM_ONE_RAW - 1)) == 0 && xd < ((int64_t)1 << 40) && xd > -((int64_t)1 << 40))
+        return ras_ratio(xd * cwi, zv);
+    return num_div(num_mul(num_div(xd > INT32_MAX ? NUM_MAX : (xd < -INT32_MAX ? NUM_MIN : (num)xd), z), cw), vw);
+}
+
 uint32_t ras_depth32(num near_z, num z)
 {
     if (z <= 0 || z <= near_z) return UINT32_MAX;
@@ -61,6 +77,31 @@ uint32_t ras_depth32(num near_z, num z)
 
 #else
 
+#if NUM_MODE == NUM_MODE_FLOAT
+num ras_count_next(num a, num a0, int32_t k) { (void)a; return a0 + (num)k; }
+int32_t ras_count_index(num a, num a0, int32_t k) { (void)a; (void)a0; return k; }
+#else
+num ras_count_next(num a, num a0, int32_t k) { (void)a0; (void)k; return a + 1; }
+int32_t ras_count_index(num a, num a0, int32_t k) { (void)k; return num_to_int(a - a0); }
+#endif
+
+#if NUM_MODE == NUM_MODE_FLOAT
+void ras_interp_init(struct ras_interp *it, num i0, num d0, num i1, num d1)
+{
+    it->d0 = d0;
+    it->delta = d1 - d0;
+    it->n = i1 - i0;
+    it->k = 0;
+}
+
+num ras_interp_value(const struct ras_interp *it)
+{
+    if (it->n == 0 || it->k == 0) return it->d0;
+    return it->d0 + ((num)it->k * it->delta) / it->n;
+}
+
+void ras_interp_next(struct ras_interp *it) { it->k++; }
+#else
 void ras_interp_init(struct ras_interp *it, num i0, num d0, num i1, num d1)
 {
     it->d = d0;
@@ -69,11 +110,21 @@ void ras_interp_init(struct ras_interp *it, num i0, num d0, num i1, num d1)
 
 num ras_interp_value(const struct ras_interp *it) { return it->d; }
 void ras_interp_next(struct ras_interp *it) { it->d = it->d + it->a; }
+#endif
 
 num ras_ratio(int64_t p, int64_t q)
 {
     if (q == 0) return p == 0 ? 0 : (p > 0 ? NUM_MAX : NUM_MIN);
     return (num)p / (num)q;
+}
+
+num ras_project(num x, num d, num z, num cw, num vw)
+{
+#if NUM_MODE == NUM_MODE_DOUBLE
+    return num_div(num_mul(num_div(num_mul(x, d), z), cw), vw);
+#else
+    return num_div(x * d * cw, z * vw);
+#endif
 }
 
 uint32_t ras_depth32(num near_z, num z)

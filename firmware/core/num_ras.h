@@ -11,8 +11,10 @@
 /* The book's Interpolate(i0, d0, i1, d1) as a stream: value k is d0 at
  * k = 0 and moves by (d1 - d0)/(i1 - i0) per step (i1 > i0; for i1 == i0
  * the value stays d0).
- * - float/double: the book's accumulation d = d + a, so the double build
+ * - double: the book's accumulation d = d + a, so the double build
  *   reproduces the demos bit for bit.
+ * - float: d0 + (k*(d1 - d0))/(i1 - i0), two roundings per value instead
+ *   of k accumulated ones.
  * - fixed: exact rational stepping (quotient + remainder), value k is
  *   d0 + round(k*(d1-d0)/(i1-i0)): accumulating a rounded slope in Q15.16
  *   would drift by up to k/2 LSB, which moves 1/z by percents over a
@@ -21,6 +23,9 @@
 struct ras_interp {
 #if NUM_MODE == NUM_MODE_FIXED
     int64_t base, val, q, r, rem, den;
+#elif NUM_MODE == NUM_MODE_FLOAT
+    num d0, delta, n;
+    int32_t k;
 #else
     num d, a;
 #endif
@@ -28,6 +33,21 @@ struct ras_interp {
 void ras_interp_init(struct ras_interp *it, num i0, num d0, num i1, num d1);
 num  ras_interp_value(const struct ras_interp *it);
 void ras_interp_next(struct ras_interp *it);
+
+/* The book's ProjectVertex + ViewportToCanvas, x*d/z*cw/vw.
+ * - double: ((x*d)/z)*cw/vw in the demos' order (bit-exact reference);
+ * - fixed, float: (x*d*cw)/(z*vw) with one rounding, so points the
+ *   reference puts exactly on a pixel boundary (then truncated) land
+ *   there too instead of a rounding step short of it. */
+num ras_project(num x, num d, num z, num cw, num vw);
+
+/* The book's real-valued loop counters (a = a0, a0 + 1, ...): the value
+ * after step k (k >= 1) given the previous value a, and the list index
+ * T(a - a0) the demos derive from it. double: a + 1 and T(a - a0), as the
+ * demos; fixed (exact) and float: a0 + k and k, so rounding of the counter
+ * never shifts a line by a pixel. */
+num ras_count_next(num a, num a0, int32_t k);
+int32_t ras_count_index(num a, num a0, int32_t k);
 
 /* p/q as a num (q != 0; result saturates). p, q are integers of up to 48
  * bits (edge functions in sub-pixel units). */

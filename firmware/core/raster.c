@@ -111,6 +111,13 @@ int raster_init(struct render_ctx *ctx)
 
 /* ---- per frame ---------------------------------------------------------- */
 
+/* Scene canvas to render canvas: v*h/canvas_h with one rounding (exact at
+ * the scene's own size). */
+static num scale_canvas(const struct ras_ctx *rc, num v)
+{
+    return wnum_div(num_mul_wide(v, num_from_int(rc->h)), wnum_from_num(num_from_int(rc->s->canvas_h)));
+}
+
 static struct ras_range rows_of_canvas_y(const struct ras_ctx *rc, num ymin, num ymax)
 {
     struct ras_range r;
@@ -195,7 +202,7 @@ int raster_begin_frame(struct render_ctx *ctx, uint16_t frame)
         const struct prim2d *p = &s->prims[i];
         num ys[3] = { p->y[0], p->y[1], p->npts > 2 ? p->y[2] : p->y[1] }, lo, hi;
         range3(ys, &lo, &hi);
-        rc->prim_rows[i] = rows_of_canvas_y(rc, num_mul(lo, rc->scale2d), num_mul(hi, rc->scale2d));
+        rc->prim_rows[i] = rows_of_canvas_y(rc, scale_canvas(rc, lo), scale_canvas(rc, hi));
     }
     for (uint16_t i = 0; i < s->nlines; i++) {
         num ax, ay, bx, by;
@@ -517,8 +524,8 @@ int raster_strip(struct render_ctx *ctx, struct render_target *t, struct render_
         const struct prim2d *p = &s->prims[i];
         num x[3], y[3];
         for (int k = 0; k < 3; k++) {
-            x[k] = num_mul(p->x[k], rc->scale2d);
-            y[k] = num_mul(p->y[k], rc->scale2d);
+            x[k] = scale_canvas(rc, p->x[k]);
+            y[k] = scale_canvas(rc, p->y[k]);
         }
         switch (p->kind) {
         case P2D_LINE_BROKEN: draw_line_broken(rc, x[0], y[0], x[1], y[1], p->color); break;

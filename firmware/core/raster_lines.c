@@ -37,7 +37,7 @@ void draw_line_broken(struct ras_ctx *rc, num x0, num y0, num x1, num y1, rgb c)
     struct ras_interp ys;
     ras_interp_init(&ys, x0, y0, x1, y1);
     int n = 0;
-    for (num x = x0; x <= x1 && n < RAS_LINE_MAX_STEPS; x = num_add(x, NUM_ONE), n++) {
+    for (num x = x0; x <= x1 && n < RAS_LINE_MAX_STEPS; n++, x = ras_count_next(x, x0, n)) {
         ras_put_canvas(rc, x, ras_interp_value(&ys), c);
         ras_interp_next(&ys);
     }
@@ -53,7 +53,7 @@ static void line_along(struct ras_ctx *rc, num a0, num b0, num a1, num b1, int a
     int32_t j = 0;
     int n = 0;
     for (num a = a0; a <= a1 && n < RAS_LINE_MAX_STEPS; n++) {
-        int32_t k = num_to_int(num_sub(a, a0));
+        int32_t k = ras_count_index(a, a0, n);
         while (j < k) { ras_interp_next(&bs); j++; }
         num b = ras_interp_value(&bs);
         if (a_is_x) {
@@ -63,8 +63,8 @@ static void line_along(struct ras_ctx *rc, num a0, num b0, num a1, num b1, int a
             if (ras_canvas_row(rc, num_to_int(a)) < 0) break;
             ras_put_canvas(rc, b, a, c);
         }
-        num next = num_add(a, NUM_ONE);
-        if (next == a) break; /* saturated */
+        num next = ras_count_next(a, a0, n + 1);
+        if (next <= a) break; /* saturated */
         a = next;
     }
 }

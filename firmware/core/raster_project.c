@@ -2,12 +2,14 @@
  * transforms as homogeneous 4x4 matrices (the book's bracketing). */
 #include "raster_int.h"
 
-/* ProjectVertex + ViewportToCanvas: ((v.x*d)/v.z)*Cw/Vw, in that order so
- * the double build matches the demos. Canvas units, +y up. */
+/* ProjectVertex + ViewportToCanvas: ((v.x*d)/v.z)*Cw/Vw (num_ras.h keeps
+ * the demos' order in the double build). Canvas units, +y up. */
 void project_vertex(const struct ras_ctx *rc, vec3 v, num *x, num *y)
 {
-    *x = num_div(num_mul(num_div(num_mul(v.x, rc->d), v.z), rc->cw), rc->vw);
-    *y = num_div(num_mul(num_div(num_mul(v.y, rc->d), v.z), num_from_int(rc->h)), rc->vh);
+    /* cw/vw == ch/vh (the viewport width follows the aspect): one scale for
+     * both axes, without the rounding of an aspect-derived vw */
+    *x = ras_project(v.x, rc->d, v.z, num_from_int(rc->h), rc->vh);
+    *y = ras_project(v.y, rc->d, v.z, num_from_int(rc->h), rc->vh);
 }
 
 /* Animation (scene_anim): frame f turns by f*rot_y_per_frame about y after

@@ -20,8 +20,8 @@ static int32_t interp_len(num i0, num i1)
     if (i1 == i0) return 1;
     int32_t n = 0;
     for (num i = i0; i <= i1 && n < RAS_MAX_STEPS; n++) {
-        num next = num_add(i, NUM_ONE);
-        if (next == i) break;
+        num next = ras_count_next(i, i0, n + 1);
+        if (next <= i) break;
         i = next;
     }
     return n;
@@ -78,7 +78,7 @@ static void book_scan(struct ras_ctx *rc, const num x[3], const num y[3], int nq
         if (row >= (int)rc->t->y0 && row < (int)rc->t->y1) {
             if (span_kind == SPAN_REAL) {
                 int n = 0;
-                for (num xs = L[0]; xs <= R[0] && n < RAS_MAX_STEPS; xs = num_add(xs, NUM_ONE), n++) {
+                for (num xs = L[0]; xs <= R[0] && n < RAS_MAX_STEPS; n++, xs = ras_count_next(xs, L[0], n)) {
                     if (ras_canvas_col(rc, num_to_int(xs)) >= (int)rc->w) break;
                     ras_put_canvas(rc, xs, yc, flat);
                 }
@@ -103,8 +103,8 @@ static void book_scan(struct ras_ctx *rc, const num x[3], const num y[3], int nq
             if (k < split) ras_interp_next(&ed[j].e01);
             else ras_interp_next(&ed[j].e12);
         }
-        num next = num_add(yc, NUM_ONE);
-        if (next == yc) break;
+        num next = ras_count_next(yc, y[0], k + 1);
+        if (next <= yc) break;
         yc = next;
     }
 }

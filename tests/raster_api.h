@@ -1,0 +1,14 @@
+/* raster_api.h — per-mode entry of the rasterizer tests (see raster_api.c). */
+#ifndef RASTER_API_H
+#define RASTER_API_H
+
+struct frame;
+struct raster_api {
+    const char *numeric;
+    /* Renders test scene `name` (raster_scenes.h); book_exact 0 switches it
+     * to the default path (clipping by splitting). 0 on success. */
+    int (*render)(const char *name, int book_exact, int w, int h, int rows, struct frame *f);
+};
+extern const struct raster_api raster_api_fixed, raster_api_float, raster_api_double;
+
+#endif

@@ -3,6 +3,7 @@
 #
 #   build/firmware/pico/cgfs.{elf,bin,uf2,map}         two cores (the board)
 #   build/firmware/pico/cgfs-1core.{elf,bin,uf2,map}   RP2040_SINGLE_CORE=1 (rp2040js)
+#   build/firmware/stm32f411/cgfs{,-fixed}.{elf,bin,map}  Cortex-M4F, see below
 #
 # Build options (make VAR=value): FW_PINS (extra -D pin options, e.g.
 # "-DRP2040_PIN_DC=8"), RP2040_SYS_MHZ (125 or 133), FW_SCENE_SRCS (the
@@ -73,8 +74,46 @@ FW_RP_IMAGES := $(FW_OUT)/pico/cgfs.uf2 $(FW_OUT)/pico/cgfs-1core.uf2
 firmware-pico: deps-firmware
 	$(Q)$(MAKE) --no-print-directory $(FW_RP_IMAGES)
 
-firmware: firmware-pico
-	$(Q)$(ARM_SIZE) $(FW_RP_IMAGES:.uf2=.elf) $(FW_EXTRA_ELFS)
+# ---- STM32F411 (Cortex-M4F, one core) -------------------------------------------
+#   build/firmware/stm32f411/cgfs.{elf,bin,map}        float numbers (FPU), default
+#   build/firmware/stm32f411/cgfs-fixed.{elf,bin,map}  fixed point, for comparison
+# Options: STM32_NUM_MODE (float|fixed|double: the mode of cgfs.elf),
+# STM32_PINS (e.g. "-DSTM32_PIN_DC=16"), STM32_HSE_MHZ (crystal, default 25).
+ST_DIR   := firmware/board/stm32f411
+STM32_NUM_MODE ?= float
+STM32_PINS ?=
+STM32_HSE_MHZ ?= 25
+ST_SRCS  := $(ST_DIR)/crt0.c $(ST_DIR)/board.c $(ST_DIR)/fw_board_stm32f411.c hal/stm32f4/hal_stm32f4.c \
+            $(FW_COMMON)
+ST_CPU   := -mcpu=cortex-m4 -mthumb -mfloat-abi=hard -mfpu=fpv4-sp-d16
+ST_CFLAGS := $(ST_CPU) -O2 -g -std=c11 $(WARN) -ffunction-sections -fdata-sections -ffreestanding \
+             -fno-common -fno-math-errno -ffp-contract=off -DSTM32_HSE_MHZ=$(STM32_HSE_MHZ) \
+             $(FW_INC) -I$(ST_DIR) -Ihal/stm32f4 $(STM32_PINS) $(FW_EXTRA)
+ST_LDFLAGS := $(ST_CPU) --specs=nano.specs -nostartfiles -T $(ST_DIR)/stm32f411.ld \
+              -Wl,--gc-sections -Wl,--no-warn-rwx-segments
+
+# $(1) = image name, $(2) = numeric mode
+define ST_IMAGE
+$(FW_OUT)/stm32f411/obj-$(1)/%.o: %.c
+	@mkdir -p $$(@D)
+	$$(Q)$$(ARM_CC) $$(ST_CFLAGS) -DNUM_MODE=$$(NUM_MODE_$(2)) -MMD -MP -c $$< -o $$@
+$(FW_OUT)/stm32f411/$(1).elf: $(patsubst %.c,$(FW_OUT)/stm32f411/obj-$(1)/%.o,$(ST_SRCS)) $(ST_DIR)/stm32f411.ld
+	$$(Q)$$(ARM_CC) $$(ST_LDFLAGS) -Wl,-Map=$(FW_OUT)/stm32f411/$(1).map \
+		$$(filter %.o,$$^) -lm -lc -lgcc -o $$@
+$(FW_OUT)/stm32f411/$(1).bin: $(FW_OUT)/stm32f411/$(1).elf
+	$$(Q)$$(ARM_OBJCOPY) -O binary $$< $$@
+endef
+$(eval $(call ST_IMAGE,cgfs,$(STM32_NUM_MODE)))
+$(eval $(call ST_IMAGE,cgfs-fixed,fixed))
+
+FW_ST_IMAGES := $(FW_OUT)/stm32f411/cgfs.bin $(FW_OUT)/stm32f411/cgfs-fixed.bin
+
+.PHONY: firmware-stm32f411
+firmware-stm32f411: deps-firmware
+	$(Q)$(MAKE) --no-print-directory $(FW_ST_IMAGES)
+
+firmware: firmware-pico firmware-stm32f411
+	$(Q)$(ARM_SIZE) $(FW_RP_IMAGES:.uf2=.elf) $(FW_ST_IMAGES:.bin=.elf) $(FW_EXTRA_ELFS)
 
 # ---- flasher (host) --------------------------------------------------------------
 # build/flasher links the real libusb transport; tests drive the same sequence

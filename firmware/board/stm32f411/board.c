@@ -1,0 +1,97 @@
+/* board.c — STM32F411 clocks, pins, USART1 and the microsecond timer. */
+#include "board.h"
+#include "stm32f411_regs.h"
+
+#if STM32_HSE_MHZ < 2 || STM32_HSE_MHZ > 63
+#error "STM32_HSE_MHZ must be 2..63 (PLLM = HSE MHz gives a 1 MHz PLL input)"
+#endif
+
+static void clocks_init(void)
+{
+    REG(RCC_APB1ENR) |= RCC_APB1ENR_PWR;
+    /* Scale 1 is needed above 84 MHz; VOS may change only with the PLL off. */
+    REG(PWR_CR) = (REG(PWR_CR) & ~PWR_CR_VOS_MASK) | PWR_CR_VOS_SCALE1;
+    REG(RCC_CR) |= RCC_CR_HSEON;
+    while (!(REG(RCC_CR) & RCC_CR_HSERDY)) {}
+    /* 1 MHz PLL input, VCO 200 MHz, P = 2 → 100 MHz; Q = 4 (USB clock unused). */
+    REG(RCC_PLLCFGR) = (uint32_t)STM32_HSE_MHZ | (200u << 6) | (0u << 16) | RCC_PLLCFGR_SRC_HSE |
+                       (4u << 24);
+    REG(RCC_CR) |= RCC_CR_PLLON;
+    while (!(REG(RCC_CR) & RCC_CR_PLLRDY)) {}
+    /* 3 wait states at 100 MHz and 2.7-3.6 V, set before the clock rises. */
+    REG(FLASH_ACR) = 3u | FLASH_ACR_PRFTEN | FLASH_ACR_ICEN | FLASH_ACR_DCEN;
+    while ((REG(FLASH_ACR) & 0xFu) != 3u) {}
+    REG(RCC_CFGR) = RCC_CFGR_PPRE1_DIV2 | RCC_CFGR_SW_PLL;   /* APB1 at most 50 MHz */
+    while ((REG(RCC_CFGR) & RCC_CFGR_SWS_MASK) != RCC_CFGR_SWS_PLL) {}
+}
+
+static void mode_bits(unsigned pin, uint32_t mode)
+{
+    unsigned port = pin >> 4, i = pin & 15u;
+    REG(GPIO_OSPEEDR(port)) |= GPIO_SPEED_VHIGH << (2u * i);
+    REG(GPIO_OTYPER(port)) &= ~(1u << i);
+    REG(GPIO_MODER(port)) = (REG(GPIO_MODER(port)) & ~(3u << (2u * i))) | (mode << (2u * i));
+}
+
+void board_pin_set(unsigned pin, int level)
+{
+    unsigned i = pin & 15u;
+    REG(GPIO_BSRR(pin >> 4)) = level ? (1u << i) : (1u << (i + 16u));
+}
+
+void board_pin_output(unsigned pin, int level)
+{
+    board_pin_set(pin, level);   /* level first: no glitch when the driver turns on */
+    mode_bits(pin, GPIO_MODE_OUT);
+}
+
+void board_pin_af(unsigned pin, unsigned af)
+{
+    unsigned port = pin >> 4, i = pin & 15u, sh = 4u * (i & 7u);
+    REG(GPIO_AFR(port, i)) = (REG(GPIO_AFR(port, i)) & ~(0xFu << sh)) | ((uint32_t)af << sh);
+    mode_bits(pin, GPIO_MODE_AF);
+}
+
+void board_init(void)
+{
+    clocks_init();
+    REG(RCC_AHB1ENR) |= RCC_AHB1ENR_GPIOA | RCC_AHB1ENR_GPIOB | RCC_AHB1ENR_GPIOC | RCC_AHB1ENR_DMA2;
+    REG(RCC_APB1ENR) |= RCC_APB1ENR_TIM2;
+    REG(RCC_APB2ENR) |= RCC_APB2ENR_USART1 | RCC_APB2ENR_SPI1;
+    (void)REG(RCC_APB2ENR);   /* the enables take effect before the first access */
+
+    /* TIM2: APB1 timers run at 2 x 50 MHz; /100 → 1 MHz, free-running 32 bits. */
+    REG(TIM_PSC) = STM32_SYS_HZ / 1000000u - 1u;
+    REG(TIM_ARR) = 0xFFFFFFFFu;
+    REG(TIM_EGR) = 1u;   /* load the prescaler */
+    REG(TIM_CR1) = 1u;
+
+    /* USART1 TX on PA9 (AF7), 115200 baud: 100 MHz / 115200 = 868.06 (16x oversampling). */
+    board_pin_af(STM32_PA(9), 7u);
+    REG(USART_BRR) = (STM32_APB2_HZ + 57600u) / 115200u;
+    REG(USART_CR1) = USART_CR1_UE | USART_CR1_TE;
+}
+
+uint64_t board_now_us(void)
+{
+    static uint32_t last, high;
+    uint32_t now = REG(TIM_CNT);
+    if (now < last) high++;
+    last = now;
+    return ((uint64_t)high << 32) | now;
+}
+
+void board_delay_us(uint32_t us)
+{
+    uint64_t end = board_now_us() + us + 1u;   /* at least us whole microseconds */
+    while (board_now_us() < end) {}
+}
+
+void board_puts(const char *s)
+{
+    for (; *s; s++) {
+        while (!(REG(USART_SR) & USART_SR_TXE)) {}
+        REG(USART_DR) = (uint8_t)*s;
+    }
+    while (!(REG(USART_SR) & USART_SR_TC)) {}
+}

@@ -1,0 +1,22 @@
+/* fw_board_stm32f411.c — the application's board interface on the
+ * STM32F411 (one core: the mailbox functions are never called). */
+#include "fw_board.h"
+#include "board.h"
+#include "hal_stm32f4.h"
+
+const char fw_board_name[] = "stm32f411";
+
+int fw_board_init(struct hal *h) { return hal_stm32f4_init(h); }
+
+int fw_board_pixels_async(struct hal *h, const uint16_t *px, size_t n, hal_done_fn done, void *arg)
+{
+    return hal_stm32f4_write_pixels_async(h->ctx, px, n, done, arg);
+}
+
+void fw_board_puts(const char *s) { board_puts(s); }
+
+unsigned fw_board_cores(void) { return 1u; }
+void fw_board_core1_start(void (*entry)(void)) { (void)entry; }
+void fw_board_send(uint32_t v) { (void)v; }
+uint32_t fw_board_recv(void) { return 0; }
+uint32_t fw_board_cpu_hz(void) { return STM32_SYS_HZ; }

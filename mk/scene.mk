@@ -31,3 +31,30 @@ fuzz-scene: $(FUZZ_SCENE)
 
 TEST_DEPS += $(FUZZ_SCENE)
 TESTS += tests/test_scene_fuzz.sh:$(FUZZ_SCENE):$(FUZZ_SECONDS)
+
+# ---- scenec: scene file -> C source for the firmware -----------------------
+# Built in the double mode (the parser's exact doubles are emitted as NUM_C
+# literals) and linked with the fixed-point core bundle for render_work_size.
+SCENEC := $(BUILD)/scenec
+$(SCENEC): $(call obj,host,double,tools/scenec/scenec.c $(SCENE_PARSER_SRCS)) $(BUILD)/host/core_fixed.o
+	@mkdir -p $(@D)
+	$(Q)$(CC) -o $@ $^ -lm
+$(BUILD)/host/double/tools/scenec/scenec.o: EXTRA_CFLAGS += -Ihost_sim
+PROGRAMS += $(SCENEC)
+
+# Every scene compiled for the default panel (ST7789 240x240, 16-row strips).
+SCENE_SIZE  ?= 240x240
+SCENE_STRIP ?= 16
+SCENE_FILES := $(sort $(shell find firmware/scenes -name '*.scene' 2>/dev/null))
+SCENE_CSRCS := $(patsubst firmware/scenes/%.scene,$(BUILD)/scenes/%.c,$(SCENE_FILES))
+$(BUILD)/scenes/%.c: firmware/scenes/%.scene $(SCENEC)
+	@mkdir -p $(@D)
+	$(Q)$(SCENEC) --size $(SCENE_SIZE) --strip-rows $(SCENE_STRIP) -o $@ $< > $(@:.c=.log) || { cat $(@:.c=.log); exit 2; }
+.PHONY: scenes scenes-report
+scenes: $(SCENE_CSRCS)
+# RAM and flash per compiled scene, as the ARM compiler lays them out.
+scenes-report: $(SCENE_CSRCS)
+	$(Q)tests/test_scenec.sh $(SCENEC) $(BUILD) --report
+
+TEST_DEPS += $(SCENEC)
+TESTS += tests/test_scenec.sh:$(SCENEC):$(BUILD)

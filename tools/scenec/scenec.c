@@ -1,0 +1,622 @@
+/* scenec — compiles a scene file into C source for the firmware.
+ *
+ *   scenec [--size WxH] [--strip-rows N] [--fracs 16,12] [--id NAME]
+ *          [--allow-wide] -o OUT.c SCENE
+ *
+ * Writes OUT.c (the scene as const data: models, textures, lights in flash;
+ * one static work buffer of exactly render_work_size() bytes) and OUT.h (its
+ * declarations and the number format it was checked for). Prints the ranges
+ * it found, the number format chosen and why no intermediate overflows, and
+ * one "scenec-summary" line; or fails (exit 2) naming the object and the
+ * quantity that cannot fit.
+ *
+ * scenec is built in the double mode: the values it emits are the parser's
+ * doubles, written as NUM_C(literal), so the same file compiles to the exact
+ * doubles in the double build and to the nearest fixed-point values in a
+ * fixed build of any NUM_FRAC (NUM_C rounds exactly as num_from_double).
+ * The work size comes from the fixed-point core (core_api_fixed), which is
+ * what the firmware runs.
+ */
+#include <math.h>
+#include <stdarg.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include "core_api.h"
+#include "scene_parse.h"
+
+/* ---- output helpers --------------------------------------------------- */
+
+static FILE *out;
+static size_t flash_bytes;
+static const char *outh_path;   /* const data emitted, by sizeof of what we emit */
+
+static void emit(const char *fmt, ...)
+{
+    va_list ap;
+    va_start(ap, fmt);
+    vfprintf(out, fmt, ap);
+    va_end(ap);
+}
+
+/* A num literal: the double, exactly (17 digits), as NUM_C(...). */
+static const char *lit(num v)
+{
+    static char bufs[8][48];
+    static int k;
+    char *b = bufs[k++ & 7];
+    double d = num_to_double(v);
+    if (d == 0 && signbit(d)) return "NUM_C(-0.0)";
+    char t[40];
+    snprintf(t, sizeof t, "%.17g", d);
+    if (!strpbrk(t, ".e")) strcat(t, ".0");
+    snprintf(b, 48, "NUM_C(%s)", t);
+    return b;
+}
+
+static void emit_vec3(vec3 v) { emit("{ %s, %s, %s }", lit(v.x), lit(v.y), lit(v.z)); }
+static void emit_rgb(rgb c) { emit("{ %s, %s, %s }", lit(c.r), lit(c.g), lit(c.b)); }
+static void emit_mat3(const mat3 *m)
+{
+    emit("{ { ");
+    for (int i = 0; i < 3; i++)
+        emit("{ %s, %s, %s }%s", lit(m->m[i][0]), lit(m->m[i][1]), lit(m->m[i][2]), i < 2 ? ", " : "");
+    emit(" } }");
+}
+static void emit_anim(const struct scene_anim *a)
+{
+    emit("{ %s, ", lit(a->rot_y_per_frame));
+    emit_vec3(a->move_per_frame);
+    emit(" }");
+}
+
+/* ---- ranges -------------------------------------------------------------- */
+
+struct range {
+    double value;            /* largest magnitude found */
+    char what[160];          /* object and quantity */
+};
+
+static void note(struct range *r, double v, const char *fmt, ...)
+{
+    v = fabs(v);
+    if (v <= r->value) return;
+    r->value = v;
+    va_list ap;
+    va_start(ap, fmt);
+    vsnprintf(r->what, sizeof r->what, fmt, ap);
+    va_end(ap);
+}
+
+static double len3(vec3 v)
+{
+    double x = num_to_double(v.x), y = num_to_double(v.y), z = num_to_double(v.z);
+    return sqrt(x * x + y * y + z * z);
+}
+
+static double maxabs3(vec3 v)
+{
+    double m = fabs(num_to_double(v.x));
+    if (fabs(num_to_double(v.y)) > m) m = fabs(num_to_double(v.y));
+    if (fabs(num_to_double(v.z)) > m) m = fabs(num_to_double(v.z));
+    return m;
+}
+
+/* Largest distance the camera moves from its start over the animation. */
+static double anim_reach(const struct scene_anim *a, int frames)
+{
+    return len3(a->move_per_frame) * (frames - 1);
+}
+
+/* The quantities the renderers keep in `num` (num.h's kinds), for this scene.
+ * Each is recorded with the object it comes from. */
+struct ranges {
+    struct range position;   /* world and camera-space coordinates, distances (both renderers) */
+    struct range square;     /* squared distances kept in num (book formulation only) */
+    struct range colour;     /* unclamped colour intermediates: 255 x total intensity x 2 */
+    struct range screen;     /* projected coordinates and 1/z (rasterizer) */
+    double smallest;         /* smallest nonzero magnitude the scene relies on */
+    char smallest_what[160];
+};
+
+static void smallest(struct ranges *R, double v, const char *what)
+{
+    v = fabs(v);
+    if (v > 0 && v < R->smallest) {
+        R->smallest = v;
+        snprintf(R->smallest_what, sizeof R->smallest_what, "%s", what);
+    }
+}
+
+static void scan(const struct scene *s, struct ranges *R, int width, int height)
+{
+    memset(R, 0, sizeof *R);
+    R->smallest = 1e300;
+    double cam = len3(s->camera.position) + anim_reach(&s->camera_anim, s->frames);
+    note(&R->position, cam, "camera position");
+    double itot = 0;
+    for (int i = 0; i < s->nlights; i++) {
+        const struct scene_light *l = &s->lights[i];
+        itot += num_to_double(l->intensity);
+        if (l->type == LIGHT_POINT) note(&R->position, len3(l->v) + cam, "light %d: distance from the camera", i);
+        if (l->type != LIGHT_AMBIENT) note(&R->position, maxabs3(l->v), "light %d: %s", i,
+                                           l->type == LIGHT_POINT ? "position" : "direction");
+    }
+    /* diffuse and specular each add at most the light's intensity */
+    double colour = 255 * (2 * itot > 1 ? 2 * itot : 1);
+    note(&R->colour, colour, "colour x total light intensity %.3g (diffuse + specular)", 2 * itot);
+    if (s->kind == SCENE_RAYTRACE) {
+        /* a ray from the viewport runs at most this far across the scene */
+        smallest(R, num_to_double(s->viewport_w) / (width > 0 ? width : 1), "viewport step per pixel");
+        smallest(R, num_to_double(s->rt.epsilon), "epsilon");
+        int book = s->rt.formulation == 1;
+        for (int i = 0; i < s->nobjects; i++) {
+            const struct rt_object *o = &s->objects[i];
+            if (o->shape == RT_SPHERE) {
+                double r = num_to_double(o->radius), c = len3(o->center);
+                note(&R->position, c + r, "sphere %d: centre + radius", i);
+                note(&R->position, c + cam, "sphere %d: distance from the camera to the centre", i);
+                for (int k = 0; k < s->nlights; k++)
+                    if (s->lights[k].type == LIGHT_POINT)
+                        note(&R->position, c + r + len3(s->lights[k].v), "sphere %d: distance to light %d", i, k);
+                if (book) {
+                    note(&R->square, r * r, "sphere %d: radius %g makes r^2", i, r);
+                    note(&R->square, (c + cam) * (c + cam), "sphere %d: |CO|^2 from the camera", i);
+                }
+                smallest(R, r, "a sphere radius");
+            } else if (o->shape == RT_PLANE) {
+                note(&R->position, num_to_double(o->dist), "plane %d: distance from the origin", i);
+            } else {
+                for (int k = 0; k < 3; k++) note(&R->position, len3(o->p[k]) + cam, "triangle %d: corner %d", i, k);
+            }
+        }
+    } else {
+        double w = width, W = num_to_double(s->viewport_w), d = num_to_double(s->projection_d);
+        smallest(R, 1.0 / 1024, "texture coordinates (1/1024 of a texture)");
+        note(&R->screen, w > height ? w : height, "render size");
+        note(&R->screen, s->canvas_w > s->canvas_h ? s->canvas_w : s->canvas_h, "scene canvas size");
+        for (int i = 0; i < s->nprims; i++)
+            for (int k = 0; k < s->prims[i].npts; k++) {
+                note(&R->screen, num_to_double(s->prims[i].x[k]), "2D primitive %d: x", i);
+                note(&R->screen, num_to_double(s->prims[i].y[k]), "2D primitive %d: y", i);
+            }
+        for (int i = 0; i < s->nlines; i++) {
+            const struct line3d *l = &s->lines[i];
+            vec3 e[2] = { l->a, l->b };
+            for (int k = 0; k < 2; k++) {
+                note(&R->position, len3(e[k]) + cam, "line %d: end %d", i, k);
+                double z = num_to_double(e[k].z) - num_to_double(s->camera.position.z);
+                if (z > 0) {
+                    note(&R->screen, num_to_double(e[k].x) * d / z * w / W, "line %d: projected x", i);
+                    note(&R->screen, num_to_double(e[k].y) * d / z * w / W, "line %d: projected y", i);
+                }
+            }
+        }
+        for (int i = 0; i < s->ninstances; i++) {
+            const struct ras_instance *in = &s->instances[i];
+            const struct ras_model *m = &s->models[in->model];
+            double sc = num_to_double(in->scale), t = len3(in->position) + anim_reach(&in->anim, s->frames);
+            double vmax = 0;
+            for (int k = 0; k < m->nverts; k++)
+                if (len3(m->verts[k]) > vmax) vmax = len3(m->verts[k]);
+            double far = t + sc * vmax;
+            note(&R->position, t + sc * len3(m->bound_center) + cam, "instance %d (%s): bounding-sphere centre", i,
+                 m->name);
+            if (s->ras.shading == SHADE_PHONG)
+                note(&R->screen, (w / 2) * (far + cam), "instance %d: Phong unprojection x * z", i);
+            note(&R->position, far + cam, "instance %d (%s): farthest vertex from the camera", i, m->name);
+            for (int k = 0; k < s->nlights; k++)
+                if (s->lights[k].type == LIGHT_POINT)
+                    note(&R->position, far + len3(s->lights[k].v), "instance %d: distance to light %d", i, k);
+            if (!s->ras.clip) {
+                /* no near plane: the projection of each vertex, as placed */
+                for (int k = 0; k < m->nverts; k++) {
+                    vec3 v = m3_mul_v3(&in->rotation, m->verts[k]);
+                    double x = num_to_double(v.x) * sc + num_to_double(in->position.x) - num_to_double(s->camera.position.x);
+                    double y = num_to_double(v.y) * sc + num_to_double(in->position.y) - num_to_double(s->camera.position.y);
+                    double z = num_to_double(v.z) * sc + num_to_double(in->position.z) - num_to_double(s->camera.position.z);
+                    double r = sqrt(x * x + y * y + z * z);
+                    /* after any camera rotation the depth is at least ... the worst case is z = distance-limited */
+                    (void)r;
+                    if (z > 0) {
+                        note(&R->screen, x * d / z * w / W, "instance %d: projected vertex %d", i, k);
+                        note(&R->screen, y * d / z * w / W, "instance %d: projected vertex %d", i, k);
+                        note(&R->screen, 1 / z, "instance %d: 1/z of vertex %d", i, k);
+                    }
+                }
+            }
+            for (int k = 0; k < m->ntris; k++)
+                for (int c = 0; c < 3 && m->has_uvs; c++) {
+                    note(&R->screen, num_to_double(m->tris[k].uv[c].u) * 1024, "instance %d: u x texture size", i);
+                    note(&R->screen, num_to_double(m->tris[k].uv[c].v) * 1024, "instance %d: v x texture size", i);
+                }
+        }
+    }
+}
+
+static void upper(char *d, const char *s)
+{
+    for (; *s; s++) *d++ = (char)(*s >= 'a' && *s <= 'z' ? *s - 32 : *s);
+    *d = 0;
+}
+
+/* ---- emission ------------------------------------------------------------- */
+
+static void emit_scene(const struct scene *s, const char *id, const char *src, int frac, size_t work,
+                       int width, int height, int strip)
+{
+    emit("/* %s.c — generated by tools/scenec from %s; do not edit. */\n", id, src);
+    const char *hb = strrchr(outh_path, '/') ? strrchr(outh_path, '/') + 1 : outh_path;
+    emit("#include \"scene.h\"\n#include \"%s\"\n\n", hb);
+    emit("#if NUM_MODE == NUM_MODE_FIXED && NUM_FRAC != %d\n", frac);
+    emit("#error \"scene %s was checked for NUM_FRAC %d\"\n#endif\n\n", id, frac);
+
+    if (s->nlights) {
+        emit("static const struct scene_light lights[%d] = {\n", s->nlights);
+        for (int i = 0; i < s->nlights; i++) {
+            emit("    { .type = %d, .intensity = %s, .v = ", s->lights[i].type, lit(s->lights[i].intensity));
+            emit_vec3(s->lights[i].v);
+            emit(" },\n");
+        }
+        emit("};\n\n");
+        flash_bytes += s->nlights * sizeof(struct scene_light);
+    }
+    if (s->nobjects) {
+        emit("static const struct rt_object objects[%d] = {\n", s->nobjects);
+        for (int i = 0; i < s->nobjects; i++) {
+            const struct rt_object *o = &s->objects[i];
+            emit("    { .shape = %d, .csg_only = %d,\n      .mat = { .color = ", o->shape, o->csg_only);
+            emit_rgb(o->mat.color);
+            emit(", .specular = %s, .reflective = %s, .transparency = %s, .refraction = %s },\n      .center = ",
+                 lit(o->mat.specular), lit(o->mat.reflective), lit(o->mat.transparency), lit(o->mat.refraction));
+            emit_vec3(o->center);
+            emit(", .radius = %s, .normal = ", lit(o->radius));
+            emit_vec3(o->normal);
+            emit(", .dist = %s,\n      .p = { ", lit(o->dist));
+            for (int k = 0; k < 3; k++) { emit_vec3(o->p[k]); emit(k < 2 ? ", " : " },\n"); }
+            emit("    },\n");
+        }
+        emit("};\n\n");
+        flash_bytes += s->nobjects * sizeof(struct rt_object);
+    }
+    if (s->ncsg) {
+        emit("static const struct rt_csg csg[%d] = {\n", s->ncsg);
+        for (int i = 0; i < s->ncsg; i++) emit("    { .op = %d, .a = %d, .b = %d },\n", s->csg[i].op, s->csg[i].a, s->csg[i].b);
+        emit("};\n\n");
+        flash_bytes += s->ncsg * sizeof(struct rt_csg);
+    }
+    for (int t = 0; t < s->ntextures; t++) {
+        const struct ras_texture *x = &s->textures[t];
+        int w = x->w, h = x->h;
+        for (int l = 0; l < x->mip_levels; l++) {
+            const uint8_t *px = l == 0 ? x->rgb : x->mip[l];
+            size_t n = (size_t)w * h * 3;
+            emit("static const uint8_t tex%d_level%d[%zu] = {", t, l, n);
+            for (size_t k = 0; k < n; k++) emit("%s%u,", k % 24 ? "" : "\n   ", px[k]);
+            emit("\n};\n");
+            flash_bytes += n;
+            w = w > 1 ? w / 2 : 1;
+            h = h > 1 ? h / 2 : 1;
+        }
+        if (x->mip_levels > 1) {
+            emit("static const uint8_t *const tex%d_mip[%d] = {", t, x->mip_levels);
+            for (int l = 0; l < x->mip_levels; l++) emit(" tex%d_level%d,", t, l);
+            emit(" };\n");
+            flash_bytes += x->mip_levels * sizeof(void *);
+        }
+        emit("\n");
+    }
+    if (s->ntextures) {
+        emit("static const struct ras_texture textures[%d] = {\n", s->ntextures);
+        for (int t = 0; t < s->ntextures; t++) {
+            const struct ras_texture *x = &s->textures[t];
+            emit("    { .w = %d, .h = %d, .rgb = tex%d_level0, .filter = %d, .mip_levels = %d, .mip = ", x->w, x->h,
+                 t, x->filter, x->mip_levels);
+            if (x->mip_levels > 1) emit("tex%d_mip },\n", t);
+            else emit("0 },\n");
+        }
+        emit("};\n\n");
+        flash_bytes += s->ntextures * sizeof(struct ras_texture);
+    }
+    for (int m = 0; m < s->nmodels; m++) {
+        const struct ras_model *md = &s->models[m];
+        emit("static const vec3 model%d_verts[%d] = {\n", m, md->nverts);
+        for (int k = 0; k < md->nverts; k++) { emit("    "); emit_vec3(md->verts[k]); emit(",\n"); }
+        emit("};\n");
+        emit("static const struct ras_triangle model%d_tris[%d] = {\n", m, md->ntris);
+        for (int k = 0; k < md->ntris; k++) {
+            const struct ras_triangle *t = &md->tris[k];
+            emit("    { .v = { %d, %d, %d }, .color = ", t->v[0], t->v[1], t->v[2]);
+            emit_rgb(t->color);
+            if (md->has_normals) {
+                emit(",\n      .n = { ");
+                for (int c = 0; c < 3; c++) { emit_vec3(t->n[c]); emit(c < 2 ? ", " : " }"); }
+            }
+            if (md->has_uvs) {
+                emit(",\n      .uv = { ");
+                for (int c = 0; c < 3; c++) emit("{ %s, %s }%s", lit(t->uv[c].u), lit(t->uv[c].v), c < 2 ? ", " : " }");
+            }
+            emit(" },\n");
+        }
+        emit("};\n\n");
+        flash_bytes += md->nverts * sizeof(vec3) + md->ntris * sizeof(struct ras_triangle) + strlen(md->name) + 1;
+    }
+    if (s->nmodels) {
+        emit("static const struct ras_model models[%d] = {\n", s->nmodels);
+        for (int m = 0; m < s->nmodels; m++) {
+            const struct ras_model *md = &s->models[m];
+            emit("    { .name = \"%s\", .nverts = %d, .ntris = %d, .verts = model%d_verts, .tris = model%d_tris,\n"
+                 "      .has_normals = %d, .has_uvs = %d, .bound_center = ",
+                 md->name, md->nverts, md->ntris, m, m, md->has_normals, md->has_uvs);
+            emit_vec3(md->bound_center);
+            emit(", .bound_radius = %s },\n", lit(md->bound_radius));
+        }
+        emit("};\n\n");
+        flash_bytes += s->nmodels * sizeof(struct ras_model);
+    }
+    if (s->ninstances) {
+        emit("static const struct ras_instance instances[%d] = {\n", s->ninstances);
+        for (int i = 0; i < s->ninstances; i++) {
+            const struct ras_instance *in = &s->instances[i];
+            emit("    { .model = %d, .texture = %d, .normal_map = %d, .position = ", in->model, in->texture,
+                 in->normal_map);
+            emit_vec3(in->position);
+            emit(",\n      .rotation = ");
+            emit_mat3(&in->rotation);
+            emit(",\n      .scale = %s, .specular = %s, .anim = ", lit(in->scale), lit(in->specular));
+            emit_anim(&in->anim);
+            emit(" },\n");
+        }
+        emit("};\n\n");
+        flash_bytes += s->ninstances * sizeof(struct ras_instance);
+    }
+    if (s->nprims) {
+        emit("static const struct prim2d prims[%d] = {\n", s->nprims);
+        for (int i = 0; i < s->nprims; i++) {
+            const struct prim2d *p = &s->prims[i];
+            emit("    { .kind = %d, .npts = %d, .x = { %s, %s, %s }, .y = { %s, %s, %s }, .h = { %s, %s, %s }, .color = ",
+                 p->kind, p->npts, lit(p->x[0]), lit(p->x[1]), lit(p->x[2]), lit(p->y[0]), lit(p->y[1]),
+                 lit(p->y[2]), lit(p->h[0]), lit(p->h[1]), lit(p->h[2]));
+            emit_rgb(p->color);
+            emit(" },\n");
+        }
+        emit("};\n\n");
+        flash_bytes += s->nprims * sizeof(struct prim2d);
+    }
+    if (s->nlines) {
+        emit("static const struct line3d lines[%d] = {\n", s->nlines);
+        for (int i = 0; i < s->nlines; i++) {
+            emit("    { .a = ");
+            emit_vec3(s->lines[i].a);
+            emit(", .b = ");
+            emit_vec3(s->lines[i].b);
+            emit(", .color = ");
+            emit_rgb(s->lines[i].color);
+            emit(" },\n");
+        }
+        emit("};\n\n");
+        flash_bytes += s->nlines * sizeof(struct line3d);
+    }
+
+    const struct rt_options *r = &s->rt;
+    const struct ras_options *o = &s->ras;
+    emit("const struct scene scene_%s = {\n", id);
+    emit("    .name = \"%s\", .kind = %d, .canvas_w = %d, .canvas_h = %d,\n", s->name, s->kind, s->canvas_w,
+         s->canvas_h);
+    emit("    .viewport_w = %s, .viewport_h = %s, .projection_d = %s,\n", lit(s->viewport_w), lit(s->viewport_h),
+         lit(s->projection_d));
+    emit("    .background = ");
+    emit_rgb(s->background);
+    emit(", .background_set = %d,\n    .camera = { .position = ", s->background_set);
+    emit_vec3(s->camera.position);
+    emit(", .rotation = ");
+    emit_mat3(&s->camera.rotation);
+    emit(" },\n    .camera_anim = ");
+    emit_anim(&s->camera_anim);
+    emit(", .frames = %d,\n", s->frames);
+    emit("    .nlights = %d, .lights = %s,\n", s->nlights, s->nlights ? "lights" : "0");
+    emit("    .nobjects = %d, .ncsg = %d, .objects = %s, .csg = %s,\n", s->nobjects, s->ncsg,
+         s->nobjects ? "objects" : "0", s->ncsg ? "csg" : "0");
+    emit("    .rt = { .recursion_depth = %d, .diffuse = %d, .specular = %d, .shadows = %d, .supersample = %d,\n"
+         "            .adaptive_ss = %d, .subsample = %d, .bvh = %d, .shadow_any_hit = %d, .shadow_cache = %d,\n"
+         "            .t_min_primary = %s, .epsilon = %s, .unlit = %d, .formulation = %d, .no_frame_cache = %d },\n",
+         r->recursion_depth, r->diffuse, r->specular, r->shadows, r->supersample, r->adaptive_ss, r->subsample, r->bvh,
+         r->shadow_any_hit, r->shadow_cache, lit(r->t_min_primary), lit(r->epsilon), r->unlit, r->formulation,
+         r->no_frame_cache);
+    emit("    .nmodels = %d, .ninstances = %d, .ntextures = %d, .nprims = %d, .nlines = %d,\n", s->nmodels,
+         s->ninstances, s->ntextures, s->nprims, s->nlines);
+    emit("    .models = %s, .instances = %s, .textures = %s, .prims = %s, .lines = %s,\n",
+         s->nmodels ? "models" : "0", s->ninstances ? "instances" : "0", s->ntextures ? "textures" : "0",
+         s->nprims ? "prims" : "0", s->nlines ? "lines" : "0");
+    emit("    .ras = { .shading = %d, .wireframe = %d, .project_truncate = %d, .clip = %d, .depth_test = %d,\n"
+         "             .depth_bits = %d, .backface_cull = %d, .computed_normals = %d, .diffuse = %d, .specular = %d,\n"
+         "             .perspective_uv = %d, .instance_transform = %d, .camera_transform = %d, .shadow_map = %d,\n"
+         "             .shadow_volume = %d, .env_map = %d, .subpixel_bits = %d, .book_exact = %d },\n",
+         o->shading, o->wireframe, o->project_truncate, o->clip, o->depth_test, o->depth_bits, o->backface_cull,
+         o->computed_normals, o->diffuse, o->specular, o->perspective_uv, o->instance_transform, o->camera_transform,
+         o->shadow_map, o->shadow_volume, o->env_map, o->subpixel_bits, o->book_exact);
+    emit("};\n\n");
+    flash_bytes += sizeof(struct scene) + strlen(s->name) + 1;
+
+    emit("/* render_work_size(scene, %d, %d, %d) of the fixed-point core */\n", width, height, strip);
+    char ID[256];
+    upper(ID, id);
+    emit("_Alignas(8) uint8_t scene_%s_work[SCENE_%s_WORK_SIZE > 0 ? SCENE_%s_WORK_SIZE : 1];\n", id, ID, ID);
+    (void)work;
+}
+
+
+static int usage(void)
+{
+    fprintf(stderr, "usage: scenec [--size WxH] [--strip-rows N] [--fracs 16,12] [--id NAME] [--allow-wide] "
+                    "-o OUT.c SCENE\n");
+    return 2;
+}
+
+int main(int argc, char **argv)
+{
+    int width = 240, height = 240, strip = 16, allow_wide = 0;
+    int fracs[8] = { 16, 12 }, nfracs = 2;
+    const char *outc = NULL, *path = NULL, *idarg = NULL;
+    for (int i = 1; i < argc; i++) {
+        if (!strcmp(argv[i], "--size") && i + 1 < argc) {
+            if (sscanf(argv[++i], "%dx%d", &width, &height) != 2 || width < 1 || height < 1 || width > 4096 ||
+                height > 4096)
+                return usage();
+        } else if (!strcmp(argv[i], "--strip-rows") && i + 1 < argc) {
+            strip = atoi(argv[++i]);
+            if (strip < 1 || strip > 4096) return usage();
+        } else if (!strcmp(argv[i], "--fracs") && i + 1 < argc) {
+            char *p = argv[++i];
+            nfracs = 0;
+            while (*p && nfracs < 8) {
+                fracs[nfracs] = (int)strtol(p, &p, 10);
+                if (fracs[nfracs] < 1 || fracs[nfracs] > 30) return usage();
+                nfracs++;
+                if (*p == ',') p++;
+                else if (*p) return usage();
+            }
+        } else if (!strcmp(argv[i], "--id") && i + 1 < argc) {
+            idarg = argv[++i];
+        } else if (!strcmp(argv[i], "--allow-wide")) {
+            allow_wide = 1;
+        } else if (!strcmp(argv[i], "-o") && i + 1 < argc) {
+            outc = argv[++i];
+        } else if (argv[i][0] == '-' || path) {
+            return usage();
+        } else {
+            path = argv[i];
+        }
+    }
+    if (!path || !outc) return usage();
+    if (strip > height) strip = height;
+
+    char err[600];
+    struct scene *s = NULL;
+    if (scene_load(path, &s, err, sizeof err)) {
+        fprintf(stderr, "%s\n", err);
+        return 2;
+    }
+    /* the C identifier: path under firmware/scenes/ without .scene */
+    char id[256], ID[256];
+    const char *base = idarg;
+    if (!base) {
+        base = strstr(path, "scenes/") ? strstr(path, "scenes/") + 7 : path;
+    }
+    size_t k = 0;
+    for (const char *c = base; *c && k < sizeof id - 1; c++) {
+        if (!idarg && !strcmp(c, ".scene")) break;
+        id[k++] = (char)((*c >= 'a' && *c <= 'z') || (*c >= 'A' && *c <= 'Z') || (*c >= '0' && *c <= '9') ? *c : '_');
+    }
+    id[k] = 0;
+    upper(ID, id);
+
+    /* ranges, and the number format */
+    struct ranges R;
+    scan(s, &R, width, height);
+    printf("scenec: %s: %s scene \"%s\", %d objects, %d lights, %d models, %d instances, %d textures, %d frames\n",
+           path, s->kind == SCENE_RAYTRACE ? "ray-traced" : "rasterized", s->name, s->nobjects, s->nlights,
+           s->nmodels, s->ninstances, s->ntextures, s->frames);
+    printf("  ranges: positions and distances <= %.6g (%s)\n", R.position.value, R.position.what);
+    if (R.square.value > 0) printf("          squares kept in num <= %.6g (%s)\n", R.square.value, R.square.what);
+    printf("          colour intermediates <= %.6g (%s)\n", R.colour.value, R.colour.what);
+    if (R.screen.value > 0) printf("          screen quantities <= %.6g (%s)\n", R.screen.value, R.screen.what);
+    if (R.smallest < 1e300) printf("          smallest step relied on: %.6g (%s)\n", R.smallest, R.smallest_what);
+    /* the largest quantity, with a factor-2 margin for one sum or difference
+     * of two of them (a - b of two positions, colour plus reflected colour);
+     * longer sums (dot products) are taken wide by the core */
+    struct range big = R.position;
+    if (R.square.value > big.value) big = R.square;
+    if (R.colour.value > big.value) big = R.colour;
+    if (R.screen.value > big.value) big = R.screen;
+    double need = 2 * big.value;
+    int frac = -1;
+    for (int i = 0; i < nfracs; i++) {
+        double lim = ldexp(1.0, 31 - fracs[i]);
+        if (need < lim && (frac < 0 || fracs[i] > frac)) frac = fracs[i];
+    }
+    if (frac < 0) {
+        int lo = fracs[0];
+        for (int i = 1; i < nfracs; i++) if (fracs[i] < lo) lo = fracs[i];
+        double lim = ldexp(1.0, 31 - lo);
+        if (!allow_wide) {
+            fprintf(stderr, "%s:1:1: error: %s = %.6g (x2 margin: %.6g) exceeds the widest number format "
+                            "(|x| < %.6g at NUM_FRAC %d); %s\n",
+                    path, big.what, big.value, need, lim, lo,
+                    &big == &R.square || big.value == R.square.value
+                        ? "use a plane, or formulation = robust (64-bit intermediates) for this scene"
+                        : "scale the scene down, or allow 64-bit intermediates for this scene (--allow-wide)");
+            scene_free(s);
+            return 2;
+        }
+        frac = lo;
+        printf("  --allow-wide: the largest quantity exceeds every format; NUM_FRAC %d, wide paths assumed\n", frac);
+    }
+    double lim = ldexp(1.0, 31 - frac);
+    printf("  number format: NUM_FRAC %d (Q%d.%d): |x| < %.6g, resolution %.3g\n", frac, 31 - frac, frac, lim,
+           ldexp(1.0, -frac));
+    printf("  no overflow: every num quantity above is <= %.6g; twice that (one sum or difference of two\n"
+           "    of them) is %.6g < %.6g. Products of two quantities (dot products, squared lengths, r^2) are\n"
+           "    taken wide (wnum = int64 with %d fraction bits, |x| < %.3g), where %.6g^2 = %.3g fits.\n",
+           big.value, need, lim, frac, ldexp(1.0, 63 - frac), need, need * need);
+    if (R.smallest < 1e300 && R.smallest < 4 * ldexp(1.0, -frac))
+        printf("  warning: %s = %.3g is within 4 steps of the resolution %.3g\n", R.smallest_what, R.smallest,
+               ldexp(1.0, -frac));
+
+    /* the renderer's work memory, from the fixed-point core */
+    void *fs = NULL;
+    if (core_api_fixed.scene_load(path, &fs, err, sizeof err)) {
+        fprintf(stderr, "%s\n", err);
+        scene_free(s);
+        return 2;
+    }
+    size_t work = core_api_fixed.work_size(fs, (uint16_t)width, (uint16_t)height, (uint16_t)strip);
+    core_api_fixed.scene_free(fs);
+
+    /* files */
+    char outh[1024];
+    snprintf(outh, sizeof outh, "%s", outc);
+    size_t n = strlen(outh);
+    if (n < 3 || strcmp(outh + n - 2, ".c")) {
+        fprintf(stderr, "scenec: output must end in .c\n");
+        scene_free(s);
+        return 2;
+    }
+    outh[n - 1] = 'h';
+    outh_path = outh;
+    FILE *h = fopen(outh, "w");
+    if (!h) {
+        fprintf(stderr, "scenec: cannot write %s\n", outh);
+        scene_free(s);
+        return 1;
+    }
+    size_t strip_bytes = (size_t)width * strip * 2;
+    fprintf(h, "/* scene_%s.h — generated by tools/scenec from %s; do not edit.\n *\n"
+               " * Checked for the fixed-point core at NUM_FRAC %d, a %dx%d frame in strips of %d rows.\n"
+               " * RAM: scene_%s_work (SCENE_%s_WORK_SIZE bytes, for render_init) plus the caller's\n"
+               " * strip buffer (SCENE_%s_STRIP_BYTES = width x strip rows x 2 bytes of RGB565).\n */\n",
+            id, path, frac, width, height, strip, id, ID, ID);
+    fprintf(h, "#ifndef SCENE_%s_H\n#define SCENE_%s_H\n\n#include <stdint.h>\n#include \"scene.h\"\n\n", ID, ID);
+    fprintf(h, "#define SCENE_%s_NUM_FRAC   %d\n#define SCENE_%s_WIDTH      %d\n#define SCENE_%s_HEIGHT     %d\n"
+               "#define SCENE_%s_STRIP_ROWS %d\n#define SCENE_%s_WORK_SIZE  %zu\n#define SCENE_%s_STRIP_BYTES %zu\n\n",
+            ID, frac, ID, width, ID, height, ID, strip, ID, work, ID, strip_bytes);
+    fprintf(h, "extern const struct scene scene_%s;\nextern uint8_t scene_%s_work[];\n\n#endif\n", id, id);
+    fclose(h);
+    out = fopen(outc, "w");
+    if (!out) {
+        fprintf(stderr, "scenec: cannot write %s\n", outc);
+        scene_free(s);
+        return 1;
+    }
+    emit_scene(s, id, path, frac, work, width, height, strip);
+    if (fclose(out)) {
+        fprintf(stderr, "scenec: error writing %s\n", outc);
+        scene_free(s);
+        return 1;
+    }
+    printf("  memory: RAM %zu bytes of work + %zu bytes of strip (%dx%d, %d rows); flash: the const data of %s\n",
+           work, strip_bytes, width, height, strip, outc);
+    printf("scenec-summary id=%s num_frac=%d work=%zu strip=%zu\n", id, frac, work, strip_bytes);
+    scene_free(s);
+    return 0;
+}

@@ -46,3 +46,10 @@ $(foreach v,$(VARIANTS),$(eval $(call RT_ACC_PROG,$(v))))
 TEST_DEPS += $(BUILD)/host/test_raytracer_accuracy
 # The big comparison runs optimised (30 renders, 15 of them 600x600).
 TESTS += $(BUILD)/host/test_raytracer_accuracy
+
+# `make bench`: raytracer-05 at 240x240 on the emulated Cortex-M0+ and M4F,
+# fixed and float, plus each chapter-5 option (tools/bench/bench_raytracer.c).
+BENCH_RT_SRCS := tools/bench/bench_raytracer.c $(RT_TEST_HELPERS) $(CORE_SRCS)
+$(foreach t,$(BENCH_TARGETS),$(foreach m,fixed float,\
+  $(call bench_image,raytracer,$(t),$(m),$(BENCH_RT_SRCS),-Itests)\
+  $(eval BENCH_IMAGES += $(BUILD)/bench/$(t)/$(m)/raytracer.elf)))

@@ -342,8 +342,26 @@ static void test_ch5_scene(void)
     free(img);
 }
 
+/* test_raytracer dump FILE.ppm [ss]: writes the chapter 5 scene at 240x240. */
+static int dump(const char *path, int ss)
+{
+    int w = 240, h = 240;
+    uint8_t *img = malloc((size_t)w * h * 3);
+    struct scene *s = rt_ch5_scene();
+    s->rt.supersample = (uint8_t)ss;
+    int rc = rt_render(s, w, h, 16, img, NULL, NULL);
+    FILE *f = fopen(path, "wb");
+    if (!f || rc) return 1;
+    fprintf(f, "P6\n%d %d\n255\n", w, h);
+    fwrite(img, 1, (size_t)w * h * 3, f);
+    fclose(f);
+    free(img);
+    return 0;
+}
+
 int main(int argc, char **argv)
 {
+    if (argc > 2 && strcmp(argv[1], "dump") == 0) return dump(argv[2], argc > 3 ? atoi(argv[3]) : 1);
     int quick = argc > 1 && strcmp(argv[1], "quick") == 0;
     test_sha256();
     if (is_double() && !quick) test_book_digests();

@@ -1,0 +1,81 @@
+/* bench_raytracer.c — instructions per frame of the ray tracer on the
+ * emulated MCUs: raytracer-05 at 240x240 rendered in strips of 16 rows (the
+ * firmware's way), then the same frame with each chapter-5 option switched
+ * on or off, and the bounding-sphere hierarchy on a scene of many spheres.
+ * Scenes are built in C (tests/rt_book_scenes.c, book-scenes.md §1.3);
+ * building them is not measured. Figures are instructions, not cycles. */
+#include <string.h>
+#include "bench.h"
+#include "raytracer.h"
+#include "rt_book_scenes.h"
+
+#define W 240
+#define H 240
+#define STRIP 16
+
+static uint64_t work[4096];          /* 32 KiB: ample for these scenes */
+static uint16_t strip_px[W * STRIP];
+
+/* One frame of s at w x h; returns instructions, or 0 on failure. */
+static uint64_t frame(const struct scene *s, int w, int h)
+{
+    struct render_ctx ctx;
+    size_t need = render_work_size(s, (uint16_t)w, (uint16_t)h, STRIP);
+    if (need > sizeof work) return 0;
+    uint64_t t0 = bench_now();
+    if (render_init(&ctx, s, (uint16_t)w, (uint16_t)h, STRIP, work, sizeof work) != 0) return 0;
+    render_begin_frame(&ctx, 0);
+    struct render_stats st;
+    memset(&st, 0, sizeof st);
+    for (int y = 0; y < h; y += STRIP) {
+        struct render_target t = { .width = (uint16_t)w, .height = (uint16_t)h, .y0 = (uint16_t)y,
+                                   .y1 = (uint16_t)(y + STRIP < h ? y + STRIP : h), .rgb565 = strip_px };
+        if (render_strip(&ctx, &t, &st) != 0) return 0;
+    }
+    return bench_now() - t0;
+}
+
+static int report(const char *what, const char *variant, uint64_t instr)
+{
+    if (!instr) {
+        bench_puts("FAIL bench_raytracer: ");
+        bench_puts(variant);
+        bench_puts("\n");
+        return 1;
+    }
+    bench_report(what, NUM_NAME, variant, instr * 1000, "frame");
+    return 0;
+}
+
+int bench_main(void)
+{
+    int bad = 0;
+    struct scene *s = rt_book_scene(5);
+    bad |= report("scene:book/raytracer-05", "strip16", frame(s, W, H));
+#ifndef BENCH_RT_QUICK
+    s->rt.no_frame_cache = 1;
+    bad |= report("scene:book/raytracer-05", "no_frame_cache", frame(s, W, H));
+    s->rt.no_frame_cache = 0;
+    s->rt.shadow_any_hit = 1;
+    bad |= report("scene:book/raytracer-05", "shadow_any_hit", frame(s, W, H));
+    s->rt.shadow_cache = 1;
+    bad |= report("scene:book/raytracer-05", "shadow_any_hit+cache", frame(s, W, H));
+    s->rt.shadow_any_hit = s->rt.shadow_cache = 0;
+    s->rt.subsample = 2;
+    bad |= report("scene:book/raytracer-05", "subsample2", frame(s, W, H));
+    s->rt.subsample = 1;
+    s->rt.supersample = 2;
+    bad |= report("scene:book/raytracer-05", "supersample4", frame(s, W, H));
+    s->rt.supersample = 3;
+    s->rt.adaptive_ss = 1;
+    bad |= report("scene:book/raytracer-05", "adaptive9", frame(s, W, H));
+    s->rt.supersample = 1;
+    s->rt.adaptive_ss = 0;
+    /* many objects: 8x8 spheres on a plane, 80x80 */
+    struct scene *g = rt_grid_scene(8);
+    bad |= report("scene:grid64@80x80", "plain", frame(g, 80, 80));
+    g->rt.bvh = 1;
+    bad |= report("scene:grid64@80x80", "bvh", frame(g, 80, 80));
+#endif
+    return bad;
+}

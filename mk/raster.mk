@@ -34,3 +34,13 @@ RASTER_TESTS := $(BUILD)/asan/tests/test_raster_book_double:$(BUILD) \
                 $(BUILD)/host/tests/test_raster_modes
 TESTS += $(RASTER_TESTS)
 TEST_DEPS += $(foreach t,$(RASTER_TESTS),$(firstword $(subst :, ,$(t))))
+
+# The book's scene files through the parser and core_api (three modes).
+define RASTER_SCENES_PROG
+$(BUILD)/$(1)/tests/test_raster_scenes: $(call obj,$(1),none,tests/test_raster_scenes.c) $(call core_bundles,$(1))
+	@mkdir -p $$(@D)
+	$(Q)$$(CC) $(LDFLAGS_$(1)) -o $$@ $$^ -lm
+endef
+$(foreach v,$(VARIANTS),$(eval $(call RASTER_SCENES_PROG,$(v))))
+TESTS += $(BUILD)/host/tests/test_raster_scenes
+TEST_DEPS += $(BUILD)/host/tests/test_raster_scenes

@@ -16,10 +16,34 @@ static int render(const char *name, int book_exact, int w, int h, int rows, stru
     return render_frame(s, w, h, rows, 0, f);
 }
 
+static uint8_t probe_rgb[600 * 600 * 3];
+
+static int render_texel_probe(const char *name, int book_exact, int w, int h, struct frame *f)
+{
+    struct scene *s = ras_test_scene(name);
+    if (!s || !s->ntextures) return -1;
+    struct ras_texture *t = (struct ras_texture *)&s->textures[0];
+    for (int y = 0; y < t->h; y++)
+        for (int x = 0; x < t->w; x++) {
+            uint8_t *p = &probe_rgb[(y * t->w + x) * 3];
+            p[0] = (uint8_t)(x & 255);
+            p[1] = (uint8_t)(y & 255);
+            p[2] = (uint8_t)(((x >> 8) & 15) | ((y >> 8) & 15) << 4);
+        }
+    t->rgb = probe_rgb;
+    t->filter = TEX_NEAREST;
+    s->ras.shading = SHADE_NONE;
+    if (!book_exact) {
+        s->ras.book_exact = 0;
+        if (s->ras.clip) s->ras.clip = 2;
+    }
+    return render_frame(s, w, h, 16, 0, f);
+}
+
 #if NUM_MODE == NUM_MODE_FIXED
-const struct raster_api raster_api_fixed = { "fixed", render };
+const struct raster_api raster_api_fixed = { "fixed", render, render_texel_probe };
 #elif NUM_MODE == NUM_MODE_FLOAT
-const struct raster_api raster_api_float = { "float", render };
+const struct raster_api raster_api_float = { "float", render, render_texel_probe };
 #else
-const struct raster_api raster_api_double = { "double", render };
+const struct raster_api raster_api_double = { "double", render, render_texel_probe };
 #endif

@@ -8,6 +8,10 @@ struct raster_api {
     /* Renders test scene `name` (raster_scenes.h); book_exact 0 switches it
      * to the default path (clipping by splitting). 0 on success. */
     int (*render)(const char *name, int book_exact, int w, int h, int rows, struct frame *f);
+    /* The same with the scene's texture replaced by a coordinate texture
+     * (texel x, y encoded in R, G, B), unlit, nearest: the output names the
+     * texel each pixel looked up. */
+    int (*render_texel_probe)(const char *name, int book_exact, int w, int h, struct frame *f);
 };
 extern const struct raster_api raster_api_fixed, raster_api_float, raster_api_double;
 

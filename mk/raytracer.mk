@@ -6,7 +6,7 @@ RT_TEST_HELPERS := tests/rt_book_scenes.c
 # test_raytracer_<mode>: one program per numeric mode (the core's symbols
 # clash between modes), in both variants.
 define RT_TEST_PROG
-$(BUILD)/$(1)/test_raytracer_$(2): $(call obj,$(1),$(2),tests/test_raytracer.c $(RT_TEST_HELPERS) $(CORE_SRCS))
+$(BUILD)/$(1)/test_raytracer_$(2): $(call obj,$(1),$(2),tests/test_raytracer.c $(RT_TEST_HELPERS) $(CORE_SRCS) $(SCENE_SRCS))
 	@mkdir -p $$(@D)
 	$(Q)$$(CC) $(LDFLAGS_$(1)) -o $$@ $$^ -lm
 endef

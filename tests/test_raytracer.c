@@ -12,6 +12,7 @@
 #include "sha256.h"
 #include "rt_book_scenes.h"
 #include "rt_render.h"
+#include "scene_parse.h"
 
 static int is_double(void) { return strcmp(NUM_NAME, "double") == 0; }
 
@@ -72,6 +73,29 @@ static void test_book_digests(void)
                  ref[i].depth);
         check(rc == 0 && strncmp(hex, ref[i].want, 16) == 0, name, "rc %d, sha256 %.16s, want %s", rc, hex,
               ref[i].want);
+    }
+    free(img);
+}
+
+/* The parsed book scene files give the same digests as the C-built scenes. */
+static void test_scene_files(void)
+{
+    static const char *want[7] = { "", "1663e7353794ec2b", "4949dfa183be85c2", "b641bd1d4c9572e9",
+                                   "ef6e9c54551130b0", "f2ed4b7a0e946001", "bd5fe383188550a0" };
+    uint8_t *img = malloc(600 * 600 * 3);
+    for (int n = 1; n <= 6; n++) {
+        char path[96], err[256], hex[65], name[64];
+        snprintf(path, sizeof path, "firmware/scenes/book/raytracer-0%d.scene", n);
+        snprintf(name, sizeof name, "scene_file_digest_raytracer-0%d", n);
+        struct scene *s = NULL;
+        if (scene_load(path, &s, err, sizeof err) != 0) {
+            check(0, name, "%s", err);
+            continue;
+        }
+        int rc = rt_render(s, 600, 600, 40, img, NULL, NULL);
+        digest(img, 600, 600, hex);
+        check(rc == 0 && strncmp(hex, want[n], 16) == 0, name, "rc %d sha256 %.16s want %s", rc, hex, want[n]);
+        scene_free(s);
     }
     free(img);
 }
@@ -364,7 +388,10 @@ int main(int argc, char **argv)
     if (argc > 2 && strcmp(argv[1], "dump") == 0) return dump(argv[2], argc > 3 ? atoi(argv[3]) : 1);
     int quick = argc > 1 && strcmp(argv[1], "quick") == 0;
     test_sha256();
-    if (is_double() && !quick) test_book_digests();
+    if (is_double() && !quick) {
+        test_book_digests();
+        test_scene_files();
+    }
     test_strips();
     test_ground_sphere();
     test_csg_planes_triangles();

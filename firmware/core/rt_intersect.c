@@ -31,17 +31,20 @@ struct rt_ray rt_make_ray(vec3 o, vec3 d, int16_t origin, uint8_t from_camera)
     r.a = a;
     r.origin = origin;
     r.from_camera = from_camera;
+    /* find k from a alone (a/4 per halving), then scale once: exact */
     num ts = NUM_ONE;
-    int guard = 0;
-    while (a >= wnum_from_num(NUM_C(4.0)) && guard++ < 15) {
-        d = v3_scale(d, NUM_HALF);
-        ts = num_mul(ts, NUM_HALF);
+    wnum four = wnum_from_num(NUM_C(4.0)), quarter = wnum_from_num(NUM_C(0.25));
+    int k = 0;
+    for (wnum t = a; t >= four && k < 15; k++) t = wnum_mul(t, quarter);
+    if (k == 0)
+        for (wnum t = a; t < quarter && t > 0 && k > -8; k--) t = wnum_mul(t, four);
+    if (k > 0) {
+        ts = wnum_to_num_shr(wnum_from_num(NUM_ONE), k);
+        d = v3_scale(d, ts);
         a = v3_dot_wide(d, d);
-    }
-    guard = 0;
-    while (a < wnum_from_num(NUM_C(0.25)) && a > 0 && guard++ < 8) {
-        d = v3_scale(d, NUM_C(2.0));
-        ts = num_mul_int(ts, 2);
+    } else if (k < 0) {
+        ts = num_mul_int(NUM_ONE, 1 << -k);
+        d = v3_scale(d, ts);
         a = v3_dot_wide(d, d);
     }
     r.ds = d;
@@ -91,6 +94,9 @@ int intersect_ray_sphere(const struct rt_state *rt, int16_t obj, const struct rt
         return 1;
     }
     wnum c = (cam && ts == NUM_ONE) ? oc->c_cam : wnum_sub(v3_dot_wide(co, co), oc->r2);
+    /* outside (c > 0) and moving away (b <= 0): both roots are <= 0, which
+     * every caller rejects (t_min >= 0); skips the square root and divisions */
+    if (c > 0 && b <= 0) return 0;
     wnum disc = wnum_sub(wnum_mul(b, b), wnum_mul(a, c));
     if (disc < 0) return 0;
     wnum h = wnum_sqrt(disc);

@@ -21,8 +21,32 @@ FW_SCENE_SRCS ?= firmware/app/scenes_builtin.c
 FW_APP_SRCS  := firmware/app/main.c firmware/app/font5x7.c
 FW_HAL_SRCS  := hal/dcs.c $(sort $(wildcard hal/panel*.c))
 FW_CORE_SRCS := $(sort $(wildcard firmware/core/*.c))
-FW_COMMON    := $(FW_APP_SRCS) $(FW_HAL_SRCS) $(FW_CORE_SRCS) $(FW_SCENE_SRCS)
-FW_INC       := -I. -Ifirmware/core -Ifirmware/app -Ihal
+FW_COMMON    := $(FW_APP_SRCS) $(FW_HAL_SRCS) $(FW_CORE_SRCS)
+FW_INC       := -I. -Ifirmware/core -Ifirmware/app -Ihal -I$(FW_OUT)/scenes
+
+# ---- scenes compiled by tools/scenec -------------------------------------------
+# The book scenes of the "book" images (raytracer-02 and raster-11 by default),
+# compiled for the firmware's render size and strip height, and their table.
+# Built only when the scene compiler's source is present.
+FW_HAVE_SCENEC := $(if $(wildcard tools/scenec/scenec.c),1,)
+FW_BOOK_SCENES ?= book/raytracer-02 book/raster-11
+FW_STRIP_ROWS  ?= 8
+FW_SCENEC      := $(BUILD)/scenec
+fw_scene_id     = $(subst -,_,$(subst /,_,$(1)))
+FW_BOOK_SRCS   := $(foreach n,$(FW_BOOK_SCENES),$(FW_OUT)/scenes/$(call fw_scene_id,$(n)).c) \
+                  $(FW_OUT)/scenes/fw_scenes_book.c
+# $(1) = scene name (book/raytracer-02)
+define FW_SCENE
+$(FW_OUT)/scenes/$(call fw_scene_id,$(1)).c: firmware/scenes/$(1).scene $(FW_SCENEC)
+	@mkdir -p $$(@D)
+	$$(Q)$(FW_SCENEC) --size 240x240 --strip-rows $(FW_STRIP_ROWS) --id $(call fw_scene_id,$(1)) \
+		-o $$@ $$< >$$(@:.c=.log) || { cat $$(@:.c=.log); exit 2; }
+$(FW_OUT)/scenes/$(call fw_scene_id,$(1)).h: $(FW_OUT)/scenes/$(call fw_scene_id,$(1)).c
+endef
+$(foreach n,$(FW_BOOK_SCENES),$(eval $(call FW_SCENE,$(n))))
+$(FW_OUT)/scenes/fw_scenes_book.c: $(foreach n,$(FW_BOOK_SCENES),$(FW_OUT)/scenes/$(call fw_scene_id,$(n)).h) \
+                                   firmware/app/scene_table.sh
+	$(Q)firmware/app/scene_table.sh $@ $(foreach n,$(FW_BOOK_SCENES),$(n)=$(FW_OUT)/scenes/$(call fw_scene_id,$(n)).h)
 
 # ---- RP2040 ------------------------------------------------------------------
 RP_DIR   := firmware/board/rp2040
@@ -30,7 +54,7 @@ RP_SRCS  := $(RP_DIR)/crt0.c $(RP_DIR)/board.c $(RP_DIR)/fw_board_rp2040.c hal/r
             $(FW_COMMON)
 RP_ASM   := $(RP_DIR)/hwdiv.S
 RP_CFLAGS := -mcpu=cortex-m0plus -mthumb -O2 -g -std=c11 $(WARN) -ffunction-sections -fdata-sections \
-             -ffreestanding -fno-common -DNUM_MODE=1 -DRP2040_SYS_MHZ=$(RP2040_SYS_MHZ) \
+             -ffreestanding -fno-common -DNUM_MODE=1 -DRP2040_SYS_MHZ=$(RP2040_SYS_MHZ) -DFW_STRIP_ROWS=$(FW_STRIP_ROWS) \
              $(FW_INC) -I$(RP_DIR) -Ihal/rp2040 $(FW_PINS) $(FW_EXTRA)
 RP_LDFLAGS := -mcpu=cortex-m0plus -mthumb --specs=nano.specs -nostartfiles -T $(RP_DIR)/rp2040.ld \
               -Wl,--gc-sections -Wl,--no-warn-rwx-segments
@@ -44,7 +68,7 @@ $(FW_OUT)/pico/boot2.bin: $(FW_OUT)/pico/boot2.elf
 $(FW_OUT)/pico/boot2_crc.S: $(FW_OUT)/pico/boot2.bin tools/uf2/boot2crc.py
 	$(Q)$(PYTHON) tools/uf2/boot2crc.py $< $@
 
-# $(1) = image name, $(2) = extra flags
+# $(1) = image name, $(2) = extra flags, $(3) = scene table sources
 define RP_IMAGE
 $(FW_OUT)/pico/obj-$(1)/%.o: %.c
 	@mkdir -p $$(@D)
@@ -55,7 +79,7 @@ $(FW_OUT)/pico/obj-$(1)/%.o: %.S
 $(FW_OUT)/pico/obj-$(1)/boot2_crc.o: $(FW_OUT)/pico/boot2_crc.S
 	@mkdir -p $$(@D)
 	$$(Q)$$(ARM_CC) -mcpu=cortex-m0plus -mthumb -c $$< -o $$@
-$(FW_OUT)/pico/$(1).elf: $(patsubst %.c,$(FW_OUT)/pico/obj-$(1)/%.o,$(RP_SRCS)) \
+$(FW_OUT)/pico/$(1).elf: $(patsubst %.c,$(FW_OUT)/pico/obj-$(1)/%.o,$(RP_SRCS) $(3)) \
                          $(patsubst %.S,$(FW_OUT)/pico/obj-$(1)/%.o,$(RP_ASM)) \
                          $(FW_OUT)/pico/obj-$(1)/boot2_crc.o $(RP_DIR)/rp2040.ld
 	$$(Q)$$(ARM_CC) $$(RP_LDFLAGS) -Wl,-Map=$(FW_OUT)/pico/$(1).map \
@@ -65,10 +89,15 @@ $(FW_OUT)/pico/$(1).bin: $(FW_OUT)/pico/$(1).elf
 $(FW_OUT)/pico/$(1).uf2: $(FW_OUT)/pico/$(1).bin tools/uf2/uf2conv.py
 	$$(Q)$$(PYTHON) tools/uf2/uf2conv.py $$< $$@ --base 0x10000000 --family 0xE48BFF56
 endef
-$(eval $(call RP_IMAGE,cgfs,))
-$(eval $(call RP_IMAGE,cgfs-1core,-DRP2040_SINGLE_CORE=1))
+$(eval $(call RP_IMAGE,cgfs,,$(FW_SCENE_SRCS)))
+$(eval $(call RP_IMAGE,cgfs-1core,-DRP2040_SINGLE_CORE=1,$(FW_SCENE_SRCS)))
+# The book scenes: for the board, and for the emulator (one core, one frame
+# per scene so that a run reaches every scene quickly).
+$(eval $(call RP_IMAGE,cgfs-book,,$(FW_BOOK_SRCS)))
+$(eval $(call RP_IMAGE,cgfs-book-1core,-DRP2040_SINGLE_CORE=1 -DFW_WORK_CORES=1 -DFW_FRAMES_PER_SCENE=1,$(FW_BOOK_SRCS)))
 
-FW_RP_IMAGES := $(FW_OUT)/pico/cgfs.uf2 $(FW_OUT)/pico/cgfs-1core.uf2
+FW_RP_IMAGES := $(FW_OUT)/pico/cgfs.uf2 $(FW_OUT)/pico/cgfs-1core.uf2 \
+                $(if $(FW_HAVE_SCENEC),$(FW_OUT)/pico/cgfs-book.uf2 $(FW_OUT)/pico/cgfs-book-1core.uf2)
 
 .PHONY: firmware-pico
 firmware-pico: deps-firmware
@@ -84,10 +113,11 @@ STM32_NUM_MODE ?= float
 STM32_PINS ?=
 STM32_HSE_MHZ ?= 25
 ST_SRCS  := $(ST_DIR)/crt0.c $(ST_DIR)/board.c $(ST_DIR)/fw_board_stm32f411.c hal/stm32f4/hal_stm32f4.c \
-            $(FW_COMMON)
+            $(FW_COMMON) $(if $(FW_HAVE_SCENEC),$(FW_BOOK_SRCS),$(FW_SCENE_SRCS))
 ST_CPU   := -mcpu=cortex-m4 -mthumb -mfloat-abi=hard -mfpu=fpv4-sp-d16
 ST_CFLAGS := $(ST_CPU) -O2 -g -std=c11 $(WARN) -ffunction-sections -fdata-sections -ffreestanding \
              -fno-common -fno-math-errno -ffp-contract=off -DSTM32_HSE_MHZ=$(STM32_HSE_MHZ) \
+             -DFW_STRIP_ROWS=$(FW_STRIP_ROWS) -DFW_WORK_CORES=1 \
              $(FW_INC) -I$(ST_DIR) -Ihal/stm32f4 $(STM32_PINS) $(FW_EXTRA)
 ST_LDFLAGS := $(ST_CPU) --specs=nano.specs -nostartfiles -T $(ST_DIR)/stm32f411.ld \
               -Wl,--gc-sections -Wl,--no-warn-rwx-segments
@@ -159,6 +189,10 @@ $(FW_HOST_REF): $(call obj,host,none,tests/fw_host_ref.c) $(call obj,host,fixed,
 
 TEST_DEPS += $(RP2040SIM_DEPS) $(FW_HOST_REF) $(FW_OUT)/pico/cgfs-1core.elf $(FW_OUT)/pico/cgfs-1core.bin
 TESTS     += tests/test_rp2040sim.sh:$(BUILD)
+ifneq ($(FW_HAVE_SCENEC),)
+TEST_DEPS += $(FW_OUT)/pico/cgfs-book-1core.elf $(BUILD)/host_sim
+TESTS     += tests/test_rp2040sim_book.sh:$(BUILD)
+endif
 # The JavaScript panel (emu_panel.js) replays the vectors the C emulator
 # replays (test_panel_vectors), so the two decoders cannot drift apart.
 TESTS     += node:tools/rp2040sim/replay_vectors.js:tests/vectors/panel
@@ -167,8 +201,13 @@ TESTS     += node:tools/rp2040sim/replay_vectors.js:tests/vectors/panel
 # image (cycles at 133 MHz including SPI time), appended to results.jsonl.
 RP2040SIM_BENCH_FRAMES ?= 1
 .PHONY: bench-rp2040
-bench-rp2040: $(RP2040SIM_DEPS) $(FW_OUT)/pico/cgfs-1core.elf
+bench-rp2040: $(RP2040SIM_DEPS) $(FW_OUT)/pico/cgfs-1core.elf \
+              $(if $(FW_HAVE_SCENEC),$(FW_OUT)/pico/cgfs-book-1core.elf)
 	@mkdir -p $(BUILD)/bench
 	$(Q)node tools/rp2040sim/rp2040sim.js --image $(FW_OUT)/pico/cgfs-1core.elf \
 		--frames $(RP2040SIM_BENCH_FRAMES) --json >>$(BUILD)/bench/results.jsonl
+ifneq ($(FW_HAVE_SCENEC),)
+	$(Q)node tools/rp2040sim/rp2040sim.js --image $(FW_OUT)/pico/cgfs-book-1core.elf \
+		--frames $(words $(FW_BOOK_SCENES)) --json | tee -a $(BUILD)/bench/results.jsonl
+endif
 bench: bench-rp2040

@@ -14,6 +14,7 @@
 #include <sys/stat.h>
 #include <time.h>
 
+#include "host_sim/compare.h"
 #include "host_sim/core_api.h"
 #include "host_sim/imgio.h"
 #include "host_sim/panel_out.h"
@@ -248,20 +249,6 @@ static int core_render_memory(struct core *c, unsigned f, uint16_t *fb, uint8_t 
     return EXIT_OK;
 }
 
-/* PSNR (dB, over the three 8-bit channels) and largest channel difference. */
-static void compare_rgb(const uint8_t *a, const uint8_t *b, size_t n, double *psnr, int *max_err)
-{
-    double se = 0;
-    int mx = 0;
-    for (size_t i = 0; i < n; i++) {
-        int d = (int)a[i] - (int)b[i];
-        se += (double)(d * d);
-        if (abs(d) > mx) mx = abs(d);
-    }
-    *psnr = se == 0 ? INFINITY : 10.0 * log10(255.0 * 255.0 * (double)n / se);
-    *max_err = mx;
-}
-
 /* Everything allocated by run(), freed in one place. */
 struct bufs {
     uint16_t *strip, *fb, *ref_fb;
@@ -380,8 +367,7 @@ static int run(const struct opts *o, struct core *c, struct core *ref, struct pa
 
     if ((rc = panel_out_finish(*pp, err, sizeof err))) return fail(rc, "%s", err);
 
-    double psnr = 0;
-    int max_err = 0;
+    struct compare_result cmp = { 0 };
     if (o->compare) {
         if ((rc = core_open(ref, core_api_by_name(o->compare), o->scene))) return rc;
         if ((rc = core_init(ref, w, h, rows))) return rc;
@@ -391,11 +377,12 @@ static int run(const struct opts *o, struct core *c, struct core *ref, struct pa
         memset(b->ref_rgb, 0, npx * 3);
         for (unsigned f = 0; f < frames; f++)  /* animation state may carry over */
             if ((rc = core_render_memory(ref, f, b->ref_fb, b->ref_rgb))) return rc;
-        compare_rgb(b->rgb, b->ref_rgb, npx * 3, &psnr, &max_err);
+        compare_rgb888(b->rgb, b->ref_rgb, w, h, &cmp);
         if (o->stats) {
             printf(",\"compare\":\"%s\",", o->compare);
-            if (isinf(psnr)) printf("\"psnr\":null"); else printf("\"psnr\":%.2f", psnr);
-            printf(",\"max_err\":%d}\n", max_err);
+            if (isinf(cmp.psnr)) printf("\"psnr\":null"); else printf("\"psnr\":%.2f", cmp.psnr);
+            printf(",\"ssim\":%.5f,\"max_err\":%d,\"pct_diff\":%.3f,\"pct_within2\":%.3f}\n",
+                   cmp.ssim, cmp.max_err, cmp.pct_diff, cmp.pct_within2);
         }
     }
     fflush(stdout);
@@ -415,8 +402,9 @@ static int run(const struct opts *o, struct core *c, struct core *ref, struct pa
         printf("%-28s %4ux%-4u %-6s %-7s %9.1f ms", name, w, h, c->api->numeric, panel,
                (double)total_render_us / 1000.0 / frames);
         if (o->compare) {
-            if (isinf(psnr)) printf("  exact vs %s", o->compare);
-            else printf("  PSNR %.1f dB, max err %d vs %s", psnr, max_err, o->compare);
+            if (isinf(cmp.psnr)) printf("  exact vs %s", o->compare);
+            else printf("  PSNR %.1f dB, SSIM %.4f, max err %d, %.2f%% within 2 vs %s", cmp.psnr,
+                        cmp.ssim, cmp.max_err, cmp.pct_within2, o->compare);
         }
         putchar('\n');
     }

@@ -5,7 +5,7 @@
 # Its own sources are mode-independent ("none"); the renderer comes in as
 # the three core bundles of mk/core.mk.
 
-HOST_SIM_SRCS := host_sim/main.c host_sim/imgio.c host_sim/panel_out.c
+HOST_SIM_SRCS := host_sim/main.c host_sim/imgio.c host_sim/panel_out.c host_sim/compare.c
 
 # The panel path needs the HAL (mk/hal.mk: hal_objs, HAL_LDLIBS); without its
 # sources host_sim still builds, with --panel none only.

@@ -44,3 +44,13 @@ endef
 $(foreach v,$(VARIANTS),$(eval $(call RASTER_SCENES_PROG,$(v))))
 TESTS += $(BUILD)/host/tests/test_raster_scenes
 TEST_DEPS += $(BUILD)/host/tests/test_raster_scenes
+
+# `make bench`: raster-11 and raster-13 at 240x240 on the emulated Cortex-M0+
+# and M4F, fixed and float, book path and default path, per frame and per
+# drawn pixel (tools/bench/bench_raster.c; scenes as C data from scenec).
+BENCH_RAS_SCENES := $(BUILD)/scenes/book/raster-11.c $(BUILD)/scenes/book/raster-13.c
+BENCH_RAS_SRCS   := tools/bench/bench_raster.c $(BENCH_RAS_SCENES) $(CORE_SRCS)
+$(foreach t,$(BENCH_TARGETS),$(foreach m,fixed float,\
+  $(call bench_image,raster,$(t),$(m),$(BENCH_RAS_SRCS),-I$(BUILD)/scenes)\
+  $(eval BENCH_IMAGES += $(BUILD)/bench/$(t)/$(m)/raster.elf)\
+  $(eval $(BUILD)/bench/$(t)/$(m)/raster.objs/tools/bench/bench_raster.o: $(BENCH_RAS_SCENES))))

@@ -145,6 +145,19 @@ firmware-stm32f411: deps-firmware
 firmware: firmware-pico firmware-stm32f411
 	$(Q)$(ARM_SIZE) $(FW_RP_IMAGES:.uf2=.elf) $(FW_ST_IMAGES:.bin=.elf) $(FW_EXTRA_ELFS)
 
+# ---- the renderer core alone on the qemu benchmark boards (mk/bench.mk) ----------
+# Instructions per frame of the book scenes: Cortex-M4F (mps2-an386) fixed vs
+# float, and Cortex-M0+ code (mps2-an385) in fixed point.
+ifneq ($(FW_HAVE_SCENEC),)
+FW_BENCH_SRCS := firmware/app/bench_frame.c $(FW_CORE_SRCS) $(FW_BOOK_SRCS)
+FW_BENCH_FLAGS := -Ifirmware/app -I$(FW_OUT)/scenes -DFW_STRIP_ROWS=$(FW_STRIP_ROWS) -DFW_WORK_CORES=1
+$(call bench_image,frame,m4f-qemu,fixed,$(FW_BENCH_SRCS),$(FW_BENCH_FLAGS))
+$(call bench_image,frame,m4f-qemu,float,$(FW_BENCH_SRCS),$(FW_BENCH_FLAGS))
+$(call bench_image,frame,m0plus-qemu,fixed,$(FW_BENCH_SRCS),$(FW_BENCH_FLAGS))
+BENCH_IMAGES += $(BUILD)/bench/m4f-qemu/fixed/frame.elf $(BUILD)/bench/m4f-qemu/float/frame.elf \
+                $(BUILD)/bench/m0plus-qemu/fixed/frame.elf
+endif
+
 # ---- flasher (host) --------------------------------------------------------------
 # build/flasher links the real libusb transport; tests drive the same sequence
 # through a fake transport (tests/test_flasher.c).

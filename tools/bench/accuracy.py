@@ -1,0 +1,65 @@
+#!/usr/bin/env python3
+"""Adds size and accuracy fields to the scene lines of results.jsonl.
+
+Every `scene:NAME` measurement gets `width` and `height` (from a `@WxH` suffix
+of the name, else the 240x240 panel size the benchmarks render at) and, when
+firmware/scenes/NAME.scene exists, the accuracy of that scene in that numeric
+mode against the double build of the same scene at the same size:
+`psnr` (dB, null when identical), `ssim`, `max_err`, `pct_diff`, from
+`host_sim --compare double`. Accuracy is of the scene as written (its own
+options), stated in `accuracy_of`. The file is rewritten atomically.
+usage: accuracy.py RESULTS.jsonl HOST_SIM [SCENES_DIR]
+"""
+import json
+import os
+import re
+import sys
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "charts"))
+from stability import host_sim_compare  # noqa: E402
+
+
+def main():
+    results, host_sim = sys.argv[1], sys.argv[2]
+    scenes = sys.argv[3] if len(sys.argv) > 3 else "firmware/scenes"
+    with open(results) as f:
+        lines = [json.loads(l) for l in f if l.strip()]
+    cache = {}
+    for l in lines:
+        what = l.get("what", "")
+        if not what.startswith("scene:"):
+            continue
+        name = what[len("scene:"):]
+        m = re.search(r"@(\d+)x(\d+)$", name)
+        if m:
+            name = name[:m.start()]
+        l.setdefault("width", int(m.group(1)) if m else 240)
+        l.setdefault("height", int(m.group(2)) if m else 240)
+        path = os.path.join(scenes, name + ".scene")
+        numeric = l.get("numeric", "fixed")
+        if not os.path.exists(path) or numeric not in ("fixed", "float", "double"):
+            continue
+        key = (path, numeric, l["width"], l["height"])
+        if key not in cache:
+            try:
+                cache[key] = host_sim_compare(host_sim, path, numeric, "%dx%d" % (l["width"], l["height"]))
+            except RuntimeError as e:
+                print("accuracy: %s: %s" % (path, e), file=sys.stderr)
+                cache[key] = None
+        s = cache[key]
+        if s is None:
+            continue
+        for k in ("psnr", "ssim", "max_err", "pct_diff"):
+            l[k] = s.get(k)
+        l["accuracy_of"] = "scene as written, vs double"
+    tmp = results + ".tmp"
+    with open(tmp, "w") as f:
+        for l in lines:
+            f.write(json.dumps(l) + "\n")
+    os.replace(tmp, results)
+    print("accuracy: %d scene measurements, %d scene/mode/size renders compared" %
+          (sum(1 for l in lines if l.get("what", "").startswith("scene:")), len(cache)))
+
+
+if __name__ == "__main__":
+    main()

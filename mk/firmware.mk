@@ -164,13 +164,19 @@ endif
 USB_CFLAGS := $(shell pkg-config --cflags libusb-1.0 2>/dev/null)
 USB_LIBS   := $(shell pkg-config --libs libusb-1.0 2>/dev/null || echo -lusb-1.0)
 FLASHER_CORE := tools/flasher/picoboot.c tools/flasher/image.c
-FLASHER_SRCS := $(FLASHER_CORE) tools/flasher/usb_libusb.c tools/flasher/main.c
+FLASHER_SRCS := $(FLASHER_CORE) tools/flasher/usb_libusb.c tools/flasher/gpio_reset.c tools/flasher/main.c
 FLASHER_BIN  := $(BUILD)/flasher
+# --gpio-reset (Raspberry Pi host) with libgpiod when pkg-config finds it;
+# without it the option says so and exits 2.
+GPIOD_OK     := $(shell pkg-config --exists libgpiod 2>/dev/null && echo 1)
+FLASHER_GPIOD_CFLAGS := $(if $(GPIOD_OK),-DFLASHER_GPIOD $(shell pkg-config --cflags libgpiod))
+FLASHER_GPIOD_LIBS   := $(if $(GPIOD_OK),$(shell pkg-config --libs libgpiod))
 $(BUILD)/host/none/tools/flasher/%.o $(BUILD)/asan/none/tools/flasher/%.o: EXTRA_CFLAGS += -Itools/flasher $(USB_CFLAGS)
+$(BUILD)/host/none/tools/flasher/gpio_reset.o $(BUILD)/asan/none/tools/flasher/gpio_reset.o: EXTRA_CFLAGS += $(FLASHER_GPIOD_CFLAGS)
 $(BUILD)/asan/none/tests/test_flasher.o: EXTRA_CFLAGS += -Itools/flasher -Itests
 
 $(FLASHER_BIN): $(call obj,host,none,$(FLASHER_SRCS))
-	$(Q)$(CC) $(LDFLAGS_host) $^ $(USB_LIBS) -o $@
+	$(Q)$(CC) $(LDFLAGS_host) $^ $(USB_LIBS) $(FLASHER_GPIOD_LIBS) -o $@
 $(BUILD)/asan/tests/test_flasher: $(call obj,asan,none,$(FLASHER_CORE) tests/test_flasher.c)
 	@mkdir -p $(@D)
 	$(Q)$(CC) $(LDFLAGS_asan) $^ -o $@
@@ -178,6 +184,17 @@ $(BUILD)/asan/tests/test_flasher: $(call obj,asan,none,$(FLASHER_CORE) tests/tes
 PROGRAMS  += $(FLASHER_BIN)
 TEST_DEPS += $(FLASHER_BIN) $(BUILD)/asan/tests/test_flasher
 TESTS     += $(BUILD)/asan/tests/test_flasher tests/test_flasher_noboard.sh:$(BUILD)
+
+# The GPIO reset sequence against a fake libgpiod (the test defines the
+# gpiod functions; needs only the header).
+ifneq ($(GPIOD_OK),)
+$(BUILD)/asan/none/tests/test_gpio_reset.o: EXTRA_CFLAGS += -Itools/flasher -Itests $(FLASHER_GPIOD_CFLAGS)
+$(BUILD)/asan/tests/test_gpio_reset: $(call obj,asan,none,tools/flasher/gpio_reset.c tests/test_gpio_reset.c)
+	@mkdir -p $(@D)
+	$(Q)$(CC) $(LDFLAGS_asan) $^ -o $@
+TEST_DEPS += $(BUILD)/asan/tests/test_gpio_reset
+TESTS     += $(BUILD)/asan/tests/test_gpio_reset
+endif
 
 # `make flash`: the two-core image through the flasher (FLASH_IMAGE to override).
 FLASH_IMAGE ?= $(FW_OUT)/pico/cgfs.uf2

@@ -1,12 +1,19 @@
 /* main.c — build/flasher: writes a UF2 or .bin image to an RP2040 in
  * BOOTSEL mode over USB (PICOBOOT), verifies it, then reboots the board.
  *
- * usage: flasher [--no-reboot] [--base ADDR] FILE.uf2|FILE.bin
+ * usage: flasher [--no-reboot] [--base ADDR] [--gpio-reset [--gpio-chip CHIP]
+ *                [--run-pin N] [--bootsel-pin N]] FILE.uf2|FILE.bin
+ * --gpio-reset first puts the Pico into its boot ROM through a Raspberry Pi's
+ * GPIO lines (gpio_reset.h), then waits up to 5 s for the boot ROM's USB
+ * device.
  * Exit status: 0 flashed and verified; 2 any error (one line on stderr). */
+#define _POSIX_C_SOURCE 200809L
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 #include <unistd.h>
+#include <time.h>
+#include "gpio_reset.h"
 #include "image.h"
 #include "picoboot.h"
 #include "usb_libusb.h"
@@ -23,26 +30,83 @@ static int die(const char *msg)
     return 2;
 }
 
+#define USAGE "usage: flasher [--no-reboot] [--base ADDR] [--gpio-reset [--gpio-chip CHIP] " \
+              "[--run-pin N] [--bootsel-pin N]] FILE.uf2|FILE.bin"
+
+/* After a GPIO reset the boot ROM needs a moment to enumerate on USB: the
+ * open is retried while no device is found, for up to 5 s. */
+struct wait_open {
+    struct pb_transport inner;
+};
+
+static int wait_open(void *ctx, char *detail, size_t detail_len)
+{
+    struct wait_open *w = ctx;
+    int rc = PB_OPEN_NODEV;
+    for (int i = 0; i < 50; i++) {
+        rc = w->inner.open(w->inner.ctx, detail, detail_len);
+        if (rc != PB_OPEN_NODEV) break;
+        struct timespec ts = { 0, 100000000L };
+        nanosleep(&ts, NULL);
+    }
+    return rc;
+}
+static int wait_out(void *ctx, const uint8_t *d, size_t n)
+{
+    struct wait_open *w = ctx;
+    return w->inner.bulk_out(w->inner.ctx, d, n);
+}
+static int wait_in(void *ctx, uint8_t *d, size_t n)
+{
+    struct wait_open *w = ctx;
+    return w->inner.bulk_in(w->inner.ctx, d, n);
+}
+static void wait_close(void *ctx)
+{
+    struct wait_open *w = ctx;
+    w->inner.close(w->inner.ctx);
+}
+
+/* A line offset 0..1023. */
+static int pin_arg(const char *s, unsigned *out)
+{
+    char *end;
+    unsigned long v = strtoul(s, &end, 10);
+    if (!*s || *end || v > 1023) return -1;
+    *out = (unsigned)v;
+    return 0;
+}
+
 int main(int argc, char **argv)
 {
-    int reboot = 1;
+    int reboot = 1, gpio = 0;
+    struct gpio_reset_cfg gcfg = GPIO_RESET_DEFAULTS;
     uint32_t base = PB_FLASH_BASE;
     const char *file = NULL;
     for (int i = 1; i < argc; i++) {
         if (strcmp(argv[i], "--no-reboot") == 0) {
             reboot = 0;
+        } else if (strcmp(argv[i], "--gpio-reset") == 0) {
+            gpio = 1;
+        } else if (strcmp(argv[i], "--gpio-chip") == 0 && i + 1 < argc) {
+            gcfg.chip = argv[++i];
+        } else if (strcmp(argv[i], "--run-pin") == 0 && i + 1 < argc) {
+            if (pin_arg(argv[++i], &gcfg.run_pin)) return die("--run-pin needs a line number 0..1023");
+        } else if (strcmp(argv[i], "--bootsel-pin") == 0 && i + 1 < argc) {
+            if (pin_arg(argv[++i], &gcfg.bootsel_pin))
+                return die("--bootsel-pin needs a line number 0..1023");
         } else if (strcmp(argv[i], "--base") == 0 && i + 1 < argc) {
             char *end;
             unsigned long v = strtoul(argv[++i], &end, 0);
             if (*end || v > 0xFFFFFFFFul) return die("--base needs a number");
             base = (uint32_t)v;
         } else if (argv[i][0] == '-' || file) {
-            return die("usage: flasher [--no-reboot] [--base ADDR] FILE.uf2|FILE.bin");
+            return die(USAGE);
         } else {
             file = argv[i];
         }
     }
-    if (!file) return die("usage: flasher [--no-reboot] [--base ADDR] FILE.uf2|FILE.bin");
+    if (!file) return die(USAGE);
 
     FILE *f = fopen(file, "rb");
     if (!f) {
@@ -66,6 +130,15 @@ int main(int argc, char **argv)
     }
     struct pb_transport t;
     usb_libusb_transport(&t);
+    static struct wait_open w;
+    if (gpio) {
+        if (gpio_reset_bootsel(&gcfg, err, sizeof err) != 0) {
+            image_free(&img);
+            return die(err);
+        }
+        w.inner = t;
+        t = (struct pb_transport){ &w, wait_open, wait_out, wait_in, wait_close };
+    }
     int rc = pb_flash(&t, &img, reboot, err, sizeof err, isatty(2) ? progress : NULL);
     image_free(&img);
     if (isatty(2)) fputc('\n', stderr);

@@ -1,5 +1,39 @@
 /* num_ras.c — mode-specific rasterizer primitives (see num_ras.h). */
 #include "num_ras.h"
+#if NUM_MODE == NUM_MODE_FIXED
+#include "num_int.h"
+/* 64/32 divisions through num_udiv64_32 (table + Newton, exact) where the
+ * library's 64-bit divide is a bit loop: ARMv6-M has no divide instruction.
+ * ARMv7-M's __aeabi_uldivmod uses UDIV and measured faster there (make
+ * bench); the host takes this path too so the tests cover it. Both give
+ * the same bits. */
+#if defined(__ARM_ARCH_6M__) || !defined(__arm__)
+#define RAS_DIV64_32 1
+#else
+#define RAS_DIV64_32 0
+#endif
+#endif
+
+int64_t ras_floordiv(int64_t n, int64_t d, int64_t *rem)
+{
+#if NUM_MODE == NUM_MODE_FIXED && RAS_DIV64_32
+    if (d <= (int64_t)UINT32_MAX) {
+        uint64_t un = n < 0 ? (uint64_t)0 - (uint64_t)n : (uint64_t)n;
+        if ((un >> 32) < (uint64_t)d) {
+            uint32_t r;
+            int64_t q = num_udiv64_32(un, (uint32_t)d, &r);
+            if (n >= 0) { *rem = r; return q; }
+            if (r == 0) { *rem = 0; return -q; }
+            *rem = d - r;
+            return -q - 1;
+        }
+    }
+#endif
+    int64_t q = n / d, r = n % d;
+    if (r < 0) { q--; r += d; }
+    *rem = r;
+    return q;
+}
 
 #if NUM_MODE == NUM_MODE_FIXED
 
@@ -11,9 +45,7 @@ void ras_interp_init(struct ras_interp *it, num i0, num d0, num i1, num d1)
     it->den = (int64_t)i1 - i0;
     if (it->den <= 0) { it->den = 1; it->rem = 0; return; }
     int64_t numer = ((int64_t)d1 - d0) * NUM_ONE_RAW; /* |.| < 2^48 */
-    it->q = numer / it->den;
-    it->r = numer % it->den;
-    if (it->r < 0) { it->q -= 1; it->r += it->den; }
+    it->q = ras_floordiv(numer, it->den, &it->r);
     it->rem = it->den / 2; /* rounds k*q to nearest */
 }
 
@@ -50,7 +82,11 @@ num ras_ratio(int64_t p, int64_t q)
         q >>= s;
         if (q == 0) return neg ? NUM_MIN : NUM_MAX;
     }
-    uint64_t r = ((up << NUM_FRAC) + (uint64_t)q / 2) / (uint64_t)q;
+    uint64_t n = (up << NUM_FRAC) + (uint64_t)q / 2, r;
+    if (RAS_DIV64_32 && (uint64_t)q <= UINT32_MAX)
+        r = (n >> 32) >= (uint64_t)q ? (uint64_t)INT32_MAX : num_udiv64_32(n, (uint32_t)q, 0);
+    else
+        r = n / (uint64_t)q;
     if (r > (uint64_t)INT32_MAX) r = INT32_MAX;
     return neg ? -(num)r : (num)r;
 }
@@ -71,8 +107,9 @@ num ras_project(num x, num d, num z, num cw, num vw)
 uint32_t ras_depth32(num near_z, num z)
 {
     if (z <= 0 || z <= near_z) return UINT32_MAX;
-    uint64_t v = ((uint64_t)(uint32_t)near_z << 32) / (uint64_t)(uint32_t)z;
-    return v > UINT32_MAX ? UINT32_MAX : (uint32_t)v;
+    /* near < z: the quotient fits 32 bits */
+    uint64_t n = (uint64_t)(uint32_t)near_z << 32;
+    return RAS_DIV64_32 ? num_udiv64_32(n, (uint32_t)z, 0) : (uint32_t)(n / (uint32_t)z);
 }
 
 #else

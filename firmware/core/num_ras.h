@@ -53,6 +53,11 @@ int32_t ras_count_index(num a, num a0, int32_t k);
  * bits (edge functions in sub-pixel units). */
 num ras_ratio(int64_t p, int64_t q);
 
+/* floor(n / d) for d > 0, *rem = n - floor(n/d)*d in [0, d). Integers of
+ * up to 62 bits (edge-function sums). Fixed point avoids the library's
+ * 64-bit divide when the quotient and d fit 32 bits. */
+int64_t ras_floordiv(int64_t n, int64_t d, int64_t *rem);
+
 /* near/z as an unsigned 32-bit fraction, floor(near/z * (2^32 - 1)), for
  * z >= near > 0 (z < near gives 2^32 - 1, z <= 0 gives 2^32 - 1).
  * Fixed point: exact from the Q15.16 inputs. float: 24 significant bits. */

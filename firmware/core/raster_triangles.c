@@ -205,16 +205,22 @@ uint32_t ras_fill_triangle(struct ras_ctx *rc, const struct ras_sv *v0, const st
         da2[j] = num_sub(v2->a[j], v0->a[j]);
     }
     int64_t dd1 = (int64_t)v1->depth - v0->depth, dd2 = (int64_t)v2->depth - v0->depth;
+    /* near/z is affine in screen space: dz = (dd1*w1 + dd2*w2)/area exactly,
+     * truncated toward zero. The numerator is linear in the column, so the
+     * quotient steps by a fixed quotient + remainder (no divide per pixel). */
+    int64_t sq = 0, sr = 0;
+    if (o->depth_test) sq = ras_floordiv(dd1 * a1 + dd2 * a2, area, &sr);
 
     for (int32_t r = r0; r <= r1; r++) {
         int64_t w0 = w0r, w1 = w1r, w2 = w2r;
+        int64_t zq = 0, zr = 0;
+        if (o->depth_test) zq = ras_floordiv(dd1 * w1 + dd2 * w2, area, &zr);
         for (int32_t c = c0; c <= c1; c++) {
             if (w0 + b0 >= 0 && w1 + b1 >= 0 && w2 + b2 >= 0) {
                 size_t di = (size_t)(r - t->y0) * rc->w + (size_t)c;
                 int pass = 1;
                 if (o->depth_test) {
-                    /* near/z is affine in screen space: exact integer barycentrics */
-                    int64_t dz = (dd1 * w1 + dd2 * w2) / area;
+                    int64_t dz = zq + (zq < 0 && zr != 0);   /* floor -> toward zero */
                     int64_t d = (int64_t)v0->depth + dz;
                     if (d < 0) d = 0;
                     if (d > (int64_t)UINT32_MAX) d = UINT32_MAX;
@@ -245,6 +251,8 @@ uint32_t ras_fill_triangle(struct ras_ctx *rc, const struct ras_sv *v0, const st
                 }
             }
             w0 += a0; w1 += a1; w2 += a2;
+            zq += sq; zr += sr;
+            if (zr >= area) { zq++; zr -= area; }
         }
         w0r += bb0; w1r += bb1; w2r += bb2;
     }

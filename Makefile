@@ -58,6 +58,8 @@ TEST_DEPS :=
 BENCH_DEPS :=
 
 .PHONY: all run test firmware bench charts flash clean deps deps-test deps-firmware
+# Keep intermediate objects (test objects built through pattern rules).
+.SECONDARY:
 all: programs
 
 include $(sort $(wildcard mk/*.mk))

@@ -8,7 +8,7 @@
 static size_t al(size_t n) { return (n + (ALIGN - 1)) & ~(size_t)(ALIGN - 1); }
 
 struct layout {
-    size_t ctx, inst, verts, tri_rows, prim_rows, line_rows, lights, mips, mipmem, depth, total;
+    size_t ctx, inst, verts, tri_rows, prim_rows, line_rows, lights, mips, mipmem, depth, adj, smap, stencil, total;
     uint32_t nverts, ntris;
 };
 
@@ -41,6 +41,9 @@ static int make_layout(const struct scene *s, uint16_t w, uint16_t strip_rows, s
     if (!s->ras.book_exact)
         for (uint16_t i = 0; i < s->ntextures; i++) off += al(ras_mips_size(&s->textures[i]));
     L->depth = off; off += al((size_t)depth_bytes(s) * w * strip_rows);
+    L->adj = off; off += al(ras_ch15_adj_size(s, L->ntris));
+    L->smap = off; off += al(ras_ch15_smap_size(s));
+    L->stencil = off; off += al(ras_ch15_stencil_size(s, w, strip_rows));
     L->total = off + ALIGN; /* slack to align the caller's pointer */
     return 0;
 }
@@ -86,6 +89,9 @@ int raster_init(struct render_ctx *ctx)
     rc->lights = (struct ras_light *)(void *)(base + L.lights);
     rc->mips = (struct ras_mips *)(void *)(base + L.mips);
     rc->depth = base + L.depth;
+    rc->adj = (uint16_t *)(void *)(base + L.adj);
+    rc->smap = (uint16_t *)(void *)(base + L.smap);
+    rc->stencil = base + L.stencil;
 
     /* the render size's canvas: viewport height kept, width by aspect */
     rc->cw = num_from_int(rc->w);
@@ -106,6 +112,7 @@ int raster_init(struct render_ctx *ctx)
         ras_mips_build(&s->textures[i], &rc->mips[i], n ? mm : NULL);
         mm += al(n);
     }
+    ras_ch15_init(rc);
     return 0;
 }
 
@@ -276,6 +283,7 @@ int raster_begin_frame(struct render_ctx *ctx, uint16_t frame)
         vb += m->nverts;
         tb += m->ntris;
     }
+    ras_ch15_frame(rc);
     return 0;
 }
 
@@ -399,21 +407,42 @@ struct def_tri {
     int shading, tex;
     int ai_i, ai_n, ai_uv;   /* attribute slots */
     num lod_base, iz_eff;    /* trilinear: texels^2 per pixel at depth 1/iz_eff */
+    int nmap;                /* normal map texture, -1: none */
+    vec3 tan_u, tan_v;       /* unit tangents along +u and toward the image's top (-v) */
 };
+
+/* Chapter 15 at one pixel (Phong): normal map, shadows, environment. */
+static rgb ch15_pixel(struct ras_ctx *rc, const struct def_tri *dt, int col, int row, vec3 p, vec3 n, const num *a, rgb c)
+{
+    n = v3_normalize(n);
+    if (dt->nmap >= 0) {
+        /* tangent-space normal: channel/127.5 - 1, red along +u, green toward the image's top */
+        rgb t = ras_sample(rc, dt->nmap, a[dt->ai_uv], a[dt->ai_uv + 1], NUM_ZERO);
+        num tx = num_sub(num_div_int(num_mul_int(t.r, 2), 255), NUM_ONE);
+        num ty = num_sub(num_div_int(num_mul_int(t.g, 2), 255), NUM_ONE);
+        num tz = num_sub(num_div_int(num_mul_int(t.b, 2), 255), NUM_ONE);
+        n = v3_normalize(v3_add(v3_add(v3_scale(dt->tan_u, tx), v3_scale(dt->tan_v, ty)), v3_scale(n, tz)));
+    }
+    num vis = NUM_ONE;
+    if (rc->sm_on) vis = ras_shadow_map_vis(rc, p, n);
+    if (rc->sv_on && rc->stencil[(size_t)(row - rc->t->y0) * rc->w + (size_t)col]) vis = NUM_ZERO;
+    num i = compute_illumination_vis(rc, p, n, dt->spec, rc->sh_light, vis);
+    c = rgb_scale(c, i);
+    if (rc->env_on) {
+        /* mirror direction of the view ray about n */
+        vec3 d = v3_normalize(p);
+        vec3 r = v3_sub(d, v3_scale(n, num_mul_int(v3_dot(d, n), 2)));
+        rgb e = ras_env_colour(rc, r);
+        num k = rc->env_k, k1 = num_sub(NUM_ONE, k);
+        c = rgb_make(num_add(num_mul(c.r, k1), num_mul(e.r, k)), num_add(num_mul(c.g, k1), num_mul(e.g, k)),
+                     num_add(num_mul(c.b, k1), num_mul(e.b, k)));
+    }
+    return c;
+}
 
 static void default_pixel(struct ras_ctx *rc, int col, int row, const num *a, num z, void *ud)
 {
     const struct def_tri *dt = ud;
-    num i = NUM_ONE;
-    if (dt->shading == SHADE_FLAT) i = dt->flat_i;
-    else if (dt->shading == SHADE_GOURAUD) i = a[dt->ai_i];
-    else if (dt->shading == SHADE_PHONG) {
-        /* the pixel centre, unprojected at its depth */
-        num cx = num_add(num_from_int(col - rc->w / 2), NUM_HALF);
-        num cy = num_sub(num_from_int(rc->h / 2 - row), NUM_HALF);
-        vec3 p = v3(num_div(num_mul(cx, z), rc->unproj), num_div(num_mul(cy, z), rc->unproj), z);
-        i = compute_illumination(rc, p, v3(a[dt->ai_n], a[dt->ai_n + 1], a[dt->ai_n + 2]), dt->spec);
-    }
     rgb c = dt->color;
     if (dt->tex >= 0) {
         num lod = NUM_ZERO;
@@ -422,6 +451,21 @@ static void default_pixel(struct ras_ctx *rc, int col, int row, const num *a, nu
             lod = num_mul(ras_log2(num_mul(dt->lod_base, num_mul(zr, zr))), NUM_HALF);
         }
         c = ras_sample(rc, dt->tex, a[dt->ai_uv], a[dt->ai_uv + 1], lod);
+    }
+    num i = NUM_ONE;
+    if (dt->shading == SHADE_FLAT) i = dt->flat_i;
+    else if (dt->shading == SHADE_GOURAUD) i = a[dt->ai_i];
+    else if (dt->shading == SHADE_PHONG) {
+        /* the pixel centre, unprojected at its depth */
+        num cx = num_add(num_from_int(col - rc->w / 2), NUM_HALF);
+        num cy = num_sub(num_from_int(rc->h / 2 - row), NUM_HALF);
+        vec3 p = v3(num_div(num_mul(cx, z), rc->unproj), num_div(num_mul(cy, z), rc->unproj), z);
+        vec3 n = v3(a[dt->ai_n], a[dt->ai_n + 1], a[dt->ai_n + 2]);
+        if (dt->nmap >= 0 || rc->sm_on || rc->sv_on || rc->env_on) {
+            ras_put(rc, col, row, ch15_pixel(rc, dt, col, row, p, n, a, c));
+            return;
+        }
+        i = compute_illumination(rc, p, n, dt->spec);
     }
     if (dt->shading != SHADE_NONE) c = rgb_scale(c, i);
     ras_put(rc, col, row, c);
@@ -448,11 +492,29 @@ static void default_render_triangle(struct ras_ctx *rc, const struct ras_instanc
     dt.tex = (in->texture >= 0 && in->texture < rc->s->ntextures && m->has_uvs) ? in->texture : -1;
     dt.flat_i = NUM_ONE;
     dt.ai_i = dt.ai_n = dt.ai_uv = 0;
+    dt.nmap = -1;
+    if (o->shading == SHADE_PHONG && in->normal_map >= 0 && in->normal_map < rc->s->ntextures && m->has_uvs) {
+        /* tangents from the uv derivatives of this triangle */
+        vec3 e1 = v3_sub(V[1], V[0]), e2 = v3_sub(V[2], V[0]);
+        num du1 = num_sub(t->uv[1].u, t->uv[0].u), dv1 = num_sub(t->uv[1].v, t->uv[0].v);
+        num du2 = num_sub(t->uv[2].u, t->uv[0].u), dv2 = num_sub(t->uv[2].v, t->uv[0].v);
+        num det = num_sub(num_mul(du1, dv2), num_mul(du2, dv1));
+        if (det != 0) {
+            dt.nmap = in->normal_map;
+            /* dP/du and dP/dv up to the common factor 1/det (its sign kept) */
+            vec3 pu = v3_sub(v3_scale(e1, dv2), v3_scale(e2, dv1));
+            vec3 pv = v3_sub(v3_scale(e2, du1), v3_scale(e1, du2));
+            if (det < 0) { pu = v3_neg(pu); pv = v3_neg(pv); }
+            dt.tan_u = v3_normalize(pu);
+            dt.tan_v = v3_normalize(v3_neg(pv));
+        }
+    }
     struct ras_cv cin[3], poly[RAS_CLIP_MAX];
     int na = 0;
     if (o->shading == SHADE_GOURAUD) dt.ai_i = na++;
     if (o->shading == SHADE_PHONG) { dt.ai_n = na; na += 3; }
-    if (dt.tex >= 0) { dt.ai_uv = na; na += 2; }
+    int uv = dt.tex >= 0 || dt.nmap >= 0;
+    if (uv) { dt.ai_uv = na; na += 2; }
     for (int k = 0; k < 3; k++) {
         cin[k].p = V[k];
         if (o->shading == SHADE_GOURAUD) cin[k].a[dt.ai_i] = compute_illumination(rc, V[k], N[k], dt.spec);
@@ -460,7 +522,7 @@ static void default_render_triangle(struct ras_ctx *rc, const struct ras_instanc
             vec3 n = v3_normalize(N[k]);
             cin[k].a[dt.ai_n] = n.x; cin[k].a[dt.ai_n + 1] = n.y; cin[k].a[dt.ai_n + 2] = n.z;
         }
-        if (dt.tex >= 0) { cin[k].a[dt.ai_uv] = t->uv[k].u; cin[k].a[dt.ai_uv + 1] = t->uv[k].v; }
+        if (uv) { cin[k].a[dt.ai_uv] = t->uv[k].u; cin[k].a[dt.ai_uv + 1] = t->uv[k].v; }
     }
     if (o->shading == SHADE_FLAT) {
         vec3 centre = v3(num_div_int(num_add(num_add(V[0].x, V[1].x), V[2].x), 3),
@@ -495,7 +557,7 @@ static void default_render_triangle(struct ras_ctx *rc, const struct ras_instanc
             }
             dt.iz_eff = num_div_int(num_add(num_add(a->iz, b->iz), c->iz), 3);
         }
-        ras_fill_triangle(rc, a, b, c, na, default_pixel, &dt);
+        ras_fill_triangle(rc, a, b, c, na, rc->depth_only ? NULL : default_pixel, &dt);
     }
 }
 
@@ -543,17 +605,26 @@ int raster_strip(struct render_ctx *ctx, struct render_target *t, struct render_
         project_vertex(rc, s->lines[i].b, &bx, &by);
         draw_line(rc, ax, ay, bx, by, s->lines[i].color);
     }
-    for (uint16_t i = 0; i < s->ninstances; i++) {
-        const struct ras_instance *in = &s->instances[i];
-        const struct ras_inst *ri = &rc->inst[i];
-        const struct ras_model *m = &s->models[in->model];
-        if (!ri->visible) continue;
-        for (uint16_t k = 0; k < m->ntris; k++) {
-            if (!rows_hit(rc->tri_rows[ri->tbase + k], t)) continue;
-            if (rc->book || s->ras.wireframe) book_render_triangle(rc, in, ri, m, &m->tris[k]);
-            else default_render_triangle(rc, in, ri, m, &m->tris[k]);
+    /* shadow volumes: depth pass, the volumes into the stencil, then
+     * shading where the depth equals the visible surface's */
+    for (int pass = rc->sv_on ? 0 : 2; pass < 3; pass++) {
+        if (pass == 1) { ras_shadow_volumes(rc); continue; }
+        rc->depth_only = (uint8_t)(pass == 0);
+        rc->depth_func = (uint8_t)(rc->sv_on && pass == 2 ? RAS_DEPTH_EQUAL : RAS_DEPTH_LESS_WRITE);
+        for (uint16_t i = 0; i < s->ninstances; i++) {
+            const struct ras_instance *in = &s->instances[i];
+            const struct ras_inst *ri = &rc->inst[i];
+            const struct ras_model *m = &s->models[in->model];
+            if (!ri->visible) continue;
+            for (uint16_t k = 0; k < m->ntris; k++) {
+                if (!rows_hit(rc->tri_rows[ri->tbase + k], t)) continue;
+                if (rc->book || s->ras.wireframe) book_render_triangle(rc, in, ri, m, &m->tris[k]);
+                else default_render_triangle(rc, in, ri, m, &m->tris[k]);
+            }
         }
     }
+    rc->depth_only = 0;
+    rc->depth_func = RAS_DEPTH_LESS_WRITE;
     if (t->y0 == 0) {
         st->triangles_in += rc->tris_in;
         st->triangles_drawn += rc->tris_drawn;

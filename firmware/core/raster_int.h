@@ -52,10 +52,32 @@ struct ras_ctx {
     struct ras_light *lights;
     struct ras_mips *mips;   /* per texture */
     uint8_t *depth;          /* strip_rows * w entries */
+    /* depth test of ras_fill_triangle: RAS_DEPTH_LESS_WRITE (normal),
+     * RAS_DEPTH_EQUAL (shading pass after a depth pass), RAS_DEPTH_BEHIND
+     * (shadow-volume fragments behind the surface: depth-fail) */
+    uint8_t depth_func;
+    uint8_t depth_only;      /* render_triangle writes depth, no colour */
+    /* chapter 15 (raster_ch15.c) */
+    int8_t sh_light;         /* light casting shadows, -1: none */
+    uint8_t sm_on, sv_on, env_on, pcf;
+    uint8_t sm_ortho;        /* directional light: orthographic map */
+    uint16_t sm_size;
+    uint16_t *smap;          /* sm_size^2 closeness values (larger is nearer the light) */
+    vec3 sm_o, sm_r, sm_u, sm_f;  /* light frame in camera space: origin, right, up, forward */
+    num sm_scale;            /* texels per unit (ortho) or per unit of x/z (perspective) */
+    num sm_near, sm_texel;   /* perspective near distance; texel size at distance 1 (or world) */
+    vec3 bound_c;            /* bounding sphere of every instance, camera space */
+    num bound_r;
+    num env_k;               /* environment fraction */
+    uint16_t *adj;           /* per triangle 3 neighbours across its edges (RAS_NO_ADJ: none) */
+    uint8_t *stencil;        /* strip_rows * w stencil counts (shadow volumes) */
     /* current strip */
     struct render_target *t;
     struct render_stats *st;
 };
+
+enum { RAS_DEPTH_LESS_WRITE = 0, RAS_DEPTH_EQUAL = 1, RAS_DEPTH_BEHIND = 2 };
+#define RAS_NO_ADJ 0xFFFFu
 
 /* ---- pixel writes (raster_lines.c) ---- */
 /* Screen pixel; ignored outside the current strip. */
@@ -93,7 +115,9 @@ struct ras_sv {
  * camera-space depth of the pixel. */
 typedef void (*ras_pixel_fn)(struct ras_ctx *rc, int col, int row, const num *a, num z, void *ud);
 /* Fills a triangle whose corners run clockwise on screen (non-positive area
- * draws nothing). Returns the number of pixels it wrote. */
+ * draws nothing). Returns the number of pixels that passed the depth test
+ * (rc->depth_func). fn == NULL: depth only; na < 0: fn gets no attributes
+ * and z = 0 (stencil updates). */
 uint32_t ras_fill_triangle(struct ras_ctx *rc, const struct ras_sv *v0, const struct ras_sv *v1,
                            const struct ras_sv *v2, int na, ras_pixel_fn fn, void *ud);
 
@@ -117,6 +141,27 @@ int clip_triangle(const struct ras_ctx *rc, const struct ras_cv in[3], int na, s
 
 /* ---- chapter 13: lighting (raster_shading.c) ---- */
 num compute_illumination(const struct ras_ctx *rc, vec3 p, vec3 n, num specular);
+/* The same with light `shadow_k` (or none if < 0) scaled by vis in [0, 1]. */
+num compute_illumination_vis(const struct ras_ctx *rc, vec3 p, vec3 n, num specular, int shadow_k, num vis);
+
+/* ---- chapter 15 (raster_ch15.c): default path, Phong shading ---- */
+/* Work memory beyond the chapters 6-14 layout. */
+size_t ras_ch15_adj_size(const struct scene *s, uint32_t ntris);
+size_t ras_ch15_smap_size(const struct scene *s);
+size_t ras_ch15_stencil_size(const struct scene *s, uint16_t w, uint16_t strip_rows);
+/* render_init: flags and triangle adjacency. */
+void ras_ch15_init(struct ras_ctx *rc);
+/* render_begin_frame, after the transforms: scene bounds, light frame,
+ * the shadow map. */
+void ras_ch15_frame(struct ras_ctx *rc);
+/* Visibility of the shadow light at camera-space p with unit normal n, in
+ * [0, 1] (shadow map with PCF); 1 when the map is off. */
+num ras_shadow_map_vis(const struct ras_ctx *rc, vec3 p, vec3 n);
+/* Shadow volumes of the current strip into rc->stencil (after a depth pass). */
+void ras_shadow_volumes(struct ras_ctx *rc);
+/* Environment colour seen along camera-space direction r (procedural sky
+ * and ground in world space). */
+rgb ras_env_colour(const struct ras_ctx *rc, vec3 r);
 
 /* ---- chapter 14: textures (raster_texture.c) ---- */
 /* The demos' lookups (nearest / raster-13 bilinear); *nan set when the

@@ -7,6 +7,11 @@
  * camera space (ras_ctx.lights, set per frame). */
 num compute_illumination(const struct ras_ctx *rc, vec3 p, vec3 n, num specular)
 {
+    return compute_illumination_vis(rc, p, n, specular, -1, NUM_ONE);
+}
+
+num compute_illumination_vis(const struct ras_ctx *rc, vec3 p, vec3 n, num specular, int shadow_k, num vis)
+{
     const struct scene *s = rc->s;
     num i = NUM_ZERO;
     if (!rc->book) n = v3_normalize(n);
@@ -15,16 +20,21 @@ num compute_illumination(const struct ras_ctx *rc, vec3 p, vec3 n, num specular)
     for (uint16_t k = 0; k < s->nlights; k++) {
         const struct ras_light *l = &rc->lights[k];
         if (l->type == LIGHT_AMBIENT) { i = num_add(i, l->intensity); continue; }
+        num li = l->intensity;
+        if ((int)k == shadow_k) {
+            if (vis <= 0) continue;
+            li = num_mul(li, vis);
+        }
         vec3 L = l->type == LIGHT_DIRECTIONAL ? l->v : v3_add(v3_scale(p, num_neg(NUM_ONE)), l->v);
         if (s->ras.diffuse) {
             num cos_a = num_div(v3_dot(L, n), num_mul(v3_len(L), len_n));
-            if (cos_a > 0) i = num_add(i, num_mul(cos_a, l->intensity));
+            if (cos_a > 0) i = num_add(i, num_mul(cos_a, li));
         }
         if (s->ras.specular && specular >= 0) {
             num nl2 = num_mul(NUM_C(2.0), v3_dot(n, L));
             vec3 r = v3_sub(v3_scale(n, nl2), L);
             num cos_b = num_div(v3_dot(r, view), num_mul(v3_len(r), v3_len(view)));
-            if (cos_b > 0) i = num_add(i, num_mul(num_powi(cos_b, (uint32_t)num_to_int(specular)), l->intensity));
+            if (cos_b > 0) i = num_add(i, num_mul(num_powi(cos_b, (uint32_t)num_to_int(specular)), li));
         }
     }
     return i;

@@ -197,7 +197,6 @@ uint32_t ras_fill_triangle(struct ras_ctx *rc, const struct ras_sv *v0, const st
     int64_t a1 = -(int64_t)(v0->y - v2->y) * one, bb1 = (int64_t)(v0->x - v2->x) * one;
     int64_t a2 = -(int64_t)(v1->y - v0->y) * one, bb2 = (int64_t)(v1->x - v0->x) * one;
 
-    const struct ras_options *o = &rc->s->ras;
     uint32_t written = 0;
     num da1[RAS_MAX_ATTR], da2[RAS_MAX_ATTR];
     for (int j = 0; j < na; j++) {
@@ -209,31 +208,40 @@ uint32_t ras_fill_triangle(struct ras_ctx *rc, const struct ras_sv *v0, const st
      * truncated toward zero. The numerator is linear in the column, so the
      * quotient steps by a fixed quotient + remainder (no divide per pixel). */
     int64_t sq = 0, sr = 0;
-    if (o->depth_test) sq = ras_floordiv(dd1 * a1 + dd2 * a2, area, &sr);
+    int depth = rc->depth_bytes != 0;
+    if (depth) sq = ras_floordiv(dd1 * a1 + dd2 * a2, area, &sr);
 
     for (int32_t r = r0; r <= r1; r++) {
         int64_t w0 = w0r, w1 = w1r, w2 = w2r;
         int64_t zq = 0, zr = 0;
-        if (o->depth_test) zq = ras_floordiv(dd1 * w1 + dd2 * w2, area, &zr);
+        if (depth) zq = ras_floordiv(dd1 * w1 + dd2 * w2, area, &zr);
         for (int32_t c = c0; c <= c1; c++) {
             if (w0 + b0 >= 0 && w1 + b1 >= 0 && w2 + b2 >= 0) {
                 size_t di = (size_t)(r - t->y0) * rc->w + (size_t)c;
                 int pass = 1;
-                if (o->depth_test) {
+                if (depth) {
                     int64_t dz = zq + (zq < 0 && zr != 0);   /* floor -> toward zero */
                     int64_t d = (int64_t)v0->depth + dz;
                     if (d < 0) d = 0;
                     if (d > (int64_t)UINT32_MAX) d = UINT32_MAX;
+                    uint32_t cur, dv = (uint32_t)d;
                     if (rc->depth_bytes == 2) {
-                        uint16_t d16 = (uint16_t)((uint32_t)d >> 16);
-                        uint16_t *db = (uint16_t *)(void *)rc->depth;
-                        if (d16 > db[di]) db[di] = d16; else pass = 0;
+                        dv >>= 16;
+                        cur = ((uint16_t *)(void *)rc->depth)[di];
                     } else {
-                        uint32_t *db = (uint32_t *)(void *)rc->depth;
-                        if ((uint32_t)d > db[di]) db[di] = (uint32_t)d; else pass = 0;
+                        cur = ((uint32_t *)(void *)rc->depth)[di];
                     }
+                    if (rc->depth_func == RAS_DEPTH_EQUAL) pass = dv == cur;
+                    else if (rc->depth_func == RAS_DEPTH_BEHIND) pass = dv <= cur; /* not nearer: depth-fail counts the surface's own cap */
+                    else if (dv > cur) {
+                        if (rc->depth_bytes == 2) ((uint16_t *)(void *)rc->depth)[di] = (uint16_t)dv;
+                        else ((uint32_t *)(void *)rc->depth)[di] = dv;
+                    } else pass = 0;
                 }
-                if (pass) {
+                if (pass && (!fn || na < 0)) {
+                    if (fn) fn(rc, c, r, NULL, NUM_ZERO, ud);
+                    written++;
+                } else if (pass) {
                     /* screen barycentrics, then perspective weights b_i/z_i */
                     num l1 = ras_ratio(w1, area), l2 = ras_ratio(w2, area);
                     num l0 = num_sub(num_sub(NUM_ONE, l1), l2);

@@ -181,6 +181,12 @@ struct ras_options {
     uint8_t env_map;            /* chapter 15: environment mapping */
     uint8_t subpixel_bits;      /* sub-pixel vertex precision (0 = book's integer) */
     uint8_t book_exact;         /* reproduce the demos' quirks bit for bit */
+    /* chapter 15 parameters (default path, Phong shading); 0 picks the default */
+    uint8_t shadow_light;       /* 1 + index in lights[] of the light that casts shadows;
+                                   0: the first point or directional light */
+    uint16_t shadow_map_size;   /* shadow map side in texels, 16..1024; 0: 128 */
+    uint8_t pcf;                /* percentage-closer filter: 1 (one tap), 2 (2x2), 3 (3x3); 0: 3 */
+    uint8_t env_reflect;        /* percent of the environment mixed in, 1..100; 0: 50 */
 };
 
 /* ---- the scene ------------------------------------------------------- */

@@ -798,14 +798,14 @@ static void read_ras_options(struct parser *p, const struct node *n, struct ras_
     static const char *const keys[] = { "shading", "wireframe", "truncate", "clip", "depth", "depth_bits", "cull",
                                         "normals", "diffuse", "specular", "uv", "transform", "camera_transform",
                                         "shadows", "shadow_volumes", "env_map", "subpixel_bits", "book_exact",
-                                        NULL };
+                                        "shadow_light", "shadow_map_size", "pcf", "env_reflect", NULL };
     static const char *const shadings[] = { "flat", "gouraud", "phong", "none", NULL };
     static const char *const clips[] = { "off", "book", "split", NULL };
     static const char *const normals[] = { "model", "computed", NULL };
     static const char *const uvs[] = { "linear", "perspective", NULL };
     static const char *const transforms[] = { "translate", "full", NULL };
     static const char *const shadows[] = { "off", "map", NULL };
-    const struct node *v[18];
+    const struct node *v[22];
     fields(p, n, "rasterizer", keys, v);
     if (v[0]) o->shading = (uint8_t)get_choice(p, v[0], "shading", shadings);
     if (v[1]) o->wireframe = (uint8_t)get_bool(p, v[1], "wireframe");
@@ -829,6 +829,11 @@ static void read_ras_options(struct parser *p, const struct node *n, struct ras_
     if (v[15]) o->env_map = (uint8_t)get_bool(p, v[15], "env_map");
     if (v[16]) o->subpixel_bits = (uint8_t)get_int(p, v[16], "subpixel_bits", 0, 8);
     if (v[17]) o->book_exact = (uint8_t)get_bool(p, v[17], "book_exact");
+    /* chapter 15 parameters; the light index is checked against the lights in parse_scene */
+    if (v[18]) o->shadow_light = (uint8_t)(get_int(p, v[18], "shadow_light", 0, 254) + 1);
+    if (v[19]) o->shadow_map_size = (uint16_t)get_int(p, v[19], "shadow_map_size", 16, 1024);
+    if (v[20]) o->pcf = (uint8_t)get_int(p, v[20], "pcf", 1, 3);
+    if (v[21]) o->env_reflect = (uint8_t)get_int(p, v[21], "env_reflect", 1, 100);
 }
 
 /* ---- models --------------------------------------------------------------- */
@@ -1043,6 +1048,31 @@ static void read_model(struct parser *p, struct build *b, const struct node *n, 
 /* A wooden crate, procedurally: planks with grain, a dark frame and an X
  * brace (stands in for the demo's crate-texture.jpg). Integer arithmetic
  * only, so every build gets the same bytes. */
+/* A tangent-space normal map of round bumps, one per sq x sq cell: red
+ * along +x (+u), green toward the top of the image, blue out of the
+ * surface; channel = 127.5 * (component + 1). */
+static void gen_bumps(uint8_t *px, int w, int h, int sq)
+{
+    double r = sq * 0.4;
+    for (int y = 0; y < h; y++)
+        for (int x = 0; x < w; x++) {
+            double dx = (x % sq) + 0.5 - sq * 0.5, dy = (y % sq) + 0.5 - sq * 0.5;
+            double nx = 0, ny = 0, nz = 1, d2 = dx * dx + dy * dy;
+            if (d2 < r * r) {
+                /* a spherical cap: the normal is the offset from its centre */
+                double hz = sqrt(r * r - d2);
+                double len = sqrt(d2 + hz * hz);
+                nx = dx / len;
+                ny = -dy / len;   /* image rows grow downward */
+                nz = hz / len;
+            }
+            uint8_t *o = px + 3 * ((size_t)y * w + x);
+            o[0] = (uint8_t)floor(127.5 * (nx + 1) + 0.5);
+            o[1] = (uint8_t)floor(127.5 * (ny + 1) + 0.5);
+            o[2] = (uint8_t)floor(127.5 * (nz + 1) + 0.5);
+        }
+}
+
 static void gen_crate(uint8_t *px, int w, int h)
 {
     int fw = w / 10, fh = h / 10, brace = (w < h ? w : h) / 14;
@@ -1127,7 +1157,7 @@ static void read_texture(struct parser *p, struct build *b, const struct node *n
 {
     static const char *const keys[] = { "name", "generate", "file", "width", "height", "square", "filter", "mipmaps",
                                         NULL };
-    static const char *const gens[] = { "checkerboard", "crate", NULL };
+    static const char *const gens[] = { "checkerboard", "crate", "bumps", NULL };
     static const char *const filters[] = { "nearest", "bilinear", "trilinear", "book_bilinear", NULL };
     const struct node *v[8];
     struct ras_texture *t = &b->textures[idx];
@@ -1148,9 +1178,12 @@ static void read_texture(struct parser *p, struct build *b, const struct node *n
             int sq = v[5] ? (int)get_int(p, v[5], "square", 1, MAX_TEX_SIDE) : 10;
             for (int y = 0; y < h; y++)
                 for (int x = 0; x < w; x++) memset(px + 3 * ((size_t)y * w + x), ((x / sq + y / sq) % 2) ? 0 : 255, 3);
-        } else {
+        } else if (g == 1) {
             if (v[5]) FAIL_K(p, v[5], "'square' is for checkerboard textures");
             gen_crate(px, w, h);
+        } else {
+            int sq = v[5] ? (int)get_int(p, v[5], "square", 2, MAX_TEX_SIDE) : 16;
+            gen_bumps(px, w, h, sq);
         }
     } else if (v[2]) {
         if (v[3] || v[4] || v[5]) FAIL_K(p, v[3] ? v[3] : v[4] ? v[4] : v[5], "an image file has its own size");
@@ -1398,6 +1431,11 @@ static void read_scene(struct parser *p, const struct node *top, struct scene *s
     if (s->kind == SCENE_RAYTRACE && single[16]) FAIL_K(p, single[16], "'rasterizer' options in a ray-traced scene");
     if (s->kind == SCENE_RASTER && single[12]) FAIL_K(p, single[12], "'raytracer' options in a rasterized scene");
 
+    if (s->ras.shadow_light) {
+        int k = s->ras.shadow_light - 1;
+        if (k >= nlights || b.lights[k].type == LIGHT_AMBIENT)
+            FAIL_K(p, single[16], "shadow_light = %d: lights are counted from 0 and it must be a point or directional light", k);
+    }
     s->nlights = (uint16_t)nlights;
     s->lights = b.lights;
     s->nobjects = (uint16_t)nobj;

@@ -13,6 +13,8 @@ extern uint32_t _sidata, _sdata, _edata, _sbss, _ebss, _estack;
 #define SYST_RVR REG(0xE000E014u)
 #define SYST_CVR REG(0xE000E018u)
 #define CPACR    REG(0xE000ED88u)
+#define ICSR     REG(0xE000ED04u)
+#define ICSR_PENDSTSET (1u << 26)
 #define SYST_RELOAD 0xFFFFFFu
 #define TICK_NS 40u /* SysTick on the processor clock, 25 MHz */
 
@@ -62,12 +64,17 @@ void bench_report(const char *what, const char *numeric, const char *variant, ui
 
 uint64_t bench_now(void)
 {
-    uint32_t w1, w2, v;
+    uint32_t w1, w2, v, pending;
     do {
         w1 = systick_wraps;
         v = SYST_CVR;
+        pending = ICSR & ICSR_PENDSTSET;
         w2 = systick_wraps;
     } while (w1 != w2);
+    /* The counter may have wrapped before its interrupt was taken (qemu
+     * delivers interrupts between translation blocks): a pending SysTick with
+     * a value from the top half means v was read after that wrap. */
+    if (pending && v > SYST_RELOAD / 2) w1++;
     uint64_t ticks = (uint64_t)w1 * (SYST_RELOAD + 1u) + (SYST_RELOAD - v);
     return ticks * TICK_NS;
 }

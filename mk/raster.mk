@@ -54,3 +54,14 @@ $(foreach t,$(BENCH_TARGETS),$(foreach m,fixed float,\
   $(call bench_image,raster,$(t),$(m),$(BENCH_RAS_SRCS),-I$(BUILD)/scenes)\
   $(eval BENCH_IMAGES += $(BUILD)/bench/$(t)/$(m)/raster.elf)\
   $(eval $(BUILD)/bench/$(t)/$(m)/raster.objs/tools/bench/bench_raster.o: $(BENCH_RAS_SCENES))))
+
+# Chapter 15 (normal maps, environment maps, shadow maps, shadow volumes)
+# through the parser and core_api in three modes, and the demo scenes.
+define RASTER_CH15_PROG
+$(BUILD)/$(1)/tests/test_raster_ch15: $(call obj,$(1),none,tests/test_raster_ch15.c) $(call core_bundles,$(1))
+	@mkdir -p $$(@D)
+	$(Q)$$(CC) $(LDFLAGS_$(1)) -o $$@ $$^ -lm
+endef
+$(foreach v,$(VARIANTS),$(eval $(call RASTER_CH15_PROG,$(v))))
+TESTS += $(BUILD)/host/tests/test_raster_ch15
+TEST_DEPS += $(BUILD)/host/tests/test_raster_ch15

@@ -229,21 +229,33 @@ void ras_ch15_frame(struct ras_ctx *rc)
         num dist = v3_len(to_c);
         rc->sm_f = dist > 0 ? v3_normalize(to_c) : v3(NUM_ZERO, NUM_ZERO, NUM_ONE);
         rc->sm_o = l->v;
-        /* the frustum holds the bounding sphere; a light inside the sphere
-         * gets a 2x wide map, and what lies behind it casts nothing */
-        num near = num_sub(dist, rc->bound_r);
-        num tan_h = NUM_C(2.0);
-        if (near > num_mul(dist, NUM_C(0.1))) {
-            num side = num_sqrt(num_sub(num_mul(dist, dist), num_mul(rc->bound_r, rc->bound_r)));
-            tan_h = num_min(NUM_C(2.0), num_div(rc->bound_r, side));
-        } else {
-            near = num_max(num_mul(dist, NUM_C(0.1)), num_mul(rc->bound_r, NUM_C(0.05)));
+        frame_of(rc->sm_f, &rc->sm_r, &rc->sm_u);
+        /* the frustum fitted to the vertices in front of the light: the
+         * nearest one sets the near plane, the widest angle the field;
+         * triangles reaching behind the near plane cast nothing */
+        num eps = num_mul(rc->bound_r, NUM_C(0.02)), zmin = NUM_MAX;
+        for (uint32_t k = 0; k < rc->nverts; k++) {
+            num z = v3_dot(v3_sub(rc->verts[k].c, l->v), rc->sm_f);
+            if (z > eps) zmin = num_min(zmin, z);
         }
+        num near = zmin == NUM_MAX ? num_max(eps, NUM_C(0.01)) : num_max(num_mul(zmin, NUM_C(0.9)), num_max(eps, NUM_C(0.01)));
+        num tan_h = NUM_C(0.01);
+        for (uint32_t k = 0; k < rc->nverts; k++) {
+            vec3 d = v3_sub(rc->verts[k].c, l->v);
+            num z = v3_dot(d, rc->sm_f);
+            if (z <= near) continue;
+            num ext = num_max(num_abs(v3_dot(d, rc->sm_r)), num_abs(v3_dot(d, rc->sm_u)));
+            if (ext > num_mul(z, NUM_C(2.0))) { tan_h = NUM_C(2.0); continue; }
+            tan_h = num_max(tan_h, num_div(ext, z));
+        }
+        /* at most +-63 degrees: wider fields waste the map's texels;
+         * what lies outside is never shadowed */
+        tan_h = num_mul(tan_h, NUM_C(1.01));
         rc->sm_near = near;
         rc->sm_scale = num_div(num_mul(S, NUM_HALF), tan_h);
         rc->sm_texel = num_recip(rc->sm_scale);
     }
-    frame_of(rc->sm_f, &rc->sm_r, &rc->sm_u);
+    if (rc->sm_ortho) frame_of(rc->sm_f, &rc->sm_r, &rc->sm_u);
     render_shadow_map(rc);
 }
 

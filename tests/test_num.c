@@ -419,6 +419,43 @@ static void acc_float(void)
     }
     stat_end(&n);
 }
+
+/* Conversions of the float build: num_from_double / num_to_double work on the
+ * IEEE bits (no double arithmetic on a single-precision FPU); they must equal
+ * the C conversions bit for bit. */
+static void conversions_float(void)
+{
+    long bad = 0, bad2 = 0;
+    const double sp[] = { 0.0, -0.0, 1.0, -1.5, 5e-324, -5e-324, 1e-46, 7e-46, 1.4e-45, 2.1e-45, 1.1754942e-38,
+                          1.17549435e-38, 3.4028235e38, 3.4028236e38, 3.5e38, -3.5e38, 1e300, HUGE_VAL,
+                          -HUGE_VAL, NAN, 16777217.0, 16777219.0, 0.1 };
+    union { float f; uint32_t u; } a, b;
+    for (long i = 0; i < 2000000 + (long)(sizeof sp / sizeof sp[0]); i++) {
+        double d;
+        if (i < (long)(sizeof sp / sizeof sp[0])) d = sp[i];
+        else {
+            union { double d; uint64_t u; } r;
+            r.u = rng();
+            /* mostly the float range and its edges, some anywhere */
+            if (i & 3) r.u = (r.u & 0x800FFFFFFFFFFFFFull) | (uint64_t)(1023 - 160 + (int)(rng() % 300)) << 52;
+            if ((i & 15) == 1) r.u &= ~(((uint64_t)1 << 29) - 1) | (uint64_t)1 << 28; /* ties */
+            d = r.d;
+        }
+        a.f = num_from_double(d);
+        b.f = (float)d;
+        if (d != d ? a.f == a.f : a.u != b.u) bad++;
+        a.u = (uint32_t)rng();
+        double back = num_to_double(a.f);
+        if (a.f == a.f ? !(back == (double)a.f && !signbit(back) == !signbit(a.f)) : back == back) bad2++;
+    }
+    check(bad == 0, "num_from_double_float_bits_match_c", "%ld mismatches", bad);
+    check(bad2 == 0, "num_to_double_float_exact", "%ld mismatches", bad2);
+    check(num_to_int(2147483648.0f) == INT32_MAX && num_to_int(2147483520.0f) == 2147483520 &&
+              num_to_int(-2147483648.0f) == -INT32_MAX && num_to_int(-2147483520.0f) == -2147483520 &&
+              num_to_int(NAN) == 0 && num_to_int(-1.75f) == -1 && num_floor_int(-1.25f) == -2 &&
+              num_to_int(HUGE_VALF) == INT32_MAX && num_floor_int(-HUGE_VALF) == -INT32_MAX,
+          "num_to_int_float_limits", "%d %d", num_to_int(2147483520.0f), num_floor_int(-1.25f));
+}
 #endif
 #endif
 
@@ -466,6 +503,7 @@ int main(int argc, char **argv)
     acc_wide();
     acc_chan();
 #elif NUM_MODE == NUM_MODE_FLOAT
+    if (!report) conversions_float();
     acc_float();
 #endif
     return check_exit();

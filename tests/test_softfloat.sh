@@ -6,7 +6,9 @@
 # soft-float routine (__aeabi_f*, __aeabi_d*, conversions to float/double,
 # libgcc's *sf*/*df* helpers) or libm function fails the test. The numeric
 # layer's own objects (num.c, vec.c) must also avoid the software divide routines (the M0+
-# has no divide instruction). Usage: test_softfloat.sh BUILD_DIR
+# has no divide instruction). Then the float build for the Cortex-M4F (single-
+# precision FPU) is checked for double-precision code (see below).
+# Usage: test_softfloat.sh BUILD_DIR
 set -u
 build=${1:-build}/m0plus-softfloat-check
 cc=arm-none-eabi-gcc
@@ -46,4 +48,46 @@ else
   echo "PASS core_fixed_no_softfloat ($nobj objects)"
 fi
 [ $bad -eq 0 ] && echo "PASS num_no_software_divide"
+
+# The float build of the core on a single-precision FPU (Cortex-M4F) runs no
+# double-precision code: a double constant, a promotion or a double libm call
+# would become __aeabi_d*/__aeabi_f2d/... library calls. Each offender is
+# named as file:function:symbol (from the relocations of the function's own
+# section, -ffunction-sections). num_float_m4f_no_double covers the numeric
+# layer (num.c, vec.c); core_float_m4f_no_double every firmware/core/*.c.
+m4f="$build/../m4f-float-double-check"
+mkdir -p "$m4f"
+ffl="-std=c11 -O2 -mcpu=cortex-m4 -mthumb -mfloat-abi=hard -mfpu=fpv4-sp-d16 -ffunction-sections -DNUM_MODE=2 -I. -Ifirmware/core -Ihal -Itools/scene"
+dbl='^(__aeabi_d[a-z0-9]*|__aeabi_[a-z0-9]+2d|__(add|sub|mul|div|neg|cmp|eq|ne|lt|le|gt|ge|unord)df[23]|__(fix|fixuns)df[a-z0-9]*|__float(un)?[a-z]*df|__extendsfdf2|__truncdfsf2|sqrt|pow|sin|cos|tan|atan|atan2|exp|log|floor|ceil|fabs|fmod|ldexp|rint|lrint|round|trunc|hypot)$'
+own=""; other=""; nf=0
+for src in firmware/core/*.c; do
+  obj="$m4f/$(basename "$src" .c).o"
+  if ! $cc $ffl -c "$src" -o "$obj" 2>"$obj.err"; then
+    echo "FAIL core_float_m4f_cross_compiles: $src does not build for cortex-m4 (float):"
+    head -n 5 "$obj.err"
+    bad=1
+    continue
+  fi
+  nf=$((nf + 1))
+  # "RELOCATION RECORDS FOR [.text.fn]:" then "offset type symbol" lines
+  hits=$(arm-none-eabi-objdump -r "$obj" | awk -v f="$src" -v re="$dbl" '
+    /^RELOCATION RECORDS FOR/ { sec = $4; gsub(/[\[\]:]/, "", sec); sub(/^\.text\./, "", sec); next }
+    NF >= 3 && $3 ~ re { print f ":" sec ":" $3 }' | sort -u | tr '\n' ' ')
+  case $(basename "$src") in
+    num.c|vec.c) own="$own$hits" ;;
+    *) other="$other$hits" ;;
+  esac
+done
+if [ -n "$own" ]; then
+  echo "FAIL num_float_m4f_no_double: double-precision code in the numeric layer: $own"
+  bad=1
+else
+  echo "PASS num_float_m4f_no_double"
+fi
+if [ -n "$other$own" ]; then
+  echo "FAIL core_float_m4f_no_double: double-precision routines (file:function:symbol): $other$own"
+  bad=1
+else
+  echo "PASS core_float_m4f_no_double ($nf objects)"
+fi
 exit $bad

@@ -495,19 +495,85 @@ num wnum_to_num_shr(wnum a, int bits)
 #define F(x) x
 #endif
 
+/* Every constant below is written in the mode's own type (F(2147483648.0)
+ * is a float literal in the float build): a double constant would promote
+ * the comparison to double, which a single-precision FPU (Cortex-M4F) runs
+ * in software (__aeabi_dcmpge, __aeabi_f2d). */
 num num_from_int(int32_t i) { return (num)i; }
 int32_t num_to_int(num a)
 {
+    /* Truncation toward zero; NaN gives 0; a >= 2^31 gives INT32_MAX and
+     * a <= -2^31 gives -INT32_MAX (2^31 is exact in both types; every value
+     * strictly between converts without overflow). */
     if (a != a) return 0;
-    if (a >= 2147483647.0) return INT32_MAX;
-    if (a <= -2147483647.0) return -INT32_MAX;
+    if (a >= F(2147483648.0)) return INT32_MAX;
+    if (a <= F(-2147483648.0)) return -INT32_MAX;
     return (int32_t)a;
 }
 int32_t num_floor_int(num a) { return num_to_int(F(floor)(a)); }
 num num_frac(num a) { return a - F(floor)(a); }
 num num_from_ratio(int32_t p, int32_t q) { return q ? (num)p / (num)q : num_div((num)p, 0); }
-num num_from_double(double d) { return (num)d; }
-double num_to_double(num a) { return (double)a; }
+#if NUM_MODE == NUM_MODE_FLOAT
+/* The two double conversions of the float build work on the IEEE-754 bits
+ * with integer operations (same results as the C conversions: round to
+ * nearest even, overflow to infinity, NaN kept), so the float core contains
+ * no double-precision arithmetic even where doubles are declared. */
+union num_dbits { double d; uint64_t u; };
+union num_fbits { float f; uint32_t u; };
+
+num num_from_double(double d)
+{
+    union num_dbits b;
+    union num_fbits r;
+    b.d = d;
+    uint32_t sign = (uint32_t)(b.u >> 32) & 0x80000000u;
+    int e = (int)((b.u >> 52) & 0x7FF);
+    uint64_t m = b.u & (((uint64_t)1 << 52) - 1);
+    if (e == 0x7FF) {                                  /* infinity or NaN */
+        r.u = sign | 0x7F800000u | (m ? 0x00400000u | (uint32_t)(m >> 29) : 0);
+        return r.f;
+    }
+    int fe = e - 1023 + 127;                           /* float exponent field */
+    if (fe >= 255) { r.u = sign | 0x7F800000u; return r.f; }
+    int sh;                                            /* bits of m dropped */
+    if (fe >= 1) {
+        sh = 29;
+    } else {                                           /* float subnormal or 0 */
+        if (e == 0 || fe < -24) { r.u = sign; return r.f; } /* < 2^-150: rounds to 0 */
+        m |= (uint64_t)1 << 52;
+        sh = 30 - fe;                                  /* 30..54 */
+        fe = 0;
+    }
+    uint64_t keep = m >> sh, rest = m & (((uint64_t)1 << sh) - 1), half = (uint64_t)1 << (sh - 1);
+    uint32_t bits = ((uint32_t)fe << 23) + (uint32_t)keep;
+    if (rest > half || (rest == half && (keep & 1))) bits++; /* a carry moves into the exponent */
+    r.u = sign | bits;
+    return r.f;
+}
+
+double num_to_double(num a)
+{
+    /* Exact: every float is a double. */
+    union num_fbits f;
+    union num_dbits b;
+    f.f = a;
+    uint64_t sign = (uint64_t)(f.u >> 31) << 63;
+    int e = (int)((f.u >> 23) & 0xFF);
+    uint64_t m = f.u & 0x7FFFFFu;
+    if (e == 0xFF) b.u = sign | (uint64_t)0x7FF << 52 | m << 29;
+    else if (e != 0) b.u = sign | (uint64_t)(e - 127 + 1023) << 52 | m << 29;
+    else if (m == 0) b.u = sign;
+    else {                                             /* subnormal: normalise */
+        int s = 0;
+        while (!(m & 0x800000u)) { m <<= 1; s++; }
+        b.u = sign | (uint64_t)(1 - 127 - s + 1023) << 52 | (m & 0x7FFFFFu) << 29;
+    }
+    return b.d;
+}
+#else
+num num_from_double(double d) { return d; }
+double num_to_double(num a) { return a; }
+#endif
 num num_add(num a, num b) { return a + b; }
 num num_sub(num a, num b) { return a - b; }
 num num_neg(num a) { return -a; }

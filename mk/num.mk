@@ -19,6 +19,7 @@ $(foreach v,$(VARIANTS),$(foreach m,fixed12 fixed20,$(eval $(call NUM_EXTRA_MODE
 
 # tests/test_num.c includes tests/check.h
 $(BUILD)/host/%/tests/test_num.o $(BUILD)/asan/%/tests/test_num.o: EXTRA_CFLAGS += -Itests
+$(BUILD)/host/%/tests/test_num_kernels.o $(BUILD)/asan/%/tests/test_num_kernels.o: EXTRA_CFLAGS += -Itests
 
 define NUM_TEST_PROG
 $(BUILD)/$(1)/test_num_$(2): $(call obj,$(1),$(2),tests/test_num.c $(NUM_SRCS))
@@ -28,6 +29,17 @@ $(foreach v,$(VARIANTS),$(foreach m,$(NUM_TEST_MODES),$(eval $(call NUM_TEST_PRO
 
 TEST_DEPS += $(foreach m,$(NUM_TEST_MODES),$(BUILD)/asan/test_num_$(m))
 TESTS     += $(foreach m,$(NUM_TEST_MODES),$(BUILD)/asan/test_num_$(m))
+
+# The square-root kernels against slow references, bit for bit (fixed point;
+# fixed12 runs the portable ARMv6-M integer paths).
+NUM_KERNEL_MODES := fixed fixed12 fixed20
+define NUM_KERNEL_PROG
+$(BUILD)/$(1)/test_num_kernels_$(2): $(call obj,$(1),$(2),tests/test_num_kernels.c $(NUM_SRCS))
+	$(Q)$$(CC) $(LDFLAGS_$(1)) -o $$@ $$^ -lm
+endef
+$(foreach v,$(VARIANTS),$(foreach m,$(NUM_KERNEL_MODES),$(eval $(call NUM_KERNEL_PROG,$(v),$(m)))))
+TEST_DEPS += $(foreach m,$(NUM_KERNEL_MODES),$(BUILD)/asan/test_num_kernels_$(m))
+TESTS     += $(foreach m,$(NUM_KERNEL_MODES),$(BUILD)/asan/test_num_kernels_$(m))
 
 .PHONY: num-report
 num-report: $(foreach m,$(NUM_TEST_MODES),$(BUILD)/host/test_num_$(m))

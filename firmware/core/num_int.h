@@ -24,6 +24,12 @@ static inline uint64_t num_umul32(uint32_t a, uint32_t b)
 #endif
 }
 
+/* High word of the 32x32 product. */
+static inline uint32_t num_mulhi32(uint32_t a, uint32_t b)
+{
+    return (uint32_t)(num_umul32(a, b) >> 32);
+}
+
 /* 32x32 -> 64 signed product (two's complement correction of the unsigned one). */
 static inline int64_t num_smul32(int32_t a, int32_t b)
 {
@@ -65,7 +71,18 @@ static inline int num_clz64(uint64_t x)
  * 256-entry table, two Newton-Raphson steps, remainder correction. */
 uint32_t num_udiv64_32(uint64_t n, uint32_t d, uint32_t *rem);
 
-/* floor(sqrt(v)); *rem (if not null) gets v - root^2. Digit recurrence. */
+/* floor(sqrt(v)); *rem (if not null) gets v - root^2. Estimate from
+ * num_sqrt_est, then exact correction. */
 uint64_t num_isqrt64(uint64_t v, uint64_t *rem);
+
+/* 2^30 / sqrt(xh / 2^32) for xh in [2^30, 2^32), i.e. Q30 in (2^30, 2^31]:
+ * table seed and one Newton step, relative error < 2^-17 (from below up to
+ * the last-bit truncations). */
+uint32_t num_rsqrt_q30(uint32_t xh);
+
+/* For v != 0: x = v * 4^k in [2^62, 2^64) (*k set), returns sqrt(x) within
+ * 2 units (so sqrt(v) = result / 2^k within 2 / 2^k); *y (if not null) gets
+ * num_rsqrt_q30 of x's high word. */
+uint32_t num_sqrt_est(uint64_t v, int *k, uint32_t *y);
 
 #endif

@@ -177,11 +177,174 @@ static void depth_precision(void)
           "16-bit fails at %.1f, 32-bit at %.1f", z16, z32);
 }
 
+
+/* raster-10's "outlines" control: every pixel the outlines change gets a
+ * cube colour x 0.75 (DrawLine, no depth test). */
+static void outlines_raster10(void)
+{
+    struct frame a, b;
+    struct scene *s = ras_test_scene("raster-10");
+    int rc = render_frame(s, 240, 240, 16, 0, &a);
+    s = ras_test_scene("raster-10");
+    s->ras.outlines = 1;
+    rc |= render_frame(s, 240, 240, 16, 0, &b);
+    static const uint8_t cols[6][3] = { { 191, 0, 0 }, { 0, 191, 0 }, { 0, 0, 191 }, { 191, 191, 0 }, { 191, 0, 191 }, { 0, 191, 191 } };
+    long changed = 0, bad = 0;
+    for (long p = 0; !rc && p < 240L * 240; p++) {
+        if (!memcmp(a.rgb888 + 3 * p, b.rgb888 + 3 * p, 3)) continue;
+        changed++;
+        int ok = 0;
+        for (int k = 0; k < 6; k++) ok |= !memcmp(b.rgb888 + 3 * p, cols[k], 3);
+        bad += !ok;
+    }
+    check(!rc && changed > 500 && bad == 0, "raster10_outlines", "%ld pixels changed (want > 500), %ld not a colour x 0.75", changed, bad);
+    frame_free(&a);
+    frame_free(&b);
+}
+
+/* A floor x in [-half, half], z from 3 to zfar, 1 under the camera, uv v = 1 at the near edge,
+ * 0 at the far one; texture tex (w x h), shading none, default path. */
+static struct scene *floor_scene(double half, double zfar, struct ras_texture *tex)
+{
+    static vec3 v[4];
+    static struct ras_triangle t[2];
+    static struct ras_model m;
+    static struct ras_instance in;
+    struct scene *s = default_scene("raster-13");
+    v[0] = v3(num_from_double(-half), num_from_double(-1), num_from_double(3));
+    v[1] = v3(num_from_double(half), num_from_double(-1), num_from_double(3));
+    v[2] = v3(num_from_double(half), num_from_double(-1), num_from_double(zfar));
+    v[3] = v3(num_from_double(-half), num_from_double(-1), num_from_double(zfar));
+    static const int ix[2][3] = { { 0, 2, 1 }, { 0, 3, 2 } };
+    static const double uv[4][2] = { { 0, 1 }, { 1, 1 }, { 1, 0 }, { 0, 0 } };
+    for (int h = 0; h < 2; h++) {
+        memset(&t[h], 0, sizeof t[h]);
+        for (int k = 0; k < 3; k++) {
+            t[h].v[k] = (uint16_t)ix[h][k];
+            t[h].uv[k].u = num_from_double(uv[ix[h][k]][0]);
+            t[h].uv[k].v = num_from_double(uv[ix[h][k]][1]);
+        }
+        t[h].color = rgb_make(num_from_int(255), num_from_int(255), num_from_int(255));
+    }
+    memset(&m, 0, sizeof m);
+    m.nverts = 4; m.ntris = 2; m.verts = v; m.tris = t; m.has_uvs = 1;
+    m.bound_center = v3(NUM_ZERO, num_from_int(-1), num_from_double((3 + zfar) / 2));
+    m.bound_radius = num_from_double((zfar - 3) / 2 + 3);
+    memset(&in, 0, sizeof in);
+    in.texture = 0;
+    in.normal_map = -1;
+    in.rotation = m3_identity();
+    in.scale = NUM_ONE;
+    in.specular = num_from_int(-1);
+    s->models = &m; s->nmodels = 1; s->instances = &in; s->ninstances = 1;
+    s->textures = tex; s->ntextures = 1;
+    s->camera.position = v3(NUM_ZERO, NUM_ZERO, NUM_ZERO);
+    s->camera.rotation = m3_identity();
+    s->ras.shading = SHADE_NONE;
+    s->ras.backface_cull = 0;
+    return s;
+}
+
+/* Rows of column 120 the floor covers. */
+static int floor_rows(const struct frame *f, int *top, int *bot)
+{
+    *top = -1;
+    *bot = -1;
+    for (int r = 0; r < f->h; r++)
+        if (f->written[r * f->w + f->w / 2]) { if (*top < 0) *top = r; *bot = r; }
+    return *top >= 0 && *bot - *top > 20;
+}
+
+/* uv = linear on the default path: v is screen-linear, so halfway between
+ * the floor's far and near rows it is 1/2 (perspective-correct: 0.8). */
+static void linear_uv_default(void)
+{
+    static uint8_t rows[4 * 256 * 3];
+    for (int y = 0; y < 256; y++)
+        for (int x = 0; x < 4; x++) { uint8_t *p = rows + 3 * (y * 4 + x); p[0] = (uint8_t)y; p[1] = 0; p[2] = 0; }
+    static struct ras_texture tex;
+    memset(&tex, 0, sizeof tex);
+    tex.w = 4; tex.h = 256; tex.rgb = rows; tex.filter = TEX_NEAREST; tex.mip_levels = 1;
+    int red[2] = { -1, -1 }, mid = -1;
+    for (int persp = 0; persp < 2; persp++) {
+        struct scene *s = floor_scene(1, 12, &tex);
+        s->ras.perspective_uv = (uint8_t)persp;
+        struct frame f;
+        int top, bot;
+        if (!render_frame(s, 240, 240, 16, 0, &f) && floor_rows(&f, &top, &bot)) {
+            mid = (top + bot) / 2;
+            red[persp] = f.rgb888[3 * (mid * 240 + 120)];
+        }
+        frame_free(&f);
+    }
+    /* expected: v interpolated linearly on screen inside the triangle that
+     * holds the pixel centre (120.5, mid + 0.5); perspective: v of the
+     * floor point seen there */
+    /* inside the view volume, so no clipping adds corners */
+    static const double P[4][3] = { { -1, 3, 1 }, { 1, 3, 1 }, { 1, 12, 0 }, { -1, 12, 0 } }; /* x, z, v */
+    static const int T[2][3] = { { 0, 2, 1 }, { 0, 3, 2 } };
+    double px = 120.5, py = mid + 0.5, want_lin = -1;
+    for (int h = 0; h < 2; h++) {
+        double X[3], Y[3], V[3];
+        for (int k = 0; k < 3; k++) {
+            const double *q = P[T[h][k]];
+            X[k] = 120 + q[0] / q[1] * 240;
+            Y[k] = 120 + 1.0 / q[1] * 240;
+            V[k] = q[2];
+        }
+        double den = (Y[1] - Y[2]) * (X[0] - X[2]) + (X[2] - X[1]) * (Y[0] - Y[2]);
+        double l0 = ((Y[1] - Y[2]) * (px - X[2]) + (X[2] - X[1]) * (py - Y[2])) / den;
+        double l1 = ((Y[2] - Y[0]) * (px - X[2]) + (X[0] - X[2]) * (py - Y[2])) / den, l2 = 1 - l0 - l1;
+        if (l0 >= 0 && l1 >= 0 && l2 >= 0) want_lin = (l0 * V[0] + l1 * V[1] + l2 * V[2]) * 256;
+    }
+    double z = 240.0 / (py - 120), want_persp = (12 - z) / 9 * 256;
+    check(mid > 0 && want_lin >= 0 && red[0] >= want_lin - 3 && red[0] <= want_lin + 3 && red[1] >= want_persp - 3 &&
+          red[1] <= want_persp + 3, "default_path_linear_uv",
+          "texture row at row %d: linear %d (want %.1f), perspective %d (want %.1f)", mid, red[0], want_lin, red[1], want_persp);
+    printf("# uv at row %d: linear %d (screen-linear %.1f), perspective %d (%.1f)\n", mid, red[0], want_lin, red[1], want_persp);
+}
+
+/* Trilinear: level k of a mip chain is the solid colour (32k, 0, 255 - 32k),
+ * so red/32 reads the level (and the blend between two) a pixel used. A
+ * floor receding from z = 3 to 60 must pick non-decreasing levels from its
+ * near edge to its far one, from below 1 to above 3. */
+static void trilinear_levels(void)
+{
+    static uint8_t lv[7][64 * 64 * 3];
+    static const uint8_t *mip[7];
+    for (int k = 0; k < 7; k++) {
+        int n = 64 >> k;
+        for (int i = 0; i < n * n; i++) { lv[k][3 * i] = (uint8_t)(32 * k); lv[k][3 * i + 1] = 0; lv[k][3 * i + 2] = (uint8_t)(255 - 32 * k); }
+        mip[k] = lv[k];
+    }
+    static struct ras_texture tex;
+    memset(&tex, 0, sizeof tex);
+    tex.w = 64; tex.h = 64; tex.rgb = lv[0]; tex.filter = TEX_TRILINEAR; tex.mip_levels = 7; tex.mip = mip;
+    struct scene *s = floor_scene(2, 60, &tex);
+    struct frame f;
+    int top = 0, bot = 0, ok = !render_frame(s, 240, 240, 16, 0, &f) && floor_rows(&f, &top, &bot);
+    double prev = -1, near_l = -1, far_l = -1, worst = 0;
+    for (int r = bot; ok && r >= top; r--) {
+        double l = f.rgb888[3 * (r * 240 + 120)] / 32.0;
+        if (prev >= 0 && prev - l > worst) worst = prev - l;
+        if (near_l < 0) near_l = l;
+        far_l = l;
+        prev = l;
+    }
+    printf("# trilinear: level %.2f at the near edge (row %d), %.2f at the far edge (row %d)\n", near_l, bot, far_l, top);
+    check(ok && worst <= 1.0 / 32 + 1e-9 && near_l < 1 && far_l > 3, "trilinear_level_increases_with_depth",
+          "levels %.2f (near) .. %.2f (far), largest step back %.3f", near_l, far_l, worst);
+    frame_free(&f);
+}
+
 int main(void)
 {
     strips_identical();
     fill_rule_closed_mesh();
     any_camera();
     depth_precision();
+    outlines_raster10();
+    linear_uv_default();
+    trilinear_levels();
     return check_exit();
 }

@@ -167,10 +167,21 @@ num ras_project(num x, num d, num z, num cw, num vw)
 uint32_t ras_depth32(num near_z, num z)
 {
     if (!(z > near_z)) return UINT32_MAX;
-    double v = (double)(near_z / z) * 4294967295.0;
+    num r = near_z / z;
+    if (!(r > 0)) return 0;
+#if NUM_MODE == NUM_MODE_FLOAT
+    /* floor(r * (2^32 - 1)) = floor(X - r) with X = r * 2^32 (exact), in
+     * single precision only (no double routines on an FPv4-SP FPU) */
+    num X = r * 4294967296.0f;
+    if (X >= 4294967296.0f) return UINT32_MAX;
+    uint32_t xi = (uint32_t)X;
+    if (X - (num)xi < r && xi) xi--;
+    return xi;
+#else
+    double v = r * 4294967295.0;
     if (v >= 4294967295.0) return UINT32_MAX;
-    if (v <= 0) return 0;
     return (uint32_t)v;
+#endif
 }
 
 #endif

@@ -72,6 +72,7 @@ int raster_init(struct render_ctx *ctx)
     struct ras_ctx *rc = ctx_of(ctx);
     uint8_t *base = (uint8_t *)rc;
     memset(rc, 0, sizeof *rc);
+    rc->affine_from = -1;
     rc->s = s;
     rc->w = ctx->width;
     rc->h = ctx->height;
@@ -397,6 +398,13 @@ static void book_render_triangle(struct ras_ctx *rc, const struct ras_instance *
         nq += 2;
     }
     book_scan_triangle(rc, sx, sy, nq, (const num (*)[3])q, book_pixel, &bt);
+    if (o->outlines) {
+        /* raster-10's outlines: P0P1, P0P2, P2P1 of the sorted corners */
+        rgb oc = rgb_scale(t->color, NUM_C(0.75));
+        draw_line(rc, sx[0], sy[0], sx[1], sy[1], oc);
+        draw_line(rc, sx[0], sy[0], sx[2], sy[2], oc);
+        draw_line(rc, sx[2], sy[2], sx[1], sy[1], oc);
+    }
 }
 
 /* ---- render_triangle, default path -------------------------------------- */
@@ -557,6 +565,7 @@ static void default_render_triangle(struct ras_ctx *rc, const struct ras_instanc
             }
             dt.iz_eff = num_div_int(num_add(num_add(a->iz, b->iz), c->iz), 3);
         }
+        rc->affine_from = (int8_t)(uv && !o->perspective_uv ? dt.ai_uv : -1);
         ras_fill_triangle(rc, a, b, c, na, rc->depth_only ? NULL : default_pixel, &dt);
     }
 }

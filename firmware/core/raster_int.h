@@ -57,6 +57,8 @@ struct ras_ctx {
      * (shadow-volume fragments behind the surface: depth-fail) */
     uint8_t depth_func;
     uint8_t depth_only;      /* render_triangle writes depth, no colour */
+    int8_t affine_from;      /* attributes from this index on are interpolated linearly in
+                                screen space (uv = linear), -1: all perspective-correct */
     /* chapter 15 (raster_ch15.c) */
     int8_t sh_light;         /* light casting shadows, -1: none */
     uint8_t sm_on, sv_on, env_on, pcf;

@@ -251,8 +251,11 @@ uint32_t ras_fill_triangle(struct ras_ctx *rc, const struct ras_sv *v0, const st
                     num a[RAS_MAX_ATTR];
                     if (na) {
                         num q1 = num_mul(p1, z), q2 = num_mul(p2, z);
-                        for (int j = 0; j < na; j++)
+                        int nf = rc->affine_from >= 0 && rc->affine_from < na ? rc->affine_from : na;
+                        for (int j = 0; j < nf; j++)
                             a[j] = num_add(v0->a[j], num_add(num_mul(q1, da1[j]), num_mul(q2, da2[j])));
+                        for (int j = nf; j < na; j++) /* screen-linear (the book's linear u, v) */
+                            a[j] = num_add(v0->a[j], num_add(num_mul(l1, da1[j]), num_mul(l2, da2[j])));
                     }
                     fn(rc, c, r, a, z, ud);
                     written++;

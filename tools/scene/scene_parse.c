@@ -798,14 +798,14 @@ static void read_ras_options(struct parser *p, const struct node *n, struct ras_
     static const char *const keys[] = { "shading", "wireframe", "truncate", "clip", "depth", "depth_bits", "cull",
                                         "normals", "diffuse", "specular", "uv", "transform", "camera_transform",
                                         "shadows", "shadow_volumes", "env_map", "subpixel_bits", "book_exact",
-                                        "shadow_light", "shadow_map_size", "pcf", "env_reflect", NULL };
+                                        "shadow_light", "shadow_map_size", "pcf", "env_reflect", "outlines", NULL };
     static const char *const shadings[] = { "flat", "gouraud", "phong", "none", NULL };
     static const char *const clips[] = { "off", "book", "split", NULL };
     static const char *const normals[] = { "model", "computed", NULL };
     static const char *const uvs[] = { "linear", "perspective", NULL };
     static const char *const transforms[] = { "translate", "full", NULL };
     static const char *const shadows[] = { "off", "map", NULL };
-    const struct node *v[22];
+    const struct node *v[23];
     fields(p, n, "rasterizer", keys, v);
     if (v[0]) o->shading = (uint8_t)get_choice(p, v[0], "shading", shadings);
     if (v[1]) o->wireframe = (uint8_t)get_bool(p, v[1], "wireframe");
@@ -834,6 +834,7 @@ static void read_ras_options(struct parser *p, const struct node *n, struct ras_
     if (v[19]) o->shadow_map_size = (uint16_t)get_int(p, v[19], "shadow_map_size", 16, 1024);
     if (v[20]) o->pcf = (uint8_t)get_int(p, v[20], "pcf", 1, 3);
     if (v[21]) o->env_reflect = (uint8_t)get_int(p, v[21], "env_reflect", 1, 100);
+    if (v[22]) o->outlines = (uint8_t)get_bool(p, v[22], "outlines");
 }
 
 /* ---- models --------------------------------------------------------------- */

@@ -34,9 +34,10 @@ TESTS += tests/test_scene_fuzz.sh:$(FUZZ_SCENE):$(FUZZ_SECONDS)
 
 # ---- scenec: scene file -> C source for the firmware -----------------------
 # Built in the double mode (the parser's exact doubles are emitted as NUM_C
-# literals) and linked with the fixed-point core bundle for render_work_size.
+# literals) and linked with the NUM_FRAC 12 core bundle for render_work_size
+# (its fallback when the target's is not given).
 SCENEC := $(BUILD)/scenec
-$(SCENEC): $(call obj,host,double,tools/scenec/scenec.c $(SCENE_PARSER_SRCS)) $(BUILD)/host/core_fixed.o
+$(SCENEC): $(call obj,host,double,tools/scenec/scenec.c $(SCENE_PARSER_SRCS)) $(BUILD)/host/core_fixed12.o
 	@mkdir -p $(@D)
 	$(Q)$(CC) -o $@ $^ -lm
 $(BUILD)/host/double/tools/scenec/scenec.o: EXTRA_CFLAGS += -Ihost_sim
@@ -47,14 +48,68 @@ SCENE_SIZE  ?= 240x240
 SCENE_STRIP ?= 16
 SCENE_FILES := $(sort $(shell find firmware/scenes -name '*.scene' 2>/dev/null))
 SCENE_CSRCS := $(patsubst firmware/scenes/%.scene,$(BUILD)/scenes/%.c,$(SCENE_FILES))
-$(BUILD)/scenes/%.c: firmware/scenes/%.scene $(SCENEC)
+# The work size is the target's (SCENE_TARGET_WORK=0: this host's upper bound).
+SCENE_TARGET_WORK ?= 1
+SCENE_PROBE := $(BUILD)/scenes/work_probe.elf
+$(BUILD)/scenes/%.c: firmware/scenes/%.scene $(SCENEC) $(if $(filter 1,$(SCENE_TARGET_WORK)),$(SCENE_PROBE))
 	@mkdir -p $(@D)
-	$(Q)$(SCENEC) --size $(SCENE_SIZE) --strip-rows $(SCENE_STRIP) -o $@ $< > $(@:.c=.log) || { cat $(@:.c=.log); exit 2; }
+	$(Q)tw=$(if $(filter 1,$(SCENE_TARGET_WORK)),$$(tools/scenec/target_work.sh $(SCENE_PROBE) $< $(subst x, ,$(SCENE_SIZE)) $(SCENE_STRIP)) || exit 2;) \
+	$(SCENEC) --size $(SCENE_SIZE) --strip-rows $(SCENE_STRIP) $(if $(filter 1,$(SCENE_TARGET_WORK)),--target-work $$tw) \
+		-o $@ $< > $(@:.c=.log) || { cat $(@:.c=.log); exit 2; }
+
+# The work probe: core + parser for the Cortex-M0+ at NUM_FRAC 12, run in
+# qemu-system-arm by tools/scenec/target_work.sh (file I/O by semihosting).
+SCENE_PROBE_SRCS := tools/scenec/work_probe.c tools/bench/startup.c $(CORE_SRCS) $(SCENE_SRCS)
+SCENE_PROBE_OBJS := $(patsubst %.c,$(BUILD)/scenes/probe-obj/%.o,$(SCENE_PROBE_SRCS))
+$(BUILD)/scenes/probe-obj/%.o: %.c
+	@mkdir -p $(@D)
+	$(Q)arm-none-eabi-gcc -mcpu=cortex-m0plus -mthumb -std=c11 -Os $(WARN) -ffunction-sections -fdata-sections \
+		-DNUM_MODE=1 -DNUM_FRAC=12 $(INCLUDES) -Itools/bench -MMD -MP -c $< -o $@
+$(SCENE_PROBE): $(SCENE_PROBE_OBJS) tools/bench/mps2.ld
+	$(Q)arm-none-eabi-gcc -mcpu=cortex-m0plus -mthumb -nostartfiles -T tools/bench/mps2.ld --specs=nano.specs \
+		--specs=rdimon.specs -Wl,--gc-sections -o $@ $(SCENE_PROBE_OBJS) -lm
+-include $(SCENE_PROBE_OBJS:.o=.d)
 .PHONY: scenes scenes-report
 scenes: $(SCENE_CSRCS)
 # RAM and flash per compiled scene, as the ARM compiler lays them out.
-scenes-report: $(SCENE_CSRCS)
+scenes-report: $(SCENE_CSRCS) $(SCENE_PROBE)
 	$(Q)tests/test_scenec.sh $(SCENEC) $(BUILD) --report
 
-TEST_DEPS += $(SCENEC)
+TEST_DEPS += $(SCENEC) $(SCENE_PROBE) $(BUILD)/asan/test_scene_fracs
 TESTS += tests/test_scenec.sh:$(SCENEC):$(BUILD)
+
+# ---- the renderers at every NUM_FRAC scenec may choose ----------------------
+# The core + parser bundled once per format, each exporting core_api_fixed<F>
+# (core_api_fixed is NUM_FRAC 16; fixed12 and fixed20 compile by mk/num.mk's
+# rules, fixed13 … fixed19 by the rule below).
+SCENE_FRACS       := 12 13 14 15 16 17 18 19 20
+SCENE_FRAC_MODES  := $(foreach f,$(filter-out 16,$(SCENE_FRACS)),fixed$(f))
+SCENE_FRAC_OWN    := $(filter-out fixed12 fixed20,$(SCENE_FRAC_MODES))
+define SCENE_FRAC_RULE
+$(BUILD)/$(1)/$(2)/%.o: %.c
+	@mkdir -p $$(@D)
+	$(Q)$$(CC) $(CSTD) $(WARN) $(VFLAGS_$(1)) -DNUM_MODE=1 -DNUM_FRAC=$(2:fixed%=%) $(INCLUDES) $$(EXTRA_CFLAGS) -MMD -MP -c $$< -o $$@
+endef
+define SCENE_FRAC_BUNDLE
+$(BUILD)/$(1)/core_$(2).o: $(call obj,$(1),$(2),$(CORE_SRCS) $(SCENE_SRCS) $(CORE_GLUE))
+	@mkdir -p $$(@D)
+	$(Q)ld -r -o $$@.tmp $$^
+	$(Q)objcopy --keep-global-symbol=core_api_fixed $$@.tmp $$@.tmp2
+	$(Q)objcopy --redefine-sym core_api_fixed=core_api_$(2) $$@.tmp2 $$@
+	$(Q)rm -f $$@.tmp $$@.tmp2
+endef
+$(foreach v,$(VARIANTS),$(foreach m,$(SCENE_FRAC_OWN),$(eval $(call SCENE_FRAC_RULE,$(v),$(m)))))
+$(foreach v,$(VARIANTS),$(foreach m,$(SCENE_FRAC_MODES),$(eval $(call SCENE_FRAC_BUNDLE,$(v),$(m)))))
+
+# test_scene_fracs: every scene at every format against the double core.
+define SCENE_FRACS_PROG
+$(BUILD)/$(1)/test_scene_fracs: $(call obj,$(1),none,tests/test_scene_fracs.c host_sim/compare.c) \
+    $(foreach m,$(SCENE_FRAC_MODES) fixed double,$(BUILD)/$(1)/core_$(m).o)
+	@mkdir -p $$(@D)
+	$(Q)$$(CC) $(LDFLAGS_$(1)) -o $$@ $$^ -lm
+endef
+$(foreach v,$(VARIANTS),$(eval $(call SCENE_FRACS_PROG,$(v))))
+$(foreach v,$(VARIANTS),$(call obj,$(v),none,tests/test_scene_fracs.c)): EXTRA_CFLAGS += -Itests -Ihost_sim
+.PHONY: scene-fracs-report
+scene-fracs-report: $(BUILD)/host/test_scene_fracs
+	$(Q)$(BUILD)/host/test_scene_fracs --report $(SCENE_FILES)

@@ -1,30 +1,44 @@
 #!/bin/sh
 # scenec: every scene under firmware/scenes compiles to C; the C compiles for
 # the firmware (arm-none-eabi-gcc, Cortex-M0+, fixed point at the NUM_FRAC
-# scenec chose); the RAM it reserves (.bss) is the renderer's exact need
-# (render_work_size) with no more than 10% slack; nothing lands in .data.
-# A scene whose numbers cannot fit fails with the object and quantity named.
+# scenec chose); the RAM it reserves (.bss) is the renderer's exact need ON
+# THE TARGET (render_work_size run on the emulated Cortex-M0+ by the work
+# probe) with no more than 10% slack; nothing lands in .data. The compiled
+# data equals the parsed scene field by field (host, fixed point, at the
+# chosen format), and the renderers at the chosen format stay close to the
+# double build (test_scene_fracs). A scene whose numbers cannot fit fails
+# with the object and quantity named.
 #   tests/test_scenec.sh SCENEC BUILD [--report]
 set -u
 scenec=$1
 build=$2
 report=${3:-}
+probe=$build/scenes/work_probe.elf
+fracs=$build/asan/test_scene_fracs
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 cc=arm-none-eabi-gcc
 command -v $cc >/dev/null 2>&1 || cc=""
-[ -n "$report" ] && printf '%-28s %8s %10s %10s %8s\n' scene num_frac flash_B ram_B slack
+[ -n "$report" ] && printf '%-28s %8s %10s %10s %10s %10s %8s\n' scene num_frac flash_B ram_B target_B host_B slack
+pairs=""
 for f in $(find firmware/scenes -name '*.scene' | sort); do
   name=${f#firmware/scenes/}; name=${name%.scene}
   id=$(printf '%s' "$name" | tr -c 'A-Za-z0-9\n' '_')
   out="$work/$id.c"
-  if ! "$scenec" --size 240x240 --strip-rows 16 -o "$out" "$f" >"$work/$id.log" 2>&1; then
+  # the exact need: render_work_size on the target, measured here (not taken from scenec)
+  if ! target=$(tools/scenec/target_work.sh "$probe" "$f" 240 240 16 2>"$work/$id.perr"); then
+    echo "FAIL scenec_target_work_$id: $(cat "$work/$id.perr")"
+    continue
+  fi
+  if ! "$scenec" --size 240x240 --strip-rows 16 --target-work "$target" -o "$out" "$f" >"$work/$id.log" 2>&1; then
     echo "FAIL scenec_$id: $(tail -n 3 "$work/$id.log")"
     continue
   fi
   [ -z "$report" ] && echo "PASS scenec_$id"
   frac=$(sed -n 's/.*num_frac=\([0-9]*\).*/\1/p' "$work/$id.log")
-  need=$(sed -n 's/.*work=\([0-9]*\).*/\1/p' "$work/$id.log")
+  host=$(sed -n 's/.*host_work=\([0-9]*\).*/\1/p' "$work/$id.log")
+  pairs="$pairs $f=$frac"
+  echo "$f $id $frac" >>"$work/list"
   if [ -z "$cc" ]; then
     echo "FAIL scenec_firmware_$id: arm-none-eabi-gcc not installed (tools/deps.sh firmware)"
     continue
@@ -38,20 +52,68 @@ for f in $(find firmware/scenes -name '*.scene' | sort); do
   eval "$(arm-none-eabi-size -A "$work/$id.o" | awk '
     /^\.rodata|^\.text/ { fl += $2 } /^\.bss/ { bss += $2 } /^\.data/ { d += $2 }
     END { printf "flash=%d bss=%d data=%d\n", fl, bss, d }')"
-  # the exact need is the work size (at least 1 byte: an array cannot be empty)
-  exact=$need; [ "$exact" -lt 1 ] && exact=1
+  # the exact need is the target's work size (at least 1 byte: an array cannot be empty)
+  exact=$target; [ "$exact" -lt 1 ] && exact=1
   slack=$(awk -v b="$bss" -v n="$exact" 'BEGIN { printf "%.1f%%", (b - n) * 100 / n }')
   if [ -n "$report" ]; then
-    printf '%-28s %8s %10s %10s %8s\n' "$name" "$frac" "$flash" "$bss" "$slack"
+    printf '%-28s %8s %10s %10s %10s %10s %8s\n' "$name" "$frac" "$flash" "$bss" "$target" "$host" "$slack"
     continue
   fi
   if [ "$bss" -ge "$exact" ] && [ $((bss * 10)) -le $((exact * 11)) ] && [ "$data" -eq 0 ]; then
-    echo "PASS scenec_ram_$id (work $need B, .bss $bss B, flash $flash B)"
+    echo "PASS scenec_ram_$id (target need $target B, .bss $bss B, host core $host B, flash $flash B)"
   else
     echo "FAIL scenec_ram_$id: .bss $bss B for a need of $exact B (more than 10% slack), .data $data B"
   fi
 done
 [ -n "$report" ] && exit 0
+
+# The compiled data equals the parsed scene field by field: one host program
+# per format scenec chose (the generated files #error at a finer one).
+hostcc=${CC:-cc}
+for frac in $(awk '{ print $3 }' "$work/list" | sort -u); do
+  tab="$work/table$frac.c"
+  { echo '#include "scene.h"'
+    echo 'struct scenec_entry { const char *path, *id; const struct scene *data; };'
+    awk -v f="$frac" '$3 == f { print "extern const struct scene scene_" $2 ";" }' "$work/list"
+    echo 'const struct scenec_entry scenec_table[] = {'
+    awk -v f="$frac" '$3 == f { print "    { \"" $1 "\", \"" $2 "\", &scene_" $2 " }," }' "$work/list"
+    echo '    { 0, 0, 0 } };'; } >"$tab"
+  srcs=$(awk -v f="$frac" -v d="$work" '$3 == f { print d "/" $2 ".c" }' "$work/list")
+  if ! $hostcc -std=c11 -D_POSIX_C_SOURCE=200809L -O1 -g -Wall -Wextra -Werror -fsanitize=address,undefined \
+       -DNUM_MODE=1 -DNUM_FRAC="$frac" -I. -Ifirmware/core -Itools/scene -Itests -I"$work" \
+       -o "$work/fields$frac" tests/scenec_fields.c "$tab" $srcs tools/scene/scene_parse.c firmware/core/num.c \
+       firmware/core/vec.c -lm 2>"$work/fields$frac.err"; then
+    echo "FAIL scenec_fields_frac$frac: $(head -n 3 "$work/fields$frac.err")"
+    continue
+  fi
+  "$work/fields$frac"
+done
+
+# The renderers at the format scenec chose, against the double build.
+if [ -x "$fracs" ]; then
+  "$fracs" $pairs
+else
+  echo "FAIL scenec_formats_render: $fracs not built"
+fi
+
+# Formats that vary with the scene: the book's small raster scenes earn
+# Q11.20; a planet-sized ground sphere forces Q19.12.
+for want in book/raster-06=20 demo/planet-horizon=12 book/raytracer-02=16; do
+  n=${want%=*} f=${want#*=}
+  id=$(printf '%s' "$n" | tr -c 'A-Za-z0-9\n' '_')
+  got=$(awk -v p="firmware/scenes/$n.scene" '$1 == p { print $3 }' "$work/list")
+  if [ "$got" = "$f" ]; then echo "PASS scenec_format_$id (NUM_FRAC $f)"
+  else echo "FAIL scenec_format_$id: NUM_FRAC ${got:-none}, expected $f"; fi
+done
+# --fracs limits the candidates; a coarser build of the data compiles, a finer one is refused
+"$scenec" --fracs 16,12 -o "$work/r6.c" firmware/scenes/book/raster-06.scene >"$work/r6.log" 2>&1
+if grep -q "num_frac=16" "$work/r6.log" && [ -n "$cc" ] && \
+   $cc -mcpu=cortex-m0plus -mthumb -std=c11 -DNUM_MODE=1 -DNUM_FRAC=12 -Ifirmware/core -c "$work/r6.c" -o "$work/r6.o" 2>/dev/null && \
+   ! $cc -mcpu=cortex-m0plus -mthumb -std=c11 -DNUM_MODE=1 -DNUM_FRAC=17 -Ifirmware/core -c "$work/r6.c" -o "$work/r6.o" 2>/dev/null; then
+  echo "PASS scenec_format_guard"
+else
+  echo "FAIL scenec_format_guard: $(tail -n 1 "$work/r6.log")"
+fi
 
 # A scene that cannot fit: the book's ground sphere with the book's operation
 # order (r^2 and |CO|^2 kept in num) needs more than any format has.

@@ -1,7 +1,7 @@
 /* scenec — compiles a scene file into C source for the firmware.
  *
- *   scenec [--size WxH] [--strip-rows N] [--fracs 16,12] [--id NAME]
- *          [--allow-wide] -o OUT.c SCENE
+ *   scenec [--size WxH] [--strip-rows N] [--fracs 20,...,12] [--id NAME]
+ *          [--allow-wide] [--target-work BYTES] -o OUT.c SCENE
  *
  * Writes OUT.c (the scene as const data: models, textures, lights in flash;
  * one static work buffer of exactly render_work_size() bytes) and OUT.h (its
@@ -14,8 +14,12 @@
  * doubles, written as NUM_C(literal), so the same file compiles to the exact
  * doubles in the double build and to the nearest fixed-point values in a
  * fixed build of any NUM_FRAC (NUM_C rounds exactly as num_from_double).
- * The work size comes from the fixed-point core (core_api_fixed), which is
- * what the firmware runs.
+ * The work size is the target's: --target-work BYTES, measured by running
+ * render_work_size() on the emulated Cortex-M0+ (tools/scenec/target_work.sh,
+ * as `make scenes` does). Without it scenec falls back to the fixed-point
+ * core of this 64-bit host (core_api_fixed12), an upper bound: the work
+ * structures hold pointers and sizes, 8 bytes here and 4 on the target, and
+ * every other member has the same size and alignment on both.
  */
 #include <math.h>
 #include <stdarg.h>
@@ -25,11 +29,16 @@
 #include "core_api.h"
 #include "scene_parse.h"
 
+/* the fixed-point core at NUM_FRAC 12 (mk/scene.mk): it loads every scene any
+ * format can hold, and the work layout does not depend on NUM_FRAC */
+extern const struct core_api core_api_fixed12;
+
 /* ---- output helpers --------------------------------------------------- */
 
 static FILE *out;
 static size_t flash_bytes;
 static const char *outh_path;   /* const data emitted, by sizeof of what we emit */
+static int target_work_given;   /* the work size is the target's (--target-work) */
 
 static void emit(const char *fmt, ...)
 {
@@ -39,12 +48,14 @@ static void emit(const char *fmt, ...)
     va_end(ap);
 }
 
-/* A num literal: the double, exactly (17 digits), as NUM_C(...). */
+/* A num literal: the double, exactly (17 digits), as NUM_C(...). The result
+ * lives in a ring of 16 buffers: one emit() may take at most 16 literals
+ * (the 2D primitive takes 9, in an unspecified evaluation order). */
 static const char *lit(num v)
 {
-    static char bufs[8][48];
+    static char bufs[16][48];
     static int k;
-    char *b = bufs[k++ & 7];
+    char *b = bufs[k++ & 15];
     double d = num_to_double(v);
     if (d == 0 && signbit(d)) return "NUM_C(-0.0)";
     char t[40];
@@ -175,6 +186,7 @@ static void scan(const struct scene *s, struct ranges *R, int width, int height)
         smallest(R, 1.0 / 1024, "texture coordinates (1/1024 of a texture)");
         note(&R->screen, w > height ? w : height, "render size");
         note(&R->screen, s->canvas_w > s->canvas_h ? s->canvas_w : s->canvas_h, "scene canvas size");
+        double reach = 0;   /* farthest vertex of any instance from the camera */
         for (int i = 0; i < s->nprims; i++)
             for (int k = 0; k < s->prims[i].npts; k++) {
                 note(&R->screen, num_to_double(s->prims[i].x[k]), "2D primitive %d: x", i);
@@ -205,6 +217,11 @@ static void scan(const struct scene *s, struct ranges *R, int width, int height)
             if (s->ras.shading == SHADE_PHONG)
                 note(&R->screen, (w / 2) * (far + cam), "instance %d: Phong unprojection x * z", i);
             note(&R->position, far + cam, "instance %d (%s): farthest vertex from the camera", i, m->name);
+            /* face normals are edge x edge of camera-space corners, narrowed to
+             * num: at most the square of the instance's diameter */
+            note(&R->square, (2 * sc * vmax) * (2 * sc * vmax), "instance %d (%s): face normal edge x edge", i,
+                 m->name);
+            if (far + cam > reach) reach = far + cam;
             for (int k = 0; k < s->nlights; k++)
                 if (s->lights[k].type == LIGHT_POINT)
                     note(&R->position, far + len3(s->lights[k].v), "instance %d: distance to light %d", i, k);
@@ -231,6 +248,19 @@ static void scan(const struct scene *s, struct ranges *R, int width, int height)
                     note(&R->screen, num_to_double(m->tris[k].uv[c].v) * 1024, "instance %d: v x texture size", i);
                 }
         }
+        if (s->ras.shadow_volume) {
+            /* shadow volumes extrude each lit face away from the light by the
+             * scene's bounding-sphere reach (|centre - light| + 2 radius, or 3
+             * radii for a directional light); the bound is within `reach` of
+             * the camera, so the extrusion is at most |light| + cam + 6 reach,
+             * and the volume's faces are edge x edge of extruded corners */
+            double lmax = 0;
+            for (int k = 0; k < s->nlights; k++)
+                if (s->lights[k].type == LIGHT_POINT && len3(s->lights[k].v) > lmax) lmax = len3(s->lights[k].v);
+            double ext = lmax + cam + 6 * reach, e = reach + ext;
+            note(&R->position, e, "shadow volume: extruded corner (extrusion %.6g)", ext);
+            note(&R->square, (2 * e) * (2 * e), "shadow volume: face normal of extruded corners");
+        }
     }
 }
 
@@ -248,8 +278,9 @@ static void emit_scene(const struct scene *s, const char *id, const char *src, i
     emit("/* %s.c — generated by tools/scenec from %s; do not edit. */\n", id, src);
     const char *hb = strrchr(outh_path, '/') ? strrchr(outh_path, '/') + 1 : outh_path;
     emit("#include \"scene.h\"\n#include \"%s\"\n\n", hb);
-    emit("#if NUM_MODE == NUM_MODE_FIXED && NUM_FRAC != %d\n", frac);
-    emit("#error \"scene %s was checked for NUM_FRAC %d\"\n#endif\n\n", id, frac);
+    /* a coarser format (smaller NUM_FRAC) holds every range this one does */
+    emit("#if NUM_MODE == NUM_MODE_FIXED && NUM_FRAC > %d\n", frac);
+    emit("#error \"scene %s was checked for NUM_FRAC <= %d\"\n#endif\n\n", id, frac);
 
     if (s->nlights) {
         emit("static const struct scene_light lights[%d] = {\n", s->nlights);
@@ -440,7 +471,8 @@ static void emit_scene(const struct scene *s, const char *id, const char *src, i
     emit("};\n\n");
     flash_bytes += sizeof(struct scene) + strlen(s->name) + 1;
 
-    emit("/* render_work_size(scene, %d, %d, %d) of the fixed-point core */\n", width, height, strip);
+    emit("/* render_work_size(scene, %d, %d, %d) of the fixed-point core%s */\n", width, height, strip,
+         target_work_given ? " on the target" : " (this host's: an upper bound)");
     char ID[256];
     upper(ID, id);
     emit("_Alignas(8) uint8_t scene_%s_work[SCENE_%s_WORK_SIZE > 0 ? SCENE_%s_WORK_SIZE : 1];\n", id, ID, ID);
@@ -450,15 +482,17 @@ static void emit_scene(const struct scene *s, const char *id, const char *src, i
 
 static int usage(void)
 {
-    fprintf(stderr, "usage: scenec [--size WxH] [--strip-rows N] [--fracs 16,12] [--id NAME] [--allow-wide] "
-                    "-o OUT.c SCENE\n");
+    fprintf(stderr, "usage: scenec [--size WxH] [--strip-rows N] [--fracs 20,...,12] [--id NAME] [--allow-wide] "
+                    "[--target-work BYTES] -o OUT.c SCENE\n");
     return 2;
 }
 
 int main(int argc, char **argv)
 {
     int width = 240, height = 240, strip = 16, allow_wide = 0;
-    int fracs[8] = { 16, 12 }, nfracs = 2;
+    long target_work = -1;
+    /* every format the renderers are checked at (tests/test_scene_fracs.c) */
+    int fracs[16] = { 20, 19, 18, 17, 16, 15, 14, 13, 12 }, nfracs = 9;
     const char *outc = NULL, *path = NULL, *idarg = NULL;
     for (int i = 1; i < argc; i++) {
         if (!strcmp(argv[i], "--size") && i + 1 < argc) {
@@ -471,15 +505,19 @@ int main(int argc, char **argv)
         } else if (!strcmp(argv[i], "--fracs") && i + 1 < argc) {
             char *p = argv[++i];
             nfracs = 0;
-            while (*p && nfracs < 8) {
+            while (*p && nfracs < 16) {
                 fracs[nfracs] = (int)strtol(p, &p, 10);
-                if (fracs[nfracs] < 1 || fracs[nfracs] > 30) return usage();
+                if (fracs[nfracs] < 12 || fracs[nfracs] > 20) return usage();
                 nfracs++;
                 if (*p == ',') p++;
                 else if (*p) return usage();
             }
         } else if (!strcmp(argv[i], "--id") && i + 1 < argc) {
             idarg = argv[++i];
+        } else if (!strcmp(argv[i], "--target-work") && i + 1 < argc) {
+            char *e;
+            target_work = strtol(argv[++i], &e, 10);
+            if (*e || target_work < 0 || target_work > 0x7fffffffL) return usage();
         } else if (!strcmp(argv[i], "--allow-wide")) {
             allow_wide = 1;
         } else if (!strcmp(argv[i], "-o") && i + 1 < argc) {
@@ -567,13 +605,21 @@ int main(int argc, char **argv)
 
     /* the renderer's work memory, from the fixed-point core */
     void *fs = NULL;
-    if (core_api_fixed.scene_load(path, &fs, err, sizeof err)) {
+    if (core_api_fixed12.scene_load(path, &fs, err, sizeof err)) {
         fprintf(stderr, "%s\n", err);
         scene_free(s);
         return 2;
     }
-    size_t work = core_api_fixed.work_size(fs, (uint16_t)width, (uint16_t)height, (uint16_t)strip);
-    core_api_fixed.scene_free(fs);
+    size_t host_work = core_api_fixed12.work_size(fs, (uint16_t)width, (uint16_t)height, (uint16_t)strip);
+    core_api_fixed12.scene_free(fs);
+    size_t work = target_work >= 0 ? (size_t)target_work : host_work;
+    if (target_work > (long)host_work) {
+        /* the target's structures are never larger than the host's */
+        fprintf(stderr, "%s:1:1: error: --target-work %ld exceeds this host's work size %zu; the probe image is "
+                        "stale or for another scene\n", path, target_work, host_work);
+        scene_free(s);
+        return 2;
+    }
 
     /* files */
     char outh[1024];
@@ -594,7 +640,7 @@ int main(int argc, char **argv)
     }
     size_t strip_bytes = (size_t)width * strip * 2;
     fprintf(h, "/* scene_%s.h — generated by tools/scenec from %s; do not edit.\n *\n"
-               " * Checked for the fixed-point core at NUM_FRAC %d, a %dx%d frame in strips of %d rows.\n"
+               " * Checked for the fixed-point core at NUM_FRAC <= %d, a %dx%d frame in strips of %d rows.\n"
                " * RAM: scene_%s_work (SCENE_%s_WORK_SIZE bytes, for render_init) plus the caller's\n"
                " * strip buffer (SCENE_%s_STRIP_BYTES = width x strip rows x 2 bytes of RGB565).\n */\n",
             id, path, frac, width, height, strip, id, ID, ID);
@@ -610,15 +656,19 @@ int main(int argc, char **argv)
         scene_free(s);
         return 1;
     }
+    target_work_given = target_work >= 0;
     emit_scene(s, id, path, frac, work, width, height, strip);
     if (fclose(out)) {
         fprintf(stderr, "scenec: error writing %s\n", outc);
         scene_free(s);
         return 1;
     }
-    printf("  memory: RAM %zu bytes of work + %zu bytes of strip (%dx%d, %d rows); flash: the const data of %s\n",
-           work, strip_bytes, width, height, strip, outc);
-    printf("scenec-summary id=%s num_frac=%d work=%zu strip=%zu\n", id, frac, work, strip_bytes);
+    printf("  memory: RAM %zu bytes of work (%s; this host's core: %zu) + %zu bytes of strip (%dx%d, %d rows);\n"
+           "    flash: the const data of %s\n",
+           work, target_work >= 0 ? "the target's render_work_size" : "this host's render_work_size, an upper bound",
+           host_work, strip_bytes, width, height, strip, outc);
+    printf("scenec-summary id=%s num_frac=%d work=%zu host_work=%zu target=%d strip=%zu\n", id, frac, work, host_work,
+           target_work >= 0, strip_bytes);
     scene_free(s);
     return 0;
 }

@@ -1,0 +1,19 @@
+#!/bin/sh
+# The renderer's work memory for a scene on the target: runs the work probe
+# image (tools/scenec/work_probe.c) on the emulated Cortex-M0+ and prints
+# render_work_size() as the 32-bit firmware computes it.
+#   tools/scenec/target_work.sh PROBE.elf SCENE W H STRIP_ROWS
+# Exit 0 with the byte count on stdout; 2 with a one-line error on stderr.
+# SCENE must not contain spaces or commas (qemu's argument syntax).
+set -u
+[ $# -eq 5 ] || { echo "usage: target_work.sh PROBE.elf SCENE W H STRIP_ROWS" >&2; exit 2; }
+case "$2" in *[\ ,]*) echo "target_work.sh: $2: no spaces or commas in scene paths" >&2; exit 2 ;; esac
+command -v qemu-system-arm >/dev/null 2>&1 || { echo "target_work.sh: qemu-system-arm not found (tools/deps.sh bench)" >&2; exit 2; }
+out=$(timeout 60 qemu-system-arm -M mps2-an385 -nographic -monitor none -serial null \
+  -semihosting-config "enable=on,target=native,arg=probe,arg=$2,arg=$3,arg=$4,arg=$5" -kernel "$1" 2>&1)
+n=$(printf '%s\n' "$out" | sed -n 's/^WORK \([0-9][0-9]*\)$/\1/p')
+if [ -z "$n" ]; then
+  echo "target_work.sh: $2: $(printf '%s' "$out" | head -n 2 | tr '\n' ' ')" >&2
+  exit 2
+fi
+echo "$n"

@@ -12,9 +12,11 @@ struct layout {
     uint32_t nverts, ntris;
 };
 
+/* Bytes of depth a pixel; none unless triangles are depth-tested (2D
+ * primitives and 3D lines never are, so scenes of those need no buffer). */
 static int depth_bytes(const struct scene *s)
 {
-    if (!s->ras.depth_test) return 0;
+    if (!s->ras.depth_test || s->ninstances == 0) return 0;
     if (s->ras.book_exact) return (int)sizeof(num);
     return s->ras.depth_bits == 16 ? 2 : 4;
 }
@@ -305,7 +307,7 @@ static void book_pixel(struct ras_ctx *rc, int32_t x, int32_t y, const num *q, v
     int col = ras_canvas_col(rc, x), row = ras_canvas_row(rc, y);
     if (col < 0 || col >= (int)rc->w || row < (int)rc->t->y0 || row >= (int)rc->t->y1) return;
     num iz = q[0];
-    if (s->ras.depth_test) {
+    if (rc->depth_bytes) {
         num *db = (num *)(void *)rc->depth;
         size_t di = (size_t)(row - rc->t->y0) * rc->w + (size_t)col;
         if (!(db[di] == NUM_ZERO || db[di] < iz)) return;

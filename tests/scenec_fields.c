@@ -199,9 +199,7 @@ static void compare(const struct scene *a, const struct scene *b)
     EQ(o->shadow_map_size, p->shadow_map_size, "ras.shadow_map_size");
     EQ(o->pcf, p->pcf, "ras.pcf");
     EQ(o->env_reflect, p->env_reflect, "ras.env_reflect");
-#ifdef SCENE_HAS_OUTLINES
     EQ(o->outlines, p->outlines, "ras.outlines");
-#endif
 }
 
 int main(void)

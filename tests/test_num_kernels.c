@@ -6,7 +6,7 @@
  * recurrence, 128-bit integers, 64-bit division); the fast paths must match
  * them bit for bit on dense random samples, edge cases and exhaustive ranges:
  *   num_rsqrt_q30   relative error < 2^-17 (its documented bound)
- *   num_sqrt_est    within 2 units of sqrt(x)
+ *   num_sqrt_est, num_sqrt_est32   within 2 units of sqrt(x)
  *   num_isqrt64     floor and remainder, every magnitude
  *   num_sqrt, wnum_sqrt, num_rsqrt, v3_len, v3_normalize   definitions in num.h */
 #include <math.h>
@@ -80,6 +80,9 @@ static void test_rsqrt_q30(void)
           log2(worst), worst_x, n);
 }
 
+/* stride of the 32-bit sweeps: every value near the seed's interval ends */
+static uint64_t i_step(uint64_t x) { return (x & ((1u << 23) - 1)) < 64 || (~x & ((1u << 23) - 1)) < 64 ? 1 : 211; }
+
 static void test_sqrt_est(void)
 {
     double worst = 0;
@@ -94,6 +97,12 @@ static void test_sqrt_est(void)
         if (d > worst) { worst = d; worst_v = v; }
     }
     check(worst <= 2, "num_sqrt_est_within_2", "error %.3f at v %llu", worst, (unsigned long long)worst_v);
+    worst = 0;
+    for (uint64_t xh = 1u << 30; xh <= UINT32_MAX; xh += (i_step(xh))) {
+        double d = (double)fabsl((long double)num_sqrt_est32((uint32_t)xh) - sqrtl((long double)xh) * 65536);
+        if (d > worst) { worst = d; worst_v = xh; }
+    }
+    check(worst < 2, "num_sqrt_est32_within_2", "error %.3f at xh %llu", worst, (unsigned long long)worst_v);
 }
 
 static void test_isqrt64(void)

@@ -154,27 +154,37 @@ uint32_t num_rsqrt_q30(uint32_t xh)
     return num_mulhi32(y << 16, 0xC0000000u - w);
 }
 
+/* sqrt(x) for x in [2^62, 2^64) given xh = x >> 32 and xm = x >> 20 mod
+ * 2^32: r = sqrt(x) / 2^10 from x * y (22 bits, relative error < 2^-17, so
+ * |r^2 - x / 2^20| < 2^23 * 2^5 = 2^28: the residual is exact in 32-bit
+ * arithmetic mod 2^32), then one Newton step r + residual / (2 sqrt(x / 2^20)),
+ * with 1 / (2 sqrt(x / 2^20)) = y / 2^53, scaled by 2^10: within 2 units
+ * (the dropped low 20 bits of x move the root by < 2^-11). */
+static uint32_t sqrt_core(uint32_t xh, uint32_t xm, uint32_t *ry)
+{
+    uint32_t y = num_rsqrt_q30(xh);
+    uint32_t r = num_mulhi32(xh, y) >> 8;
+    int32_t e = (int32_t)(xm - r * r);
+    uint32_t c = num_mulhi32((e < 0 ? 0u - (uint32_t)e : (uint32_t)e) << 3, y) >> 14;
+    *ry = y;
+    return e < 0 ? (r << 10) - c : (r << 10) + c;
+}
+
 uint32_t num_sqrt_est(uint64_t v, int *k, uint32_t *ry)
 {
-    uint32_t hi = (uint32_t)(v >> 32);
+    uint32_t hi = (uint32_t)(v >> 32), y;
     int s = (hi ? num_clz32(hi) : 32 + num_clz32((uint32_t)v)) & ~1;
     uint64_t x = v << s;                         /* in [2^62, 2^64) */
-    uint32_t xh = (uint32_t)(x >> 32);
-    uint32_t y = num_rsqrt_q30(xh);              /* 2^30 / sqrt(u) */
-    uint32_t r = num_mulhi32(xh, y) << 2;        /* sqrt(x), relative error < 2^-17 */
-    /* r += (x - r^2) / (2 sqrt(x)) = (x - r^2) * y / 2^63; |x - r^2| <
-     * 2^33 * 2^15 = 2^48, so (x - r^2) >> 17 fits 32 bits. */
-    uint64_t p = num_umul32(r, r);
-    uint64_t c;
-    if (x >= p) {
-        c = r + (uint64_t)(num_mulhi32((uint32_t)((x - p) >> 17), y) >> 14);
-        if (c > UINT32_MAX) c = UINT32_MAX;
-    } else {
-        c = r - (uint64_t)(num_mulhi32((uint32_t)((p - x) >> 17), y) >> 14);
-    }
+    uint32_t r = sqrt_core((uint32_t)(x >> 32), (uint32_t)(x >> 20), &y);
     *k = s >> 1;
     if (ry) *ry = y;
-    return (uint32_t)c;
+    return r;
+}
+
+uint32_t num_sqrt_est32(uint32_t xh)
+{
+    uint32_t y;
+    return sqrt_core(xh, xh << 12, &y);
 }
 
 /* floor(sqrt(v)) from an estimate e of floor(sqrt(v)) (a few units off at
@@ -341,6 +351,18 @@ num num_sqrt(num a)
         if (a < 0) SAT_HIT(); /* outside the domain: clamped to 0 */
         return 0;
     }
+    /* z = sqrt(a 2^F) = sqrt(a2 2^G), G = F or F - 1 even (a2 = a or 2a);
+     * xh = a2 4^e in [2^30, 2^32): z = num_sqrt_est32(xh) / 2^sh with
+     * sh = 16 + e - G/2 >= 6 (F <= 20), estimate error < 2 units. Rounded
+     * from the estimate unless within 4 units of a rounding boundary. */
+    uint32_t a2 = (uint32_t)a;
+    int gh = NUM_FRAC / 2;
+    if (NUM_FRAC & 1) a2 <<= 1;
+    int s = num_clz32(a2) & ~1;
+    int sh = 16 + s / 2 - gh;
+    uint64_t t = (uint64_t)num_sqrt_est32(a2 << s) + ((uint64_t)1 << (sh - 1));
+    uint32_t f = (uint32_t)t & ((1u << sh) - 1);
+    if (f >= 4 && f <= (1u << sh) - 4) return (num)(t >> sh);
     /* a * 2^F < 2^51; the root < 2^26 always fits. */
     return (num)isqrt64_round((uint64_t)a << NUM_FRAC);
 }
@@ -799,7 +821,21 @@ num v3_len(vec3 a)
         u[2] = uabs32(a.z);
     }
     uint64_t rm, s = sumsq(u);
-    uint64_t l = num_isqrt64(s, &rm);            /* < 2^32 */
+    if (s == 0) return 0;
+    int k;
+    uint32_t e = num_sqrt_est(s, &k, 0);         /* sqrt(s) 2^k within 2 */
+    if (sh > 0) {
+        /* floor(sqrt(s)) / 2^sh rounded half up. floor(sqrt(s)) 2^k lies in
+         * (e - 2 - 2^k, e + 2]: decided by the estimate when its fraction
+         * below 2^(k+sh) is that far from the rounding boundary. */
+        int kk = k + sh;
+        if (kk < 32) {
+            uint64_t t = (uint64_t)e + ((uint64_t)1 << (kk - 1));
+            uint32_t f = (uint32_t)t & ((1u << kk) - 1);
+            if (f >= (1u << k) + 3 && f <= (1u << kk) - 3) return (num)(t >> kk);
+        }
+    }
+    uint64_t l = isqrt_fix(s, e >> k, &rm);      /* floor(sqrt(s)) < 2^32 */
     if (sh > 0) return (num)((l + ((uint64_t)1 << (sh - 1))) >> sh); /* rounds sqrt(s)/2^sh */
     if (rm > l) l++;                              /* rounds sqrt(s) */
     if (l > (uint64_t)INT32_MAX) { SAT_HIT(); return NUM_MAX; }

@@ -85,4 +85,8 @@ uint32_t num_rsqrt_q30(uint32_t xh);
  * num_rsqrt_q30 of x's high word. */
 uint32_t num_sqrt_est(uint64_t v, int *k, uint32_t *y);
 
+/* sqrt(xh) * 2^16 within 2 units, xh in [2^30, 2^32) (the same estimate for
+ * a 32-bit input, residual in 32-bit arithmetic). */
+uint32_t num_sqrt_est32(uint32_t xh);
+
 #endif

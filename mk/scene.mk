@@ -37,7 +37,7 @@ TESTS += tests/test_scene_fuzz.sh:$(FUZZ_SCENE):$(FUZZ_SECONDS)
 # literals) and linked with the NUM_FRAC 12 core bundle for render_work_size
 # (its fallback when the target's is not given).
 SCENEC := $(BUILD)/scenec
-$(SCENEC): $(call obj,host,double,tools/scenec/scenec.c $(SCENE_PARSER_SRCS)) $(BUILD)/host/core_fixed12.o
+$(SCENEC): $(call obj,host,double,tools/scenec/scenec.c tools/scene/scene_format.c $(SCENE_PARSER_SRCS)) $(BUILD)/host/core_fixed12.o
 	@mkdir -p $(@D)
 	$(Q)$(CC) -o $@ $^ -lm
 $(BUILD)/host/double/tools/scenec/scenec.o: EXTRA_CFLAGS += -Ihost_sim

@@ -27,6 +27,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include "core_api.h"
+#include "scene_format.h"
 #include "scene_parse.h"
 
 /* the fixed-point core at NUM_FRAC 12 (mk/scene.mk): it loads every scene any
@@ -79,189 +80,6 @@ static void emit_anim(const struct scene_anim *a)
     emit("{ %s, ", lit(a->rot_y_per_frame));
     emit_vec3(a->move_per_frame);
     emit(" }");
-}
-
-/* ---- ranges -------------------------------------------------------------- */
-
-struct range {
-    double value;            /* largest magnitude found */
-    char what[160];          /* object and quantity */
-};
-
-static void note(struct range *r, double v, const char *fmt, ...)
-{
-    v = fabs(v);
-    if (v <= r->value) return;
-    r->value = v;
-    va_list ap;
-    va_start(ap, fmt);
-    vsnprintf(r->what, sizeof r->what, fmt, ap);
-    va_end(ap);
-}
-
-static double len3(vec3 v)
-{
-    double x = num_to_double(v.x), y = num_to_double(v.y), z = num_to_double(v.z);
-    return sqrt(x * x + y * y + z * z);
-}
-
-static double maxabs3(vec3 v)
-{
-    double m = fabs(num_to_double(v.x));
-    if (fabs(num_to_double(v.y)) > m) m = fabs(num_to_double(v.y));
-    if (fabs(num_to_double(v.z)) > m) m = fabs(num_to_double(v.z));
-    return m;
-}
-
-/* Largest distance the camera moves from its start over the animation. */
-static double anim_reach(const struct scene_anim *a, int frames)
-{
-    return len3(a->move_per_frame) * (frames - 1);
-}
-
-/* The quantities the renderers keep in `num` (num.h's kinds), for this scene.
- * Each is recorded with the object it comes from. */
-struct ranges {
-    struct range position;   /* world and camera-space coordinates, distances (both renderers) */
-    struct range square;     /* squared distances kept in num (book formulation only) */
-    struct range colour;     /* unclamped colour intermediates: 255 x total intensity x 2 */
-    struct range screen;     /* projected coordinates and 1/z (rasterizer) */
-    double smallest;         /* smallest nonzero magnitude the scene relies on */
-    char smallest_what[160];
-};
-
-static void smallest(struct ranges *R, double v, const char *what)
-{
-    v = fabs(v);
-    if (v > 0 && v < R->smallest) {
-        R->smallest = v;
-        snprintf(R->smallest_what, sizeof R->smallest_what, "%s", what);
-    }
-}
-
-static void scan(const struct scene *s, struct ranges *R, int width, int height)
-{
-    memset(R, 0, sizeof *R);
-    R->smallest = 1e300;
-    double cam = len3(s->camera.position) + anim_reach(&s->camera_anim, s->frames);
-    note(&R->position, cam, "camera position");
-    double itot = 0;
-    for (int i = 0; i < s->nlights; i++) {
-        const struct scene_light *l = &s->lights[i];
-        itot += num_to_double(l->intensity);
-        if (l->type == LIGHT_POINT) note(&R->position, len3(l->v) + cam, "light %d: distance from the camera", i);
-        if (l->type != LIGHT_AMBIENT) note(&R->position, maxabs3(l->v), "light %d: %s", i,
-                                           l->type == LIGHT_POINT ? "position" : "direction");
-    }
-    /* diffuse and specular each add at most the light's intensity */
-    double colour = 255 * (2 * itot > 1 ? 2 * itot : 1);
-    note(&R->colour, colour, "colour x total light intensity %.3g (diffuse + specular)", 2 * itot);
-    if (s->kind == SCENE_RAYTRACE) {
-        /* a ray from the viewport runs at most this far across the scene */
-        smallest(R, num_to_double(s->viewport_w) / (width > 0 ? width : 1), "viewport step per pixel");
-        smallest(R, num_to_double(s->rt.epsilon), "epsilon");
-        int book = s->rt.formulation == 1;
-        for (int i = 0; i < s->nobjects; i++) {
-            const struct rt_object *o = &s->objects[i];
-            if (o->shape == RT_SPHERE) {
-                double r = num_to_double(o->radius), c = len3(o->center);
-                note(&R->position, c + r, "sphere %d: centre + radius", i);
-                note(&R->position, c + cam, "sphere %d: distance from the camera to the centre", i);
-                for (int k = 0; k < s->nlights; k++)
-                    if (s->lights[k].type == LIGHT_POINT)
-                        note(&R->position, c + r + len3(s->lights[k].v), "sphere %d: distance to light %d", i, k);
-                if (book) {
-                    note(&R->square, r * r, "sphere %d: radius %g makes r^2", i, r);
-                    note(&R->square, (c + cam) * (c + cam), "sphere %d: |CO|^2 from the camera", i);
-                }
-                smallest(R, r, "a sphere radius");
-            } else if (o->shape == RT_PLANE) {
-                note(&R->position, num_to_double(o->dist), "plane %d: distance from the origin", i);
-            } else {
-                for (int k = 0; k < 3; k++) note(&R->position, len3(o->p[k]) + cam, "triangle %d: corner %d", i, k);
-            }
-        }
-    } else {
-        double w = width, W = num_to_double(s->viewport_w), d = num_to_double(s->projection_d);
-        smallest(R, 1.0 / 1024, "texture coordinates (1/1024 of a texture)");
-        note(&R->screen, w > height ? w : height, "render size");
-        note(&R->screen, s->canvas_w > s->canvas_h ? s->canvas_w : s->canvas_h, "scene canvas size");
-        double reach = 0;   /* farthest vertex of any instance from the camera */
-        for (int i = 0; i < s->nprims; i++)
-            for (int k = 0; k < s->prims[i].npts; k++) {
-                note(&R->screen, num_to_double(s->prims[i].x[k]), "2D primitive %d: x", i);
-                note(&R->screen, num_to_double(s->prims[i].y[k]), "2D primitive %d: y", i);
-            }
-        for (int i = 0; i < s->nlines; i++) {
-            const struct line3d *l = &s->lines[i];
-            vec3 e[2] = { l->a, l->b };
-            for (int k = 0; k < 2; k++) {
-                note(&R->position, len3(e[k]) + cam, "line %d: end %d", i, k);
-                double z = num_to_double(e[k].z) - num_to_double(s->camera.position.z);
-                if (z > 0) {
-                    note(&R->screen, num_to_double(e[k].x) * d / z * w / W, "line %d: projected x", i);
-                    note(&R->screen, num_to_double(e[k].y) * d / z * w / W, "line %d: projected y", i);
-                }
-            }
-        }
-        for (int i = 0; i < s->ninstances; i++) {
-            const struct ras_instance *in = &s->instances[i];
-            const struct ras_model *m = &s->models[in->model];
-            double sc = num_to_double(in->scale), t = len3(in->position) + anim_reach(&in->anim, s->frames);
-            double vmax = 0;
-            for (int k = 0; k < m->nverts; k++)
-                if (len3(m->verts[k]) > vmax) vmax = len3(m->verts[k]);
-            double far = t + sc * vmax;
-            note(&R->position, t + sc * len3(m->bound_center) + cam, "instance %d (%s): bounding-sphere centre", i,
-                 m->name);
-            if (s->ras.shading == SHADE_PHONG)
-                note(&R->screen, (w / 2) * (far + cam), "instance %d: Phong unprojection x * z", i);
-            note(&R->position, far + cam, "instance %d (%s): farthest vertex from the camera", i, m->name);
-            /* face normals are edge x edge of camera-space corners, narrowed to
-             * num: at most the square of the instance's diameter */
-            note(&R->square, (2 * sc * vmax) * (2 * sc * vmax), "instance %d (%s): face normal edge x edge", i,
-                 m->name);
-            if (far + cam > reach) reach = far + cam;
-            for (int k = 0; k < s->nlights; k++)
-                if (s->lights[k].type == LIGHT_POINT)
-                    note(&R->position, far + len3(s->lights[k].v), "instance %d: distance to light %d", i, k);
-            if (!s->ras.clip) {
-                /* no near plane: the projection of each vertex, as placed */
-                for (int k = 0; k < m->nverts; k++) {
-                    vec3 v = m3_mul_v3(&in->rotation, m->verts[k]);
-                    double x = num_to_double(v.x) * sc + num_to_double(in->position.x) - num_to_double(s->camera.position.x);
-                    double y = num_to_double(v.y) * sc + num_to_double(in->position.y) - num_to_double(s->camera.position.y);
-                    double z = num_to_double(v.z) * sc + num_to_double(in->position.z) - num_to_double(s->camera.position.z);
-                    double r = sqrt(x * x + y * y + z * z);
-                    /* after any camera rotation the depth is at least ... the worst case is z = distance-limited */
-                    (void)r;
-                    if (z > 0) {
-                        note(&R->screen, x * d / z * w / W, "instance %d: projected vertex %d", i, k);
-                        note(&R->screen, y * d / z * w / W, "instance %d: projected vertex %d", i, k);
-                        note(&R->screen, 1 / z, "instance %d: 1/z of vertex %d", i, k);
-                    }
-                }
-            }
-            for (int k = 0; k < m->ntris; k++)
-                for (int c = 0; c < 3 && m->has_uvs; c++) {
-                    note(&R->screen, num_to_double(m->tris[k].uv[c].u) * 1024, "instance %d: u x texture size", i);
-                    note(&R->screen, num_to_double(m->tris[k].uv[c].v) * 1024, "instance %d: v x texture size", i);
-                }
-        }
-        if (s->ras.shadow_volume) {
-            /* shadow volumes extrude each lit face away from the light by the
-             * scene's bounding-sphere reach (|centre - light| + 2 radius, or 3
-             * radii for a directional light); the bound is within `reach` of
-             * the camera, so the extrusion is at most |light| + cam + 6 reach,
-             * and the volume's faces are edge x edge of extruded corners */
-            double lmax = 0;
-            for (int k = 0; k < s->nlights; k++)
-                if (s->lights[k].type == LIGHT_POINT && len3(s->lights[k].v) > lmax) lmax = len3(s->lights[k].v);
-            double ext = lmax + cam + 6 * reach, e = reach + ext;
-            note(&R->position, e, "shadow volume: extruded corner (extrusion %.6g)", ext);
-            note(&R->square, (2 * e) * (2 * e), "shadow volume: face normal of extruded corners");
-        }
-    }
 }
 
 static void upper(char *d, const char *s)
@@ -551,57 +369,21 @@ int main(int argc, char **argv)
     id[k] = 0;
     upper(ID, id);
 
-    /* ranges, and the number format */
-    struct ranges R;
-    scan(s, &R, width, height);
+    /* ranges, and the number format (tools/scene/scene_format.c) */
+    struct scene_format F;
+    int refused = scene_format_choose(s, width, height, fracs, nfracs, allow_wide, &F);
     printf("scenec: %s: %s scene \"%s\", %d objects, %d lights, %d models, %d instances, %d textures, %d frames\n",
            path, s->kind == SCENE_RAYTRACE ? "ray-traced" : "rasterized", s->name, s->nobjects, s->nlights,
            s->nmodels, s->ninstances, s->ntextures, s->frames);
-    printf("  ranges: positions and distances <= %.6g (%s)\n", R.position.value, R.position.what);
-    if (R.square.value > 0) printf("          squares kept in num <= %.6g (%s)\n", R.square.value, R.square.what);
-    printf("          colour intermediates <= %.6g (%s)\n", R.colour.value, R.colour.what);
-    if (R.screen.value > 0) printf("          screen quantities <= %.6g (%s)\n", R.screen.value, R.screen.what);
-    if (R.smallest < 1e300) printf("          smallest step relied on: %.6g (%s)\n", R.smallest, R.smallest_what);
-    /* the largest quantity, with a factor-2 margin for one sum or difference
-     * of two of them (a - b of two positions, colour plus reflected colour);
-     * longer sums (dot products) are taken wide by the core */
-    struct range big = R.position;
-    if (R.square.value > big.value) big = R.square;
-    if (R.colour.value > big.value) big = R.colour;
-    if (R.screen.value > big.value) big = R.screen;
-    double need = 2 * big.value;
-    int frac = -1;
-    for (int i = 0; i < nfracs; i++) {
-        double lim = ldexp(1.0, 31 - fracs[i]);
-        if (need < lim && (frac < 0 || fracs[i] > frac)) frac = fracs[i];
+    scene_format_print_ranges(stdout, &F);
+    if (refused) {
+        scene_format_refusal(&F, path, err, sizeof err);
+        fprintf(stderr, "%s\n", err);
+        scene_free(s);
+        return 2;
     }
-    if (frac < 0) {
-        int lo = fracs[0];
-        for (int i = 1; i < nfracs; i++) if (fracs[i] < lo) lo = fracs[i];
-        double lim = ldexp(1.0, 31 - lo);
-        if (!allow_wide) {
-            fprintf(stderr, "%s:1:1: error: %s = %.6g (x2 margin: %.6g) exceeds the widest number format "
-                            "(|x| < %.6g at NUM_FRAC %d); %s\n",
-                    path, big.what, big.value, need, lim, lo,
-                    &big == &R.square || big.value == R.square.value
-                        ? "use a plane, or formulation = robust (64-bit intermediates) for this scene"
-                        : "scale the scene down, or allow 64-bit intermediates for this scene (--allow-wide)");
-            scene_free(s);
-            return 2;
-        }
-        frac = lo;
-        printf("  --allow-wide: the largest quantity exceeds every format; NUM_FRAC %d, wide paths assumed\n", frac);
-    }
-    double lim = ldexp(1.0, 31 - frac);
-    printf("  number format: NUM_FRAC %d (Q%d.%d): |x| < %.6g, resolution %.3g\n", frac, 31 - frac, frac, lim,
-           ldexp(1.0, -frac));
-    printf("  no overflow: every num quantity above is <= %.6g; twice that (one sum or difference of two\n"
-           "    of them) is %.6g < %.6g. Products of two quantities (dot products, squared lengths, r^2) are\n"
-           "    taken wide (wnum = int64 with %d fraction bits, |x| < %.3g), where %.6g^2 = %.3g fits.\n",
-           big.value, need, lim, frac, ldexp(1.0, 63 - frac), need, need * need);
-    if (R.smallest < 1e300 && R.smallest < 4 * ldexp(1.0, -frac))
-        printf("  warning: %s = %.3g is within 4 steps of the resolution %.3g\n", R.smallest_what, R.smallest,
-               ldexp(1.0, -frac));
+    int frac = F.num_frac;
+    scene_format_print_argument(stdout, &F);
 
     /* the renderer's work memory, from the fixed-point core */
     void *fs = NULL;

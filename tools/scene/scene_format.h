@@ -1,0 +1,70 @@
+/* scene_format.h — the fixed-point number format a scene needs (host side:
+ * tools/scenec for the firmware, host_sim for --numeric fixed).
+ *
+ * The analysis reads a parsed scene's numbers through num_to_double, so it is
+ * meant for a scene parsed in the double build (exact values; every fixed
+ * build rounds them). It records the largest magnitude of each kind of
+ * quantity the renderers keep in `num` (positions and distances, squares
+ * narrowed back to num, colour intermediates, screen quantities), each with
+ * the object it comes from, and picks the largest NUM_FRAC among the
+ * candidates whose range 2^(31 - NUM_FRAC) holds twice the largest quantity
+ * (one sum or difference of two of them; longer sums and products are taken
+ * wide by the core). docs/scene-format.md states the argument.
+ *
+ * Everything in struct scene_format is plain C (no `num`): host programs
+ * built without a numeric mode read it through host_sim/core_api.h.
+ */
+#ifndef SCENE_FORMAT_H
+#define SCENE_FORMAT_H
+
+#include <stddef.h>
+#include <stdio.h>
+
+/* The formats the renderers are checked at (tests/test_scene_fracs.c). */
+#define SCENE_FORMAT_FRAC_MIN 12
+#define SCENE_FORMAT_FRAC_MAX 20
+
+struct scene_format_range {
+    double value;              /* largest magnitude found (0: none) */
+    char what[160];            /* object and quantity */
+};
+
+struct scene_format {
+    int width, height;         /* the render size analysed */
+    struct scene_format_range position; /* world and camera-space coordinates, distances */
+    struct scene_format_range square;   /* squared distances kept in num */
+    struct scene_format_range colour;   /* unclamped colour intermediates */
+    struct scene_format_range screen;   /* projected coordinates, 1/z, texel coordinates */
+    double smallest;           /* smallest nonzero magnitude relied on (1e300: none) */
+    char smallest_what[160];
+    struct scene_format_range big;      /* the largest of the four above */
+    double need;               /* 2 x big.value */
+    int num_frac;              /* the chosen NUM_FRAC; -1 when nothing fits (refused) */
+    int coarsest;              /* the smallest candidate NUM_FRAC */
+    int wide;                  /* nothing fits, allow_wide: num_frac = coarsest, wide paths assumed */
+};
+
+struct scene;
+
+/* Analyses S rendered at WIDTH x HEIGHT (both >= 1) and picks among
+ * FRACS[0 .. NFRACS) (each in SCENE_FORMAT_FRAC_MIN..MAX; NFRACS >= 1; NULL
+ * for all of 20 … 12). Returns 0 with f->num_frac set, or 2 when no candidate
+ * holds the scene and ALLOW_WIDE is 0 (f->num_frac = -1; see
+ * scene_format_refusal). */
+int scene_format_choose(const struct scene *s, int width, int height, const int *fracs, int nfracs,
+                        int allow_wide, struct scene_format *f);
+
+/* The ranges found, one per line ("  ranges: ..."), as scenec prints them. */
+void scene_format_print_ranges(FILE *out, const struct scene_format *f);
+
+/* The format chosen and the no-overflow argument, several lines (nothing when
+ * refused). */
+void scene_format_print_argument(FILE *out, const struct scene_format *f);
+
+/* The refusal as one line "PATH:1:1: error: QUANTITY ... exceeds the widest
+ * number format ...; WHAT TO CHANGE" (no newline) into msg (len >= 1). The
+ * position is the file's start: the quantity is a property of the whole
+ * scene, named by object and index in the message. */
+void scene_format_refusal(const struct scene_format *f, const char *path, char *msg, size_t len);
+
+#endif

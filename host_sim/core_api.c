@@ -1,15 +1,20 @@
 /* core_api.c — the per-mode table (compiled once per NUM_MODE). */
 #include "core_api.h"
+#include "scene_format.h"
 #include "scene_parse.h"
 
 #define CAT2(a, b) a##b
 #define CAT(a, b) CAT2(a, b)
 #if NUM_MODE == NUM_MODE_FIXED
 #define API core_api_fixed
+#define API_FRAC NUM_FRAC
 #elif NUM_MODE == NUM_MODE_FLOAT
 #define API core_api_float
 #else
 #define API core_api_double
+#endif
+#ifndef API_FRAC
+#define API_FRAC 0
 #endif
 
 static int load(const char *path, void **scene, char *err, size_t errlen)
@@ -43,7 +48,15 @@ static int init(struct render_ctx *ctx, const void *scene, uint16_t w, uint16_t 
     return render_init(ctx, scene, w, h, strip_rows, work, work_size);
 }
 
+static int format(const void *scene, const char *path, uint16_t w, uint16_t h, struct scene_format *f,
+                  char *msg, size_t msglen)
+{
+    if (!scene_format_choose(scene, w, h, NULL, 0, 0, f)) return 0;
+    scene_format_refusal(f, path, msg, msglen);
+    return 2;
+}
+
 const struct core_api API = {
     NUM_NAME, load, free_scene, info, work_size, init, render_begin_frame, render_strip,
-    &num_saturations,
+    &num_saturations, API_FRAC, format,
 };

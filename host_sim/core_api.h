@@ -12,6 +12,7 @@
 #include <stddef.h>
 #include <stdint.h>
 #include "render.h"
+#include "scene_format.h"
 
 struct scene_info {
     const char *name;
@@ -31,11 +32,22 @@ struct core_api {
     int (*begin_frame)(struct render_ctx *ctx, uint16_t frame);
     int (*render_strip)(struct render_ctx *ctx, struct render_target *t, struct render_stats *st);
     uint32_t *saturations;     /* the mode's saturation counter */
+    int num_frac;              /* NUM_FRAC of a fixed-point core, 0 in float and double */
+    /* The number format the scene needs at w x h (tools/scene/scene_format.h):
+     * 0 with f->num_frac set, or 2 with the refusal, one line naming PATH, in
+     * msg. Meaningful on the double core, whose scene holds the exact values. */
+    int (*format)(const void *scene, const char *path, uint16_t w, uint16_t h, struct scene_format *f,
+                  char *msg, size_t msglen);
 };
 
 extern const struct core_api core_api_fixed, core_api_float, core_api_double;
 
 /* The table for "fixed", "float" or "double"; NULL otherwise. */
 const struct core_api *core_api_by_name(const char *numeric);
+
+/* The fixed-point core at NUM_FRAC frac (SCENE_FORMAT_FRAC_MIN .. MAX; NULL
+ * otherwise): core_api_fixed12 … core_api_fixed20, core_api_fixed for 16
+ * (host_sim/core_fracs.c; link the bundles of mk/core.mk's core_frac_bundles). */
+const struct core_api *core_api_fixed_frac(int frac);
 
 #endif

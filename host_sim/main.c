@@ -31,7 +31,8 @@ static const char usage_text[] =
     "  --panel st7789|ili9341|none   emulated controller (default st7789)\n"
     "  --size WxH                    render size (default: the panel's native size;\n"
     "                                with --panel none, the scene's canvas size)\n"
-    "  --numeric fixed|float|double  arithmetic of the renderer (default fixed)\n"
+    "  --numeric fixed|float|double  arithmetic of the renderer (default fixed; fixed point\n"
+    "                                in the format the scene's ranges call for)\n"
     "  --out FILE.png|FILE.ppm       what the glass shows after the last frame\n"
     "  --out-raw FILE                the same as raw RGB565 (little-endian uint16)\n"
     "  --out-rgb888 FILE.ppm         the renderer's colour before RGB565 quantisation\n"
@@ -43,6 +44,8 @@ static const char usage_text[] =
     "                                and report psnr/max_err of the last frame's colours\n"
     "  --summary                     one line: scene, size, numeric, time, accuracy\n"
     "  --strip-rows N                rows per strip (default 16)\n"
+    "  --num-frac F                  fixed point in Q(31-F).F, F in 12..20, instead of\n"
+    "                                the scene's own format\n"
     "  --inject-fault NAME           make the panel driver misbehave (tests): %s\n"
     "exit status: 0 ok, 1 internal error, 2 usage or input error,\n"
     "             3 panel protocol violation\n";
@@ -51,6 +54,7 @@ struct opts {
     const char *scene, *panel, *numeric, *out, *out_raw, *out_rgb888, *backend;
     const char *compare, *fault;
     int has_size, stats, summary;
+    int num_frac;              /* --num-frac, 0: the scene's own format */
     unsigned width, height, frames, strip_rows;
 };
 
@@ -97,7 +101,7 @@ static int parse_args(int argc, char **argv, struct opts *o)
 {
     static const char *const with_arg[] = {
         "--scene", "--panel", "--size", "--numeric", "--out", "--out-raw", "--out-rgb888",
-        "--frames", "--backend", "--compare", "--strip-rows", "--inject-fault", NULL,
+        "--frames", "--backend", "--compare", "--strip-rows", "--inject-fault", "--num-frac", NULL,
     };
     for (int i = 1; i < argc; i++) {
         const char *a = argv[i], *val = NULL;
@@ -150,9 +154,18 @@ static int parse_args(int argc, char **argv, struct opts *o)
             if (strcmp(val, "sim") && strcmp(val, "linux"))
                 return fail(EXIT_USAGE, "unknown backend '%s' (sim|linux)", val);
             o->backend = val;
+        } else if (!strcmp(name, "--num-frac")) {
+            unsigned f = parse_count(val, SCENE_FORMAT_FRAC_MAX);
+            if (f < SCENE_FORMAT_FRAC_MIN)
+                return fail(EXIT_USAGE, "bad --num-frac '%s' (%d..%d)", val, SCENE_FORMAT_FRAC_MIN,
+                            SCENE_FORMAT_FRAC_MAX);
+            o->num_frac = (int)f;
         } else if (!strcmp(name, "--inject-fault")) o->fault = val;
     }
     if (!o->scene) return fail(EXIT_USAGE, "--scene FILE is required (try --help)");
+    if (o->num_frac && strcmp(o->numeric ? o->numeric : "fixed", "fixed") &&
+        !(o->compare && !strcmp(o->compare, "fixed")))
+        return fail(EXIT_USAGE, "--num-frac applies to fixed point (--numeric fixed or --compare fixed)");
     return EXIT_OK;
 }
 
@@ -212,6 +225,36 @@ static int core_open(struct core *c, const struct core_api *api, const char *pat
     }
     api->scene_info(c->scene, &c->info);
     return EXIT_OK;
+}
+
+/* The core of mode `numeric` for the scene at w x h. For fixed point: the
+ * format of --num-frac, or the one the scene's ranges call for, analysed on
+ * the scene as the double core parsed it (tools/scene/scene_format.c); a
+ * scene that fits no format is an input error (exit 2, the analysis's line). */
+static int core_pick(const struct opts *o, const char *numeric, unsigned w, unsigned h,
+                     const struct core_api **api)
+{
+    if (strcmp(numeric, "fixed")) {
+        *api = core_api_by_name(numeric);
+        return EXIT_OK;
+    }
+    if (o->num_frac) {
+        *api = core_api_fixed_frac(o->num_frac);
+        return EXIT_OK;
+    }
+    struct core d = { 0 };
+    int rc = core_open(&d, &core_api_double, o->scene);
+    if (rc) return rc;
+    struct scene_format f;
+    char msg[768];
+    rc = d.api->format(d.scene, o->scene, (uint16_t)w, (uint16_t)h, &f, msg, sizeof msg);
+    d.api->scene_free(d.scene);
+    if (rc) {
+        fprintf(stderr, "%s\n", msg);
+        return EXIT_USAGE;
+    }
+    *api = core_api_fixed_frac(f.num_frac);
+    return *api ? EXIT_OK : fail(EXIT_INTERNAL, "no fixed-point core at NUM_FRAC %d", f.num_frac);
 }
 
 static int core_init(struct core *c, unsigned w, unsigned h, unsigned strip_rows)
@@ -285,7 +328,10 @@ static int run(const struct opts *o, struct core *c, struct core *ref, struct pa
         return fail(EXIT_USAGE, "%s: cannot open scene: %s", o->scene, strerror(errno));
     if (S_ISDIR(st.st_mode))
         return fail(EXIT_USAGE, "%s: cannot open scene: is a directory", o->scene);
-    if ((rc = core_open(c, core_api_by_name(numeric), o->scene))) return rc;
+    /* The scene's canvas (for --panel none) from the double parse, which holds
+     * any scene the format analysis may accept. */
+    if ((rc = core_open(c, !strcmp(numeric, "fixed") ? &core_api_double : core_api_by_name(numeric), o->scene)))
+        return rc;
 
     unsigned w = o->width, h = o->height;
     if (!o->has_size) {
@@ -304,6 +350,13 @@ static int run(const struct opts *o, struct core *c, struct core *ref, struct pa
     }
     unsigned rows = o->strip_rows ? o->strip_rows : STRIP_ROWS_DEFAULT;
     if (rows > h) rows = h;
+    if (!strcmp(numeric, "fixed")) {
+        const struct core_api *api;
+        if ((rc = core_pick(o, numeric, w, h, &api))) return rc;
+        core_close(c);
+        memset(c, 0, sizeof *c);
+        if ((rc = core_open(c, api, o->scene))) return rc;
+    }
 
     struct panel_out_opts po = { panel, backend, o->fault, (uint16_t)w, (uint16_t)h };
     if ((rc = panel_out_open(pp, &po, err, sizeof err))) return fail(rc, "%s", err);
@@ -351,11 +404,14 @@ static int run(const struct opts *o, struct core *c, struct core *ref, struct pa
             json_str(name);
             printf(",\"file\":");
             json_str(o->scene);
-            printf(",\"numeric\":\"%s\",\"panel\":\"%s\",\"backend\":\"%s\",\"width\":%u,"
+            printf(",\"numeric\":\"%s\",", c->api->numeric);
+            if (c->api->num_frac) printf("\"num_frac\":%d,", c->api->num_frac);
+            else printf("\"num_frac\":null,");
+            printf("\"panel\":\"%s\",\"backend\":\"%s\",\"width\":%u,"
                    "\"height\":%u,\"frame\":%u,\"strip_rows\":%u,\"render_us\":%llu,"
                    "\"flush_us\":%llu,\"bus_us\":%llu,\"pixels_written\":%lu,\"spi_bytes\":%llu,"
                    "\"triangles_in\":%lu,\"triangles_drawn\":%lu,\"rays\":%lu,\"saturations\":%lu",
-                   c->api->numeric, panel, backend, w, h, f, rows, (unsigned long long)render_us,
+                   panel, backend, w, h, f, rows, (unsigned long long)render_us,
                    (unsigned long long)flush_us, (unsigned long long)(panel_out_bus_us(*pp) - bus0),
                    (unsigned long)rs.pixels_written,
                    (unsigned long long)(panel_out_spi_bytes(*pp) - spi0),
@@ -369,7 +425,9 @@ static int run(const struct opts *o, struct core *c, struct core *ref, struct pa
 
     struct compare_result cmp = { 0 };
     if (o->compare) {
-        if ((rc = core_open(ref, core_api_by_name(o->compare), o->scene))) return rc;
+        const struct core_api *rapi;
+        if ((rc = core_pick(o, o->compare, w, h, &rapi))) return rc;
+        if ((rc = core_open(ref, rapi, o->scene))) return rc;
         if ((rc = core_init(ref, w, h, rows))) return rc;
         b->ref_fb = malloc(npx * sizeof *b->ref_fb);
         b->ref_rgb = malloc(npx * 3);
@@ -399,7 +457,9 @@ static int run(const struct opts *o, struct core *c, struct core *ref, struct pa
         return fail(rc, "%s", err);
 
     if (o->summary) {
-        printf("%-28s %4ux%-4u %-6s %-7s %9.1f ms", name, w, h, c->api->numeric, panel,
+        char fmt[16] = "-";
+        if (c->api->num_frac) snprintf(fmt, sizeof fmt, "Q%d.%d", 31 - c->api->num_frac, c->api->num_frac);
+        printf("%-28s %4ux%-4u %-6s %-6s %-7s %9.1f ms", name, w, h, c->api->numeric, fmt, panel,
                (double)total_render_us / 1000.0 / frames);
         if (o->compare) {
             if (isinf(cmp.psnr)) printf("  exact vs %s", o->compare);

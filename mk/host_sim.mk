@@ -3,7 +3,9 @@
 # Built in two variants: $(BUILD)/host_sim (optimised, what `make` and
 # `make run` use) and $(BUILD)/asan/host_sim (ASan+UBSan, what the tests run).
 # Its own sources are mode-independent ("none"); the renderer comes in as
-# the three core bundles of mk/core.mk.
+# the three core bundles of mk/core.mk, and fixed point once per NUM_FRAC
+# 12 … 20 (core_frac_bundles): --numeric fixed renders at the format the
+# scene's ranges call for (tools/scene/scene_format.c).
 
 HOST_SIM_SRCS := host_sim/main.c host_sim/imgio.c host_sim/panel_out.c host_sim/compare.c
 
@@ -37,7 +39,8 @@ HOST_SIM_BIN_host := $(BUILD)/host_sim
 HOST_SIM_BIN_asan := $(BUILD)/asan/host_sim
 
 define HOST_SIM_LINK
-$(HOST_SIM_BIN_$(1)): $(call obj,$(1),none,$(HOST_SIM_SRCS)) $(call core_bundles,$(1)) $(call host_sim_hal,$(1))
+$(HOST_SIM_BIN_$(1)): $(call obj,$(1),none,$(HOST_SIM_SRCS)) $(call core_bundles,$(1)) $(call core_frac_bundles,$(1)) \
+                      $(call host_sim_hal,$(1))
 	@mkdir -p $$(@D)
 	$(Q)$$(CC) $(LDFLAGS_$(1)) -o $$@ $$^ $$(PNG_LIBS) $(if $(HOST_SIM_HAVE_HAL),$$(HAL_LDLIBS)) -lm
 endef

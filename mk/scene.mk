@@ -79,27 +79,9 @@ TEST_DEPS += $(SCENEC) $(SCENE_PROBE) $(BUILD)/asan/test_scene_fracs
 TESTS += tests/test_scenec.sh:$(SCENEC):$(BUILD)
 
 # ---- the renderers at every NUM_FRAC scenec may choose ----------------------
-# The core + parser bundled once per format, each exporting core_api_fixed<F>
-# (core_api_fixed is NUM_FRAC 16; fixed12 and fixed20 compile by mk/num.mk's
-# rules, fixed13 … fixed19 by the rule below).
-SCENE_FRACS       := 12 13 14 15 16 17 18 19 20
-SCENE_FRAC_MODES  := $(foreach f,$(filter-out 16,$(SCENE_FRACS)),fixed$(f))
-SCENE_FRAC_OWN    := $(filter-out fixed12 fixed20,$(SCENE_FRAC_MODES))
-define SCENE_FRAC_RULE
-$(BUILD)/$(1)/$(2)/%.o: %.c
-	@mkdir -p $$(@D)
-	$(Q)$$(CC) $(CSTD) $(WARN) $(VFLAGS_$(1)) -DNUM_MODE=1 -DNUM_FRAC=$(2:fixed%=%) $(INCLUDES) $$(EXTRA_CFLAGS) -MMD -MP -c $$< -o $$@
-endef
-define SCENE_FRAC_BUNDLE
-$(BUILD)/$(1)/core_$(2).o: $(call obj,$(1),$(2),$(CORE_SRCS) $(SCENE_SRCS) $(CORE_GLUE))
-	@mkdir -p $$(@D)
-	$(Q)ld -r -o $$@.tmp $$^
-	$(Q)objcopy --keep-global-symbol=core_api_fixed $$@.tmp $$@.tmp2
-	$(Q)objcopy --redefine-sym core_api_fixed=core_api_$(2) $$@.tmp2 $$@
-	$(Q)rm -f $$@.tmp $$@.tmp2
-endef
-$(foreach v,$(VARIANTS),$(foreach m,$(SCENE_FRAC_OWN),$(eval $(call SCENE_FRAC_RULE,$(v),$(m)))))
-$(foreach v,$(VARIANTS),$(foreach m,$(SCENE_FRAC_MODES),$(eval $(call SCENE_FRAC_BUNDLE,$(v),$(m)))))
+# The bundles core_fixed12 … core_fixed20 are mk/core.mk's (CORE_FRAC_MODES).
+SCENE_FRACS       := $(CORE_FRACS)
+SCENE_FRAC_MODES  := $(CORE_FRAC_MODES)
 
 # test_scene_fracs: every scene at every format against the double core.
 define SCENE_FRACS_PROG

@@ -228,6 +228,57 @@ fi
 run --scene "$scene" --panel none --size 32x24 --frames 4
 [ "$rc" -eq 0 ] && [ ! -s "$tmp/o" ] && pass frames_quiet_without_stats || fail frames_quiet_without_stats "exit $rc"
 
+# ---- the number format of fixed point ---------------------------------------
+# --numeric fixed renders in the format the scene's ranges call for
+# (tools/scene/scene_format.c, as scenec chooses it for the firmware), shown
+# as "num_frac" in --stats; --num-frac F overrides it.
+num_frac_of() { sed -n 's/.*"num_frac":\([0-9a-z]*\).*/\1/p' "$tmp/o" | head -n 1; }
+for want in book/raster-06=20 book/raytracer-02=16 demo/planet-horizon=12; do
+  n=${want%=*} f=${want#*=} id=$(basename "${want%=*}")
+  if [ ! -f "firmware/scenes/$n.scene" ]; then skip "num_frac_$id" "no scene $n"; continue; fi
+  run --scene "firmware/scenes/$n.scene" --panel none --size 240x240 --stats
+  got=$(num_frac_of)
+  [ "$rc" -eq 0 ] && [ "$got" = "$f" ] && pass "num_frac_$id ($f)" ||
+    fail "num_frac_$id" "exit $rc, num_frac '$got', want $f: $(head -n 1 "$tmp/e")"
+done
+r6=firmware/scenes/book/raster-06.scene
+[ -f "$r6" ] || r6=$scene
+run --scene "$r6" --panel none --size 240x240 --stats --num-frac 16
+[ "$rc" -eq 0 ] && [ "$(num_frac_of)" = 16 ] && pass num_frac_override ||
+  fail num_frac_override "exit $rc, num_frac '$(num_frac_of)'"
+# the override at the scene's own format is the same render, bit for bit
+run --scene "$r6" --panel none --size 240x240 --stats --out-raw "$tmp/own.raw"
+own=$(num_frac_of)
+run --scene "$r6" --panel none --size 240x240 --num-frac "$own" --out-raw "$tmp/forced.raw"
+[ "$rc" -eq 0 ] && cmp -s "$tmp/own.raw" "$tmp/forced.raw" && pass num_frac_override_same_format ||
+  fail num_frac_override_same_format "exit $rc, format $own"
+run --scene "$r6" --panel none --size 240x240 --stats --numeric float
+[ "$rc" -eq 0 ] && [ "$(num_frac_of)" = null ] && pass num_frac_null_in_float ||
+  fail num_frac_null_in_float "exit $rc, num_frac '$(num_frac_of)'"
+# --compare fixed takes the scene's format too: the same figures both ways round
+run --scene "$r6" --panel none --size 240x240 --stats --compare double
+a=$(sed -n 's/.*"psnr":\([0-9.a-z]*\).*/\1/p' "$tmp/o")
+run --scene "$r6" --panel none --size 240x240 --stats --numeric double --compare fixed
+b=$(sed -n 's/.*"psnr":\([0-9.a-z]*\).*/\1/p' "$tmp/o")
+[ "$rc" -eq 0 ] && [ -n "$a" ] && [ "$a" = "$b" ] && pass num_frac_compare_fixed ||
+  fail num_frac_compare_fixed "psnr '$a' vs '$b'"
+expect_err num_frac_bad 2 "bad --num-frac '11' (12..20)" --scene "$scene" --num-frac 11
+expect_err num_frac_not_fixed 2 "--num-frac applies to fixed point" --scene "$scene" --numeric float --num-frac 16
+# A scene no format holds (the book's r^2 and |CO|^2 of a 5000-radius sphere
+# kept in num): exit 2 with the analysis's line; --num-frac still forces one.
+cat >"$tmp/ground.scene" <<'SCENE'
+raytracer { formulation = book }
+sphere { center = (0, -1, 3) radius = 1 color = (255, 0, 0) }
+sphere { center = (0, -5001, 0) radius = 5000 color = (255, 255, 0) }
+SCENE
+expect_err num_frac_refused 2 \
+  "ground.scene:1:1: error: sphere 1: |CO|^2 from the camera = .* exceeds the widest number format (|x| < 524288 at NUM_FRAC 12); use a plane, or formulation = robust" \
+  --scene "$tmp/ground.scene" --panel none --size 32x24
+run --scene "$tmp/ground.scene" --panel none --size 32x24 --num-frac 12
+[ "$rc" -eq 0 ] && pass num_frac_refused_forced || fail num_frac_refused_forced "exit $rc: $(head -n 1 "$tmp/e")"
+run --scene "$tmp/ground.scene" --panel none --size 32x24 --numeric double
+[ "$rc" -eq 0 ] && pass num_frac_refused_double_renders || fail num_frac_refused_double_renders "exit $rc"
+
 # ---- the panel path ---------------------------------------------------------
 if [ "$panels" -eq 0 ]; then
   skip panels "the panel drivers are not in this build"

@@ -115,7 +115,8 @@ def stability(host_sim, outdir, size):
                     f.write(text)
                 for numeric in ("fixed", "float"):
                     try:
-                        s = host_sim_compare(host_sim, path, numeric, size)
+                        # fixed point in Q15.16 throughout (the chart's question)
+                        s = host_sim_compare(host_sim, path, numeric, size, 16)
                         psnr = s.get("psnr")
                         rows.append([form, numeric, k, "inf" if psnr is None else psnr,
                                      s.get("pct_within2"), s.get("saturations"), ""])

@@ -20,6 +20,7 @@ $(foreach v,$(VARIANTS),$(foreach m,fixed12 fixed20,$(eval $(call NUM_EXTRA_MODE
 # tests/test_num.c includes tests/check.h
 $(BUILD)/host/%/tests/test_num.o $(BUILD)/asan/%/tests/test_num.o: EXTRA_CFLAGS += -Itests
 $(BUILD)/host/%/tests/test_num_kernels.o $(BUILD)/asan/%/tests/test_num_kernels.o: EXTRA_CFLAGS += -Itests
+$(BUILD)/host/%/tests/test_num_div.o $(BUILD)/asan/%/tests/test_num_div.o: EXTRA_CFLAGS += -Itests
 
 define NUM_TEST_PROG
 $(BUILD)/$(1)/test_num_$(2): $(call obj,$(1),$(2),tests/test_num.c $(NUM_SRCS))
@@ -40,6 +41,17 @@ endef
 $(foreach v,$(VARIANTS),$(foreach m,$(NUM_KERNEL_MODES),$(eval $(call NUM_KERNEL_PROG,$(v),$(m)))))
 TEST_DEPS += $(foreach m,$(NUM_KERNEL_MODES),$(BUILD)/asan/test_num_kernels_$(m))
 TESTS     += $(foreach m,$(NUM_KERNEL_MODES),$(BUILD)/asan/test_num_kernels_$(m))
+
+# Division kernels and dot products against slow references, bit for bit
+# (fixed12: the ARMv6-M reciprocal digits; fixed, fixed20: the 32-bit
+# hardware-divide digits, as on ARMv7-M).
+define NUM_DIV_PROG
+$(BUILD)/$(1)/test_num_div_$(2): $(call obj,$(1),$(2),tests/test_num_div.c $(NUM_SRCS))
+	$(Q)$$(CC) $(LDFLAGS_$(1)) -o $$@ $$^ -lm
+endef
+$(foreach v,$(VARIANTS),$(foreach m,$(NUM_KERNEL_MODES),$(eval $(call NUM_DIV_PROG,$(v),$(m)))))
+TEST_DEPS += $(foreach m,$(NUM_KERNEL_MODES),$(BUILD)/asan/test_num_div_$(m))
+TESTS     += $(foreach m,$(NUM_KERNEL_MODES),$(BUILD)/asan/test_num_div_$(m))
 
 .PHONY: num-report
 num-report: $(foreach m,$(NUM_TEST_MODES),$(BUILD)/host/test_num_$(m))

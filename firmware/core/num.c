@@ -52,46 +52,71 @@ static uint32_t uabs32(int32_t a) { return a < 0 ? 0u - (uint32_t)a : (uint32_t)
 #define RCP64(i) RCP16(i), RCP16((i) + 16), RCP16((i) + 32), RCP16((i) + 48)
 static const uint16_t rcp_seed[256] = { RCP64(0), RCP64(64), RCP64(128), RCP64(192) };
 
-/* One Newton-Raphson step for v = 2^32 + r ~ 2^64 / dn:
- * v' = v + v*e/2^64 with e = 2^64 - dn*v (|e| < 2^56 after the seed). */
-static uint32_t rcp_step(uint32_t dn, uint32_t r)
+uint32_t num_rcp16(uint32_t dn)
 {
-    uint64_t a = (uint64_t)(0u - dn) << 32; /* (2^32 - dn) * 2^32, dn >= 2^31 */
-    uint64_t b = num_umul32(dn, r);
-    int64_t nr;
-    if (a >= b) {
-        uint32_t eh = (uint32_t)((a - b) >> 32);
-        nr = (int64_t)r + eh + (int64_t)(num_umul32(r, eh) >> 32);
-    } else {
-        uint32_t eh = (uint32_t)((b - a) >> 32);
-        nr = (int64_t)r - eh - (int64_t)(num_umul32(r, eh) >> 32);
-    }
-    if (nr < 0) return 0;
-    if (nr > (int64_t)UINT32_MAX) return UINT32_MAX;
-    return (uint32_t)nr;
+    /* y0 = 2^16 + seed ~ 2^48 / dn (relative error <= 2^-9 + 2^-17), one
+     * Newton-Raphson step y0 (2 - x y0) with x = (dn >> 9) / 2^39:
+     * e0 = 2^39 - (dn >> 9) y0 has |e0| < 2^31, so it is exact as the low
+     * word of the product (one 32x32->32 multiply). r = v - 2^32 with
+     * v = y0 2^16 (1 + e0 / 2^39), kept halved (t = r / 2, below 2^31) so
+     * that a slightly negative value near dn = 2^32 stays signed; the bias
+     * 2^10 covers the truncation of dn (which can only raise the estimate),
+     * so the result is from below. Newton's error (2^-18 relative) plus the
+     * truncations stay below 2^17 units of r: tests/test_num_div.c checks
+     * both bounds on every value of dn >> 9 (the only bits used). */
+    uint32_t sd = rcp_seed[(dn >> 23) & 0xFF];
+    int32_t e0 = (int32_t)(0u - (dn >> 9) * (0x10000u + sd));
+    int32_t t = (int32_t)(sd << 15) + (e0 >> 8) + (((int32_t)sd * (e0 >> 16)) >> 8) - 1024;
+    return t < 0 ? 0 : (uint32_t)t >> 15;
 }
+
+#if !NUM_HW_DIV32
+/* One base-2^16 digit of x / dn: x < dn * 2^16 (so the digit is < 2^16),
+ * dn in [2^31, 2^32), rh = num_rcp16(dn). The estimate xh (1 + rh / 2^16)
+ * from the top 16 bits xh of x is never above the digit and at most 4
+ * below it (x's dropped bits: < 1, rh's error < 2^17 / 2^16 = 2 units
+ * times xh / 2^16 < 1, the floor: < 1, the low bits times rh: < 1); the
+ * remainder then steps it up. Three 32x32->32 multiplies. */
+static uint32_t div_digit(uint64_t x, uint32_t dn, uint32_t rh, uint32_t *rem)
+{
+    uint32_t xh = (uint32_t)(x >> 32);
+    uint32_t q = xh + ((xh * rh) >> 16);
+    uint64_t r = x - (((uint64_t)(q * (dn >> 16)) << 16) + q * (dn & 0xFFFFu)); /* < 5 dn */
+    while (r >= dn) { r -= dn; q++; }
+    *rem = (uint32_t)r;
+    return q;
+}
+#else
+/* One base-2^16 digit of x / dn with the 32-bit hardware divide: the
+ * estimate (x >> 16) / (dn >> 16) (capped at 2^16 - 1) is never below the
+ * digit and at most 2 above it for a normalised dn (the classic bound of
+ * schoolbook division); the signed remainder steps it down. */
+static uint32_t div_digit(uint64_t x, uint32_t dn, uint32_t rh, uint32_t *rem)
+{
+    (void)rh;
+    uint32_t q = (uint32_t)(x >> 16) / (dn >> 16);
+    if (q > 0xFFFFu) q = 0xFFFFu;
+    int64_t r = (int64_t)x - (int64_t)((uint64_t)q * dn);  /* in [-2 dn, dn) */
+    while (r < 0) { r += dn; q--; }
+    *rem = (uint32_t)r;
+    return q;
+}
+#endif
 
 uint32_t num_udiv64_32(uint64_t n, uint32_t d, uint32_t *rem)
 {
-    /* Normalise d to dn in [2^31, 2^32); r ~ 2^64/dn - 2^32 from the seed
-     * (2^-9) and two Newton steps (2^-18, then a few units of 2^-32). */
+    /* Schoolbook division in two base-2^16 digits by the normalised divisor
+     * dn = d 2^s in [2^31, 2^32): N = n 2^s < dn 2^32, so N >> 16 < dn 2^16
+     * gives the high digit, and (its remainder) 2^16 + the low 16 bits of
+     * N the low one. Both remainders are below dn < 2^32. */
     int s = num_clz32(d);
-    uint32_t dn = d << s;
-    uint32_t r = (uint32_t)rcp_seed[(dn >> 23) & 0xFF] << 16;
-    r = rcp_step(dn, r);
-    r = rcp_step(dn, r);
-    /* Quotient estimate from the high word of n*2^s (< dn*2^32 because
-     * n < d*2^32): within a few units of the true quotient. */
-    uint32_t nh = (uint32_t)((n << s) >> 32);
-    uint64_t qe = (uint64_t)nh + (num_umul32(nh, r) >> 32);
-    uint32_t q = qe > UINT32_MAX ? UINT32_MAX : (uint32_t)qe;
-    /* Exact correction by the remainder. */
-    uint64_t p = num_umul32(q, d);
-    while (p > n) { q--; p -= d; }
-    uint64_t rm = n - p;
-    while (rm >= d) { rm -= d; q++; }
-    if (rem) *rem = (uint32_t)rm;
-    return q;
+    uint32_t dn = d << s, r;
+    uint64_t nn = n << s;
+    uint32_t rh = NUM_HW_DIV32 ? 0 : num_rcp16(dn);
+    uint32_t qh = div_digit(nn >> 16, dn, rh, &r);
+    uint32_t ql = div_digit((uint64_t)r << 16 | ((uint32_t)nn & 0xFFFFu), dn, rh, &r);
+    if (rem) *rem = r >> s;
+    return qh << 16 | ql;
 }
 
 /* n / d rounded to nearest (halves away from zero), with sign; d != 0. */

@@ -66,10 +66,28 @@ static inline int num_clz64(uint64_t x)
     return h ? num_clz32(h) : 32 + num_clz32((uint32_t)x);
 }
 
+/* 1 when a 32/32 divide instruction exists (ARMv7-M UDIV, the host):
+ * num_udiv64_32 then estimates its digits with it. ARMv6-M and the
+ * portable build (NUM_PORTABLE_INT) use the reciprocal num_rcp16. */
+#if defined(__ARM_ARCH_6M__) || defined(NUM_PORTABLE_INT)
+#define NUM_HW_DIV32 0
+#elif defined(__ARM_FEATURE_IDIV) || !defined(__arm__)
+#define NUM_HW_DIV32 1
+#else
+#define NUM_HW_DIV32 0
+#endif
+
 /* floor(n / d) for d != 0 and n < d * 2^32 (the quotient fits 32 bits);
- * *rem (if not null) gets the remainder. Exact: reciprocal seed from a
- * 256-entry table, two Newton-Raphson steps, remainder correction. */
+ * *rem (if not null) gets the remainder. Exact: schoolbook division in two
+ * base-2^16 digits by the normalised divisor, each digit estimated (from
+ * num_rcp16 with 32x32->32 multiplies, or by a 32/32 hardware divide) and
+ * stepped to the exact value by its remainder. */
 uint32_t num_udiv64_32(uint64_t n, uint32_t d, uint32_t *rem);
+
+/* For dn in [2^31, 2^32): rh with 2^32 + rh 2^16 <= 2^64 / dn <
+ * 2^32 + rh 2^16 + 2^17 (rh < 2^16; depends on dn >> 9 only). Table seed
+ * and one Newton-Raphson step in 32x32->32 multiplies. */
+uint32_t num_rcp16(uint32_t dn);
 
 /* floor(sqrt(v)); *rem (if not null) gets v - root^2. Estimate from
  * num_sqrt_est, then exact correction. */

@@ -41,6 +41,26 @@ static num sat_signed(uint64_t q, int neg)
 
 static uint32_t uabs32(int32_t a) { return a < 0 ? 0u - (uint32_t)a : (uint32_t)a; }
 
+/* a*b / 2^F rounded (halves up: the arithmetic shift of the exact product
+ * plus 2^(F-1)); |result| <= 2^(62-F) + 1 <= 2^54 + 1. On ARMv6-M with
+ * F <= 16 the shift is folded into the 16x16 pieces: with a = ah 2^16 + al
+ * (ah = a >> 16 signed, al in [0, 2^16)), a*b = ah bh 2^32 + (ah bl + al bh)
+ * 2^16 + al bl, and the first two terms are multiples of 2^F, so only
+ * al bl + 2^(F-1) (< 2^32) is shifted. Every piece fits 32 bits: |ah bh| <=
+ * 2^30, |ah bl|, |al bh| < 2^31. Four MULS, no 64-bit shift. */
+static inline int64_t mul_round(int32_t a, int32_t b)
+{
+#if (defined(__ARM_ARCH_6M__) || defined(NUM_PORTABLE_INT)) && NUM_FRAC <= 16
+    int32_t ah = a >> 16, bh = b >> 16;
+    uint32_t al = (uint32_t)a & 0xFFFFu, bl = (uint32_t)b & 0xFFFFu;
+    int64_t hi = (int64_t)(ah * bh) * ((int64_t)1 << (32 - NUM_FRAC));
+    int64_t mid = ((int64_t)(ah * (int32_t)bl) + (int32_t)al * bh) * (1 << (16 - NUM_FRAC));
+    return hi + mid + ((al * bl + (1u << (NUM_FRAC - 1))) >> NUM_FRAC);
+#else
+    return (num_smul32(a, b) + ((int64_t)1 << (NUM_FRAC - 1))) >> NUM_FRAC;
+#endif
+}
+
 /* ---- integer kernels (shared with vec.c through num_int.h) ----------- */
 
 /* 256-entry seed of the reciprocal: entry i is (1/x - 1) * 2^16 at the centre
@@ -345,8 +365,7 @@ num num_abs(num a)
 num num_mul(num a, num b)
 {
     /* |a*b| <= 2^62: the exact product needs the 64-bit intermediate. */
-    int64_t p = num_smul32(a, b);
-    return sat64((p + ((int64_t)1 << (NUM_FRAC - 1))) >> NUM_FRAC);
+    return sat64(mul_round(a, b));
 }
 
 num num_mul_int(num a, int32_t k) { return sat64(num_smul32(a, k)); }
@@ -585,10 +604,27 @@ wnum wnum_mul(wnum a, wnum b)
     return neg ? -(int64_t)r : (int64_t)r;
 }
 
-wnum num_mul_wide(num a, num b)
+wnum num_mul_wide(num a, num b) { return mul_round(a, b); }
+
+/* Dot and cross products: each product rounded as num_mul_wide, then summed.
+ * Range: each rounded product is at most 2^54 + 1 in magnitude (F >= 8), so
+ * a sum or difference of three stays below 2^56, far inside wnum_add's clamp
+ * at +-INT64_MAX/4 = 2^61: the clamps of the generic form (wnum_add after
+ * every product) can never act, and plain 64-bit sums give the same bits
+ * (tests/test_num_div.c compares both). Only the final conversion to num
+ * saturates. */
+wnum v3_dot_wide(vec3 a, vec3 b)
 {
-    int64_t p = num_smul32(a, b);
-    return (p + ((int64_t)1 << (NUM_FRAC - 1))) >> NUM_FRAC;
+    return mul_round(a.x, b.x) + mul_round(a.y, b.y) + mul_round(a.z, b.z);
+}
+
+num v3_dot(vec3 a, vec3 b) { return sat64(v3_dot_wide(a, b)); }
+
+vec3 v3_cross(vec3 a, vec3 b)
+{
+    return v3(sat64(mul_round(a.y, b.z) - mul_round(a.z, b.y)),
+              sat64(mul_round(a.z, b.x) - mul_round(a.x, b.z)),
+              sat64(mul_round(a.x, b.y) - mul_round(a.y, b.x)));
 }
 
 num wnum_div(wnum a, wnum b)
@@ -763,6 +799,23 @@ wnum num_mul_wide(num a, num b) { return a * b; }
 num  wnum_div(wnum a, wnum b) { return num_div(a, b); }
 wnum wnum_sqrt(wnum a) { return a <= 0 ? 0 : F(sqrt)(a); }
 num  wnum_to_num_shr(wnum a, int bits) { return F(ldexp)(a, -bits); }
+
+/* The book's operand order, x, y, z left to right (no contraction). */
+wnum v3_dot_wide(vec3 a, vec3 b)
+{
+    wnum s = num_mul_wide(a.x, b.x);
+    s = wnum_add(s, num_mul_wide(a.y, b.y));
+    return wnum_add(s, num_mul_wide(a.z, b.z));
+}
+
+num v3_dot(vec3 a, vec3 b) { return wnum_to_num(v3_dot_wide(a, b)); }
+
+vec3 v3_cross(vec3 a, vec3 b)
+{
+    return v3(wnum_to_num(wnum_sub(num_mul_wide(a.y, b.z), num_mul_wide(a.z, b.y))),
+              wnum_to_num(wnum_sub(num_mul_wide(a.z, b.x), num_mul_wide(a.x, b.z))),
+              wnum_to_num(wnum_sub(num_mul_wide(a.x, b.y), num_mul_wide(a.y, b.x))));
+}
 
 #endif
 

@@ -10,23 +10,8 @@ vec3 v3_sub(vec3 a, vec3 b) { return v3(num_sub(a.x, b.x), num_sub(a.y, b.y), nu
 vec3 v3_neg(vec3 a) { return v3(num_neg(a.x), num_neg(a.y), num_neg(a.z)); }
 vec3 v3_scale(vec3 a, num s) { return v3(num_mul(a.x, s), num_mul(a.y, s), num_mul(a.z, s)); }
 
-wnum v3_dot_wide(vec3 a, vec3 b)
-{
-    wnum s = num_mul_wide(a.x, b.x);
-    s = wnum_add(s, num_mul_wide(a.y, b.y));
-    return wnum_add(s, num_mul_wide(a.z, b.z));
-}
-
-num v3_dot(vec3 a, vec3 b) { return wnum_to_num(v3_dot_wide(a, b)); }
-
-vec3 v3_cross(vec3 a, vec3 b)
-{
-    return v3(wnum_to_num(wnum_sub(num_mul_wide(a.y, b.z), num_mul_wide(a.z, b.y))),
-              wnum_to_num(wnum_sub(num_mul_wide(a.z, b.x), num_mul_wide(a.x, b.z))),
-              wnum_to_num(wnum_sub(num_mul_wide(a.x, b.y), num_mul_wide(a.y, b.x))));
-}
-
-/* v3_len and v3_normalize depend on the mode: see num.c. */
+/* v3_dot, v3_dot_wide, v3_cross, v3_len and v3_normalize depend on the
+ * mode: see num.c. */
 
 vec3 m3_mul_v3(const mat3 *m, vec3 v)
 {

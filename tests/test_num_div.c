@@ -12,7 +12,8 @@
  *                   correctly rounded (halves away from 0), saturation and
  *                   the saturation counter as the definitions give them
  *   num_smul32, num_mul_wide, v3_dot_wide, v3_dot, v3_cross
- *                   against 128-bit / clamped references, extremes included */
+ *                   against 128-bit / clamped references, extremes included
+ *   wnum_mul        against its general form (saturation counted alike) */
 #include <stdio.h>
 #include <stdlib.h>
 
@@ -257,6 +258,56 @@ static void test_products(void)
     check(bad_cross == 0, "v3_cross_matches_definition", "%ld mismatches", bad_cross);
 }
 
+/* The former wnum_mul (general split, used for every operand before the
+ * 32-bit fast path): |a*b| >> F with b = bh 2^F + bl, saturated at
+ * INT64_MAX/4 (counted). */
+static int64_t ref_wnum_mul(int64_t a, int64_t b, int *sat)
+{
+    int neg = (a < 0) != (b < 0);
+    uint64_t ua = (uint64_t)(a < 0 ? -(i128)a : a), ub = (uint64_t)(b < 0 ? -(i128)b : b);
+    uint64_t lim = (uint64_t)WLIM_REF;
+    uint64_t bh = ub >> NUM_FRAC, bl = ub & (((uint64_t)1 << NUM_FRAC) - 1);
+    uint64_t hi = 0;
+    *sat = 0;
+    if (bh && ua) {
+        int l = (64 - __builtin_clzll(ua)) + (64 - __builtin_clzll(bh));
+        if (l >= 63) { *sat = 1; return neg ? -(int64_t)lim : (int64_t)lim; }
+        hi = ua * bh;
+    }
+    uint64_t lo;
+    if (ua >= ((uint64_t)1 << (64 - NUM_FRAC))) lo = (ua >> NUM_FRAC) * bl;
+    else lo = (ua * bl + ((uint64_t)1 << (NUM_FRAC - 1))) >> NUM_FRAC;
+    uint64_t r = hi + lo;
+    if (hi > lim || r > lim) { *sat = 1; r = lim; }
+    return neg ? -(int64_t)r : (int64_t)r;
+}
+
+static void test_wnum_mul(void)
+{
+    long bad = 0;
+    int64_t ba = 0, bb = 0;
+    for (long i = 0; i < 3000000; i++) {
+        int64_t a, b;
+        if (i % 3) { /* both below 2^32 in magnitude, the fast path, and its edges */
+            a = (int64_t)rnd_bits(i % 5 ? 32 : 33);
+            b = (int64_t)rnd_bits(i % 7 ? 32 : 33);
+            if (rng() & 1) a = -a;
+            if (rng() & 1) b = -b;
+            if (i % 11 == 0) a = rng() & 1 ? 0xFFFFFFFFll : -0xFFFFFFFFll;
+        } else {
+            a = rnd_wide();
+            b = rnd_wide();
+        }
+        int s;
+        int64_t want = ref_wnum_mul(a, b, &s);
+        uint32_t c = num_saturations;
+        int64_t got = wnum_mul(a, b);
+        if (got != want || num_saturations - c != (uint32_t)s) { bad++; ba = a; bb = b; }
+    }
+    check(bad == 0, "wnum_mul_matches_definition", "%ld mismatches, e.g. %lld * %lld", bad, (long long)ba,
+          (long long)bb);
+}
+
 int main(void)
 {
     test_rcp16();
@@ -264,5 +315,6 @@ int main(void)
     test_div_ops();
     test_wnum_div();
     test_products();
+    test_wnum_mul();
     return check_exit();
 }

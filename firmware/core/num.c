@@ -587,6 +587,14 @@ wnum wnum_mul(wnum a, wnum b)
     int neg = (a < 0) != (b < 0);
     uint64_t ua = uabs64(a), ub = uabs64(b);
     uint64_t lim = (uint64_t)WLIM;
+    if (((ua | ub) >> 32) == 0) {
+        /* Both below 2^32 (the renderers' usual case): the split below sums
+         * to ua bh + ((ua bl + 2^(F-1)) >> F) = (ua ub + 2^(F-1)) >> F (ua bh 2^F
+         * is a multiple of 2^F), below 2^(64-F) <= 2^56 < lim: the same bits
+         * from one 32x32 product, and nothing to saturate. */
+        uint64_t r = (num_umul32((uint32_t)ua, (uint32_t)ub) + ((uint64_t)1 << (NUM_FRAC - 1))) >> NUM_FRAC;
+        return neg ? -(int64_t)r : (int64_t)r;
+    }
     uint64_t bh = ub >> NUM_FRAC, bl = ub & (((uint64_t)1 << NUM_FRAC) - 1);
     uint64_t hi = 0;
     if (bh && ua) {

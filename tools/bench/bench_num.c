@@ -32,7 +32,9 @@
 
 static num A[BENCH_N], B[BENCH_N], U[BENCH_N], DEG[BENCH_N];
 static uint32_t E[BENCH_N];
+static wnum WA[BENCH_N], WB[BENCH_N];
 static volatile num sink;
+static volatile wnum wsink;
 static volatile float fsink;
 static volatile double dsink;
 static volatile int64_t lsink;
@@ -52,6 +54,11 @@ static NOINLINE num w_cos(num a, num b, uint32_t i) { (void)a; (void)b; return n
 static NOINLINE num w_dot(num a, num b, uint32_t i) { (void)i; return v3_dot(v3(a, b, a), v3(b, a, b)); }
 static NOINLINE num w_len(num a, num b, uint32_t i) { (void)i; return v3_len(v3(a, b, U[i])); }
 static NOINLINE num w_norm(num a, num b, uint32_t i) { (void)i; return v3_normalize(v3(a, b, U[i])).x; }
+static NOINLINE num w_cross(num a, num b, uint32_t i) { (void)i; return v3_cross(v3(a, b, U[i]), v3(b, U[i], a)).x; }
+static NOINLINE num w_wmul(num a, num b, uint32_t i) { (void)b; wsink = wnum_mul(WA[i], WB[i]); return a; }
+static NOINLINE num w_wsub(num a, num b, uint32_t i) { (void)b; wsink = wnum_sub(WA[i], WB[i]); return a; }
+static NOINLINE num w_wdiv(num a, num b, uint32_t i) { (void)a; (void)b; return wnum_div(WA[i], WB[i]); }
+static NOINLINE num w_wsqrt(num a, num b, uint32_t i) { (void)b; wsink = wnum_sqrt(WA[i]); return a; }
 static NOINLINE num w_chan(num a, num b, uint32_t i)
 {
     (void)b;
@@ -140,6 +147,12 @@ int bench_main(void)
         x = x * 1664525u + 1013904223u;
         E[i] = 1 + (x >> 16) % 1000;
     }
+    /* wide operands: a*b in [0.25, 10100), a*u in [0, 100.5] */
+    for (uint32_t i = 0; i < BENCH_N; i++) {
+        WA[i] = num_mul_wide(A[i], B[i]);
+        WB[i] = num_mul_wide(A[i], U[i]);
+        if (WB[i] == 0) WB[i] = wnum_from_num(NUM_ONE);
+    }
     uint64_t c = calib(100000);
     /* 200000 instructions plus the timer reads; one SysTick tick is 40 */
     int calib_ok = c >= 200000 && c <= 200400;
@@ -164,6 +177,11 @@ int bench_main(void)
     report_op("op:v3_len", w_len, base);
     report_op("op:v3_normalize", w_norm, base);
     report_op("op:rgb_to_565", w_chan, base);
+    report_op("op:v3_cross", w_cross, base);
+    report_op("op:wnum_mul", w_wmul, base);
+    report_op("op:wnum_sub", w_wsub, base);
+    report_op("op:wnum_div", w_wdiv, base);
+    report_op("op:wnum_sqrt", w_wsqrt, base);
 #if NUM_MODE == NUM_MODE_FIXED
     uint64_t rb = run_raw(r_base);
     report_raw("op:float_add", "float", r_fadd, rb);

@@ -274,6 +274,9 @@ RP2040SIM_BENCH_FRAMES ?= 1
 bench-rp2040: $(RP2040SIM_DEPS) $(FW_OUT)/pico/cgfs-1core.elf \
               $(if $(FW_HAVE_SCENEC),$(FW_OUT)/pico/cgfs-book-1core.elf)
 	@mkdir -p $(BUILD)/bench
+	@# this step's lines are rewritten, the other steps' kept
+	$(Q)grep -v '"target": *"rp2040-sim"' $(BUILD)/bench/results.jsonl >$(BUILD)/bench/results.jsonl.tmp 2>/dev/null; \
+		mv $(BUILD)/bench/results.jsonl.tmp $(BUILD)/bench/results.jsonl
 	$(Q)node tools/rp2040sim/rp2040sim.js --image $(FW_OUT)/pico/cgfs-1core.elf \
 		--frames $(RP2040SIM_BENCH_FRAMES) --json >>$(BUILD)/bench/results.jsonl
 ifneq ($(FW_HAVE_SCENEC),)

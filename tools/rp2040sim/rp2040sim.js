@@ -15,6 +15,8 @@
  *   --uart              echo the firmware's UART output to stderr
  *   --json              one JSON object per frame on stdout (scene, frame,
  *                       cycles at the firmware's clk_sys, us, fps, spi_bytes)
+ *   --numeric MODE      the image's numeric mode, for --json (default fixed)
+ *   --variant TEXT      the image's method choices, for --json (default single-core)
  *
  * Image loading without the boot ROM (facts of rp2040js 1.4.1): the image is
  * copied into the flash array and SP/PC come from the vector table at
@@ -37,7 +39,7 @@ function usage(msg) {
 }
 
 function parseArgs(argv) {
-  const o = { frames: 1, maxCycles: 4e9, panel: 'st7789', pins: { dc: 16, cs: 17, rst: 20, bl: 21 }, uart: false, json: false };
+  const o = { frames: 1, maxCycles: 4e9, panel: 'st7789', pins: { dc: 16, cs: 17, rst: 20, bl: 21 }, uart: false, json: false, numeric: 'fixed', variant: 'single-core' };
   for (let i = 0; i < argv.length; i++) {
     const a = argv[i];
     const val = () => { if (i + 1 >= argv.length) usage(`${a} needs a value`); return argv[++i]; };
@@ -57,6 +59,8 @@ function parseArgs(argv) {
         break;
       case '--uart': o.uart = true; break;
       case '--json': o.json = true; break;
+      case '--numeric': o.numeric = val(); break;
+      case '--variant': o.variant = val(); break;
       default: usage(`unknown option '${a}'`);
     }
   }
@@ -202,7 +206,8 @@ function main() {
     }
     if (o.json) {
       process.stdout.write(JSON.stringify({
-        target: 'rp2040-sim', what: `scene:${f.scene}`, frame: f.frame, width: w, height: h,
+        target: 'rp2040-sim', what: `scene:${f.scene}`, numeric: o.numeric, variant: o.variant,
+        frame: f.frame, width: w, height: h,
         cycles, per: 'frame', cpu_hz: cpuHz, us: Math.round(f.ns / 1000),
         fps: Number((1e9 / f.ns).toFixed(3)), spi_bytes: f.spi_bytes,
       }) + '\n');

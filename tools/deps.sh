@@ -11,7 +11,8 @@ firmware_pkgs="gcc-arm-none-eabi libnewlib-arm-none-eabi binutils-arm-none-eabi"
 flash_pkgs="libusb-1.0-0-dev libgpiod-dev pkg-config"
 charts_pkgs="python3 python3-matplotlib"
 bench_pkgs="$firmware_pkgs qemu-system-arm valgrind nodejs"
-test_pkgs="$run_pkgs $firmware_pkgs $flash_pkgs $bench_pkgs clang"
+# libFuzzer's runtime is only recommended by clang, and installs skip recommends.
+test_pkgs="$run_pkgs $firmware_pkgs $flash_pkgs $bench_pkgs clang libclang-rt-dev python3"
 
 case "$group" in
   run) want=$run_pkgs ;;

@@ -109,6 +109,12 @@ int intersect_ray_sphere(const struct rt_state *rt, int16_t obj, const struct rt
     return 1;
 }
 
+/* n/d in [0, 1], decided without dividing (d != 0). */
+static int ratio_in_unit(wnum n, wnum d)
+{
+    return d > 0 ? (n >= 0 && n <= d) : (n <= 0 && n >= d);
+}
+
 /* Plane n.p = dist: two-sided; the normal is turned toward the ray origin. */
 static int intersect_ray_plane(const struct rt_state *rt, int16_t obj, const struct rt_ray *ray,
                                num *t, uint8_t *flip)
@@ -120,6 +126,11 @@ static int intersect_ray_plane(const struct rt_state *rt, int16_t obj, const str
     num den = v3_dot(o->normal, d);
     if (den == 0) return 0;
     num num_ = num_sub(o->dist, v3_dot(o->normal, ray->o));
+    /* Only t > 0 can be a hit (every t_min is positive), and a quotient
+     * beyond the number format is no hit either: both are decided before
+     * dividing, so a grazing ray costs no division and saturates nothing. */
+    if (num_ == 0 || (num_ > 0) != (den > 0)) return 0;
+    if (wnum_from_num(num_abs(num_)) >= num_mul_wide(num_abs(den), NUM_MAX)) return 0;
     *t = scale_t(num_div(num_, den), ts);
     *flip = den > 0;
     return 1;
@@ -138,12 +149,21 @@ static int intersect_ray_triangle(const struct rt_state *rt, int16_t obj, const 
     wnum det = v3_dot_wide(oc->e1, pv);
     if (det == 0) return 0;
     vec3 tv = v3_sub(ray->o, o->p[0]);
-    num u = wnum_div(v3_dot_wide(tv, pv), det);
-    if (u < 0 || u > NUM_ONE) return 0;
+    /* u = un/det and v = vn/det lie in [0, 1] only when the numerator has
+     * det's sign and no larger magnitude: tested before dividing (a grazing
+     * ray's tiny det would otherwise saturate the quotient), and t > 0 only
+     * when tn has det's sign. */
+    wnum un = v3_dot_wide(tv, pv);
+    if (!ratio_in_unit(un, det)) return 0;
+    num u = wnum_div(un, det);
     vec3 qv = v3_cross(tv, oc->e1);
-    num v = wnum_div(v3_dot_wide(d, qv), det);
-    if (v < 0 || num_add(u, v) > NUM_ONE) return 0;
-    *t = scale_t(wnum_div(v3_dot_wide(oc->e2, qv), det), ts);
+    wnum vn = v3_dot_wide(d, qv);
+    if (!ratio_in_unit(vn, det)) return 0;
+    num v = wnum_div(vn, det);
+    if (num_add(u, v) > NUM_ONE) return 0;
+    wnum tn = v3_dot_wide(oc->e2, qv);
+    if (tn == 0 || (tn > 0) != (det > 0)) return 0;
+    *t = scale_t(wnum_div(tn, det), ts);
     *flip = v3_dot(oc->n, d) > 0;
     return 1;
 }

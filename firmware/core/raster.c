@@ -152,8 +152,8 @@ static void range3(const num v[3], num *lo, num *hi)
  * sub-pixel units (y down): the default path's projection. */
 static void project_sub(const struct ras_ctx *rc, vec3 p, int32_t *sx, int32_t *sy)
 {
-    num X = num_div(num_mul(p.x, rc->unproj), p.z);
-    num Y = num_div(num_mul(p.y, rc->unproj), p.z);
+    num X = ras_mul_div(p.x, rc->unproj, p.z);
+    num Y = ras_mul_div(p.y, rc->unproj, p.z);
     num fx = num_add(num_from_int(rc->w / 2), X);
     num fy = num_sub(num_from_int(rc->h / 2), Y);
     int sb = rc->sub_bits;
@@ -320,8 +320,7 @@ static void book_pixel(struct ras_ctx *rc, int32_t x, int32_t y, const num *q, v
     case SHADE_GOURAUD: i = q[k++]; break;
     case SHADE_PHONG: {
         num oz = num_recip(iz);
-        vec3 p = v3(num_div(num_mul(num_from_int(x), oz), rc->unproj),
-                    num_div(num_mul(num_from_int(y), oz), rc->unproj), oz);
+        vec3 p = v3(ras_mul_div(num_from_int(x), oz, rc->unproj), ras_mul_div(num_from_int(y), oz, rc->unproj), oz);
         i = compute_illumination(rc, p, v3(q[k], q[k + 1], q[k + 2]), bt->spec);
         k += 3;
         break;
@@ -355,8 +354,12 @@ static void book_render_triangle(struct ras_ctx *rc, const struct ras_instance *
                                      &rc->verts[ri->vbase + t->v[2]] };
     num px[3] = { cv[0]->px, cv[1]->px, cv[2]->px }, py[3] = { cv[0]->py, cv[1]->py, cv[2]->py };
     if (o->wireframe) { draw_wireframe_triangle(rc, px, py, t->color); return; }
-    vec3 nf = v3_cross(v3_sub(cv[1]->c, cv[0]->c), v3_sub(cv[2]->c, cv[0]->c));
-    if (o->backface_cull && v3_dot(v3_scale(cv[0]->c, num_neg(NUM_ONE)), nf) <= 0) return;
+    /* the face normal stays wide for the culling test; it is narrowed to
+     * num only where it serves as the shading normal */
+    struct ras_wnormal wf = ras_face_normal_wide(cv[0]->c, cv[1]->c, cv[2]->c);
+    if (o->backface_cull && ras_facing_wide(cv[0]->c, wf) <= 0) return;
+    int face_n = o->computed_normals || !m->has_normals;
+    vec3 nf = face_n ? ras_wnormal_narrow(wf) : v3(NUM_ZERO, NUM_ZERO, NUM_ZERO);
     int idx[3];
     book_sort_corners(py, idx);
     num sx[3], sy[3], q[1 + RAS_MAX_ATTR][3];
@@ -373,7 +376,7 @@ static void book_render_triangle(struct ras_ctx *rc, const struct ras_instance *
         sx[k] = px[c];
         sy[k] = py[c];
         V[k] = cv[c]->c;
-        N[k] = (o->computed_normals || !m->has_normals) ? nf : corner_normal(ri, t->n[c]);
+        N[k] = face_n ? nf : corner_normal(ri, t->n[c]);
         q[0][k] = num_recip(V[k].z);
     }
     int nq = 1;
@@ -469,7 +472,7 @@ static void default_pixel(struct ras_ctx *rc, int col, int row, const num *a, nu
         /* the pixel centre, unprojected at its depth */
         num cx = num_add(num_from_int(col - rc->w / 2), NUM_HALF);
         num cy = num_sub(num_from_int(rc->h / 2 - row), NUM_HALF);
-        vec3 p = v3(num_div(num_mul(cx, z), rc->unproj), num_div(num_mul(cy, z), rc->unproj), z);
+        vec3 p = v3(ras_mul_div(cx, z, rc->unproj), ras_mul_div(cy, z, rc->unproj), z);
         vec3 n = v3(a[dt->ai_n], a[dt->ai_n + 1], a[dt->ai_n + 2]);
         if (dt->nmap >= 0 || rc->sm_on || rc->sv_on || rc->env_on) {
             ras_put(rc, col, row, ch15_pixel(rc, dt, col, row, p, n, a, c));
@@ -487,13 +490,14 @@ static void default_render_triangle(struct ras_ctx *rc, const struct ras_instanc
     const struct ras_options *o = &rc->s->ras;
     vec3 V[3], N[3];
     for (int k = 0; k < 3; k++) V[k] = rc->verts[ri->vbase + t->v[k]].c;
-    vec3 nf = v3_cross(v3_sub(V[1], V[0]), v3_sub(V[2], V[0]));
-    num facing = v3_dot(v3_neg(V[0]), nf);
-    if (facing == 0 && nf.x == 0 && nf.y == 0 && nf.z == 0) return; /* degenerate */
+    struct ras_wnormal wf = ras_face_normal_wide(V[0], V[1], V[2]);
+    wnum facing = ras_facing_wide(V[0], wf);
+    if (facing == 0 && wf.x == 0 && wf.y == 0 && wf.z == 0) return; /* degenerate */
     int front = facing > 0;
     if (o->backface_cull && !front) return;
-    for (int k = 0; k < 3; k++)
-        N[k] = (o->computed_normals || !m->has_normals) ? nf : corner_normal(ri, t->n[k]);
+    int face_n = o->computed_normals || !m->has_normals;
+    vec3 nf = face_n ? ras_wnormal_narrow(wf) : v3(NUM_ZERO, NUM_ZERO, NUM_ZERO);
+    for (int k = 0; k < 3; k++) N[k] = face_n ? nf : corner_normal(ri, t->n[k]);
 
     struct def_tri dt;
     dt.color = t->color;

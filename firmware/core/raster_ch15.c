@@ -300,13 +300,15 @@ static void stencil_pixel(struct ras_ctx *rc, int col, int row, const num *a, nu
 }
 
 /* One face of a volume: front faces (seen from the camera) decrement,
- * back faces increment where they lie behind the visible surface. */
+ * back faces increment where they lie behind the visible surface. The
+ * face normal of extruded corners reaches (|bound_r| + extrusion)^2 and
+ * only its side of the camera matters: it stays wide (never narrowed to
+ * num), as does the projection's x * unproj before the division by z. */
 static void volume_triangle(struct ras_ctx *rc, vec3 a, vec3 b, vec3 c)
 {
-    vec3 nf = v3_cross(v3_sub(b, a), v3_sub(c, a));
-    num facing = v3_dot(v3_neg(a), nf);
+    struct ras_wnormal nf = ras_face_normal_wide(a, b, c);
     if (nf.x == 0 && nf.y == 0 && nf.z == 0) return;
-    int front = facing > 0;
+    int front = ras_facing_wide(a, nf) > 0;
     struct ras_cv in[3], poly[RAS_CLIP_MAX];
     in[0].p = a; in[1].p = b; in[2].p = c;
     int n = clip_triangle(rc, in, 0, poly);
@@ -315,7 +317,7 @@ static void volume_triangle(struct ras_ctx *rc, vec3 a, vec3 b, vec3 c)
     for (int k = 0; k < n; k++) {
         const struct ras_cv *q = &poly[front ? k : n - 1 - k];
         vec3 p = q->p;
-        num X = num_div(num_mul(p.x, rc->unproj), p.z), Y = num_div(num_mul(p.y, rc->unproj), p.z);
+        num X = ras_mul_div(p.x, rc->unproj, p.z), Y = ras_mul_div(p.y, rc->unproj, p.z);
         num fx = num_add(num_from_int(rc->w / 2), X), fy = num_sub(num_from_int(rc->h / 2), Y);
         int sb = rc->sub_bits;
         sv[k].x = (int32_t)((uint32_t)num_floor_int(fx) << sb) + num_floor_int(num_add(num_mul_int(num_frac(fx), 1 << sb), NUM_HALF));
@@ -350,9 +352,10 @@ void ras_shadow_volumes(struct ras_ctx *rc)
             if (t->v[0] >= m->nverts || t->v[1] >= m->nverts || t->v[2] >= m->nverts) continue;
             vec3 P[3], E[3];
             for (int j = 0; j < 3; j++) P[j] = rc->verts[ri->vbase + t->v[j]].c;
-            vec3 nf = v3_cross(v3_sub(P[1], P[0]), v3_sub(P[2], P[0]));
+            /* face normals wide: only their side of the light matters */
+            struct ras_wnormal nf = ras_face_normal_wide(P[0], P[1], P[2]);
             vec3 tl = point ? v3_sub(ldir, P[0]) : ldir;
-            if (v3_dot(nf, tl) <= 0) continue; /* only faces toward the light bound a volume */
+            if (ras_facing_wide(v3_neg(tl), nf) <= 0) continue; /* only faces toward the light bound a volume */
             for (int j = 0; j < 3; j++) {
                 vec3 away = point ? v3_normalize(v3_sub(P[j], ldir)) : v3_neg(ldir);
                 E[j] = v3_add(P[j], v3_scale(away, ext));
@@ -365,8 +368,8 @@ void ras_shadow_volumes(struct ras_ctx *rc)
                     const struct ras_triangle *o = &m->tris[nb];
                     vec3 Q[3];
                     for (int j = 0; j < 3; j++) Q[j] = rc->verts[ri->vbase + o->v[j]].c;
-                    vec3 no = v3_cross(v3_sub(Q[1], Q[0]), v3_sub(Q[2], Q[0]));
-                    if (v3_dot(no, point ? v3_sub(ldir, Q[0]) : ldir) > 0) continue; /* not a silhouette */
+                    struct ras_wnormal no = ras_face_normal_wide(Q[0], Q[1], Q[2]);
+                    if (ras_facing_wide(v3_neg(point ? v3_sub(ldir, Q[0]) : ldir), no) > 0) continue; /* not a silhouette */
                 }
                 int a = e, b = (e + 1) % 3;
                 volume_triangle(rc, P[b], P[a], E[a]);

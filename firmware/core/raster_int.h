@@ -123,6 +123,26 @@ typedef void (*ras_pixel_fn)(struct ras_ctx *rc, int col, int row, const num *a,
 uint32_t ras_fill_triangle(struct ras_ctx *rc, const struct ras_sv *v0, const struct ras_sv *v1,
                            const struct ras_sv *v2, int na, ras_pixel_fn fn, void *ud);
 
+/* ---- face normals and projections kept wide (raster_project.c) ---- */
+/* Face normal (b - a) x (c - a) of camera-space corners, in wnum. Its
+ * components reach the square of the triangle's extent (an instance's
+ * diameter squared, far more for an extruded shadow-volume face), which
+ * `num` need not hold; each component is v3_cross's, operation for
+ * operation, so wnum_to_num of it gives v3_cross's bits. */
+struct ras_wnormal { wnum x, y, z; };
+struct ras_wnormal ras_face_normal_wide(vec3 a, vec3 b, vec3 c);
+/* wnum_to_num of each component: the face normal as v3_cross gives it. */
+vec3 ras_wnormal_narrow(struct ras_wnormal n);
+/* (-p) . n summed in wnum, in v3_dot's operand order (x, y, z): positive
+ * when the face is seen from its front from the camera at the origin.
+ * |p| |n| need not fit `num`. */
+wnum ras_facing_wide(vec3 p, struct ras_wnormal n);
+/* x * z / unproj with the product kept wide: the unprojection of a pixel
+ * at depth z (and the projection x * unproj / z, arguments swapped). The
+ * result needs to fit `num`, the product not; the same bits as
+ * num_div(num_mul(x, z), unproj) whenever that product fits. */
+num ras_mul_div(num x, num z, num unproj);
+
 /* ---- chapters 9, 10: projection and transforms (raster_project.c) ---- */
 void project_vertex(const struct ras_ctx *rc, vec3 v, num *x, num *y);
 mat4 ras_instance_matrix(const struct ras_instance *in, uint16_t frame);

@@ -56,3 +56,34 @@ mat4 ras_camera_matrix(const struct scene *s, uint16_t frame, mat4 *rot_t, vec3 
     mat4 t = m4_translation(v3_scale(*pos, num_neg(NUM_ONE)));
     return m4_mul(rot_t, &t);
 }
+
+/* Face normals and projections kept wide (raster_int.h). In the floating
+ * modes wnum is num's type and every step below is the same operation as
+ * v3_cross / v3_dot / num_div(num_mul()), so those builds (the book's double
+ * reference among them) give the same bits as the narrow forms. */
+struct ras_wnormal ras_face_normal_wide(vec3 a, vec3 b, vec3 c)
+{
+    vec3 e1 = v3_sub(b, a), e2 = v3_sub(c, a);
+    struct ras_wnormal n;
+    n.x = wnum_sub(num_mul_wide(e1.y, e2.z), num_mul_wide(e1.z, e2.y));
+    n.y = wnum_sub(num_mul_wide(e1.z, e2.x), num_mul_wide(e1.x, e2.z));
+    n.z = wnum_sub(num_mul_wide(e1.x, e2.y), num_mul_wide(e1.y, e2.x));
+    return n;
+}
+
+vec3 ras_wnormal_narrow(struct ras_wnormal n)
+{
+    return v3(wnum_to_num(n.x), wnum_to_num(n.y), wnum_to_num(n.z));
+}
+
+wnum ras_facing_wide(vec3 p, struct ras_wnormal n)
+{
+    wnum s = wnum_mul(wnum_from_num(num_neg(p.x)), n.x);
+    s = wnum_add(s, wnum_mul(wnum_from_num(num_neg(p.y)), n.y));
+    return wnum_add(s, wnum_mul(wnum_from_num(num_neg(p.z)), n.z));
+}
+
+num ras_mul_div(num x, num z, num unproj)
+{
+    return wnum_div(num_mul_wide(x, z), wnum_from_num(unproj));
+}

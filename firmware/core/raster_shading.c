@@ -26,14 +26,18 @@ num compute_illumination_vis(const struct ras_ctx *rc, vec3 p, vec3 n, num specu
             li = num_mul(li, vis);
         }
         vec3 L = l->type == LIGHT_DIRECTIONAL ? l->v : v3_add(v3_scale(p, num_neg(NUM_ONE)), l->v);
+        /* the cosines' numerators and denominators are products of two
+         * distances (|L| |V| reaches the square of the scene's extent):
+         * wide, in the same operation order (the same bits as the narrow
+         * forms wherever those fit) */
         if (s->ras.diffuse) {
-            num cos_a = num_div(v3_dot(L, n), num_mul(v3_len(L), len_n));
+            num cos_a = wnum_div(v3_dot_wide(L, n), wnum_mul(wnum_from_num(v3_len(L)), wnum_from_num(len_n)));
             if (cos_a > 0) i = num_add(i, num_mul(cos_a, li));
         }
         if (s->ras.specular && specular >= 0) {
             num nl2 = num_mul(NUM_C(2.0), v3_dot(n, L));
             vec3 r = v3_sub(v3_scale(n, nl2), L);
-            num cos_b = num_div(v3_dot(r, view), num_mul(v3_len(r), v3_len(view)));
+            num cos_b = wnum_div(v3_dot_wide(r, view), wnum_mul(wnum_from_num(v3_len(r)), wnum_from_num(v3_len(view))));
             if (cos_b > 0) i = num_add(i, num_mul(num_powi(cos_b, (uint32_t)num_to_int(specular)), li));
         }
     }

@@ -48,6 +48,81 @@ static void smallest(struct scene_format *R, double v, const char *what)
     }
 }
 
+/* Stencil shadow volumes (raster_ch15.c): per frame the core takes the
+ * bounding centre c = the mean of the instances' bounding-sphere centres and
+ * the radius r = max |vertex - c| + 0.01, and extrudes every silhouette
+ * corner P away from the light by ext = |c - light| + 2 r (a directional
+ * light: 3 r), so an extruded corner lies within r + ext of c. Distances are
+ * unchanged by the camera transform, so the bound is found in world space:
+ * c0, the mean at frame 0, moves by at most dc over the animation (an
+ * instance moves by its reach, and one that turns swings its bounding
+ * centre by up to twice its offset). The faces' normals (edge x edge of
+ * extruded corners) and the projection's x * unproj stay wide in the core:
+ * only positions are num. */
+static void shadow_volume_ranges(const struct scene *s, struct scene_format *R, double cam)
+{
+    double c0[3] = { 0, 0, 0 }, dc = 0;
+    int n = 0;
+    for (int i = 0; i < s->ninstances; i++) {
+        const struct ras_instance *in = &s->instances[i];
+        const struct ras_model *m = &s->models[in->model];
+        if (!m->nverts) continue;
+        double sc = num_to_double(in->scale);
+        vec3 b = m3_mul_v3(&in->rotation, m->bound_center);
+        c0[0] += num_to_double(in->position.x) + sc * num_to_double(b.x);
+        c0[1] += num_to_double(in->position.y) + sc * num_to_double(b.y);
+        c0[2] += num_to_double(in->position.z) + sc * num_to_double(b.z);
+        double d = anim_reach(&in->anim, s->frames);
+        if (in->anim.rot_y_per_frame != 0 && s->frames > 1) d += 2 * sc * len3(m->bound_center);
+        if (d > dc) dc = d;
+        n++;
+    }
+    if (!n) return;
+    for (int k = 0; k < 3; k++) c0[k] /= n;
+    /* r: a still instance's vertices where they are; one that moves or
+     * turns keeps them within sc * vmax of its origin, which moves by its
+     * reach */
+    double r = 0;
+    for (int i = 0; i < s->ninstances; i++) {
+        const struct ras_instance *in = &s->instances[i];
+        const struct ras_model *m = &s->models[in->model];
+        double sc = num_to_double(in->scale), v = 0;
+        double tx = num_to_double(in->position.x) - c0[0], ty = num_to_double(in->position.y) - c0[1],
+               tz = num_to_double(in->position.z) - c0[2];
+        int still = s->frames <= 1 || (in->anim.rot_y_per_frame == 0 && anim_reach(&in->anim, s->frames) == 0);
+        for (int k = 0; k < m->nverts; k++) {
+            if (still) {
+                vec3 p = m3_mul_v3(&in->rotation, m->verts[k]);
+                double x = tx + sc * num_to_double(p.x), y = ty + sc * num_to_double(p.y), z = tz + sc * num_to_double(p.z);
+                double d = sqrt(x * x + y * y + z * z);
+                if (d > v) v = d;
+            } else {
+                double d = sqrt(tx * tx + ty * ty + tz * tz) + anim_reach(&in->anim, s->frames) + sc * len3(m->verts[k]);
+                if (d > v) v = d;
+            }
+        }
+        if (v > r) r = v;
+    }
+    r += dc + 0.01;
+    double ext = 0;
+    for (int k = 0; k < s->nlights; k++) {
+        const struct scene_light *l = &s->lights[k];
+        double e = 0;
+        if (l->type == LIGHT_POINT) {
+            double dx = num_to_double(l->v.x) - c0[0], dy = num_to_double(l->v.y) - c0[1],
+                   dz = num_to_double(l->v.z) - c0[2];
+            e = sqrt(dx * dx + dy * dy + dz * dz) + dc + 2 * r;
+        } else if (l->type == LIGHT_DIRECTIONAL) {
+            e = 3 * r;
+        }
+        if (e > ext) ext = e;
+    }
+    /* from the camera: |c| + r + ext, plus a margin for the core's rounding
+     * of c, r and the unit directions (far below 0.01 at NUM_FRAC >= 12) */
+    double e = sqrt(c0[0] * c0[0] + c0[1] * c0[1] + c0[2] * c0[2]) + dc + cam + r + ext + 0.01;
+    note(&R->position, e, "shadow volume: extruded corner from the camera (extrusion %.6g, bound radius %.6g)", ext, r);
+}
+
 /* The quantities the renderers keep in `num` (num.h's kinds), for this scene
  * at width x height, each recorded with the object it comes from. */
 static void scan(const struct scene *s, struct scene_format *R, int width, int height)
@@ -96,7 +171,9 @@ static void scan(const struct scene *s, struct scene_format *R, int width, int h
         smallest(R, 1.0 / 1024, "texture coordinates (1/1024 of a texture)");
         note(&R->screen, w > height ? w : height, "render size");
         note(&R->screen, s->canvas_w > s->canvas_h ? s->canvas_w : s->canvas_h, "scene canvas size");
-        double reach = 0;   /* farthest vertex of any instance from the camera */
+        /* face normals are shading normals (narrowed to num) only when the
+         * triangles are shaded with computed normals or the model has none */
+        int face_normals = s->ras.shading != SHADE_NONE && !s->ras.wireframe;
         for (int i = 0; i < s->nprims; i++)
             for (int k = 0; k < s->prims[i].npts; k++) {
                 note(&R->screen, num_to_double(s->prims[i].x[k]), "2D primitive %d: x", i);
@@ -124,14 +201,31 @@ static void scan(const struct scene *s, struct scene_format *R, int width, int h
             double far = t + sc * vmax;
             note(&R->position, t + sc * len3(m->bound_center) + cam, "instance %d (%s): bounding-sphere centre", i,
                  m->name);
-            if (s->ras.shading == SHADE_PHONG)
-                note(&R->screen, (w / 2) * (far + cam), "instance %d: Phong unprojection x * z", i);
+            /* the unprojection x * z / unproj (Phong) and the projection
+             * x * unproj / z keep the product wide (ras_mul_div): only the
+             * result, a position or a screen coordinate, is num */
             note(&R->position, far + cam, "instance %d (%s): farthest vertex from the camera", i, m->name);
-            /* face normals are edge x edge of camera-space corners, narrowed to
-             * num: at most the square of the instance's diameter */
-            note(&R->square, (2 * sc * vmax) * (2 * sc * vmax), "instance %d (%s): face normal edge x edge", i,
-                 m->name);
-            if (far + cam > reach) reach = far + cam;
+            /* face normals are edge x edge of camera-space corners, at most
+             * the square of the instance's diameter. The core keeps them wide
+             * (culling and facing tests are wide triple products) and narrows
+             * one to num only where it is the shading normal */
+            double diam2 = (2 * sc * vmax) * (2 * sc * vmax);
+            if (face_normals && (s->ras.computed_normals || !m->has_normals)) {
+                note(&R->square, diam2, "instance %d (%s): face normal edge x edge", i, m->name);
+                if (s->ras.book_exact) {
+                    /* the book path never normalises N: 2 N (N.L) - L of
+                     * compute_illumination is |N|^2 |L| x 2 (N.L and the
+                     * cosines' products are wide) */
+                    double lmax = far + cam;
+                    for (int k = 0; k < s->nlights; k++)
+                        if (s->lights[k].type != LIGHT_AMBIENT && far + len3(s->lights[k].v) > lmax)
+                            lmax = far + len3(s->lights[k].v);
+                    note(&R->square, 2 * diam2 * diam2 * lmax + lmax,
+                         "instance %d (%s): reflected light of the unnormalised face normal", i, m->name);
+                    note(&R->square, 2 * diam2 * lmax, "instance %d (%s): 2 N.L of the unnormalised face normal", i,
+                         m->name);
+                }
+            }
             for (int k = 0; k < s->nlights; k++)
                 if (s->lights[k].type == LIGHT_POINT)
                     note(&R->position, far + len3(s->lights[k].v), "instance %d: distance to light %d", i, k);
@@ -152,25 +246,16 @@ static void scan(const struct scene *s, struct scene_format *R, int width, int h
                     }
                 }
             }
-            for (int k = 0; k < m->ntris; k++)
+            /* uv is read only for an instance with a texture or a normal map */
+            int textured = (in->texture >= 0 && in->texture < s->ntextures) ||
+                           (in->normal_map >= 0 && in->normal_map < s->ntextures);
+            for (int k = 0; k < m->ntris && textured; k++)
                 for (int c = 0; c < 3 && m->has_uvs; c++) {
                     note(&R->screen, num_to_double(m->tris[k].uv[c].u) * 1024, "instance %d: u x texture size", i);
                     note(&R->screen, num_to_double(m->tris[k].uv[c].v) * 1024, "instance %d: v x texture size", i);
                 }
         }
-        if (s->ras.shadow_volume) {
-            /* shadow volumes extrude each lit face away from the light by the
-             * scene's bounding-sphere reach (|centre - light| + 2 radius, or 3
-             * radii for a directional light); the bound is within `reach` of
-             * the camera, so the extrusion is at most |light| + cam + 6 reach,
-             * and the volume's faces are edge x edge of extruded corners */
-            double lmax = 0;
-            for (int k = 0; k < s->nlights; k++)
-                if (s->lights[k].type == LIGHT_POINT && len3(s->lights[k].v) > lmax) lmax = len3(s->lights[k].v);
-            double ext = lmax + cam + 6 * reach, e = reach + ext;
-            note(&R->position, e, "shadow volume: extruded corner (extrusion %.6g)", ext);
-            note(&R->square, (2 * e) * (2 * e), "shadow volume: face normal of extruded corners");
-        }
+        if (s->ras.shadow_volume) shadow_volume_ranges(s, R, cam);
     }
 }
 

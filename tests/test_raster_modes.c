@@ -63,9 +63,46 @@ static void texel_lookups(void)
             }
 }
 
+/* Trilinear filtering (default path, raster-13 with a coordinate ramp and
+ * its mipmaps): the filtered lookup within one texel of the double build's
+ * on every pixel both builds cover. The level chosen may differ by a
+ * rounding step between builds; every level holds the same level-0
+ * coordinates, so that moves the result by less than a texel, and a
+ * wrong level choice or a wrong address shows as more. */
+static void texel_lookups_trilinear(void)
+{
+    const struct raster_api *modes[2] = { &raster_api_fixed, &raster_api_float };
+    static const int sizes[][2] = { { 240, 240 }, { 600, 600 } };
+    for (size_t si = 0; si < 2; si++)
+        for (int m = 0; m < 2; m++) {
+            struct frame ref, f;
+            int w = sizes[si][0], h = sizes[si][1];
+            char name[128];
+            snprintf(name, sizeof name, "texel_within_one_%s_raster-13_trilinear_%dx%d", modes[m]->numeric, w, h);
+            if (raster_api_double.render_texel_probe_trilinear("raster-13", w, h, &ref) ||
+                modes[m]->render_texel_probe_trilinear("raster-13", w, h, &f)) { check(0, name, "render failed"); continue; }
+            long both = 0, far = 0, maxd = 0, same = 0;
+            for (long i = 0; i < (long)w * h; i++) {
+                if (!f.written[i] || !ref.written[i]) continue;
+                const uint8_t *a = &f.rgb888[3 * i], *b = &ref.rgb888[3 * i];
+                long d = labs((long)a[0] - b[0]) > labs((long)a[1] - b[1]) ? labs((long)a[0] - b[0]) : labs((long)a[1] - b[1]);
+                both++;
+                same += d == 0;
+                far += d > 1;
+                if (d > maxd) maxd = d;
+            }
+            printf("# texel %-6s raster-13 trilinear %dx%d: %ld pixels, %.2f%% exact, %ld more than one texel off (max %ld)\n",
+                   modes[m]->numeric, w, h, both, both ? 100.0 * same / both : 0.0, far, maxd);
+            check(both > 1000 && far == 0, name, "%ld of %ld pixels more than one texel off (max %ld)", far, both, maxd);
+            frame_free(&ref);
+            frame_free(&f);
+        }
+}
+
 int main(void)
 {
     texel_lookups();
+    texel_lookups_trilinear();
     const struct raster_api *modes[2] = { &raster_api_fixed, &raster_api_float };
     static const int sizes[][2] = { { 600, 600 }, { 240, 240 }, { 320, 240 } };
     for (int path = 1; path >= 0; path--)

@@ -18,19 +18,12 @@
 
 #include "num.h"
 #include "check.h"
+#define TEST_RNG_SEED 0x9E3779B97F4A7C15ull
+#include "test_rng.h"
 
 static int report;
 
 #if NUM_MODE != NUM_MODE_DOUBLE
-/* Deterministic generator (xorshift64*). */
-static uint64_t rng_state = 0x9E3779B97F4A7C15ull;
-static uint64_t rng(void)
-{
-    rng_state ^= rng_state >> 12;
-    rng_state ^= rng_state << 25;
-    rng_state ^= rng_state >> 27;
-    return rng_state * 2685821657736338717ull;
-}
 
 struct stat {
     const char *name, *domain, *bound_text;

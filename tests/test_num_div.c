@@ -20,26 +20,13 @@
 #include "num.h"
 #include "num_int.h"
 #include "check.h"
+#define TEST_RNG_SEED 0x9E3779B97F4A7C15ull
+#include "test_rng.h"
 
 __extension__ typedef unsigned __int128 u128; /* host test only (GCC, Clang) */
 __extension__ typedef __int128 i128;
 
-static uint64_t rng_state = 0x9E3779B97F4A7C15ull;
-static uint64_t rng(void)
-{
-    rng_state ^= rng_state >> 12;
-    rng_state ^= rng_state << 25;
-    rng_state ^= rng_state >> 27;
-    return rng_state * 2685821657736338717ull;
-}
 
-/* Random value with a uniformly chosen bit length 1..bits. */
-static uint64_t rnd_bits(int bits)
-{
-    int b = 1 + (int)(rng() % (uint64_t)bits);
-    uint64_t v = rng() >> (64 - b);
-    return v | (uint64_t)1 << (b - 1);
-}
 
 /* A signed raw value: log-uniform magnitude, both signs, extremes often. */
 static int32_t rnd_num(void)

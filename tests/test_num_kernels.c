@@ -16,25 +16,12 @@
 #include "num.h"
 #include "num_int.h"
 #include "check.h"
+#define TEST_RNG_SEED 0x2545F4914F6CDD1Dull
+#include "test_rng.h"
 
 __extension__ typedef unsigned __int128 u128; /* host test only (GCC, Clang) */
 
-static uint64_t rng_state = 0x2545F4914F6CDD1Dull;
-static uint64_t rng(void)
-{
-    rng_state ^= rng_state >> 12;
-    rng_state ^= rng_state << 25;
-    rng_state ^= rng_state >> 27;
-    return rng_state * 2685821657736338717ull;
-}
 
-/* Random 64-bit value with a uniformly chosen bit length 1..bits. */
-static uint64_t rnd_bits(int bits)
-{
-    int b = 1 + (int)(rng() % (uint64_t)bits);
-    uint64_t v = rng() >> (64 - b);
-    return v | (uint64_t)1 << (b - 1);
-}
 
 static uint64_t ref_isqrt(uint64_t v, uint64_t *rem)
 {

@@ -10,25 +10,6 @@ void render_put(struct render_target *t, int x, int y, rgb c)
     if (t->rgb888) rgb_to_888(c, t->rgb888 + 3 * i);
 }
 
-/* Placeholder until the renderers exist: background and a test pattern. */
-static int placeholder_strip(struct render_ctx *ctx, struct render_target *t,
-                             struct render_stats *st)
-{
-    const struct scene *s = ctx->scene;
-    rgb bg = s->background_set ? s->background : rgb_make(NUM_C(255.0), NUM_C(255.0), NUM_C(255.0));
-    for (int y = t->y0; y < t->y1; y++)
-        for (int x = 0; x < t->width; x++) {
-            rgb c = bg;
-            int bar = x * 8 / t->width;
-            if (y >= t->height * 3 / 4)
-                c = rgb_make((bar & 1) ? NUM_C(255.0) : NUM_ZERO, (bar & 2) ? NUM_C(255.0) : NUM_ZERO,
-                             (bar & 4) ? NUM_C(255.0) : NUM_ZERO);
-            render_put(t, x, y, c);
-        }
-    st->pixels_written += (uint32_t)((t->y1 - t->y0) * t->width);
-    return 0;
-}
-
 size_t render_work_size(const struct scene *s, uint16_t width, uint16_t height, uint16_t strip_rows)
 {
     (void)strip_rows;
@@ -51,7 +32,7 @@ int render_init(struct render_ctx *ctx, const struct scene *s, uint16_t width, u
     ctx->work_size = work_size;
     if (s->kind == SCENE_RAYTRACE) return rt_init(ctx);
     if (s->kind == SCENE_RASTER) return raster_init(ctx);
-    return 0;
+    return -1;
 }
 
 int render_begin_frame(struct render_ctx *ctx, uint16_t frame)
@@ -67,5 +48,5 @@ int render_strip(struct render_ctx *ctx, struct render_target *t, struct render_
     if (t->y0 >= t->y1 || t->y1 > ctx->height || t->width != ctx->width) return -1;
     if (ctx->scene->kind == SCENE_RAYTRACE) return rt_render_strip(ctx, t, st);
     if (ctx->scene->kind == SCENE_RASTER) return raster_strip(ctx, t, st);
-    return placeholder_strip(ctx, t, st);
+    return -1;  /* not a kind this core renders */
 }

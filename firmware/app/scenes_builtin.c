@@ -1,6 +1,6 @@
 /* scenes_builtin.c — the scene table when no compiled scenes are given: one
- * small C-built scene (the renderer's placeholder pattern on a dark blue
- * background), so the whole chain runs without the scene compiler. */
+ * small C-built scene (an empty raster scene: its dark blue background), so
+ * the whole chain runs without the scene compiler. */
 #include "fw_scenes.h"
 
 static const struct scene builtin_pattern = {
@@ -16,7 +16,7 @@ static const struct scene builtin_pattern = {
     .frames = 1,
 };
 
-/* Work memory for the placeholder scene: enough for a raster scene's strip
+/* Work memory for the built-in scene: enough for a raster scene's strip
  * state at 240x240 with 8-row strips (the scene compiler sizes it exactly). */
 #ifndef FW_BUILTIN_WORK
 #define FW_BUILTIN_WORK 1024

@@ -77,6 +77,20 @@ struct scene *rt_book_scene(int n)
 }
 
 #define GRID_MAX 32
+/* The lights of the grid and chapter-5 scenes: the book's, with the point
+ * light raised to (2, 3, 0); all three lighting steps on. */
+static struct scene_light test_lights[3];
+
+static void lit_by_test_lights(struct scene *s)
+{
+    test_lights[0] = (struct scene_light){ LIGHT_AMBIENT, D(0.2), v3(D(0), D(0), D(0)) };
+    test_lights[1] = (struct scene_light){ LIGHT_POINT, D(0.6), v3(D(2), D(3), D(0)) };
+    test_lights[2] = (struct scene_light){ LIGHT_DIRECTIONAL, D(0.2), v3(D(1), D(4), D(4)) };
+    s->nlights = 3;
+    s->lights = test_lights;
+    s->rt.diffuse = s->rt.specular = s->rt.shadows = 1;
+}
+
 static struct scene grid_scene;
 static struct rt_object grid_objs[GRID_MAX * GRID_MAX + 1];
 
@@ -103,12 +117,7 @@ struct scene *rt_grid_scene(int count)
         }
     s->nobjects = (uint16_t)k;
     s->objects = grid_objs;
-    lights[0][0] = (struct scene_light){ LIGHT_AMBIENT, D(0.2), v3(D(0), D(0), D(0)) };
-    lights[0][1] = (struct scene_light){ LIGHT_POINT, D(0.6), v3(D(2), D(3), D(0)) };
-    lights[0][2] = (struct scene_light){ LIGHT_DIRECTIONAL, D(0.2), v3(D(1), D(4), D(4)) };
-    s->nlights = 3;
-    s->lights = lights[0];
-    s->rt.diffuse = s->rt.specular = s->rt.shadows = 1;
+    lit_by_test_lights(s);
     return s;
 }
 
@@ -162,11 +171,6 @@ struct scene *rt_ch5_scene(void)
     s->objects = o;
     s->ncsg = 3;
     s->csg = ch5_csg;
-    lights[0][0] = (struct scene_light){ LIGHT_AMBIENT, D(0.2), v3(D(0), D(0), D(0)) };
-    lights[0][1] = (struct scene_light){ LIGHT_POINT, D(0.6), v3(D(2), D(3), D(0)) };
-    lights[0][2] = (struct scene_light){ LIGHT_DIRECTIONAL, D(0.2), v3(D(1), D(4), D(4)) };
-    s->nlights = 3;
-    s->lights = lights[0];
-    s->rt.diffuse = s->rt.specular = s->rt.shadows = 1;
+    lit_by_test_lights(s);
     return s;
 }

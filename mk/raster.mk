@@ -65,3 +65,22 @@ endef
 $(foreach v,$(VARIANTS),$(eval $(call RASTER_CH15_PROG,$(v))))
 TESTS += $(BUILD)/host/tests/test_raster_ch15
 TEST_DEPS += $(BUILD)/host/tests/test_raster_ch15
+
+# `make bench`: the benchmark scenes of firmware/scenes/bench/ (the
+# small3dlib cube workload: textured, Gouraud, flat; an empty frame), each
+# image built at the scene's own number format (tools/scenec's NUM_FRAC) for
+# the emulated Cortex-M0+ and M4F, fixed and float; rows per frame, per
+# drawn pixel and for render_init (tools/bench/bench_scene.c).
+BENCH_SCENE_NAMES := $(patsubst firmware/scenes/bench/%.scene,%,$(sort $(wildcard firmware/scenes/bench/*.scene)))
+bench_scene_frac = $(shell sed -n 's/^scenec-summary .* num_frac=\([0-9]*\) .*/\1/p' $(BUILD)/scenes/bench/$(1).log 2>/dev/null)
+define BENCH_SCENE_IMAGE
+$$(call bench_image,scene-$(1),$(2),$(3),tools/bench/bench_scene.c $(BUILD)/scenes/bench/$(1).c $(CORE_SRCS),\
+  -I$(BUILD)/scenes -DBENCH_SCENE_H='"bench/$(1).h"' -DBENCH_SCENE=scene_bench_$(subst -,_,$(1)) \
+  -DBENCH_WHAT='"scene:bench/$(1)"' $$$$(if $$$$(filter fixed,$(3)),-DNUM_FRAC=$$$$(call bench_scene_frac,$(1))))
+BENCH_IMAGES += $(BUILD)/bench/$(2)/$(3)/scene-$(1).elf
+# every object waits for the scene's C file: its log gives the NUM_FRAC
+$(patsubst %.c,$(BUILD)/bench/$(2)/$(3)/scene-$(1).objs/%.o,tools/bench/bench_scene.c $(BENCH_RUNTIME) $(CORE_SRCS)): \
+  $(BUILD)/scenes/bench/$(1).c
+endef
+$(foreach n,$(BENCH_SCENE_NAMES),$(foreach t,$(BENCH_TARGETS),$(foreach m,fixed float,\
+  $(eval $(call BENCH_SCENE_IMAGE,$(n),$(t),$(m))))))

@@ -6,7 +6,9 @@ Each image is $(BUILD)/bench/<target>/<mode>/<name>.elf, target m0plus-qemu
 cortex-m4 with the FPU). qemu runs with -icount shift=0,align=off (one
 instruction = 1 ns of virtual time) and semihosting; the image prints
     BENCH <what> <numeric> <variant> <milli-instructions> <per>
-lines, each turned into one JSON line of the results file. Lines of the
+lines, each turned into one JSON line of the results file; a line
+    BENCHX key=value ...
+right after one adds integer fields to it (pixels=, frames=). Lines of the
 same (target, what, numeric, variant) already in the file are replaced.
 
   run.py [--out FILE] [--timeout S] IMAGE.elf...   benchmark
@@ -53,6 +55,13 @@ def parse(target, elf, out):
     recs = []
     for line in out.splitlines():
         f = line.split()
+        if f and f[0] == "BENCHX" and recs:
+            # extra integer fields of the line before: BENCHX key=value ...
+            for kv in f[1:]:
+                k, _, v = kv.partition("=")
+                if k and v.lstrip("-").isdigit():
+                    recs[-1][k] = int(v)
+            continue
         if len(f) != 6 or f[0] != "BENCH":
             continue
         _, what, numeric, variant, milli, per = f

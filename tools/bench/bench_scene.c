@@ -1,0 +1,81 @@
+/* bench_scene.c — instructions per frame and per drawn pixel of one
+ * compiled raster scene (firmware/scenes/bench/, built by tools/scenec at
+ * its own number format) on the emulated MCUs, 240x240 in strips of 16 rows.
+ *
+ * The image is built once per scene with
+ *   -DBENCH_SCENE_H='"bench/NAME.h"' -DBENCH_SCENE=scene_bench_NAME
+ *   -DBENCH_WHAT='"scene:bench/NAME"'
+ * A first, unmeasured pass over every frame of the scene counts the drawn
+ * pixels with the target's `written` map; the measured pass times each
+ * frame: render_begin_frame (transforms, binning) and every strip
+ * (background fill included). render_init (texture conversion, mip chains)
+ * is measured on its own. Reported, in instructions (not cycles):
+ *   per "frame"  average over the scene's frames
+ *   per "pixel"  that average / the average drawn pixels of a frame
+ *   per "init"   render_init once
+ * with pixels=P (average drawn pixels a frame) and frames=F. */
+#include <string.h>
+#include "bench.h"
+#include "render.h"
+#include BENCH_SCENE_H
+
+#define W 240
+#define H 240
+#define STRIP 16
+
+static uint64_t work[64 * 1024 / 8 * 4];   /* 256 KiB */
+static uint16_t strip_px[W * STRIP];
+static uint8_t strip_written[W * STRIP];
+
+/* Frame f of s into ctx; *pixels (if not null) gains its drawn pixels. */
+static int frame(struct render_ctx *ctx, uint16_t f, uint32_t *pixels)
+{
+    if (render_begin_frame(ctx, f) != 0) return -1;
+    struct render_stats st;
+    memset(&st, 0, sizeof st);
+    for (int y = 0; y < H; y += STRIP) {
+        struct render_target t = { .width = W, .height = H, .y0 = (uint16_t)y,
+                                   .y1 = (uint16_t)(y + STRIP < H ? y + STRIP : H), .rgb565 = strip_px,
+                                   .written = pixels ? strip_written : NULL };
+        if (render_strip(ctx, &t, &st) != 0) return -1;
+        if (pixels)
+            for (int k = 0; k < (t.y1 - t.y0) * W; k++) *pixels += strip_written[k];
+    }
+    return 0;
+}
+
+static void report(const char *per, uint64_t milli, uint32_t pixels, uint32_t frames)
+{
+    bench_report(BENCH_WHAT, NUM_NAME, "default", milli, per);
+    bench_puts("BENCHX pixels=");
+    bench_put_u64(pixels);
+    bench_puts(" frames=");
+    bench_put_u64(frames);
+    bench_puts("\n");
+}
+
+int bench_main(void)
+{
+    const struct scene *s = &BENCH_SCENE;
+    struct render_ctx ctx;
+    size_t need = render_work_size(s, W, H, STRIP);
+    uint16_t frames = s->frames ? s->frames : 1;
+    if (need == 0 || need > sizeof work) { bench_puts("FAIL bench_scene: work memory\n"); return 1; }
+    uint64_t t0 = bench_now();
+    if (render_init(&ctx, s, W, H, STRIP, work, sizeof work) != 0) { bench_puts("FAIL bench_scene: init\n"); return 1; }
+    uint64_t init = bench_now() - t0;
+    uint32_t px = 0;
+    for (uint16_t f = 0; f < frames; f++)
+        if (frame(&ctx, f, &px) != 0) { bench_puts("FAIL bench_scene: frame\n"); return 1; }
+    uint64_t total = 0;
+    for (uint16_t f = 0; f < frames; f++) {
+        uint64_t a = bench_now();
+        frame(&ctx, f, NULL);
+        total += bench_now() - a;
+    }
+    uint32_t avg_px = (px + frames / 2) / frames;
+    report("frame", total * 1000 / frames, avg_px, frames);
+    report("pixel", avg_px ? total * 1000 / frames / avg_px : 0, avg_px, frames);
+    report("init", init * 1000, avg_px, frames);
+    return 0;
+}

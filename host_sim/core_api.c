@@ -56,7 +56,13 @@ static int format(const void *scene, const char *path, uint16_t w, uint16_t h, s
     return 2;
 }
 
+static void exact_methods(void *scene)
+{
+    struct scene *s = scene;
+    s->ras.persp_step = 1;
+}
+
 const struct core_api API = {
     NUM_NAME, load, free_scene, info, work_size, init, render_begin_frame, render_strip,
-    &num_saturations, API_FRAC, format,
+    &num_saturations, API_FRAC, format, exact_methods,
 };

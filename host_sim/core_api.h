@@ -38,6 +38,9 @@ struct core_api {
      * msg. Meaningful on the double core, whose scene holds the exact values. */
     int (*format)(const void *scene, const char *path, uint16_t w, uint16_t h, struct scene_format *f,
                   char *msg, size_t msglen);
+    /* Switches a loaded scene to the rasterizer's exact methods (perspective_step = 1):
+     * the reference of --compare. */
+    void (*exact_methods)(void *scene);
 };
 
 extern const struct core_api core_api_fixed, core_api_float, core_api_double;

@@ -428,6 +428,7 @@ static int run(const struct opts *o, struct core *c, struct core *ref, struct pa
         const struct core_api *rapi;
         if ((rc = core_pick(o, o->compare, w, h, &rapi))) return rc;
         if ((rc = core_open(ref, rapi, o->scene))) return rc;
+        ref->api->exact_methods(ref->scene);   /* every method is measured against the exact one */
         if ((rc = core_init(ref, w, h, rows))) return rc;
         b->ref_fb = malloc(npx * sizeof *b->ref_fb);
         b->ref_rgb = malloc(npx * 3);

@@ -112,6 +112,17 @@ uint32_t ras_depth32(num near_z, num z)
     return RAS_DIV64_32 ? num_udiv64_32(n, (uint32_t)z, 0) : (uint32_t)(n / (uint32_t)z);
 }
 
+int32_t ras_num_to_fix(num a, int32_t scale)
+{
+    /* a * scale in Q.NUM_FRAC, exact in 64 bits; rounded half away from zero */
+    int64_t p = (int64_t)a * scale;
+    int64_t h = (int64_t)1 << (NUM_FRAC - 1);
+    int64_t r = p >= 0 ? (p + h) >> NUM_FRAC : -((-p + h) >> NUM_FRAC);
+    if (r > INT32_MAX) return INT32_MAX;
+    if (r < -INT32_MAX) return -INT32_MAX;
+    return (int32_t)r;
+}
+
 #else
 
 #if NUM_MODE == NUM_MODE_FLOAT
@@ -182,6 +193,16 @@ uint32_t ras_depth32(num near_z, num z)
     if (v >= 4294967295.0) return UINT32_MAX;
     return (uint32_t)v;
 #endif
+}
+
+
+int32_t ras_num_to_fix(num a, int32_t scale)
+{
+    /* in the mode's own type (no double routines in the float build) */
+    num p = a * (num)scale;
+    if (!(p < (num)2147483520.0)) return p != p ? 0 : INT32_MAX;
+    if (!(p > (num)-2147483520.0)) return -INT32_MAX;
+    return (int32_t)(p >= 0 ? p + (num)0.5 : p - (num)0.5);
 }
 
 #endif

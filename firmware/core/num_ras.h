@@ -63,4 +63,10 @@ int64_t ras_floordiv(int64_t n, int64_t d, int64_t *rem);
  * Fixed point: exact from the Q15.16 inputs. float: 24 significant bits. */
 uint32_t ras_depth32(num near_z, num z);
 
+/* round(a * scale) as an integer (halves away from zero), saturated to
+ * +-(2^31 - 1): a num turned into the integer formats of the fast span
+ * path (raster_fast.c). Exact in fixed point; float and double round the
+ * product formed in double. */
+int32_t ras_num_to_fix(num a, int32_t scale);
+
 #endif

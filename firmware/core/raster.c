@@ -8,7 +8,8 @@
 static size_t al(size_t n) { return (n + (ALIGN - 1)) & ~(size_t)(ALIGN - 1); }
 
 struct layout {
-    size_t ctx, inst, verts, tri_rows, prim_rows, line_rows, lights, mips, mipmem, depth, adj, smap, stencil, total;
+    size_t ctx, inst, verts, tri_rows, prim_rows, line_rows, lights, mips, mipmem, tex565, texmem, depth, adj, smap,
+        stencil, total;
     uint32_t nverts, ntris;
 };
 
@@ -19,6 +20,28 @@ static int depth_bytes(const struct scene *s)
     if (!s->ras.depth_test || s->ninstances == 0) return 0;
     if (s->ras.book_exact) return (int)sizeof(num);
     return s->ras.depth_bits == 16 ? 2 : 4;
+}
+
+/* The fast path: the default path unless perspective_step = 1. */
+static int fast_path(const struct scene *s)
+{
+    return !s->ras.book_exact && !s->ras.wireframe && s->ras.persp_step != 1;
+}
+
+static int log2_exact(uint32_t v)
+{
+    for (int k = 0; k < 16; k++)
+        if (v == (1u << k)) return k;
+    return -1;
+}
+
+/* Bytes of the RGB565 copy of texture t the fast path samples: nearest
+ * filtering and power-of-two sides up to 2^15; 0 when it does not qualify. */
+static size_t tex565_size(const struct scene *s, const struct ras_texture *t)
+{
+    if (!fast_path(s) || t->filter != TEX_NEAREST || !t->rgb) return 0;
+    if (log2_exact(t->w) < 0 || log2_exact(t->h) < 0) return 0;
+    return (size_t)t->w * t->h * 2;
 }
 
 static int make_layout(const struct scene *s, uint16_t w, uint16_t strip_rows, struct layout *L)
@@ -42,6 +65,9 @@ static int make_layout(const struct scene *s, uint16_t w, uint16_t strip_rows, s
     L->mipmem = off;
     if (!s->ras.book_exact)
         for (uint16_t i = 0; i < s->ntextures; i++) off += al(ras_mips_size(&s->textures[i]));
+    L->tex565 = off; off += al(sizeof(struct ras_tex565) * s->ntextures);
+    L->texmem = off;
+    for (uint16_t i = 0; i < s->ntextures; i++) off += al(tex565_size(s, &s->textures[i]));
     L->depth = off; off += al((size_t)depth_bytes(s) * w * strip_rows);
     L->adj = off; off += al(ras_ch15_adj_size(s, L->ntris));
     L->smap = off; off += al(ras_ch15_smap_size(s));
@@ -82,6 +108,8 @@ int raster_init(struct render_ctx *ctx)
     rc->book = s->ras.book_exact;
     rc->sub_bits = s->ras.subpixel_bits ? (s->ras.subpixel_bits > 8 ? 8 : s->ras.subpixel_bits) : RAS_SUBPIXEL_BITS;
     rc->depth_bytes = (uint8_t)depth_bytes(s);
+    rc->fast = (uint8_t)fast_path(s);
+    rc->persp_log2 = (uint8_t)(s->ras.persp_step == 8 ? 3 : (s->ras.persp_step == 32 ? 5 : 4));
     rc->nverts = L.nverts;
     rc->ntris = L.ntris;
     rc->inst = (struct ras_inst *)(void *)(base + L.inst);
@@ -91,6 +119,7 @@ int raster_init(struct render_ctx *ctx)
     rc->line_rows = (struct ras_range *)(void *)(base + L.line_rows);
     rc->lights = (struct ras_light *)(void *)(base + L.lights);
     rc->mips = (struct ras_mips *)(void *)(base + L.mips);
+    rc->tex565 = (struct ras_tex565 *)(void *)(base + L.tex565);
     rc->depth = base + L.depth;
     rc->adj = (uint16_t *)(void *)(base + L.adj);
     rc->smap = (uint16_t *)(void *)(base + L.smap);
@@ -114,6 +143,25 @@ int raster_init(struct render_ctx *ctx)
         size_t n = rc->book ? 0 : ras_mips_size(&s->textures[i]);
         ras_mips_build(&s->textures[i], &rc->mips[i], n ? mm : NULL);
         mm += al(n);
+    }
+    uint8_t *tm = base + L.texmem;
+    for (uint16_t i = 0; i < s->ntextures; i++) {
+        const struct ras_texture *tx = &s->textures[i];
+        size_t n = tex565_size(s, tx);
+        rc->tex565[i].p = NULL;
+        if (!n) continue;
+        uint16_t *d = (uint16_t *)(void *)tm;
+        for (size_t k = 0; k < (size_t)tx->w * tx->h; k++) {
+            const uint8_t *c = tx->rgb + 3 * k;
+            /* round(c * L / 255), as rgb_to_565 rounds an integral channel */
+            uint32_t r = ((uint32_t)c[0] * 62 + 255) / 510, g = ((uint32_t)c[1] * 126 + 255) / 510,
+                     b = ((uint32_t)c[2] * 62 + 255) / 510;
+            d[k] = (uint16_t)(r << 11 | g << 5 | b);
+        }
+        rc->tex565[i].p = d;
+        rc->tex565[i].wlog2 = (uint8_t)log2_exact(tx->w);
+        rc->tex565[i].hlog2 = (uint8_t)log2_exact(tx->h);
+        tm += al(n);
     }
     ras_ch15_init(rc);
     return 0;
@@ -484,6 +532,50 @@ static void default_pixel(struct ras_ctx *rc, int col, int row, const num *a, nu
     ras_put(rc, col, row, c);
 }
 
+/* The fast span loops' description of a triangle; 0 when it needs the
+ * exact per-pixel path (Phong shading, chapter 15 passes, filtered or
+ * non-power-of-two textures, screen-linear uv, textures under flat shading). */
+static int fast_setup(const struct ras_ctx *rc, const struct def_tri *dt, struct ras_fast_tri *ft)
+{
+    const struct ras_options *o = &rc->s->ras;
+    if (!rc->fast || rc->depth_only || rc->depth_func != RAS_DEPTH_LESS_WRITE || dt->nmap >= 0) return 0;
+    if (dt->shading == SHADE_PHONG) return 0;
+    int gour = dt->shading == SHADE_GOURAUD;
+    memset(ft, 0, sizeof *ft);
+    ft->ai_i = dt->ai_i;
+    ft->ai_uv = dt->ai_uv;
+    if (dt->tex >= 0) {
+        const struct ras_tex565 *t5 = &rc->tex565[dt->tex];
+        if (!t5->p || !o->perspective_uv || dt->shading == SHADE_FLAT) return 0;
+        ft->kind = (uint8_t)(gour ? RAS_FT_TEX_GOURAUD : RAS_FT_TEX);
+        ft->tex = t5->p;
+        ft->wlog2 = t5->wlog2;
+        ft->wmask = (1u << t5->wlog2) - 1;
+        ft->hmask = (1u << t5->hlog2) - 1;
+        /* u = 1 maps to the last texel's far edge less 2^-16: nearest with
+         * clamping for u, v in [0, 1], repeating outside */
+        ft->uscale = (int32_t)((1u << t5->wlog2) * 65536u - 1u);
+        ft->vscale = (int32_t)((1u << t5->hlog2) * 65536u - 1u);
+        return 1;
+    }
+    if (gour) {
+        ft->kind = RAS_FT_GOURAUD;
+        /* colour in RGB565 levels, Q10: round(c * L * 1024 / 255) */
+        int32_t r = ras_num_to_fix(dt->color.r, 31 * 1024 * 2), g = ras_num_to_fix(dt->color.g, 63 * 1024 * 2),
+                b = ras_num_to_fix(dt->color.b, 31 * 1024 * 2);
+        ft->kr = r <= 0 ? 0 : (uint32_t)(r + 255) / 510;
+        ft->kg = g <= 0 ? 0 : (uint32_t)(g + 255) / 510;
+        ft->kb = b <= 0 ? 0 : (uint32_t)(b + 255) / 510;
+        if (ft->kr > 31u * 1024 || ft->kg > 63u * 1024 || ft->kb > 31u * 1024) return 0;
+        return 1;
+    }
+    ft->kind = RAS_FT_FLAT;
+    rgb c = dt->shading == SHADE_FLAT ? rgb_scale(dt->color, dt->flat_i) : dt->color;
+    ft->c565 = rgb_to_565(c);
+    rgb_to_888(c, ft->c888);
+    return 1;
+}
+
 static void default_render_triangle(struct ras_ctx *rc, const struct ras_instance *in, const struct ras_inst *ri,
                                     const struct ras_model *m, const struct ras_triangle *t)
 {
@@ -556,8 +648,14 @@ static void default_render_triangle(struct ras_ctx *rc, const struct ras_instanc
         for (int j = 0; j < na; j++) sv[k].a[j] = c->a[j];
     }
     const struct ras_texture *tx = dt.tex >= 0 ? &rc->s->textures[dt.tex] : NULL;
+    struct ras_fast_tri ft;
+    int fast = fast_setup(rc, &dt, &ft);
     for (int k = 1; k + 1 < n; k++) {
         const struct ras_sv *a = &sv[0], *b = &sv[k], *c = &sv[k + 1];
+        if (fast) {
+            int32_t drawn = ras_fast_fill(rc, a, b, c, &ft);
+            if (drawn >= 0) { rc->st->pixels_written += (uint32_t)drawn; continue; }
+        }
         dt.lod_base = NUM_ZERO;
         dt.iz_eff = NUM_ONE;
         if (tx && tx->filter == TEX_TRILINEAR) {
@@ -578,6 +676,44 @@ static void default_render_triangle(struct ras_ctx *rc, const struct ras_instanc
 
 /* ---- the strip ------------------------------------------------------------ */
 
+/* Word stores through an alias-safe type (the strip is uint16_t, the depth
+ * buffer bytes of work memory). */
+#if defined(__GNUC__) || defined(__clang__)
+typedef uint32_t __attribute__((may_alias)) ras_word;
+#define RAS_HAVE_WORD 1
+#endif
+
+/* n RGB565 pixels of value c: 32-bit stores, eight a loop. */
+static void ras_fill16(uint16_t *p, size_t n, uint16_t c)
+{
+#ifdef RAS_HAVE_WORD
+    if (n && ((uintptr_t)p & 2u)) { *p++ = c; n--; }
+    ras_word *w = (ras_word *)(void *)p, v = (uint32_t)c * 0x00010001u;
+    size_t nw = n / 2;
+    for (; nw >= 8; nw -= 8, w += 8) { w[0] = v; w[1] = v; w[2] = v; w[3] = v; w[4] = v; w[5] = v; w[6] = v; w[7] = v; }
+    while (nw--) *w++ = v;
+    if (n & 1u) p[n - 1] = c;
+#else
+    for (size_t k = 0; k < n; k++) p[k] = c;
+#endif
+}
+
+/* n bytes of zeros at p (4-byte aligned, n a multiple of 2). */
+static void ras_fill_zero(uint8_t *p, size_t n)
+{
+#ifdef RAS_HAVE_WORD
+    if (((uintptr_t)p & 3u) == 0) {
+        ras_word *w = (ras_word *)(void *)p;
+        size_t nw = n / 4;
+        for (; nw >= 8; nw -= 8, w += 8) { w[0] = 0; w[1] = 0; w[2] = 0; w[3] = 0; w[4] = 0; w[5] = 0; w[6] = 0; w[7] = 0; }
+        while (nw--) *w++ = 0;
+        p = (uint8_t *)w;
+        n &= 3u;
+    }
+#endif
+    memset(p, 0, n);
+}
+
 static int rows_hit(struct ras_range r, const struct render_target *t)
 {
     return r.r0 <= r.r1 && r.r1 >= (int)t->y0 && r.r0 < (int)t->y1;
@@ -591,10 +727,15 @@ int raster_strip(struct render_ctx *ctx, struct render_target *t, struct render_
     rc->t = t;
     rc->st = st;
     rgb bg = s->background_set ? s->background : rgb_make(NUM_C(255.0), NUM_C(255.0), NUM_C(255.0));
-    for (int y = t->y0; y < t->y1; y++)
-        for (int x = 0; x < t->width; x++) render_put(t, x, y, bg);
-    if (t->written) memset(t->written, 0, (size_t)(t->y1 - t->y0) * t->width);
-    if (rc->depth_bytes) memset(rc->depth, 0, (size_t)rc->depth_bytes * rc->w * (size_t)(t->y1 - t->y0));
+    size_t npx = (size_t)(t->y1 - t->y0) * t->width;
+    ras_fill16(t->rgb565, npx, rgb_to_565(bg));
+    if (t->rgb888) {
+        uint8_t c[3];
+        rgb_to_888(bg, c);
+        for (size_t k = 0; k < npx; k++) memcpy(t->rgb888 + 3 * k, c, 3);
+    }
+    if (t->written) memset(t->written, 0, npx);
+    if (rc->depth_bytes) ras_fill_zero(rc->depth, (size_t)rc->depth_bytes * rc->w * (size_t)(t->y1 - t->y0));
 
     for (uint16_t i = 0; i < s->nprims; i++) {
         if (!rows_hit(rc->prim_rows[i], t)) continue;

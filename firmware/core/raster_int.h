@@ -5,6 +5,15 @@
 #include "raster.h"
 #include "num_ras.h"
 
+/* Code of the fast path's inner loops: placed in SRAM where the board's
+ * build asks for it (RAS_RAM_TEXT: the RP2040 runs from flash through a
+ * 16 KB cache otherwise). */
+#if defined(RAS_RAM_TEXT) && (defined(__GNUC__) || defined(__clang__))
+#define RAS_HOT __attribute__((section(".ram_text"), noinline))
+#else
+#define RAS_HOT
+#endif
+
 #define RAS_MAX_ATTR 8   /* interpolated attributes besides 1/z */
 #define RAS_CLIP_MAX 10  /* polygon corners after five planes: 3 + 5, plus slack */
 
@@ -28,6 +37,10 @@ struct ras_vert { vec3 c; num px, py; };
  * binning of primitives to strips, computed once per frame. */
 struct ras_range { int16_t r0, r1; };
 
+/* A texture as RGB565 for the fast path (power-of-two sides, nearest):
+ * p == NULL when the texture does not qualify. */
+struct ras_tex565 { const uint16_t *p; uint8_t wlog2, hlog2; };
+
 /* Mip chain of a texture, built in work memory when the scene has none. */
 struct ras_mips { uint8_t levels; uint16_t w[12], h[12]; const uint8_t *p[12]; };
 
@@ -37,6 +50,8 @@ struct ras_ctx {
     uint8_t book;            /* ras_options.book_exact */
     uint8_t sub_bits;        /* sub-pixel bits of the default path */
     uint8_t depth_bytes;     /* 2, 4 or sizeof(num) (book path) */
+    uint8_t fast;            /* default path with the fast span loops (perspective_step > 1) */
+    uint8_t persp_log2;      /* fast path: a reciprocal every 2^persp_log2 pixels */
     num cw, vw, vh, d;       /* render width, viewport (aspect-corrected), projection plane */
     num unproj;              /* cw*d/vw: canvas units per unit of x/z */
     num scale2d;             /* render height / scene canvas height */
@@ -51,6 +66,7 @@ struct ras_ctx {
     struct ras_range *tri_rows, *prim_rows, *line_rows;
     struct ras_light *lights;
     struct ras_mips *mips;   /* per texture */
+    struct ras_tex565 *tex565; /* per texture (fast path) */
     uint8_t *depth;          /* strip_rows * w entries */
     /* depth test of ras_fill_triangle: RAS_DEPTH_LESS_WRITE (normal),
      * RAS_DEPTH_EQUAL (shading pass after a depth pass), RAS_DEPTH_BEHIND
@@ -122,6 +138,28 @@ typedef void (*ras_pixel_fn)(struct ras_ctx *rc, int col, int row, const num *a,
  * and z = 0 (stencil updates). */
 uint32_t ras_fill_triangle(struct ras_ctx *rc, const struct ras_sv *v0, const struct ras_sv *v1,
                            const struct ras_sv *v2, int na, ras_pixel_fn fn, void *ud);
+
+/* ---- the default path's fast triangle (raster_fast.c) ---- */
+#define RAS_FT_FLAT 0           /* (macros: the span template tests them with #if) */
+#define RAS_FT_GOURAUD 1
+#define RAS_FT_TEX 2
+#define RAS_FT_TEX_GOURAUD 3
+struct ras_fast_tri {
+    uint8_t kind;            /* RAS_FT_* */
+    uint16_t c565;           /* flat: the colour */
+    uint8_t c888[3];         /* flat: the colour before quantisation (host output) */
+    uint32_t kr, kg, kb;     /* Gouraud: colour in RGB565 levels, Q10 */
+    const uint16_t *tex;     /* textured: RGB565 texels */
+    uint32_t wmask, hmask, wlog2;
+    int32_t uscale, vscale;  /* u, v to 16.16 texel coordinates */
+    int ai_i, ai_uv;         /* attribute slots of intensity and u, v in ras_sv.a */
+};
+/* Fills a triangle (clockwise on screen) with the fast span loops, depth
+ * test RAS_DEPTH_LESS_WRITE. Returns the pixels written, or -1 (nothing
+ * drawn) when the triangle's depth gradient does not fit the fast path's
+ * 32-bit stepping: the caller then uses ras_fill_triangle. */
+int32_t ras_fast_fill(struct ras_ctx *rc, const struct ras_sv *v0, const struct ras_sv *v1, const struct ras_sv *v2,
+                      const struct ras_fast_tri *ft);
 
 /* ---- face normals and projections kept wide (raster_project.c) ---- */
 /* Face normal (b - a) x (c - a) of camera-space corners, in wnum. Its

@@ -187,6 +187,9 @@ struct ras_options {
     uint16_t shadow_map_size;   /* shadow map side in texels, 16..1024; 0: 128 */
     uint8_t pcf;                /* percentage-closer filter: 1 (one tap), 2 (2x2), 3 (3x3); 0: 3 */
     uint8_t env_reflect;        /* percent of the environment mixed in, 1..100; 0: 50 */
+    uint8_t persp_step;         /* default path: perspective-correct attributes every N pixels
+                                   with the fast span loops, N = 8, 16, 32; 1: the exact
+                                   per-pixel path; 0: 16 */
     uint8_t outlines;           /* raster-10's control: after each drawn triangle its edges with
                                    DrawLine in its colour x 0.75, no depth test (book path) */
 };

@@ -798,14 +798,15 @@ static void read_ras_options(struct parser *p, const struct node *n, struct ras_
     static const char *const keys[] = { "shading", "wireframe", "truncate", "clip", "depth", "depth_bits", "cull",
                                         "normals", "diffuse", "specular", "uv", "transform", "camera_transform",
                                         "shadows", "shadow_volumes", "env_map", "subpixel_bits", "book_exact",
-                                        "shadow_light", "shadow_map_size", "pcf", "env_reflect", "outlines", NULL };
+                                        "shadow_light", "shadow_map_size", "pcf", "env_reflect", "outlines",
+                                        "perspective_step", NULL };
     static const char *const shadings[] = { "flat", "gouraud", "phong", "none", NULL };
     static const char *const clips[] = { "off", "book", "split", NULL };
     static const char *const normals[] = { "model", "computed", NULL };
     static const char *const uvs[] = { "linear", "perspective", NULL };
     static const char *const transforms[] = { "translate", "full", NULL };
     static const char *const shadows[] = { "off", "map", NULL };
-    const struct node *v[23];
+    const struct node *v[24];
     fields(p, n, "rasterizer", keys, v);
     if (v[0]) o->shading = (uint8_t)get_choice(p, v[0], "shading", shadings);
     if (v[1]) o->wireframe = (uint8_t)get_bool(p, v[1], "wireframe");
@@ -835,6 +836,11 @@ static void read_ras_options(struct parser *p, const struct node *n, struct ras_
     if (v[20]) o->pcf = (uint8_t)get_int(p, v[20], "pcf", 1, 3);
     if (v[21]) o->env_reflect = (uint8_t)get_int(p, v[21], "env_reflect", 1, 100);
     if (v[22]) o->outlines = (uint8_t)get_bool(p, v[22], "outlines");
+    if (v[23]) {
+        long k = get_int(p, v[23], "perspective_step", 1, 32);
+        if (k != 1 && k != 8 && k != 16 && k != 32) FAIL_N(p, v[23], "perspective_step must be 1, 8, 16 or 32");
+        o->persp_step = (uint8_t)k;
+    }
 }
 
 /* ---- models --------------------------------------------------------------- */

@@ -191,43 +191,83 @@ static int64_t edge(int32_t ax, int32_t ay, int32_t bx, int32_t by, int64_t px, 
     return (int64_t)(bx - ax) * (py - ay) - (int64_t)(by - ay) * (px - ax);
 }
 
-/* One edge's bound on the columns of a row, k = column - c0:
- * kind 1: k >= q (lower), kind -1: k <= q (upper), kind 0: all columns
- * while the row value n >= 0, none otherwise. q = floor(n / den) stepped
- * per row by quotient dq and remainder dr. */
-struct fedge { int kind; int64_t n, q, r, den, dq, dr, step; };
-
-static void fedge_init(struct fedge *e, int64_t a, int64_t b, int64_t w, int64_t bias)
+/* x / 2^n rounded toward minus infinity, for any sign (no reliance on how
+ * >> treats negative values). */
+static int32_t asr32(int32_t x, int n)
 {
+    return x >= 0 ? x >> n : -(int32_t)((uint32_t)(-(x + 1)) >> n) - 1;
+}
+
+/* One edge's bound on the columns of a row, k = column - c0:
+ * kind 1: k >= q (lower), kind -1: k <= q (upper), kind 0: every column
+ * while the row value n >= 0, none otherwise. q = floor(num / den) is
+ * stepped per row by quotient dq and remainder dr (all 32-bit: the fast
+ * path takes triangles whose box is at most 2^14 sub-pixel units a side). */
+struct fedge { int kind; int32_t n, q, r, den, dq, dr; };
+
+static void fedge_init(struct fedge *e, int32_t a, int32_t b, int32_t w, int32_t bias)
+{
+    int64_t num, step, rem;
     /* pixel (c0 + k, row) is covered when w + k*a + bias >= 0 */
     if (a > 0) {          /* k >= ceil((-bias - w) / a) = floor((-bias - w + a - 1) / a) */
         e->kind = 1;
         e->den = a;
-        e->n = -bias - w + a - 1;
-        e->step = -b;
+        num = (int64_t)-bias - w + a - 1;
+        step = -(int64_t)b;
     } else if (a < 0) {   /* k <= floor((w + bias) / -a) */
         e->kind = -1;
         e->den = -a;
-        e->n = w + bias;
-        e->step = b;
+        num = (int64_t)w + bias;
+        step = b;
     } else {
         e->kind = 0;
         e->den = 1;
         e->n = w + bias;
-        e->step = b;
-        e->q = e->r = e->dq = e->dr = 0;
+        e->dq = b;
+        e->q = e->r = e->dr = 0;
         return;
     }
-    e->q = ras_floordiv(e->n, e->den, &e->r);
-    e->dq = ras_floordiv(e->step, e->den, &e->dr);
+    e->n = 0;
+    e->q = (int32_t)ras_floordiv(num, e->den, &rem);
+    e->r = (int32_t)rem;
+    e->dq = (int32_t)ras_floordiv(step, e->den, &rem);
+    e->dr = (int32_t)rem;
 }
 
-static void fedge_next(struct fedge *e)
+/* 2^30 / (s * 64) at the middle of each of the 256 intervals of s in
+ * [256, 512): round(2^30 / ((256 + i + 0.5) * 64)). */
+static const uint16_t rcp_tab[256] = {
+    65408, 65154, 64902, 64652, 64404, 64158, 63913, 63671, 63430, 63191, 62954, 62719,
+    62485, 62253, 62023, 61795, 61568, 61343, 61119, 60897, 60677, 60458, 60241, 60026,
+    59812, 59599, 59388, 59179, 58971, 58764, 58559, 58356, 58153, 57952, 57753, 57555,
+    57358, 57163, 56968, 56776, 56584, 56394, 56205, 56017, 55831, 55646, 55462, 55279,
+    55098, 54917, 54738, 54560, 54383, 54207, 54033, 53859, 53687, 53516, 53346, 53177,
+    53009, 52842, 52676, 52511, 52347, 52184, 52022, 51862, 51702, 51543, 51385, 51228,
+    51072, 50917, 50763, 50610, 50458, 50306, 50156, 50007, 49858, 49710, 49563, 49417,
+    49272, 49128, 48985, 48842, 48700, 48559, 48419, 48280, 48141, 48003, 47867, 47730,
+    47595, 47460, 47326, 47193, 47061, 46929, 46798, 46668, 46539, 46410, 46282, 46155,
+    46028, 45902, 45777, 45652, 45528, 45405, 45283, 45161, 45040, 44919, 44799, 44680,
+    44561, 44443, 44326, 44209, 44093, 43977, 43862, 43748, 43634, 43521, 43408, 43296,
+    43185, 43074, 42963, 42854, 42744, 42636, 42528, 42420, 42313, 42207, 42101, 41996,
+    41891, 41786, 41683, 41579, 41476, 41374, 41272, 41171, 41070, 40970, 40870, 40771,
+    40672, 40574, 40476, 40378, 40281, 40185, 40089, 39993, 39898, 39804, 39709, 39616,
+    39522, 39429, 39337, 39245, 39153, 39062, 38971, 38881, 38791, 38702, 38613, 38524,
+    38436, 38348, 38260, 38173, 38087, 38000, 37915, 37829, 37744, 37659, 37575, 37491,
+    37407, 37324, 37241, 37159, 37077, 36995, 36914, 36833, 36752, 36672, 36592, 36512,
+    36433, 36354, 36275, 36197, 36119, 36041, 35964, 35887, 35810, 35734, 35658, 35583,
+    35507, 35432, 35358, 35283, 35209, 35136, 35062, 34989, 34916, 34844, 34771, 34700,
+    34628, 34557, 34486, 34415, 34344, 34274, 34204, 34135, 34065, 33996, 33928, 33859,
+    33791, 33723, 33655, 33588, 33521, 33454, 33387, 33321, 33255, 33189, 33124, 33059,
+    32994, 32929, 32864, 32800
+};
+
+/* floor-ish 2^30 / s for s in [2^14, 2^15), within 2 of the quotient: the
+ * table's 9-bit estimate and one Newton step, all in 32 bits. */
+static uint32_t rcp30(uint32_t s)
 {
-    if (e->kind == 0) { e->n += e->step; return; }
-    e->q += e->dq;
-    e->r += e->dr;
-    if (e->r >= e->den) { e->q++; e->r -= e->den; }
+    int32_t r0 = rcp_tab[(s >> 6) - 256];
+    int32_t e = (int32_t)((1u << 30) - s * (uint32_t)r0);   /* |e| <= 2^22 */
+    return (uint32_t)(r0 + asr32(r0 * asr32(e, 7), 23));
 }
 
 /* Perspective-correct attributes at a pixel from its edge values. */
@@ -236,60 +276,63 @@ struct fpersp {
     uint32_t area_t;         /* area >> t */
     uint32_t dn[3];          /* near/z of the corners >> s, < 2^16 */
     int na;                  /* attributes: 1 (intensity), 2 (u, v) or 3 (u, v, intensity) */
-    int32_t a0[3];           /* corner 0's value in the span format */
-    int32_t d1[3], d2[3];    /* (corner 1 - corner 0), (corner 2 - corner 0) >> sh */
-    int sh[3];
+    int32_t a0[3];           /* corner 0's value in the span format, |a0| < 2^30 */
+    int32_t d1[3], d2[3];    /* (corner 1 - corner 0), (corner 2 - corner 0) >> sh: < 2^14 */
+    int sh[3];               /* <= 16 */
 };
 
-static int32_t asr32(int32_t x, int n)
+static void persp_at(const struct fpersp *p, int32_t w1, int32_t w2, int32_t *out)
 {
-    return x >= 0 ? x >> n : -(int32_t)((uint32_t)(-(int64_t)x - 1) >> n) - 1;
-}
-
-static void persp_at(const struct fpersp *p, int64_t w1, int64_t w2, int32_t *out)
-{
-    uint32_t b1 = (uint32_t)(w1 >> p->t), b2 = (uint32_t)(w2 >> p->t);
+    uint32_t b1 = (uint32_t)w1 >> p->t, b2 = (uint32_t)w2 >> p->t;
     uint32_t b0 = p->area_t - b1 - b2;       /* >= (w0 >> t) >= 0 */
-    uint32_t P0 = b0 * p->dn[0], P1 = b1 * p->dn[1], P2 = b2 * p->dn[2];
-    uint32_t S = P0 + P1 + P2;               /* <= area_t * 2^16 < 2^31 */
+    uint32_t P1 = b1 * p->dn[1], P2 = b2 * p->dn[2];
+    uint32_t S = b0 * p->dn[0] + P1 + P2;    /* <= area_t * 2^16 < 2^31 */
     int32_t q1 = 0, q2 = 0;
     if (S) {
+        /* S into [2^14, 2^15), the weights with it (P <= S) */
         int u = 17 - num_clz32(S);
         if (u > 0) { S >>= u; P1 >>= u; P2 >>= u; }
-        if (S == 0) S = 1;
-        uint32_t R = (1u << 30) / S;         /* S < 2^15: R > 2^15 */
-        q1 = (int32_t)((P1 * R) >> 14);      /* Q16; P <= S, so P*R <= 2^30 */
+        else if (u < 0) { S <<= -u; P1 <<= -u; P2 <<= -u; }
+        uint32_t R = rcp30(S);
+        q1 = (int32_t)((P1 * R) >> 14);      /* Q16; P*R <= 2^31 */
         q2 = (int32_t)((P2 * R) >> 14);
     }
-    for (int j = 0; j < p->na; j++) {
-        int32_t d = q1 * p->d1[j] + q2 * p->d2[j];   /* |d| < 2^16 * 2^14 */
-        int s = 16 - p->sh[j];
-        int64_t v = s >= 0 ? (int64_t)asr32(d, s) : (int64_t)d * ((int64_t)1 << -s);
-        v += p->a0[j];
-        out[j] = v > INT32_MAX ? INT32_MAX : (v < -INT32_MAX ? -INT32_MAX : (int32_t)v);
-    }
+    for (int j = 0; j < p->na; j++)
+        out[j] = p->a0[j] + asr32(q1 * p->d1[j] + q2 * p->d2[j], 16 - p->sh[j]);
 }
 
-static void persp_attr(struct fpersp *p, int j, int32_t c0, int32_t c1, int32_t c2)
+/* Corner values c0..c2 of attribute j; 0 when they do not fit the
+ * fast path's formats (the triangle then takes the exact path). */
+static int persp_attr(struct fpersp *p, int j, int32_t c0, int32_t c1, int32_t c2)
 {
-    int64_t e1 = (int64_t)c1 - c0, e2 = (int64_t)c2 - c0;
-    int64_t m = e1 < 0 ? -e1 : e1;
-    if ((e2 < 0 ? -e2 : e2) > m) m = e2 < 0 ? -e2 : e2;
+    const int32_t lim = (int32_t)1 << 30;
+    if (c0 <= -lim || c0 >= lim || c1 <= -lim || c1 >= lim || c2 <= -lim || c2 >= lim) return 0;
+    int32_t e1 = c1 - c0, e2 = c2 - c0;
+    uint32_t m1 = e1 < 0 ? (uint32_t)-e1 : (uint32_t)e1, m2 = e2 < 0 ? (uint32_t)-e2 : (uint32_t)e2;
+    uint32_t m = m1 > m2 ? m1 : m2;
     int sh = 0;
-    while ((m >> sh) >= ((int64_t)1 << 14)) sh++;
+    while ((m >> sh) >= (1u << 14)) sh++;
+    if (sh > 16) return 0;
     p->a0[j] = c0;
     p->sh[j] = sh;
-    p->d1[j] = (int32_t)(e1 >= 0 ? e1 >> sh : -((-e1) >> sh));
-    p->d2[j] = (int32_t)(e2 >= 0 ? e2 >> sh : -((-e2) >> sh));
+    p->d1[j] = e1 >= 0 ? e1 >> sh : -(int32_t)(m1 >> sh);
+    p->d2[j] = e2 >= 0 ? e2 >> sh : -(int32_t)(m2 >> sh);
+    return 1;
 }
+
+/* round(2^16 / k) for the last segment of a span, k = 1..32 */
+static const uint32_t inv_tab[33] = {
+    0, 65536, 32768, 21845, 16384, 13107, 10923, 9362, 8192, 7282, 6554, 5958, 5461, 5041, 4681, 4369, 4096,
+    3855, 3641, 3449, 3277, 3121, 2979, 2849, 2731, 2621, 2521, 2427, 2341, 2260, 2185, 2114, 2048,
+};
 
 int32_t ras_fast_fill(struct ras_ctx *rc, const struct ras_sv *v0, const struct ras_sv *v1, const struct ras_sv *v2,
                       const struct ras_fast_tri *ft)
 {
     const struct render_target *t = rc->t;
     int sb = rc->sub_bits;
-    int64_t area = edge(v0->x, v0->y, v1->x, v1->y, v2->x, v2->y);
-    if (area <= 0) return 0;
+    int64_t area64 = edge(v0->x, v0->y, v1->x, v1->y, v2->x, v2->y);
+    if (area64 <= 0) return 0;
 
     int32_t minx = v0->x, maxx = v0->x, miny = v0->y, maxy = v0->y;
     const struct ras_sv *vv[3] = { v0, v1, v2 };
@@ -299,6 +342,9 @@ int32_t ras_fast_fill(struct ras_ctx *rc, const struct ras_sv *v0, const struct 
         if (vv[i]->y < miny) miny = vv[i]->y;
         if (vv[i]->y > maxy) maxy = vv[i]->y;
     }
+    /* 32-bit edge arithmetic: corners within 2^14 sub-pixel units of each
+     * other (1024 pixels at 4 sub-pixel bits); larger ones take the exact path */
+    if ((int64_t)maxx - minx > (1 << 14) || (int64_t)maxy - miny > (1 << 14)) return -1;
     int32_t c0 = minx >> sb, c1 = (maxx >> sb) + 1, r0 = miny >> sb, r1 = (maxy >> sb) + 1;
     if (c0 < 0) c0 = 0;
     if (r0 < (int32_t)t->y0) r0 = t->y0;
@@ -306,30 +352,39 @@ int32_t ras_fast_fill(struct ras_ctx *rc, const struct ras_sv *v0, const struct 
     if (r1 > (int32_t)t->y1 - 1) r1 = t->y1 - 1;
     if (c0 > c1 || r0 > r1) return 0;
 
-    /* the exact path's edge functions at (c0, r0) and their steps */
-    int64_t half = (int64_t)1 << (sb - 1), one = (int64_t)1 << sb;
+    /* the exact path's edge functions at (c0, r0) and their steps; every
+     * value inside the box is below 2^29 in magnitude */
+    int32_t half = (int32_t)1 << (sb - 1), one = (int32_t)1 << sb;
     int64_t px = ((int64_t)c0 << sb) + half, py = ((int64_t)r0 << sb) + half;
     const struct ras_sv *ea[3] = { v1, v2, v0 }, *eb[3] = { v2, v0, v1 };
-    int64_t wr[3], a[3], b[3];
+    int32_t wr[3], a[3], b[3];
     struct fedge fe[3];
     for (int i = 0; i < 3; i++) {
         int32_t dx = eb[i]->x - ea[i]->x, dy = eb[i]->y - ea[i]->y;
-        int64_t bias = (dy < 0 || (dy == 0 && dx > 0)) ? 0 : -1;
-        wr[i] = edge(ea[i]->x, ea[i]->y, eb[i]->x, eb[i]->y, px, py);
-        a[i] = -(int64_t)dy * one;
-        b[i] = (int64_t)dx * one;
+        int32_t bias = (dy < 0 || (dy == 0 && dx > 0)) ? 0 : -1;
+        wr[i] = (int32_t)edge(ea[i]->x, ea[i]->y, eb[i]->x, eb[i]->y, px, py);
+        a[i] = -dy * one;
+        b[i] = dx * one;
         fedge_init(&fe[i], a[i], b[i], wr[i], bias);
     }
+    int32_t area = (int32_t)area64;
 
-    /* depth: exact at each span's first pixel, then the truncated gradient */
+    /* depth: a plane in Q32.16 (exact at (c0, r0), gradients to 2^-16),
+     * stepped per pixel by the column gradient truncated toward zero */
     int depth = rc->depth_bytes != 0;
-    int64_t dd1 = (int64_t)v1->depth - v0->depth, dd2 = (int64_t)v2->depth - v0->depth;
+    int64_t zrow = 0, gx16 = 0, gy16 = 0;
     uint32_t dz = 0;
     if (depth) {
-        int64_t k = dd1 * a[1] + dd2 * a[2];
-        int64_t g = k / area;                 /* toward zero */
-        if (g > INT32_MAX || g < -INT32_MAX) return -1;
-        dz = (uint32_t)(int32_t)g;
+        int64_t dd1 = (int64_t)v1->depth - v0->depth, dd2 = (int64_t)v2->depth - v0->depth, rem;
+        int64_t q = ras_floordiv(dd1 * wr[1] + dd2 * wr[2], area, &rem);
+        zrow = (((int64_t)v0->depth + q) << 16) + ((rem << 16) / area);
+        q = ras_floordiv(dd1 * a[1] + dd2 * a[2], area, &rem);
+        if (q > INT32_MAX || q < -INT32_MAX) return -1;
+        gx16 = q * 65536 + (rem << 16) / area;
+        dz = (uint32_t)(int32_t)(q + (q < 0 && rem != 0));      /* toward zero */
+        q = ras_floordiv(dd1 * b[1] + dd2 * b[2], area, &rem);
+        if (q > INT32_MAX || q < -INT32_MAX) return -1;
+        gy16 = q * 65536 + (rem << 16) / area;
     }
 
     /* attributes */
@@ -337,7 +392,7 @@ int32_t ras_fast_fill(struct ras_ctx *rc, const struct ras_sv *v0, const struct 
     int na = 0, slog = rc->persp_log2;
     if (ft->kind != FT_FLAT) {
         int tt = 0;
-        while ((area >> tt) >= ((int64_t)1 << 15)) tt++;
+        while ((area >> tt) >= (1 << 15)) tt++;
         pp.t = tt;
         pp.area_t = (uint32_t)(area >> tt);
         uint32_t dmax = v0->depth;
@@ -354,8 +409,7 @@ int32_t ras_fast_fill(struct ras_ctx *rc, const struct ras_sv *v0, const struct 
                 u[i] = ras_num_to_fix(vv[i]->a[ft->ai_uv], ft->uscale);
                 v[i] = ras_num_to_fix(vv[i]->a[ft->ai_uv + 1], ft->vscale);
             }
-            persp_attr(&pp, na++, u[0], u[1], u[2]);
-            persp_attr(&pp, na++, v[0], v[1], v[2]);
+            if (!persp_attr(&pp, na++, u[0], u[1], u[2]) || !persp_attr(&pp, na++, v[0], v[1], v[2])) return -1;
         }
         if (ft->kind == FT_GOURAUD || ft->kind == FT_TEX_GOURAUD) {
             int32_t li[3];
@@ -363,11 +417,12 @@ int32_t ras_fast_fill(struct ras_ctx *rc, const struct ras_sv *v0, const struct 
                 int32_t x = ras_num_to_fix(vv[i]->a[ft->ai_i], 1 << 20);
                 li[i] = x < 0 ? 0 : (x > (8 << 20) - 1 ? (8 << 20) - 1 : x);
             }
-            persp_attr(&pp, na++, li[0], li[1], li[2]);
+            if (!persp_attr(&pp, na++, li[0], li[1], li[2])) return -1;
         }
         pp.na = na;
     }
     int ai = ft->kind == FT_GOURAUD ? 0 : 2;   /* index of the intensity in the attribute list */
+    int32_t seg = (int32_t)1 << slog, sa1 = a[1] << slog, sa2 = a[2] << slog;
 
     int extra = t->rgb888 != NULL || t->written != NULL;
     span_fn fn = span_table[extra][ft->kind][rc->depth_bytes == 0 ? 0 : (rc->depth_bytes == 2 ? 1 : 2)];
@@ -381,7 +436,7 @@ int32_t ras_fast_fill(struct ras_ctx *rc, const struct ras_sv *v0, const struct 
     int32_t kmax = c1 - c0;
 
     for (int32_t r = r0; r <= r1; r++) {
-        int64_t lo = 0, hi = kmax;
+        int32_t lo = 0, hi = kmax;
         int empty = 0;
         for (int i = 0; i < 3; i++) {
             if (fe[i].kind > 0) { if (fe[i].q > lo) lo = fe[i].q; }
@@ -389,7 +444,7 @@ int32_t ras_fast_fill(struct ras_ctx *rc, const struct ras_sv *v0, const struct 
             else if (fe[i].n < 0) empty = 1;
         }
         if (!empty && lo <= hi) {
-            int32_t L = c0 + (int32_t)lo, R = c0 + (int32_t)hi;
+            int32_t L = c0 + lo, n = hi - lo + 1;
             size_t idx = (size_t)(r - t->y0) * rc->w + (size_t)L;
             sp.px = t->rgb565 + idx;
             sp.zb = rc->depth + idx * rc->depth_bytes;
@@ -397,58 +452,67 @@ int32_t ras_fast_fill(struct ras_ctx *rc, const struct ras_sv *v0, const struct 
                 sp.rgb888 = t->rgb888 ? t->rgb888 + 3 * idx : NULL;
                 sp.written = t->written ? t->written + idx : NULL;
             }
-            int64_t w1 = wr[1] + lo * a[1], w2 = wr[2] + lo * a[2];
             if (depth) {
-                int64_t zr;
-                int64_t zq = ras_floordiv(dd1 * w1 + dd2 * w2, area, &zr);
-                int64_t d = (int64_t)v0->depth + zq + (zq < 0 && zr != 0);
-                if (d < 0) d = 0;
-                if (d > (int64_t)UINT32_MAX) d = UINT32_MAX;
-                sp.z = (uint32_t)d;
+                int64_t zs = (zrow + (int64_t)lo * gx16) >> 16;
+                int64_t ze = zs + (int64_t)(n - 1) * (int32_t)dz;
+                if (zs < 1 || zs > (int64_t)UINT32_MAX - 1 || ze < 1 || ze > (int64_t)UINT32_MAX - 1) {
+                    /* at the near plane or infinity: this row's depth held flat */
+                    sp.z = zs < 0 ? 0 : (zs > (int64_t)UINT32_MAX ? UINT32_MAX : (uint32_t)zs);
+                    sp.dz = 0;
+                } else {
+                    sp.z = (uint32_t)zs;
+                    sp.dz = dz;
+                }
             }
-            int32_t n = R - L + 1;
             if (ft->kind == FT_FLAT) {
                 total += fn(&sp, n);
             } else {
+                int32_t w1 = wr[1] + lo * a[1], w2 = wr[2] + lo * a[2];
                 int32_t cur[3], nxt[3];
                 persp_at(&pp, w1, w2, cur);
-                int32_t seg = (int32_t)1 << slog;
                 while (n > 0) {
-                    int32_t m = n > seg ? seg : n;   /* pixels drawn now */
-                    int32_t steps;
-                    if (n > seg) {
-                        w1 += (int64_t)seg * a[1];
-                        w2 += (int64_t)seg * a[2];
-                        steps = seg;
-                    } else {
-                        w1 += (int64_t)(n - 1) * a[1];
-                        w2 += (int64_t)(n - 1) * a[2];
-                        steps = n - 1;
-                    }
-                    if (steps > 0) persp_at(&pp, w1, w2, nxt);
-                    else for (int j = 0; j < na; j++) nxt[j] = cur[j];
-                    int32_t dv[3];
-                    for (int j = 0; j < na; j++) {
-                        int64_t dlt = (int64_t)nxt[j] - cur[j];
-                        dv[j] = steps == seg ? (int32_t)(dlt >= 0 ? dlt >> slog : -((-dlt) >> slog))
-                                             : (steps > 0 ? (int32_t)(dlt / steps) : 0);
+                    int32_t m, dv[3];
+                    if (n > seg) {         /* a whole segment, to the next one's first pixel */
+                        m = seg;
+                        w1 += sa1;
+                        w2 += sa2;
+                        persp_at(&pp, w1, w2, nxt);
+                        for (int j = 0; j < na; j++) dv[j] = asr32(nxt[j] - cur[j], slog);
+                    } else {               /* the rest, to the span's last pixel */
+                        m = n;
+                        int32_t k = n - 1;
+                        if (k > 0) {
+                            w1 += k * a[1];
+                            w2 += k * a[2];
+                            persp_at(&pp, w1, w2, nxt);
+                            for (int j = 0; j < na; j++)
+                                dv[j] = (int32_t)(num_smul32(nxt[j] - cur[j], (int32_t)inv_tab[k]) >> 16);
+                        } else {
+                            for (int j = 0; j < na; j++) dv[j] = 0;
+                        }
                     }
                     if (ft->kind != FT_GOURAUD) { sp.u = cur[0]; sp.du = dv[0]; sp.v = cur[1]; sp.dv = dv[1]; }
                     if (ft->kind == FT_GOURAUD || ft->kind == FT_TEX_GOURAUD) { sp.i = cur[ai]; sp.di = dv[ai]; }
                     total += fn(&sp, m);
+                    n -= m;
+                    if (n == 0) break;
                     sp.px += m;
                     sp.zb += (size_t)m * rc->depth_bytes;
-                    sp.z += (uint32_t)m * dz;
+                    sp.z += (uint32_t)m * sp.dz;
                     if (sp.rgb888) sp.rgb888 += 3 * m;
                     if (sp.written) sp.written += m;
                     for (int j = 0; j < na; j++) cur[j] = nxt[j];
-                    n -= m;
                 }
             }
         }
+        zrow += gy16;
         for (int i = 0; i < 3; i++) {
             wr[i] += b[i];
-            fedge_next(&fe[i]);
+            struct fedge *e = &fe[i];
+            if (e->kind == 0) { e->n += e->dq; continue; }
+            e->q += e->dq;
+            e->r += e->dr;
+            if (e->r >= e->den) { e->q++; e->r -= e->den; }
         }
     }
     return (int32_t)total;

@@ -8,8 +8,8 @@
 static size_t al(size_t n) { return (n + (ALIGN - 1)) & ~(size_t)(ALIGN - 1); }
 
 struct layout {
-    size_t ctx, inst, verts, tri_rows, prim_rows, line_rows, lights, mips, mipmem, tex565, texmem, depth, adj, smap,
-        stencil, total;
+    size_t ctx, inst, verts, tri_rows, prim_rows, line_rows, lights, mips, mipmem, tex565, texmem, pv, tri_flags,
+        tri_shade, depth, adj, smap, stencil, total;
     uint32_t nverts, ntris;
 };
 
@@ -44,6 +44,18 @@ static size_t tex565_size(const struct scene *s, const struct ras_texture *t)
     return (size_t)t->w * t->h * 2;
 }
 
+/* The default path's per-frame caches (projected vertices, triangle
+ * flags, lighting of Gouraud and flat triangles). */
+static int frame_cache(const struct scene *s)
+{
+    return !s->ras.book_exact && !s->ras.wireframe;
+}
+
+static int shade_cache(const struct scene *s)
+{
+    return frame_cache(s) && (s->ras.shading == SHADE_GOURAUD || s->ras.shading == SHADE_FLAT);
+}
+
 static int make_layout(const struct scene *s, uint16_t w, uint16_t strip_rows, struct layout *L)
 {
     memset(L, 0, sizeof *L);
@@ -68,6 +80,9 @@ static int make_layout(const struct scene *s, uint16_t w, uint16_t strip_rows, s
     L->tex565 = off; off += al(sizeof(struct ras_tex565) * s->ntextures);
     L->texmem = off;
     for (uint16_t i = 0; i < s->ntextures; i++) off += al(tex565_size(s, &s->textures[i]));
+    L->pv = off; off += al(frame_cache(s) ? sizeof(struct ras_pv) * L->nverts : 0);
+    L->tri_flags = off; off += al(frame_cache(s) ? L->ntris : 0);
+    L->tri_shade = off; off += al(shade_cache(s) ? sizeof(num) * 3 * L->ntris : 0);
     L->depth = off; off += al((size_t)depth_bytes(s) * w * strip_rows);
     L->adj = off; off += al(ras_ch15_adj_size(s, L->ntris));
     L->smap = off; off += al(ras_ch15_smap_size(s));
@@ -120,6 +135,9 @@ int raster_init(struct render_ctx *ctx)
     rc->lights = (struct ras_light *)(void *)(base + L.lights);
     rc->mips = (struct ras_mips *)(void *)(base + L.mips);
     rc->tex565 = (struct ras_tex565 *)(void *)(base + L.tex565);
+    rc->pv = frame_cache(s) ? (struct ras_pv *)(void *)(base + L.pv) : NULL;
+    rc->tri_flags = frame_cache(s) ? base + L.tri_flags : NULL;
+    rc->tri_shade = shade_cache(s) ? (num *)(void *)(base + L.tri_shade) : NULL;
     rc->depth = base + L.depth;
     rc->adj = (uint16_t *)(void *)(base + L.adj);
     rc->smap = (uint16_t *)(void *)(base + L.smap);
@@ -210,6 +228,19 @@ static void project_sub(const struct ras_ctx *rc, vec3 p, int32_t *sx, int32_t *
     *sy = (int32_t)((uint32_t)num_floor_int(fy) << sb) + num_floor_int(num_add(num_mul_int(num_frac(fy), 1 << sb), NUM_HALF));
 }
 
+/* Rows of sub-pixel rows lo..hi, one row of margin each side. */
+static struct ras_range sub_rows(const struct ras_ctx *rc, int32_t lo, int32_t hi)
+{
+    struct ras_range r;
+    int32_t r0 = (lo >> rc->sub_bits) - 1, r1 = (hi >> rc->sub_bits) + 1;
+    if (r0 < 0) r0 = 0;
+    if (r1 > rc->h - 1) r1 = rc->h - 1;
+    if (r0 > r1) return no_rows();
+    r.r0 = (int16_t)r0;
+    r.r1 = (int16_t)r1;
+    return r;
+}
+
 static struct ras_range default_tri_rows(const struct ras_ctx *rc, vec3 a, vec3 b, vec3 c)
 {
     struct ras_cv in[3], out[RAS_CLIP_MAX];
@@ -223,15 +254,11 @@ static struct ras_range default_tri_rows(const struct ras_ctx *rc, vec3 a, vec3 
         if (sy < lo) lo = sy;
         if (sy > hi) hi = sy;
     }
-    struct ras_range r;
-    int32_t r0 = (lo >> rc->sub_bits) - 1, r1 = (hi >> rc->sub_bits) + 1;
-    if (r0 < 0) r0 = 0;
-    if (r1 > rc->h - 1) r1 = rc->h - 1;
-    if (r0 > r1) return no_rows();
-    r.r0 = (int16_t)r0;
-    r.r1 = (int16_t)r1;
-    return r;
+    return sub_rows(rc, lo, hi);
 }
+
+static void tri_cache(struct ras_ctx *rc, const struct ras_instance *in, const struct ras_inst *ri,
+                      const struct ras_model *m, const struct ras_triangle *t, uint32_t gi);
 
 int raster_begin_frame(struct render_ctx *ctx, uint16_t frame)
 {
@@ -310,6 +337,15 @@ int raster_begin_frame(struct render_ctx *ctx, uint16_t frame)
                 v->px = num_from_int(num_to_int(v->px));
                 v->py = num_from_int(num_to_int(v->py));
             }
+            if (rc->pv) {
+                struct ras_pv *q = &rc->pv[vb + k];
+                q->inside = (uint8_t)(ri->visible && ras_point_inside(rc, v->c));
+                if (q->inside) {
+                    project_sub(rc, v->c, &q->sx, &q->sy);
+                    q->iz = num_recip(v->c.z);
+                    q->depth = ras_depth32(rc->near_z, v->c.z);
+                }
+            }
         }
         for (uint16_t k = 0; k < m->ntris; k++) {
             const struct ras_triangle *t = &m->tris[k];
@@ -327,7 +363,13 @@ int raster_begin_frame(struct render_ctx *ctx, uint16_t frame)
                 range3(ys, &lo, &hi);
                 *rr = rows_of_canvas_y(rc, lo, hi);
             } else {
-                *rr = default_tri_rows(rc, a->c, b->c, c->c);
+                const struct ras_pv *pa = &rc->pv[vb + t->v[0]], *pb = &rc->pv[vb + t->v[1]], *pc = &rc->pv[vb + t->v[2]];
+                if (pa->inside && pb->inside && pc->inside)
+                    *rr = sub_rows(rc, num_min(num_min(pa->sy, pb->sy), pc->sy), num_max(num_max(pa->sy, pb->sy), pc->sy));
+                else
+                    *rr = default_tri_rows(rc, a->c, b->c, c->c);
+                if (rr->r0 <= rr->r1) tri_cache(rc, in, ri, m, t, tb + k);
+                else rc->tri_flags[tb + k] = 0;
             }
             if (rr->r0 <= rr->r1) rc->tris_drawn++;
         }
@@ -576,20 +618,68 @@ static int fast_setup(const struct ras_ctx *rc, const struct def_tri *dt, struct
     return 1;
 }
 
-static void default_render_triangle(struct ras_ctx *rc, const struct ras_instance *in, const struct ras_inst *ri,
-                                    const struct ras_model *m, const struct ras_triangle *t)
+/* Camera-space corners, facing and shading normals of a triangle of the
+ * default path; 0 when it draws nothing (degenerate, or a culled back face). */
+static int tri_facts(const struct ras_ctx *rc, const struct ras_inst *ri, const struct ras_model *m,
+                     const struct ras_triangle *t, vec3 V[3], vec3 N[3], int *front)
 {
     const struct ras_options *o = &rc->s->ras;
-    vec3 V[3], N[3];
     for (int k = 0; k < 3; k++) V[k] = rc->verts[ri->vbase + t->v[k]].c;
     struct ras_wnormal wf = ras_face_normal_wide(V[0], V[1], V[2]);
     wnum facing = ras_facing_wide(V[0], wf);
-    if (facing == 0 && wf.x == 0 && wf.y == 0 && wf.z == 0) return; /* degenerate */
-    int front = facing > 0;
-    if (o->backface_cull && !front) return;
+    if (facing == 0 && wf.x == 0 && wf.y == 0 && wf.z == 0) return 0; /* degenerate */
+    *front = facing > 0;
+    if (o->backface_cull && !*front) return 0;
     int face_n = o->computed_normals || !m->has_normals;
     vec3 nf = face_n ? ras_wnormal_narrow(wf) : v3(NUM_ZERO, NUM_ZERO, NUM_ZERO);
     for (int k = 0; k < 3; k++) N[k] = face_n ? nf : corner_normal(ri, t->n[k]);
+    return 1;
+}
+
+static vec3 tri_centre(const vec3 V[3])
+{
+    return v3(num_div_int(num_add(num_add(V[0].x, V[1].x), V[2].x), 3),
+              num_div_int(num_add(num_add(V[0].y, V[1].y), V[2].y), 3),
+              num_div_int(num_add(num_add(V[0].z, V[1].z), V[2].z), 3));
+}
+
+/* Per frame: the facts of triangle gi kept for every strip, and the
+ * lighting of its Gouraud corners or flat face (the values
+ * default_render_triangle would compute in each strip). */
+static void tri_cache(struct ras_ctx *rc, const struct ras_instance *in, const struct ras_inst *ri,
+                      const struct ras_model *m, const struct ras_triangle *t, uint32_t gi)
+{
+    vec3 V[3], N[3];
+    int front = 0;
+    if (!tri_facts(rc, ri, m, t, V, N, &front)) { rc->tri_flags[gi] = 0; return; }
+    rc->tri_flags[gi] = (uint8_t)(RAS_TRI_LIVE | (front ? RAS_TRI_FRONT : 0));
+    if (!rc->tri_shade) return;
+    num *sh = rc->tri_shade + 3 * (size_t)gi;
+    if (rc->s->ras.shading == SHADE_GOURAUD)
+        for (int k = 0; k < 3; k++) sh[k] = compute_illumination(rc, V[k], N[k], in->specular);
+    else
+        sh[0] = compute_illumination(rc, tri_centre(V), N[0], in->specular);
+}
+
+static void default_render_triangle(struct ras_ctx *rc, const struct ras_instance *in, const struct ras_inst *ri,
+                                    const struct ras_model *m, const struct ras_triangle *t, uint32_t gi)
+{
+    const struct ras_options *o = &rc->s->ras;
+    vec3 V[3], N[3];
+    int front = 0;
+    const num *shade = rc->tri_shade ? rc->tri_shade + 3 * (size_t)gi : NULL;
+    if (rc->tri_flags) {
+        uint8_t f = rc->tri_flags[gi];
+        if (!(f & RAS_TRI_LIVE)) return;
+        front = (f & RAS_TRI_FRONT) != 0;
+        if (shade) {
+            for (int k = 0; k < 3; k++) V[k] = rc->verts[ri->vbase + t->v[k]].c;
+        } else if (!tri_facts(rc, ri, m, t, V, N, &front)) {
+            return;
+        }
+    } else if (!tri_facts(rc, ri, m, t, V, N, &front)) {
+        return;
+    }
 
     struct def_tri dt;
     dt.color = t->color;
@@ -623,29 +713,42 @@ static void default_render_triangle(struct ras_ctx *rc, const struct ras_instanc
     if (uv) { dt.ai_uv = na; na += 2; }
     for (int k = 0; k < 3; k++) {
         cin[k].p = V[k];
-        if (o->shading == SHADE_GOURAUD) cin[k].a[dt.ai_i] = compute_illumination(rc, V[k], N[k], dt.spec);
+        if (o->shading == SHADE_GOURAUD)
+            cin[k].a[dt.ai_i] = shade ? shade[k] : compute_illumination(rc, V[k], N[k], dt.spec);
         if (o->shading == SHADE_PHONG) {
             vec3 n = v3_normalize(N[k]);
             cin[k].a[dt.ai_n] = n.x; cin[k].a[dt.ai_n + 1] = n.y; cin[k].a[dt.ai_n + 2] = n.z;
         }
         if (uv) { cin[k].a[dt.ai_uv] = t->uv[k].u; cin[k].a[dt.ai_uv + 1] = t->uv[k].v; }
     }
-    if (o->shading == SHADE_FLAT) {
-        vec3 centre = v3(num_div_int(num_add(num_add(V[0].x, V[1].x), V[2].x), 3),
-                         num_div_int(num_add(num_add(V[0].y, V[1].y), V[2].y), 3),
-                         num_div_int(num_add(num_add(V[0].z, V[1].z), V[2].z), 3));
-        dt.flat_i = compute_illumination(rc, centre, N[0], dt.spec);
-    }
-    int n = clip_triangle(rc, cin, na, poly);
-    if (n < 3) return;
+    if (o->shading == SHADE_FLAT) dt.flat_i = shade ? shade[0] : compute_illumination(rc, tri_centre(V), N[0], dt.spec);
     struct ras_sv sv[RAS_CLIP_MAX];
-    for (int k = 0; k < n; k++) {
-        /* back faces (culling off) are drawn with their corners reversed */
-        const struct ras_cv *c = &poly[front ? k : n - 1 - k];
-        project_sub(rc, c->p, &sv[k].x, &sv[k].y);
-        sv[k].iz = num_recip(c->p.z);
-        sv[k].depth = ras_depth32(rc->near_z, c->p.z);
-        for (int j = 0; j < na; j++) sv[k].a[j] = c->a[j];
+    int n;
+    const struct ras_pv *pv = rc->pv ? rc->pv + ri->vbase : NULL;
+    if (pv && pv[t->v[0]].inside && pv[t->v[1]].inside && pv[t->v[2]].inside) {
+        /* inside every plane: the clipper would return the corners as they
+         * are; their projections were made once this frame */
+        n = 3;
+        for (int k = 0; k < 3; k++) {
+            int c = front ? k : 2 - k;
+            const struct ras_pv *q = &pv[t->v[c]];
+            sv[k].x = q->sx;
+            sv[k].y = q->sy;
+            sv[k].iz = q->iz;
+            sv[k].depth = q->depth;
+            for (int j = 0; j < na; j++) sv[k].a[j] = cin[c].a[j];
+        }
+    } else {
+        n = clip_triangle(rc, cin, na, poly);
+        if (n < 3) return;
+        for (int k = 0; k < n; k++) {
+            /* back faces (culling off) are drawn with their corners reversed */
+            const struct ras_cv *c = &poly[front ? k : n - 1 - k];
+            project_sub(rc, c->p, &sv[k].x, &sv[k].y);
+            sv[k].iz = num_recip(c->p.z);
+            sv[k].depth = ras_depth32(rc->near_z, c->p.z);
+            for (int j = 0; j < na; j++) sv[k].a[j] = c->a[j];
+        }
     }
     const struct ras_texture *tx = dt.tex >= 0 ? &rc->s->textures[dt.tex] : NULL;
     struct ras_fast_tri ft;
@@ -775,7 +878,7 @@ int raster_strip(struct render_ctx *ctx, struct render_target *t, struct render_
             for (uint16_t k = 0; k < m->ntris; k++) {
                 if (!rows_hit(rc->tri_rows[ri->tbase + k], t)) continue;
                 if (rc->book || s->ras.wireframe) book_render_triangle(rc, in, ri, m, &m->tris[k]);
-                else default_render_triangle(rc, in, ri, m, &m->tris[k]);
+                else default_render_triangle(rc, in, ri, m, &m->tris[k], ri->tbase + k);
             }
         }
     }

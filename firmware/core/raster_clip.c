@@ -51,6 +51,13 @@ static num clip_value(const struct ras_ctx *rc, int i, vec3 p)
     }
 }
 
+int ras_point_inside(const struct ras_ctx *rc, vec3 p)
+{
+    for (int i = 0; i < 5; i++)
+        if (clip_value(rc, i, p) < 0) return 0;
+    return 1;
+}
+
 static struct ras_cv lerp_cv(const struct ras_cv *a, const struct ras_cv *b, num t, int na)
 {
     struct ras_cv r;

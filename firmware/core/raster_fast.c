@@ -377,7 +377,7 @@ int32_t ras_fast_fill(struct ras_ctx *rc, const struct ras_sv *v0, const struct 
     if (depth) {
         int64_t dd1 = (int64_t)v1->depth - v0->depth, dd2 = (int64_t)v2->depth - v0->depth, rem;
         int64_t q = ras_floordiv(dd1 * wr[1] + dd2 * wr[2], area, &rem);
-        zrow = (((int64_t)v0->depth + q) << 16) + ((rem << 16) / area);
+        zrow = ((int64_t)v0->depth + q) * 65536 + (rem << 16) / area;
         q = ras_floordiv(dd1 * a[1] + dd2 * a[2], area, &rem);
         if (q > INT32_MAX || q < -INT32_MAX) return -1;
         gx16 = q * 65536 + (rem << 16) / area;
@@ -422,7 +422,7 @@ int32_t ras_fast_fill(struct ras_ctx *rc, const struct ras_sv *v0, const struct 
         pp.na = na;
     }
     int ai = ft->kind == FT_GOURAUD ? 0 : 2;   /* index of the intensity in the attribute list */
-    int32_t seg = (int32_t)1 << slog, sa1 = a[1] << slog, sa2 = a[2] << slog;
+    int32_t seg = (int32_t)1 << slog, sa1 = a[1] * seg, sa2 = a[2] * seg;
 
     int extra = t->rgb888 != NULL || t->written != NULL;
     span_fn fn = span_table[extra][ft->kind][rc->depth_bytes == 0 ? 0 : (rc->depth_bytes == 2 ? 1 : 2)];

@@ -33,6 +33,14 @@ struct ras_inst {
 /* A transformed vertex: camera space and the book's projection. */
 struct ras_vert { vec3 c; num px, py; };
 
+/* A vertex of the default path, projected once per frame: sub-pixel
+ * screen position, 1/z and near/z, valid when `inside` (within every
+ * clipping plane; triangles of three such corners skip the clipper). */
+struct ras_pv { int32_t sx, sy; num iz; uint32_t depth; uint8_t inside; };
+
+/* Per-frame facts of a triangle of the default path. */
+enum { RAS_TRI_FRONT = 1, RAS_TRI_LIVE = 2 };
+
 /* Screen rows a primitive may touch (inclusive); r0 > r1: none. This is the
  * binning of primitives to strips, computed once per frame. */
 struct ras_range { int16_t r0, r1; };
@@ -67,6 +75,11 @@ struct ras_ctx {
     struct ras_light *lights;
     struct ras_mips *mips;   /* per texture */
     struct ras_tex565 *tex565; /* per texture (fast path) */
+    /* default path, per frame: projected vertices, triangle flags and the
+     * lighting of Gouraud corners or flat faces (NULL when not kept) */
+    struct ras_pv *pv;
+    uint8_t *tri_flags;
+    num *tri_shade;          /* 3 a triangle: Gouraud corners, or the flat intensity first */
     uint8_t *depth;          /* strip_rows * w entries */
     /* depth test of ras_fill_triangle: RAS_DEPTH_LESS_WRITE (normal),
      * RAS_DEPTH_EQUAL (shading pass after a depth pass), RAS_DEPTH_BEHIND
@@ -198,6 +211,9 @@ struct ras_cv { vec3 p; num a[RAS_MAX_ATTR]; };
 /* clip_triangle: Sutherland–Hodgman against the default path's planes;
  * returns the corner count of out (0, or 3..RAS_CLIP_MAX). */
 int clip_triangle(const struct ras_ctx *rc, const struct ras_cv in[3], int na, struct ras_cv *out);
+/* 1 when p is inside every plane of clip_triangle (a triangle of three such
+ * corners comes out of it unchanged). */
+int ras_point_inside(const struct ras_ctx *rc, vec3 p);
 
 /* ---- chapter 13: lighting (raster_shading.c) ---- */
 num compute_illumination(const struct ras_ctx *rc, vec3 p, vec3 n, num specular);

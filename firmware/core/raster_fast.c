@@ -29,17 +29,6 @@
 #define FT_TEX RAS_FT_TEX
 #define FT_TEX_GOURAUD RAS_FT_TEX_GOURAUD
 
-/* One segment of a span: where it starts and what it steps. */
-struct fspan {
-    uint16_t *px;
-    uint8_t *zb;
-    uint32_t z, dz;
-    int32_t u, du, v, dv;    /* texel coordinates, 16.16 */
-    int32_t i, di;           /* intensity, Q20 */
-    const struct ras_fast_tri *ft;
-    uint8_t *rgb888, *written;   /* host outputs at the first pixel, or NULL */
-};
-
 static void ras_565_to_888(uint16_t c, uint8_t *o)
 {
     uint32_t r = c >> 11, g = (c >> 5) & 63, b = c & 31;
@@ -48,7 +37,126 @@ static void ras_565_to_888(uint16_t c, uint8_t *o)
     o[2] = (uint8_t)(b << 3 | b >> 2);
 }
 
-typedef uint32_t (*span_fn)(const struct fspan *s, int n);
+/* x / 2^n rounded toward minus infinity, for any sign (no reliance on how
+ * >> treats negative values). */
+static int32_t asr32(int32_t x, int n)
+{
+    return x >= 0 ? x >> n : -(int32_t)((uint32_t)(-(x + 1)) >> n) - 1;
+}
+
+/* 2^30 / (s * 64) at the middle of each of the 256 intervals of s in
+ * [256, 512): round(2^30 / ((256 + i + 0.5) * 64)). */
+static const uint16_t rcp_tab[256] = {
+    65408, 65154, 64902, 64652, 64404, 64158, 63913, 63671, 63430, 63191, 62954, 62719,
+    62485, 62253, 62023, 61795, 61568, 61343, 61119, 60897, 60677, 60458, 60241, 60026,
+    59812, 59599, 59388, 59179, 58971, 58764, 58559, 58356, 58153, 57952, 57753, 57555,
+    57358, 57163, 56968, 56776, 56584, 56394, 56205, 56017, 55831, 55646, 55462, 55279,
+    55098, 54917, 54738, 54560, 54383, 54207, 54033, 53859, 53687, 53516, 53346, 53177,
+    53009, 52842, 52676, 52511, 52347, 52184, 52022, 51862, 51702, 51543, 51385, 51228,
+    51072, 50917, 50763, 50610, 50458, 50306, 50156, 50007, 49858, 49710, 49563, 49417,
+    49272, 49128, 48985, 48842, 48700, 48559, 48419, 48280, 48141, 48003, 47867, 47730,
+    47595, 47460, 47326, 47193, 47061, 46929, 46798, 46668, 46539, 46410, 46282, 46155,
+    46028, 45902, 45777, 45652, 45528, 45405, 45283, 45161, 45040, 44919, 44799, 44680,
+    44561, 44443, 44326, 44209, 44093, 43977, 43862, 43748, 43634, 43521, 43408, 43296,
+    43185, 43074, 42963, 42854, 42744, 42636, 42528, 42420, 42313, 42207, 42101, 41996,
+    41891, 41786, 41683, 41579, 41476, 41374, 41272, 41171, 41070, 40970, 40870, 40771,
+    40672, 40574, 40476, 40378, 40281, 40185, 40089, 39993, 39898, 39804, 39709, 39616,
+    39522, 39429, 39337, 39245, 39153, 39062, 38971, 38881, 38791, 38702, 38613, 38524,
+    38436, 38348, 38260, 38173, 38087, 38000, 37915, 37829, 37744, 37659, 37575, 37491,
+    37407, 37324, 37241, 37159, 37077, 36995, 36914, 36833, 36752, 36672, 36592, 36512,
+    36433, 36354, 36275, 36197, 36119, 36041, 35964, 35887, 35810, 35734, 35658, 35583,
+    35507, 35432, 35358, 35283, 35209, 35136, 35062, 34989, 34916, 34844, 34771, 34700,
+    34628, 34557, 34486, 34415, 34344, 34274, 34204, 34135, 34065, 33996, 33928, 33859,
+    33791, 33723, 33655, 33588, 33521, 33454, 33387, 33321, 33255, 33189, 33124, 33059,
+    32994, 32929, 32864, 32800
+};
+
+/* floor-ish 2^30 / s for s in [2^14, 2^15), within 2 of the quotient: the
+ * table's 9-bit estimate and one Newton step, all in 32 bits. */
+static uint32_t rcp30(uint32_t s)
+{
+    int32_t r0 = rcp_tab[(s >> 6) - 256];
+    int32_t e = (int32_t)((1u << 30) - s * (uint32_t)r0);   /* |e| <= 2^22 */
+    return (uint32_t)(r0 + asr32(r0 * asr32(e, 7), 23));
+}
+
+/* Perspective-correct attributes at a pixel from its edge values. */
+struct fpersp {
+    int t;                   /* edge values >> t < 2^15 */
+    uint32_t area_t;         /* area >> t */
+    uint32_t dn[3];          /* near/z of the corners >> s, < 2^16 */
+    int na;                  /* attributes: 1 (intensity), 2 (u, v) or 3 (u, v, intensity) */
+    int32_t a0[3];           /* corner 0's value in the span format, |a0| < 2^30 */
+    int32_t d1[3], d2[3];    /* (corner 1 - corner 0), (corner 2 - corner 0) >> sh: < 2^14 */
+    int sh[3];               /* <= 16 */
+};
+
+static void persp_at(const struct fpersp *p, int32_t w1, int32_t w2, int32_t *out)
+{
+    uint32_t b1 = (uint32_t)w1 >> p->t, b2 = (uint32_t)w2 >> p->t;
+    uint32_t b0 = p->area_t - b1 - b2;       /* >= (w0 >> t) >= 0 */
+    uint32_t P1 = b1 * p->dn[1], P2 = b2 * p->dn[2];
+    uint32_t S = b0 * p->dn[0] + P1 + P2;    /* <= area_t * 2^16 < 2^31 */
+    int32_t q1 = 0, q2 = 0;
+    if (S) {
+        /* S into [2^14, 2^15), the weights with it (P <= S) */
+        int u = 17 - num_clz32(S);
+        if (u > 0) { S >>= u; P1 >>= u; P2 >>= u; }
+        else if (u < 0) { S <<= -u; P1 <<= -u; P2 <<= -u; }
+        uint32_t R = rcp30(S);
+        q1 = (int32_t)((P1 * R) >> 14);      /* Q16; P*R <= 2^31 */
+        q2 = (int32_t)((P2 * R) >> 14);
+    }
+    for (int j = 0; j < p->na; j++)
+        out[j] = p->a0[j] + asr32(q1 * p->d1[j] + q2 * p->d2[j], 16 - p->sh[j]);
+}
+
+/* Corner values c0..c2 of attribute j; 0 when they do not fit the
+ * fast path's formats (the triangle then takes the exact path). */
+static int persp_attr(struct fpersp *p, int j, int32_t c0, int32_t c1, int32_t c2)
+{
+    const int32_t lim = (int32_t)1 << 30;
+    if (c0 <= -lim || c0 >= lim || c1 <= -lim || c1 >= lim || c2 <= -lim || c2 >= lim) return 0;
+    int32_t e1 = c1 - c0, e2 = c2 - c0;
+    uint32_t m1 = e1 < 0 ? (uint32_t)-e1 : (uint32_t)e1, m2 = e2 < 0 ? (uint32_t)-e2 : (uint32_t)e2;
+    uint32_t m = m1 > m2 ? m1 : m2;
+    int sh = 0;
+    while ((m >> sh) >= (1u << 14)) sh++;
+    if (sh > 16) return 0;
+    p->a0[j] = c0;
+    p->sh[j] = sh;
+    p->d1[j] = e1 >= 0 ? e1 >> sh : -(int32_t)(m1 >> sh);
+    p->d2[j] = e2 >= 0 ? e2 >> sh : -(int32_t)(m2 >> sh);
+    return 1;
+}
+
+/* round(2^16 / k) for the last segment of a span, k = 1..32 */
+static const uint32_t fast_inv_tab[33] = {
+    0, 65536, 32768, 21845, 16384, 13107, 10923, 9362, 8192, 7282, 6554, 5958, 5461, 5041, 4681, 4369, 4096,
+    3855, 3641, 3449, 3277, 3121, 2979, 2849, 2731, 2621, 2521, 2427, 2341, 2260, 2185, 2114, 2048,
+};
+
+/* A triangle's constants for its row spans. */
+struct ftri {
+    const struct ras_fast_tri *ft;
+    struct fpersp pp;
+    int32_t seg, slog;       /* segment length 2^slog */
+    int32_t a1, a2;          /* per-column steps of edge values w1, w2 */
+    int32_t sa1, sa2;        /* the same per segment */
+};
+
+/* One row's span. */
+struct frow {
+    uint16_t *px;
+    uint8_t *zb;
+    uint8_t *rgb888, *written;   /* host outputs at the first pixel, or NULL */
+    uint32_t z, dz;
+    int32_t n;                   /* pixels */
+    int32_t w1, w2;              /* edge values at the first pixel */
+};
+
+typedef uint32_t (*span_fn)(const struct ftri *T, const struct frow *R);
+
 
 #define SPAN_NAME span_flat_nz
 #define SPAN_DEPTH 0
@@ -191,13 +299,6 @@ static int64_t edge(int32_t ax, int32_t ay, int32_t bx, int32_t by, int64_t px, 
     return (int64_t)(bx - ax) * (py - ay) - (int64_t)(by - ay) * (px - ax);
 }
 
-/* x / 2^n rounded toward minus infinity, for any sign (no reliance on how
- * >> treats negative values). */
-static int32_t asr32(int32_t x, int n)
-{
-    return x >= 0 ? x >> n : -(int32_t)((uint32_t)(-(x + 1)) >> n) - 1;
-}
-
 /* One edge's bound on the columns of a row, k = column - c0:
  * kind 1: k >= q (lower), kind -1: k <= q (upper), kind 0: every column
  * while the row value n >= 0, none otherwise. q = floor(num / den) is
@@ -233,98 +334,6 @@ static void fedge_init(struct fedge *e, int32_t a, int32_t b, int32_t w, int32_t
     e->dq = (int32_t)ras_floordiv(step, e->den, &rem);
     e->dr = (int32_t)rem;
 }
-
-/* 2^30 / (s * 64) at the middle of each of the 256 intervals of s in
- * [256, 512): round(2^30 / ((256 + i + 0.5) * 64)). */
-static const uint16_t rcp_tab[256] = {
-    65408, 65154, 64902, 64652, 64404, 64158, 63913, 63671, 63430, 63191, 62954, 62719,
-    62485, 62253, 62023, 61795, 61568, 61343, 61119, 60897, 60677, 60458, 60241, 60026,
-    59812, 59599, 59388, 59179, 58971, 58764, 58559, 58356, 58153, 57952, 57753, 57555,
-    57358, 57163, 56968, 56776, 56584, 56394, 56205, 56017, 55831, 55646, 55462, 55279,
-    55098, 54917, 54738, 54560, 54383, 54207, 54033, 53859, 53687, 53516, 53346, 53177,
-    53009, 52842, 52676, 52511, 52347, 52184, 52022, 51862, 51702, 51543, 51385, 51228,
-    51072, 50917, 50763, 50610, 50458, 50306, 50156, 50007, 49858, 49710, 49563, 49417,
-    49272, 49128, 48985, 48842, 48700, 48559, 48419, 48280, 48141, 48003, 47867, 47730,
-    47595, 47460, 47326, 47193, 47061, 46929, 46798, 46668, 46539, 46410, 46282, 46155,
-    46028, 45902, 45777, 45652, 45528, 45405, 45283, 45161, 45040, 44919, 44799, 44680,
-    44561, 44443, 44326, 44209, 44093, 43977, 43862, 43748, 43634, 43521, 43408, 43296,
-    43185, 43074, 42963, 42854, 42744, 42636, 42528, 42420, 42313, 42207, 42101, 41996,
-    41891, 41786, 41683, 41579, 41476, 41374, 41272, 41171, 41070, 40970, 40870, 40771,
-    40672, 40574, 40476, 40378, 40281, 40185, 40089, 39993, 39898, 39804, 39709, 39616,
-    39522, 39429, 39337, 39245, 39153, 39062, 38971, 38881, 38791, 38702, 38613, 38524,
-    38436, 38348, 38260, 38173, 38087, 38000, 37915, 37829, 37744, 37659, 37575, 37491,
-    37407, 37324, 37241, 37159, 37077, 36995, 36914, 36833, 36752, 36672, 36592, 36512,
-    36433, 36354, 36275, 36197, 36119, 36041, 35964, 35887, 35810, 35734, 35658, 35583,
-    35507, 35432, 35358, 35283, 35209, 35136, 35062, 34989, 34916, 34844, 34771, 34700,
-    34628, 34557, 34486, 34415, 34344, 34274, 34204, 34135, 34065, 33996, 33928, 33859,
-    33791, 33723, 33655, 33588, 33521, 33454, 33387, 33321, 33255, 33189, 33124, 33059,
-    32994, 32929, 32864, 32800
-};
-
-/* floor-ish 2^30 / s for s in [2^14, 2^15), within 2 of the quotient: the
- * table's 9-bit estimate and one Newton step, all in 32 bits. */
-static uint32_t rcp30(uint32_t s)
-{
-    int32_t r0 = rcp_tab[(s >> 6) - 256];
-    int32_t e = (int32_t)((1u << 30) - s * (uint32_t)r0);   /* |e| <= 2^22 */
-    return (uint32_t)(r0 + asr32(r0 * asr32(e, 7), 23));
-}
-
-/* Perspective-correct attributes at a pixel from its edge values. */
-struct fpersp {
-    int t;                   /* edge values >> t < 2^15 */
-    uint32_t area_t;         /* area >> t */
-    uint32_t dn[3];          /* near/z of the corners >> s, < 2^16 */
-    int na;                  /* attributes: 1 (intensity), 2 (u, v) or 3 (u, v, intensity) */
-    int32_t a0[3];           /* corner 0's value in the span format, |a0| < 2^30 */
-    int32_t d1[3], d2[3];    /* (corner 1 - corner 0), (corner 2 - corner 0) >> sh: < 2^14 */
-    int sh[3];               /* <= 16 */
-};
-
-static void persp_at(const struct fpersp *p, int32_t w1, int32_t w2, int32_t *out)
-{
-    uint32_t b1 = (uint32_t)w1 >> p->t, b2 = (uint32_t)w2 >> p->t;
-    uint32_t b0 = p->area_t - b1 - b2;       /* >= (w0 >> t) >= 0 */
-    uint32_t P1 = b1 * p->dn[1], P2 = b2 * p->dn[2];
-    uint32_t S = b0 * p->dn[0] + P1 + P2;    /* <= area_t * 2^16 < 2^31 */
-    int32_t q1 = 0, q2 = 0;
-    if (S) {
-        /* S into [2^14, 2^15), the weights with it (P <= S) */
-        int u = 17 - num_clz32(S);
-        if (u > 0) { S >>= u; P1 >>= u; P2 >>= u; }
-        else if (u < 0) { S <<= -u; P1 <<= -u; P2 <<= -u; }
-        uint32_t R = rcp30(S);
-        q1 = (int32_t)((P1 * R) >> 14);      /* Q16; P*R <= 2^31 */
-        q2 = (int32_t)((P2 * R) >> 14);
-    }
-    for (int j = 0; j < p->na; j++)
-        out[j] = p->a0[j] + asr32(q1 * p->d1[j] + q2 * p->d2[j], 16 - p->sh[j]);
-}
-
-/* Corner values c0..c2 of attribute j; 0 when they do not fit the
- * fast path's formats (the triangle then takes the exact path). */
-static int persp_attr(struct fpersp *p, int j, int32_t c0, int32_t c1, int32_t c2)
-{
-    const int32_t lim = (int32_t)1 << 30;
-    if (c0 <= -lim || c0 >= lim || c1 <= -lim || c1 >= lim || c2 <= -lim || c2 >= lim) return 0;
-    int32_t e1 = c1 - c0, e2 = c2 - c0;
-    uint32_t m1 = e1 < 0 ? (uint32_t)-e1 : (uint32_t)e1, m2 = e2 < 0 ? (uint32_t)-e2 : (uint32_t)e2;
-    uint32_t m = m1 > m2 ? m1 : m2;
-    int sh = 0;
-    while ((m >> sh) >= (1u << 14)) sh++;
-    if (sh > 16) return 0;
-    p->a0[j] = c0;
-    p->sh[j] = sh;
-    p->d1[j] = e1 >= 0 ? e1 >> sh : -(int32_t)(m1 >> sh);
-    p->d2[j] = e2 >= 0 ? e2 >> sh : -(int32_t)(m2 >> sh);
-    return 1;
-}
-
-/* round(2^16 / k) for the last segment of a span, k = 1..32 */
-static const uint32_t inv_tab[33] = {
-    0, 65536, 32768, 21845, 16384, 13107, 10923, 9362, 8192, 7282, 6554, 5958, 5461, 5041, 4681, 4369, 4096,
-    3855, 3641, 3449, 3277, 3121, 2979, 2849, 2731, 2621, 2521, 2427, 2341, 2260, 2185, 2114, 2048,
-};
 
 int32_t ras_fast_fill(struct ras_ctx *rc, const struct ras_sv *v0, const struct ras_sv *v1, const struct ras_sv *v2,
                       const struct ras_fast_tri *ft)
@@ -388,28 +397,37 @@ int32_t ras_fast_fill(struct ras_ctx *rc, const struct ras_sv *v0, const struct 
     }
 
     /* attributes */
-    struct fpersp pp;
-    int na = 0, slog = rc->persp_log2;
+    struct ftri T;
+    struct fpersp *pp = &T.pp;
+    int na = 0;
+    T.ft = ft;
+    T.slog = rc->persp_log2;
+    T.seg = (int32_t)1 << T.slog;
+    T.a1 = a[1];
+    T.a2 = a[2];
+    T.sa1 = a[1] * T.seg;
+    T.sa2 = a[2] * T.seg;
+    pp->na = 0;
     if (ft->kind != FT_FLAT) {
         int tt = 0;
         while ((area >> tt) >= (1 << 15)) tt++;
-        pp.t = tt;
-        pp.area_t = (uint32_t)(area >> tt);
+        pp->t = tt;
+        pp->area_t = (uint32_t)(area >> tt);
         uint32_t dmax = v0->depth;
         if (v1->depth > dmax) dmax = v1->depth;
         if (v2->depth > dmax) dmax = v2->depth;
         int s = 0;
         while ((dmax >> s) >= (1u << 16)) s++;
-        pp.dn[0] = v0->depth >> s;
-        pp.dn[1] = v1->depth >> s;
-        pp.dn[2] = v2->depth >> s;
+        pp->dn[0] = v0->depth >> s;
+        pp->dn[1] = v1->depth >> s;
+        pp->dn[2] = v2->depth >> s;
         if (ft->kind == FT_TEX || ft->kind == FT_TEX_GOURAUD) {
             int32_t u[3], v[3];
             for (int i = 0; i < 3; i++) {
                 u[i] = ras_num_to_fix(vv[i]->a[ft->ai_uv], ft->uscale);
                 v[i] = ras_num_to_fix(vv[i]->a[ft->ai_uv + 1], ft->vscale);
             }
-            if (!persp_attr(&pp, na++, u[0], u[1], u[2]) || !persp_attr(&pp, na++, v[0], v[1], v[2])) return -1;
+            if (!persp_attr(pp, na++, u[0], u[1], u[2]) || !persp_attr(pp, na++, v[0], v[1], v[2])) return -1;
         }
         if (ft->kind == FT_GOURAUD || ft->kind == FT_TEX_GOURAUD) {
             int32_t li[3];
@@ -417,21 +435,18 @@ int32_t ras_fast_fill(struct ras_ctx *rc, const struct ras_sv *v0, const struct 
                 int32_t x = ras_num_to_fix(vv[i]->a[ft->ai_i], 1 << 20);
                 li[i] = x < 0 ? 0 : (x > (8 << 20) - 1 ? (8 << 20) - 1 : x);
             }
-            if (!persp_attr(&pp, na++, li[0], li[1], li[2])) return -1;
+            if (!persp_attr(pp, na++, li[0], li[1], li[2])) return -1;
         }
-        pp.na = na;
+        pp->na = na;
     }
-    int ai = ft->kind == FT_GOURAUD ? 0 : 2;   /* index of the intensity in the attribute list */
-    int32_t seg = (int32_t)1 << slog, sa1 = a[1] * seg, sa2 = a[2] * seg;
 
     int extra = t->rgb888 != NULL || t->written != NULL;
     span_fn fn = span_table[extra][ft->kind][rc->depth_bytes == 0 ? 0 : (rc->depth_bytes == 2 ? 1 : 2)];
-    struct fspan sp;
-    sp.ft = ft;
-    sp.z = 0;
-    sp.dz = dz;
-    sp.u = sp.du = sp.v = sp.dv = sp.i = sp.di = 0;
-    sp.rgb888 = sp.written = NULL;
+    struct frow R;
+    R.z = 0;
+    R.dz = dz;
+    R.rgb888 = R.written = NULL;
+    R.w1 = R.w2 = 0;
     uint32_t total = 0;
     int32_t kmax = c1 - c0;
 
@@ -444,66 +459,33 @@ int32_t ras_fast_fill(struct ras_ctx *rc, const struct ras_sv *v0, const struct 
             else if (fe[i].n < 0) empty = 1;
         }
         if (!empty && lo <= hi) {
-            int32_t L = c0 + lo, n = hi - lo + 1;
+            int32_t L = c0 + lo;
             size_t idx = (size_t)(r - t->y0) * rc->w + (size_t)L;
-            sp.px = t->rgb565 + idx;
-            sp.zb = rc->depth + idx * rc->depth_bytes;
+            R.n = hi - lo + 1;
+            R.px = t->rgb565 + idx;
+            R.zb = rc->depth + idx * rc->depth_bytes;
             if (extra) {
-                sp.rgb888 = t->rgb888 ? t->rgb888 + 3 * idx : NULL;
-                sp.written = t->written ? t->written + idx : NULL;
+                R.rgb888 = t->rgb888 ? t->rgb888 + 3 * idx : NULL;
+                R.written = t->written ? t->written + idx : NULL;
             }
             if (depth) {
                 int64_t zs = (zrow + (int64_t)lo * gx16) >> 16;
-                int64_t ze = zs + (int64_t)(n - 1) * (int32_t)dz;
+                int64_t ze = zs + (int64_t)(R.n - 1) * (int32_t)dz;
                 if (zs < 1 || zs > (int64_t)UINT32_MAX - 1 || ze < 1 || ze > (int64_t)UINT32_MAX - 1) {
                     /* at the near plane or infinity: this row's depth held flat */
-                    sp.z = zs < 0 ? 0 : (zs > (int64_t)UINT32_MAX ? UINT32_MAX : (uint32_t)zs);
-                    sp.dz = 0;
+                    R.z = zs < 0 ? 0 : (zs > (int64_t)UINT32_MAX ? UINT32_MAX : (uint32_t)zs);
+                    R.dz = 0;
                 } else {
-                    sp.z = (uint32_t)zs;
-                    sp.dz = dz;
+                    R.z = (uint32_t)zs;
+                    R.dz = dz;
                 }
             }
-            if (ft->kind == FT_FLAT) {
-                total += fn(&sp, n);
-            } else {
-                int32_t w1 = wr[1] + lo * a[1], w2 = wr[2] + lo * a[2];
-                int32_t cur[3], nxt[3];
-                persp_at(&pp, w1, w2, cur);
-                while (n > 0) {
-                    int32_t m, dv[3];
-                    if (n > seg) {         /* a whole segment, to the next one's first pixel */
-                        m = seg;
-                        w1 += sa1;
-                        w2 += sa2;
-                        persp_at(&pp, w1, w2, nxt);
-                        for (int j = 0; j < na; j++) dv[j] = asr32(nxt[j] - cur[j], slog);
-                    } else {               /* the rest, to the span's last pixel */
-                        m = n;
-                        int32_t k = n - 1;
-                        if (k > 0) {
-                            w1 += k * a[1];
-                            w2 += k * a[2];
-                            persp_at(&pp, w1, w2, nxt);
-                            for (int j = 0; j < na; j++)
-                                dv[j] = (int32_t)(num_smul32(nxt[j] - cur[j], (int32_t)inv_tab[k]) >> 16);
-                        } else {
-                            for (int j = 0; j < na; j++) dv[j] = 0;
-                        }
-                    }
-                    if (ft->kind != FT_GOURAUD) { sp.u = cur[0]; sp.du = dv[0]; sp.v = cur[1]; sp.dv = dv[1]; }
-                    if (ft->kind == FT_GOURAUD || ft->kind == FT_TEX_GOURAUD) { sp.i = cur[ai]; sp.di = dv[ai]; }
-                    total += fn(&sp, m);
-                    n -= m;
-                    if (n == 0) break;
-                    sp.px += m;
-                    sp.zb += (size_t)m * rc->depth_bytes;
-                    sp.z += (uint32_t)m * sp.dz;
-                    if (sp.rgb888) sp.rgb888 += 3 * m;
-                    if (sp.written) sp.written += m;
-                    for (int j = 0; j < na; j++) cur[j] = nxt[j];
-                }
+            if (ft->kind != FT_FLAT) {
+                R.w1 = wr[1] + lo * a[1];
+                R.w2 = wr[2] + lo * a[2];
             }
+            uint32_t wrote = fn(&T, &R);
+            total += extra ? wrote : (uint32_t)R.n;
         }
         zrow += gy16;
         for (int i = 0; i < 3; i++) {

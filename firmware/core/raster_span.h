@@ -3,101 +3,155 @@
  *   SPAN_NAME   function name
  *   SPAN_DEPTH  0 (no depth test), 2 (16-bit entries), 4 (32-bit entries)
  *   SPAN_KIND   FT_FLAT, FT_GOURAUD, FT_TEX, FT_TEX_GOURAUD
- *   SPAN_EXTRA  1: also the host's outputs (rgb888, written map)
+ *   SPAN_EXTRA  1: also the host's outputs (rgb888, written map) and the
+ *               count of pixels written
  * Each combination is compiled on its own so the inner loop holds only what
  * it needs; every variant computes the same RGB565 bits for the same inputs.
- * Draws n pixels of s from s->px on, stepping depth and attributes per
- * pixel; returns the pixels that passed the depth test. */
+ * Draws the row span R of triangle T: attributes perspective-correct at the
+ * span's first pixel, every T->seg pixels and at its last pixel, linear in
+ * between. Returns the pixels written when SPAN_EXTRA, else 0. */
 
-RAS_HOT static uint32_t SPAN_NAME(const struct fspan *s, int n)
+RAS_HOT static uint32_t SPAN_NAME(const struct ftri *T, const struct frow *R)
 {
-    uint16_t *px = s->px;
+    uint16_t *px = R->px;
+    int32_t n = R->n;
     uint32_t written = 0;
+#if SPAN_EXTRA
+    uint8_t *o888 = R->rgb888, *owr = R->written;
+#endif
 #if SPAN_DEPTH
-    uint32_t z = s->z;
-    const uint32_t dz = s->dz;
+    uint32_t z = R->z;
+    const uint32_t dz = R->dz;
 #endif
 #if SPAN_DEPTH == 2
-    uint16_t *zb = (uint16_t *)(void *)s->zb;
+    uint16_t *zp = (uint16_t *)(void *)R->zb;
 #elif SPAN_DEPTH == 4
-    uint32_t *zb = (uint32_t *)(void *)s->zb;
-#endif
-#if SPAN_KIND == FT_FLAT
-    const uint16_t col = s->ft->c565;
-#endif
-#if SPAN_KIND == FT_TEX || SPAN_KIND == FT_TEX_GOURAUD
-    uint32_t u = (uint32_t)s->u, v = (uint32_t)s->v;
-    const uint32_t du = (uint32_t)s->du, dv = (uint32_t)s->dv;
-    const uint16_t *tex = s->ft->tex;
-    const uint32_t wm = s->ft->wmask, hm = s->ft->hmask, tl = s->ft->wlog2;
-#endif
-#if SPAN_KIND == FT_GOURAUD || SPAN_KIND == FT_TEX_GOURAUD
-    uint32_t li = (uint32_t)s->i;
-    const uint32_t dli = (uint32_t)s->di;
+    uint32_t *zp = (uint32_t *)(void *)R->zb;
 #endif
 #if SPAN_KIND == FT_GOURAUD
-    const uint32_t kr = s->ft->kr, kg = s->ft->kg, kb = s->ft->kb;
-#endif
-    for (int k = 0; k < n; k++) {
-#if SPAN_DEPTH == 2
-        uint32_t zz = z >> 16;
-        if (zz > zb[k]) {
-            zb[k] = (uint16_t)zz;
-#elif SPAN_DEPTH == 4
-        if (z > zb[k]) {
-            zb[k] = z;
+#define SPAN_NA 1
+#elif SPAN_KIND == FT_TEX
+#define SPAN_NA 2
 #else
-        {
+#define SPAN_NA 3
 #endif
 #if SPAN_KIND == FT_FLAT
-            uint16_t c = col;
-#elif SPAN_KIND == FT_GOURAUD
-            uint32_t ii = li >> 8;                      /* Q12 */
-            uint32_t r = (kr * ii + (1u << 21)) >> 22, g = (kg * ii + (1u << 21)) >> 22,
-                     b = (kb * ii + (1u << 21)) >> 22;
-            if (r > 31) r = 31;
-            if (g > 63) g = 63;
-            if (b > 31) b = 31;
-            uint16_t c = (uint16_t)(r << 11 | g << 5 | b);
+    const uint16_t col = T->ft->c565;
 #else
-            uint16_t c = tex[((v >> 16) & hm) << tl | ((u >> 16) & wm)];
-#if SPAN_KIND == FT_TEX_GOURAUD
+    int32_t w1 = R->w1, w2 = R->w2, cur[3], nxt[3];
+    persp_at(&T->pp, w1, w2, cur);
+    const int32_t seg = T->seg;
+#endif
+#if SPAN_KIND == FT_TEX || SPAN_KIND == FT_TEX_GOURAUD
+    const uint16_t *tex = T->ft->tex;
+    const uint32_t wm = T->ft->wmask, hm = T->ft->hmask, tl = T->ft->wlog2;
+#endif
+#if SPAN_KIND == FT_GOURAUD
+    const uint32_t kr = T->ft->kr, kg = T->ft->kg, kb = T->ft->kb;
+#endif
+    while (n > 0) {
+        int32_t m = n;
+#if SPAN_KIND != FT_FLAT
+        int32_t d[3] = { 0, 0, 0 };
+        if (n > seg) {          /* a whole segment, to the next one's first pixel */
+            m = seg;
+            w1 += T->sa1;
+            w2 += T->sa2;
+            persp_at(&T->pp, w1, w2, nxt);
+            for (int j = 0; j < SPAN_NA; j++) d[j] = asr32(nxt[j] - cur[j], T->slog);
+        } else if (n > 1) {     /* the rest, to the span's last pixel */
+            int32_t k = n - 1;
+            w1 += k * T->a1;
+            w2 += k * T->a2;
+            persp_at(&T->pp, w1, w2, nxt);
+            for (int j = 0; j < SPAN_NA; j++)
+                d[j] = (int32_t)(num_smul32(nxt[j] - cur[j], (int32_t)fast_inv_tab[k]) >> 16);
+        } else {
+            for (int j = 0; j < SPAN_NA; j++) nxt[j] = cur[j];
+        }
+#endif
+#if SPAN_KIND == FT_TEX || SPAN_KIND == FT_TEX_GOURAUD
+        uint32_t u = (uint32_t)cur[0], v = (uint32_t)cur[1];
+        const uint32_t du = (uint32_t)d[0], dv = (uint32_t)d[1];
+#endif
+#if SPAN_KIND == FT_GOURAUD
+        uint32_t li = (uint32_t)cur[0];
+        const uint32_t dli = (uint32_t)d[0];
+#elif SPAN_KIND == FT_TEX_GOURAUD
+        uint32_t li = (uint32_t)cur[2];
+        const uint32_t dli = (uint32_t)d[2];
+#endif
+        uint16_t *pe = px + m;
+        for (; px != pe; px++) {
+#if SPAN_DEPTH == 2
+            uint32_t zz = z >> 16;
+            if (zz > *zp) {
+                *zp = (uint16_t)zz;
+#elif SPAN_DEPTH == 4
+            if (z > *zp) {
+                *zp = z;
+#else
             {
-                uint32_t ii = li >> 8;                  /* Q12 */
-                uint32_t r = ((uint32_t)(c >> 11) * ii + (1u << 11)) >> 12,
-                         g = ((uint32_t)((c >> 5) & 63) * ii + (1u << 11)) >> 12,
-                         b = ((uint32_t)(c & 31) * ii + (1u << 11)) >> 12;
+#endif
+#if SPAN_KIND == FT_FLAT
+                uint16_t c = col;
+#elif SPAN_KIND == FT_GOURAUD
+                uint32_t ii = li >> 8;                      /* Q12 */
+                uint32_t r = (kr * ii + (1u << 21)) >> 22, g = (kg * ii + (1u << 21)) >> 22,
+                         b = (kb * ii + (1u << 21)) >> 22;
                 if (r > 31) r = 31;
                 if (g > 63) g = 63;
                 if (b > 31) b = 31;
-                c = (uint16_t)(r << 11 | g << 5 | b);
-            }
-#endif
-#endif
-            px[k] = c;
-            written++;
-#if SPAN_EXTRA
-            if (s->rgb888) {
-#if SPAN_KIND == FT_FLAT
-                s->rgb888[3 * k] = s->ft->c888[0];
-                s->rgb888[3 * k + 1] = s->ft->c888[1];
-                s->rgb888[3 * k + 2] = s->ft->c888[2];
+                uint16_t c = (uint16_t)(r << 11 | g << 5 | b);
 #else
-                ras_565_to_888(c, s->rgb888 + 3 * k);
+                uint16_t c = tex[((v >> 16) & hm) << tl | ((u >> 16) & wm)];
+#if SPAN_KIND == FT_TEX_GOURAUD
+                {
+                    uint32_t ii = li >> 8;                  /* Q12 */
+                    uint32_t r = ((uint32_t)(c >> 11) * ii + (1u << 11)) >> 12,
+                             g = ((uint32_t)((c >> 5) & 63) * ii + (1u << 11)) >> 12,
+                             b = ((uint32_t)(c & 31) * ii + (1u << 11)) >> 12;
+                    if (r > 31) r = 31;
+                    if (g > 63) g = 63;
+                    if (b > 31) b = 31;
+                    c = (uint16_t)(r << 11 | g << 5 | b);
+                }
+#endif
+#endif
+                *px = c;
+#if SPAN_EXTRA
+                written++;
+                if (o888) {
+#if SPAN_KIND == FT_FLAT
+                    o888[0] = T->ft->c888[0];
+                    o888[1] = T->ft->c888[1];
+                    o888[2] = T->ft->c888[2];
+#else
+                    ras_565_to_888(c, o888);
+#endif
+                }
+                if (owr) *owr = 1;
 #endif
             }
-            if (s->written) s->written[k] = 1;
+#if SPAN_EXTRA
+            if (o888) o888 += 3;
+            if (owr) owr++;
 #endif
-        }
 #if SPAN_DEPTH
-        z += dz;
+            zp++;
+            z += dz;
 #endif
 #if SPAN_KIND == FT_TEX || SPAN_KIND == FT_TEX_GOURAUD
-        u += du;
-        v += dv;
+            u += du;
+            v += dv;
 #endif
 #if SPAN_KIND == FT_GOURAUD || SPAN_KIND == FT_TEX_GOURAUD
-        li += dli;
+            li += dli;
+#endif
+        }
+        n -= m;
+#if SPAN_KIND != FT_FLAT
+        for (int j = 0; j < SPAN_NA; j++) cur[j] = nxt[j];
 #endif
     }
     return written;
@@ -107,3 +161,4 @@ RAS_HOT static uint32_t SPAN_NAME(const struct fspan *s, int n)
 #undef SPAN_DEPTH
 #undef SPAN_KIND
 #undef SPAN_EXTRA
+#undef SPAN_NA

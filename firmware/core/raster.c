@@ -36,11 +36,12 @@ static int log2_exact(uint32_t v)
 }
 
 /* Bytes of the RGB565 copy of texture t the fast path samples: nearest
- * filtering and power-of-two sides up to 2^15; 0 when it does not qualify. */
+ * filtering, power-of-two sides, at most 2^15 texels (a byte offset of 16
+ * bits); 0 when it does not qualify. */
 static size_t tex565_size(const struct scene *s, const struct ras_texture *t)
 {
     if (!fast_path(s) || t->filter != TEX_NEAREST || !t->rgb) return 0;
-    if (log2_exact(t->w) < 0 || log2_exact(t->h) < 0) return 0;
+    if (log2_exact(t->w) < 0 || log2_exact(t->h) < 0 || log2_exact(t->w) + log2_exact(t->h) > 15) return 0;
     return (size_t)t->w * t->h * 2;
 }
 

@@ -43,8 +43,10 @@ RAS_HOT static uint32_t SPAN_NAME(const struct ftri *T, const struct frow *R)
     const int32_t seg = T->seg;
 #endif
 #if SPAN_KIND == FT_TEX || SPAN_KIND == FT_TEX_GOURAUD
-    const uint16_t *tex = T->ft->tex;
-    const uint32_t wm = T->ft->wmask, hm = T->ft->hmask, tl = T->ft->wlog2;
+    /* byte offsets of texels straight from the coordinates: u doubled, v
+     * times twice the width, each masked to its integer bits */
+    const uint8_t *tex = (const uint8_t *)T->ft->tex;
+    const uint32_t um = T->ft->wmask << 1, vm = T->ft->hmask << (T->ft->wlog2 + 1), vs = T->ft->wlog2 + 1;
 #endif
 #if SPAN_KIND == FT_GOURAUD
     const uint32_t kr = T->ft->kr, kg = T->ft->kg, kb = T->ft->kb;
@@ -71,8 +73,8 @@ RAS_HOT static uint32_t SPAN_NAME(const struct ftri *T, const struct frow *R)
         }
 #endif
 #if SPAN_KIND == FT_TEX || SPAN_KIND == FT_TEX_GOURAUD
-        uint32_t u = (uint32_t)cur[0], v = (uint32_t)cur[1];
-        const uint32_t du = (uint32_t)d[0], dv = (uint32_t)d[1];
+        uint32_t u = (uint32_t)cur[0] << 1, v = (uint32_t)cur[1] << vs;
+        const uint32_t du = (uint32_t)d[0] << 1, dv = (uint32_t)d[1] << vs;
 #endif
 #if SPAN_KIND == FT_GOURAUD
         uint32_t li = (uint32_t)cur[0];
@@ -104,7 +106,7 @@ RAS_HOT static uint32_t SPAN_NAME(const struct ftri *T, const struct frow *R)
                 if (b > 31) b = 31;
                 uint16_t c = (uint16_t)(r << 11 | g << 5 | b);
 #else
-                uint16_t c = tex[((v >> 16) & hm) << tl | ((u >> 16) & wm)];
+                uint16_t c = *(const uint16_t *)(const void *)(tex + (((v >> 16) & vm) | ((u >> 16) & um)));
 #if SPAN_KIND == FT_TEX_GOURAUD
                 {
                     uint32_t ii = li >> 8;                  /* Q12 */

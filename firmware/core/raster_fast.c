@@ -37,12 +37,11 @@ static void ras_565_to_888(uint16_t c, uint8_t *o)
     o[2] = (uint8_t)(b << 3 | b >> 2);
 }
 
-/* x / 2^n rounded toward minus infinity, for any sign (no reliance on how
- * >> treats negative values). */
-static int32_t asr32(int32_t x, int n)
-{
-    return x >= 0 ? x >> n : -(int32_t)((uint32_t)(-(x + 1)) >> n) - 1;
-}
+/* x / 2^n rounded toward minus infinity: >> on a negative int32_t, which
+ * GCC and Clang define as the arithmetic shift on every target (the fixed-
+ * point layer relies on the same); checked once below. */
+static inline int32_t asr32(int32_t x, int n) { return x >> n; }
+typedef char ras_asr_is_arithmetic[(-5 >> 1) == -3 ? 1 : -1];
 
 /* 2^30 / (s * 64) at the middle of each of the 256 intervals of s in
  * [256, 512): round(2^30 / ((256 + i + 0.5) * 64)). */
@@ -89,25 +88,29 @@ struct fpersp {
     int32_t a0[3];           /* corner 0's value in the span format, |a0| < 2^30 */
     int32_t d1[3], d2[3];    /* (corner 1 - corner 0), (corner 2 - corner 0) >> sh: < 2^14 */
     int sh[3];               /* <= 16 */
+    int u;                   /* S >> u < 2^15 for every S of the triangle */
 };
 
-static void persp_at(const struct fpersp *p, int32_t w1, int32_t w2, int32_t *out)
+static inline void persp_at(const struct fpersp *p, int na, int32_t w1, int32_t w2, int32_t *out)
 {
     uint32_t b1 = (uint32_t)w1 >> p->t, b2 = (uint32_t)w2 >> p->t;
     uint32_t b0 = p->area_t - b1 - b2;       /* >= (w0 >> t) >= 0 */
     uint32_t P1 = b1 * p->dn[1], P2 = b2 * p->dn[2];
     uint32_t S = b0 * p->dn[0] + P1 + P2;    /* <= area_t * 2^16 < 2^31 */
     int32_t q1 = 0, q2 = 0;
+    /* S into [2^14, 2^15), the weights with it (P <= S): the triangle's
+     * shift brings its largest S below 2^15, the rest is at most a few
+     * doublings */
+    S >>= p->u;
     if (S) {
-        /* S into [2^14, 2^15), the weights with it (P <= S) */
-        int u = 17 - num_clz32(S);
-        if (u > 0) { S >>= u; P1 >>= u; P2 >>= u; }
-        else if (u < 0) { S <<= -u; P1 <<= -u; P2 <<= -u; }
+        P1 >>= p->u;
+        P2 >>= p->u;
+        while (S < (1u << 14)) { S <<= 1; P1 <<= 1; P2 <<= 1; }
         uint32_t R = rcp30(S);
         q1 = (int32_t)((P1 * R) >> 14);      /* Q16; P*R <= 2^31 */
         q2 = (int32_t)((P2 * R) >> 14);
     }
-    for (int j = 0; j < p->na; j++)
+    for (int j = 0; j < na; j++)
         out[j] = p->a0[j] + asr32(q1 * p->d1[j] + q2 * p->d2[j], 16 - p->sh[j]);
 }
 
@@ -421,6 +424,11 @@ int32_t ras_fast_fill(struct ras_ctx *rc, const struct ras_sv *v0, const struct 
         pp->dn[0] = v0->depth >> s;
         pp->dn[1] = v1->depth >> s;
         pp->dn[2] = v2->depth >> s;
+        uint32_t dnmax = pp->dn[0] > pp->dn[1] ? pp->dn[0] : pp->dn[1];
+        if (pp->dn[2] > dnmax) dnmax = pp->dn[2];
+        uint32_t smax = pp->area_t * dnmax;  /* < 2^31 */
+        pp->u = 0;
+        while ((smax >> pp->u) >= (1u << 15)) pp->u++;
         if (ft->kind == FT_TEX || ft->kind == FT_TEX_GOURAUD) {
             int32_t u[3], v[3];
             for (int i = 0; i < 3; i++) {

@@ -39,7 +39,7 @@ RAS_HOT static uint32_t SPAN_NAME(const struct ftri *T, const struct frow *R)
     const uint16_t col = T->ft->c565;
 #else
     int32_t w1 = R->w1, w2 = R->w2, cur[3], nxt[3];
-    persp_at(&T->pp, w1, w2, cur);
+    persp_at(&T->pp, SPAN_NA, w1, w2, cur);
     const int32_t seg = T->seg;
 #endif
 #if SPAN_KIND == FT_TEX || SPAN_KIND == FT_TEX_GOURAUD
@@ -59,13 +59,13 @@ RAS_HOT static uint32_t SPAN_NAME(const struct ftri *T, const struct frow *R)
             m = seg;
             w1 += T->sa1;
             w2 += T->sa2;
-            persp_at(&T->pp, w1, w2, nxt);
+            persp_at(&T->pp, SPAN_NA, w1, w2, nxt);
             for (int j = 0; j < SPAN_NA; j++) d[j] = asr32(nxt[j] - cur[j], T->slog);
         } else if (n > 1) {     /* the rest, to the span's last pixel */
             int32_t k = n - 1;
             w1 += k * T->a1;
             w2 += k * T->a2;
-            persp_at(&T->pp, w1, w2, nxt);
+            persp_at(&T->pp, SPAN_NA, w1, w2, nxt);
             for (int j = 0; j < SPAN_NA; j++)
                 d[j] = (int32_t)(num_smul32(nxt[j] - cur[j], (int32_t)fast_inv_tab[k]) >> 16);
         } else {

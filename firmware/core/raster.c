@@ -610,6 +610,9 @@ static int fast_setup(const struct ras_ctx *rc, const struct def_tri *dt, struct
         ft->kg = g <= 0 ? 0 : (uint32_t)(g + 255) / 510;
         ft->kb = b <= 0 ? 0 : (uint32_t)(b + 255) / 510;
         if (ft->kr > 31u * 1024 || ft->kg > 63u * 1024 || ft->kb > 31u * 1024) return 0;
+        /* the same levels in Q3 (rounded from Q10), red and blue packed */
+        ft->krb = ((ft->kr + 64) >> 7) << 16 | ((ft->kb + 64) >> 7);
+        ft->kg8 = (ft->kg + 64) >> 7;
         return 1;
     }
     ft->kind = RAS_FT_FLAT;

@@ -28,6 +28,7 @@
 #define FT_GOURAUD RAS_FT_GOURAUD
 #define FT_TEX RAS_FT_TEX
 #define FT_TEX_GOURAUD RAS_FT_TEX_GOURAUD
+#define FT_GOURAUD_SAT RAS_FT_GOURAUD_SAT
 
 static void ras_565_to_888(uint16_t c, uint8_t *o)
 {
@@ -283,16 +284,49 @@ typedef uint32_t (*span_fn)(const struct ftri *T, const struct frow *R);
 #define SPAN_EXTRA 1
 #include "raster_span.h"
 
+#define SPAN_NAME span_gsat_nz
+#define SPAN_DEPTH 0
+#define SPAN_KIND FT_GOURAUD_SAT
+#define SPAN_EXTRA 0
+#include "raster_span.h"
+#define SPAN_NAME span_gsat_z16
+#define SPAN_DEPTH 2
+#define SPAN_KIND FT_GOURAUD_SAT
+#define SPAN_EXTRA 0
+#include "raster_span.h"
+#define SPAN_NAME span_gsat_z32
+#define SPAN_DEPTH 4
+#define SPAN_KIND FT_GOURAUD_SAT
+#define SPAN_EXTRA 0
+#include "raster_span.h"
+#define SPAN_NAME span_gsat_nz_x
+#define SPAN_DEPTH 0
+#define SPAN_KIND FT_GOURAUD_SAT
+#define SPAN_EXTRA 1
+#include "raster_span.h"
+#define SPAN_NAME span_gsat_z16_x
+#define SPAN_DEPTH 2
+#define SPAN_KIND FT_GOURAUD_SAT
+#define SPAN_EXTRA 1
+#include "raster_span.h"
+#define SPAN_NAME span_gsat_z32_x
+#define SPAN_DEPTH 4
+#define SPAN_KIND FT_GOURAUD_SAT
+#define SPAN_EXTRA 1
+#include "raster_span.h"
+
 /* [extra][kind][depth 0/2/4 -> 0/1/2] */
-static const span_fn span_table[2][4][3] = {
+static const span_fn span_table[2][5][3] = {
     { { span_flat_nz, span_flat_z16, span_flat_z32 },
       { span_gour_nz, span_gour_z16, span_gour_z32 },
       { span_tex_nz, span_tex_z16, span_tex_z32 },
-      { span_texg_nz, span_texg_z16, span_texg_z32 } },
+      { span_texg_nz, span_texg_z16, span_texg_z32 },
+      { span_gsat_nz, span_gsat_z16, span_gsat_z32 } },
     { { span_flat_nz_x, span_flat_z16_x, span_flat_z32_x },
       { span_gour_nz_x, span_gour_z16_x, span_gour_z32_x },
       { span_tex_nz_x, span_tex_z16_x, span_tex_z32_x },
-      { span_texg_nz_x, span_texg_z16_x, span_texg_z32_x } },
+      { span_texg_nz_x, span_texg_z16_x, span_texg_z32_x },
+      { span_gsat_nz_x, span_gsat_z16_x, span_gsat_z32_x } },
 };
 
 /* ---- set-up -------------------------------------------------------------- */
@@ -400,6 +434,7 @@ int32_t ras_fast_fill(struct ras_ctx *rc, const struct ras_sv *v0, const struct 
     }
 
     /* attributes */
+    int kind = ft->kind;
     struct ftri T;
     struct fpersp *pp = &T.pp;
     int na = 0;
@@ -437,19 +472,29 @@ int32_t ras_fast_fill(struct ras_ctx *rc, const struct ras_sv *v0, const struct 
             }
             if (!persp_attr(pp, na++, u[0], u[1], u[2]) || !persp_attr(pp, na++, v[0], v[1], v[2])) return -1;
         }
-        if (ft->kind == FT_GOURAUD || ft->kind == FT_TEX_GOURAUD) {
-            int32_t li[3];
+        if (ft->kind != FT_TEX) {
+            int32_t li[3], imax = 0;
             for (int i = 0; i < 3; i++) {
                 int32_t x = ras_num_to_fix(vv[i]->a[ft->ai_i], 1 << 20);
                 li[i] = x < 0 ? 0 : (x > (8 << 20) - 1 ? (8 << 20) - 1 : x);
+                if (li[i] > imax) imax = li[i];
             }
             if (!persp_attr(pp, na++, li[0], li[1], li[2])) return -1;
+            if (ft->kind == FT_GOURAUD) {
+                /* the one-multiply form when no channel can reach its
+                 * top level + 1/2 (Q8 intensity, two steps of margin) */
+                uint32_t i8 = (uint32_t)(imax >> 12) + 2;
+                uint32_t kr8 = ft->krb >> 16, kb8 = ft->krb & 0xFFFFu;
+                if (kr8 * i8 + 1024u >= 32u * 2048u || kb8 * i8 + 1024u >= 32u * 2048u ||
+                    ft->kg8 * i8 + 1024u >= 64u * 2048u)
+                    kind = FT_GOURAUD_SAT;
+            }
         }
         pp->na = na;
     }
 
     int extra = t->rgb888 != NULL || t->written != NULL;
-    span_fn fn = span_table[extra][ft->kind][rc->depth_bytes == 0 ? 0 : (rc->depth_bytes == 2 ? 1 : 2)];
+    span_fn fn = span_table[extra][kind][rc->depth_bytes == 0 ? 0 : (rc->depth_bytes == 2 ? 1 : 2)];
     struct frow R;
     R.z = 0;
     R.dz = dz;

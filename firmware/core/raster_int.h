@@ -157,11 +157,13 @@ uint32_t ras_fill_triangle(struct ras_ctx *rc, const struct ras_sv *v0, const st
 #define RAS_FT_GOURAUD 1
 #define RAS_FT_TEX 2
 #define RAS_FT_TEX_GOURAUD 3
+#define RAS_FT_GOURAUD_SAT 4      /* Gouraud whose colour x intensity may pass 255 */
 struct ras_fast_tri {
     uint8_t kind;            /* RAS_FT_* */
     uint16_t c565;           /* flat: the colour */
     uint8_t c888[3];         /* flat: the colour before quantisation (host output) */
-    uint32_t kr, kg, kb;     /* Gouraud: colour in RGB565 levels, Q10 */
+    uint32_t kr, kg, kb;     /* Gouraud (saturating): colour in RGB565 levels, Q10 */
+    uint32_t krb, kg8;       /* Gouraud: red and blue levels in Q3 at bits 16 and 0, green in Q3 */
     const uint16_t *tex;     /* textured: RGB565 texels */
     uint32_t wmask, hmask, wlog2;
     int32_t uscale, vscale;  /* u, v to 16.16 texel coordinates */

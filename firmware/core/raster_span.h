@@ -2,7 +2,7 @@
  * once per feature combination with these macros set:
  *   SPAN_NAME   function name
  *   SPAN_DEPTH  0 (no depth test), 2 (16-bit entries), 4 (32-bit entries)
- *   SPAN_KIND   FT_FLAT, FT_GOURAUD, FT_TEX, FT_TEX_GOURAUD
+ *   SPAN_KIND   FT_FLAT, FT_GOURAUD, FT_GOURAUD_SAT, FT_TEX, FT_TEX_GOURAUD
  *   SPAN_EXTRA  1: also the host's outputs (rgb888, written map) and the
  *               count of pixels written
  * Each combination is compiled on its own so the inner loop holds only what
@@ -28,7 +28,7 @@ RAS_HOT static uint32_t SPAN_NAME(const struct ftri *T, const struct frow *R)
 #elif SPAN_DEPTH == 4
     uint32_t *zp = (uint32_t *)(void *)R->zb;
 #endif
-#if SPAN_KIND == FT_GOURAUD
+#if SPAN_KIND == FT_GOURAUD || SPAN_KIND == FT_GOURAUD_SAT
 #define SPAN_NA 1
 #elif SPAN_KIND == FT_TEX
 #define SPAN_NA 2
@@ -49,6 +49,8 @@ RAS_HOT static uint32_t SPAN_NAME(const struct ftri *T, const struct frow *R)
     const uint32_t um = T->ft->wmask << 1, vm = T->ft->hmask << (T->ft->wlog2 + 1), vs = T->ft->wlog2 + 1;
 #endif
 #if SPAN_KIND == FT_GOURAUD
+    const uint32_t krb = T->ft->krb, kg8 = T->ft->kg8;
+#elif SPAN_KIND == FT_GOURAUD_SAT
     const uint32_t kr = T->ft->kr, kg = T->ft->kg, kb = T->ft->kb;
 #endif
     while (n > 0) {
@@ -76,7 +78,7 @@ RAS_HOT static uint32_t SPAN_NAME(const struct ftri *T, const struct frow *R)
         uint32_t u = (uint32_t)cur[0] << 1, v = (uint32_t)cur[1] << vs;
         const uint32_t du = (uint32_t)d[0] << 1, dv = (uint32_t)d[1] << vs;
 #endif
-#if SPAN_KIND == FT_GOURAUD
+#if SPAN_KIND == FT_GOURAUD || SPAN_KIND == FT_GOURAUD_SAT
         uint32_t li = (uint32_t)cur[0];
         const uint32_t dli = (uint32_t)d[0];
 #elif SPAN_KIND == FT_TEX_GOURAUD
@@ -98,6 +100,12 @@ RAS_HOT static uint32_t SPAN_NAME(const struct ftri *T, const struct frow *R)
 #if SPAN_KIND == FT_FLAT
                 uint16_t c = col;
 #elif SPAN_KIND == FT_GOURAUD
+                /* both products of one multiply: levels in Q11, no channel
+                 * passes its top level (the triangle's intensities allow it) */
+                uint32_t ii = li >> 12;                     /* Q8 */
+                uint32_t prb = krb * ii + (1024u << 16 | 1024u), pg = kg8 * ii + 1024u;
+                uint16_t c = (uint16_t)((prb >> 27) << 11 | (pg >> 11) << 5 | ((prb >> 11) & 31u));
+#elif SPAN_KIND == FT_GOURAUD_SAT
                 uint32_t ii = li >> 8;                      /* Q12 */
                 uint32_t r = (kr * ii + (1u << 21)) >> 22, g = (kg * ii + (1u << 21)) >> 22,
                          b = (kb * ii + (1u << 21)) >> 22;
@@ -147,7 +155,7 @@ RAS_HOT static uint32_t SPAN_NAME(const struct ftri *T, const struct frow *R)
             u += du;
             v += dv;
 #endif
-#if SPAN_KIND == FT_GOURAUD || SPAN_KIND == FT_TEX_GOURAUD
+#if SPAN_KIND == FT_GOURAUD || SPAN_KIND == FT_GOURAUD_SAT || SPAN_KIND == FT_TEX_GOURAUD
             li += dli;
 #endif
         }

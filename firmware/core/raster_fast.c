@@ -479,16 +479,26 @@ int32_t ras_fast_fill(struct ras_ctx *rc, const struct ras_sv *v0, const struct 
                 li[i] = x < 0 ? 0 : (x > (8 << 20) - 1 ? (8 << 20) - 1 : x);
                 if (li[i] > imax) imax = li[i];
             }
-            if (!persp_attr(pp, na++, li[0], li[1], li[2])) return -1;
             if (ft->kind == FT_GOURAUD) {
-                /* the one-multiply form when no channel can reach its
-                 * top level + 1/2 (Q8 intensity, two steps of margin) */
-                uint32_t i8 = (uint32_t)(imax >> 12) + 2;
-                uint32_t kr8 = ft->krb >> 16, kb8 = ft->krb & 0xFFFFu;
-                if (kr8 * i8 + 1024u >= 32u * 2048u || kb8 * i8 + 1024u >= 32u * 2048u ||
-                    ft->kg8 * i8 + 1024u >= 64u * 2048u)
+                /* the channels' levels interpolated when none can reach its
+                 * top level + 1/2 (colour Q10 x intensity Q12, a margin of
+                 * 2^-6 level); the intensity and a clamp per pixel otherwise */
+                uint32_t i12 = (uint32_t)(imax >> 8) + 1;
+                if (ft->kr * i12 < (31u << 22) + (1u << 21) - (1u << 16) &&
+                    ft->kg * i12 < (63u << 22) + (1u << 21) - (1u << 16) &&
+                    ft->kb * i12 < (31u << 22) + (1u << 21) - (1u << 16)) {
+                    const uint32_t kc[3] = { ft->kr, ft->kg, ft->kb };
+                    for (int c = 0; c < 3; c++) {
+                        int32_t l[3];
+                        for (int i = 0; i < 3; i++)   /* level in Q16 + 1/2: Q10 x Q12 >> 6 */
+                            l[i] = (int32_t)((kc[c] * ((uint32_t)li[i] >> 8) + (1u << 5)) >> 6) + (1 << 15);
+                        if (!persp_attr(pp, na++, l[0], l[1], l[2])) return -1;
+                    }
+                } else {
                     kind = FT_GOURAUD_SAT;
+                }
             }
+            if (kind != FT_GOURAUD && !persp_attr(pp, na++, li[0], li[1], li[2])) return -1;
         }
         pp->na = na;
     }

@@ -28,7 +28,7 @@ RAS_HOT static uint32_t SPAN_NAME(const struct ftri *T, const struct frow *R)
 #elif SPAN_DEPTH == 4
     uint32_t *zp = (uint32_t *)(void *)R->zb;
 #endif
-#if SPAN_KIND == FT_GOURAUD || SPAN_KIND == FT_GOURAUD_SAT
+#if SPAN_KIND == FT_GOURAUD_SAT
 #define SPAN_NA 1
 #elif SPAN_KIND == FT_TEX
 #define SPAN_NA 2
@@ -48,9 +48,7 @@ RAS_HOT static uint32_t SPAN_NAME(const struct ftri *T, const struct frow *R)
     const uint8_t *tex = (const uint8_t *)T->ft->tex;
     const uint32_t um = T->ft->wmask << 1, vm = T->ft->hmask << (T->ft->wlog2 + 1), vs = T->ft->wlog2 + 1;
 #endif
-#if SPAN_KIND == FT_GOURAUD
-    const uint32_t krb = T->ft->krb, kg8 = T->ft->kg8;
-#elif SPAN_KIND == FT_GOURAUD_SAT
+#if SPAN_KIND == FT_GOURAUD_SAT
     const uint32_t kr = T->ft->kr, kg = T->ft->kg, kb = T->ft->kb;
 #endif
     while (n > 0) {
@@ -78,7 +76,10 @@ RAS_HOT static uint32_t SPAN_NAME(const struct ftri *T, const struct frow *R)
         uint32_t u = (uint32_t)cur[0] << 1, v = (uint32_t)cur[1] << vs;
         const uint32_t du = (uint32_t)d[0] << 1, dv = (uint32_t)d[1] << vs;
 #endif
-#if SPAN_KIND == FT_GOURAUD || SPAN_KIND == FT_GOURAUD_SAT
+#if SPAN_KIND == FT_GOURAUD
+        uint32_t cr = (uint32_t)cur[0], cg = (uint32_t)cur[1], cb = (uint32_t)cur[2];
+        const uint32_t dcr = (uint32_t)d[0], dcg = (uint32_t)d[1], dcb = (uint32_t)d[2];
+#elif SPAN_KIND == FT_GOURAUD_SAT
         uint32_t li = (uint32_t)cur[0];
         const uint32_t dli = (uint32_t)d[0];
 #elif SPAN_KIND == FT_TEX_GOURAUD
@@ -100,11 +101,9 @@ RAS_HOT static uint32_t SPAN_NAME(const struct ftri *T, const struct frow *R)
 #if SPAN_KIND == FT_FLAT
                 uint16_t c = col;
 #elif SPAN_KIND == FT_GOURAUD
-                /* both products of one multiply: levels in Q11, no channel
+                /* channel levels in Q16, half a level added: no channel
                  * passes its top level (the triangle's intensities allow it) */
-                uint32_t ii = li >> 12;                     /* Q8 */
-                uint32_t prb = krb * ii + (1024u << 16 | 1024u), pg = kg8 * ii + 1024u;
-                uint16_t c = (uint16_t)((prb >> 27) << 11 | (pg >> 11) << 5 | ((prb >> 11) & 31u));
+                uint16_t c = (uint16_t)((cr >> 16) << 11 | (cg >> 16) << 5 | cb >> 16);
 #elif SPAN_KIND == FT_GOURAUD_SAT
                 uint32_t ii = li >> 8;                      /* Q12 */
                 uint32_t r = (kr * ii + (1u << 21)) >> 22, g = (kg * ii + (1u << 21)) >> 22,
@@ -155,7 +154,11 @@ RAS_HOT static uint32_t SPAN_NAME(const struct ftri *T, const struct frow *R)
             u += du;
             v += dv;
 #endif
-#if SPAN_KIND == FT_GOURAUD || SPAN_KIND == FT_GOURAUD_SAT || SPAN_KIND == FT_TEX_GOURAUD
+#if SPAN_KIND == FT_GOURAUD
+            cr += dcr;
+            cg += dcg;
+            cb += dcb;
+#elif SPAN_KIND == FT_GOURAUD_SAT || SPAN_KIND == FT_TEX_GOURAUD
             li += dli;
 #endif
         }

@@ -418,19 +418,22 @@ int32_t ras_fast_fill(struct ras_ctx *rc, const struct ras_sv *v0, const struct 
     /* depth: a plane in Q32.16 (exact at (c0, r0), gradients to 2^-16),
      * stepped per pixel by the column gradient truncated toward zero */
     int depth = rc->depth_bytes != 0;
-    int64_t zrow = 0, gx16 = 0, gy16 = 0;
+    int64_t zrow = 0, gy16 = 0;
+    int32_t gxq = 0;             /* column gradient in Q32.16: gxq * 2^16 + gxf */
+    uint32_t gxf = 0;
     uint32_t dz = 0;
     if (depth) {
-        int64_t dd1 = (int64_t)v1->depth - v0->depth, dd2 = (int64_t)v2->depth - v0->depth, rem;
+        int64_t dd1 = (int64_t)v1->depth - v0->depth, dd2 = (int64_t)v2->depth - v0->depth, rem, f;
         int64_t q = ras_floordiv(dd1 * wr[1] + dd2 * wr[2], area, &rem);
-        zrow = ((int64_t)v0->depth + q) * 65536 + (rem << 16) / area;
+        zrow = ((int64_t)v0->depth + q) * 65536 + ras_floordiv(rem << 16, area, &f);
         q = ras_floordiv(dd1 * a[1] + dd2 * a[2], area, &rem);
         if (q > INT32_MAX || q < -INT32_MAX) return -1;
-        gx16 = q * 65536 + (rem << 16) / area;
+        gxq = (int32_t)q;
+        gxf = (uint32_t)ras_floordiv(rem << 16, area, &f);
         dz = (uint32_t)(int32_t)(q + (q < 0 && rem != 0));      /* toward zero */
         q = ras_floordiv(dd1 * b[1] + dd2 * b[2], area, &rem);
         if (q > INT32_MAX || q < -INT32_MAX) return -1;
-        gy16 = q * 65536 + (rem << 16) / area;
+        gy16 = q * 65536 + ras_floordiv(rem << 16, area, &f);
     }
 
     /* attributes */
@@ -532,8 +535,9 @@ int32_t ras_fast_fill(struct ras_ctx *rc, const struct ras_sv *v0, const struct 
                 R.written = t->written ? t->written + idx : NULL;
             }
             if (depth) {
-                int64_t zs = (zrow + (int64_t)lo * gx16) >> 16;
-                int64_t ze = zs + (int64_t)(R.n - 1) * (int32_t)dz;
+                /* lo * gx16 as two 32-bit products (lo < 2^14, gxf < 2^16) */
+                int64_t zs = (zrow + num_smul32(lo, gxq) * 65536 + (int64_t)((uint32_t)lo * gxf)) >> 16;
+                int64_t ze = zs + num_smul32(R.n - 1, (int32_t)dz);
                 if (zs < 1 || zs > (int64_t)UINT32_MAX - 1 || ze < 1 || ze > (int64_t)UINT32_MAX - 1) {
                     /* at the near plane or infinity: this row's depth held flat */
                     R.z = zs < 0 ? 0 : (zs > (int64_t)UINT32_MAX ? UINT32_MAX : (uint32_t)zs);

@@ -21,6 +21,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include "scene_parse.h"
+#include "scene_format.h"
 
 #define MAX_DEPTH      32
 #define ARENA_LIMIT    ((size_t)256 << 20)   /* total bytes a scene may allocate */
@@ -1390,7 +1391,7 @@ static void read_scene(struct parser *p, const struct node *top, struct scene *s
     s->ras.project_truncate = 1;
     s->ras.clip = 1;
     s->ras.depth_test = 1;
-    s->ras.depth_bits = 32;
+    s->ras.depth_bits = 0;   /* chosen from the scene's depth range below, unless given */
     s->ras.backface_cull = 1;
     s->ras.diffuse = s->ras.specular = 1;
     s->ras.perspective_uv = 1;
@@ -1503,6 +1504,8 @@ static int parse(const char *file, const char *dir, const char *text, size_t len
     const char *dot = strrchr(base, '.');
     const char *dname = dup_str(p, base, dot && dot != base ? (size_t)(dot - base) : strlen(base));
     read_scene(p, top, &box->s, dname);
+    if (box->s.kind == SCENE_RASTER && box->s.ras.depth_bits == 0)
+        box->s.ras.depth_bits = (uint8_t)scene_depth_bits(&box->s, NULL, NULL, NULL);
     box->arena = p->arena;
     free(p);
     *out = &box->s;

@@ -385,6 +385,14 @@ int main(int argc, char **argv)
     }
     int frac = F.num_frac;
     scene_format_print_argument(stdout, &F);
+    if (s->kind == SCENE_RASTER && s->ninstances && !s->ras.book_exact && s->ras.depth_test) {
+        double far, step, rmin;
+        int bits = scene_depth_bits(s, &far, &step, &rmin);
+        printf("  depth buffer: %d bits a pixel%s: a 16-bit step of near/z at the farthest depth %.3g is %.3g,\n"
+               "    %s 1/256 of the smallest instance radius (%.3g)\n",
+               s->ras.depth_bits, s->ras.depth_bits == bits ? " (chosen)" : " (as the scene asks)", far, step,
+               step <= rmin / 256 ? "within" : "more than", rmin);
+    }
 
     /* the renderer's work memory, from the fixed-point core */
     void *fs = NULL;

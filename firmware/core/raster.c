@@ -9,7 +9,7 @@ static size_t al(size_t n) { return (n + (ALIGN - 1)) & ~(size_t)(ALIGN - 1); }
 
 struct layout {
     size_t ctx, inst, verts, tri_rows, prim_rows, line_rows, lights, mips, mipmem, tex565, texmem, pv, tri_flags,
-        tri_shade, depth, adj, smap, stencil, total;
+        tri_shade, keep, depth, adj, smap, stencil, total;
     uint32_t nverts, ntris;
 };
 
@@ -57,6 +57,15 @@ static int shade_cache(const struct scene *s)
     return frame_cache(s) && (s->ras.shading == SHADE_GOURAUD || s->ras.shading == SHADE_FLAT);
 }
 
+/* Triangle set-ups the fast path keeps from one strip to the next: one
+ * slot a triangle up to RAS_KEEP_MAX (triangle i in slot i mod slots). */
+#define RAS_KEEP_MAX 32
+static uint16_t keep_slots(const struct scene *s, uint32_t ntris)
+{
+    if (!fast_path(s)) return 0;
+    return (uint16_t)(ntris < RAS_KEEP_MAX ? ntris : RAS_KEEP_MAX);
+}
+
 static int make_layout(const struct scene *s, uint16_t w, uint16_t strip_rows, struct layout *L)
 {
     memset(L, 0, sizeof *L);
@@ -84,6 +93,7 @@ static int make_layout(const struct scene *s, uint16_t w, uint16_t strip_rows, s
     L->pv = off; off += al(frame_cache(s) ? sizeof(struct ras_pv) * L->nverts : 0);
     L->tri_flags = off; off += al(frame_cache(s) ? L->ntris : 0);
     L->tri_shade = off; off += al(shade_cache(s) ? sizeof(num) * 3 * L->ntris : 0);
+    L->keep = off; off += al(sizeof(struct ras_fast_state) * keep_slots(s, L->ntris));
     L->depth = off; off += al((size_t)depth_bytes(s) * w * strip_rows);
     L->adj = off; off += al(ras_ch15_adj_size(s, L->ntris));
     L->smap = off; off += al(ras_ch15_smap_size(s));
@@ -139,6 +149,8 @@ int raster_init(struct render_ctx *ctx)
     rc->pv = frame_cache(s) ? (struct ras_pv *)(void *)(base + L.pv) : NULL;
     rc->tri_flags = frame_cache(s) ? base + L.tri_flags : NULL;
     rc->tri_shade = shade_cache(s) ? (num *)(void *)(base + L.tri_shade) : NULL;
+    rc->nkeep = keep_slots(s, L.ntris);
+    rc->keep = rc->nkeep ? (struct ras_fast_state *)(void *)(base + L.keep) : NULL;
     rc->depth = base + L.depth;
     rc->adj = (uint16_t *)(void *)(base + L.adj);
     rc->smap = (uint16_t *)(void *)(base + L.smap);
@@ -296,6 +308,8 @@ int raster_begin_frame(struct render_ctx *ctx, uint16_t frame)
         project_vertex(rc, s->lines[i].b, &bx, &by);
         rc->line_rows[i] = rows_of_canvas_y(rc, num_min(ay, by), num_max(ay, by));
     }
+
+    for (uint16_t k = 0; k < rc->nkeep; k++) rc->keep[k].tri = UINT32_MAX;
 
     /* render_instance, first half: transform, cull, project, bin */
     uint32_t vb = 0, tb = 0;
@@ -584,7 +598,6 @@ static int fast_setup(const struct ras_ctx *rc, const struct def_tri *dt, struct
     if (!rc->fast || rc->depth_only || rc->depth_func != RAS_DEPTH_LESS_WRITE || dt->nmap >= 0) return 0;
     if (dt->shading == SHADE_PHONG) return 0;
     int gour = dt->shading == SHADE_GOURAUD;
-    memset(ft, 0, sizeof *ft);
     ft->ai_i = dt->ai_i;
     ft->ai_uv = dt->ai_uv;
     if (dt->tex >= 0) {
@@ -669,6 +682,16 @@ static void default_render_triangle(struct ras_ctx *rc, const struct ras_instanc
                                     const struct ras_model *m, const struct ras_triangle *t, uint32_t gi)
 {
     const struct ras_options *o = &rc->s->ras;
+    struct ras_fast_state *slot = NULL;
+    if (rc->keep && !rc->depth_only && rc->depth_func == RAS_DEPTH_LESS_WRITE) {
+        /* the rest of a triangle begun in the strip above */
+        slot = &rc->keep[gi % rc->nkeep];
+        uint32_t drawn;
+        if (slot->tri == gi && ras_fast_resume(rc, slot, &drawn)) {
+            rc->st->pixels_written += drawn;
+            return;
+        }
+    }
     vec3 V[3], N[3];
     int front = 0;
     const num *shade = rc->tri_shade ? rc->tri_shade + 3 * (size_t)gi : NULL;
@@ -760,8 +783,12 @@ static void default_render_triangle(struct ras_ctx *rc, const struct ras_instanc
     for (int k = 1; k + 1 < n; k++) {
         const struct ras_sv *a = &sv[0], *b = &sv[k], *c = &sv[k + 1];
         if (fast) {
-            int32_t drawn = ras_fast_fill(rc, a, b, c, &ft);
+            /* an unclipped triangle's set-up is kept for the strips below */
+            struct ras_fast_state *k1 = n == 3 ? slot : NULL;
+            if (k1) k1->tri = gi;
+            int32_t drawn = ras_fast_fill(rc, a, b, c, &ft, k1);
             if (drawn >= 0) { rc->st->pixels_written += (uint32_t)drawn; continue; }
+            if (k1) k1->tri = UINT32_MAX;
         }
         dt.lod_base = NUM_ZERO;
         dt.iz_eff = NUM_ONE;

@@ -343,6 +343,16 @@ static int64_t edge(int32_t ax, int32_t ay, int32_t bx, int32_t by, int64_t px, 
  * path takes triangles whose box is at most 2^14 sub-pixel units a side). */
 struct fedge { int kind; int32_t n, q, r, den, dq, dr; };
 
+/* floor(n / d) and n - floor(n / d) * d for d > 0, in 32 bits (the
+ * board's divider where it has one). */
+static void floordiv32(int32_t n, int32_t d, int32_t *q, int32_t *r)
+{
+    int32_t qq = n / d, rr = n % d;
+    if (rr < 0) { qq--; rr += d; }
+    *q = qq;
+    *r = rr;
+}
+
 static void fedge_init(struct fedge *e, int32_t a, int32_t b, int32_t w, int32_t bias)
 {
     int64_t num, step, rem;
@@ -366,14 +376,36 @@ static void fedge_init(struct fedge *e, int32_t a, int32_t b, int32_t w, int32_t
         return;
     }
     e->n = 0;
+    if (num > INT32_MIN && num <= INT32_MAX && step > INT32_MIN && step <= INT32_MAX) {
+        floordiv32((int32_t)num, e->den, &e->q, &e->r);
+        floordiv32((int32_t)step, e->den, &e->dq, &e->dr);
+        return;
+    }
     e->q = (int32_t)ras_floordiv(num, e->den, &rem);
     e->r = (int32_t)rem;
     e->dq = (int32_t)ras_floordiv(step, e->den, &rem);
     e->dr = (int32_t)rem;
 }
 
-int32_t ras_fast_fill(struct ras_ctx *rc, const struct ras_sv *v0, const struct ras_sv *v1, const struct ras_sv *v2,
-                      const struct ras_fast_tri *ft)
+/* Everything a triangle's rows need, kept between strips (struct
+ * ras_fast_state is this, opaque to the rest of the rasterizer). */
+struct fstate {
+    struct ras_fast_tri ftc;     /* the triangle's description (T.ft points here) */
+    struct ftri T;
+    struct fedge fe[3];
+    int32_t wr[3], a[3], b[3];   /* edge values at (c0, row), steps per column and row */
+    int64_t zrow, gy16;          /* depth plane at (c0, row), Q32.16 */
+    int32_t gxq;                 /* column gradient gxq * 2^16 + gxf */
+    uint32_t gxf, dz;
+    int32_t c0, kmax, row, last; /* box column, width - 1, next row, last row */
+    int kind, depth;
+};
+typedef char ras_fast_state_fits[sizeof(struct fstate) <= sizeof(struct ras_fast_state) ? 1 : -1];
+
+/* Set-up of triangle v0 v1 v2 for rows from the strip's first on.
+ * Returns 1, 0 (nothing to draw) or -1 (the exact path's triangle). */
+static int fast_setup(struct ras_ctx *rc, const struct ras_sv *v0, const struct ras_sv *v1, const struct ras_sv *v2,
+                      const struct ras_fast_tri *ft, struct fstate *S)
 {
     const struct render_target *t = rc->t;
     int sb = rc->sub_bits;
@@ -391,20 +423,20 @@ int32_t ras_fast_fill(struct ras_ctx *rc, const struct ras_sv *v0, const struct 
     /* 32-bit edge arithmetic: corners within 2^14 sub-pixel units of each
      * other (1024 pixels at 4 sub-pixel bits); larger ones take the exact path */
     if ((int64_t)maxx - minx > (1 << 14) || (int64_t)maxy - miny > (1 << 14)) return -1;
-    int32_t c0 = minx >> sb, c1 = (maxx >> sb) + 1, r0 = miny >> sb, r1 = (maxy >> sb) + 1;
+    int32_t c0 = minx >> sb, c1 = (maxx >> sb) + 1, rtop = miny >> sb, r0 = rtop, r1 = (maxy >> sb) + 1;
     if (c0 < 0) c0 = 0;
     if (r0 < (int32_t)t->y0) r0 = t->y0;
     if (c1 > (int32_t)rc->w - 1) c1 = rc->w - 1;
-    if (r1 > (int32_t)t->y1 - 1) r1 = t->y1 - 1;
-    if (c0 > c1 || r0 > r1) return 0;
+    if (r1 > (int32_t)rc->h - 1) r1 = rc->h - 1;
+    if (c0 > c1 || r0 > r1 || r0 >= (int32_t)t->y1) return 0;
 
     /* the exact path's edge functions at (c0, r0) and their steps; every
      * value inside the box is below 2^29 in magnitude */
     int32_t half = (int32_t)1 << (sb - 1), one = (int32_t)1 << sb;
     int64_t px = ((int64_t)c0 << sb) + half, py = ((int64_t)r0 << sb) + half;
     const struct ras_sv *ea[3] = { v1, v2, v0 }, *eb[3] = { v2, v0, v1 };
-    int32_t wr[3], a[3], b[3];
-    struct fedge fe[3];
+    int32_t *wr = S->wr, *a = S->a, *b = S->b;
+    struct fedge *fe = S->fe;
     for (int i = 0; i < 3; i++) {
         int32_t dx = eb[i]->x - ea[i]->x, dy = eb[i]->y - ea[i]->y;
         int32_t bias = (dy < 0 || (dy == 0 && dx > 0)) ? 0 : -1;
@@ -415,16 +447,19 @@ int32_t ras_fast_fill(struct ras_ctx *rc, const struct ras_sv *v0, const struct 
     }
     int32_t area = (int32_t)area64;
 
-    /* depth: a plane in Q32.16 (exact at (c0, r0), gradients to 2^-16),
-     * stepped per pixel by the column gradient truncated toward zero */
+    /* depth: a plane in Q32.16 (exact at (c0, the box's top row), gradients
+     * to 2^-16, stepped row by row from there whatever the strips), stepped
+     * per pixel by the column gradient truncated toward zero */
     int depth = rc->depth_bytes != 0;
     int64_t zrow = 0, gy16 = 0;
-    int32_t gxq = 0;             /* column gradient in Q32.16: gxq * 2^16 + gxf */
+    int32_t gxq = 0;
     uint32_t gxf = 0;
     uint32_t dz = 0;
     if (depth) {
         int64_t dd1 = (int64_t)v1->depth - v0->depth, dd2 = (int64_t)v2->depth - v0->depth, rem, f;
-        int64_t q = ras_floordiv(dd1 * wr[1] + dd2 * wr[2], area, &rem);
+        int64_t w1t = edge(ea[1]->x, ea[1]->y, eb[1]->x, eb[1]->y, px, ((int64_t)rtop << sb) + half);
+        int64_t w2t = edge(ea[2]->x, ea[2]->y, eb[2]->x, eb[2]->y, px, ((int64_t)rtop << sb) + half);
+        int64_t q = ras_floordiv(dd1 * w1t + dd2 * w2t, area, &rem);
         zrow = ((int64_t)v0->depth + q) * 65536 + ras_floordiv(rem << 16, area, &f);
         q = ras_floordiv(dd1 * a[1] + dd2 * a[2], area, &rem);
         if (q > INT32_MAX || q < -INT32_MAX) return -1;
@@ -434,11 +469,15 @@ int32_t ras_fast_fill(struct ras_ctx *rc, const struct ras_sv *v0, const struct 
         q = ras_floordiv(dd1 * b[1] + dd2 * b[2], area, &rem);
         if (q > INT32_MAX || q < -INT32_MAX) return -1;
         gy16 = q * 65536 + ras_floordiv(rem << 16, area, &f);
+        zrow += gy16 * (r0 - rtop);
     }
 
     /* attributes */
     int kind = ft->kind;
-    struct ftri T;
+    S->ftc = *ft;
+    ft = &S->ftc;
+    struct ftri *Tp = &S->T;
+#define T (*Tp)
     struct fpersp *pp = &T.pp;
     int na = 0;
     T.ft = ft;
@@ -506,15 +545,44 @@ int32_t ras_fast_fill(struct ras_ctx *rc, const struct ras_sv *v0, const struct 
         pp->na = na;
     }
 
+#undef T
+    S->zrow = zrow;
+    S->gy16 = gy16;
+    S->gxq = gxq;
+    S->gxf = gxf;
+    S->dz = dz;
+    S->c0 = c0;
+    S->kmax = c1 - c0;
+    S->row = r0;
+    S->last = r1;
+    S->kind = kind;
+    S->depth = depth;
+    return 1;
+}
+
+/* Rows of S from S->row to the strip's end (or the triangle's last row),
+ * S left at the next row. Returns the pixels written (host outputs) or
+ * drawn (board). */
+static uint32_t fast_run(struct ras_ctx *rc, struct fstate *S)
+{
+    const struct render_target *t = rc->t;
+    const struct ftri *Tp = &S->T;
+    struct fedge *fe = S->fe;
+    int32_t *wr = S->wr, *a = S->a, *b = S->b;
+    int64_t zrow = S->zrow;
+    const int64_t gy16 = S->gy16;
+    const int32_t gxq = S->gxq, c0 = S->c0, kmax = S->kmax;
+    const uint32_t gxf = S->gxf, dz = S->dz;
+    const int depth = S->depth;
+    int32_t r0 = S->row, r1 = S->last < (int32_t)t->y1 - 1 ? S->last : (int32_t)t->y1 - 1;
     int extra = t->rgb888 != NULL || t->written != NULL;
-    span_fn fn = span_table[extra][kind][rc->depth_bytes == 0 ? 0 : (rc->depth_bytes == 2 ? 1 : 2)];
+    span_fn fn = span_table[extra][S->kind][rc->depth_bytes == 0 ? 0 : (rc->depth_bytes == 2 ? 1 : 2)];
     struct frow R;
     R.z = 0;
     R.dz = dz;
     R.rgb888 = R.written = NULL;
     R.w1 = R.w2 = 0;
     uint32_t total = 0;
-    int32_t kmax = c1 - c0;
 
     for (int32_t r = r0; r <= r1; r++) {
         int32_t lo = 0, hi = kmax;
@@ -547,11 +615,11 @@ int32_t ras_fast_fill(struct ras_ctx *rc, const struct ras_sv *v0, const struct 
                     R.dz = dz;
                 }
             }
-            if (ft->kind != FT_FLAT) {
+            if (S->kind != FT_FLAT) {
                 R.w1 = wr[1] + lo * a[1];
                 R.w2 = wr[2] + lo * a[2];
             }
-            uint32_t wrote = fn(&T, &R);
+            uint32_t wrote = fn(Tp, &R);
             total += extra ? wrote : (uint32_t)R.n;
         }
         zrow += gy16;
@@ -564,5 +632,27 @@ int32_t ras_fast_fill(struct ras_ctx *rc, const struct ras_sv *v0, const struct 
             if (e->r >= e->den) { e->q++; e->r -= e->den; }
         }
     }
-    return (int32_t)total;
+    S->zrow = zrow;
+    S->row = r1 + 1;
+    return total;
+}
+
+int32_t ras_fast_fill(struct ras_ctx *rc, const struct ras_sv *v0, const struct ras_sv *v1, const struct ras_sv *v2,
+                      const struct ras_fast_tri *ft, struct ras_fast_state *keep)
+{
+    struct fstate local, *S = keep ? (struct fstate *)(void *)keep : &local;
+    int r = fast_setup(rc, v0, v1, v2, ft, S);
+    if (r <= 0) {
+        if (keep) S->row = -1;
+        return r;
+    }
+    return (int32_t)fast_run(rc, S);
+}
+
+int ras_fast_resume(struct ras_ctx *rc, struct ras_fast_state *keep, uint32_t *drawn)
+{
+    struct fstate *S = (struct fstate *)(void *)keep;
+    if (S->row != (int32_t)rc->t->y0 || S->row > S->last) return 0;
+    *drawn = fast_run(rc, S);
+    return 1;
 }

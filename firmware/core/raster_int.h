@@ -80,6 +80,8 @@ struct ras_ctx {
     struct ras_pv *pv;
     uint8_t *tri_flags;
     num *tri_shade;          /* 3 a triangle: Gouraud corners, or the flat intensity first */
+    struct ras_fast_state *keep; /* fast path: triangle set-ups kept between strips */
+    uint16_t nkeep;          /* their number (triangle i in slot i % nkeep) */
     uint8_t *depth;          /* strip_rows * w entries */
     /* depth test of ras_fill_triangle: RAS_DEPTH_LESS_WRITE (normal),
      * RAS_DEPTH_EQUAL (shading pass after a depth pass), RAS_DEPTH_BEHIND
@@ -169,12 +171,18 @@ struct ras_fast_tri {
     int32_t uscale, vscale;  /* u, v to 16.16 texel coordinates */
     int ai_i, ai_uv;         /* attribute slots of intensity and u, v in ras_sv.a */
 };
+/* A triangle's set-up kept from one strip to the next (raster_fast.c). */
+struct ras_fast_state { uint64_t mem[48]; uint32_t tri; };
 /* Fills a triangle (clockwise on screen) with the fast span loops, depth
- * test RAS_DEPTH_LESS_WRITE. Returns the pixels written, or -1 (nothing
- * drawn) when the triangle's depth gradient does not fit the fast path's
- * 32-bit stepping: the caller then uses ras_fill_triangle. */
+ * test RAS_DEPTH_LESS_WRITE, in the current strip. Returns the pixels
+ * written, or -1 (nothing drawn) when the triangle does not fit the fast
+ * path's 32-bit stepping: the caller then uses ras_fill_triangle. With
+ * keep != NULL the set-up is left there for the next strip. */
 int32_t ras_fast_fill(struct ras_ctx *rc, const struct ras_sv *v0, const struct ras_sv *v1, const struct ras_sv *v2,
-                      const struct ras_fast_tri *ft);
+                      const struct ras_fast_tri *ft, struct ras_fast_state *keep);
+/* Continues a kept triangle in the current strip when it stopped at the
+ * row above it: 1 (rows drawn, *drawn pixels), 0 (not kept for this strip). */
+int ras_fast_resume(struct ras_ctx *rc, struct ras_fast_state *keep, uint32_t *drawn);
 
 /* ---- face normals and projections kept wide (raster_project.c) ---- */
 /* Face normal (b - a) x (c - a) of camera-space corners, in wnum. Its

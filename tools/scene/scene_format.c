@@ -259,31 +259,6 @@ static void scan(const struct scene *s, struct scene_format *R, int width, int h
     }
 }
 
-int scene_depth_bits(const struct scene *s, double *far_out, double *step_out, double *rmin_out)
-{
-    double cam_reach = anim_reach(&s->camera_anim, s->frames), far = 0, rmin = 1e300;
-    for (int i = 0; i < s->ninstances; i++) {
-        const struct ras_instance *in = &s->instances[i];
-        if (in->model >= s->nmodels) continue;
-        const struct ras_model *m = &s->models[in->model];
-        double sc = fabs(num_to_double(in->scale)), vmax = 0;
-        for (int k = 0; k < m->nverts; k++)
-            if (len3(m->verts[k]) > vmax) vmax = len3(m->verts[k]);
-        vec3 rel = v3_sub(in->position, s->camera.position);
-        double f = len3(rel) + anim_reach(&in->anim, s->frames) + cam_reach + sc * vmax;
-        if (f > far) far = f;
-        double r = sc * num_to_double(m->bound_radius);
-        if (r > 0 && r < rmin) rmin = r;
-    }
-    double near = num_to_double(s->projection_d);
-    double step = near > 0 ? far * far / (near * 65536.0) : 1e300;
-    if (far_out) *far_out = far;
-    if (step_out) *step_out = step;
-    if (rmin_out) *rmin_out = rmin;
-    if (s->ninstances == 0) return 16;
-    return step <= rmin / 256 ? 16 : 32;
-}
-
 int scene_format_choose(const struct scene *s, int width, int height, const int *fracs, int nfracs,
                         int allow_wide, struct scene_format *f)
 {

@@ -54,13 +54,6 @@ struct scene;
 int scene_format_choose(const struct scene *s, int width, int height, const int *fracs, int nfracs,
                         int allow_wide, struct scene_format *f);
 
-/* Bits of the default path's depth buffer (near/z) a rasterized scene
- * needs: 16 when a 16-bit step at the farthest depth any instance reaches
- * (far^2 / (near * 65536)) is at most 1/256 of the smallest instance's
- * bounding radius, else 32. *far, *step16 and *rmin (any may be NULL)
- * receive the three quantities. Scenes without instances: 16. */
-int scene_depth_bits(const struct scene *s, double *far, double *step16, double *rmin);
-
 /* The ranges found, one per line ("  ranges: ..."), as scenec prints them. */
 void scene_format_print_ranges(FILE *out, const struct scene_format *f);
 

@@ -21,7 +21,6 @@
 #include <stdlib.h>
 #include <string.h>
 #include "scene_parse.h"
-#include "scene_format.h"
 
 #define MAX_DEPTH      32
 #define ARENA_LIMIT    ((size_t)256 << 20)   /* total bytes a scene may allocate */
@@ -1515,6 +1514,42 @@ static int parse(const char *file, const char *dir, const char *text, size_t len
 int scene_parse_mem(const char *name, const char *text, size_t len, struct scene **out, char *err, size_t errlen)
 {
     return parse(name, NULL, text, len, out, err, errlen);
+}
+
+static double dist3(vec3 v)
+{
+    double x = num_to_double(v.x), y = num_to_double(v.y), z = num_to_double(v.z);
+    return sqrt(x * x + y * y + z * z);
+}
+
+static double reach3(const struct scene_anim *a, int frames)
+{
+    return dist3(a->move_per_frame) * (frames > 1 ? frames - 1 : 0);
+}
+
+int scene_depth_bits(const struct scene *s, double *far_out, double *step_out, double *rmin_out)
+{
+    double cam_reach = reach3(&s->camera_anim, s->frames), far = 0, rmin = 1e300;
+    for (int i = 0; i < s->ninstances; i++) {
+        const struct ras_instance *in = &s->instances[i];
+        if (in->model >= s->nmodels) continue;
+        const struct ras_model *m = &s->models[in->model];
+        double sc = fabs(num_to_double(in->scale)), vmax = 0;
+        for (int k = 0; k < m->nverts; k++)
+            if (dist3(m->verts[k]) > vmax) vmax = dist3(m->verts[k]);
+        vec3 rel = v3_sub(in->position, s->camera.position);
+        double f = dist3(rel) + reach3(&in->anim, s->frames) + cam_reach + sc * vmax;
+        if (f > far) far = f;
+        double r = sc * num_to_double(m->bound_radius);
+        if (r > 0 && r < rmin) rmin = r;
+    }
+    double near = num_to_double(s->projection_d);
+    double step = near > 0 ? far * far / (near * 65536.0) : 1e300;
+    if (far_out) *far_out = far;
+    if (step_out) *step_out = step;
+    if (rmin_out) *rmin_out = rmin;
+    if (s->ninstances == 0) return 16;
+    return step <= rmin / 256 ? 16 : 32;
 }
 
 int scene_load(const char *path, struct scene **out, char *err, size_t errlen)

@@ -30,4 +30,11 @@ int scene_parse_mem(const char *name, const char *text, size_t len, struct scene
 
 void scene_free(struct scene *s);
 
+/* Bits of the default path's depth buffer (near/z) a rasterized scene
+ * needs: 16 when a 16-bit step at the farthest depth any instance reaches
+ * (far^2 / (near * 65536)) is at most 1/256 of the smallest instance's
+ * bounding radius, else 32. *far, *step16 and *rmin (any may be NULL)
+ * receive the three quantities. Scenes without instances: 16. */
+int scene_depth_bits(const struct scene *s, double *far, double *step16, double *rmin);
+
 #endif

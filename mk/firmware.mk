@@ -6,14 +6,18 @@
 #   build/firmware/stm32f411/cgfs{,-fixed}.{elf,bin,map}  Cortex-M4F, see below
 #
 # Build options (make VAR=value): FW_PINS (extra -D pin options, e.g.
-# "-DRP2040_PIN_DC=8"), RP2040_SYS_MHZ (125 or 133), FW_SCENE_SRCS (the
-# scene table; default the built-in placeholder), FW_EXTRA (more -D flags).
+# "-DRP2040_PIN_DC=8"), RP2040_SYS_MHZ (125 or 133), RP2040_RAM_TEXT (1, the
+# default: the rasterizer's span loops, RAS_HOT in firmware/core/raster_int.h,
+# are copied to SRAM and run from there instead of through the 16 KB XIP
+# cache; 0: from flash), FW_SCENE_SRCS (the scene table; default the built-in
+# placeholder), FW_EXTRA (more -D flags).
 
 ARM_CC      ?= arm-none-eabi-gcc
 ARM_OBJCOPY ?= arm-none-eabi-objcopy
 ARM_SIZE    ?= arm-none-eabi-size
 FW_OUT      := $(BUILD)/firmware
 RP2040_SYS_MHZ ?= 133
+RP2040_RAM_TEXT ?= 1
 FW_PINS     ?=
 FW_EXTRA    ?=
 FW_SCENE_SRCS ?= firmware/app/scenes_builtin.c
@@ -81,6 +85,7 @@ RP_SRCS  := $(RP_DIR)/crt0.c $(RP_DIR)/board.c $(RP_DIR)/fw_board_rp2040.c hal/r
 RP_ASM   := $(RP_DIR)/hwdiv.S
 RP_CFLAGS := -mcpu=cortex-m0plus -mthumb -O2 -g -std=c11 $(WARN) -ffunction-sections -fdata-sections \
              -ffreestanding -fno-common -DNUM_MODE=1 -DRP2040_SYS_MHZ=$(RP2040_SYS_MHZ) -DFW_STRIP_ROWS=$(FW_STRIP_ROWS) \
+             $(if $(filter 1,$(RP2040_RAM_TEXT)),-DRAS_RAM_TEXT) \
              $(FW_INC) -I$(RP_DIR) -Ihal/rp2040 $(FW_PINS) $(FW_EXTRA)
 RP_LDFLAGS := -mcpu=cortex-m0plus -mthumb --specs=nano.specs -nostartfiles -T $(RP_DIR)/rp2040.ld \
               -Wl,--gc-sections -Wl,--no-warn-rwx-segments
@@ -94,9 +99,13 @@ $(FW_OUT)/pico/boot2.bin: $(FW_OUT)/pico/boot2.elf
 $(FW_OUT)/pico/boot2_crc.S: $(FW_OUT)/pico/boot2.bin tools/uf2/boot2crc.py
 	$(Q)$(PYTHON) tools/uf2/boot2crc.py $< $@
 
-# $(1) = image name, $(2) = extra flags, $(3) = scene table sources
+# $(1) = image name, $(2) = extra flags, $(3) = scene table sources.
+# obj-<image>/cflags holds the image's compile flags, rewritten only when they
+# change (RP2040_RAM_TEXT=0, RP2040_SYS_MHZ=125, ...), so that its objects follow.
 define RP_IMAGE
-$(FW_OUT)/pico/obj-$(1)/%.o: %.c
+$$(shell mkdir -p $(FW_OUT)/pico/obj-$(1) && { printf '%s\n' '$(strip $(RP_CFLAGS) $(2))' | \
+          cmp -s - $(FW_OUT)/pico/obj-$(1)/cflags || printf '%s\n' '$(strip $(RP_CFLAGS) $(2))' >$(FW_OUT)/pico/obj-$(1)/cflags; })
+$(FW_OUT)/pico/obj-$(1)/%.o: %.c $(FW_OUT)/pico/obj-$(1)/cflags
 	@mkdir -p $$(@D)
 	$$(Q)$$(ARM_CC) $$(RP_CFLAGS) $(2) -MMD -MP -c $$< -o $$@
 $(FW_OUT)/pico/obj-$(1)/%.o: %.S

@@ -14,7 +14,12 @@
  *   --pins dc=16,cs=17,rst=20,bl=21   the firmware's pin options
  *   --uart              echo the firmware's UART output to stderr
  *   --json              one JSON object per frame on stdout (scene, frame,
- *                       cycles at the firmware's clk_sys, us, fps, spi_bytes)
+ *                       cycles at the firmware's clk_sys, us, fps, spi_bytes,
+ *                       cores: the firmware's boot line, 1 for the images
+ *                       that run here, rp2040js emulating one core)
+ *   --average           with --json: one object per run of consecutive frames
+ *                       of a scene instead, their mean (frame = the first,
+ *                       frames = how many, cycles_min, cycles_max)
  *   --numeric MODE      the image's numeric mode, for --json (default fixed)
  *   --variant TEXT      the image's method choices, for --json (default single-core)
  *
@@ -39,7 +44,7 @@ function usage(msg) {
 }
 
 function parseArgs(argv) {
-  const o = { frames: 1, maxCycles: 4e9, panel: 'st7789', pins: { dc: 16, cs: 17, rst: 20, bl: 21 }, uart: false, json: false, numeric: 'fixed', variant: 'single-core' };
+  const o = { frames: 1, maxCycles: 4e9, panel: 'st7789', pins: { dc: 16, cs: 17, rst: 20, bl: 21 }, uart: false, json: false, average: false, numeric: 'fixed', variant: 'single-core' };
   for (let i = 0; i < argv.length; i++) {
     const a = argv[i];
     const val = () => { if (i + 1 >= argv.length) usage(`${a} needs a value`); return argv[++i]; };
@@ -59,12 +64,14 @@ function parseArgs(argv) {
         break;
       case '--uart': o.uart = true; break;
       case '--json': o.json = true; break;
+      case '--average': o.average = true; break;
       case '--numeric': o.numeric = val(); break;
       case '--variant': o.variant = val(); break;
       default: usage(`unknown option '${a}'`);
     }
   }
   if (!o.image) usage('--image FILE is required');
+  if (o.average && !o.json) usage('--average needs --json');
   return o;
 }
 
@@ -151,7 +158,7 @@ function main() {
   };
 
   /* UART lines: "begin scene=... frame=..." labels the next frame. */
-  let uartLine = '', pending = null, fwError = null, cpuHz = 133e6;
+  let uartLine = '', pending = null, fwError = null, cpuHz = 133e6, cores = 1;
   const frames = [];
   let frameStartNs = 0, frameStartBytes = 0;
   mcu.uart[0].onByte = (b) => {
@@ -161,7 +168,7 @@ function main() {
       const l = uartLine.replace(/\r$/, '');
       uartLine = '';
       const kv = Object.fromEntries(l.split(' ').slice(1).map((s) => s.split('=')));
-      if (l.startsWith('boot ')) cpuHz = Number(kv.cpu_hz) || cpuHz;
+      if (l.startsWith('boot ')) { cpuHz = Number(kv.cpu_hz) || cpuHz; cores = Number(kv.cores) || cores; }
       if (l.startsWith('begin ')) { pending = { scene: kv.scene, frame: Number(kv.frame) }; frameStartNs = clock.nanos; frameStartBytes = spiBytes; }
       if (l.startsWith('fps ') && frames.length) frames[frames.length - 1].fw_us = Number(kv.us);
       if (l.startsWith('error')) fwError = l;
@@ -204,15 +211,35 @@ function main() {
       fs.writeFileSync(path.join(o.outDir, `frame-${i}.raw`), rawLE(f.px));
       writePpm(path.join(o.outDir, `frame-${i}.ppm`), f.px, w, h);
     }
-    if (o.json) {
+    if (o.json && !o.average) {
       process.stdout.write(JSON.stringify({
-        target: 'rp2040-sim', what: `scene:${f.scene}`, numeric: o.numeric, variant: o.variant,
+        target: 'rp2040-sim', what: `scene:${f.scene}`, numeric: o.numeric, variant: o.variant, cores,
         frame: f.frame, width: w, height: h,
         cycles, per: 'frame', cpu_hz: cpuHz, us: Math.round(f.ns / 1000),
         fps: Number((1e9 / f.ns).toFixed(3)), spi_bytes: f.spi_bytes,
       }) + '\n');
     }
   });
+  if (o.json && o.average) {
+    /* runs of consecutive frames of one scene: the mean frame */
+    const runs = [];
+    for (const f of frames) {
+      const r = runs[runs.length - 1];
+      if (r && r.scene === f.scene) r.list.push(f); else runs.push({ scene: f.scene, list: [f] });
+    }
+    for (const r of runs) {
+      const n = r.list.length, cyc = r.list.map((f) => f.ns * cpuHz / 1e9);
+      const ns = r.list.reduce((a, f) => a + f.ns, 0) / n;
+      process.stdout.write(JSON.stringify({
+        target: 'rp2040-sim', what: `scene:${r.scene}`, numeric: o.numeric, variant: o.variant, cores,
+        frame: r.list[0].frame, frames: n, width: w, height: h,
+        cycles: Math.round(ns * cpuHz / 1e9), per: 'frame',
+        cycles_min: Math.round(Math.min(...cyc)), cycles_max: Math.round(Math.max(...cyc)),
+        cpu_hz: cpuHz, us: Math.round(ns / 1000), fps: Number((1e9 / ns).toFixed(3)),
+        spi_bytes: Math.round(r.list.reduce((a, f) => a + f.spi_bytes, 0) / n),
+      }) + '\n');
+    }
+  }
   if (o.outRaw) fs.writeFileSync(o.outRaw, rawLE(frames[frames.length - 1].px));
   const simS = (Date.now() - t0) / 1000;
   process.stderr.write(`rp2040sim: ${frames.length} frame(s), ${Math.round(clock.nanos * cpuHz / 1e9)} cycles emulated in ${simS.toFixed(1)} s\n`);

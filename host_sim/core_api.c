@@ -60,6 +60,7 @@ static void exact_methods(void *scene)
 {
     struct scene *s = scene;
     s->ras.persp_step = 1;
+    s->ras.lighting = RAS_LIGHT_EXACT;
 }
 
 const struct core_api API = {

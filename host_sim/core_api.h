@@ -38,7 +38,8 @@ struct core_api {
      * msg. Meaningful on the double core, whose scene holds the exact values. */
     int (*format)(const void *scene, const char *path, uint16_t w, uint16_t h, struct scene_format *f,
                   char *msg, size_t msglen);
-    /* Switches a loaded scene to the rasterizer's exact methods (perspective_step = 1):
+    /* Switches a loaded scene to the rasterizer's exact methods (perspective_step = 1,
+     * lighting = exact):
      * the reference of --compare. */
     void (*exact_methods)(void *scene);
 };

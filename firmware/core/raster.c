@@ -9,7 +9,7 @@ static size_t al(size_t n) { return (n + (ALIGN - 1)) & ~(size_t)(ALIGN - 1); }
 
 struct layout {
     size_t ctx, inst, verts, tri_rows, prim_rows, line_rows, lights, mips, mipmem, tex565, texmem, pv, tri_flags,
-        tri_shade, keep, depth, adj, smap, stencil, total;
+        tri_shade, keep, spec, depth, adj, smap, stencil, total;
     uint32_t nverts, ntris;
 };
 
@@ -52,9 +52,56 @@ static int frame_cache(const struct scene *s)
     return !s->ras.book_exact && !s->ras.wireframe;
 }
 
+/* The default path's shading: Phong lit at the corners (lighting = vertex,
+ * no chapter-15 feature) is Gouraud. */
+static int eff_shading(const struct scene *s)
+{
+    const struct ras_options *o = &s->ras;
+    if (o->shading == SHADE_PHONG && o->lighting == RAS_LIGHT_VERTEX && !o->book_exact && !o->shadow_map &&
+        !o->shadow_volume && !o->env_map)
+        return SHADE_GOURAUD;
+    return o->shading;
+}
+
+/* Fast Phong: the fast path, Phong shading, lighting = fast, no chapter-15 feature. */
+static int phong_fast(const struct scene *s)
+{
+    const struct ras_options *o = &s->ras;
+    return fast_path(s) && eff_shading(s) == SHADE_PHONG && o->lighting == RAS_LIGHT_FAST && !o->shadow_map &&
+           !o->shadow_volume && !o->env_map;
+}
+
+/* Distinct specular exponents of fast Phong's instances, one table each
+ * (at most RAS_SPEC_MAX; more take the exact path). idx (if not NULL)
+ * receives each instance's table: -1 no highlight, -2 none left. */
+#define RAS_SPEC_MAX 16
+static uint16_t spec_exponents(const struct scene *s, int16_t *idx, uint32_t exps[RAS_SPEC_MAX])
+{
+    uint32_t seen[RAS_SPEC_MAX];
+    uint16_t n = 0;
+    int fastp = phong_fast(s);
+    for (uint16_t i = 0; i < s->ninstances; i++) {
+        int16_t t = -1;
+        if (fastp && s->instances[i].specular >= 0) {
+            uint32_t e = (uint32_t)num_to_int(s->instances[i].specular);
+            for (uint16_t k = 0; k < n && t < 0; k++)
+                if (seen[k] == e) t = (int16_t)k;
+            if (t < 0 && n < RAS_SPEC_MAX) {
+                seen[n] = e;
+                if (exps) exps[n] = e;
+                t = (int16_t)n++;
+            } else if (t < 0) {
+                t = -2;
+            }
+        }
+        if (idx) idx[i] = t;
+    }
+    return n;
+}
+
 static int shade_cache(const struct scene *s)
 {
-    return frame_cache(s) && (s->ras.shading == SHADE_GOURAUD || s->ras.shading == SHADE_FLAT);
+    return frame_cache(s) && (eff_shading(s) == SHADE_GOURAUD || eff_shading(s) == SHADE_FLAT);
 }
 
 /* Triangle set-ups the fast path keeps from one strip to the next: one
@@ -94,6 +141,9 @@ static int make_layout(const struct scene *s, uint16_t w, uint16_t strip_rows, s
     L->tri_flags = off; off += al(frame_cache(s) ? L->ntris : 0);
     L->tri_shade = off; off += al(shade_cache(s) ? sizeof(num) * 3 * L->ntris : 0);
     L->keep = off; off += al(sizeof(struct ras_fast_state) * keep_slots(s, L->ntris));
+    L->spec = off;
+    uint16_t nspec = spec_exponents(s, NULL, NULL);
+    off += al(sizeof(uint16_t) * 257 * nspec) + al(sizeof(uint32_t) * nspec) + al(sizeof(int16_t) * s->ninstances);
     L->depth = off; off += al((size_t)depth_bytes(s) * w * strip_rows);
     L->adj = off; off += al(ras_ch15_adj_size(s, L->ntris));
     L->smap = off; off += al(ras_ch15_smap_size(s));
@@ -150,6 +200,17 @@ int raster_init(struct render_ctx *ctx)
     rc->tri_flags = frame_cache(s) ? base + L.tri_flags : NULL;
     rc->tri_shade = shade_cache(s) ? (num *)(void *)(base + L.tri_shade) : NULL;
     rc->nkeep = keep_slots(s, L.ntris);
+    rc->phong_fast = (uint8_t)phong_fast(s);
+    {
+        uint16_t nspec = spec_exponents(s, NULL, NULL);
+        uint8_t *sp = base + L.spec;
+        rc->spec_tab = (uint16_t *)(void *)sp;
+        rc->spec_scale = (uint32_t *)(void *)(sp + al(sizeof(uint16_t) * 257 * nspec));
+        rc->inst_spec = (int16_t *)(void *)(sp + al(sizeof(uint16_t) * 257 * nspec) + al(sizeof(uint32_t) * nspec));
+        uint32_t exps[RAS_SPEC_MAX];
+        spec_exponents(s, rc->inst_spec, exps);
+        for (uint16_t k = 0; k < nspec; k++) ras_spec_table(rc->spec_tab + 257 * k, exps[k], &rc->spec_scale[k]);
+    }
     rc->keep = rc->nkeep ? (struct ras_fast_state *)(void *)(base + L.keep) : NULL;
     rc->depth = base + L.depth;
     rc->adj = (uint16_t *)(void *)(base + L.adj);
@@ -391,6 +452,7 @@ int raster_begin_frame(struct render_ctx *ctx, uint16_t frame)
         vb += m->nverts;
         tb += m->ntris;
     }
+    if (rc->phong_fast) ras_fphong_frame(rc);
     ras_ch15_frame(rc);
     return 0;
 }
@@ -523,7 +585,7 @@ struct def_tri {
     rgb color;
     num flat_i, spec;
     int shading, tex;
-    int ai_i, ai_n, ai_uv;   /* attribute slots */
+    int ai_i, ai_n, ai_uv, ai_p; /* attribute slots */
     num lod_base, iz_eff;    /* trilinear: texels^2 per pixel at depth 1/iz_eff */
     int nmap;                /* normal map texture, -1: none */
     vec3 tan_u, tan_v;       /* unit tangents along +u and toward the image's top (-v) */
@@ -592,18 +654,43 @@ static void default_pixel(struct ras_ctx *rc, int col, int row, const num *a, nu
 /* The fast span loops' description of a triangle; 0 when it needs the
  * exact per-pixel path (Phong shading, chapter 15 passes, filtered or
  * non-power-of-two textures, screen-linear uv, textures under flat shading). */
-static int fast_setup(const struct ras_ctx *rc, const struct def_tri *dt, struct ras_fast_tri *ft)
+/* Colour levels of RGB565 in Q10, round(c * L * 1024 / 255); 0 when a
+ * channel lies outside 0..255. */
+static int levels_q10(rgb c, struct ras_fast_tri *ft)
+{
+    int32_t r = ras_num_to_fix(c.r, 31 * 1024 * 2), g = ras_num_to_fix(c.g, 63 * 1024 * 2),
+            b = ras_num_to_fix(c.b, 31 * 1024 * 2);
+    ft->kr = r <= 0 ? 0 : (uint32_t)(r + 255) / 510;
+    ft->kg = g <= 0 ? 0 : (uint32_t)(g + 255) / 510;
+    ft->kb = b <= 0 ? 0 : (uint32_t)(b + 255) / 510;
+    return !(ft->kr > 31u * 1024 || ft->kg > 63u * 1024 || ft->kb > 31u * 1024);
+}
+
+static int fast_setup(const struct ras_ctx *rc, const struct def_tri *dt, struct ras_fast_tri *ft, ptrdiff_t inst)
 {
     const struct ras_options *o = &rc->s->ras;
     if (!rc->fast || rc->depth_only || rc->depth_func != RAS_DEPTH_LESS_WRITE || dt->nmap >= 0) return 0;
-    if (dt->shading == SHADE_PHONG) return 0;
-    int gour = dt->shading == SHADE_GOURAUD;
+    int gour = dt->shading == SHADE_GOURAUD, phong = dt->shading == SHADE_PHONG;
+    if (phong && (!rc->phong_fast || !rc->fp.ok || rc->inst_spec[inst] == -2)) return 0;
     ft->ai_i = dt->ai_i;
     ft->ai_uv = dt->ai_uv;
+    if (phong) {
+        ft->ai_n = dt->ai_n;
+        ft->ai_p = dt->ai_p;
+        ft->fp = &rc->fp;
+        int16_t st = rc->inst_spec[inst];
+        ft->spec = st >= 0 ? rc->spec_tab + 257 * st : NULL;
+        ft->spec_scale = st >= 0 ? rc->spec_scale[st] : 0;
+        ft->spec_umax = st >= 0 ? (256u << 16) / ft->spec_scale : 0;
+        if (dt->tex < 0) {
+            ft->kind = RAS_FT_PHONG;
+            return levels_q10(dt->color, ft);
+        }
+    }
     if (dt->tex >= 0) {
         const struct ras_tex565 *t5 = &rc->tex565[dt->tex];
         if (!t5->p || !o->perspective_uv || dt->shading == SHADE_FLAT) return 0;
-        ft->kind = (uint8_t)(gour ? RAS_FT_TEX_GOURAUD : RAS_FT_TEX);
+        ft->kind = (uint8_t)(phong ? RAS_FT_PHONG_TEX : (gour ? RAS_FT_TEX_GOURAUD : RAS_FT_TEX));
         ft->tex = t5->p;
         ft->wlog2 = t5->wlog2;
         ft->wmask = (1u << t5->wlog2) - 1;
@@ -616,13 +703,7 @@ static int fast_setup(const struct ras_ctx *rc, const struct def_tri *dt, struct
     }
     if (gour) {
         ft->kind = RAS_FT_GOURAUD;
-        /* colour in RGB565 levels, Q10: round(c * L * 1024 / 255) */
-        int32_t r = ras_num_to_fix(dt->color.r, 31 * 1024 * 2), g = ras_num_to_fix(dt->color.g, 63 * 1024 * 2),
-                b = ras_num_to_fix(dt->color.b, 31 * 1024 * 2);
-        ft->kr = r <= 0 ? 0 : (uint32_t)(r + 255) / 510;
-        ft->kg = g <= 0 ? 0 : (uint32_t)(g + 255) / 510;
-        ft->kb = b <= 0 ? 0 : (uint32_t)(b + 255) / 510;
-        if (ft->kr > 31u * 1024 || ft->kg > 63u * 1024 || ft->kb > 31u * 1024) return 0;
+        if (!levels_q10(dt->color, ft)) return 0;
         /* the same levels in Q3 (rounded from Q10), red and blue packed */
         ft->krb = ((ft->kr + 64) >> 7) << 16 | ((ft->kb + 64) >> 7);
         ft->kg8 = (ft->kg + 64) >> 7;
@@ -672,7 +753,7 @@ static void tri_cache(struct ras_ctx *rc, const struct ras_instance *in, const s
     rc->tri_flags[gi] = (uint8_t)(RAS_TRI_LIVE | (front ? RAS_TRI_FRONT : 0));
     if (!rc->tri_shade) return;
     num *sh = rc->tri_shade + 3 * (size_t)gi;
-    if (rc->s->ras.shading == SHADE_GOURAUD)
+    if (eff_shading(rc->s) == SHADE_GOURAUD)
         for (int k = 0; k < 3; k++) sh[k] = compute_illumination(rc, V[k], N[k], in->specular);
     else
         sh[0] = compute_illumination(rc, tri_centre(V), N[0], in->specular);
@@ -711,12 +792,13 @@ static void default_render_triangle(struct ras_ctx *rc, const struct ras_instanc
     struct def_tri dt;
     dt.color = t->color;
     dt.spec = in->specular;
-    dt.shading = o->shading;
+    const int sh = eff_shading(rc->s);
+    dt.shading = sh;
     dt.tex = (in->texture >= 0 && in->texture < rc->s->ntextures && m->has_uvs) ? in->texture : -1;
     dt.flat_i = NUM_ONE;
-    dt.ai_i = dt.ai_n = dt.ai_uv = 0;
+    dt.ai_i = dt.ai_n = dt.ai_uv = dt.ai_p = 0;
     dt.nmap = -1;
-    if (o->shading == SHADE_PHONG && in->normal_map >= 0 && in->normal_map < rc->s->ntextures && m->has_uvs) {
+    if (sh == SHADE_PHONG && in->normal_map >= 0 && in->normal_map < rc->s->ntextures && m->has_uvs) {
         /* tangents from the uv derivatives of this triangle */
         vec3 e1 = v3_sub(V[1], V[0]), e2 = v3_sub(V[2], V[0]);
         num du1 = num_sub(t->uv[1].u, t->uv[0].u), dv1 = num_sub(t->uv[1].v, t->uv[0].v);
@@ -734,21 +816,24 @@ static void default_render_triangle(struct ras_ctx *rc, const struct ras_instanc
     }
     struct ras_cv cin[3], poly[RAS_CLIP_MAX];
     int na = 0;
-    if (o->shading == SHADE_GOURAUD) dt.ai_i = na++;
-    if (o->shading == SHADE_PHONG) { dt.ai_n = na; na += 3; }
+    if (sh == SHADE_GOURAUD) dt.ai_i = na++;
+    if (sh == SHADE_PHONG) { dt.ai_n = na; na += 3; }
+    /* fast Phong also needs the camera-space position at each pixel */
+    if (sh == SHADE_PHONG && rc->phong_fast) { dt.ai_p = na; na += 3; }
     int uv = dt.tex >= 0 || dt.nmap >= 0;
     if (uv) { dt.ai_uv = na; na += 2; }
     for (int k = 0; k < 3; k++) {
         cin[k].p = V[k];
-        if (o->shading == SHADE_GOURAUD)
+        if (sh == SHADE_GOURAUD)
             cin[k].a[dt.ai_i] = shade ? shade[k] : compute_illumination(rc, V[k], N[k], dt.spec);
-        if (o->shading == SHADE_PHONG) {
+        if (sh == SHADE_PHONG) {
             vec3 n = v3_normalize(N[k]);
             cin[k].a[dt.ai_n] = n.x; cin[k].a[dt.ai_n + 1] = n.y; cin[k].a[dt.ai_n + 2] = n.z;
+            if (rc->phong_fast) { cin[k].a[dt.ai_p] = V[k].x; cin[k].a[dt.ai_p + 1] = V[k].y; cin[k].a[dt.ai_p + 2] = V[k].z; }
         }
         if (uv) { cin[k].a[dt.ai_uv] = t->uv[k].u; cin[k].a[dt.ai_uv + 1] = t->uv[k].v; }
     }
-    if (o->shading == SHADE_FLAT) dt.flat_i = shade ? shade[0] : compute_illumination(rc, tri_centre(V), N[0], dt.spec);
+    if (sh == SHADE_FLAT) dt.flat_i = shade ? shade[0] : compute_illumination(rc, tri_centre(V), N[0], dt.spec);
     struct ras_sv sv[RAS_CLIP_MAX];
     int n;
     const struct ras_pv *pv = rc->pv ? rc->pv + ri->vbase : NULL;
@@ -779,7 +864,7 @@ static void default_render_triangle(struct ras_ctx *rc, const struct ras_instanc
     }
     const struct ras_texture *tx = dt.tex >= 0 ? &rc->s->textures[dt.tex] : NULL;
     struct ras_fast_tri ft;
-    int fast = fast_setup(rc, &dt, &ft);
+    int fast = fast_setup(rc, &dt, &ft, ri - rc->inst);
     for (int k = 1; k + 1 < n; k++) {
         const struct ras_sv *a = &sv[0], *b = &sv[k], *c = &sv[k + 1];
         if (fast) {

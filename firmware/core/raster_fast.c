@@ -29,6 +29,8 @@
 #define FT_TEX RAS_FT_TEX
 #define FT_TEX_GOURAUD RAS_FT_TEX_GOURAUD
 #define FT_GOURAUD_SAT RAS_FT_GOURAUD_SAT
+#define FT_PHONG RAS_FT_PHONG
+#define FT_PHONG_TEX RAS_FT_PHONG_TEX
 
 static void ras_565_to_888(uint16_t c, uint8_t *o)
 {
@@ -85,10 +87,10 @@ struct fpersp {
     int t;                   /* edge values >> t < 2^15 */
     uint32_t area_t;         /* area >> t */
     uint32_t dn[3];          /* near/z of the corners >> s, < 2^16 */
-    int na;                  /* attributes: 1 (intensity), 2 (u, v) or 3 (u, v, intensity) */
-    int32_t a0[3];           /* corner 0's value in the span format, |a0| < 2^30 */
-    int32_t d1[3], d2[3];    /* (corner 1 - corner 0), (corner 2 - corner 0) >> sh: < 2^14 */
-    int sh[3];               /* <= 16 */
+    int na;                  /* attributes (SPAN_NA of the kind) */
+    int32_t a0[RAS_FAST_NA]; /* corner 0's value in the span format, |a0| < 2^30 */
+    int32_t d1[RAS_FAST_NA], d2[RAS_FAST_NA]; /* (corner 1 - corner 0), (corner 2 - corner 0) >> sh: < 2^14 */
+    int sh[RAS_FAST_NA];     /* <= 16 */
     int u;                   /* S >> u < 2^15 for every S of the triangle */
 };
 
@@ -139,6 +141,156 @@ static const uint32_t fast_inv_tab[33] = {
     0, 65536, 32768, 21845, 16384, 13107, 10923, 9362, 8192, 7282, 6554, 5958, 5461, 5041, 4681, 4369, 4096,
     3855, 3641, 3449, 3277, 3121, 2979, 2849, 2731, 2621, 2521, 2427, 2341, 2260, 2185, 2114, 2048,
 };
+
+/* ---- fast Phong: lighting per pixel in 32-bit integers ------------------- */
+
+/* 2^15 / sqrt(M) at the middle of 96 intervals of M in [1, 4):
+ * round(32768 / sqrt((32 + i + 0.5) / 32)). */
+static const uint16_t rsq_tab[96] = {
+    32515, 32026, 31558, 31111, 30682, 30270, 29874, 29494, 29127, 28774, 28434, 28105,
+    27787, 27480, 27183, 26895, 26617, 26346, 26084, 25830, 25583, 25342, 25109, 24882,
+    24660, 24445, 24235, 24031, 23831, 23637, 23447, 23262, 23080, 22904, 22731, 22562,
+    22396, 22235, 22077, 21922, 21770, 21621, 21476, 21333, 21193, 21056, 20921, 20789,
+    20660, 20533, 20408, 20285, 20165, 20047, 19930, 19816, 19704, 19594, 19485, 19378,
+    19273, 19170, 19068, 18968, 18870, 18773, 18677, 18583, 18490, 18399, 18309, 18220,
+    18133, 18047, 17962, 17878, 17795, 17714, 17634, 17554, 17476, 17399, 17323, 17248,
+    17174, 17100, 17028, 16957, 16886, 16817, 16748, 16680, 16613, 16546, 16481, 16416
+};
+
+/* v scaled to unit length in Q14 (v's components below 2^15 in any one
+ * format); a zero vector stays zero. Table and one Newton step: relative
+ * error below 2^-13. */
+static inline void unit3(int32_t v[3])
+{
+    uint32_t m = (uint32_t)(v[0] * v[0]) + (uint32_t)(v[1] * v[1]) + (uint32_t)(v[2] * v[2]);
+    if (!m) return;
+    /* m << k in [2^30, 2^32) with k even, found by halving steps (no CLZ
+     * instruction on ARMv6-M) */
+    int k = 0;
+    if (m < (1u << 16)) { m <<= 16; k = 16; }
+    if (m < (1u << 24)) { m <<= 8; k += 8; }
+    if (m < (1u << 28)) { m <<= 4; k += 4; }
+    if (m < (1u << 30)) { m <<= 2; k += 2; }
+    uint32_t y = rsq_tab[(m >> 25) - 32];    /* 2^15 / sqrt(m / 2^30) */
+    uint32_t x = ((m >> 16) * ((y * y) >> 15)) >> 14;
+    y = (y * (3u * 32768u - x)) >> 16;
+    /* v / sqrt(s) = v * y * 2^(k/2) / 2^30, in Q14 */
+    int sh = 16 - (k >> 1);
+    v[0] = asr32(v[0] * (int32_t)y, sh);
+    v[1] = asr32(v[1] * (int32_t)y, sh);
+    v[2] = asr32(v[2] * (int32_t)y, sh);
+}
+
+static inline int32_t dot14(const int32_t a[3], const int32_t b[3])
+{
+    return asr32(a[0] * b[0] + a[1] * b[1] + a[2] * b[2], 14);
+}
+
+/* cos^e from the table at c (Q14, 0 < c <= 2^14). */
+static inline int32_t spec_pow(const struct ras_fast_tri *ft, int32_t c)
+{
+    uint32_t u = (uint32_t)((1 << 14) - c);
+    if (u >= ft->spec_umax) return 0;                      /* beyond the table: below e^-8 */
+    uint32_t k = u * ft->spec_scale;                       /* Q16 index, < 2^24 */
+    uint32_t i = k >> 16;
+    int32_t a = ft->spec[i], b = ft->spec[i + 1];
+    return a + asr32((b - a) * (int32_t)((k & 0xFFFFu) >> 2), 14);
+}
+
+/* Intensity in Q12 at a pixel with normal n (any length, Q14 scale) and
+ * camera-space position p (Q(pq)): the default path's compute_illumination
+ * (normal normalised, V = -P) in integers. */
+static uint32_t phong_light(const struct ras_fast_tri *ft, const int32_t *np)
+{
+    const struct ras_fphong *fp = ft->fp;
+    int32_t n[3] = { np[0], np[1], np[2] }, v[3] = { -np[3], -np[4], -np[5] };
+    unit3(n);
+    unit3(v);
+    /* R.V = 2 (N.L)(N.V) - L.V for R = 2 (N.L) N - L */
+    const int32_t nv = dot14(n, v);
+    int32_t i = fp->ambient;
+    const int spec = fp->specular && ft->spec, diff = fp->diffuse;
+    for (int k = 0; k < fp->nl; k++) {
+        int32_t L[3];
+        const int32_t *lv = fp->l[k].v;
+        if (fp->l[k].type == LIGHT_DIRECTIONAL) {
+            L[0] = lv[0]; L[1] = lv[1]; L[2] = lv[2];
+        } else {
+            L[0] = lv[0] - np[3]; L[1] = lv[1] - np[4]; L[2] = lv[2] - np[5];
+            unit3(L);
+        }
+        int32_t nl = dot14(n, L);
+        if (diff && nl > 0) i += asr32(fp->l[k].li * nl, 14);
+        if (spec) {
+            int32_t rv = asr32(2 * nl * nv, 14) - dot14(L, v);
+            if (rv > 0) i += asr32(fp->l[k].li * spec_pow(ft, rv > (1 << 14) ? (1 << 14) : rv), 14);
+        }
+    }
+    if (i < 0) i = 0;
+    if (i > (8 << 14) - 1) i = (8 << 14) - 1;
+    return (uint32_t)i >> 2;
+}
+
+void ras_spec_table(uint16_t t[257], uint32_t e, uint32_t *scale)
+{
+    /* the table spans 1 - cos in [0, w], w = min(1, 8/e): beyond it cos^e < e^-8 */
+    uint32_t w16 = e > 8 ? (uint32_t)((8u << 16) / e) : (1u << 16);   /* w in Q16 */
+    for (int k = 0; k <= 256; k++) {
+        num c = num_sub(NUM_ONE, num_div_int(num_mul_int(num_from_ratio((int32_t)w16, 65536), k), 256));
+        int32_t v = ras_num_to_fix(num_powi(c, e), 1 << 14);
+        t[k] = (uint16_t)(v < 0 ? 0 : (v > (1 << 14) ? (1 << 14) : v));
+    }
+    /* index = (1 - cos) * 256 / w: Q16 index per Q14 unit */
+    *scale = (uint32_t)(((uint64_t)256 << 18) / w16);
+}
+
+void ras_fphong_frame(struct ras_ctx *rc)
+{
+    struct ras_fphong *fp = &rc->fp;
+    const struct scene *s = rc->s;
+    fp->ok = 0;
+    /* the largest camera-space coordinate of the frame's vertices and point lights */
+    num mx = NUM_ZERO;
+    for (uint32_t k = 0; k < rc->nverts; k++) {
+        vec3 c = rc->verts[k].c;
+        mx = num_max(mx, num_max(num_abs(c.x), num_max(num_abs(c.y), num_abs(c.z))));
+    }
+    int nl = 0;
+    fp->ambient = 0;
+    for (uint16_t k = 0; k < s->nlights; k++) {
+        const struct ras_light *l = &rc->lights[k];
+        if (l->type == LIGHT_AMBIENT) { fp->ambient += ras_num_to_fix(l->intensity, 1 << 14); continue; }
+        if (nl == RAS_FP_LIGHTS) return;
+        if (l->type == LIGHT_POINT) mx = num_max(mx, num_max(num_abs(l->v.x), num_max(num_abs(l->v.y), num_abs(l->v.z))));
+        nl++;
+    }
+    int pq = 0;
+    while (pq < 24 && ras_num_to_fix(mx, (int32_t)1 << (pq + 1)) < (1 << 14)) pq++;
+    if (ras_num_to_fix(mx, (int32_t)1 << pq) >= (1 << 14)) return;   /* beyond 2^14 units: exact Phong */
+    fp->pq = (int8_t)pq;
+    fp->nl = 0;
+    for (uint16_t k = 0; k < s->nlights; k++) {
+        const struct ras_light *l = &rc->lights[k];
+        if (l->type == LIGHT_AMBIENT) continue;
+        int j = fp->nl++;
+        fp->l[j].type = l->type;
+        int32_t li = ras_num_to_fix(l->intensity, 1 << 14);
+        fp->l[j].li = li < 0 ? 0 : (li > (8 << 14) - 1 ? (8 << 14) - 1 : li);
+        if (l->type == LIGHT_DIRECTIONAL) {
+            vec3 d = v3_normalize(l->v);
+            fp->l[j].v[0] = ras_num_to_fix(d.x, 1 << 14);
+            fp->l[j].v[1] = ras_num_to_fix(d.y, 1 << 14);
+            fp->l[j].v[2] = ras_num_to_fix(d.z, 1 << 14);
+        } else {
+            fp->l[j].v[0] = ras_num_to_fix(l->v.x, (int32_t)1 << pq);
+            fp->l[j].v[1] = ras_num_to_fix(l->v.y, (int32_t)1 << pq);
+            fp->l[j].v[2] = ras_num_to_fix(l->v.z, (int32_t)1 << pq);
+        }
+    }
+    fp->diffuse = s->ras.diffuse;
+    fp->specular = s->ras.specular;
+    fp->ok = 1;
+}
 
 /* A triangle's constants for its row spans. */
 struct ftri {
@@ -315,18 +467,83 @@ typedef uint32_t (*span_fn)(const struct ftri *T, const struct frow *R);
 #define SPAN_EXTRA 1
 #include "raster_span.h"
 
+#define SPAN_NAME span_phong_nz
+#define SPAN_DEPTH 0
+#define SPAN_KIND FT_PHONG
+#define SPAN_EXTRA 0
+#include "raster_span.h"
+#define SPAN_NAME span_phong_z16
+#define SPAN_DEPTH 2
+#define SPAN_KIND FT_PHONG
+#define SPAN_EXTRA 0
+#include "raster_span.h"
+#define SPAN_NAME span_phong_z32
+#define SPAN_DEPTH 4
+#define SPAN_KIND FT_PHONG
+#define SPAN_EXTRA 0
+#include "raster_span.h"
+#define SPAN_NAME span_phong_nz_x
+#define SPAN_DEPTH 0
+#define SPAN_KIND FT_PHONG
+#define SPAN_EXTRA 1
+#include "raster_span.h"
+#define SPAN_NAME span_phong_z16_x
+#define SPAN_DEPTH 2
+#define SPAN_KIND FT_PHONG
+#define SPAN_EXTRA 1
+#include "raster_span.h"
+#define SPAN_NAME span_phong_z32_x
+#define SPAN_DEPTH 4
+#define SPAN_KIND FT_PHONG
+#define SPAN_EXTRA 1
+#include "raster_span.h"
+#define SPAN_NAME span_phongt_nz
+#define SPAN_DEPTH 0
+#define SPAN_KIND FT_PHONG_TEX
+#define SPAN_EXTRA 0
+#include "raster_span.h"
+#define SPAN_NAME span_phongt_z16
+#define SPAN_DEPTH 2
+#define SPAN_KIND FT_PHONG_TEX
+#define SPAN_EXTRA 0
+#include "raster_span.h"
+#define SPAN_NAME span_phongt_z32
+#define SPAN_DEPTH 4
+#define SPAN_KIND FT_PHONG_TEX
+#define SPAN_EXTRA 0
+#include "raster_span.h"
+#define SPAN_NAME span_phongt_nz_x
+#define SPAN_DEPTH 0
+#define SPAN_KIND FT_PHONG_TEX
+#define SPAN_EXTRA 1
+#include "raster_span.h"
+#define SPAN_NAME span_phongt_z16_x
+#define SPAN_DEPTH 2
+#define SPAN_KIND FT_PHONG_TEX
+#define SPAN_EXTRA 1
+#include "raster_span.h"
+#define SPAN_NAME span_phongt_z32_x
+#define SPAN_DEPTH 4
+#define SPAN_KIND FT_PHONG_TEX
+#define SPAN_EXTRA 1
+#include "raster_span.h"
+
 /* [extra][kind][depth 0/2/4 -> 0/1/2] */
-static const span_fn span_table[2][5][3] = {
+static const span_fn span_table[2][7][3] = {
     { { span_flat_nz, span_flat_z16, span_flat_z32 },
       { span_gour_nz, span_gour_z16, span_gour_z32 },
       { span_tex_nz, span_tex_z16, span_tex_z32 },
       { span_texg_nz, span_texg_z16, span_texg_z32 },
-      { span_gsat_nz, span_gsat_z16, span_gsat_z32 } },
+      { span_gsat_nz, span_gsat_z16, span_gsat_z32 },
+      { span_phong_nz, span_phong_z16, span_phong_z32 },
+      { span_phongt_nz, span_phongt_z16, span_phongt_z32 } },
     { { span_flat_nz_x, span_flat_z16_x, span_flat_z32_x },
       { span_gour_nz_x, span_gour_z16_x, span_gour_z32_x },
       { span_tex_nz_x, span_tex_z16_x, span_tex_z32_x },
       { span_texg_nz_x, span_texg_z16_x, span_texg_z32_x },
-      { span_gsat_nz_x, span_gsat_z16_x, span_gsat_z32_x } },
+      { span_gsat_nz_x, span_gsat_z16_x, span_gsat_z32_x },
+      { span_phong_nz_x, span_phong_z16_x, span_phong_z32_x },
+      { span_phongt_nz_x, span_phongt_z16_x, span_phongt_z32_x } },
 };
 
 /* ---- set-up -------------------------------------------------------------- */
@@ -457,8 +674,8 @@ static int fast_setup(struct ras_ctx *rc, const struct ras_sv *v0, const struct 
     uint32_t dz = 0;
     if (depth) {
         int64_t dd1 = (int64_t)v1->depth - v0->depth, dd2 = (int64_t)v2->depth - v0->depth, rem, f;
-        int64_t w1t = edge(ea[1]->x, ea[1]->y, eb[1]->x, eb[1]->y, px, ((int64_t)rtop << sb) + half);
-        int64_t w2t = edge(ea[2]->x, ea[2]->y, eb[2]->x, eb[2]->y, px, ((int64_t)rtop << sb) + half);
+        int64_t w1t = edge(ea[1]->x, ea[1]->y, eb[1]->x, eb[1]->y, px, (int64_t)rtop * one + half);
+        int64_t w2t = edge(ea[2]->x, ea[2]->y, eb[2]->x, eb[2]->y, px, (int64_t)rtop * one + half);
         int64_t q = ras_floordiv(dd1 * w1t + dd2 * w2t, area, &rem);
         zrow = ((int64_t)v0->depth + q) * 65536 + ras_floordiv(rem << 16, area, &f);
         q = ras_floordiv(dd1 * a[1] + dd2 * a[2], area, &rem);
@@ -506,7 +723,16 @@ static int fast_setup(struct ras_ctx *rc, const struct ras_sv *v0, const struct 
         uint32_t smax = pp->area_t * dnmax;  /* < 2^31 */
         pp->u = 0;
         while ((smax >> pp->u) >= (1u << 15)) pp->u++;
-        if (ft->kind == FT_TEX || ft->kind == FT_TEX_GOURAUD) {
+        if (ft->kind == FT_PHONG || ft->kind == FT_PHONG_TEX) {
+            /* normal (Q14) and camera-space position (Q(pq)) */
+            for (int c = 0; c < 6; c++) {
+                int slot = c < 3 ? ft->ai_n + c : ft->ai_p + c - 3;
+                int32_t sc = c < 3 ? 1 << 14 : (int32_t)1 << ft->fp->pq, x[3];
+                for (int i = 0; i < 3; i++) x[i] = ras_num_to_fix(vv[i]->a[slot], sc);
+                if (!persp_attr(pp, na++, x[0], x[1], x[2])) return -1;
+            }
+        }
+        if (ft->kind == FT_TEX || ft->kind == FT_TEX_GOURAUD || ft->kind == FT_PHONG_TEX) {
             int32_t u[3], v[3];
             for (int i = 0; i < 3; i++) {
                 u[i] = ras_num_to_fix(vv[i]->a[ft->ai_uv], ft->uscale);
@@ -514,7 +740,7 @@ static int fast_setup(struct ras_ctx *rc, const struct ras_sv *v0, const struct 
             }
             if (!persp_attr(pp, na++, u[0], u[1], u[2]) || !persp_attr(pp, na++, v[0], v[1], v[2])) return -1;
         }
-        if (ft->kind != FT_TEX) {
+        if (ft->kind == FT_GOURAUD || ft->kind == FT_TEX_GOURAUD) {
             int32_t li[3], imax = 0;
             for (int i = 0; i < 3; i++) {
                 int32_t x = ras_num_to_fix(vv[i]->a[ft->ai_i], 1 << 20);

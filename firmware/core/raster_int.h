@@ -52,6 +52,18 @@ struct ras_tex565 { const uint16_t *p; uint8_t wlog2, hlog2; };
 /* Mip chain of a texture, built in work memory when the scene has none. */
 struct ras_mips { uint8_t levels; uint16_t w[12], h[12]; const uint8_t *p[12]; };
 
+#define RAS_FP_LIGHTS 8           /* lights of fast Phong at most */
+
+/* Fast Phong's lights of the current frame in integers (raster_fast.c). */
+struct ras_fphong {
+    uint8_t ok;              /* every position fits Q(pq) below 2^14 this frame */
+    int8_t pq;               /* camera-space positions in Q(pq) */
+    uint8_t nl, diffuse, specular;
+    int32_t ambient;         /* Q14 */
+    struct { uint8_t type; int32_t li; int32_t v[3]; } l[RAS_FP_LIGHTS];
+                             /* li Q14; v: unit direction toward the light in Q14
+                                (directional) or position in Q(pq) (point) */
+};
 struct ras_ctx {
     const struct scene *s;
     uint16_t w, h, strip_rows;
@@ -81,6 +93,11 @@ struct ras_ctx {
     uint8_t *tri_flags;
     num *tri_shade;          /* 3 a triangle: Gouraud corners, or the flat intensity first */
     struct ras_fast_state *keep; /* fast path: triangle set-ups kept between strips */
+    uint8_t phong_fast;      /* Phong by fast Phong (lighting = fast) */
+    struct ras_fphong fp;    /* its lights, per frame */
+    uint16_t *spec_tab;      /* its specular tables, 257 entries each */
+    uint32_t *spec_scale;    /* their index steps */
+    int16_t *inst_spec;      /* per instance: its table, -1: no highlight */
     uint16_t nkeep;          /* their number (triangle i in slot i % nkeep) */
     uint8_t *depth;          /* strip_rows * w entries */
     /* depth test of ras_fill_triangle: RAS_DEPTH_LESS_WRITE (normal),
@@ -160,6 +177,14 @@ uint32_t ras_fill_triangle(struct ras_ctx *rc, const struct ras_sv *v0, const st
 #define RAS_FT_TEX 2
 #define RAS_FT_TEX_GOURAUD 3
 #define RAS_FT_GOURAUD_SAT 4      /* Gouraud whose colour x intensity may pass 255 */
+#define RAS_FT_PHONG 5            /* fast Phong: normal and position per pixel */
+#define RAS_FT_PHONG_TEX 6        /* the same times a texel */
+#define RAS_FAST_NA 8             /* attributes of the fast path at most */
+/* Lights of the frame into rc->fp (after the camera-space lights and vertices). */
+void ras_fphong_frame(struct ras_ctx *rc);
+/* cos^e at 257 points in Q14 (raster_fast.c looks it up); *scale receives
+ * the index step, Q16 index units per Q14 unit of 1 - cos. */
+void ras_spec_table(uint16_t t[257], uint32_t e, uint32_t *scale);
 struct ras_fast_tri {
     uint8_t kind;            /* RAS_FT_* */
     uint16_t c565;           /* flat: the colour */
@@ -170,9 +195,13 @@ struct ras_fast_tri {
     uint32_t wmask, hmask, wlog2;
     int32_t uscale, vscale;  /* u, v to 16.16 texel coordinates */
     int ai_i, ai_uv;         /* attribute slots of intensity and u, v in ras_sv.a */
+    int ai_n, ai_p;          /* fast Phong: slots of the normal and the camera-space position */
+    const uint16_t *spec;    /* fast Phong: specular table (ras_spec_table), NULL: none */
+    uint32_t spec_scale, spec_umax; /* index step; 1 - cos (Q14) past the table's end */
+    const struct ras_fphong *fp;
 };
 /* A triangle's set-up kept from one strip to the next (raster_fast.c). */
-struct ras_fast_state { uint64_t mem[48]; uint32_t tri; };
+struct ras_fast_state { uint64_t mem[64]; uint32_t tri; };
 /* Fills a triangle (clockwise on screen) with the fast span loops, depth
  * test RAS_DEPTH_LESS_WRITE, in the current strip. Returns the pixels
  * written, or -1 (nothing drawn) when the triangle does not fit the fast

@@ -11,7 +11,12 @@
  * span's first pixel, every T->seg pixels and at its last pixel, linear in
  * between. Returns the pixels written when SPAN_EXTRA, else 0. */
 
+/* the board's loops in fast memory; the host's variants (SPAN_EXTRA) never run there */
+#if SPAN_EXTRA
+static uint32_t SPAN_NAME(const struct ftri *T, const struct frow *R)
+#else
 RAS_HOT static uint32_t SPAN_NAME(const struct ftri *T, const struct frow *R)
+#endif
 {
     uint16_t *px = R->px;
     int32_t n = R->n;
@@ -32,17 +37,29 @@ RAS_HOT static uint32_t SPAN_NAME(const struct ftri *T, const struct frow *R)
 #define SPAN_NA 1
 #elif SPAN_KIND == FT_TEX
 #define SPAN_NA 2
+#elif SPAN_KIND == FT_PHONG
+#define SPAN_NA 6
+#elif SPAN_KIND == FT_PHONG_TEX
+#define SPAN_NA 8
 #else
 #define SPAN_NA 3
+#endif
+#if SPAN_KIND == FT_PHONG || SPAN_KIND == FT_PHONG_TEX
+#define SPAN_PHONG 1
+#else
+#define SPAN_PHONG 0
 #endif
 #if SPAN_KIND == FT_FLAT
     const uint16_t col = T->ft->c565;
 #else
-    int32_t w1 = R->w1, w2 = R->w2, cur[3], nxt[3];
+    int32_t w1 = R->w1, w2 = R->w2, cur[SPAN_NA], nxt[SPAN_NA];
     persp_at(&T->pp, SPAN_NA, w1, w2, cur);
     const int32_t seg = T->seg;
 #endif
-#if SPAN_KIND == FT_TEX || SPAN_KIND == FT_TEX_GOURAUD
+#if SPAN_KIND == FT_PHONG
+    const uint32_t kr = T->ft->kr, kg = T->ft->kg, kb = T->ft->kb;
+#endif
+#if SPAN_KIND == FT_TEX || SPAN_KIND == FT_TEX_GOURAUD || SPAN_KIND == FT_PHONG_TEX
     /* byte offsets of texels straight from the coordinates: u doubled, v
      * times twice the width, each masked to its integer bits */
     const uint8_t *tex = (const uint8_t *)T->ft->tex;
@@ -54,7 +71,7 @@ RAS_HOT static uint32_t SPAN_NAME(const struct ftri *T, const struct frow *R)
     while (n > 0) {
         int32_t m = n;
 #if SPAN_KIND != FT_FLAT
-        int32_t d[3] = { 0, 0, 0 };
+        int32_t d[SPAN_NA] = { 0 };
         if (n > seg) {          /* a whole segment, to the next one's first pixel */
             m = seg;
             w1 += T->sa1;
@@ -75,6 +92,13 @@ RAS_HOT static uint32_t SPAN_NAME(const struct ftri *T, const struct frow *R)
 #if SPAN_KIND == FT_TEX || SPAN_KIND == FT_TEX_GOURAUD
         uint32_t u = (uint32_t)cur[0] << 1, v = (uint32_t)cur[1] << vs;
         const uint32_t du = (uint32_t)d[0] << 1, dv = (uint32_t)d[1] << vs;
+#elif SPAN_KIND == FT_PHONG_TEX
+        uint32_t u = (uint32_t)cur[6] << 1, v = (uint32_t)cur[7] << vs;
+        const uint32_t du = (uint32_t)d[6] << 1, dv = (uint32_t)d[7] << vs;
+#endif
+#if SPAN_PHONG
+        int32_t at[6];
+        for (int j = 0; j < 6; j++) at[j] = cur[j];
 #endif
 #if SPAN_KIND == FT_GOURAUD
         uint32_t cr = (uint32_t)cur[0], cg = (uint32_t)cur[1], cb = (uint32_t)cur[2];
@@ -104,6 +128,14 @@ RAS_HOT static uint32_t SPAN_NAME(const struct ftri *T, const struct frow *R)
                 /* channel levels in Q16, half a level added: no channel
                  * passes its top level (the triangle's intensities allow it) */
                 uint16_t c = (uint16_t)((cr >> 16) << 11 | (cg >> 16) << 5 | cb >> 16);
+#elif SPAN_KIND == FT_PHONG
+                uint32_t ii = phong_light(T->ft, at);       /* Q12 */
+                uint32_t r = (kr * ii + (1u << 21)) >> 22, g = (kg * ii + (1u << 21)) >> 22,
+                         b = (kb * ii + (1u << 21)) >> 22;
+                if (r > 31) r = 31;
+                if (g > 63) g = 63;
+                if (b > 31) b = 31;
+                uint16_t c = (uint16_t)(r << 11 | g << 5 | b);
 #elif SPAN_KIND == FT_GOURAUD_SAT
                 uint32_t ii = li >> 8;                      /* Q12 */
                 uint32_t r = (kr * ii + (1u << 21)) >> 22, g = (kg * ii + (1u << 21)) >> 22,
@@ -114,9 +146,13 @@ RAS_HOT static uint32_t SPAN_NAME(const struct ftri *T, const struct frow *R)
                 uint16_t c = (uint16_t)(r << 11 | g << 5 | b);
 #else
                 uint16_t c = *(const uint16_t *)(const void *)(tex + (((v >> 16) & vm) | ((u >> 16) & um)));
-#if SPAN_KIND == FT_TEX_GOURAUD
+#if SPAN_KIND == FT_TEX_GOURAUD || SPAN_KIND == FT_PHONG_TEX
                 {
+#if SPAN_KIND == FT_PHONG_TEX
+                    uint32_t ii = phong_light(T->ft, at);   /* Q12 */
+#else
                     uint32_t ii = li >> 8;                  /* Q12 */
+#endif
                     uint32_t r = ((uint32_t)(c >> 11) * ii + (1u << 11)) >> 12,
                              g = ((uint32_t)((c >> 5) & 63) * ii + (1u << 11)) >> 12,
                              b = ((uint32_t)(c & 31) * ii + (1u << 11)) >> 12;
@@ -150,9 +186,12 @@ RAS_HOT static uint32_t SPAN_NAME(const struct ftri *T, const struct frow *R)
             zp++;
             z += dz;
 #endif
-#if SPAN_KIND == FT_TEX || SPAN_KIND == FT_TEX_GOURAUD
+#if SPAN_KIND == FT_TEX || SPAN_KIND == FT_TEX_GOURAUD || SPAN_KIND == FT_PHONG_TEX
             u += du;
             v += dv;
+#endif
+#if SPAN_PHONG
+            for (int j = 0; j < 6; j++) at[j] += d[j];
 #endif
 #if SPAN_KIND == FT_GOURAUD
             cr += dcr;
@@ -175,3 +214,4 @@ RAS_HOT static uint32_t SPAN_NAME(const struct ftri *T, const struct frow *R)
 #undef SPAN_KIND
 #undef SPAN_EXTRA
 #undef SPAN_NA
+#undef SPAN_PHONG

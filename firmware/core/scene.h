@@ -143,6 +143,11 @@ struct ras_instance {
 
 enum shading { SHADE_FLAT = 0, SHADE_GOURAUD = 1, SHADE_PHONG = 2, SHADE_NONE = 3 };
 
+/* How the default path lights Phong-shaded pixels: fast Phong (integer
+ * vectors, table powers), compute_illumination per pixel, or at the corners
+ * (Gouraud). */
+enum ras_lighting { RAS_LIGHT_FAST = 0, RAS_LIGHT_EXACT = 1, RAS_LIGHT_VERTEX = 2 };
+
 /* 2D canvas primitives of raster-01 … raster-04. */
 enum prim2d_kind {
     P2D_LINE_BROKEN = 0,  /* raster-01 DrawLineBroken */
@@ -190,6 +195,8 @@ struct ras_options {
     uint8_t persp_step;         /* default path: perspective-correct attributes every N pixels
                                    with the fast span loops, N = 8, 16, 32; 1: the exact
                                    per-pixel path; 0: 16 */
+    uint8_t lighting;           /* default path, Phong shading: RAS_LIGHT_FAST (0), RAS_LIGHT_EXACT,
+                                   RAS_LIGHT_VERTEX */
     uint8_t outlines;           /* raster-10's control: after each drawn triangle its edges with
                                    DrawLine in its colour x 0.75, no depth test (book path) */
 };

@@ -799,14 +799,15 @@ static void read_ras_options(struct parser *p, const struct node *n, struct ras_
                                         "normals", "diffuse", "specular", "uv", "transform", "camera_transform",
                                         "shadows", "shadow_volumes", "env_map", "subpixel_bits", "book_exact",
                                         "shadow_light", "shadow_map_size", "pcf", "env_reflect", "outlines",
-                                        "perspective_step", NULL };
+                                        "perspective_step", "lighting", NULL };
     static const char *const shadings[] = { "flat", "gouraud", "phong", "none", NULL };
     static const char *const clips[] = { "off", "book", "split", NULL };
     static const char *const normals[] = { "model", "computed", NULL };
     static const char *const uvs[] = { "linear", "perspective", NULL };
     static const char *const transforms[] = { "translate", "full", NULL };
     static const char *const shadows[] = { "off", "map", NULL };
-    const struct node *v[24];
+    static const char *const lightings[] = { "fast", "exact", "vertex", NULL };
+    const struct node *v[25];
     fields(p, n, "rasterizer", keys, v);
     if (v[0]) o->shading = (uint8_t)get_choice(p, v[0], "shading", shadings);
     if (v[1]) o->wireframe = (uint8_t)get_bool(p, v[1], "wireframe");
@@ -841,6 +842,7 @@ static void read_ras_options(struct parser *p, const struct node *n, struct ras_
         if (k != 1 && k != 8 && k != 16 && k != 32) FAIL_N(p, v[23], "perspective_step must be 1, 8, 16 or 32");
         o->persp_step = (uint8_t)k;
     }
+    if (v[24]) o->lighting = (uint8_t)get_choice(p, v[24], "lighting", lightings);
 }
 
 /* ---- models --------------------------------------------------------------- */

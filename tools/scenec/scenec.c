@@ -282,11 +282,11 @@ static void emit_scene(const struct scene *s, const char *id, const char *src, i
          "             .perspective_uv = %d, .instance_transform = %d, .camera_transform = %d, .shadow_map = %d,\n"
          "             .shadow_volume = %d, .env_map = %d, .subpixel_bits = %d, .book_exact = %d,\n"
          "             .shadow_light = %d, .shadow_map_size = %d, .pcf = %d, .env_reflect = %d, .outlines = %d,\n"
-         "             .persp_step = %d },\n",
+         "             .persp_step = %d, .lighting = %d },\n",
          o->shading, o->wireframe, o->project_truncate, o->clip, o->depth_test, o->depth_bits, o->backface_cull,
          o->computed_normals, o->diffuse, o->specular, o->perspective_uv, o->instance_transform, o->camera_transform,
          o->shadow_map, o->shadow_volume, o->env_map, o->subpixel_bits, o->book_exact,
-         o->shadow_light, o->shadow_map_size, o->pcf, o->env_reflect, o->outlines, o->persp_step);
+         o->shadow_light, o->shadow_map_size, o->pcf, o->env_reflect, o->outlines, o->persp_step, o->lighting);
     emit("};\n\n");
     flash_bytes += sizeof(struct scene) + strlen(s->name) + 1;
 

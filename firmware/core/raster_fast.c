@@ -83,15 +83,17 @@ static uint32_t rcp30(uint32_t s)
 }
 
 /* Perspective-correct attributes at a pixel from its edge values. */
-struct fpersp {
+struct fpersp {               /* (the scalars first: small offsets for ARMv6-M loads) */
     int t;                   /* edge values >> t < 2^15 */
+    int u;                   /* S >> u < 2^15 for every S of the triangle */
+    int na;                  /* attributes (SPAN_NA of the kind) */
     uint32_t area_t;         /* area >> t */
     uint32_t dn[3];          /* near/z of the corners >> s, < 2^16 */
-    int na;                  /* attributes (SPAN_NA of the kind) */
-    int32_t a0[RAS_FAST_NA]; /* corner 0's value in the span format, |a0| < 2^30 */
-    int32_t d1[RAS_FAST_NA], d2[RAS_FAST_NA]; /* (corner 1 - corner 0), (corner 2 - corner 0) >> sh: < 2^14 */
-    int sh[RAS_FAST_NA];     /* <= 16 */
-    int u;                   /* S >> u < 2^15 for every S of the triangle */
+    struct {
+        int32_t a0;          /* corner 0's value in the span format, |a0| < 2^30 */
+        int32_t d1, d2;      /* (corner 1 - corner 0), (corner 2 - corner 0) >> sh: < 2^14 */
+        int32_t sh;          /* <= 16 */
+    } at[RAS_FAST_NA];       /* (per attribute: the first ones at small offsets) */
 };
 
 static inline void persp_at(const struct fpersp *p, int na, int32_t w1, int32_t w2, int32_t *out)
@@ -114,7 +116,7 @@ static inline void persp_at(const struct fpersp *p, int na, int32_t w1, int32_t 
         q2 = (int32_t)((P2 * R) >> 14);
     }
     for (int j = 0; j < na; j++)
-        out[j] = p->a0[j] + asr32(q1 * p->d1[j] + q2 * p->d2[j], 16 - p->sh[j]);
+        out[j] = p->at[j].a0 + asr32(q1 * p->at[j].d1 + q2 * p->at[j].d2, 16 - p->at[j].sh);
 }
 
 /* Corner values c0..c2 of attribute j; 0 when they do not fit the
@@ -129,10 +131,10 @@ static int persp_attr(struct fpersp *p, int j, int32_t c0, int32_t c1, int32_t c
     int sh = 0;
     while ((m >> sh) >= (1u << 14)) sh++;
     if (sh > 16) return 0;
-    p->a0[j] = c0;
-    p->sh[j] = sh;
-    p->d1[j] = e1 >= 0 ? e1 >> sh : -(int32_t)(m1 >> sh);
-    p->d2[j] = e2 >= 0 ? e2 >> sh : -(int32_t)(m2 >> sh);
+    p->at[j].a0 = c0;
+    p->at[j].sh = sh;
+    p->at[j].d1 = e1 >= 0 ? e1 >> sh : -(int32_t)(m1 >> sh);
+    p->at[j].d2 = e2 >= 0 ? e2 >> sh : -(int32_t)(m2 >> sh);
     return 1;
 }
 
@@ -295,10 +297,10 @@ void ras_fphong_frame(struct ras_ctx *rc)
 /* A triangle's constants for its row spans. */
 struct ftri {
     const struct ras_fast_tri *ft;
-    struct fpersp pp;
     int32_t seg, slog;       /* segment length 2^slog */
     int32_t a1, a2;          /* per-column steps of edge values w1, w2 */
     int32_t sa1, sa2;        /* the same per segment */
+    struct fpersp pp;
 };
 
 /* One row's span. */

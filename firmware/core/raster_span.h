@@ -71,7 +71,7 @@ RAS_HOT static uint32_t SPAN_NAME(const struct ftri *T, const struct frow *R)
     while (n > 0) {
         int32_t m = n;
 #if SPAN_KIND != FT_FLAT
-        int32_t d[SPAN_NA] = { 0 };
+        int32_t d[SPAN_NA];
         if (n > seg) {          /* a whole segment, to the next one's first pixel */
             m = seg;
             w1 += T->sa1;
@@ -86,7 +86,7 @@ RAS_HOT static uint32_t SPAN_NAME(const struct ftri *T, const struct frow *R)
             for (int j = 0; j < SPAN_NA; j++)
                 d[j] = (int32_t)(num_smul32(nxt[j] - cur[j], (int32_t)fast_inv_tab[k]) >> 16);
         } else {
-            for (int j = 0; j < SPAN_NA; j++) nxt[j] = cur[j];
+            for (int j = 0; j < SPAN_NA; j++) { nxt[j] = cur[j]; d[j] = 0; }
         }
 #endif
 #if SPAN_KIND == FT_TEX || SPAN_KIND == FT_TEX_GOURAUD

@@ -13,7 +13,10 @@
  *   per "frame"  average over the scene's frames
  *   per "pixel"  that average / the average drawn pixels of a frame
  *   per "init"   render_init once
- * with pixels=P (average drawn pixels a frame) and frames=F. */
+ * with pixels=P (average drawn pixels a frame) and frames=F, for the scene
+ * as written (variant "default") and for each other method of the
+ * rasterizer's default path: "perspective_step=1" (the exact per-pixel
+ * path), 8, 16, 32 and, for Phong scenes, "lighting=exact", "lighting=vertex". */
 #include <string.h>
 #include "bench.h"
 #include "render.h"
@@ -44,9 +47,9 @@ static int frame(struct render_ctx *ctx, uint16_t f, uint32_t *pixels)
     return 0;
 }
 
-static void report(const char *per, uint64_t milli, uint32_t pixels, uint32_t frames)
+static void report(const char *variant, const char *per, uint64_t milli, uint32_t pixels, uint32_t frames)
 {
-    bench_report(BENCH_WHAT, NUM_NAME, "default", milli, per);
+    bench_report(BENCH_WHAT, NUM_NAME, variant, milli, per);
     bench_puts("BENCHX pixels=");
     bench_put_u64(pixels);
     bench_puts(" frames=");
@@ -54,9 +57,9 @@ static void report(const char *per, uint64_t milli, uint32_t pixels, uint32_t fr
     bench_puts("\n");
 }
 
-int bench_main(void)
+/* The scene with one method changed, measured and reported. */
+static int measure(const struct scene *s, const char *variant)
 {
-    const struct scene *s = &BENCH_SCENE;
     struct render_ctx ctx;
     size_t need = render_work_size(s, W, H, STRIP);
     uint16_t frames = s->frames ? s->frames : 1;
@@ -74,8 +77,36 @@ int bench_main(void)
         total += bench_now() - a;
     }
     uint32_t avg_px = (px + frames / 2) / frames;
-    report("frame", total * 1000 / frames, avg_px, frames);
-    report("pixel", avg_px ? total * 1000 / frames / avg_px : 0, avg_px, frames);
-    report("init", init * 1000, avg_px, frames);
+    report(variant, "frame", total * 1000 / frames, avg_px, frames);
+    report(variant, "pixel", avg_px ? total * 1000 / frames / avg_px : 0, avg_px, frames);
+    report(variant, "init", init * 1000, avg_px, frames);
     return 0;
+}
+
+int bench_main(void)
+{
+    const struct scene *s = &BENCH_SCENE;
+    int bad = measure(s, "default");
+#ifdef BENCH_DEFAULT_ONLY
+    return bad;   /* (for profiling: the scene as written only) */
+#endif
+    if (s->kind != SCENE_RASTER || s->ninstances == 0 || s->ras.book_exact) return bad;
+    static const uint8_t steps[] = { 1, 8, 16, 32 };
+    static const char *const step_names[] = { "perspective_step=1", "perspective_step=8", "perspective_step=16",
+                                              "perspective_step=32" };
+    struct scene v = *s;
+    for (unsigned k = 0; k < sizeof steps; k++) {
+        if (steps[k] == (s->ras.persp_step ? s->ras.persp_step : 16)) continue;   /* the default row */
+        v.ras.persp_step = steps[k];
+        v.ras.lighting = steps[k] == 1 ? RAS_LIGHT_EXACT : s->ras.lighting;
+        bad |= measure(&v, step_names[k]);
+    }
+    if (s->ras.shading == SHADE_PHONG) {
+        v = *s;
+        v.ras.lighting = RAS_LIGHT_EXACT;
+        bad |= measure(&v, "lighting=exact");
+        v.ras.lighting = RAS_LIGHT_VERTEX;
+        bad |= measure(&v, "lighting=vertex");
+    }
+    return bad;
 }

@@ -7,16 +7,44 @@ firmware/scenes/NAME.scene exists, the accuracy of that scene in that numeric
 mode against the double build of the same scene at the same size:
 `psnr` (dB, null when identical), `ssim`, `max_err`, `pct_diff`, from
 `host_sim --compare double`. Accuracy is of the scene as written (its own
-options), stated in `accuracy_of`. The file is rewritten atomically.
+options), stated in `accuracy_of`; a variant named KEY=VALUE (a rasterizer
+method, e.g. perspective_step=32 or lighting=vertex) is measured on the scene
+with that option set. The reference is always the double build's exact
+method (host_sim --compare). The file is rewritten atomically.
 usage: accuracy.py RESULTS.jsonl HOST_SIM [SCENES_DIR]
 """
 import json
 import os
 import re
 import sys
+import tempfile
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "charts"))
 from stability import host_sim_compare  # noqa: E402
+
+
+def compare_variant(host_sim, path, numeric, w, h, opt):
+    """host_sim --compare double of the scene, with `KEY = VALUE` added to
+    its rasterizer block when opt is given."""
+    size = "%dx%d" % (w, h)
+    if not opt:
+        return host_sim_compare(host_sim, path, numeric, size)
+    with open(path) as f:
+        text = f.read()
+    k, _, v = opt.partition("=")
+    if re.search(r"^\s*%s\s*=" % k, text, re.M):
+        text = re.sub(r"^(\s*%s\s*=\s*)\S+" % k, r"\g<1>%s" % v, text, count=1, flags=re.M)
+    elif re.search(r"^rasterizer\s*\{", text, re.M):
+        text = re.sub(r"^(rasterizer\s*\{)", r"\1 %s = %s" % (k, v), text, count=1, flags=re.M)
+    else:
+        text += "\nrasterizer { %s = %s }\n" % (k, v)
+    fd, tmp = tempfile.mkstemp(suffix=".scene")
+    try:
+        with os.fdopen(fd, "w") as f:
+            f.write(text)
+        return host_sim_compare(host_sim, tmp, numeric, size)
+    finally:
+        os.unlink(tmp)
 
 
 def main():
@@ -39,10 +67,12 @@ def main():
         numeric = l.get("numeric", "fixed")
         if not os.path.exists(path) or numeric not in ("fixed", "float", "double"):
             continue
-        key = (path, numeric, l["width"], l["height"])
+        variant = l.get("variant", "default")
+        opt = variant if re.match(r"^[a-z_]+=[a-z0-9_]+$", variant) else None
+        key = (path, numeric, l["width"], l["height"], opt)
         if key not in cache:
             try:
-                cache[key] = host_sim_compare(host_sim, path, numeric, "%dx%d" % (l["width"], l["height"]))
+                cache[key] = compare_variant(host_sim, path, numeric, l["width"], l["height"], opt)
             except RuntimeError as e:
                 print("accuracy: %s: %s" % (path, e), file=sys.stderr)
                 cache[key] = None
@@ -51,7 +81,7 @@ def main():
             continue
         for k in ("psnr", "ssim", "max_err", "pct_diff"):
             l[k] = s.get(k)
-        l["accuracy_of"] = "scene as written, vs double"
+        l["accuracy_of"] = ("scene with %s, vs double exact" % opt) if opt else "scene as written, vs double exact"
     tmp = results + ".tmp"
     with open(tmp, "w") as f:
         for l in lines:

@@ -32,6 +32,15 @@
 #define FT_PHONG RAS_FT_PHONG
 #define FT_PHONG_TEX RAS_FT_PHONG_TEX
 
+/* RGB565 of levels r, g, b, each clamped to its top level. */
+static inline uint16_t pack565_sat(uint32_t r, uint32_t g, uint32_t b)
+{
+    if (r > 31) r = 31;
+    if (g > 63) g = 63;
+    if (b > 31) b = 31;
+    return (uint16_t)(r << 11 | g << 5 | b);
+}
+
 static void ras_565_to_888(uint16_t c, uint8_t *o)
 {
     uint32_t r = c >> 11, g = (c >> 5) & 63, b = c & 31;
@@ -550,10 +559,6 @@ static const span_fn span_table[2][7][3] = {
 
 /* ---- set-up -------------------------------------------------------------- */
 
-static int64_t edge(int32_t ax, int32_t ay, int32_t bx, int32_t by, int64_t px, int64_t py)
-{
-    return (int64_t)(bx - ax) * (py - ay) - (int64_t)(by - ay) * (px - ax);
-}
 
 /* One edge's bound on the columns of a row, k = column - c0:
  * kind 1: k >= q (lower), kind -1: k <= q (upper), kind 0: every column
@@ -628,17 +633,13 @@ static int fast_setup(struct ras_ctx *rc, const struct ras_sv *v0, const struct 
 {
     const struct render_target *t = rc->t;
     int sb = rc->sub_bits;
-    int64_t area64 = edge(v0->x, v0->y, v1->x, v1->y, v2->x, v2->y);
+    int64_t area64 = ras_edge(v0->x, v0->y, v1->x, v1->y, v2->x, v2->y);
     if (area64 <= 0) return 0;
 
-    int32_t minx = v0->x, maxx = v0->x, miny = v0->y, maxy = v0->y;
+    int32_t box[4];
+    ras_sub_box(v0, v1, v2, box);
+    const int32_t minx = box[0], miny = box[1], maxx = box[2], maxy = box[3];
     const struct ras_sv *vv[3] = { v0, v1, v2 };
-    for (int i = 1; i < 3; i++) {
-        if (vv[i]->x < minx) minx = vv[i]->x;
-        if (vv[i]->x > maxx) maxx = vv[i]->x;
-        if (vv[i]->y < miny) miny = vv[i]->y;
-        if (vv[i]->y > maxy) maxy = vv[i]->y;
-    }
     /* 32-bit edge arithmetic: corners within 2^14 sub-pixel units of each
      * other (1024 pixels at 4 sub-pixel bits); larger ones take the exact path */
     if ((int64_t)maxx - minx > (1 << 14) || (int64_t)maxy - miny > (1 << 14)) return -1;
@@ -659,7 +660,7 @@ static int fast_setup(struct ras_ctx *rc, const struct ras_sv *v0, const struct 
     for (int i = 0; i < 3; i++) {
         int32_t dx = eb[i]->x - ea[i]->x, dy = eb[i]->y - ea[i]->y;
         int32_t bias = (dy < 0 || (dy == 0 && dx > 0)) ? 0 : -1;
-        wr[i] = (int32_t)edge(ea[i]->x, ea[i]->y, eb[i]->x, eb[i]->y, px, py);
+        wr[i] = (int32_t)ras_edge(ea[i]->x, ea[i]->y, eb[i]->x, eb[i]->y, px, py);
         a[i] = -dy * one;
         b[i] = dx * one;
         fedge_init(&fe[i], a[i], b[i], wr[i], bias);
@@ -676,8 +677,8 @@ static int fast_setup(struct ras_ctx *rc, const struct ras_sv *v0, const struct 
     uint32_t dz = 0;
     if (depth) {
         int64_t dd1 = (int64_t)v1->depth - v0->depth, dd2 = (int64_t)v2->depth - v0->depth, rem, f;
-        int64_t w1t = edge(ea[1]->x, ea[1]->y, eb[1]->x, eb[1]->y, px, (int64_t)rtop * one + half);
-        int64_t w2t = edge(ea[2]->x, ea[2]->y, eb[2]->x, eb[2]->y, px, (int64_t)rtop * one + half);
+        int64_t w1t = ras_edge(ea[1]->x, ea[1]->y, eb[1]->x, eb[1]->y, px, (int64_t)rtop * one + half);
+        int64_t w2t = ras_edge(ea[2]->x, ea[2]->y, eb[2]->x, eb[2]->y, px, (int64_t)rtop * one + half);
         int64_t q = ras_floordiv(dd1 * w1t + dd2 * w2t, area, &rem);
         zrow = ((int64_t)v0->depth + q) * 65536 + ras_floordiv(rem << 16, area, &f);
         q = ras_floordiv(dd1 * a[1] + dd2 * a[2], area, &rem);

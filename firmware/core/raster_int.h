@@ -170,6 +170,11 @@ typedef void (*ras_pixel_fn)(struct ras_ctx *rc, int col, int row, const num *a,
  * and z = 0 (stencil updates). */
 uint32_t ras_fill_triangle(struct ras_ctx *rc, const struct ras_sv *v0, const struct ras_sv *v1,
                            const struct ras_sv *v2, int na, ras_pixel_fn fn, void *ud);
+/* Edge function of edge a->b at p, in sub-pixel units squared: positive on
+ * the interior side of a clockwise (on screen) triangle. */
+int64_t ras_edge(int32_t ax, int32_t ay, int32_t bx, int32_t by, int64_t px, int64_t py);
+/* Box of the corners in sub-pixel units: min x, min y, max x, max y. */
+void ras_sub_box(const struct ras_sv *v0, const struct ras_sv *v1, const struct ras_sv *v2, int32_t box[4]);
 
 /* ---- the default path's fast triangle (raster_fast.c) ---- */
 #define RAS_FT_FLAT 0           /* (macros: the span template tests them with #if) */

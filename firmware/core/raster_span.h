@@ -130,20 +130,12 @@ RAS_HOT static uint32_t SPAN_NAME(const struct ftri *T, const struct frow *R)
                 uint16_t c = (uint16_t)((cr >> 16) << 11 | (cg >> 16) << 5 | cb >> 16);
 #elif SPAN_KIND == FT_PHONG
                 uint32_t ii = phong_light(T->ft, at);       /* Q12 */
-                uint32_t r = (kr * ii + (1u << 21)) >> 22, g = (kg * ii + (1u << 21)) >> 22,
-                         b = (kb * ii + (1u << 21)) >> 22;
-                if (r > 31) r = 31;
-                if (g > 63) g = 63;
-                if (b > 31) b = 31;
-                uint16_t c = (uint16_t)(r << 11 | g << 5 | b);
+                uint16_t c = pack565_sat((kr * ii + (1u << 21)) >> 22, (kg * ii + (1u << 21)) >> 22,
+                                         (kb * ii + (1u << 21)) >> 22);
 #elif SPAN_KIND == FT_GOURAUD_SAT
                 uint32_t ii = li >> 8;                      /* Q12 */
-                uint32_t r = (kr * ii + (1u << 21)) >> 22, g = (kg * ii + (1u << 21)) >> 22,
-                         b = (kb * ii + (1u << 21)) >> 22;
-                if (r > 31) r = 31;
-                if (g > 63) g = 63;
-                if (b > 31) b = 31;
-                uint16_t c = (uint16_t)(r << 11 | g << 5 | b);
+                uint16_t c = pack565_sat((kr * ii + (1u << 21)) >> 22, (kg * ii + (1u << 21)) >> 22,
+                                         (kb * ii + (1u << 21)) >> 22);
 #else
                 uint16_t c = *(const uint16_t *)(const void *)(tex + (((v >> 16) & vm) | ((u >> 16) & um)));
 #if SPAN_KIND == FT_TEX_GOURAUD || SPAN_KIND == FT_PHONG_TEX
@@ -153,13 +145,9 @@ RAS_HOT static uint32_t SPAN_NAME(const struct ftri *T, const struct frow *R)
 #else
                     uint32_t ii = li >> 8;                  /* Q12 */
 #endif
-                    uint32_t r = ((uint32_t)(c >> 11) * ii + (1u << 11)) >> 12,
-                             g = ((uint32_t)((c >> 5) & 63) * ii + (1u << 11)) >> 12,
-                             b = ((uint32_t)(c & 31) * ii + (1u << 11)) >> 12;
-                    if (r > 31) r = 31;
-                    if (g > 63) g = 63;
-                    if (b > 31) b = 31;
-                    c = (uint16_t)(r << 11 | g << 5 | b);
+                    c = pack565_sat(((uint32_t)(c >> 11) * ii + (1u << 11)) >> 12,
+                                    ((uint32_t)((c >> 5) & 63) * ii + (1u << 11)) >> 12,
+                                    ((uint32_t)(c & 31) * ii + (1u << 11)) >> 12);
                 }
 #endif
 #endif

@@ -143,11 +143,22 @@ void draw_shaded_triangle(struct ras_ctx *rc, const num x[3], const num y[3], co
 
 /* ---- default path ------------------------------------------------------ */
 
-/* Edge function of edge a->b at p, in sub-pixel units squared: positive on
- * the interior side of a clockwise (on screen) triangle. */
-static int64_t edge(int32_t ax, int32_t ay, int32_t bx, int32_t by, int64_t px, int64_t py)
+int64_t ras_edge(int32_t ax, int32_t ay, int32_t bx, int32_t by, int64_t px, int64_t py)
 {
     return (int64_t)(bx - ax) * (py - ay) - (int64_t)(by - ay) * (px - ax);
+}
+
+void ras_sub_box(const struct ras_sv *v0, const struct ras_sv *v1, const struct ras_sv *v2, int32_t box[4])
+{
+    const struct ras_sv *vv[3] = { v0, v1, v2 };
+    box[0] = box[2] = v0->x;
+    box[1] = box[3] = v0->y;
+    for (int i = 1; i < 3; i++) {
+        if (vv[i]->x < box[0]) box[0] = vv[i]->x;
+        if (vv[i]->y < box[1]) box[1] = vv[i]->y;
+        if (vv[i]->x > box[2]) box[2] = vv[i]->x;
+        if (vv[i]->y > box[3]) box[3] = vv[i]->y;
+    }
 }
 
 /* Top-left rule: pixel centres exactly on a top or left edge belong to the
@@ -163,18 +174,13 @@ uint32_t ras_fill_triangle(struct ras_ctx *rc, const struct ras_sv *v0, const st
 {
     const struct render_target *t = rc->t;
     int sb = rc->sub_bits;
-    int64_t area = edge(v0->x, v0->y, v1->x, v1->y, v2->x, v2->y);
+    int64_t area = ras_edge(v0->x, v0->y, v1->x, v1->y, v2->x, v2->y);
     if (area <= 0) return 0;
 
     /* bounding box in pixels, clipped to the strip */
-    int32_t minx = v0->x, maxx = v0->x, miny = v0->y, maxy = v0->y;
-    const struct ras_sv *vv[3] = { v0, v1, v2 };
-    for (int i = 1; i < 3; i++) {
-        if (vv[i]->x < minx) minx = vv[i]->x;
-        if (vv[i]->x > maxx) maxx = vv[i]->x;
-        if (vv[i]->y < miny) miny = vv[i]->y;
-        if (vv[i]->y > maxy) maxy = vv[i]->y;
-    }
+    int32_t box[4];
+    ras_sub_box(v0, v1, v2, box);
+    const int32_t minx = box[0], miny = box[1], maxx = box[2], maxy = box[3];
     int32_t c0 = minx >> sb, c1 = (maxx >> sb) + 1, r0 = miny >> sb, r1 = (maxy >> sb) + 1;
     if (c0 < 0) c0 = 0;
     if (r0 < (int32_t)t->y0) r0 = t->y0;
@@ -188,9 +194,9 @@ uint32_t ras_fill_triangle(struct ras_ctx *rc, const struct ras_sv *v0, const st
     int64_t b2 = edge_bias(v0->x, v0->y, v1->x, v1->y);
     int64_t half = (int64_t)1 << (sb - 1);
     int64_t px = ((int64_t)c0 << sb) + half, py = ((int64_t)r0 << sb) + half;
-    int64_t w0r = edge(v1->x, v1->y, v2->x, v2->y, px, py);
-    int64_t w1r = edge(v2->x, v2->y, v0->x, v0->y, px, py);
-    int64_t w2r = edge(v0->x, v0->y, v1->x, v1->y, px, py);
+    int64_t w0r = ras_edge(v1->x, v1->y, v2->x, v2->y, px, py);
+    int64_t w1r = ras_edge(v2->x, v2->y, v0->x, v0->y, px, py);
+    int64_t w2r = ras_edge(v0->x, v0->y, v1->x, v1->y, px, py);
     /* steps per pixel */
     int64_t one = (int64_t)1 << sb;
     int64_t a0 = -(int64_t)(v2->y - v1->y) * one, bb0 = (int64_t)(v2->x - v1->x) * one;

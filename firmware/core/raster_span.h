@@ -111,6 +111,35 @@ RAS_HOT static uint32_t SPAN_NAME(const struct ftri *T, const struct frow *R)
         const uint32_t dli = (uint32_t)d[2];
 #endif
         uint16_t *pe = px + m;
+#if SPAN_KIND == FT_GOURAUD && SPAN_DEPTH == 2 && !SPAN_EXTRA && defined(__ARM_ARCH_6M__) && defined(__GNUC__)
+        {
+            /* ARMv6-M: the loop below by hand, every value in a register (the
+             * same operations as the C loop, so the same bits) */
+            uint32_t st[5] = { (uint32_t)(uintptr_t)pe, dz, dcr, dcg, dcb };
+            uint32_t a0 = (uint32_t)(uintptr_t)st, t1;
+            __asm__ volatile(
+                ".syntax unified\n\t"
+                "ldr %[t1], [%[a0], #0]\n\t mov r8, %[t1]\n\t"
+                "ldr %[t1], [%[a0], #4]\n\t mov r9, %[t1]\n\t"
+                "ldr %[t1], [%[a0], #8]\n\t mov r10, %[t1]\n\t"
+                "ldr %[t1], [%[a0], #12]\n\t mov r11, %[t1]\n\t"
+                "ldr %[t1], [%[a0], #16]\n\t mov r12, %[t1]\n\t"
+                "cmp %[px], r8\n\t beq 3f\n"
+                "1:\n\t lsrs %[a0], %[z], #16\n\t ldrh %[t1], [%[zp]]\n\t cmp %[a0], %[t1]\n\t bls 2f\n\t"
+                "strh %[a0], [%[zp]]\n\t"
+                "lsrs %[a0], %[cr], #16\n\t lsls %[a0], %[a0], #11\n\t"
+                "lsrs %[t1], %[cg], #16\n\t lsls %[t1], %[t1], #5\n\t orrs %[a0], %[t1]\n\t"
+                "lsrs %[t1], %[cb], #16\n\t orrs %[a0], %[t1]\n\t strh %[a0], [%[px]]\n"
+                "2:\n\t adds %[px], #2\n\t adds %[zp], #2\n\t add %[z], r9\n\t add %[cr], r10\n\t"
+                "add %[cg], r11\n\t add %[cb], r12\n\t cmp %[px], r8\n\t bne 1b\n"
+                "3:\n\t"
+                ".syntax divided\n"
+                : [px] "+l"(px), [zp] "+l"(zp), [z] "+l"(z), [cr] "+l"(cr), [cg] "+l"(cg), [cb] "+l"(cb),
+                  [a0] "+l"(a0), [t1] "=&l"(t1)
+                :
+                : "r8", "r9", "r10", "r11", "r12", "cc", "memory");
+        }
+#else
         for (; px != pe; px++) {
 #if SPAN_DEPTH == 2
             uint32_t zz = z >> 16;
@@ -189,6 +218,7 @@ RAS_HOT static uint32_t SPAN_NAME(const struct ftri *T, const struct frow *R)
             li += dli;
 #endif
         }
+#endif
         n -= m;
 #if SPAN_KIND != FT_FLAT
         for (int j = 0; j < SPAN_NA; j++) cur[j] = nxt[j];

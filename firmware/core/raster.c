@@ -22,10 +22,24 @@ static int depth_bytes(const struct scene *s)
     return s->ras.depth_bits == 16 ? 2 : 4;
 }
 
-/* The fast path: the default path unless perspective_step = 1. */
+/* The default path's triangles (not the book's, not wireframes): they keep
+ * per-frame caches (projected vertices, triangle flags, lighting of
+ * Gouraud and flat triangles). */
+static int frame_cache(const struct scene *s)
+{
+    return !s->ras.book_exact && !s->ras.wireframe;
+}
+
+/* The fast path: the default path's triangles unless perspective_step = 1. */
 static int fast_path(const struct scene *s)
 {
-    return !s->ras.book_exact && !s->ras.wireframe && s->ras.persp_step != 1;
+    return frame_cache(s) && s->ras.persp_step != 1;
+}
+
+/* A chapter-15 feature that lights per pixel (always exactly). */
+static int ch15_lit(const struct ras_options *o)
+{
+    return o->shadow_map || o->shadow_volume || o->env_map;
 }
 
 static int log2_exact(uint32_t v)
@@ -45,20 +59,13 @@ static size_t tex565_size(const struct scene *s, const struct ras_texture *t)
     return (size_t)t->w * t->h * 2;
 }
 
-/* The default path's per-frame caches (projected vertices, triangle
- * flags, lighting of Gouraud and flat triangles). */
-static int frame_cache(const struct scene *s)
-{
-    return !s->ras.book_exact && !s->ras.wireframe;
-}
 
 /* The default path's shading: Phong lit at the corners (lighting = vertex,
  * no chapter-15 feature) is Gouraud. */
 static int eff_shading(const struct scene *s)
 {
     const struct ras_options *o = &s->ras;
-    if (o->shading == SHADE_PHONG && o->lighting == RAS_LIGHT_VERTEX && !o->book_exact && !o->shadow_map &&
-        !o->shadow_volume && !o->env_map)
+    if (o->shading == SHADE_PHONG && o->lighting == RAS_LIGHT_VERTEX && !o->book_exact && !ch15_lit(o))
         return SHADE_GOURAUD;
     return o->shading;
 }
@@ -67,8 +74,7 @@ static int eff_shading(const struct scene *s)
 static int phong_fast(const struct scene *s)
 {
     const struct ras_options *o = &s->ras;
-    return fast_path(s) && eff_shading(s) == SHADE_PHONG && o->lighting == RAS_LIGHT_FAST && !o->shadow_map &&
-           !o->shadow_volume && !o->env_map;
+    return fast_path(s) && eff_shading(s) == SHADE_PHONG && o->lighting == RAS_LIGHT_FAST && !ch15_lit(o);
 }
 
 /* Distinct specular exponents of fast Phong's instances, one table each
@@ -143,7 +149,7 @@ static int make_layout(const struct scene *s, uint16_t w, uint16_t strip_rows, s
     L->keep = off; off += al(sizeof(struct ras_fast_state) * keep_slots(s, L->ntris));
     L->spec = off;
     uint16_t nspec = spec_exponents(s, NULL, NULL);
-    off += al(sizeof(uint16_t) * 257 * nspec) + al(sizeof(uint32_t) * nspec) + al(sizeof(int16_t) * s->ninstances);
+    off += al(sizeof(uint16_t) * 257 * nspec) + al(sizeof(uint32_t) * 2 * nspec) + al(sizeof(int16_t) * s->ninstances);
     L->depth = off; off += al((size_t)depth_bytes(s) * w * strip_rows);
     L->adj = off; off += al(ras_ch15_adj_size(s, L->ntris));
     L->smap = off; off += al(ras_ch15_smap_size(s));
@@ -202,14 +208,15 @@ int raster_init(struct render_ctx *ctx)
     rc->nkeep = keep_slots(s, L.ntris);
     rc->phong_fast = (uint8_t)phong_fast(s);
     {
-        uint16_t nspec = spec_exponents(s, NULL, NULL);
+        /* the instances' tables (their count is the layout's) */
         uint8_t *sp = base + L.spec;
         rc->spec_tab = (uint16_t *)(void *)sp;
-        rc->spec_scale = (uint32_t *)(void *)(sp + al(sizeof(uint16_t) * 257 * nspec));
-        rc->inst_spec = (int16_t *)(void *)(sp + al(sizeof(uint16_t) * 257 * nspec) + al(sizeof(uint32_t) * nspec));
         uint32_t exps[RAS_SPEC_MAX];
-        spec_exponents(s, rc->inst_spec, exps);
-        for (uint16_t k = 0; k < nspec; k++) ras_spec_table(rc->spec_tab + 257 * k, exps[k], &rc->spec_scale[k]);
+        uint16_t nspec = spec_exponents(s, NULL, exps);
+        rc->spec_step = (uint32_t *)(void *)(sp + al(sizeof(uint16_t) * 257 * nspec));
+        rc->inst_spec = (int16_t *)(void *)((uint8_t *)rc->spec_step + al(sizeof(uint32_t) * 2 * nspec));
+        spec_exponents(s, rc->inst_spec, NULL);   /* each instance's table */
+        for (uint16_t k = 0; k < nspec; k++) ras_spec_table(rc->spec_tab + 257 * k, exps[k], rc->spec_step + 2 * k);
     }
     rc->keep = rc->nkeep ? (struct ras_fast_state *)(void *)(base + L.keep) : NULL;
     rc->depth = base + L.depth;
@@ -651,9 +658,6 @@ static void default_pixel(struct ras_ctx *rc, int col, int row, const num *a, nu
     ras_put(rc, col, row, c);
 }
 
-/* The fast span loops' description of a triangle; 0 when it needs the
- * exact per-pixel path (Phong shading, chapter 15 passes, filtered or
- * non-power-of-two textures, screen-linear uv, textures under flat shading). */
 /* Colour levels of RGB565 in Q10, round(c * L * 1024 / 255); 0 when a
  * channel lies outside 0..255. */
 static int levels_q10(rgb c, struct ras_fast_tri *ft)
@@ -666,6 +670,10 @@ static int levels_q10(rgb c, struct ras_fast_tri *ft)
     return !(ft->kr > 31u * 1024 || ft->kg > 63u * 1024 || ft->kb > 31u * 1024);
 }
 
+/* The fast span loops' description of a triangle; 0 when it needs the
+ * exact per-pixel path (chapter 15 passes and normal maps, Phong without
+ * fast Phong, filtered or non-power-of-two textures, screen-linear uv,
+ * textures under flat shading). */
 static int fast_setup(const struct ras_ctx *rc, const struct def_tri *dt, struct ras_fast_tri *ft, ptrdiff_t inst)
 {
     const struct ras_options *o = &rc->s->ras;
@@ -680,8 +688,8 @@ static int fast_setup(const struct ras_ctx *rc, const struct def_tri *dt, struct
         ft->fp = &rc->fp;
         int16_t st = rc->inst_spec[inst];
         ft->spec = st >= 0 ? rc->spec_tab + 257 * st : NULL;
-        ft->spec_scale = st >= 0 ? rc->spec_scale[st] : 0;
-        ft->spec_umax = st >= 0 ? (256u << 16) / ft->spec_scale : 0;
+        ft->spec_scale = st >= 0 ? rc->spec_step[2 * st] : 0;
+        ft->spec_umax = st >= 0 ? rc->spec_step[2 * st + 1] : 0;
         if (dt->tex < 0) {
             ft->kind = RAS_FT_PHONG;
             return levels_q10(dt->color, ft);
@@ -703,11 +711,7 @@ static int fast_setup(const struct ras_ctx *rc, const struct def_tri *dt, struct
     }
     if (gour) {
         ft->kind = RAS_FT_GOURAUD;
-        if (!levels_q10(dt->color, ft)) return 0;
-        /* the same levels in Q3 (rounded from Q10), red and blue packed */
-        ft->krb = ((ft->kr + 64) >> 7) << 16 | ((ft->kb + 64) >> 7);
-        ft->kg8 = (ft->kg + 64) >> 7;
-        return 1;
+        return levels_q10(dt->color, ft);
     }
     ft->kind = RAS_FT_FLAT;
     rgb c = dt->shading == SHADE_FLAT ? rgb_scale(dt->color, dt->flat_i) : dt->color;

@@ -242,7 +242,7 @@ static uint32_t phong_light(const struct ras_fast_tri *ft, const int32_t *np)
     return (uint32_t)i >> 2;
 }
 
-void ras_spec_table(uint16_t t[257], uint32_t e, uint32_t *scale)
+void ras_spec_table(uint16_t t[257], uint32_t e, uint32_t step[2])
 {
     /* the table spans 1 - cos in [0, w], w = min(1, 8/e): beyond it cos^e < e^-8 */
     uint32_t w16 = e > 8 ? (uint32_t)((8u << 16) / e) : (1u << 16);   /* w in Q16 */
@@ -252,7 +252,8 @@ void ras_spec_table(uint16_t t[257], uint32_t e, uint32_t *scale)
         t[k] = (uint16_t)(v < 0 ? 0 : (v > (1 << 14) ? (1 << 14) : v));
     }
     /* index = (1 - cos) * 256 / w: Q16 index per Q14 unit */
-    *scale = (uint32_t)(((uint64_t)256 << 18) / w16);
+    step[0] = (uint32_t)(((uint64_t)256 << 18) / w16);
+    step[1] = (256u << 16) / step[0];
 }
 
 void ras_fphong_frame(struct ras_ctx *rc)
@@ -677,8 +678,8 @@ static int fast_setup(struct ras_ctx *rc, const struct ras_sv *v0, const struct 
     uint32_t dz = 0;
     if (depth) {
         int64_t dd1 = (int64_t)v1->depth - v0->depth, dd2 = (int64_t)v2->depth - v0->depth, rem, f;
-        int64_t w1t = ras_edge(ea[1]->x, ea[1]->y, eb[1]->x, eb[1]->y, px, (int64_t)rtop * one + half);
-        int64_t w2t = ras_edge(ea[2]->x, ea[2]->y, eb[2]->x, eb[2]->y, px, (int64_t)rtop * one + half);
+        /* edge values at (c0, the box's top row): linear in the row */
+        int64_t w1t = wr[1] - (int64_t)(r0 - rtop) * b[1], w2t = wr[2] - (int64_t)(r0 - rtop) * b[2];
         int64_t q = ras_floordiv(dd1 * w1t + dd2 * w2t, area, &rem);
         zrow = ((int64_t)v0->depth + q) * 65536 + ras_floordiv(rem << 16, area, &f);
         q = ras_floordiv(dd1 * a[1] + dd2 * a[2], area, &rem);
@@ -697,16 +698,15 @@ static int fast_setup(struct ras_ctx *rc, const struct ras_sv *v0, const struct 
     S->ftc = *ft;
     ft = &S->ftc;
     struct ftri *Tp = &S->T;
-#define T (*Tp)
-    struct fpersp *pp = &T.pp;
+    struct fpersp *pp = &Tp->pp;
     int na = 0;
-    T.ft = ft;
-    T.slog = rc->persp_log2;
-    T.seg = (int32_t)1 << T.slog;
-    T.a1 = a[1];
-    T.a2 = a[2];
-    T.sa1 = a[1] * T.seg;
-    T.sa2 = a[2] * T.seg;
+    Tp->ft = ft;
+    Tp->slog = rc->persp_log2;
+    Tp->seg = (int32_t)1 << Tp->slog;
+    Tp->a1 = a[1];
+    Tp->a2 = a[2];
+    Tp->sa1 = a[1] * Tp->seg;
+    Tp->sa2 = a[2] * Tp->seg;
     pp->na = 0;
     if (ft->kind != FT_FLAT) {
         int tt = 0;
@@ -774,7 +774,6 @@ static int fast_setup(struct ras_ctx *rc, const struct ras_sv *v0, const struct 
         pp->na = na;
     }
 
-#undef T
     S->zrow = zrow;
     S->gy16 = gy16;
     S->gxq = gxq;

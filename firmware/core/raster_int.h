@@ -96,7 +96,7 @@ struct ras_ctx {
     uint8_t phong_fast;      /* Phong by fast Phong (lighting = fast) */
     struct ras_fphong fp;    /* its lights, per frame */
     uint16_t *spec_tab;      /* its specular tables, 257 entries each */
-    uint32_t *spec_scale;    /* their index steps */
+    uint32_t *spec_step;     /* per table: index step and end (ras_spec_table) */
     int16_t *inst_spec;      /* per instance: its table, -1: no highlight */
     uint16_t nkeep;          /* their number (triangle i in slot i % nkeep) */
     uint8_t *depth;          /* strip_rows * w entries */
@@ -187,15 +187,15 @@ void ras_sub_box(const struct ras_sv *v0, const struct ras_sv *v1, const struct 
 #define RAS_FAST_NA 8             /* attributes of the fast path at most */
 /* Lights of the frame into rc->fp (after the camera-space lights and vertices). */
 void ras_fphong_frame(struct ras_ctx *rc);
-/* cos^e at 257 points in Q14 (raster_fast.c looks it up); *scale receives
- * the index step, Q16 index units per Q14 unit of 1 - cos. */
-void ras_spec_table(uint16_t t[257], uint32_t e, uint32_t *scale);
+/* cos^e at 257 points in Q14 (raster_fast.c looks it up); step[0]
+ * receives the index step, Q16 index units per Q14 unit of 1 - cos, and
+ * step[1] the value of 1 - cos (Q14) from which on the table gives 0. */
+void ras_spec_table(uint16_t t[257], uint32_t e, uint32_t step[2]);
 struct ras_fast_tri {
     uint8_t kind;            /* RAS_FT_* */
     uint16_t c565;           /* flat: the colour */
     uint8_t c888[3];         /* flat: the colour before quantisation (host output) */
     uint32_t kr, kg, kb;     /* Gouraud (saturating): colour in RGB565 levels, Q10 */
-    uint32_t krb, kg8;       /* Gouraud: red and blue levels in Q3 at bits 16 and 0, green in Q3 */
     const uint16_t *tex;     /* textured: RGB565 texels */
     uint32_t wmask, hmask, wlog2;
     int32_t uscale, vscale;  /* u, v to 16.16 texel coordinates */

@@ -53,3 +53,10 @@ BENCH_RT_SRCS := tools/bench/bench_raytracer.c $(RT_TEST_HELPERS) $(CORE_SRCS)
 $(foreach t,$(BENCH_TARGETS),$(foreach m,fixed float,\
   $(call bench_image,raytracer,$(t),$(m),$(BENCH_RT_SRCS),-Itests)\
   $(eval BENCH_IMAGES += $(BUILD)/bench/$(t)/$(m)/raytracer.elf)))
+
+# `make profile-raytracer`: instructions per function of raytracer-05
+# (fixed, M0+, 60x60, one frame) from a qemu block trace (tools/bench/profile.py).
+$(call bench_image,raytracer-prof,m0plus-qemu,fixed,$(BENCH_RT_SRCS),-Itests -DBENCH_RT_QUICK -DBENCH_RT_SIZE=60)
+.PHONY: profile-raytracer
+profile-raytracer: $(BUILD)/bench/m0plus-qemu/fixed/raytracer-prof.elf
+	$(Q)$(PYTHON) tools/bench/profile.py --top 30 $<

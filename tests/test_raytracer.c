@@ -353,6 +353,138 @@ static void test_optimisations(void)
     free(img);
 }
 
+/* The shortcuts (coarse rejections, exact early-outs) change no pixel. */
+static void test_shortcuts_same_image(void)
+{
+    int w = 96, h = 72;
+    size_t n = (size_t)w * h * 3;
+    uint8_t *a = malloc(n), *b = malloc(n);
+    struct scene *sc[] = { rt_book_scene(2), rt_book_scene(4), rt_book_scene(5), rt_book_scene(6), rt_ch5_scene(),
+                           rt_grid_scene(8) };
+    for (size_t k = 0; k < sizeof sc / sizeof sc[0]; k++) {
+        for (int variant = 0; variant < 3; variant++) {
+            struct scene *s = sc[k];
+            struct rt_options keep = s->rt;
+            if (variant == 1) { s->rt.epsilon = NUM_ZERO; s->rt.shadow_any_hit = 1; s->rt.bvh = 1; }
+            if (variant == 2) { s->rt.adaptive_ss = 1; s->rt.supersample = 2; s->rt.shadow_cache = 1; }
+            struct rt_run r0, r1;
+            s->rt.no_shortcuts = 1;
+            int ra = rt_render(s, w, h, 16, a, NULL, &r0);
+            s->rt.no_shortcuts = 0;
+            int rb = rt_render(s, w, h, 16, b, NULL, &r1);
+            char name[96];
+            snprintf(name, sizeof name, "shortcuts_same_image_%s_%d", s->name, variant);
+            check(ra == 0 && rb == 0 && memcmp(a, b, n) == 0 && r1.rays == r0.rays, name,
+                  "images differ (rays %u / %u)", r0.rays, r1.rays);
+            s->rt = keep;
+        }
+    }
+    free(a);
+    free(b);
+}
+
+static double urand(uint32_t *st)
+{
+    *st = *st * 1664525u + 1013904223u;
+    return (double)(*st >> 8) / 16777216.0;
+}
+
+/* The coarse sphere rejection (num_rt.h) against the exact robust test on
+ * rays aimed just past random spheres of radii 0.01 .. 5000: every claimed
+ * miss is a miss of the exact test, and a claimed negative b is one. */
+static void test_coarse_rejection(void)
+{
+    static struct rt_object o[2];
+    struct scene *s = rt_book_scene(5);
+    struct scene save = *s;
+    s->objects = o;
+    s->nobjects = 2;
+    s->ncsg = 0;
+    s->rt.formulation = 2;
+    struct probe_ctx p;
+    uint32_t st = 12345;
+    long wrong = 0, rejected = 0, total = 0, negwrong = 0, negclaims = 0;
+    for (int round = 0; round < 40; round++) {
+        double r = exp(log(0.01) + urand(&st) * (log(5000.0) - log(0.01)));
+        double c[3];
+        for (int i = 0; i < 3; i++) c[i] = (urand(&st) - 0.5) * 40;
+        memset(o, 0, sizeof o);
+        o[0].shape = RT_SPHERE;
+        o[0].center = v3(num_from_double(c[0]), num_from_double(c[1]), num_from_double(c[2]));
+        o[0].radius = num_from_double(r);
+        o[1] = o[0];
+        struct rt_state *rt = open_state(&p, s);
+        if (!rt) break;
+        for (int k = 0; k < 500; k++) {
+            /* origin 1.05 .. 3 radii away (capped inside the format), aimed at
+             * a point (1 +- delta) r from the centre across the line of sight */
+            double dist = r * (1.05 + 2 * urand(&st));
+            if (dist > 9000) dist = 9000 * (0.5 + urand(&st));
+            double u[3], len = 0;
+            for (int i = 0; i < 3; i++) { u[i] = urand(&st) - 0.5; len += u[i] * u[i]; }
+            len = sqrt(len);
+            double org[3], tgt[3], side[3] = { -u[1], u[0], 0 }, sl = sqrt(u[0] * u[0] + u[1] * u[1]) + 1e-9;
+            double delta = (urand(&st) - 0.5) * (k % 3 == 0 ? 0.002 : 0.2);
+            for (int i = 0; i < 3; i++) {
+                org[i] = c[i] + u[i] / len * dist;
+                tgt[i] = c[i] + side[i] / sl * r * (1 + delta);
+            }
+            double scale = exp((urand(&st) - 0.5) * 8);    /* |D| from 0.02 to 50 */
+            vec3 O = v3(num_from_double(org[0]), num_from_double(org[1]), num_from_double(org[2]));
+            vec3 D = v3(num_from_double((tgt[0] - org[0]) * scale / dist), num_from_double((tgt[1] - org[1]) * scale / dist),
+                        num_from_double((tgt[2] - org[2]) * scale / dist));
+            if (k % 5 == 4) D = v3_neg(D);                   /* away from the sphere */
+            struct rt_ray ray = rt_make_ray(O, D, -1, 0);
+            int claim = rt_coarse_sphere_miss(&ray.cd, O, o[0].center, o[0].radius);
+            rt->shortcuts = 0;
+            num t1, t2;
+            int hit = intersect_ray_sphere(rt, 0, &ray, &t1, &t2);
+            total++;
+            if (claim) { rejected++; if (hit) wrong++; }
+            /* a ray leaving the sphere's surface point nearest O: b < 0 claimed */
+            double pt[3];
+            for (int i = 0; i < 3; i++) pt[i] = c[i] + u[i] / len * r;
+            vec3 P = v3(num_from_double(pt[0]), num_from_double(pt[1]), num_from_double(pt[2]));
+            struct rt_ray leave = rt_make_ray(P, D, 1, 0);
+            if (rt_coarse_dot_negative(&leave.cd, P, o[1].center)) {
+                negclaims++;
+                intersect_ray_sphere(rt, 1, &leave, &t1, &t2);
+                if (t1 > 0 || t2 > 0) negwrong++;
+            }
+        }
+        free(p.work);
+    }
+    *s = save;
+    int fixed = strcmp(NUM_NAME, "fixed") == 0;
+    check(wrong == 0 && negwrong == 0 && (!fixed || (rejected * 10 > total && negclaims * 10 > total)),
+          "coarse_sphere_rejection_only_certain_misses",
+          "%ld of %ld claimed misses hit, %ld of %ld negative claims wrong (%ld rays)", wrong, rejected, negwrong,
+          negclaims, total);
+
+    /* rt_div_at_most is num_div(a, b) <= t; the zero threshold of powers */
+    long bad = 0;
+    for (int k = 0; k < 20000; k++) {
+        num a = num_from_double(urand(&st) * 3), b = num_from_double(urand(&st) * 3 + 1e-4);
+        num t = num_from_double(urand(&st));
+        if (k % 4 == 0) t = num_div(a, b);                   /* on the boundary */
+        if (rt_div_at_most(a, b, t) != (num_div(a, b) <= t)) bad++;
+    }
+    static const uint32_t ex[] = { 1, 2, 10, 100, 500, 1000, 5000 };
+    for (size_t i = 0; i < sizeof ex / sizeof ex[0]; i++) {
+        num z = rt_powi_zero_below(ex[i]);
+        if (fixed) {
+            if (num_powi(z, ex[i]) != 0 || num_powi(z + 1, ex[i]) == 0) bad++;
+            for (int k = 0; k < 200; k++) {
+                num x = (num)(urand(&st) * (double)z);
+                if (num_powi(x, ex[i]) != 0) bad++;
+            }
+        } else if (z >= 0) {
+            bad++;
+        }
+    }
+    check(bad == 0, "coarse_div_and_power_thresholds_exact", "%ld mismatches", bad);
+}
+
 /* Chapter 5 scene renders in every mode; its glass sphere shows the plane through it. */
 static void test_ch5_scene(void)
 {
@@ -397,6 +529,8 @@ int main(int argc, char **argv)
     test_csg_planes_triangles();
     test_refraction();
     test_optimisations();
+    test_shortcuts_same_image();
+    test_coarse_rejection();
     test_ch5_scene();
     return check_exit();
 }

@@ -14,6 +14,9 @@
 #define NUM_RT_H
 
 #include "num.h"
+#if NUM_MODE == NUM_MODE_FIXED
+#include "num_int.h"
+#endif
 
 /* 1 when the mode is the reference (double), 0 otherwise. */
 static inline int num_rt_reference_mode(void)
@@ -22,6 +25,174 @@ static inline int num_rt_reference_mode(void)
     return 1;
 #else
     return 0;
+#endif
+}
+
+/* ---- conservative coarse sphere rejection (fixed point) ---------------
+ *
+ * rt_coarse_sphere_miss(cd, o, c, r) returns 1 only when the robust sphere
+ * test (rt_intersect.c) of the ray O + t D against the sphere (c, r) would
+ * certainly return "no intersection" (its computed discriminant negative,
+ * or the sphere outside and behind), so skipping that test changes no
+ * pixel. It returns 0 whenever it cannot tell, and always in the floating
+ * modes.
+ *
+ * Fixed point, in 32-bit integers only (no 64-bit product; one MULS each on
+ * ARMv6-M): co = C - O in units U = 2^12 raw (floor; |co|_1 = n1 < 2^19
+ * required), D scaled by a power of two to |d_i| < 2^10 (max >= 2^9,
+ * floor), len >= |d| (max + (mid + min)/2, at most 15 % above). With the truncation errors of both (< 1 unit per
+ * component), |X| = |co x d| > T = R (len + 2) + 2 len + 2 n1 + 3 proves
+ * that the line passes more than R units from C, and co.d < -T that C lies
+ * more than R units behind O. R = ceil(r / U) + ceil(5 n1 2^(-F/2)) + 3
+ * covers the robust test's own rounding: its b, c, a and products carry
+ * errors of a few ulps u = 2^-F, which move its discriminant by at most
+ * u (6.25 |CO|^2 + 25 |CO| + 42), and a miss by r + sqrt(that / a)
+ * survives them (derivation in docs/raytracer.md). Used for NUM_FRAC >= 12
+ * and when D's largest raw component lies in [2^(F-8), 2^(F+13)), where the
+ * robust test's direction scaling keeps D'.D' in [0.25, 4); otherwise
+ * len = 0 (no coarse test for that ray). */
+struct rt_cdir {
+#if NUM_MODE == NUM_MODE_FIXED
+    int32_t x, y, z;
+    int32_t len;          /* 0: no coarse tests for this ray */
+#else
+    uint8_t none;
+#endif
+};
+
+#if NUM_MODE == NUM_MODE_FIXED
+static inline uint32_t rt_uabs(int32_t v) { return v < 0 ? 0u - (uint32_t)v : (uint32_t)v; }
+#endif
+
+static inline struct rt_cdir rt_cdir_make(vec3 d)
+{
+    struct rt_cdir c;
+#if NUM_MODE == NUM_MODE_FIXED
+    uint32_t ax = rt_uabs(d.x), ay = rt_uabs(d.y), az = rt_uabs(d.z);
+    uint32_t m = ax > ay ? ax : ay;
+    if (az > m) m = az;
+    c.len = 0;
+    c.x = c.y = c.z = 0;
+    if (m == 0) return c;
+    int e = 32 - num_clz32(m);               /* m < 2^e <= 2m */
+    /* m in [2^(F-8), 2^(F+13)) */
+    if (NUM_FRAC < 12 || e < NUM_FRAC - 7 || e > NUM_FRAC + 13) return c;
+    if (e > 10) {
+        c.x = d.x >> (e - 10);               /* floor: error in (-1, 0] */
+        c.y = d.y >> (e - 10);
+        c.z = d.z >> (e - 10);
+    } else {
+        c.x = d.x * (1 << (10 - e));         /* exact */
+        c.y = d.y * (1 << (10 - e));
+        c.z = d.z * (1 << (10 - e));
+    }
+    /* |d| <= max + (mid + min)/2 (no square root): for a >= b >= c,
+     * (a + (b + c)/2)^2 >= a^2 + ab + ac >= a^2 + b^2 + c^2 */
+    ax = rt_uabs(c.x); ay = rt_uabs(c.y); az = rt_uabs(c.z);
+    m = ax > ay ? ax : ay;
+    if (az > m) m = az;
+    c.len = (int32_t)(m + ((ax + ay + az - m + 1) >> 1));
+#else
+    (void)d;
+    c.none = 1;
+#endif
+    return c;
+}
+
+static inline int rt_coarse_sphere_miss(const struct rt_cdir *cd, vec3 o, vec3 ctr, num r)
+{
+#if NUM_MODE == NUM_MODE_FIXED
+    if (cd->len == 0 || r < 0) return 0;
+    /* C - O in units of 2^12 raw, floor (the int64 shift is arithmetic) */
+    int32_t cx = (int32_t)(((int64_t)ctr.x - o.x) >> 12);
+    int32_t cy = (int32_t)(((int64_t)ctr.y - o.y) >> 12);
+    int32_t cz = (int32_t)(((int64_t)ctr.z - o.z) >> 12);
+    uint32_t n1 = rt_uabs(cx) + rt_uabs(cy) + rt_uabs(cz);
+    if (n1 >= (1u << 19)) return 0;
+    uint32_t R = (((uint32_t)r + 4095u) >> 12) +
+                 ((5u * n1 + (1u << (NUM_FRAC / 2)) - 1) >> (NUM_FRAC / 2)) + 3;
+    uint32_t len = (uint32_t)cd->len;
+    /* R < 2^19 + 2^17, len < 2^11: T < 2^31 */
+    uint32_t T = R * (len + 2) + 2 * len + 2 * n1 + 3;
+    /* |co_i| < 2^19, |d_i| < 2^10: every product < 2^29, the sums < 2^31 */
+    int32_t p = cx * cd->x + cy * cd->y + cz * cd->z;
+    if (p < 0 && rt_uabs(p) > T) return 1;           /* behind the origin */
+    /* behind (b < 0, as rt_coarse_dot_negative) and certainly outside
+     * (|CO| >= r + 2 units, so c > 0): the robust test's early-out */
+    if (p < 0 && rt_uabs(p) > 3 * len + 2 * n1 + 5) {
+        uint32_t rc = ((uint32_t)r + 4095u) >> 12;
+        uint32_t mx = rt_uabs(cx);
+        if (rt_uabs(cy) > mx) mx = rt_uabs(cy);
+        if (rt_uabs(cz) > mx) mx = rt_uabs(cz);
+        if (mx >= rc + 3 || n1 >= 2 * rc + 5) return 1;
+    }
+    uint32_t xx = rt_uabs(cy * cd->z - cz * cd->y);
+    uint32_t xy = rt_uabs(cz * cd->x - cx * cd->z);
+    uint32_t xz = rt_uabs(cx * cd->y - cy * cd->x);
+    if (xx > T || xy > T || xz > T) return 1;
+    /* |X|^2 > T^2, scaled down until the squares fit: X rounded down and T
+     * up, so the scaled test implies the exact one */
+    while (T > 26000u) { T = (T >> 1) + 1; xx >>= 1; xy >>= 1; xz >>= 1; }
+    return xx * xx + xy * xy + xz * xz > T * T;
+#else
+    (void)cd; (void)o; (void)ctr; (void)r;
+    return 0;
+#endif
+}
+
+/* 1 only when (C - O).D is certainly negative by more than 2^12 raw times
+ * |D|, so that the robust test's b = -(O - C).D' (rounded, error <= 1.5
+ * ulp) is negative: with the coarse forms' errors, |co.d - exact| <=
+ * 2 len + n1 + 3, and co.d < -(len + 2) puts C's projection more than one
+ * unit behind O. */
+static inline int rt_coarse_dot_negative(const struct rt_cdir *cd, vec3 o, vec3 ctr)
+{
+#if NUM_MODE == NUM_MODE_FIXED
+    if (cd->len == 0) return 0;
+    int32_t cx = (int32_t)(((int64_t)ctr.x - o.x) >> 12);
+    int32_t cy = (int32_t)(((int64_t)ctr.y - o.y) >> 12);
+    int32_t cz = (int32_t)(((int64_t)ctr.z - o.z) >> 12);
+    uint32_t n1 = rt_uabs(cx) + rt_uabs(cy) + rt_uabs(cz);
+    if (n1 >= (1u << 19)) return 0;
+    int32_t p = cx * cd->x + cy * cd->y + cz * cd->z;
+    return p < 0 && rt_uabs(p) > 3 * (uint32_t)cd->len + 2 * n1 + 5;
+#else
+    (void)cd; (void)o; (void)ctr;
+    return 0;
+#endif
+}
+
+/* 1 when num_div(a, b) <= t, decided without dividing (fixed point:
+ * correctly rounded quotients, halves away from zero, so for a >= 0, b > 0
+ * the quotient is <= t exactly when 2a 2^F < (2t + 1) b). */
+static inline int rt_div_at_most(num a, num b, num t)
+{
+#if NUM_MODE == NUM_MODE_FIXED
+    if (a < 0 || b <= 0 || t < 0) return num_div(a, b) <= t;
+    return (uint64_t)(uint32_t)a << (NUM_FRAC + 1) < num_umul32(2u * (uint32_t)t + 1u, (uint32_t)b);
+#else
+    return num_div(a, b) <= t;
+#endif
+}
+
+/* The largest x in [0, 1] with num_powi(x, e) == 0 (num_powi is monotone
+ * in x >= 0: every step of its binary powering rounds monotonically), or
+ * -1 when there is none worth using (e == 0, floating modes: pow is 0 only
+ * on underflow). */
+static inline num rt_powi_zero_below(uint32_t e)
+{
+#if NUM_MODE == NUM_MODE_FIXED
+    if (e == 0) return NUM_C(-1.0);
+    num lo = 0, hi = NUM_ONE;             /* powi(lo) == 0, powi(hi) == 1 */
+    while (hi - lo > 1) {
+        num mid = lo + (hi - lo) / 2;
+        if (num_powi(mid, e) == 0) lo = mid;
+        else hi = mid;
+    }
+    return lo;
+#else
+    (void)e;
+    return NUM_C(-1.0);
 #endif
 }
 

@@ -9,7 +9,7 @@
  * its left or upper neighbour in object or by more than this per channel. */
 #define RT_ADAPTIVE_DIFF NUM_C(12.0)
 
-struct layout { size_t state, oc, items, unb, bvh, bvh_items, occ, row_c, row_item, total; };
+struct layout { size_t state, oc, items, unb, bvh, bvh_items, occ, lray, llen, row_c, row_item, total; };
 
 static struct layout layout_of(const struct scene *s, uint16_t width)
 {
@@ -23,6 +23,8 @@ static struct layout layout_of(const struct scene *s, uint16_t width)
     l.bvh = off; off += ALIGN8(sizeof(struct rt_bvh_node) * (2 * nitems + 1));
     l.bvh_items = off; off += ALIGN8(sizeof(int16_t) * (nitems ? nitems : 1));
     l.occ = off; off += ALIGN8(sizeof(int16_t) * (s->nlights ? s->nlights : 1));
+    l.lray = off; off += ALIGN8(sizeof(struct rt_ray) * (s->nlights ? s->nlights : 1));
+    l.llen = off; off += ALIGN8(sizeof(num) * (s->nlights ? s->nlights : 1));
     l.row_c = off; off += ALIGN8(sizeof(rgb) * width);
     l.row_item = off; off += ALIGN8(sizeof(int16_t) * width);
     l.total = off;
@@ -62,12 +64,15 @@ int rt_init(struct render_ctx *ctx)
     rt->bvh = (struct rt_bvh_node *)(w + l.bvh);
     rt->bvh_items = (int16_t *)(w + l.bvh_items);
     rt->occluder = (int16_t *)(w + l.occ);
+    rt->light_ray = (struct rt_ray *)(w + l.lray);
+    rt->light_len = (num *)(w + l.llen);
     rt->row_c = (rgb *)(w + l.row_c);
     rt->row_item = (int16_t *)(w + l.row_item);
     const struct rt_options *o = &s->rt;
     rt->book = o->formulation == 1 || (o->formulation == 0 && num_rt_reference_mode());
     rt->depth = o->recursion_depth > RT_MAX_DEPTH ? RT_MAX_DEPTH : o->recursion_depth;
     rt->cached = !o->no_frame_cache;
+    rt->shortcuts = !o->no_shortcuts && !rt->book;
     rt->skip_item = -1;
     rt->ss = o->supersample < 1 ? 1 : (o->supersample > RT_MAX_SS ? RT_MAX_SS : o->supersample);
     rt->ss_adaptive = o->adaptive_ss;
@@ -88,6 +93,10 @@ int rt_init(struct render_ctx *ctx)
     rt->cam_pos = s->camera.position;
     rt->cam_rot = s->camera.rotation;
     rt_frame_constants(rt);
+    for (uint16_t i = 0; i < s->nobjects; i++) {
+        num e = s->objects[i].mat.specular;
+        rt->oc[i].spec_zero = e >= 0 ? rt_powi_zero_below((uint32_t)num_to_int(e)) : NUM_C(-1.0);
+    }
     if (o->bvh) rt_build_bvh(rt);
     return 0;
 }
@@ -127,11 +136,11 @@ struct rt_prim {
 
 static rgb background(const struct rt_state *rt) { return rt->s->background; }
 
-static const struct rt_material *item_material(const struct rt_state *rt, int16_t item)
+/* The object whose material an item shows (a CSG shows operand a's). */
+static int16_t item_material_object(const struct rt_state *rt, int16_t item)
 {
     const struct scene *s = rt->s;
-    if (item >= (int16_t)s->nobjects) return &s->objects[s->csg[item - s->nobjects].a].mat;
-    return &s->objects[item].mat;
+    return item >= (int16_t)s->nobjects ? (int16_t)s->csg[item - s->nobjects].a : item;
 }
 
 /* ReflectRay: R = N*(2*(V.N)) - V. */
@@ -160,7 +169,7 @@ int rt_refract(vec3 d, vec3 n, num ior, vec3 *out)
 
 /* TraceRay: colour seen along the ray with t in (t_min, t_max); `depth`
  * more reflection/refraction bounces allowed (bounded recursion). */
-static rgb trace_ray(struct rt_state *rt, const struct rt_ray *ray, num t_min, num t_max, int depth,
+static rgb trace_ray(struct rt_state *rt, struct rt_ray *ray, num t_min, num t_max, int depth,
                      struct rt_prim *prim)
 {
     const struct scene *s = rt->s;
@@ -171,7 +180,8 @@ static rgb trace_ray(struct rt_state *rt, const struct rt_ray *ray, num t_min, n
         return background(rt);
     }
     if (prim) prim->item = hit.item;
-    const struct rt_material *m = item_material(rt, hit.item);
+    int16_t mo = item_material_object(rt, hit.item);
+    const struct rt_material *m = &s->objects[mo].mat;
     vec3 p = v3_add(ray->o, v3_scale(ray->d, hit.t));
     vec3 n = rt_hit_normal(rt, &hit, p);
     vec3 v = v3_neg(ray->d);
@@ -179,7 +189,8 @@ static rgb trace_ray(struct rt_state *rt, const struct rt_ray *ray, num t_min, n
     if (s->rt.unlit) {
         local = m->color;
     } else {
-        num i = compute_lighting(rt, p, n, v, m->specular, hit.surf, prim ? &prim->shadow : NULL);
+        num i = compute_lighting(rt, p, n, v, m->specular, rt->oc[mo].spec_zero, hit.surf,
+                                 prim ? &prim->shadow : NULL);
         local = rgb_scale(m->color, i);
     }
     num r = m->reflective;

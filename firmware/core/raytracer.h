@@ -39,6 +39,7 @@
 #include <stddef.h>
 #include <stdint.h>
 #include "render.h"
+#include "num_rt.h"
 
 /* Deepest reflection/refraction recursion honoured (rt_options.recursion_depth
  * is clamped to it; the book's control allows 0..5). */
@@ -58,15 +59,19 @@ int rt_render_strip(struct render_ctx *ctx, struct render_target *t, struct rend
 
 /* ---- internals shared by raytracer.c, rt_intersect.c, rt_lighting.c ---- */
 
-/* A ray O + t*D; `origin` is the object whose surface O lies on (-1: none). */
+/* A ray O + t*D; `origin` is the object whose surface O lies on (-1: none).
+ * The exact tests' forms of D (a, ds, as, tscale) are computed on first use
+ * (rt_ray_exact): a ray that every coarse test rejects never needs them. */
 struct rt_ray {
     vec3 o, d;
-    wnum a;               /* D.D, wide (computed once per ray; the book's k1) */
+    struct rt_cdir cd;    /* coarse direction (num_rt.h) */
+    wnum a;               /* D.D, wide (the book's k1) */
     vec3 ds;              /* D / 2^k with ds.ds = as in [0.25, 4) (robust tests) */
     wnum as;
     num tscale;           /* 2^-k: t = t' * tscale for a root t' along ds */
     int16_t origin;
     uint8_t from_camera;  /* O is the camera: per-frame sphere constants apply */
+    uint8_t exact;        /* a, ds, as, tscale computed */
 };
 
 /* What closest_intersection found. */
@@ -86,6 +91,7 @@ struct rt_obj_cache {
     vec3 e1, e2, n;       /* triangle: p1 - p0, p2 - p0, unit normal */
     vec3 bc;              /* bounding sphere of the item (BVH) */
     num br;
+    num spec_zero;        /* rt_powi_zero_below(material's exponent) */
 };
 
 /* Bounding-sphere hierarchy node: a leaf holds items [first, first+count). */
@@ -108,6 +114,7 @@ struct rt_state {
     uint8_t depth;        /* reflection depth of primary rays */
     uint8_t cam_rotated;
     uint8_t cached;       /* per-frame constants in use */
+    uint8_t shortcuts;    /* coarse rejections and exact early-outs in use */
     uint8_t ss, ss_adaptive, subsample;
     mat3 cam_rot;
     vec3 cam_pos;
@@ -123,6 +130,8 @@ struct rt_state {
     uint16_t nbvh;
     int16_t *bvh_items;
     int16_t *occluder;         /* per light: last occluder (-1: none) */
+    struct rt_ray *light_ray;  /* per light: directional lights' shadow-ray direction (per frame) */
+    num *light_len;            /* per light: |L| of directional lights (per frame) */
     rgb *row_c;                /* one row of colours (subsampling/adaptive) */
     int16_t *row_item;
     int16_t skip_item;         /* item closest_intersection skips (already tested), -1 none */
@@ -140,14 +149,16 @@ void rt_set_shadow_probe(struct render_ctx *ctx, uint8_t *probe);
 
 /* rt_intersect.c */
 struct rt_ray rt_make_ray(vec3 o, vec3 d, int16_t origin, uint8_t from_camera);
-int intersect_ray_sphere(const struct rt_state *rt, int16_t obj, const struct rt_ray *ray,
+/* Computes the exact tests' forms of the direction (once per ray). */
+void rt_ray_exact(struct rt_ray *r);
+int intersect_ray_sphere(const struct rt_state *rt, int16_t obj, struct rt_ray *ray,
                          num *t1, num *t2);
 /* Closest hit with t_min < t < t_max (strict, earlier item wins ties); 0 if none.
  * any_hit: stop at the first hit found (shadow rays). */
-int closest_intersection(struct rt_state *rt, const struct rt_ray *ray, num t_min, num t_max,
+int closest_intersection(struct rt_state *rt, struct rt_ray *ray, num t_min, num t_max,
                          struct rt_hit *hit, int any_hit);
 /* Whether `item` is hit with t_min < t < t_max. */
-int rt_item_hit(struct rt_state *rt, int16_t item, const struct rt_ray *ray, num t_min, num t_max,
+int rt_item_hit(struct rt_state *rt, int16_t item, struct rt_ray *ray, num t_min, num t_max,
                 struct rt_hit *hit);
 vec3 rt_hit_normal(const struct rt_state *rt, const struct rt_hit *hit, vec3 p);
 void rt_build_bvh(struct rt_state *rt);
@@ -159,9 +170,10 @@ void rt_frame_constants(struct rt_state *rt);
  * internal reflection. */
 int rt_refract(vec3 d, vec3 n, num ior, vec3 *out);
 
-/* rt_lighting.c: intensity at P (normal N, view V = -D) for specular exponent s.
+/* rt_lighting.c: intensity at P (normal N, view V = -D) for specular exponent s
+ * (s_zero: rt_powi_zero_below of it, or -1).
  * *shadow_bits gets bit k set when light k is shadowed (may be NULL). */
-num compute_lighting(struct rt_state *rt, vec3 p, vec3 n, vec3 v, num s, int16_t origin,
+num compute_lighting(struct rt_state *rt, vec3 p, vec3 n, vec3 v, num s, num s_zero, int16_t origin,
                      uint8_t *shadow_bits);
 
 #endif

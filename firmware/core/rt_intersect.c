@@ -27,10 +27,23 @@ struct rt_ray rt_make_ray(vec3 o, vec3 d, int16_t origin, uint8_t from_camera)
     struct rt_ray r;
     r.o = o;
     r.d = d;
-    wnum a = v3_dot_wide(d, d);
-    r.a = a;
+    r.cd = rt_cdir_make(d);
     r.origin = origin;
     r.from_camera = from_camera;
+    r.exact = 0;
+    r.a = r.as = 0;           /* set by rt_ray_exact */
+    r.ds = d;
+    r.tscale = NUM_ONE;
+    return r;
+}
+
+void rt_ray_exact(struct rt_ray *r)
+{
+    if (r->exact) return;
+    r->exact = 1;
+    vec3 d = r->d;
+    wnum a = v3_dot_wide(d, d);
+    r->a = a;
     /* find k from a alone (a/4 per halving), then scale once: exact */
     num ts = NUM_ONE;
     wnum four = wnum_from_num(NUM_C(4.0)), quarter = wnum_from_num(NUM_C(0.25));
@@ -47,10 +60,9 @@ struct rt_ray rt_make_ray(vec3 o, vec3 d, int16_t origin, uint8_t from_camera)
         d = v3_scale(d, ts);
         a = v3_dot_wide(d, d);
     }
-    r.ds = d;
-    r.as = a;
-    r.tscale = ts;
-    return r;
+    r->ds = d;
+    r->as = a;
+    r->tscale = ts;
 }
 
 static num scale_t(num t, num tscale)
@@ -58,18 +70,56 @@ static num scale_t(num t, num tscale)
     return tscale == NUM_ONE ? t : num_mul(t, tscale);
 }
 
-/* IntersectRaySphere: the two roots, t1 the far one and t2 the near one
- * (the book's order); 0 when the ray misses. */
-int intersect_ray_sphere(const struct rt_state *rt, int16_t obj, const struct rt_ray *ray,
-                         num *t1, num *t2)
+/* The robust test's quadratic a t'^2 - 2 b t' + c = 0 along ds (t = t' ts),
+ * up to q = b + sign(b) sqrt(b^2 - a c); 0 when it has no root or both
+ * roots are <= 0 with the origin outside (c > 0, b <= 0), which every
+ * caller rejects (t_min >= 0). Not for a ray leaving this sphere. */
+struct sphere_quad { wnum a, b, c, disc, q; num ts; };
+
+static int sphere_quad(const struct rt_state *rt, int16_t obj, struct rt_ray *ray, struct sphere_quad *k)
 {
     const struct rt_object *o = &rt->s->objects[obj];
     const struct rt_obj_cache *oc = &rt->oc[obj];
     int cam = ray->from_camera && rt->cached;
+    /* certain misses, decided in 32-bit arithmetic (num_rt.h): the test
+     * below would return 0 too */
+    if (rt->shortcuts && rt_coarse_sphere_miss(&ray->cd, ray->o, o->center, o->radius)) return 0;
+    rt_ray_exact(ray);
     vec3 co = cam ? oc->co_cam : v3_sub(ray->o, o->center);
+    k->a = ray->as;
+    k->ts = ray->tscale;
+    k->b = wnum_sub(wnum_from_num(NUM_ZERO), v3_dot_wide(co, ray->ds));
+    /* c = CO.CO - r^2 (per frame from the camera: the same value) */
+    k->c = cam ? oc->c_cam : wnum_sub(v3_dot_wide(co, co), oc->r2);
+    if (k->c > 0 && k->b <= 0) return 0;
+    k->disc = wnum_sub(wnum_mul(k->b, k->b), wnum_mul(k->a, k->c));
+    if (k->disc < 0) return 0;
+    wnum h = wnum_sqrt(k->disc);
+    k->q = k->b >= 0 ? wnum_add(k->b, h) : wnum_sub(k->b, h);
+    return 1;
+}
+
+/* O on the sphere (the ray leaves it): b, with the roots exactly 0 and 2b/a. */
+static wnum sphere_self_b(const struct rt_state *rt, int16_t obj, struct rt_ray *ray)
+{
+    rt_ray_exact(ray);
+    vec3 co = v3_sub(ray->o, rt->s->objects[obj].center);
+    return wnum_sub(wnum_from_num(NUM_ZERO), v3_dot_wide(co, ray->ds));
+}
+
+/* IntersectRaySphere: the two roots, t1 the far one and t2 the near one
+ * (the book's order); 0 when the ray misses. */
+int intersect_ray_sphere(const struct rt_state *rt, int16_t obj, struct rt_ray *ray,
+                         num *t1, num *t2)
+{
+    const struct rt_object *o = &rt->s->objects[obj];
+    const struct rt_obj_cache *oc = &rt->oc[obj];
 
     if (rt->book) {
         /* The demos' operation order, literally. */
+        int cam = ray->from_camera && rt->cached;
+        rt_ray_exact(ray);
+        vec3 co = cam ? oc->co_cam : v3_sub(ray->o, o->center);
         num k1 = wnum_to_num(ray->a);
         num k2 = num_mul(NUM_C(2.0), v3_dot(co, ray->d));
         num k3 = cam ? oc->k3_cam : num_sub(v3_dot(co, co), num_mul(o->radius, o->radius));
@@ -81,32 +131,63 @@ int intersect_ray_sphere(const struct rt_state *rt, int16_t obj, const struct rt
         *t2 = num_div(num_sub(num_neg(k2), sq), den);
         return 1;
     }
-
-    wnum a = ray->as;
-    num ts = ray->tscale;
-    vec3 d = ray->ds;
-    wnum b = wnum_sub(wnum_from_num(NUM_ZERO), v3_dot_wide(co, d));
     if (ray->origin == obj) {
         /* O lies on this sphere: the roots are exactly 0 and 2b/a. */
-        num far = scale_t(wnum_div(wnum_add(b, b), a), ts);
+        wnum b = sphere_self_b(rt, obj, ray);
+        num far = scale_t(wnum_div(wnum_add(b, b), ray->as), ray->tscale);
         if (far > 0) { *t1 = far; *t2 = NUM_ZERO; }
         else { *t1 = NUM_ZERO; *t2 = far; }
         return 1;
     }
-    wnum c = (cam && ts == NUM_ONE) ? oc->c_cam : wnum_sub(v3_dot_wide(co, co), oc->r2);
-    /* outside (c > 0) and moving away (b <= 0): both roots are <= 0, which
-     * every caller rejects (t_min >= 0); skips the square root and divisions */
-    if (c > 0 && b <= 0) return 0;
-    wnum disc = wnum_sub(wnum_mul(b, b), wnum_mul(a, c));
-    if (disc < 0) return 0;
-    wnum h = wnum_sqrt(disc);
-    wnum q = b >= 0 ? wnum_add(b, h) : wnum_sub(b, h);
-    if (q == 0) { *t1 = *t2 = NUM_ZERO; return 1; }
-    num ra = scale_t(wnum_div(q, a), ts);
-    num rc = scale_t(wnum_div(c, q), ts);
+    struct sphere_quad k;
+    if (!sphere_quad(rt, obj, ray, &k)) return 0;
+    if (k.q == 0) { *t1 = *t2 = NUM_ZERO; return 1; }
+    num ra = scale_t(wnum_div(k.q, k.a), k.ts);
+    num rc = scale_t(wnum_div(k.c, k.q), k.ts);
     if (ra > rc) { *t1 = ra; *t2 = rc; }
     else { *t1 = rc; *t2 = ra; }
     return 1;
+}
+
+/* What rt_item_hit's book-order comparisons pick from intersect_ray_sphere's
+ * roots (the smallest in (t_min, limit)), with less work: 1 and *t when
+ * there is one. Leaving the sphere, the roots are 0 and 2b/a, so b <= 0
+ * means no hit without dividing. From outside with b^2 > a c the near root
+ * c/q is the smaller (q^2 - a c >= disc - 1 ulp + 2 b h >= 0, and rounding
+ * keeps the order), so the far root q/a is only needed when c/q <= t_min. */
+static int sphere_first_hit(const struct rt_state *rt, int16_t obj, struct rt_ray *ray, num t_min, num limit,
+                            num *t)
+{
+    num t1, t2;
+    if (ray->origin == obj) {
+        if (rt_coarse_dot_negative(&ray->cd, ray->o, rt->s->objects[obj].center)) return 0;
+        wnum b = sphere_self_b(rt, obj, ray);
+        if (b <= 0) return 0;
+        t1 = scale_t(wnum_div(wnum_add(b, b), ray->as), ray->tscale);
+        if (t_min < t1 && t1 < limit) { *t = t1; return 1; }
+        return 0;   /* the other root, 0, is never above t_min */
+    }
+    struct sphere_quad k;
+    if (!sphere_quad(rt, obj, ray, &k)) return 0;
+    if (k.q == 0) {
+        t1 = t2 = NUM_ZERO;
+    } else if (k.c > 0 && k.disc > 0) {
+        t2 = scale_t(wnum_div(k.c, k.q), k.ts);
+        if (t2 >= limit) return 0;
+        if (t_min < t2) { *t = t2; return 1; }
+        t1 = scale_t(wnum_div(k.q, k.a), k.ts);
+    } else {
+        num ra = scale_t(wnum_div(k.q, k.a), k.ts);
+        num rc = scale_t(wnum_div(k.c, k.q), k.ts);
+        t1 = ra > rc ? ra : rc;
+        t2 = ra > rc ? rc : ra;
+    }
+    /* book order: t1 first, then t2, strict comparisons */
+    int got = 0;
+    if (t_min < t1 && t1 < limit) { limit = t1; got = 1; }
+    if (t_min < t2 && t2 < limit) { limit = t2; got = 1; }
+    *t = limit;
+    return got;
 }
 
 /* n/d in [0, 1], decided without dividing (d != 0). */
@@ -116,11 +197,12 @@ static int ratio_in_unit(wnum n, wnum d)
 }
 
 /* Plane n.p = dist: two-sided; the normal is turned toward the ray origin. */
-static int intersect_ray_plane(const struct rt_state *rt, int16_t obj, const struct rt_ray *ray,
+static int intersect_ray_plane(const struct rt_state *rt, int16_t obj, struct rt_ray *ray,
                                num *t, uint8_t *flip)
 {
     const struct rt_object *o = &rt->s->objects[obj];
     if (ray->origin == obj) return 0;   /* a flat surface never hits itself */
+    rt_ray_exact(ray);
     num ts = ray->tscale;
     vec3 d = ray->ds;
     num den = v3_dot(o->normal, d);
@@ -137,12 +219,13 @@ static int intersect_ray_plane(const struct rt_state *rt, int16_t obj, const str
 }
 
 /* Triangle p0 p1 p2 (Möller–Trumbore on the cached edges). */
-static int intersect_ray_triangle(const struct rt_state *rt, int16_t obj, const struct rt_ray *ray,
+static int intersect_ray_triangle(const struct rt_state *rt, int16_t obj, struct rt_ray *ray,
                                   num *t, uint8_t *flip)
 {
     const struct rt_object *o = &rt->s->objects[obj];
     const struct rt_obj_cache *oc = &rt->oc[obj];
     if (ray->origin == obj) return 0;
+    rt_ray_exact(ray);
     num ts = ray->tscale;
     vec3 d = ray->ds;
     vec3 pv = v3_cross(d, oc->e2);
@@ -176,7 +259,7 @@ struct span {
     uint8_t f0, f1;
 };
 
-static int sphere_span(const struct rt_state *rt, int16_t obj, const struct rt_ray *ray,
+static int sphere_span(const struct rt_state *rt, int16_t obj, struct rt_ray *ray,
                        struct span *sp)
 {
     num t1, t2;
@@ -189,7 +272,7 @@ static int sphere_span(const struct rt_state *rt, int16_t obj, const struct rt_r
 }
 
 /* Spans of a CSG of two spheres; returns how many (0..2). */
-static int csg_spans(const struct rt_state *rt, const struct rt_csg *g, const struct rt_ray *ray,
+static int csg_spans(const struct rt_state *rt, const struct rt_csg *g, struct rt_ray *ray,
                      struct span out[2])
 {
     struct span A, B;
@@ -238,7 +321,7 @@ static int csg_spans(const struct rt_state *rt, const struct rt_csg *g, const st
     }
 }
 
-int rt_item_hit(struct rt_state *rt, int16_t item, const struct rt_ray *ray, num t_min, num t_max,
+int rt_item_hit(struct rt_state *rt, int16_t item, struct rt_ray *ray, num t_min, num t_max,
                 struct rt_hit *hit)
 {
     const struct scene *s = rt->s;
@@ -264,6 +347,12 @@ int rt_item_hit(struct rt_state *rt, int16_t item, const struct rt_ray *ray, num
         uint8_t flip = 0;
         switch (o->shape) {
         case RT_SPHERE:
+            if (rt->shortcuts) {
+                if (!sphere_first_hit(rt, item, ray, t_min, limit, &t)) return 0;
+                limit = t;
+                got = 1;
+                break;
+            }
             if (!intersect_ray_sphere(rt, item, ray, &t1, &t2)) return 0;
             /* book order: t1 first, then t2, strict comparisons */
             if (t_min < t1 && t1 < limit) { limit = t1; got = 1; }
@@ -284,9 +373,10 @@ int rt_item_hit(struct rt_state *rt, int16_t item, const struct rt_ray *ray, num
 
 /* Conservative ray / bounding-sphere test (robust form, both formulations):
  * 0 only when the ray certainly misses the sphere within t > 0. */
-static int bound_hit(struct rt_state *rt, vec3 c, num r, const struct rt_ray *ray)
+static int bound_hit(struct rt_state *rt, vec3 c, num r, struct rt_ray *ray)
 {
     rt->n.tests++;
+    rt_ray_exact(ray);
     wnum a = ray->as;
     vec3 d = ray->ds;
     vec3 co = v3_sub(ray->o, c);
@@ -297,7 +387,7 @@ static int bound_hit(struct rt_state *rt, vec3 c, num r, const struct rt_ray *ra
     return wnum_sub(wnum_mul(b, b), wnum_mul(a, cc)) >= 0;
 }
 
-int closest_intersection(struct rt_state *rt, const struct rt_ray *ray, num t_min, num t_max,
+int closest_intersection(struct rt_state *rt, struct rt_ray *ray, num t_min, num t_max,
                          struct rt_hit *hit, int any_hit)
 {
     num limit = t_max;
@@ -386,6 +476,12 @@ static void item_bound(const struct rt_state *rt, int16_t item, vec3 *c, num *r)
 void rt_frame_constants(struct rt_state *rt)
 {
     const struct scene *s = rt->s;
+    for (uint16_t k = 0; k < s->nlights; k++)
+        if (s->lights[k].type == LIGHT_DIRECTIONAL) {
+            rt->light_ray[k] = rt_make_ray(v3(NUM_ZERO, NUM_ZERO, NUM_ZERO), s->lights[k].v, -1, 0);
+            rt_ray_exact(&rt->light_ray[k]);
+            rt->light_len[k] = v3_len(s->lights[k].v);
+        }
     for (uint16_t i = 0; i < s->nobjects; i++) {
         const struct rt_object *o = &s->objects[i];
         struct rt_obj_cache *oc = &rt->oc[i];

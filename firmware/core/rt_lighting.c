@@ -11,7 +11,7 @@
 /* Shadow test: is anything between P and the light (t in (epsilon, t_max))?
  * With any-hit the search stops at the first occluder; with the cache the
  * last occluder of this light is tried first (shadows are coherent). */
-static int in_shadow(struct rt_state *rt, const struct rt_ray *ray, num t_max, uint16_t light)
+static int in_shadow(struct rt_state *rt, struct rt_ray *ray, num t_max, uint16_t light)
 {
     const struct rt_options *o = &rt->s->rt;
     struct rt_hit hit;
@@ -27,14 +27,21 @@ static int in_shadow(struct rt_state *rt, const struct rt_ray *ray, num t_max, u
     return 1;
 }
 
-num compute_lighting(struct rt_state *rt, vec3 p, vec3 n, vec3 v, num s, int16_t origin,
+num compute_lighting(struct rt_state *rt, vec3 p, vec3 n, vec3 v, num s, num s_zero, int16_t origin,
                      uint8_t *shadow_bits)
 {
     const struct scene *sc = rt->s;
     const struct rt_options *o = &sc->rt;
     num i = NUM_ZERO;
-    num len_n = v3_len(n);
-    num len_v = v3_len(v);
+    /* |N| and |V| as the demos compute them, each once and only if a term
+     * needs it */
+    num len_n = NUM_ZERO, len_v = NUM_ZERO;
+    int have_n = 0, have_v = 0;
+    if (!rt->shortcuts) {
+        len_n = v3_len(n);
+        len_v = v3_len(v);
+        have_n = have_v = 1;
+    }
     for (uint16_t k = 0; k < sc->nlights; k++) {
         const struct scene_light *lt = &sc->lights[k];
         if (lt->type == LIGHT_AMBIENT) {
@@ -43,7 +50,8 @@ num compute_lighting(struct rt_state *rt, vec3 p, vec3 n, vec3 v, num s, int16_t
         }
         vec3 l;
         num t_max;
-        if (lt->type == LIGHT_POINT) {
+        int directional = lt->type != LIGHT_POINT;
+        if (!directional) {
             l = v3_sub(lt->v, p);
             t_max = NUM_ONE;       /* L unnormalised: the light is at t = 1 */
         } else {
@@ -51,22 +59,36 @@ num compute_lighting(struct rt_state *rt, vec3 p, vec3 n, vec3 v, num s, int16_t
             t_max = NUM_MAX;
         }
         if (o->shadows) {
-            struct rt_ray sr = rt_make_ray(p, l, origin, 0);
+            struct rt_ray sr;
+            if (directional && rt->shortcuts) {
+                /* the direction's forms are the frame's (rt_frame_constants) */
+                sr = rt->light_ray[k];
+                sr.o = p;
+                sr.origin = origin;
+            } else {
+                sr = rt_make_ray(p, l, origin, 0);
+            }
             if (in_shadow(rt, &sr, t_max, k)) {
                 if (shadow_bits && k < 7) *shadow_bits |= (uint8_t)(1u << k);
                 continue;
             }
         }
         num n_dot_l = v3_dot(n, l);
-        num len_l = v3_len(l);
-        if (o->diffuse && n_dot_l > 0)
+        if (o->diffuse && n_dot_l > 0) {
+            num len_l = directional && rt->shortcuts ? rt->light_len[k] : v3_len(l);
+            if (!have_n) { len_n = v3_len(n); have_n = 1; }
             i = num_add(i, num_div(num_mul(lt->intensity, n_dot_l), num_mul(len_n, len_l)));
+        }
         /* The demos run this step even when n.l <= 0; only shadows stop it. */
         if (o->specular && s >= 0) {
             vec3 r = v3_sub(v3_scale(n, num_mul(NUM_C(2.0), n_dot_l)), l);
             num r_dot_v = v3_dot(r, v);
             if (r_dot_v > 0) {
-                num cosb = num_div(r_dot_v, num_mul(v3_len(r), len_v));
+                if (!have_v) { len_v = v3_len(v); have_v = 1; }
+                num den = num_mul(v3_len(r), len_v);
+                /* cos <= s_zero: pow(cos, s) is exactly 0, and so is the term */
+                if (rt->shortcuts && rt_div_at_most(r_dot_v, den, s_zero)) continue;
+                num cosb = num_div(r_dot_v, den);
                 i = num_add(i, num_mul(lt->intensity, num_powi(cosb, (uint32_t)num_to_int(s))));
             }
         }

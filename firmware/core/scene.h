@@ -96,6 +96,9 @@ struct rt_options {
     uint8_t formulation;       /* 0 (default): the mode's own (book operation order in double,
                                   robust intersection elsewhere); 1: book order; 2: robust */
     uint8_t no_frame_cache;    /* 1: recompute per-frame constants per ray (to measure the cache) */
+    uint8_t no_shortcuts;      /* 1: every intersection test and lighting term in full: the
+                                  coarse rejections and early-outs, which provably change no
+                                  pixel, off (to measure them and to test that claim) */
 };
 
 /* ---- rasterizer data (part II) ------------------------------------------ */

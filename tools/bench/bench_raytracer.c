@@ -9,8 +9,11 @@
 #include "raytracer.h"
 #include "rt_book_scenes.h"
 
-#define W 240
-#define H 240
+#ifndef BENCH_RT_SIZE
+#define BENCH_RT_SIZE 240    /* the profile image (make profile-raytracer) is smaller */
+#endif
+#define W BENCH_RT_SIZE
+#define H BENCH_RT_SIZE
 #define STRIP 16
 
 static uint64_t work[4096];          /* 32 KiB: ample for these scenes */

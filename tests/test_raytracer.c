@@ -435,7 +435,8 @@ static void test_coarse_rejection(void)
                         num_from_double((tgt[2] - org[2]) * scale / dist));
             if (k % 5 == 4) D = v3_neg(D);                   /* away from the sphere */
             struct rt_ray ray = rt_make_ray(O, D, -1, 0);
-            int claim = rt_coarse_sphere_miss(&ray.cd, O, o[0].center, o[0].radius);
+            struct rt_cpt cc = rt_cpt_make(o[0].center);
+            int claim = rt_coarse_sphere_miss(&ray.cd, &cc, o[0].radius);
             rt->shortcuts = 0;
             num t1, t2;
             int hit = intersect_ray_sphere(rt, 0, &ray, &t1, &t2);
@@ -446,7 +447,7 @@ static void test_coarse_rejection(void)
             for (int i = 0; i < 3; i++) pt[i] = c[i] + u[i] / len * r;
             vec3 P = v3(num_from_double(pt[0]), num_from_double(pt[1]), num_from_double(pt[2]));
             struct rt_ray leave = rt_make_ray(P, D, 1, 0);
-            if (rt_coarse_dot_negative(&leave.cd, P, o[1].center)) {
+            if (rt_coarse_dot_negative(&leave.cd, &cc)) {
                 negclaims++;
                 intersect_ray_sphere(rt, 1, &leave, &t1, &t2);
                 if (t1 > 0 || t2 > 0) negwrong++;

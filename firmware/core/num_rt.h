@@ -38,8 +38,9 @@ static inline int num_rt_reference_mode(void)
  * modes.
  *
  * Fixed point, in 32-bit integers only (no 64-bit product; one MULS each on
- * ARMv6-M): co = C - O in units U = 2^12 raw (floor; |co|_1 = n1 < 2^19
- * required), D scaled by a power of two to |d_i| < 2^10 (max >= 2^9,
+ * ARMv6-M): co = C - O in units U = 2^12 raw (the difference of the two
+ * points floored to units, error < 1 unit per component; |co|_1 = n1 <
+ * 2^19 required), D scaled by a power of two to |d_i| < 2^10 (max >= 2^9,
  * floor), len >= |d| (max + (mid + min)/2, at most 15 % above). With the truncation errors of both (< 1 unit per
  * component), |X| = |co x d| > T = R (len + 2) + 2 len + 2 n1 + 3 proves
  * that the line passes more than R units from C, and co.d < -T that C lies
@@ -51,6 +52,16 @@ static inline int num_rt_reference_mode(void)
  * and when D's largest raw component lies in [2^(F-8), 2^(F+13)), where the
  * robust test's direction scaling keeps D'.D' in [0.25, 4); otherwise
  * len = 0 (no coarse test for that ray). */
+/* A point in the coarse units (fixed: raw >> 12, floor): differences of
+ * two carry an error in (-1, 1) unit per component. */
+struct rt_cpt {
+#if NUM_MODE == NUM_MODE_FIXED
+    int32_t x, y, z;
+#else
+    uint8_t none;
+#endif
+};
+
 struct rt_cdir {
 #if NUM_MODE == NUM_MODE_FIXED
     int32_t x, y, z;
@@ -58,15 +69,31 @@ struct rt_cdir {
 #else
     uint8_t none;
 #endif
+    struct rt_cpt o;      /* the ray's origin */
 };
+
+static inline struct rt_cpt rt_cpt_make(vec3 p)
+{
+    struct rt_cpt c;
+#if NUM_MODE == NUM_MODE_FIXED
+    c.x = p.x >> 12;
+    c.y = p.y >> 12;
+    c.z = p.z >> 12;
+#else
+    (void)p;
+    c.none = 1;
+#endif
+    return c;
+}
 
 #if NUM_MODE == NUM_MODE_FIXED
 static inline uint32_t rt_uabs(int32_t v) { return v < 0 ? 0u - (uint32_t)v : (uint32_t)v; }
 #endif
 
-static inline struct rt_cdir rt_cdir_make(vec3 d)
+static inline struct rt_cdir rt_cdir_make(vec3 o, vec3 d)
 {
     struct rt_cdir c;
+    c.o = rt_cpt_make(o);
 #if NUM_MODE == NUM_MODE_FIXED
     uint32_t ax = rt_uabs(d.x), ay = rt_uabs(d.y), az = rt_uabs(d.z);
     uint32_t m = ax > ay ? ax : ay;
@@ -99,43 +126,63 @@ static inline struct rt_cdir rt_cdir_make(vec3 d)
     return c;
 }
 
-static inline int rt_coarse_sphere_miss(const struct rt_cdir *cd, vec3 o, vec3 ctr, num r)
+#if NUM_MODE == NUM_MODE_FIXED
+/* co = C - O in coarse units, n1 = |co|_1; 0 when n1 >= 2^19 (no test) */
+static inline int rt_coarse_co(const struct rt_cdir *cd, const struct rt_cpt *c, int32_t co[3], uint32_t *n1)
+{
+    co[0] = c->x - cd->o.x;
+    co[1] = c->y - cd->o.y;
+    co[2] = c->z - cd->o.z;
+    *n1 = rt_uabs(co[0]) + rt_uabs(co[1]) + rt_uabs(co[2]);
+    return *n1 < (1u << 19);
+}
+#endif
+
+/* k >= 0 with (t >> k) < 2^15 (t < 2^31). */
+#if NUM_MODE == NUM_MODE_FIXED
+static inline int rt_fit15(uint32_t t) { return t < 32768u ? 0 : 17 - num_clz32(t); }
+#endif
+
+static inline int rt_coarse_sphere_miss(const struct rt_cdir *cd, const struct rt_cpt *ctr, num r)
 {
 #if NUM_MODE == NUM_MODE_FIXED
-    if (cd->len == 0 || r < 0) return 0;
-    /* C - O in units of 2^12 raw, floor (the int64 shift is arithmetic) */
-    int32_t cx = (int32_t)(((int64_t)ctr.x - o.x) >> 12);
-    int32_t cy = (int32_t)(((int64_t)ctr.y - o.y) >> 12);
-    int32_t cz = (int32_t)(((int64_t)ctr.z - o.z) >> 12);
-    uint32_t n1 = rt_uabs(cx) + rt_uabs(cy) + rt_uabs(cz);
-    if (n1 >= (1u << 19)) return 0;
-    uint32_t R = (((uint32_t)r + 4095u) >> 12) +
-                 ((5u * n1 + (1u << (NUM_FRAC / 2)) - 1) >> (NUM_FRAC / 2)) + 3;
+    int32_t co[3];
+    uint32_t n1;
+    if (cd->len == 0 || r < 0 || !rt_coarse_co(cd, ctr, co, &n1)) return 0;
+    int32_t cx = co[0], cy = co[1], cz = co[2];
+    uint32_t rc = ((uint32_t)r + 4095u) >> 12;
+    uint32_t R = rc + ((5u * n1 + (1u << (NUM_FRAC / 2)) - 1) >> (NUM_FRAC / 2)) + 3;
     uint32_t len = (uint32_t)cd->len;
     /* R < 2^19 + 2^17, len < 2^11: T < 2^31 */
     uint32_t T = R * (len + 2) + 2 * len + 2 * n1 + 3;
     /* |co_i| < 2^19, |d_i| < 2^10: every product < 2^29, the sums < 2^31 */
     int32_t p = cx * cd->x + cy * cd->y + cz * cd->z;
-    if (p < 0 && rt_uabs(p) > T) return 1;           /* behind the origin */
-    /* behind (b < 0, as rt_coarse_dot_negative) and certainly outside
-     * (|CO| >= r + 2 units, so c > 0): the robust test's early-out */
-    if (p < 0 && rt_uabs(p) > 3 * len + 2 * n1 + 5) {
-        uint32_t rc = ((uint32_t)r + 4095u) >> 12;
-        uint32_t mx = rt_uabs(cx);
-        if (rt_uabs(cy) > mx) mx = rt_uabs(cy);
-        if (rt_uabs(cz) > mx) mx = rt_uabs(cz);
-        if (mx >= rc + 3 || n1 >= 2 * rc + 5) return 1;
+    if (p < 0) {
+        uint32_t ap = rt_uabs(p);
+        if (ap > T) return 1;                        /* more than R behind the origin */
+        /* behind (b < 0, as rt_coarse_dot_negative) and certainly outside
+         * (|CO| >= r + 2 units, so c > 0): the robust test's early-out */
+        if (ap > 3 * len + 2 * n1 + 5) {
+            uint32_t mx = rt_uabs(cx);
+            if (rt_uabs(cy) > mx) mx = rt_uabs(cy);
+            if (rt_uabs(cz) > mx) mx = rt_uabs(cz);
+            if (mx >= rc + 3 || n1 >= 2 * rc + 5) return 1;
+        }
     }
     uint32_t xx = rt_uabs(cy * cd->z - cz * cd->y);
+    if (xx > T) return 1;
     uint32_t xy = rt_uabs(cz * cd->x - cx * cd->z);
+    if (xy > T) return 1;
     uint32_t xz = rt_uabs(cx * cd->y - cy * cd->x);
-    if (xx > T || xy > T || xz > T) return 1;
+    if (xz > T) return 1;
     /* |X|^2 > T^2, scaled down until the squares fit: X rounded down and T
      * up, so the scaled test implies the exact one */
-    while (T > 26000u) { T = (T >> 1) + 1; xx >>= 1; xy >>= 1; xz >>= 1; }
+    int k = rt_fit15(T);
+    T = (T >> k) + (k > 0);
+    xx >>= k; xy >>= k; xz >>= k;
     return xx * xx + xy * xy + xz * xz > T * T;
 #else
-    (void)cd; (void)o; (void)ctr; (void)r;
+    (void)cd; (void)ctr; (void)r;
     return 0;
 #endif
 }
@@ -145,19 +192,16 @@ static inline int rt_coarse_sphere_miss(const struct rt_cdir *cd, vec3 o, vec3 c
  * ulp) is negative: with the coarse forms' errors, |co.d - exact| <=
  * 2 len + n1 + 3, and co.d < -(len + 2) puts C's projection more than one
  * unit behind O. */
-static inline int rt_coarse_dot_negative(const struct rt_cdir *cd, vec3 o, vec3 ctr)
+static inline int rt_coarse_dot_negative(const struct rt_cdir *cd, const struct rt_cpt *ctr)
 {
 #if NUM_MODE == NUM_MODE_FIXED
-    if (cd->len == 0) return 0;
-    int32_t cx = (int32_t)(((int64_t)ctr.x - o.x) >> 12);
-    int32_t cy = (int32_t)(((int64_t)ctr.y - o.y) >> 12);
-    int32_t cz = (int32_t)(((int64_t)ctr.z - o.z) >> 12);
-    uint32_t n1 = rt_uabs(cx) + rt_uabs(cy) + rt_uabs(cz);
-    if (n1 >= (1u << 19)) return 0;
-    int32_t p = cx * cd->x + cy * cd->y + cz * cd->z;
+    int32_t co[3];
+    uint32_t n1;
+    if (cd->len == 0 || !rt_coarse_co(cd, ctr, co, &n1)) return 0;
+    int32_t p = co[0] * cd->x + co[1] * cd->y + co[2] * cd->z;
     return p < 0 && rt_uabs(p) > 3 * (uint32_t)cd->len + 2 * n1 + 5;
 #else
-    (void)cd; (void)o; (void)ctr;
+    (void)cd; (void)ctr;
     return 0;
 #endif
 }
@@ -193,6 +237,61 @@ static inline num rt_powi_zero_below(uint32_t e)
 #else
     (void)e;
     return NUM_C(-1.0);
+#endif
+}
+
+#if NUM_MODE == NUM_MODE_FIXED
+/* v scaled by a power of two to components < 2^10 in magnitude, the largest
+ * >= 2^9 (floor: error in (-1, 0]); 0 when v's largest component is below
+ * 2^(F-2) (|v| < 1/4). *ub gets an upper bound of the scaled |v| + 1. */
+static inline int rt_coarse_vec(vec3 v, int32_t c[3], uint32_t *ub)
+{
+    uint32_t ax = rt_uabs(v.x), ay = rt_uabs(v.y), az = rt_uabs(v.z);
+    uint32_t m = ax > ay ? ax : ay;
+    if (az > m) m = az;
+    if (m < (1u << (NUM_FRAC - 2))) return 0;
+    int e = 32 - num_clz32(m);
+    if (e > 10) { c[0] = v.x >> (e - 10); c[1] = v.y >> (e - 10); c[2] = v.z >> (e - 10); }
+    else { c[0] = v.x * (1 << (10 - e)); c[1] = v.y * (1 << (10 - e)); c[2] = v.z * (1 << (10 - e)); }
+    ax = rt_uabs(c[0]); ay = rt_uabs(c[1]); az = rt_uabs(c[2]);
+    m = ax > ay ? ax : ay;
+    if (az > m) m = az;
+    *ub = m + ((ax + ay + az - m + 1) >> 1) + 1;
+    return 1;
+}
+#endif
+
+/* 1 only when the lighting's cosine num_div(v3_dot(r, v), num_mul(v3_len(r),
+ * v3_len(v))) is certainly <= t, decided from 10-bit forms of r and v in
+ * 32-bit products (and one 32x32->64): the forms' truncation bounds the
+ * true cosine by N / sqrt(Dr Dv) with N = r'.v' + 2 (|r'| + |v'|) + 3 and
+ * Dr = r'.r' - 4 |r'|; the exact computation's roundings move the cosine by
+ * less than 40 ulps for |r|, |v| >= 1/4, and the test keeps 64 ulps. */
+static inline int rt_coarse_cos_at_most(vec3 r, vec3 v, num t)
+{
+#if NUM_MODE == NUM_MODE_FIXED
+    num tm = t - 64;
+    int32_t rc[3], vc[3];
+    uint32_t lr, lv;
+    if (NUM_FRAC < 12 || t < 64 || t > NUM_ONE || !rt_coarse_vec(r, rc, &lr) || !rt_coarse_vec(v, vc, &lv))
+        return 0;
+    int32_t dp = rc[0] * vc[0] + rc[1] * vc[1] + rc[2] * vc[2];
+    int32_t n = dp + (int32_t)(2 * (lr + lv) + 3);
+    if (n <= 0) return 1;
+    uint32_t dr = (uint32_t)(rc[0] * rc[0] + rc[1] * rc[1] + rc[2] * rc[2]) - 4 * lr;
+    uint32_t dv = (uint32_t)(vc[0] * vc[0] + vc[1] * vc[1] + vc[2] * vc[2]) - 4 * lv;
+    /* N < 2^22, Dr, Dv < 2^22: mantissas Nh = ceil(N / 2^8) < 2^14,
+     * Drh = floor(Dr / 2^6) < 2^16, th = floor(t' 2^(15-F)) <= 2^15;
+     * N^2 2^2F <= t'^2 Dr Dv follows from Nh^2 2^34 <= th^2 Drh Dvh */
+    uint32_t nh = ((uint32_t)n + 255u) >> 8;
+    uint32_t th = NUM_FRAC >= 15 ? (uint32_t)tm >> (NUM_FRAC >= 15 ? NUM_FRAC - 15 : 0)
+                                 : (uint32_t)tm << (NUM_FRAC < 15 ? 15 - NUM_FRAC : 0);
+    uint64_t lhs = (uint64_t)(nh * nh) << 34;
+    uint64_t rhs = num_umul32(th * th, (dr >> 6) * (dv >> 6));
+    return lhs <= rhs;
+#else
+    (void)r; (void)v; (void)t;
+    return 0;
 #endif
 }
 

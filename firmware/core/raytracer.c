@@ -9,7 +9,7 @@
  * its left or upper neighbour in object or by more than this per channel. */
 #define RT_ADAPTIVE_DIFF NUM_C(12.0)
 
-struct layout { size_t state, oc, items, unb, bvh, bvh_items, occ, lray, llen, row_c, row_item, total; };
+struct layout { size_t state, oc, items, unb, bvh, bvh_items, occ, lray, llen, row_c, row_item, colx, total; };
 
 static struct layout layout_of(const struct scene *s, uint16_t width)
 {
@@ -27,6 +27,7 @@ static struct layout layout_of(const struct scene *s, uint16_t width)
     l.llen = off; off += ALIGN8(sizeof(num) * (s->nlights ? s->nlights : 1));
     l.row_c = off; off += ALIGN8(sizeof(rgb) * width);
     l.row_item = off; off += ALIGN8(sizeof(int16_t) * width);
+    l.colx = off; off += ALIGN8(sizeof(num) * width);
     l.total = off;
     return l;
 }
@@ -68,6 +69,7 @@ int rt_init(struct render_ctx *ctx)
     rt->light_len = (num *)(w + l.llen);
     rt->row_c = (rgb *)(w + l.row_c);
     rt->row_item = (int16_t *)(w + l.row_item);
+    rt->col_x = (num *)(w + l.colx);
     const struct rt_options *o = &s->rt;
     rt->book = o->formulation == 1 || (o->formulation == 0 && num_rt_reference_mode());
     rt->depth = o->recursion_depth > RT_MAX_DEPTH ? RT_MAX_DEPTH : o->recursion_depth;
@@ -90,6 +92,10 @@ int rt_init(struct render_ctx *ctx)
     rt->d = s->projection_d;
     rt->sx = num_div(rt->vw, rt->wn);
     rt->sy = num_div(rt->vh, rt->hn);
+    /* viewport x of every column's centre sample (canvas_to_viewport) */
+    for (uint16_t c = 0; c < ctx->width; c++)
+        rt->col_x[c] = num_div(num_mul(num_from_int(c - ctx->width / 2), rt->vw), rt->wn);
+    rt->row_y_row = -1;
     rt->cam_pos = s->camera.position;
     rt->cam_rot = s->camera.rotation;
     rt_frame_constants(rt);
@@ -218,11 +224,8 @@ static rgb trace_ray(struct rt_state *rt, struct rt_ray *ray, num t_min, num t_m
 
 /* CanvasToViewport for canvas point (x, y) (num, sub-pixel allowed), then
  * the camera rotation. */
-static vec3 canvas_to_viewport(const struct rt_state *rt, num x, num y)
+static vec3 rotate_direction(const struct rt_state *rt, vec3 d)
 {
-    /* (x*Vw)/W rather than x*(Vw/W): Vw/W = 1/600 in Q15.16 is 0.02% off,
-     * a whole pixel at the edge of a 600-pixel canvas */
-    vec3 d = v3(num_div(num_mul(x, rt->vw), rt->wn), num_div(num_mul(y, rt->vh), rt->hn), rt->d);
     if (!rt->cam_rotated) return d;
     /* D'[i] = ((0 + D.x*M[i][0]) + D.y*M[i][1]) + D.z*M[i][2], the demo's order */
     vec3 r;
@@ -233,11 +236,33 @@ static vec3 canvas_to_viewport(const struct rt_state *rt, num x, num y)
     return r;
 }
 
-static rgb primary(struct rt_state *rt, num x, num y, struct rt_prim *prim)
+static vec3 canvas_to_viewport(const struct rt_state *rt, num x, num y)
 {
-    struct rt_ray ray = rt_make_ray(rt->cam_pos, canvas_to_viewport(rt, x, y), -1, 1);
+    /* (x*Vw)/W rather than x*(Vw/W): Vw/W = 1/600 in Q15.16 is 0.02% off,
+     * a whole pixel at the edge of a 600-pixel canvas */
+    return rotate_direction(rt, v3(num_div(num_mul(x, rt->vw), rt->wn), num_div(num_mul(y, rt->vh), rt->hn), rt->d));
+}
+
+/* The same for a pixel's centre: x from the column table, y once a row. */
+static vec3 pixel_to_viewport(struct rt_state *rt, int col, int row)
+{
+    if (rt->row_y_row != row) {
+        rt->row_y = num_div(num_mul(num_from_int(rt->h / 2 - 1 - row), rt->vh), rt->hn);
+        rt->row_y_row = row;
+    }
+    return rotate_direction(rt, v3(rt->col_x[col], rt->row_y, rt->d));
+}
+
+static rgb trace_primary(struct rt_state *rt, vec3 d, struct rt_prim *prim)
+{
+    struct rt_ray ray = rt_make_ray(rt->cam_pos, d, -1, 1);
     rt->n.primary_rays++;
     return trace_ray(rt, &ray, rt->s->rt.t_min_primary, NUM_MAX, rt->depth, prim);
+}
+
+static rgb primary(struct rt_state *rt, num x, num y, struct rt_prim *prim)
+{
+    return trace_primary(rt, canvas_to_viewport(rt, x, y), prim);
 }
 
 /* n x n rays on a regular grid inside the pixel, averaged. */
@@ -270,7 +295,7 @@ static rgb pixel(struct rt_state *rt, int col, int row, int have_left, int have_
         return supersample(rt, x, y, rt->ss);
     }
     struct rt_prim pr = { -1, 0 };
-    rgb c = primary(rt, x, y, &pr);
+    rgb c = trace_primary(rt, pixel_to_viewport(rt, col, row), &pr);
     if (probe) *probe = pr.item < 0 ? 0x80 : pr.shadow;
     if (rt->ss_adaptive) {
         int n = rt->ss > 1 ? rt->ss : 2;

@@ -92,6 +92,7 @@ struct rt_obj_cache {
     vec3 bc;              /* bounding sphere of the item (BVH) */
     num br;
     num spec_zero;        /* rt_powi_zero_below(material's exponent) */
+    struct rt_cpt cc;     /* centre in coarse units (num_rt.h) */
 };
 
 /* Bounding-sphere hierarchy node: a leaf holds items [first, first+count). */
@@ -134,6 +135,9 @@ struct rt_state {
     num *light_len;            /* per light: |L| of directional lights (per frame) */
     rgb *row_c;                /* one row of colours (subsampling/adaptive) */
     int16_t *row_item;
+    num *col_x;                /* viewport x of each column's centre */
+    num row_y;                 /* viewport y of row row_y_row */
+    int32_t row_y_row;
     int16_t skip_item;         /* item closest_intersection skips (already tested), -1 none */
     int32_t last_row;          /* row of the notes in row_c/row_item (-2: none) */
     uint8_t *shadow_probe;     /* optional, w*h: shadow bits of primary hits */

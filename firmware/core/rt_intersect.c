@@ -27,7 +27,7 @@ struct rt_ray rt_make_ray(vec3 o, vec3 d, int16_t origin, uint8_t from_camera)
     struct rt_ray r;
     r.o = o;
     r.d = d;
-    r.cd = rt_cdir_make(d);
+    r.cd = rt_cdir_make(o, d);
     r.origin = origin;
     r.from_camera = from_camera;
     r.exact = 0;
@@ -83,7 +83,7 @@ static int sphere_quad(const struct rt_state *rt, int16_t obj, struct rt_ray *ra
     int cam = ray->from_camera && rt->cached;
     /* certain misses, decided in 32-bit arithmetic (num_rt.h): the test
      * below would return 0 too */
-    if (rt->shortcuts && rt_coarse_sphere_miss(&ray->cd, ray->o, o->center, o->radius)) return 0;
+    if (rt->shortcuts && rt_coarse_sphere_miss(&ray->cd, &oc->cc, o->radius)) return 0;
     rt_ray_exact(ray);
     vec3 co = cam ? oc->co_cam : v3_sub(ray->o, o->center);
     k->a = ray->as;
@@ -160,7 +160,7 @@ static int sphere_first_hit(const struct rt_state *rt, int16_t obj, struct rt_ra
 {
     num t1, t2;
     if (ray->origin == obj) {
-        if (rt_coarse_dot_negative(&ray->cd, ray->o, rt->s->objects[obj].center)) return 0;
+        if (rt_coarse_dot_negative(&ray->cd, &rt->oc[obj].cc)) return 0;
         wnum b = sphere_self_b(rt, obj, ray);
         if (b <= 0) return 0;
         t1 = scale_t(wnum_div(wnum_add(b, b), ray->as), ray->tscale);
@@ -486,6 +486,7 @@ void rt_frame_constants(struct rt_state *rt)
         const struct rt_object *o = &s->objects[i];
         struct rt_obj_cache *oc = &rt->oc[i];
         oc->r2 = num_mul_wide(o->radius, o->radius);
+        oc->cc = rt_cpt_make(o->center);
         if (o->shape == RT_SPHERE) {
             oc->co_cam = v3_sub(rt->cam_pos, o->center);
             if (rt->book)

@@ -64,6 +64,7 @@ num compute_lighting(struct rt_state *rt, vec3 p, vec3 n, vec3 v, num s, num s_z
                 /* the direction's forms are the frame's (rt_frame_constants) */
                 sr = rt->light_ray[k];
                 sr.o = p;
+                sr.cd.o = rt_cpt_make(p);
                 sr.origin = origin;
             } else {
                 sr = rt_make_ray(p, l, origin, 0);
@@ -84,9 +85,10 @@ num compute_lighting(struct rt_state *rt, vec3 p, vec3 n, vec3 v, num s, num s_z
             vec3 r = v3_sub(v3_scale(n, num_mul(NUM_C(2.0), n_dot_l)), l);
             num r_dot_v = v3_dot(r, v);
             if (r_dot_v > 0) {
+                /* cos <= s_zero: pow(cos, s) is exactly 0, and so is the term */
+                if (rt->shortcuts && rt_coarse_cos_at_most(r, v, s_zero)) continue;
                 if (!have_v) { len_v = v3_len(v); have_v = 1; }
                 num den = num_mul(v3_len(r), len_v);
-                /* cos <= s_zero: pow(cos, s) is exactly 0, and so is the term */
                 if (rt->shortcuts && rt_div_at_most(r_dot_v, den, s_zero)) continue;
                 num cosb = num_div(r_dot_v, den);
                 i = num_add(i, num_mul(lt->intensity, num_powi(cosb, (uint32_t)num_to_int(s))));

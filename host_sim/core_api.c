@@ -61,6 +61,8 @@ static void exact_methods(void *scene)
     struct scene *s = scene;
     s->ras.persp_step = 1;
     s->ras.lighting = RAS_LIGHT_EXACT;
+    s->rt.adaptive_subsample = 0;
+    s->rt.subsample = 1;
 }
 
 const struct core_api API = {

@@ -107,24 +107,80 @@ static void test_strips(void)
     uint8_t *a = malloc((size_t)w * h * 3), *b = malloc((size_t)w * h * 3);
     struct scene *sc[3] = { rt_book_scene(5), rt_book_scene(6), rt_ch5_scene() };
     for (int k = 0; k < 3; k++) {
-        for (int mode = 0; mode < 3; mode++) {
+        for (int mode = 0; mode < 5; mode++) {
             struct scene *s = sc[k];
             s->rt.subsample = mode == 1 ? 3 : 1;
             s->rt.adaptive_ss = mode == 2;
             s->rt.supersample = mode == 2 ? 3 : 1;
+            s->rt.adaptive_subsample = mode == 3 ? 2 : (mode == 4 ? 5 : 0);
             int ra = rt_render(s, w, h, h, a, NULL, NULL);
             int rb = rt_render(s, w, h, 7, b, NULL, NULL);
             char name[80];
             snprintf(name, sizeof name, "strips_equal_full_frame_%s_%s", s->name,
-                     mode == 0 ? "plain" : mode == 1 ? "subsample" : "adaptive");
+                     mode == 0 ? "plain" : mode == 1 ? "subsample" : mode == 2 ? "adaptive" :
+                     mode == 3 ? "adaptive_subsample2" : "adaptive_subsample5");
             check(ra == 0 && rb == 0 && memcmp(a, b, (size_t)w * h * 3) == 0, name, "strip render differs");
             s->rt.subsample = 1;
             s->rt.adaptive_ss = 0;
             s->rt.supersample = 1;
+            s->rt.adaptive_subsample = 0;
         }
     }
     free(a);
     free(b);
+}
+
+/* Progressive display: a coarse pass of 8x8 blocks, then the full pass over
+ * the same context gives exactly the frame rendered without it; adaptive
+ * subsampling traces fewer rays and stays close to the full render. */
+static void test_progressive(void)
+{
+    int w = 100, h = 75, strip = 16;
+    size_t n = (size_t)w * h * 3;
+    uint8_t *ref = malloc(n), *img = malloc(n), *coarse = malloc(n);
+    struct scene *s = rt_book_scene(5);
+    struct rt_run r0, r1;
+    rt_render(s, w, h, strip, ref, NULL, &r0);
+    size_t need = render_work_size(s, (uint16_t)w, (uint16_t)h, (uint16_t)strip);
+    void *work = aligned_alloc(8, (need + 7) / 8 * 8);
+    uint16_t *px = malloc(sizeof(uint16_t) * (size_t)w * strip);
+    struct render_ctx ctx;
+    int ok = render_init(&ctx, s, (uint16_t)w, (uint16_t)h, (uint16_t)strip, work, need) == 0 &&
+             render_begin_frame(&ctx, 0) == 0;
+    uint32_t rays_coarse = 0;
+    for (int pass = 0; pass < 2 && ok; pass++) {
+        struct render_stats st = { 0 };
+        ok = render_set_pass(&ctx, pass == 0 ? RENDER_PASS_COARSE : RENDER_PASS_FULL) == 0;
+        for (int y0 = 0; y0 < h && ok; y0 += strip) {
+            struct render_target t = { (uint16_t)w, (uint16_t)h, (uint16_t)y0,
+                                       (uint16_t)(y0 + strip < h ? y0 + strip : h), px,
+                                       (pass ? img : coarse) + (size_t)3 * w * y0, NULL };
+            ok = render_strip(&ctx, &t, &st) == 0;
+        }
+        if (pass == 0) rays_coarse = st.rays;
+    }
+    /* a block shows one colour */
+    int blocks_flat = 1;
+    for (int y = 0; y < h; y++)
+        for (int x = 0; x < w; x++)
+            if (memcmp(coarse + 3 * ((size_t)y * w + x), coarse + 3 * ((size_t)(y - y % 8) * w + (x - x % 8)), 3))
+                blocks_flat = 0;
+    check(ok && blocks_flat && memcmp(ref, img, n) == 0 && rays_coarse * 20 < r0.rays, "progressive_coarse_then_full_equals_full",
+          "ok %d, blocks flat %d, coarse rays %u of %u", ok, blocks_flat, rays_coarse, r0.rays);
+    check(render_set_pass(&ctx, 7) == -1, "progressive_unknown_pass_refused", "accepted");
+    free(work);
+    free(px);
+
+    s->rt.adaptive_subsample = 2;
+    rt_render(s, w, h, strip, img, NULL, &r1);
+    size_t over;
+    int md = max_diff(ref, img, n, &over);
+    check(r1.primary_rays < r0.primary_rays * 3 / 4 && over < n / 50, "adaptive_subsample_fewer_rays_close",
+          "primary rays %u of %u, %zu channels off by > 2 (max %d)", r1.primary_rays, r0.primary_rays, over, md);
+    s->rt.adaptive_subsample = 0;
+    free(ref);
+    free(img);
+    free(coarse);
 }
 
 /* A minimal state around a scene to call the intersection routines. */
@@ -526,6 +582,7 @@ int main(int argc, char **argv)
         test_scene_files();
     }
     test_strips();
+    test_progressive();
     test_ground_sphere();
     test_csg_planes_triangles();
     test_refraction();

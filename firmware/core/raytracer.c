@@ -9,7 +9,7 @@
  * its left or upper neighbour in object or by more than this per channel. */
 #define RT_ADAPTIVE_DIFF NUM_C(12.0)
 
-struct layout { size_t state, oc, items, unb, bvh, bvh_items, occ, lray, llen, row_c, row_item, colx, total; };
+struct layout { size_t state, oc, items, unb, bvh, bvh_items, occ, lray, llen, row_c, row_item, colx, corner, total; };
 
 static struct layout layout_of(const struct scene *s, uint16_t width)
 {
@@ -28,6 +28,8 @@ static struct layout layout_of(const struct scene *s, uint16_t width)
     l.row_c = off; off += ALIGN8(sizeof(rgb) * width);
     l.row_item = off; off += ALIGN8(sizeof(int16_t) * width);
     l.colx = off; off += ALIGN8(sizeof(num) * width);
+    /* two rows of adaptive-subsampling corners: at most width/2 + 2 each */
+    l.corner = off; off += s->rt.adaptive_subsample > 1 ? 2 * ALIGN8(sizeof(struct rt_sample) * (width / 2u + 2u)) : 0;
     l.total = off;
     return l;
 }
@@ -70,6 +72,10 @@ int rt_init(struct render_ctx *ctx)
     rt->row_c = (rgb *)(w + l.row_c);
     rt->row_item = (int16_t *)(w + l.row_item);
     rt->col_x = (num *)(w + l.colx);
+    rt->adapt = s->rt.adaptive_subsample > 1 ? s->rt.adaptive_subsample : 0;
+    rt->corner[0] = (struct rt_sample *)(w + l.corner);
+    rt->corner[1] = rt->corner[0] + (rt->adapt ? ctx->width / 2u + 2u : 0);
+    rt->corner_row[0] = rt->corner_row[1] = -1;
     const struct rt_options *o = &s->rt;
     rt->book = o->formulation == 1 || (o->formulation == 0 && num_rt_reference_mode());
     rt->depth = o->recursion_depth > RT_MAX_DEPTH ? RT_MAX_DEPTH : o->recursion_depth;
@@ -130,6 +136,8 @@ int rt_begin_frame(struct render_ctx *ctx, uint16_t frame)
     rt->cam_rotated = !is_identity(&rt->cam_rot);
     for (uint16_t k = 0; k < s->nlights; k++) rt->occluder[k] = -1;
     rt->last_row = -2;
+    rt->pass = RENDER_PASS_FULL;
+    rt->corner_row[0] = rt->corner_row[1] = -1;
     rt_frame_constants(rt);
     return 0;
 }
@@ -345,10 +353,118 @@ static void subsampled_row(struct rt_state *rt, struct render_target *t, int row
     render_put(t, w - 1, row, rt->row_c[w - 1]);
 }
 
+/* One primary ray through the centre of pixel (col, row). */
+static struct rt_sample sample_at(struct rt_state *rt, int col, int row)
+{
+    struct rt_prim pr = { -1, 0 };
+    struct rt_sample s;
+    s.c = trace_primary(rt, pixel_to_viewport(rt, col, row), &pr);
+    s.item = pr.item;
+    s.shadow = pr.shadow;
+    return s;
+}
+
+/* RENDER_PASS_COARSE: one ray per block, at the block's centre pixel. */
+static void coarse_strip(struct rt_state *rt, struct render_target *t)
+{
+    const int b = RENDER_COARSE_BLOCK;
+    for (int r0 = t->y0 - t->y0 % b; r0 < t->y1; r0 += b) {
+        int r1 = r0 + b < rt->h ? r0 + b : rt->h;
+        for (int c0 = 0; c0 < rt->w; c0 += b) {
+            int c1 = c0 + b < rt->w ? c0 + b : rt->w;
+            rgb c = sample_at(rt, (c0 + c1 - 1) / 2, (r0 + r1 - 1) / 2).c;
+            for (int y = r0 > t->y0 ? r0 : t->y0; y < r1 && y < t->y1; y++)
+                for (int x = c0; x < c1; x++) render_put(t, x, y, c);
+        }
+    }
+}
+
+/* The corner samples of image row `row` (columns 0, B, 2B, ... and the
+ * last), kept for the next block row. */
+static const struct rt_sample *corner_row(struct rt_state *rt, int row)
+{
+    for (int k = 0; k < 2; k++)
+        if (rt->corner_row[k] == row) return rt->corner[k];
+    /* replace the row that is not the other block edge in use */
+    int k = rt->corner_row[0] < rt->corner_row[1] ? 0 : 1;
+    int n = 0;
+    for (int col = 0;; col += rt->adapt) {
+        if (col > rt->w - 1) col = rt->w - 1;
+        rt->corner[k][n++] = sample_at(rt, col, row);
+        if (col == rt->w - 1) break;
+    }
+    rt->corner_row[k] = row;
+    return rt->corner[k];
+}
+
+static int samples_agree(const struct rt_sample *a, const struct rt_sample *b)
+{
+    return a->item == b->item && a->shadow == b->shadow &&
+           num_abs(num_sub(a->c.r, b->c.r)) <= RT_SUBSAMPLE_DIFF &&
+           num_abs(num_sub(a->c.g, b->c.g)) <= RT_SUBSAMPLE_DIFF &&
+           num_abs(num_sub(a->c.b, b->c.b)) <= RT_SUBSAMPLE_DIFF;
+}
+
+/* 2-D adaptive subsampling (chapter 5's subsampling over blocks): the
+ * corners of B x B blocks are traced; a block whose four corners agree is
+ * filled by bilinear interpolation, any other is traced pixel by pixel.
+ * Block rows cover [r0, r0 + B) and the last one also row h - 1, likewise
+ * columns; corner rows are recomputed when a strip starts inside a block,
+ * so every strip height gives the same pixels. */
+static void adaptive_strip(struct rt_state *rt, struct render_target *t)
+{
+    const int b = rt->adapt, w = rt->w, h = rt->h;
+    int r0 = t->y0 - t->y0 % b;
+    if (r0 == h - 1 && r0 > 0) r0 -= b;          /* the last row belongs to the block above */
+    for (; r0 < t->y1; r0 += b) {
+        int r1 = r0 + b < h - 1 ? r0 + b : h - 1;   /* bottom corner row */
+        int rows_end = r1 == h - 1 ? h : r1;        /* rows of this block row */
+        const struct rt_sample *top = corner_row(rt, r0);
+        const struct rt_sample *bot = r1 > r0 ? corner_row(rt, r1) : top;
+        for (int k = 0, c0 = 0; c0 < w - 1 || (w == 1 && c0 == 0); k++, c0 += b) {
+            int c1 = c0 + b < w - 1 ? c0 + b : w - 1;
+            int cols_end = c1 == w - 1 ? w : c1;
+            const struct rt_sample *s00 = &top[k], *s01 = &top[k + (c1 > c0)];
+            const struct rt_sample *s10 = &bot[k], *s11 = &bot[k + (c1 > c0)];
+            int smooth = samples_agree(s00, s01) && samples_agree(s00, s10) && samples_agree(s00, s11) &&
+                         samples_agree(s01, s10) && samples_agree(s01, s11) && samples_agree(s10, s11);
+            for (int y = r0 > t->y0 ? r0 : t->y0; y < rows_end && y < t->y1; y++) {
+                num fy = r1 > r0 ? num_from_ratio(y - r0, r1 - r0) : NUM_ZERO;
+                for (int x = c0; x < cols_end; x++) {
+                    int cx = x == c0 ? 0 : (x == c1 ? 1 : -1), cy = y == r0 ? 0 : (y == r1 ? 1 : -1);
+                    rgb c;
+                    if (cx >= 0 && cy >= 0) {
+                        c = (cy ? (cx ? s11 : s10) : (cx ? s01 : s00))->c;
+                    } else if (smooth) {
+                        num fx = c1 > c0 ? num_from_ratio(x - c0, c1 - c0) : NUM_ZERO;
+                        rgb up = rgb_add(rgb_scale(s00->c, num_sub(NUM_ONE, fx)), rgb_scale(s01->c, fx));
+                        rgb dn = rgb_add(rgb_scale(s10->c, num_sub(NUM_ONE, fx)), rgb_scale(s11->c, fx));
+                        c = rgb_add(rgb_scale(up, num_sub(NUM_ONE, fy)), rgb_scale(dn, fy));
+                    } else {
+                        c = sample_at(rt, x, y).c;
+                    }
+                    render_put(t, x, y, c);
+                }
+            }
+            if (w == 1) break;
+        }
+        if (rows_end >= h) break;
+    }
+}
+
 int rt_render_strip(struct render_ctx *ctx, struct render_target *t, struct render_stats *st)
 {
     struct rt_state *rt = rt_state_of(ctx);
     uint32_t rays0 = rt->n.rays;
+    if (rt->pass == RENDER_PASS_COARSE || rt->adapt) {
+        if (rt->pass == RENDER_PASS_COARSE) coarse_strip(rt, t);
+        else adaptive_strip(rt, t);
+        if (st) {
+            st->rays += rt->n.rays - rays0;
+            st->pixels_written += (uint32_t)(t->y1 - t->y0) * t->width;
+        }
+        return 0;
+    }
     for (int row = t->y0; row < t->y1; row++) {
         uint8_t *probe = rt->shadow_probe ? rt->shadow_probe + (size_t)row * rt->w : NULL;
         if (rt->subsample > 1 && rt->w > 1) {

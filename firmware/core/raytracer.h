@@ -82,6 +82,18 @@ struct rt_hit {
     uint8_t flip;         /* 1: the normal is the surface's, negated */
 };
 
+/* One traced primary sample: colour, item hit (-1: none), shadow bits. */
+struct rt_sample {
+    rgb c;
+    int16_t item;
+    uint8_t shadow;
+};
+
+/* Adaptive subsampling: a block is interpolated when its corners hit the
+ * same item with the same shadows and no channel differs by more than
+ * this between them. */
+#define RT_SUBSAMPLE_DIFF NUM_C(6.0)
+
 /* Per-object constants, recomputed per frame. */
 struct rt_obj_cache {
     wnum r2;              /* radius^2 */
@@ -117,6 +129,8 @@ struct rt_state {
     uint8_t cached;       /* per-frame constants in use */
     uint8_t shortcuts;    /* coarse rejections and exact early-outs in use */
     uint8_t ss, ss_adaptive, subsample;
+    uint8_t adapt;        /* adaptive subsampling block side (0: off) */
+    uint8_t pass;         /* enum render_pass of the following strips */
     mat3 cam_rot;
     vec3 cam_pos;
     num vw, vh, d;        /* viewport of this render size */
@@ -141,6 +155,8 @@ struct rt_state {
     int16_t skip_item;         /* item closest_intersection skips (already tested), -1 none */
     int32_t last_row;          /* row of the notes in row_c/row_item (-2: none) */
     uint8_t *shadow_probe;     /* optional, w*h: shadow bits of primary hits */
+    struct rt_sample *corner[2]; /* adaptive subsampling: two rows of block corners */
+    int32_t corner_row[2];       /* their image rows (-1: none) */
     struct rt_counters n;
 };
 

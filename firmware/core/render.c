@@ -35,6 +35,17 @@ int render_init(struct render_ctx *ctx, const struct scene *s, uint16_t width, u
     return -1;
 }
 
+int render_set_pass(struct render_ctx *ctx, uint8_t pass)
+{
+    if (pass == RENDER_PASS_FULL) {
+        if (ctx->scene->kind == SCENE_RAYTRACE) rt_state_of(ctx)->pass = RENDER_PASS_FULL;
+        return 0;
+    }
+    if (pass != RENDER_PASS_COARSE || ctx->scene->kind != SCENE_RAYTRACE) return -1;
+    rt_state_of(ctx)->pass = pass;
+    return 0;
+}
+
 int render_begin_frame(struct render_ctx *ctx, uint16_t frame)
 {
     ctx->frame = frame;

@@ -61,6 +61,17 @@ int render_begin_frame(struct render_ctx *ctx, uint16_t frame);
 /* Renders rows [t->y0, t->y1) of the current frame into t. */
 int render_strip(struct render_ctx *ctx, struct render_target *t, struct render_stats *st);
 
+/* How the following strips of the current frame are rendered (progressive
+ * display). RENDER_PASS_FULL (the default, reset by render_begin_frame):
+ * the frame as the scene asks for it. RENDER_PASS_COARSE: a preview, one
+ * ray per 8x8 block (at its centre pixel) drawn as a block, so a whole
+ * screen costs 1/64 of the rays; rendering the frame again in
+ * RENDER_PASS_FULL then refines it in place. Ray tracer only: for other
+ * scenes RENDER_PASS_COARSE returns -1 and nothing changes. */
+enum render_pass { RENDER_PASS_FULL = 0, RENDER_PASS_COARSE = 1 };
+#define RENDER_COARSE_BLOCK 8
+int render_set_pass(struct render_ctx *ctx, uint8_t pass);
+
 /* Writes one pixel of a strip (both outputs); x, y are screen coordinates
  * inside the strip. Shared by both renderers. */
 void render_put(struct render_target *t, int x, int y, rgb c);

@@ -99,6 +99,10 @@ struct rt_options {
     uint8_t no_shortcuts;      /* 1: every intersection test and lighting term in full: the
                                   coarse rejections and early-outs, which provably change no
                                   pixel, off (to measure them and to test that claim) */
+    uint8_t adaptive_subsample;  /* 0 off; B = 2..8: every frame by 2-D adaptive subsampling:
+                                    corners of B x B blocks traced, a block whose four corners
+                                    agree (object, shadows, colours within RT_SUBSAMPLE_DIFF)
+                                    interpolated, any other traced in full (approximate) */
 };
 
 /* ---- rasterizer data (part II) ------------------------------------------ */

@@ -67,5 +67,5 @@ static void exact_methods(void *scene)
 
 const struct core_api API = {
     NUM_NAME, load, free_scene, info, work_size, init, render_begin_frame, render_strip,
-    &num_saturations, API_FRAC, format, exact_methods,
+    &num_saturations, API_FRAC, format, exact_methods, render_set_pass,
 };

@@ -42,6 +42,8 @@ struct core_api {
      * lighting = exact):
      * the reference of --compare. */
     void (*exact_methods)(void *scene);
+    /* render_set_pass (render.h): progressive display */
+    int (*set_pass)(struct render_ctx *ctx, uint8_t pass);
 };
 
 extern const struct core_api core_api_fixed, core_api_float, core_api_double;

@@ -43,6 +43,8 @@ static const char usage_text[] =
     "  --compare fixed|float|double  also render with this core (memory framebuffer)\n"
     "                                and report psnr/max_err of the last frame's colours\n"
     "  --summary                     one line: scene, size, numeric, time, accuracy\n"
+    "  --progressive                 ray tracer: each frame first as 8x8 blocks (one ray each)\n"
+    "                                on the panel, then refined in place to the full frame\n"
     "  --strip-rows N                rows per strip (default 16)\n"
     "  --num-frac F                  fixed point in Q(31-F).F, F in 12..20, instead of\n"
     "                                the scene's own format\n"
@@ -53,7 +55,7 @@ static const char usage_text[] =
 struct opts {
     const char *scene, *panel, *numeric, *out, *out_raw, *out_rgb888, *backend;
     const char *compare, *fault;
-    int has_size, stats, summary;
+    int has_size, stats, summary, progressive;
     int num_frac;              /* --num-frac, 0: the scene's own format */
     unsigned width, height, frames, strip_rows;
 };
@@ -116,9 +118,11 @@ static int parse_args(int argc, char **argv, struct opts *o)
             printf(usage_text, panel_out_faults);
             exit(EXIT_OK);
         }
-        if (!strcmp(name, "--stats") || !strcmp(name, "--summary")) {
+        if (!strcmp(name, "--stats") || !strcmp(name, "--summary") || !strcmp(name, "--progressive")) {
             if (eq) return fail(EXIT_USAGE, "option %s takes no argument", name);
-            if (!strcmp(name, "--stats")) o->stats = 1; else o->summary = 1;
+            if (!strcmp(name, "--stats")) o->stats = 1;
+            else if (!strcmp(name, "--summary")) o->summary = 1;
+            else o->progressive = 1;
             continue;
         }
         int known = 0;
@@ -383,6 +387,26 @@ static int run(const struct opts *o, struct core *c, struct core *ref, struct pa
         if (c->api->begin_frame(&c->ctx, (uint16_t)f))
             return fail(EXIT_INTERNAL, "renderer failed to begin frame %u", f);
         render_us += now_us() - t0;
+        /* progressive: the coarse pass to the panel first, then the full one */
+        uint64_t coarse_us = 0;
+        unsigned long coarse_rays = 0;
+        if (o->progressive && c->api->set_pass(&c->ctx, RENDER_PASS_COARSE) == 0) {
+            struct render_stats cs = { 0 };
+            for (unsigned y0 = 0; y0 < h; y0 += rows) {
+                unsigned y1 = y0 + rows < h ? y0 + rows : h;
+                struct render_target t = { .width = (uint16_t)w, .height = (uint16_t)h,
+                                           .y0 = (uint16_t)y0, .y1 = (uint16_t)y1, .rgb565 = b->strip };
+                t0 = now_us();
+                if (c->api->render_strip(&c->ctx, &t, &cs))
+                    return fail(EXIT_INTERNAL, "renderer failed on rows %u..%u of frame %u", y0, y1, f);
+                coarse_us += now_us() - t0;
+                if ((rc = panel_out_flush(*pp, (uint16_t)y0, (uint16_t)y1, b->strip, err, sizeof err)))
+                    return fail(rc, "%s", err);
+            }
+            coarse_rays = cs.rays;
+            render_us += coarse_us;
+            c->api->set_pass(&c->ctx, RENDER_PASS_FULL);
+        }
         for (unsigned y0 = 0; y0 < h; y0 += rows) {
             unsigned y1 = y0 + rows < h ? y0 + rows : h;
             struct render_target t = { .width = (uint16_t)w, .height = (uint16_t)h,
@@ -417,6 +441,7 @@ static int run(const struct opts *o, struct core *c, struct core *ref, struct pa
                    (unsigned long long)(panel_out_spi_bytes(*pp) - spi0),
                    (unsigned long)rs.triangles_in, (unsigned long)rs.triangles_drawn,
                    (unsigned long)rs.rays, (unsigned long)(uint32_t)(*c->api->saturations - sat0));
+            if (o->progressive) printf(",\"coarse_us\":%llu,\"coarse_rays\":%lu", (unsigned long long)coarse_us, coarse_rays);
             if (!(o->compare && f + 1 == frames)) printf("}\n");
         }
     }

@@ -12,6 +12,8 @@
  * UART lines (115200 8N1), one per event, parsed by tools/rp2040sim:
  *   boot board=B cores=N cpu_hz=H size=WxH strip_rows=R scenes=S
  *   begin scene=NAME frame=F
+ *   coarse scene=NAME frame=F   (ray tracer: a preview of 8x8 blocks follows)
+ *   first scene=NAME frame=F us=U   (the preview is on the glass, U after begin)
  *   fps scene=NAME frame=F us=U fps=X.Y
  *   error scene=NAME what
  * The first frame of each scene carries no overlay (no frame was timed yet),
@@ -36,6 +38,11 @@
 #endif
 #ifndef FW_FRAMES_PER_SCENE
 #define FW_FRAMES_PER_SCENE 3
+#endif
+/* Progressive display of ray-traced frames: a preview of 8x8 blocks (one
+ * ray each) on the whole screen first, then the frame refined in place. */
+#ifndef FW_PROGRESSIVE
+#define FW_PROGRESSIVE 1
 #endif
 #ifndef FW_PANEL
 #define FW_PANEL panel_st7789_240x240
@@ -163,9 +170,34 @@ static uint32_t frame(unsigned si, uint16_t f, uint32_t last_us, int dual)
     uint64_t t0 = hal.now_us(hal.ctx);
     if (render_begin_frame(&ctx[0], f) != 0) return 0;
     if (dual) fw_board_send(MSG_FRAME | ((uint32_t)si << 16) | f);
+    int err = 0;
+    if (FW_PROGRESSIVE && render_set_pass(&ctx[0], RENDER_PASS_COARSE) == 0) {
+        /* core 0 draws the preview while core 1 starts on its strips */
+        p = put_str(put_str(line, "coarse scene="), name);
+        p = put_str(put_u32(put_str(p, " frame="), f), "\r\n");
+        *p = 0;
+        fw_board_puts(line);
+        dcs_set_window(&panel.dcs, 0, 0, FW_WIDTH - 1, FW_HEIGHT - 1);
+        dcs_write_begin(&panel.dcs, 0);
+        for (unsigned k = 0; k < NSTRIPS; k++) {
+            uint16_t *buf = strip_buf[k & 1u];
+            uint16_t y0, y1;
+            strip_rows(k, &y0, &y1);
+            if (render_one(&ctx[0], k, buf) != 0) err = 1;
+            fw_board_pixels_async(&hal, buf, (size_t)(y1 - y0) * FW_WIDTH, NULL, NULL);
+        }
+        hal.spi_wait(hal.ctx);
+        dcs_write_end(&panel.dcs);
+        uint64_t cu = hal.now_us(hal.ctx) - t0;
+        p = put_str(put_str(line, "first scene="), name);
+        p = put_str(put_u32(put_str(p, " frame="), f), " us=");
+        p = put_str(put_u32(p, cu > 0xffffffffu ? 0xffffffffu : (uint32_t)cu), "\r\n");
+        *p = 0;
+        fw_board_puts(line);
+        render_set_pass(&ctx[0], RENDER_PASS_FULL);
+    }
     dcs_set_window(&panel.dcs, 0, 0, FW_WIDTH - 1, FW_HEIGHT - 1);
     dcs_write_begin(&panel.dcs, 0);
-    int err = 0;
     for (unsigned k = 0; k < NSTRIPS; k++) {
         uint16_t *buf;
         uint16_t y0, y1;

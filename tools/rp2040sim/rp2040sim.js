@@ -17,6 +17,8 @@
  *                       cycles at the firmware's clk_sys, us, fps, spi_bytes,
  *                       cores: the firmware's boot line, 1 for the images
  *                       that run here, rp2040js emulating one core)
+ *                       first_image_us: for a progressive (ray-traced) frame,
+ *                       when its whole-screen preview was on the glass
  *   --average           with --json: one object per run of consecutive frames
  *                       of a scene instead, their mean (frame = the first,
  *                       frames = how many, cycles_min, cycles_max)
@@ -170,6 +172,8 @@ function main() {
       const kv = Object.fromEntries(l.split(' ').slice(1).map((s) => s.split('=')));
       if (l.startsWith('boot ')) { cpuHz = Number(kv.cpu_hz) || cpuHz; cores = Number(kv.cores) || cores; }
       if (l.startsWith('begin ')) { pending = { scene: kv.scene, frame: Number(kv.frame) }; frameStartNs = clock.nanos; frameStartBytes = spiBytes; }
+      /* a progressive frame: its first full-screen image is the preview */
+      if (l.startsWith('coarse ') && pending) pending.coarse = true;
       if (l.startsWith('fps ') && frames.length) frames[frames.length - 1].fw_us = Number(kv.us);
       if (l.startsWith('error')) fwError = l;
     } else {
@@ -179,7 +183,9 @@ function main() {
   panel.onWrap = () => {
     if (!pending) return;
     const ns = clock.nanos - frameStartNs;
-    frames.push({ scene: pending.scene, frame: pending.frame, ns, spi_bytes: spiBytes - frameStartBytes, px: panel.glass() });
+    if (pending.coarse && pending.first_ns === undefined) { pending.first_ns = ns; return; }
+    frames.push({ scene: pending.scene, frame: pending.frame, ns, first_ns: pending.first_ns,
+                  spi_bytes: spiBytes - frameStartBytes, px: panel.glass() });
     pending = null;
   };
 
@@ -217,6 +223,7 @@ function main() {
         frame: f.frame, width: w, height: h,
         cycles, per: 'frame', cpu_hz: cpuHz, us: Math.round(f.ns / 1000),
         fps: Number((1e9 / f.ns).toFixed(3)), spi_bytes: f.spi_bytes,
+        ...(f.first_ns !== undefined ? { first_image_us: Math.round(f.first_ns / 1000) } : {}),
       }) + '\n');
     }
   });
@@ -237,6 +244,8 @@ function main() {
         cycles_min: Math.round(Math.min(...cyc)), cycles_max: Math.round(Math.max(...cyc)),
         cpu_hz: cpuHz, us: Math.round(ns / 1000), fps: Number((1e9 / ns).toFixed(3)),
         spi_bytes: Math.round(r.list.reduce((a, f) => a + f.spi_bytes, 0) / n),
+        ...(r.list[0].first_ns !== undefined
+          ? { first_image_us: Math.round(r.list.reduce((a, f) => a + f.first_ns, 0) / n / 1000) } : {}),
       }) + '\n');
     }
   }

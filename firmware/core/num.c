@@ -1,4 +1,5 @@
 /* num.c — scalar operations for the three numeric modes (see num.h). */
+#define NUM_NO_INLINE   /* the out-of-line definitions live here */
 #include "num.h"
 
 uint32_t num_saturations;
@@ -41,25 +42,7 @@ static num sat_signed(uint64_t q, int neg)
 
 static uint32_t uabs32(int32_t a) { return a < 0 ? 0u - (uint32_t)a : (uint32_t)a; }
 
-/* a*b / 2^F rounded (halves up: the arithmetic shift of the exact product
- * plus 2^(F-1)); |result| <= 2^(62-F) + 1 <= 2^54 + 1. On ARMv6-M with
- * F <= 16 the shift is folded into the 16x16 pieces: with a = ah 2^16 + al
- * (ah = a >> 16 signed, al in [0, 2^16)), a*b = ah bh 2^32 + (ah bl + al bh)
- * 2^16 + al bl, and the first two terms are multiples of 2^F, so only
- * al bl + 2^(F-1) (< 2^32) is shifted. Every piece fits 32 bits: |ah bh| <=
- * 2^30, |ah bl|, |al bh| < 2^31. Four MULS, no 64-bit shift. */
-static inline int64_t mul_round(int32_t a, int32_t b)
-{
-#if (defined(__ARM_ARCH_6M__) || defined(NUM_PORTABLE_INT)) && NUM_FRAC <= 16
-    int32_t ah = a >> 16, bh = b >> 16;
-    uint32_t al = (uint32_t)a & 0xFFFFu, bl = (uint32_t)b & 0xFFFFu;
-    int64_t hi = (int64_t)(ah * bh) * ((int64_t)1 << (32 - NUM_FRAC));
-    int64_t mid = ((int64_t)(ah * (int32_t)bl) + (int32_t)al * bh) * (1 << (16 - NUM_FRAC));
-    return hi + mid + ((al * bl + (1u << (NUM_FRAC - 1))) >> NUM_FRAC);
-#else
-    return (num_smul32(a, b) + ((int64_t)1 << (NUM_FRAC - 1))) >> NUM_FRAC;
-#endif
-}
+#define mul_round num_mul_round
 
 /* ---- integer kernels (shared with vec.c through num_int.h) ----------- */
 

@@ -185,4 +185,9 @@ rgb  rgb_add(rgb a, rgb b);
 uint16_t rgb_to_565(rgb c);
 void     rgb_to_888(rgb c, uint8_t out[3]);
 
+/* Fixed point: the hottest operations inline (same bits; num_inline.h). */
+#if NUM_MODE == NUM_MODE_FIXED && !defined(NUM_NO_INLINE)
+#include "num_inline.h"
+#endif
+
 #endif

@@ -2,6 +2,7 @@
  * Mode-independent: the same source serves fixed, float and double. Operand
  * order follows the book (dot products x, y, z left to right; matrix rows
  * summed from column 0) so the double build reproduces the demos exactly. */
+#define NUM_NO_INLINE   /* the out-of-line definitions live here */
 #include "num.h"
 
 vec3 v3(num x, num y, num z) { vec3 r = { x, y, z }; return r; }

@@ -49,6 +49,7 @@ def profile(elf, target):
     runs = collections.Counter()       # block start pc -> executions
     name = {}                          # block start pc -> function
     incl = collections.Counter()       # function -> inclusive instructions
+    ncalls = collections.Counter()     # function -> calls (BL/BLX into it)
     active = collections.Counter()     # function -> activations on the stack
     stack = []                         # [return address, callee, total at the call]
     total = 0
@@ -76,6 +77,7 @@ def profile(elf, target):
                     if pending is not None:
                         pending[1] = fn
                         active[fn] += 1
+                        ncalls[fn] += 1
                         pending = None
                     total += size.get(pc, 1)
                     ret = calls.get(pc)
@@ -113,7 +115,7 @@ def profile(elf, target):
     per = collections.Counter()
     for pc, n in runs.items():
         per[name.get(pc, hex(pc))] += n * size.get(pc, 1)
-    return per, incl
+    return per, incl, ncalls
 
 
 def main():
@@ -128,7 +130,7 @@ def main():
     target = a.target or target_of(a.image)
     if target is None:
         sys.exit(f"profile.py: {a.image}: path names no target; give --target")
-    per, incl = profile(a.image, target)
+    per, incl, ncalls = profile(a.image, target)
     total = sum(per.values())
     if total == 0:
         sys.exit("profile.py: no blocks traced (qemu-system-arm missing or the image did not run)")
@@ -137,13 +139,15 @@ def main():
         print(f"{fn:40s} {n:14d} {100.0 * n / total:6.2f}%")
     print(f"{'total':40s} {total:14d}")
     print()
-    print(f"{'function (inclusive)':40s} {'instructions':>14s} {'share':>7s}")
+    print(f"{'function (inclusive)':40s} {'instructions':>14s} {'share':>7s} {'calls':>10s} {'per call':>9s}")
     for fn, n in incl.most_common(a.top):
-        print(f"{fn:40s} {n:14d} {100.0 * n / total:6.2f}%")
+        c = ncalls.get(fn, 0)
+        print(f"{fn:40s} {n:14d} {100.0 * n / total:6.2f}% {c:10d} {n / c if c else 0:9.0f}")
     if a.json:
         with open(a.json, "w") as f:
             json.dump({"image": a.image, "target": target, "total": total,
-                       "self": dict(per.most_common()), "inclusive": dict(incl.most_common())},
+                       "self": dict(per.most_common()), "inclusive": dict(incl.most_common()),
+                       "calls": dict(ncalls.most_common())},
                       f, indent=1)
 
 

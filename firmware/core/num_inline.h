@@ -1,0 +1,102 @@
+/* num_inline.h — inline forms of the fixed-point build's hottest operations
+ * (included by num.h; NUM_NO_INLINE, set by num.c and vec.c, which define
+ * the out-of-line functions, turns it off).
+ *
+ * Each is the same computation as its out-of-line twin in num.c / vec.c,
+ * bit for bit, including saturation and the saturation counter: only the
+ * call is gone (on ARMv6-M a call and its argument shuffling cost as much
+ * as an addition's body). The names are function-like macros, so taking a
+ * function's address still gets the out-of-line one. */
+#ifndef NUM_INLINE_H
+#define NUM_INLINE_H
+
+#include "num_int.h"
+
+#ifdef NUM_COUNT_SAT
+#define NUM_I_SAT() (num_saturations++)
+#else
+#define NUM_I_SAT() ((void)0)
+#endif
+
+static inline num num_i_sat64(int64_t v)
+{
+    if (v > INT32_MAX) { NUM_I_SAT(); return NUM_MAX; }
+    if (v < -(int64_t)INT32_MAX) { NUM_I_SAT(); return NUM_MIN; }
+    return (num)v;
+}
+
+static inline num num_i_add(num a, num b)
+{
+    int32_t r = (int32_t)((uint32_t)a + (uint32_t)b);
+    if (((a ^ r) & (b ^ r)) < 0) { NUM_I_SAT(); return a < 0 ? NUM_MIN : NUM_MAX; }
+    if (r == INT32_MIN) { NUM_I_SAT(); return NUM_MIN; }
+    return r;
+}
+
+static inline num num_i_sub(num a, num b)
+{
+    int32_t r = (int32_t)((uint32_t)a - (uint32_t)b);
+    if (((a ^ b) & (a ^ r)) < 0) { NUM_I_SAT(); return a < 0 ? NUM_MIN : NUM_MAX; }
+    if (r == INT32_MIN) { NUM_I_SAT(); return NUM_MIN; }
+    return r;
+}
+
+static inline num num_i_mul(num a, num b) { return num_i_sat64(num_mul_round(a, b)); }
+
+/* wnum_add / wnum_sub: operands and result clamped to +-INT64_MAX/4 */
+#define NUM_I_WLIM (INT64_MAX / 4)
+static inline int64_t num_i_wclamp(int64_t v)
+{
+    if (v > NUM_I_WLIM) { NUM_I_SAT(); return NUM_I_WLIM; }
+    if (v < -NUM_I_WLIM) { NUM_I_SAT(); return -NUM_I_WLIM; }
+    return v;
+}
+static inline wnum num_i_wadd(wnum a, wnum b) { return num_i_wclamp(num_i_wclamp(a) + num_i_wclamp(b)); }
+static inline wnum num_i_wsub(wnum a, wnum b) { return num_i_wclamp(num_i_wclamp(a) - num_i_wclamp(b)); }
+
+static inline wnum num_i_dot_wide(vec3 a, vec3 b)
+{
+    return num_mul_round(a.x, b.x) + num_mul_round(a.y, b.y) + num_mul_round(a.z, b.z);
+}
+
+static inline vec3 num_i_v3_add(vec3 a, vec3 b)
+{
+    vec3 r = { num_i_add(a.x, b.x), num_i_add(a.y, b.y), num_i_add(a.z, b.z) };
+    return r;
+}
+static inline vec3 num_i_v3_sub(vec3 a, vec3 b)
+{
+    vec3 r = { num_i_sub(a.x, b.x), num_i_sub(a.y, b.y), num_i_sub(a.z, b.z) };
+    return r;
+}
+static inline vec3 num_i_v3_scale(vec3 a, num s)
+{
+    vec3 r = { num_i_mul(a.x, s), num_i_mul(a.y, s), num_i_mul(a.z, s) };
+    return r;
+}
+static inline rgb num_i_rgb_scale(rgb c, num k)
+{
+    rgb r = { num_i_mul(c.r, k), num_i_mul(c.g, k), num_i_mul(c.b, k) };
+    return r;
+}
+static inline rgb num_i_rgb_add(rgb a, rgb b)
+{
+    rgb r = { num_i_add(a.r, b.r), num_i_add(a.g, b.g), num_i_add(a.b, b.b) };
+    return r;
+}
+
+#define num_add(a, b)      num_i_add(a, b)
+#define num_sub(a, b)      num_i_sub(a, b)
+#define num_mul(a, b)      num_i_mul(a, b)
+#define wnum_add(a, b)     num_i_wadd(a, b)
+#define wnum_sub(a, b)     num_i_wsub(a, b)
+#define wnum_from_num(a)   ((wnum)(a))
+#define v3_dot_wide(a, b)  num_i_dot_wide(a, b)
+#define v3_dot(a, b)       num_i_sat64(num_i_dot_wide(a, b))
+#define v3_add(a, b)       num_i_v3_add(a, b)
+#define v3_sub(a, b)       num_i_v3_sub(a, b)
+#define v3_scale(a, s)     num_i_v3_scale(a, s)
+#define rgb_scale(c, k)    num_i_rgb_scale(c, k)
+#define rgb_add(a, b)      num_i_rgb_add(a, b)
+
+#endif

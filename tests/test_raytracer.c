@@ -460,7 +460,7 @@ static void test_coarse_rejection(void)
     struct probe_ctx p;
     uint32_t st = 12345;
     long wrong = 0, rejected = 0, total = 0, negwrong = 0, negclaims = 0;
-    for (int round = 0; round < 40; round++) {
+    for (int round = 0; round < 60; round++) {
         double r = exp(log(0.01) + urand(&st) * (log(5000.0) - log(0.01)));
         double c[3];
         for (int i = 0; i < 3; i++) c[i] = (urand(&st) - 0.5) * 40;
@@ -474,7 +474,7 @@ static void test_coarse_rejection(void)
         for (int k = 0; k < 500; k++) {
             /* origin 1.05 .. 3 radii away (capped inside the format), aimed at
              * a point (1 +- delta) r from the centre across the line of sight */
-            double dist = r * (1.05 + 2 * urand(&st));
+            double dist = r * (k % 7 == 6 ? 0.3 + 0.6 * urand(&st) : 1.05 + 2 * urand(&st)); /* some inside */
             if (dist > 9000) dist = 9000 * (0.5 + urand(&st));
             double u[3], len = 0;
             for (int i = 0; i < 3; i++) { u[i] = urand(&st) - 0.5; len += u[i] * u[i]; }
@@ -491,8 +491,8 @@ static void test_coarse_rejection(void)
                         num_from_double((tgt[2] - org[2]) * scale / dist));
             if (k % 5 == 4) D = v3_neg(D);                   /* away from the sphere */
             struct rt_ray ray = rt_make_ray(O, D, -1, 0);
-            struct rt_cpt cc = rt_cpt_make(o[0].center);
-            int claim = rt_coarse_sphere_miss(&ray.cd, &cc, o[0].radius);
+            struct rt_csphere cs = rt_csphere_make(o[0].center, o[0].radius);
+            int claim = rt_coarse_sphere_miss(&ray.cd, &cs);
             rt->shortcuts = 0;
             num t1, t2;
             int hit = intersect_ray_sphere(rt, 0, &ray, &t1, &t2);
@@ -503,7 +503,7 @@ static void test_coarse_rejection(void)
             for (int i = 0; i < 3; i++) pt[i] = c[i] + u[i] / len * r;
             vec3 P = v3(num_from_double(pt[0]), num_from_double(pt[1]), num_from_double(pt[2]));
             struct rt_ray leave = rt_make_ray(P, D, 1, 0);
-            if (rt_coarse_dot_negative(&leave.cd, &cc)) {
+            if (rt_coarse_dot_negative(&leave.cd, &cs.c)) {
                 negclaims++;
                 intersect_ray_sphere(rt, 1, &leave, &t1, &t2);
                 if (t1 > 0 || t2 > 0) negwrong++;

@@ -30,35 +30,49 @@ static inline int num_rt_reference_mode(void)
 
 /* ---- conservative coarse sphere rejection (fixed point) ---------------
  *
- * rt_coarse_sphere_miss(cd, o, c, r) returns 1 only when the robust sphere
- * test (rt_intersect.c) of the ray O + t D against the sphere (c, r) would
- * certainly return "no intersection" (its computed discriminant negative,
- * or the sphere outside and behind), so skipping that test changes no
- * pixel. It returns 0 whenever it cannot tell, and always in the floating
- * modes.
+ * rt_coarse_sphere_miss(cd, sp) returns 1 only when the robust sphere test
+ * (rt_intersect.c) of the ray O + t D against the sphere sp would certainly
+ * return "no intersection" (its computed discriminant negative, or the
+ * sphere outside and behind), so skipping that test changes no pixel. It
+ * returns 0 whenever it cannot tell, and always in the floating modes.
  *
- * Fixed point, in 32-bit integers only (no 64-bit product; one MULS each on
- * ARMv6-M): co = C - O in units U = 2^12 raw (the difference of the two
- * points floored to units, error < 1 unit per component; |co|_1 = n1 <
- * 2^19 required), D scaled by a power of two to |d_i| < 2^10 (max >= 2^9,
- * floor), len >= |d| (max + (mid + min)/2, at most 15 % above). With the truncation errors of both (< 1 unit per
- * component), |X| = |co x d| > T = R (len + 2) + 2 len + 2 n1 + 3 proves
- * that the line passes more than R units from C, and co.d < -T that C lies
- * more than R units behind O. R = ceil(r / U) + ceil(5 n1 2^(-F/2)) + 3
- * covers the robust test's own rounding: its b, c, a and products carry
- * errors of a few ulps u = 2^-F, which move its discriminant by at most
- * u (6.25 |CO|^2 + 25 |CO| + 42), and a miss by r + sqrt(that / a)
- * survives them (derivation in docs/raytracer.md). Used for NUM_FRAC >= 12
- * and when D's largest raw component lies in [2^(F-8), 2^(F+13)), where the
+ * Fixed point, in 32-bit integers (no 64-bit product but one 32x32->64 for
+ * the margin; the rest one MULS each on ARMv6-M). co = C - O in units U,
+ * from the two points each floored to units (error < 1 unit per
+ * component), |co|_1 = n1 < 2^19; fine units U = 2^(F-10) raw (2^-10 scene
+ * units) when |CO| allows, else U = 2^12 raw. D is scaled by a power of
+ * two to |d_i| < 2^10 (max >= 2^9, floor), len >= |d| (max + (mid +
+ * min)/2, at most 15 % above). With the truncation errors of both,
+ * |X| = |co x d| > T = R (len + 2) + 2 len + 2 n1 + 3 proves that the line
+ * passes more than R units from C, and co.d < -T that C lies more than R
+ * units behind O. R = ceil(r / U) + m + 3, where m covers the robust test's
+ * own rounding: its b, c, a and products carry errors of a few ulps
+ * u = 2^-F, which move its discriminant by at most
+ * M = u (6.25 |CO|^2 + 25 |CO| + 42) a, and a miss by r + m with
+ * 2 r m >= M or m^2 >= M survives them; m is the smaller of the two
+ * bounds (derivation in docs/raytracer.md). Used for NUM_FRAC >= 12 and
+ * when D's largest raw component lies in [2^(F-8), 2^(F+13)), where the
  * robust test's direction scaling keeps D'.D' in [0.25, 4); otherwise
  * len = 0 (no coarse test for that ray). */
-/* A point in the coarse units (fixed: raw >> 12, floor): differences of
- * two carry an error in (-1, 1) unit per component. */
+#define RT_FINE_SHIFT (NUM_FRAC - 10)
+
+/* A point in both coarse units (fixed: raw >> 12 and raw >> (F - 10)). */
 struct rt_cpt {
 #if NUM_MODE == NUM_MODE_FIXED
     int32_t x, y, z;
+    int32_t fx, fy, fz;
 #else
     uint8_t none;
+#endif
+};
+
+/* A sphere for the coarse tests (per frame). */
+struct rt_csphere {
+    struct rt_cpt c;
+#if NUM_MODE == NUM_MODE_FIXED
+    uint32_t rc, rcf;     /* ceil(r / U) in both units (r >= 0) */
+    uint32_t inv2r;       /* >= 2^32 / (2 r raw), 0: r too small for the 2 r m bound */
+    uint8_t ok;           /* 0: no coarse tests (negative radius) */
 #endif
 };
 
@@ -79,11 +93,31 @@ static inline struct rt_cpt rt_cpt_make(vec3 p)
     c.x = p.x >> 12;
     c.y = p.y >> 12;
     c.z = p.z >> 12;
+    c.fx = p.x >> (NUM_FRAC >= 12 ? RT_FINE_SHIFT : 0);
+    c.fy = p.y >> (NUM_FRAC >= 12 ? RT_FINE_SHIFT : 0);
+    c.fz = p.z >> (NUM_FRAC >= 12 ? RT_FINE_SHIFT : 0);
 #else
     (void)p;
     c.none = 1;
 #endif
     return c;
+}
+
+static inline struct rt_csphere rt_csphere_make(vec3 center, num r)
+{
+    struct rt_csphere s;
+    s.c = rt_cpt_make(center);
+#if NUM_MODE == NUM_MODE_FIXED
+    s.ok = r >= 0;
+    uint32_t ur = r > 0 ? (uint32_t)r : 0u;
+    s.rc = (ur + 4095u) >> 12;
+    s.rcf = NUM_FRAC >= 12 ? (uint32_t)(((uint64_t)ur + (1u << RT_FINE_SHIFT) - 1) >> RT_FINE_SHIFT) : 0u;
+    /* floor(2^32 / 2r) + 1 > 2^32 / 2r; r below 2^-10 gets the other bound */
+    s.inv2r = ur >= (1u << (NUM_FRAC - 10)) ? num_udiv64_32((uint64_t)1 << 32, 2u * ur, 0) + 1u : 0u;
+#else
+    (void)r;
+#endif
+    return s;
 }
 
 #if NUM_MODE == NUM_MODE_FIXED
@@ -127,31 +161,15 @@ static inline struct rt_cdir rt_cdir_make(vec3 o, vec3 d)
 }
 
 #if NUM_MODE == NUM_MODE_FIXED
-/* co = C - O in coarse units, n1 = |co|_1; 0 when n1 >= 2^19 (no test) */
-static inline int rt_coarse_co(const struct rt_cdir *cd, const struct rt_cpt *c, int32_t co[3], uint32_t *n1)
-{
-    co[0] = c->x - cd->o.x;
-    co[1] = c->y - cd->o.y;
-    co[2] = c->z - cd->o.z;
-    *n1 = rt_uabs(co[0]) + rt_uabs(co[1]) + rt_uabs(co[2]);
-    return *n1 < (1u << 19);
-}
-#endif
-
 /* k >= 0 with (t >> k) < 2^15 (t < 2^31). */
-#if NUM_MODE == NUM_MODE_FIXED
 static inline int rt_fit15(uint32_t t) { return t < 32768u ? 0 : 17 - num_clz32(t); }
-#endif
 
-static inline int rt_coarse_sphere_miss(const struct rt_cdir *cd, const struct rt_cpt *ctr, num r)
+/* The line test in units where co = C - O, n1 = |co|_1 < 2^19 and the
+ * sphere's radius with its margin is R units (rc: the radius alone). */
+static inline int rt_coarse_units_miss(const struct rt_cdir *cd, const int32_t co[3], uint32_t n1, uint32_t R,
+                                       uint32_t rc)
 {
-#if NUM_MODE == NUM_MODE_FIXED
-    int32_t co[3];
-    uint32_t n1;
-    if (cd->len == 0 || r < 0 || !rt_coarse_co(cd, ctr, co, &n1)) return 0;
     int32_t cx = co[0], cy = co[1], cz = co[2];
-    uint32_t rc = ((uint32_t)r + 4095u) >> 12;
-    uint32_t R = rc + ((5u * n1 + (1u << (NUM_FRAC / 2)) - 1) >> (NUM_FRAC / 2)) + 3;
     uint32_t len = (uint32_t)cd->len;
     /* R < 2^19 + 2^17, len < 2^11: T < 2^31 */
     uint32_t T = R * (len + 2) + 2 * len + 2 * n1 + 3;
@@ -181,8 +199,50 @@ static inline int rt_coarse_sphere_miss(const struct rt_cdir *cd, const struct r
     T = (T >> k) + (k > 0);
     xx >>= k; xy >>= k; xz >>= k;
     return xx * xx + xy * xy + xz * xz > T * T;
+}
+#endif
+
+static inline int rt_coarse_sphere_miss(const struct rt_cdir *cd, const struct rt_csphere *sp)
+{
+#if NUM_MODE == NUM_MODE_FIXED
+    int32_t co[3];
+    if (cd->len == 0 || !sp->ok) return 0;
+    co[0] = sp->c.fx - cd->o.fx;
+    co[1] = sp->c.fy - cd->o.fy;
+    co[2] = sp->c.fz - cd->o.fz;
+    uint32_t n1 = rt_uabs(co[0]) + rt_uabs(co[1]) + rt_uabs(co[2]);
+    if (n1 < (1u << 19)) {
+        /* fine units, U = 2^-10 scene units: with w = 2^-10, A = (n1 + 2)^2,
+         * 2 r m >= M for m = (6.25 A w + 25 (n1 + 2) + 42 / w) / (2 r_raw)
+         * (|CO| <= (n1 + 2) w); m^2 >= M for m = 5 (n1 + 2) 2^(-F/2) +
+         * 9 2^(10 - F/2) */
+        uint32_t m = ((5u * (n1 + 2) + (1u << (NUM_FRAC / 2)) - 1) >> (NUM_FRAC / 2)) +
+                     ((9u << 10) >> (NUM_FRAC / 2)) + 1;
+        /* R < 2^19 + 2^17 keeps T below 2^31; larger spheres use U = 2^12 */
+        if (sp->rcf + m + 3 < (1u << 19) + (1u << 17)) {
+            if (rt_coarse_units_miss(cd, co, n1, sp->rcf + m + 3, sp->rcf)) return 1;
+            /* not proven with the first margin: try the 2 r m one, usually
+             * far smaller for spheres that are not tiny */
+            if (sp->inv2r && n1 < (1u << 15)) {
+                uint32_t a = (n1 + 2) * (n1 + 2);            /* < 2^31 */
+                uint32_t num = (((a >> 4) + 1) * 25 >> 8) + 1 + 25 * (n1 + 2) + 43008u;
+                uint32_t m2 = (uint32_t)(num_umul32(num, sp->inv2r) >> 32) + 1;
+                if (m2 < m) return rt_coarse_units_miss(cd, co, n1, sp->rcf + m2 + 3, sp->rcf);
+            }
+            return 0;
+        }
+    }
+    co[0] = sp->c.x - cd->o.x;
+    co[1] = sp->c.y - cd->o.y;
+    co[2] = sp->c.z - cd->o.z;
+    n1 = rt_uabs(co[0]) + rt_uabs(co[1]) + rt_uabs(co[2]);
+    if (n1 >= (1u << 19)) return 0;
+    /* rc < 2^19 and the margin < 2^16 (n1 < 2^19, F >= 12): R < 2^19 + 2^17 */
+    /* U = 2^12 raw: m = 5 (n1 + 2) 2^(-F/2) + 9 2^(F/2 - 12) <= ceil(5 n1 2^(-F/2)) + 3 */
+    uint32_t R = sp->rc + ((5u * n1 + (1u << (NUM_FRAC / 2)) - 1) >> (NUM_FRAC / 2)) + 3;
+    return rt_coarse_units_miss(cd, co, n1, R, sp->rc);
 #else
-    (void)cd; (void)ctr; (void)r;
+    (void)cd; (void)sp;
     return 0;
 #endif
 }
@@ -195,10 +255,11 @@ static inline int rt_coarse_sphere_miss(const struct rt_cdir *cd, const struct r
 static inline int rt_coarse_dot_negative(const struct rt_cdir *cd, const struct rt_cpt *ctr)
 {
 #if NUM_MODE == NUM_MODE_FIXED
-    int32_t co[3];
-    uint32_t n1;
-    if (cd->len == 0 || !rt_coarse_co(cd, ctr, co, &n1)) return 0;
-    int32_t p = co[0] * cd->x + co[1] * cd->y + co[2] * cd->z;
+    if (cd->len == 0) return 0;
+    int32_t cx = ctr->x - cd->o.x, cy = ctr->y - cd->o.y, cz = ctr->z - cd->o.z;
+    uint32_t n1 = rt_uabs(cx) + rt_uabs(cy) + rt_uabs(cz);
+    if (n1 >= (1u << 19)) return 0;
+    int32_t p = cx * cd->x + cy * cd->y + cz * cd->z;
     return p < 0 && rt_uabs(p) > 3 * (uint32_t)cd->len + 2 * n1 + 5;
 #else
     (void)cd; (void)ctr;

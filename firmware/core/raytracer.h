@@ -104,7 +104,7 @@ struct rt_obj_cache {
     vec3 bc;              /* bounding sphere of the item (BVH) */
     num br;
     num spec_zero;        /* rt_powi_zero_below(material's exponent) */
-    struct rt_cpt cc;     /* centre in coarse units (num_rt.h) */
+    struct rt_csphere cs; /* the sphere for the coarse tests (num_rt.h) */
 };
 
 /* Bounding-sphere hierarchy node: a leaf holds items [first, first+count). */

@@ -83,7 +83,7 @@ static int sphere_quad(const struct rt_state *rt, int16_t obj, struct rt_ray *ra
     int cam = ray->from_camera && rt->cached;
     /* certain misses, decided in 32-bit arithmetic (num_rt.h): the test
      * below would return 0 too */
-    if (rt->shortcuts && rt_coarse_sphere_miss(&ray->cd, &oc->cc, o->radius)) return 0;
+    if (rt->shortcuts && rt_coarse_sphere_miss(&ray->cd, &oc->cs)) return 0;
     rt_ray_exact(ray);
     vec3 co = cam ? oc->co_cam : v3_sub(ray->o, o->center);
     k->a = ray->as;
@@ -160,7 +160,7 @@ static int sphere_first_hit(const struct rt_state *rt, int16_t obj, struct rt_ra
 {
     num t1, t2;
     if (ray->origin == obj) {
-        if (rt_coarse_dot_negative(&ray->cd, &rt->oc[obj].cc)) return 0;
+        if (rt_coarse_dot_negative(&ray->cd, &rt->oc[obj].cs.c)) return 0;
         wnum b = sphere_self_b(rt, obj, ray);
         if (b <= 0) return 0;
         t1 = scale_t(wnum_div(wnum_add(b, b), ray->as), ray->tscale);
@@ -486,7 +486,7 @@ void rt_frame_constants(struct rt_state *rt)
         const struct rt_object *o = &s->objects[i];
         struct rt_obj_cache *oc = &rt->oc[i];
         oc->r2 = num_mul_wide(o->radius, o->radius);
-        oc->cc = rt_cpt_make(o->center);
+        oc->cs = rt_csphere_make(o->center, o->radius);
         if (o->shape == RT_SPHERE) {
             oc->co_cam = v3_sub(rt->cam_pos, o->center);
             if (rt->book)

@@ -41,12 +41,15 @@ FW_INC       := -I. -Ifirmware/core -Ifirmware/app -Ihal -I$(FW_OUT)/scenes
 # when the scene compiler's source is present.
 #   book  FW_BOOK_SCENES: the "book" images (raytracer-02 and raster-11)
 #   cube  FW_CUBE_SCENES: small3dlib's cube workload (firmware/scenes/bench)
+#   rt    FW_RT_SCENES: the ray tracer's benchmark (raytracer-05, exact and with
+#         its real-time option)
 # $(call fw_scene_set,SET,set) with FW_<SET>_SCENES set defines FW_<SET>_SRCS
 # (the scenes' sources and their table fw_scenes_<set>.c), FW_<SET>_FRAC_H
 # and FW_<SET>_FRAC_FLAGS (the -include of it).
 FW_HAVE_SCENEC := $(if $(wildcard tools/scenec/scenec.c),1,)
 FW_BOOK_SCENES ?= book/raytracer-02 book/raster-11
 FW_CUBE_SCENES ?= bench/cube-textured bench/cube-gouraud bench/cube-flat
+FW_RT_SCENES   ?= book/raytracer-05 bench/raytracer-05-adaptive
 FW_STRIP_ROWS  ?= 8
 FW_SCENEC      := $(BUILD)/scenec
 FW_SCENE_PROBE := $(BUILD)/scenes/work_probe.elf
@@ -61,7 +64,7 @@ $(FW_OUT)/scenes/$(call fw_scene_id,$(1)).c: firmware/scenes/$(1).scene $(FW_SCE
 		-o $$@ $$< >$$(@:.c=.log) || { cat $$(@:.c=.log); exit 2; }
 $(FW_OUT)/scenes/$(call fw_scene_id,$(1)).h: $(FW_OUT)/scenes/$(call fw_scene_id,$(1)).c
 endef
-$(foreach n,$(sort $(FW_BOOK_SCENES) $(FW_CUBE_SCENES)),$(eval $(call FW_SCENE,$(n))))
+$(foreach n,$(sort $(FW_BOOK_SCENES) $(FW_CUBE_SCENES) $(FW_RT_SCENES)),$(eval $(call FW_SCENE,$(n))))
 # $(1) = SET (variable names), $(2) = set (file names). The list of scenes,
 # fw_<set>_scenes.list, is rewritten only when FW_<SET>_SCENES changes, so
 # that the table and the format follow the list.
@@ -88,6 +91,7 @@ endef
 fw_scene_set = $(eval $(call FW_SCENE_SET,$(1),$(2)))
 $(call fw_scene_set,BOOK,book)
 $(call fw_scene_set,CUBE,cube)
+$(call fw_scene_set,RT,rt)
 # fw_frac_objs(OBJ_DIR,SOURCES): the objects of an image that links a scene
 # set; they are compiled after, and again when, the format changes.
 fw_frac_objs = $(patsubst %.c,$(1)/%.o,$(2))
@@ -155,9 +159,13 @@ $(call fw_scene_image,cgfs-book-1core,BOOK,$(FW_1CORE_FLAGS) -DFW_FRAMES_PER_SCE
 FW_CUBE_FRAMES ?= 10
 $(call fw_scene_image,cgfs-cube,CUBE,-DFW_FRAMES_PER_SCENE=$(FW_CUBE_FRAMES))
 $(call fw_scene_image,cgfs-cube-1core,CUBE,$(FW_1CORE_FLAGS) -DFW_FRAMES_PER_SCENE=$(FW_CUBE_FRAMES))
+# The ray tracer's benchmark: one frame of each, progressive (the preview's
+# time is rp2040sim's first_image_us).
+$(call fw_scene_image,cgfs-rt,RT,-DFW_FRAMES_PER_SCENE=1)
+$(call fw_scene_image,cgfs-rt-1core,RT,$(FW_1CORE_FLAGS) -DFW_FRAMES_PER_SCENE=1)
 
 FW_RP_IMAGES := $(FW_OUT)/pico/cgfs.uf2 $(FW_OUT)/pico/cgfs-1core.uf2 \
-                $(if $(FW_HAVE_SCENEC),$(foreach i,cgfs-book cgfs-book-1core cgfs-cube cgfs-cube-1core,$(FW_OUT)/pico/$(i).uf2))
+                $(if $(FW_HAVE_SCENEC),$(foreach i,cgfs-book cgfs-book-1core cgfs-cube cgfs-cube-1core cgfs-rt cgfs-rt-1core,$(FW_OUT)/pico/$(i).uf2))
 
 .PHONY: firmware-pico
 firmware-pico: deps-firmware
@@ -307,7 +315,8 @@ RP2040SIM_BENCH_FRAMES ?= 1
 RP2040SIM_TMP := $(BUILD)/bench/rp2040sim.jsonl.tmp
 .PHONY: bench-rp2040
 bench-rp2040: $(RP2040SIM_DEPS) $(FW_OUT)/pico/cgfs-1core.elf \
-              $(if $(FW_HAVE_SCENEC),$(FW_OUT)/pico/cgfs-book-1core.elf $(FW_OUT)/pico/cgfs-cube-1core.elf)
+              $(if $(FW_HAVE_SCENEC),$(FW_OUT)/pico/cgfs-book-1core.elf $(FW_OUT)/pico/cgfs-cube-1core.elf \
+                                     $(FW_OUT)/pico/cgfs-rt-1core.elf)
 	@mkdir -p $(BUILD)/bench
 	@# this step's lines are rewritten, the other steps' kept
 	$(Q)grep -v '"target": *"rp2040-sim"' $(BUILD)/bench/results.jsonl >$(BUILD)/bench/results.jsonl.tmp 2>/dev/null; \
@@ -320,6 +329,9 @@ ifneq ($(FW_HAVE_SCENEC),)
 	$(Q)cat $(RP2040SIM_TMP) && cat $(RP2040SIM_TMP) >>$(BUILD)/bench/results.jsonl
 	$(Q)node tools/rp2040sim/rp2040sim.js --image $(FW_OUT)/pico/cgfs-cube-1core.elf \
 		--frames $$(($(words $(FW_CUBE_SCENES)) * $(FW_CUBE_FRAMES))) --json --average >$(RP2040SIM_TMP)
+	$(Q)cat $(RP2040SIM_TMP) && cat $(RP2040SIM_TMP) >>$(BUILD)/bench/results.jsonl
+	$(Q)node tools/rp2040sim/rp2040sim.js --image $(FW_OUT)/pico/cgfs-rt-1core.elf \
+		--frames $(words $(FW_RT_SCENES)) --json >$(RP2040SIM_TMP)
 	$(Q)cat $(RP2040SIM_TMP) && cat $(RP2040SIM_TMP) >>$(BUILD)/bench/results.jsonl && rm -f $(RP2040SIM_TMP)
 endif
 bench: bench-rp2040

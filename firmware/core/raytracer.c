@@ -373,8 +373,15 @@ static void coarse_strip(struct rt_state *rt, struct render_target *t)
         for (int c0 = 0; c0 < rt->w; c0 += b) {
             int c1 = c0 + b < rt->w ? c0 + b : rt->w;
             rgb c = sample_at(rt, (c0 + c1 - 1) / 2, (r0 + r1 - 1) / 2).c;
-            for (int y = r0 > t->y0 ? r0 : t->y0; y < r1 && y < t->y1; y++)
-                for (int x = c0; x < c1; x++) render_put(t, x, y, c);
+            uint16_t v = rgb_to_565(c);
+            for (int y = r0 > t->y0 ? r0 : t->y0; y < r1 && y < t->y1; y++) {
+                if (t->rgb888) {
+                    for (int x = c0; x < c1; x++) render_put(t, x, y, c);
+                    continue;
+                }
+                uint16_t *row = t->rgb565 + (size_t)(y - t->y0) * t->width;
+                for (int x = c0; x < c1; x++) row[x] = v;   /* the block's one colour */
+            }
         }
     }
 }

@@ -20,7 +20,9 @@ static int in_shadow(struct rt_state *rt, struct rt_ray *ray, num t_max, uint16_
         if (rt_item_hit(rt, rt->occluder[light], ray, o->epsilon, t_max, &hit)) return 1;
         rt->skip_item = rt->occluder[light];   /* tested already */
     }
-    int found = closest_intersection(rt, ray, o->epsilon, t_max, &hit, o->shadow_any_hit);
+    /* only whether something is in the way matters: with the shortcuts on,
+     * the first occluder found answers (same image as the closest) */
+    int found = closest_intersection(rt, ray, o->epsilon, t_max, &hit, o->shadow_any_hit || rt->shortcuts);
     rt->skip_item = -1;
     if (!found) return 0;
     if (o->shadow_cache) rt->occluder[light] = hit.item;

@@ -9,8 +9,10 @@ mode against the double build of the same scene at the same size:
 `host_sim --compare double`. Accuracy is of the scene as written (its own
 options), stated in `accuracy_of`; a variant named KEY=VALUE (a rasterizer
 method, e.g. perspective_step=32 or lighting=vertex) is measured on the scene
-with that option set. The reference is always the double build's exact
-method (host_sim --compare). The file is rewritten atomically.
+with that option set (in the scene's rasterizer or raytracer block). A
+variant named *_pass measures one pass of the progressive display, not an
+image: it gets no accuracy. The reference is always the double build's
+exact method (host_sim --compare). The file is rewritten atomically.
 usage: accuracy.py RESULTS.jsonl HOST_SIM [SCENES_DIR]
 """
 import json
@@ -25,7 +27,7 @@ from stability import host_sim_compare  # noqa: E402
 
 def compare_variant(host_sim, path, numeric, w, h, opt):
     """host_sim --compare double of the scene, with `KEY = VALUE` added to
-    its rasterizer block when opt is given."""
+    its rasterizer (or raytracer) block when opt is given."""
     size = "%dx%d" % (w, h)
     if not opt:
         return host_sim_compare(host_sim, path, numeric, size)
@@ -34,10 +36,12 @@ def compare_variant(host_sim, path, numeric, w, h, opt):
     k, _, v = opt.partition("=")
     if re.search(r"^\s*%s\s*=" % k, text, re.M):
         text = re.sub(r"^(\s*%s\s*=\s*)\S+" % k, r"\g<1>%s" % v, text, count=1, flags=re.M)
-    elif re.search(r"^rasterizer\s*\{", text, re.M):
-        text = re.sub(r"^(rasterizer\s*\{)", r"\1 %s = %s" % (k, v), text, count=1, flags=re.M)
     else:
-        text += "\nrasterizer { %s = %s }\n" % (k, v)
+        block = "raytracer" if re.search(r"^renderer\s*=\s*raytracer", text, re.M) else "rasterizer"
+        if re.search(r"^%s\s*\{" % block, text, re.M):
+            text = re.sub(r"^(%s\s*\{)" % block, r"\1 %s = %s" % (k, v), text, count=1, flags=re.M)
+        else:
+            text += "\n%s { %s = %s }\n" % (block, k, v)
     fd, tmp = tempfile.mkstemp(suffix=".scene")
     try:
         with os.fdopen(fd, "w") as f:
@@ -68,6 +72,8 @@ def main():
         if not os.path.exists(path) or numeric not in ("fixed", "float", "double"):
             continue
         variant = l.get("variant", "default")
+        if variant.endswith("_pass"):
+            continue
         opt = variant if re.match(r"^[a-z_]+=[a-z0-9_]+$", variant) else None
         key = (path, numeric, l["width"], l["height"], opt)
         if key not in cache:

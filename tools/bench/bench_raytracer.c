@@ -19,8 +19,10 @@
 static uint64_t work[4096];          /* 32 KiB: ample for these scenes */
 static uint16_t strip_px[W * STRIP];
 
-/* One frame of s at w x h; returns instructions, or 0 on failure. */
-static uint64_t frame(const struct scene *s, int w, int h)
+/* One frame of s at w x h; returns instructions, or 0 on failure. With
+ * coarse_only, only the progressive display's first pass (the preview of
+ * 8x8 blocks): the time to the first whole-screen image. */
+static uint64_t frame_pass(const struct scene *s, int w, int h, int coarse_only)
 {
     struct render_ctx ctx;
     size_t need = render_work_size(s, (uint16_t)w, (uint16_t)h, STRIP);
@@ -28,6 +30,7 @@ static uint64_t frame(const struct scene *s, int w, int h)
     uint64_t t0 = bench_now();
     if (render_init(&ctx, s, (uint16_t)w, (uint16_t)h, STRIP, work, sizeof work) != 0) return 0;
     render_begin_frame(&ctx, 0);
+    if (coarse_only && render_set_pass(&ctx, RENDER_PASS_COARSE) != 0) return 0;
     struct render_stats st;
     memset(&st, 0, sizeof st);
     for (int y = 0; y < h; y += STRIP) {
@@ -37,6 +40,8 @@ static uint64_t frame(const struct scene *s, int w, int h)
     }
     return bench_now() - t0;
 }
+
+static uint64_t frame(const struct scene *s, int w, int h) { return frame_pass(s, w, h, 0); }
 
 static int report(const char *what, const char *variant, uint64_t instr)
 {
@@ -56,22 +61,33 @@ int bench_main(void)
     struct scene *s = rt_book_scene(5);
     bad |= report("scene:book/raytracer-05", "strip16", frame(s, W, H));
 #ifndef BENCH_RT_QUICK
+    /* KEY=VALUE variants are scene options (tools/bench/accuracy.py measures
+     * each one's accuracy with that option set) */
+    bad |= report("scene:book/raytracer-05", "coarse_pass", frame_pass(s, W, H, 1));
+    s->rt.adaptive_subsample = 2;
+    bad |= report("scene:book/raytracer-05", "adaptive_subsample=2", frame(s, W, H));
+    s->rt.adaptive_subsample = 3;
+    bad |= report("scene:book/raytracer-05", "adaptive_subsample=3", frame(s, W, H));
+    s->rt.adaptive_subsample = 0;
+    s->rt.no_shortcuts = 1;
+    bad |= report("scene:book/raytracer-05", "shortcuts=off", frame(s, W, H));
+    s->rt.no_shortcuts = 0;
     s->rt.no_frame_cache = 1;
-    bad |= report("scene:book/raytracer-05", "no_frame_cache", frame(s, W, H));
+    bad |= report("scene:book/raytracer-05", "frame_cache=off", frame(s, W, H));
     s->rt.no_frame_cache = 0;
     s->rt.shadow_any_hit = 1;
-    bad |= report("scene:book/raytracer-05", "shadow_any_hit", frame(s, W, H));
+    bad |= report("scene:book/raytracer-05", "shadow_any_hit=on", frame(s, W, H));
     s->rt.shadow_cache = 1;
     bad |= report("scene:book/raytracer-05", "shadow_any_hit+cache", frame(s, W, H));
     s->rt.shadow_any_hit = s->rt.shadow_cache = 0;
     s->rt.subsample = 2;
-    bad |= report("scene:book/raytracer-05", "subsample2", frame(s, W, H));
+    bad |= report("scene:book/raytracer-05", "subsample=2", frame(s, W, H));
     s->rt.subsample = 1;
     s->rt.supersample = 2;
-    bad |= report("scene:book/raytracer-05", "supersample4", frame(s, W, H));
-    s->rt.supersample = 3;
+    bad |= report("scene:book/raytracer-05", "supersample=2", frame(s, W, H));
+    s->rt.supersample = 1;
     s->rt.adaptive_ss = 1;
-    bad |= report("scene:book/raytracer-05", "adaptive9", frame(s, W, H));
+    bad |= report("scene:book/raytracer-05", "adaptive_supersample=on", frame(s, W, H));
     s->rt.supersample = 1;
     s->rt.adaptive_ss = 0;
     /* many objects: 8x8 spheres on a plane, 80x80 */

@@ -9,7 +9,7 @@
  * its left or upper neighbour in object or by more than this per channel. */
 #define RT_ADAPTIVE_DIFF NUM_C(12.0)
 
-struct layout { size_t state, oc, items, unb, bvh, bvh_items, occ, lray, llen, row_c, row_item, colx, corner, total; };
+struct layout { size_t state, oc, items, unb, bvh, bvh_items, occ, lray, llen, row_c, row_item, colx, corner, grid, total; };
 
 static struct layout layout_of(const struct scene *s, uint16_t width)
 {
@@ -29,7 +29,13 @@ static struct layout layout_of(const struct scene *s, uint16_t width)
     l.row_item = off; off += ALIGN8(sizeof(int16_t) * width);
     l.colx = off; off += ALIGN8(sizeof(num) * width);
     /* two rows of adaptive-subsampling corners: at most width/2 + 2 each */
-    l.corner = off; off += s->rt.adaptive_subsample > 1 ? 2 * ALIGN8(sizeof(struct rt_sample) * (width / 2u + 2u)) : 0;
+    /* two full rows of samples and their flags, two columns of a block */
+    l.corner = off; off += s->rt.adaptive_subsample > 1 ? 2 * (ALIGN8(sizeof(struct rt_sample) * width) + ALIGN8(width)) +
+                                                          2 * (ALIGN8(sizeof(struct rt_sample) * (s->rt.adaptive_subsample + 1u)) +
+                                                               ALIGN8(s->rt.adaptive_subsample + 1u)) : 0;
+    /* the block being refined: (B + 1)^2 samples and their flags */
+    size_t g = s->rt.adaptive_subsample > 1 ? (size_t)(s->rt.adaptive_subsample + 1) * (s->rt.adaptive_subsample + 1) : 0;
+    l.grid = off; off += ALIGN8(sizeof(struct rt_sample) * g) + ALIGN8(g);
     l.total = off;
     return l;
 }
@@ -73,9 +79,25 @@ int rt_init(struct render_ctx *ctx)
     rt->row_item = (int16_t *)(w + l.row_item);
     rt->col_x = (num *)(w + l.colx);
     rt->adapt = s->rt.adaptive_subsample > 1 ? s->rt.adaptive_subsample : 0;
-    rt->corner[0] = (struct rt_sample *)(w + l.corner);
-    rt->corner[1] = rt->corner[0] + (rt->adapt ? ctx->width / 2u + 2u : 0);
+    if (rt->adapt) {
+        unsigned char *q = w + l.corner;
+        for (int k = 0; k < 2; k++) {
+            rt->corner[k] = (struct rt_sample *)q;
+            q += ALIGN8(sizeof(struct rt_sample) * ctx->width);
+            rt->corner_have[k] = q;
+            q += ALIGN8(ctx->width);
+        }
+        for (int k = 0; k < 2; k++) {
+            rt->colbuf[k] = (struct rt_sample *)q;
+            q += ALIGN8(sizeof(struct rt_sample) * (rt->adapt + 1u));
+            rt->colbuf_have[k] = q;
+            q += ALIGN8(rt->adapt + 1u);
+        }
+    }
     rt->corner_row[0] = rt->corner_row[1] = -1;
+    rt->grid = (struct rt_sample *)(w + l.grid);
+    rt->grid_have = (uint8_t *)(w + l.grid) +
+                    (rt->adapt ? ALIGN8(sizeof(struct rt_sample) * (size_t)(rt->adapt + 1) * (rt->adapt + 1)) : 0);
     const struct rt_options *o = &s->rt;
     rt->book = o->formulation == 1 || (o->formulation == 0 && num_rt_reference_mode());
     rt->depth = o->recursion_depth > RT_MAX_DEPTH ? RT_MAX_DEPTH : o->recursion_depth;
@@ -386,22 +408,24 @@ static void coarse_strip(struct rt_state *rt, struct render_target *t)
     }
 }
 
-/* The corner samples of image row `row` (columns 0, B, 2B, ... and the
- * last), kept for the next block row. */
-static const struct rt_sample *corner_row(struct rt_state *rt, int row)
+/* The samples of image row `row` traced so far: the block corners
+ * (columns 0, B, 2B, ... and the last) at once, other columns when a block
+ * needs them; kept for the next block row, whose top row it is. */
+static int corner_row(struct rt_state *rt, int row)
 {
     for (int k = 0; k < 2; k++)
-        if (rt->corner_row[k] == row) return rt->corner[k];
+        if (rt->corner_row[k] == row) return k;
     /* replace the row that is not the other block edge in use */
     int k = rt->corner_row[0] < rt->corner_row[1] ? 0 : 1;
-    int n = 0;
+    for (int col = 0; col < rt->w; col++) rt->corner_have[k][col] = 0;
     for (int col = 0;; col += rt->adapt) {
         if (col > rt->w - 1) col = rt->w - 1;
-        rt->corner[k][n++] = sample_at(rt, col, row);
+        rt->corner[k][col] = sample_at(rt, col, row);
+        rt->corner_have[k][col] = 1;
         if (col == rt->w - 1) break;
     }
     rt->corner_row[k] = row;
-    return rt->corner[k];
+    return k;
 }
 
 static int samples_agree(const struct rt_sample *a, const struct rt_sample *b)
@@ -412,50 +436,144 @@ static int samples_agree(const struct rt_sample *a, const struct rt_sample *b)
            num_abs(num_sub(a->c.b, b->c.b)) <= RT_SUBSAMPLE_DIFF;
 }
 
-/* 2-D adaptive subsampling (chapter 5's subsampling over blocks): the
- * corners of B x B blocks are traced; a block whose four corners agree is
- * filled by bilinear interpolation, any other is traced pixel by pixel.
- * Block rows cover [r0, r0 + B) and the last one also row h - 1, likewise
- * columns; corner rows are recomputed when a strip starts inside a block,
- * so every strip height gives the same pixels. */
+/* The block being refined: its samples on a (B+1) x (B+1) grid. Points
+ * on its top and bottom rows live in the two row buffers (shared with the
+ * blocks beside and, for the bottom row, with the next block row), points
+ * on its left and right columns in the column buffers (shared with the
+ * blocks beside), the rest in the block's own grid; each is traced once,
+ * when first needed. */
+struct rt_block {
+    struct rt_state *rt;
+    struct render_target *t;
+    int c0, r0, wx, wy;        /* image position of grid point (0, 0); size */
+    int top, bot;              /* row buffers of rows r0 and r0 + wy */
+};
+
+static const struct rt_sample *grid_at(struct rt_block *bk, int gx, int gy)
+{
+    struct rt_state *rt = bk->rt;
+    struct rt_sample *sp;
+    uint8_t *have;
+    if (gy == 0 || gy == bk->wy) {
+        int k = gy == 0 ? bk->top : bk->bot;
+        sp = &rt->corner[k][bk->c0 + gx];
+        have = &rt->corner_have[k][bk->c0 + gx];
+    } else if (gx == 0 || gx == bk->wx) {
+        int k = gx == 0 ? rt->col_left : 1 - rt->col_left;
+        sp = &rt->colbuf[k][gy];
+        have = &rt->colbuf_have[k][gy];
+    } else {
+        int i = gy * (rt->adapt + 1) + gx;
+        sp = &rt->grid[i];
+        have = &rt->grid_have[i];
+    }
+    if (!*have) {
+        *sp = sample_at(rt, bk->c0 + gx, bk->r0 + gy);
+        *have = 1;
+    }
+    return sp;
+}
+
+static int rect_agrees(const struct rt_sample *s00, const struct rt_sample *s01, const struct rt_sample *s10,
+                       const struct rt_sample *s11)
+{
+    return samples_agree(s00, s01) && samples_agree(s00, s10) && samples_agree(s00, s11) &&
+           samples_agree(s01, s10) && samples_agree(s01, s11) && samples_agree(s10, s11);
+}
+
+/* Pixels [x, x + wx) x [y, y + wy) of the block (grid units = pixels),
+ * and the right / bottom edge too when it is the image's last column /
+ * row: if the rectangle's four corners agree (or it is one pixel), its
+ * pixels are the corners' bilinear interpolation (traced grid points keep
+ * their own colour); otherwise it is split in halves and each refined. */
+static void refine(struct rt_block *bk, int x, int y, int wx, int wy, int right, int bottom)
+{
+    struct render_target *t = bk->t;
+    int ya = bk->r0 + y, yb = bk->r0 + y + wy + (bottom ? 1 : 0);      /* image rows owned */
+    if (yb <= t->y0 || ya >= t->y1) return;
+    if (wx <= 1 && wy <= 1 && !right && !bottom) {
+        if (ya >= t->y0) render_put(t, bk->c0 + x, ya, grid_at(bk, x, y)->c);
+        return;
+    }
+    const struct rt_sample *s00 = grid_at(bk, x, y), *s01 = grid_at(bk, x + wx, y);
+    const struct rt_sample *s10 = grid_at(bk, x, y + wy), *s11 = grid_at(bk, x + wx, y + wy);
+    if ((wx > 1 || wy > 1) && !rect_agrees(s00, s01, s10, s11)) {
+        int hx = wx > 1 ? wx / 2 : wx, hy = wy > 1 ? wy / 2 : wy;
+        refine(bk, x, y, hx, hy, right && hx == wx, bottom && hy == wy);
+        if (hx < wx) refine(bk, x + hx, y, wx - hx, hy, right, bottom && hy == wy);
+        if (hy < wy) {
+            refine(bk, x, y + hy, hx, wy - hy, right && hx == wx, bottom);
+            if (hx < wx) refine(bk, x + hx, y + hy, wx - hx, wy - hy, right, bottom);
+        }
+        return;
+    }
+    /* the rectangle's pixels from its four corners alone (a point another
+     * rectangle traced is interpolated here too: the pixels then depend on
+     * this rectangle's corners only, whatever the strips) */
+    if (wx <= 1 && wy <= 1) {
+        /* one pixel: its own sample, and the image's last column/row */
+        for (int gy = y; gy < y + wy + (bottom ? 1 : 0); gy++) {
+            int row = bk->r0 + gy;
+            if (row < t->y0 || row >= t->y1) continue;
+            for (int gx = x; gx < x + wx + (right ? 1 : 0); gx++)
+                render_put(t, bk->c0 + gx, row, grid_at(bk, gx, gy)->c);
+        }
+        return;
+    }
+    for (int gy = y; gy < y + wy + (bottom ? 1 : 0); gy++) {
+        int row = bk->r0 + gy;
+        if (row < t->y0 || row >= t->y1) continue;
+        num fy = num_from_ratio(gy - y, wy);
+        for (int gx = x; gx < x + wx + (right ? 1 : 0); gx++) {
+            rgb c;
+            int cx = gx == x ? 0 : (gx == x + wx ? 1 : -1), cy = gy == y ? 0 : (gy == y + wy ? 1 : -1);
+            if (cx >= 0 && cy >= 0) {
+                c = (cy ? (cx ? s11 : s10) : (cx ? s01 : s00))->c;
+            } else {
+                num fx = num_from_ratio(gx - x, wx);
+                rgb up = rgb_add(rgb_scale(s00->c, num_sub(NUM_ONE, fx)), rgb_scale(s01->c, fx));
+                rgb dn = rgb_add(rgb_scale(s10->c, num_sub(NUM_ONE, fx)), rgb_scale(s11->c, fx));
+                c = rgb_add(rgb_scale(up, num_sub(NUM_ONE, fy)), rgb_scale(dn, fy));
+            }
+            render_put(t, bk->c0 + gx, row, c);
+        }
+    }
+}
+
+/* 2-D adaptive subsampling (chapter 5's subsampling over blocks, refined
+ * as a quadtree): the corners of B x B blocks are traced; a block whose
+ * four corners agree (item, shadows, colours within RT_SUBSAMPLE_DIFF) is
+ * filled by bilinear interpolation, any other is split in four and each
+ * quarter decided the same way from its own corners, down to single
+ * pixels. Block rows cover [r0, r0 + B) and the last one also row h - 1,
+ * likewise columns; a strip that starts inside a block row refines that
+ * block row again (only the rows it owns are written), so every strip
+ * height gives the same pixels. Images of at least 2 x 2 pixels. */
 static void adaptive_strip(struct rt_state *rt, struct render_target *t)
 {
     const int b = rt->adapt, w = rt->w, h = rt->h;
+    if (w < 2 || h < 2) {
+        for (int y = t->y0; y < t->y1; y++)
+            for (int x = 0; x < w; x++) render_put(t, x, y, sample_at(rt, x, y).c);
+        return;
+    }
     int r0 = t->y0 - t->y0 % b;
-    if (r0 == h - 1 && r0 > 0) r0 -= b;          /* the last row belongs to the block above */
-    for (; r0 < t->y1; r0 += b) {
+    if (r0 == h - 1) r0 -= b;                    /* the last row belongs to the block above */
+    for (; r0 < t->y1 && r0 < h - 1; r0 += b) {
         int r1 = r0 + b < h - 1 ? r0 + b : h - 1;   /* bottom corner row */
-        int rows_end = r1 == h - 1 ? h : r1;        /* rows of this block row */
-        const struct rt_sample *top = corner_row(rt, r0);
-        const struct rt_sample *bot = r1 > r0 ? corner_row(rt, r1) : top;
-        for (int k = 0, c0 = 0; c0 < w - 1 || (w == 1 && c0 == 0); k++, c0 += b) {
+        int top = corner_row(rt, r0), bot = corner_row(rt, r1);
+        /* the first block's left column starts empty */
+        rt->col_left = 0;
+        for (int i = 0; i <= b; i++) rt->colbuf_have[0][i] = 0;
+        for (int c0 = 0; c0 < w - 1; c0 += b) {
             int c1 = c0 + b < w - 1 ? c0 + b : w - 1;
-            int cols_end = c1 == w - 1 ? w : c1;
-            const struct rt_sample *s00 = &top[k], *s01 = &top[k + (c1 > c0)];
-            const struct rt_sample *s10 = &bot[k], *s11 = &bot[k + (c1 > c0)];
-            int smooth = samples_agree(s00, s01) && samples_agree(s00, s10) && samples_agree(s00, s11) &&
-                         samples_agree(s01, s10) && samples_agree(s01, s11) && samples_agree(s10, s11);
-            for (int y = r0 > t->y0 ? r0 : t->y0; y < rows_end && y < t->y1; y++) {
-                num fy = r1 > r0 ? num_from_ratio(y - r0, r1 - r0) : NUM_ZERO;
-                for (int x = c0; x < cols_end; x++) {
-                    int cx = x == c0 ? 0 : (x == c1 ? 1 : -1), cy = y == r0 ? 0 : (y == r1 ? 1 : -1);
-                    rgb c;
-                    if (cx >= 0 && cy >= 0) {
-                        c = (cy ? (cx ? s11 : s10) : (cx ? s01 : s00))->c;
-                    } else if (smooth) {
-                        num fx = c1 > c0 ? num_from_ratio(x - c0, c1 - c0) : NUM_ZERO;
-                        rgb up = rgb_add(rgb_scale(s00->c, num_sub(NUM_ONE, fx)), rgb_scale(s01->c, fx));
-                        rgb dn = rgb_add(rgb_scale(s10->c, num_sub(NUM_ONE, fx)), rgb_scale(s11->c, fx));
-                        c = rgb_add(rgb_scale(up, num_sub(NUM_ONE, fy)), rgb_scale(dn, fy));
-                    } else {
-                        c = sample_at(rt, x, y).c;
-                    }
-                    render_put(t, x, y, c);
-                }
-            }
-            if (w == 1) break;
+            int n = (b + 1) * (b + 1);
+            for (int i = 0; i < n; i++) rt->grid_have[i] = 0;
+            for (int i = 0; i <= b; i++) rt->colbuf_have[1 - rt->col_left][i] = 0;
+            struct rt_block bk = { rt, t, c0, r0, c1 - c0, r1 - r0, top, bot };
+            refine(&bk, 0, 0, c1 - c0, r1 - r0, c1 == w - 1, r1 == h - 1);
+            rt->col_left = 1 - rt->col_left;   /* this block's right column is the next one's left */
         }
-        if (rows_end >= h) break;
     }
 }
 

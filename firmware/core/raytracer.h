@@ -155,8 +155,14 @@ struct rt_state {
     int16_t skip_item;         /* item closest_intersection skips (already tested), -1 none */
     int32_t last_row;          /* row of the notes in row_c/row_item (-2: none) */
     uint8_t *shadow_probe;     /* optional, w*h: shadow bits of primary hits */
-    struct rt_sample *corner[2]; /* adaptive subsampling: two rows of block corners */
+    struct rt_sample *corner[2]; /* adaptive subsampling: two rows of samples (width) */
+    uint8_t *corner_have[2];     /* which of them are traced */
+    struct rt_sample *colbuf[2]; /* a block's left and right columns (B + 1) */
+    uint8_t *colbuf_have[2];
+    uint8_t col_left;            /* which colbuf is the left column */
     int32_t corner_row[2];       /* their image rows (-1: none) */
+    struct rt_sample *grid;      /* the block being refined, (B + 1)^2 samples */
+    uint8_t *grid_have;          /* which of them are traced */
     struct rt_counters n;
 };
 

@@ -11,8 +11,16 @@
 
 struct layout { size_t state, oc, items, unb, bvh, bvh_items, occ, lray, llen, row_c, row_item, colx, corner, grid, total; };
 
+/* Adaptive subsampling's block side: 0 (off) or 2 .. RT_MAX_ADAPT. */
+static unsigned adapt_side(const struct scene *s)
+{
+    unsigned v = s->rt.adaptive_subsample;
+    return v < 2 ? 0u : (v > RT_MAX_ADAPT ? RT_MAX_ADAPT : v);
+}
+
 static struct layout layout_of(const struct scene *s, uint16_t width)
 {
+    unsigned ab = adapt_side(s);
     struct layout l;
     size_t nitems = (size_t)s->nobjects + s->ncsg;
     size_t off = 0;
@@ -30,11 +38,10 @@ static struct layout layout_of(const struct scene *s, uint16_t width)
     l.colx = off; off += ALIGN8(sizeof(num) * width);
     /* two rows of adaptive-subsampling corners: at most width/2 + 2 each */
     /* two full rows of samples and their flags, two columns of a block */
-    l.corner = off; off += s->rt.adaptive_subsample > 1 ? 2 * (ALIGN8(sizeof(struct rt_sample) * width) + ALIGN8(width)) +
-                                                          2 * (ALIGN8(sizeof(struct rt_sample) * (s->rt.adaptive_subsample + 1u)) +
-                                                               ALIGN8(s->rt.adaptive_subsample + 1u)) : 0;
+    l.corner = off; off += ab ? 2 * (ALIGN8(sizeof(struct rt_sample) * width) + ALIGN8(width)) +
+                                2 * (ALIGN8(sizeof(struct rt_sample) * (ab + 1u)) + ALIGN8(ab + 1u)) : 0;
     /* the block being refined: (B + 1)^2 samples and their flags */
-    size_t g = s->rt.adaptive_subsample > 1 ? (size_t)(s->rt.adaptive_subsample + 1) * (s->rt.adaptive_subsample + 1) : 0;
+    size_t g = ab ? (size_t)(ab + 1) * (ab + 1) : 0;
     l.grid = off; off += ALIGN8(sizeof(struct rt_sample) * g) + ALIGN8(g);
     l.total = off;
     return l;
@@ -78,7 +85,7 @@ int rt_init(struct render_ctx *ctx)
     rt->row_c = (rgb *)(w + l.row_c);
     rt->row_item = (int16_t *)(w + l.row_item);
     rt->col_x = (num *)(w + l.colx);
-    rt->adapt = s->rt.adaptive_subsample > 1 ? s->rt.adaptive_subsample : 0;
+    rt->adapt = (uint8_t)adapt_side(s);
     if (rt->adapt) {
         unsigned char *q = w + l.corner;
         for (int k = 0; k < 2; k++) {
@@ -235,7 +242,8 @@ static rgb trace_ray(struct rt_state *rt, struct rt_ray *ray, num t_min, num t_m
 
     rgb out = local;
     if (r > 0) {
-        struct rt_ray rr = rt_make_ray(p, reflect_ray(v, n), hit.surf, 0);
+        struct rt_ray rr;
+        rt_ray_init(&rr, p, reflect_ray(v, n), hit.surf, 0);
         rgb reflected = trace_ray(rt, &rr, s->rt.epsilon, NUM_MAX, depth - 1, NULL);
         out = rgb_add(rgb_scale(local, num_sub(NUM_ONE, r)), rgb_scale(reflected, r));
     }
@@ -245,7 +253,8 @@ static rgb trace_ray(struct rt_state *rt, struct rt_ray *ray, num t_min, num t_m
         vec3 dir;
         if (!rt_refract(ray->d, n, m->refraction > 0 ? m->refraction : NUM_ONE, &dir))
             dir = reflect_ray(v, n);
-        struct rt_ray tr_ray = rt_make_ray(p, dir, hit.surf, 0);
+        struct rt_ray tr_ray;
+        rt_ray_init(&tr_ray, p, dir, hit.surf, 0);
         rgb seen = trace_ray(rt, &tr_ray, s->rt.epsilon, NUM_MAX, depth - 1, NULL);
         out = rgb_add(rgb_scale(out, num_sub(NUM_ONE, tr)), rgb_scale(seen, tr));
     }
@@ -285,7 +294,8 @@ static vec3 pixel_to_viewport(struct rt_state *rt, int col, int row)
 
 static rgb trace_primary(struct rt_state *rt, vec3 d, struct rt_prim *prim)
 {
-    struct rt_ray ray = rt_make_ray(rt->cam_pos, d, -1, 1);
+    struct rt_ray ray;
+    rt_ray_init(&ray, rt->cam_pos, d, -1, 1);
     rt->n.primary_rays++;
     return trace_ray(rt, &ray, rt->s->rt.t_min_primary, NUM_MAX, rt->depth, prim);
 }
@@ -374,6 +384,8 @@ static void subsampled_row(struct rt_state *rt, struct render_target *t, int row
     }
     render_put(t, w - 1, row, rt->row_c[w - 1]);
 }
+
+static rgb rgb_sub(rgb a, rgb b) { return rgb_make(num_sub(a.r, b.r), num_sub(a.g, b.g), num_sub(a.b, b.b)); }
 
 /* One primary ray through the centre of pixel (col, row). */
 static struct rt_sample sample_at(struct rt_state *rt, int col, int row)
@@ -520,21 +532,23 @@ static void refine(struct rt_block *bk, int x, int y, int wx, int wy, int right,
         }
         return;
     }
+    /* bilinear: per row the colours at the left and right edges, then
+     * along the row L + (R - L) fx, with fx per column from a table */
+    num fxs[RT_MAX_ADAPT + 1];
+    for (int i = 0; i <= wx; i++) fxs[i] = num_from_ratio(i, wx);
     for (int gy = y; gy < y + wy + (bottom ? 1 : 0); gy++) {
         int row = bk->r0 + gy;
         if (row < t->y0 || row >= t->y1) continue;
         num fy = num_from_ratio(gy - y, wy);
+        rgb lc = rgb_add(s00->c, rgb_scale(rgb_sub(s10->c, s00->c), fy));
+        rgb rc = rgb_add(s01->c, rgb_scale(rgb_sub(s11->c, s01->c), fy));
+        rgb dc = rgb_sub(rc, lc);
+        int cy = gy == y ? 0 : (gy == y + wy ? 1 : -1);
         for (int gx = x; gx < x + wx + (right ? 1 : 0); gx++) {
             rgb c;
-            int cx = gx == x ? 0 : (gx == x + wx ? 1 : -1), cy = gy == y ? 0 : (gy == y + wy ? 1 : -1);
-            if (cx >= 0 && cy >= 0) {
-                c = (cy ? (cx ? s11 : s10) : (cx ? s01 : s00))->c;
-            } else {
-                num fx = num_from_ratio(gx - x, wx);
-                rgb up = rgb_add(rgb_scale(s00->c, num_sub(NUM_ONE, fx)), rgb_scale(s01->c, fx));
-                rgb dn = rgb_add(rgb_scale(s10->c, num_sub(NUM_ONE, fx)), rgb_scale(s11->c, fx));
-                c = rgb_add(rgb_scale(up, num_sub(NUM_ONE, fy)), rgb_scale(dn, fy));
-            }
+            int cx = gx == x ? 0 : (gx == x + wx ? 1 : -1);
+            if (cx >= 0 && cy >= 0) c = (cy ? (cx ? s11 : s10) : (cx ? s01 : s00))->c;
+            else c = rgb_add(lc, rgb_scale(dc, fxs[gx - x]));
             render_put(t, bk->c0 + gx, row, c);
         }
     }

@@ -44,6 +44,8 @@
 /* Deepest reflection/refraction recursion honoured (rt_options.recursion_depth
  * is clamped to it; the book's control allows 0..5). */
 #define RT_MAX_DEPTH 5
+/* Largest block side of adaptive subsampling (rt_options.adaptive_subsample). */
+#define RT_MAX_ADAPT 8
 /* Rays per pixel side for supersampling (4 -> 16 rays). */
 #define RT_MAX_SS 4
 
@@ -175,6 +177,7 @@ void rt_set_shadow_probe(struct render_ctx *ctx, uint8_t *probe);
 
 /* rt_intersect.c */
 struct rt_ray rt_make_ray(vec3 o, vec3 d, int16_t origin, uint8_t from_camera);
+void rt_ray_init(struct rt_ray *r, vec3 o, vec3 d, int16_t origin, uint8_t from_camera);
 /* Computes the exact tests' forms of the direction (once per ray). */
 void rt_ray_exact(struct rt_ray *r);
 int intersect_ray_sphere(const struct rt_state *rt, int16_t obj, struct rt_ray *ray,

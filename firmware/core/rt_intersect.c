@@ -22,18 +22,23 @@
 /* The ray, with a copy of its direction scaled by a power of two for the
  * robust tests: D' = D / 2^k with D'.D' in [0.25, 4), and tscale = 2^-k,
  * which turns a root t' along D' into t along D. */
+void rt_ray_init(struct rt_ray *r, vec3 o, vec3 d, int16_t origin, uint8_t from_camera)
+{
+    r->o = o;
+    r->d = d;
+    r->cd = rt_cdir_make(o, d);
+    r->origin = origin;
+    r->from_camera = from_camera;
+    r->exact = 0;
+    r->a = r->as = 0;           /* set by rt_ray_exact */
+    r->ds = d;
+    r->tscale = NUM_ONE;
+}
+
 struct rt_ray rt_make_ray(vec3 o, vec3 d, int16_t origin, uint8_t from_camera)
 {
     struct rt_ray r;
-    r.o = o;
-    r.d = d;
-    r.cd = rt_cdir_make(o, d);
-    r.origin = origin;
-    r.from_camera = from_camera;
-    r.exact = 0;
-    r.a = r.as = 0;           /* set by rt_ray_exact */
-    r.ds = d;
-    r.tscale = NUM_ONE;
+    rt_ray_init(&r, o, d, origin, from_camera);
     return r;
 }
 
@@ -393,12 +398,28 @@ int closest_intersection(struct rt_state *rt, struct rt_ray *ray, num t_min, num
     num limit = t_max;
     int found = 0;
     if (!rt->s->rt.bvh || rt->nbvh == 0) {
-        for (uint16_t i = 0; i < rt->nitems; i++)
-            if (rt->items[i] != rt->skip_item && rt_item_hit(rt, rt->items[i], ray, t_min, limit, hit)) {
+        const struct rt_object *objs = rt->s->objects;
+        for (uint16_t i = 0; i < rt->nitems; i++) {
+            int16_t item = rt->items[i];
+            if (item == rt->skip_item) continue;
+            if (rt->shortcuts && item < (int16_t)rt->s->nobjects && objs[item].shape == RT_SPHERE) {
+                /* rt_item_hit's sphere case, without its dispatch */
+                num t;
+                rt->n.tests++;
+                if (!sphere_first_hit(rt, item, ray, t_min, limit, &t)) continue;
+                hit->t = limit = t;
+                hit->item = hit->surf = item;
+                hit->flip = 0;
+                found = 1;
+                if (any_hit) return 1;
+                continue;
+            }
+            if (rt_item_hit(rt, item, ray, t_min, limit, hit)) {
                 limit = hit->t;
                 found = 1;
                 if (any_hit) return 1;
             }
+        }
         return found;
     }
     for (uint16_t i = 0; i < rt->nunbounded; i++)

@@ -69,7 +69,7 @@ num compute_lighting(struct rt_state *rt, vec3 p, vec3 n, vec3 v, num s, num s_z
                 sr.cd.o = rt_cpt_make(p);
                 sr.origin = origin;
             } else {
-                sr = rt_make_ray(p, l, origin, 0);
+                rt_ray_init(&sr, p, l, origin, 0);
             }
             if (in_shadow(rt, &sr, t_max, k)) {
                 if (shadow_bits && k < 7) *shadow_bits |= (uint8_t)(1u << k);

@@ -66,8 +66,10 @@ int bench_main(void)
     bad |= report("scene:book/raytracer-05", "coarse_pass", frame_pass(s, W, H, 1));
     s->rt.adaptive_subsample = 2;
     bad |= report("scene:book/raytracer-05", "adaptive_subsample=2", frame(s, W, H));
-    s->rt.adaptive_subsample = 3;
-    bad |= report("scene:book/raytracer-05", "adaptive_subsample=3", frame(s, W, H));
+    s->rt.adaptive_subsample = 4;
+    bad |= report("scene:book/raytracer-05", "adaptive_subsample=4", frame(s, W, H));
+    s->rt.adaptive_subsample = 8;
+    bad |= report("scene:book/raytracer-05", "adaptive_subsample=8", frame(s, W, H));
     s->rt.adaptive_subsample = 0;
     s->rt.no_shortcuts = 1;
     bad |= report("scene:book/raytracer-05", "shortcuts=off", frame(s, W, H));

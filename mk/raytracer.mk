@@ -55,8 +55,12 @@ $(foreach t,$(BENCH_TARGETS),$(foreach m,fixed float,\
   $(eval BENCH_IMAGES += $(BUILD)/bench/$(t)/$(m)/raytracer.elf)))
 
 # `make profile-raytracer`: instructions per function of raytracer-05
-# (fixed, M0+, 60x60, one frame) from a qemu block trace (tools/bench/profile.py).
+# (fixed, M0+, 60x60, one frame) from a qemu block trace (tools/bench/profile.py);
+# `make profile-raytracer-adaptive`: the same at 120x120 with adaptive_subsample = 4.
 $(call bench_image,raytracer-prof,m0plus-qemu,fixed,$(BENCH_RT_SRCS),-Itests -DBENCH_RT_QUICK -DBENCH_RT_SIZE=60)
-.PHONY: profile-raytracer
+$(call bench_image,raytracer-prof-adaptive,m0plus-qemu,fixed,$(BENCH_RT_SRCS),-Itests -DBENCH_RT_QUICK -DBENCH_RT_SIZE=120 -DBENCH_RT_ADAPT=4)
+.PHONY: profile-raytracer profile-raytracer-adaptive
 profile-raytracer: $(BUILD)/bench/m0plus-qemu/fixed/raytracer-prof.elf
+	$(Q)$(PYTHON) tools/bench/profile.py --top 30 $<
+profile-raytracer-adaptive: $(BUILD)/bench/m0plus-qemu/fixed/raytracer-prof-adaptive.elf
 	$(Q)$(PYTHON) tools/bench/profile.py --top 30 $<

@@ -544,6 +544,20 @@ static void test_coarse_rejection(void)
         }
     }
     check(bad == 0, "coarse_div_and_power_thresholds_exact", "%ld mismatches", bad);
+
+    /* num_div_by: num_div bit for bit, divisors from tiny to huge, quotients
+     * around every rounding boundary and up to saturation */
+    long dbad = 0;
+    for (int k = 0; k < 60000; k++) {
+        double dv = exp((urand(&st) - 0.3) * 14) * (urand(&st) < 0.5 ? -1 : 1);
+        num d = num_from_double(dv);
+        if (k % 97 == 0) d = (num)(k % 5 == 0 ? NUM_MAX : NUM_MIN + k % 3);
+        struct num_divisor v = num_divisor_make(d);
+        num a = num_from_double((urand(&st) - 0.5) * 4 * (k % 3 == 0 ? 1 : fabs(dv)));
+        if (k % 11 == 0) a = (num)((double)NUM_MAX * (urand(&st) - 0.5) * 2);
+        if (num_div_by(a, &v) != num_div(a, d)) dbad++;
+    }
+    check(dbad == 0, "num_div_by_equals_num_div", "%ld of 60000 differ", dbad);
 }
 
 /* Chapter 5 scene renders in every mode; its glass sphere shows the plane through it. */

@@ -364,6 +364,43 @@ num num_div(num a, num b)
     return div_round_signed((uint64_t)uabs32(a) << NUM_FRAC, uabs32(b), (a < 0) != (b < 0));
 }
 
+struct num_divisor num_divisor_make(num d)
+{
+    struct num_divisor v;
+    v.d = d;
+    v.ud = uabs32(d);
+    v.fast = 0;
+    v.k = 0;
+    v.m = 0;
+    if (v.ud >= (1u << (NUM_FRAC - 3))) {
+        /* L = bit length of |d|; k = max(0, F + 2 - L) keeps m < 2^32 */
+        int l = 32 - num_clz32(v.ud);
+        int k = NUM_FRAC + 2 - l;
+        if (k < 0) k = 0;
+        v.k = (uint8_t)k;
+        v.m = num_udiv64_32((uint64_t)1 << (NUM_FRAC + 32 - k), v.ud, 0);
+        v.fast = 1;
+    }
+    return v;
+}
+
+num num_div_by(num a, const struct num_divisor *v)
+{
+    if (!v->fast) return num_div(a, v->d);
+    uint32_t ua = uabs32(a), d = v->ud;
+    uint64_t n = (uint64_t)ua << NUM_FRAC;
+    int neg = (a < 0) != (v->d < 0);
+    if ((n >> 32) >= d) { SAT_HIT(); return neg ? NUM_MIN : NUM_MAX; }   /* as div_round_signed */
+    /* q <= floor(n / d) and at most 2^(k-1) + 1 below it (both floors);
+     * the remainder steps it up */
+    uint64_t p = num_umul32(ua, v->m);                 /* q < 2^32: 32-bit pieces */
+    uint32_t q = v->k ? (uint32_t)(p >> 32) << v->k | (uint32_t)p >> (32 - v->k) : (uint32_t)(p >> 32);
+    uint64_t rm = n - num_umul32(q, d);
+    while (rm >= d) { rm -= d; q++; }
+    if (rm >= d - rm) q++;
+    return sat_signed(q, neg);
+}
+
 num num_div_int(num a, int32_t k)
 {
     if (k == 0) return num_div(a, 0);
@@ -775,6 +812,8 @@ num num_div(num a, num b)
     return a / b;
 }
 num num_div_int(num a, int32_t k) { return num_div(a, (num)k); }
+struct num_divisor num_divisor_make(num d) { struct num_divisor v; v.d = d; return v; }
+num num_div_by(num a, const struct num_divisor *v) { return num_div(a, v->d); }
 num num_recip(num a) { return num_div(1, a); }
 num num_sqrt(num a) { return a <= 0 ? 0 : F(sqrt)(a); }
 num num_rsqrt(num a) { return a <= 0 ? NUM_MAX : 1 / F(sqrt)(a); }

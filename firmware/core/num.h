@@ -134,6 +134,20 @@ num num_clamp(num a, num lo, num hi);
 uint32_t num_chan_levels(num c, uint32_t levels);
 uint8_t  num_chan_byte(num c);
 
+/* Division by a value fixed in advance (a sphere's radius): num_div_by(a,
+ * &v) is num_div(a, v.d) bit for bit, with two 32x32 products instead of a
+ * division in fixed point when |d| >= 2^(F-3) (a reciprocal with an exact
+ * remainder correction), num_div itself otherwise. */
+struct num_divisor {
+    num d;
+#if NUM_MODE == NUM_MODE_FIXED
+    uint32_t ud, m;       /* |d|, floor(2^(F+32-k) / |d|) */
+    uint8_t k, fast;
+#endif
+};
+struct num_divisor num_divisor_make(num d);
+num num_div_by(num a, const struct num_divisor *v);
+
 /* ---- wide intermediates ---------------------------------------------- */
 wnum wnum_from_num(num a);
 num  wnum_to_num(wnum a);                 /* saturates */

@@ -107,6 +107,7 @@ struct rt_obj_cache {
     num br;
     num spec_zero;        /* rt_powi_zero_below(material's exponent) */
     struct rt_csphere cs; /* the sphere for the coarse tests (num_rt.h) */
+    struct num_divisor rdiv; /* radius, for the normals (P - C) / r */
 };
 
 /* Bounding-sphere hierarchy node: a leaf holds items [first, first+count). */

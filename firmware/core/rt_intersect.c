@@ -460,7 +460,8 @@ vec3 rt_hit_normal(const struct rt_state *rt, const struct rt_hit *hit, vec3 p)
             n = v3_scale(n, num_div(NUM_ONE, v3_len(n)));  /* N * (1/|N|), as the demos */
         } else {
             /* divide by r: 1/r is too coarse in Q15.16 for r = 5000 */
-            n = v3(num_div(n.x, o->radius), num_div(n.y, o->radius), num_div(n.z, o->radius));
+            const struct num_divisor *r = &rt->oc[hit->surf].rdiv;
+            n = v3(num_div_by(n.x, r), num_div_by(n.y, r), num_div_by(n.z, r));
         }
     } else if (o->shape == RT_PLANE) {
         n = o->normal;
@@ -508,6 +509,7 @@ void rt_frame_constants(struct rt_state *rt)
         struct rt_obj_cache *oc = &rt->oc[i];
         oc->r2 = num_mul_wide(o->radius, o->radius);
         oc->cs = rt_csphere_make(o->center, o->radius);
+        oc->rdiv = num_divisor_make(o->radius);
         if (o->shape == RT_SPHERE) {
             oc->co_cam = v3_sub(rt->cam_pos, o->center);
             if (rt->book)

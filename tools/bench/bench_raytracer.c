@@ -59,6 +59,9 @@ int bench_main(void)
 {
     int bad = 0;
     struct scene *s = rt_book_scene(5);
+#ifdef BENCH_RT_ADAPT
+    s->rt.adaptive_subsample = BENCH_RT_ADAPT;   /* the adaptive profile image */
+#endif
     bad |= report("scene:book/raytracer-05", "strip16", frame(s, W, H));
 #ifndef BENCH_RT_QUICK
     /* KEY=VALUE variants are scene options (tools/bench/accuracy.py measures

@@ -16,7 +16,8 @@ static int in_shadow(struct rt_state *rt, struct rt_ray *ray, num t_max, uint16_
     const struct rt_options *o = &rt->s->rt;
     struct rt_hit hit;
     rt->n.shadow_rays++;
-    if (o->shadow_cache && rt->occluder[light] >= 0) {
+    int cache = o->shadow_cache || rt->shortcuts;   /* same image either way */
+    if (cache && rt->occluder[light] >= 0) {
         if (rt_item_hit(rt, rt->occluder[light], ray, o->epsilon, t_max, &hit)) return 1;
         rt->skip_item = rt->occluder[light];   /* tested already */
     }
@@ -25,7 +26,7 @@ static int in_shadow(struct rt_state *rt, struct rt_ray *ray, num t_max, uint16_
     int found = closest_intersection(rt, ray, o->epsilon, t_max, &hit, o->shadow_any_hit || rt->shortcuts);
     rt->skip_item = -1;
     if (!found) return 0;
-    if (o->shadow_cache) rt->occluder[light] = hit.item;
+    if (cache) rt->occluder[light] = hit.item;
     return 1;
 }
 

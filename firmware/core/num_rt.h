@@ -124,40 +124,39 @@ static inline struct rt_csphere rt_csphere_make(vec3 center, num r)
 static inline uint32_t rt_uabs(int32_t v) { return v < 0 ? 0u - (uint32_t)v : (uint32_t)v; }
 #endif
 
-static inline struct rt_cdir rt_cdir_make(vec3 o, vec3 d)
+/* The ray's coarse direction and origin, in place. */
+static inline void rt_cdir_set(struct rt_cdir *c, vec3 o, vec3 d)
 {
-    struct rt_cdir c;
-    c.o = rt_cpt_make(o);
+    c->o = rt_cpt_make(o);
 #if NUM_MODE == NUM_MODE_FIXED
     uint32_t ax = rt_uabs(d.x), ay = rt_uabs(d.y), az = rt_uabs(d.z);
     uint32_t m = ax > ay ? ax : ay;
     if (az > m) m = az;
-    c.len = 0;
-    c.x = c.y = c.z = 0;
-    if (m == 0) return c;
+    c->len = 0;
+    c->x = c->y = c->z = 0;
+    if (m == 0) return;
     int e = 32 - num_clz32(m);               /* m < 2^e <= 2m */
     /* m in [2^(F-8), 2^(F+13)) */
-    if (NUM_FRAC < 12 || e < NUM_FRAC - 7 || e > NUM_FRAC + 13) return c;
+    if (NUM_FRAC < 12 || e < NUM_FRAC - 7 || e > NUM_FRAC + 13) return;
     if (e > 10) {
-        c.x = d.x >> (e - 10);               /* floor: error in (-1, 0] */
-        c.y = d.y >> (e - 10);
-        c.z = d.z >> (e - 10);
+        c->x = d.x >> (e - 10);              /* floor: error in (-1, 0] */
+        c->y = d.y >> (e - 10);
+        c->z = d.z >> (e - 10);
     } else {
-        c.x = d.x * (1 << (10 - e));         /* exact */
-        c.y = d.y * (1 << (10 - e));
-        c.z = d.z * (1 << (10 - e));
+        c->x = d.x * (1 << (10 - e));        /* exact */
+        c->y = d.y * (1 << (10 - e));
+        c->z = d.z * (1 << (10 - e));
     }
     /* |d| <= max + (mid + min)/2 (no square root): for a >= b >= c,
      * (a + (b + c)/2)^2 >= a^2 + ab + ac >= a^2 + b^2 + c^2 */
-    ax = rt_uabs(c.x); ay = rt_uabs(c.y); az = rt_uabs(c.z);
+    ax = rt_uabs(c->x); ay = rt_uabs(c->y); az = rt_uabs(c->z);
     m = ax > ay ? ax : ay;
     if (az > m) m = az;
-    c.len = (int32_t)(m + ((ax + ay + az - m + 1) >> 1));
+    c->len = (int32_t)(m + ((ax + ay + az - m + 1) >> 1));
 #else
     (void)d;
-    c.none = 1;
+    c->none = 1;
 #endif
-    return c;
 }
 
 #if NUM_MODE == NUM_MODE_FIXED

@@ -26,7 +26,7 @@ void rt_ray_init(struct rt_ray *r, vec3 o, vec3 d, int16_t origin, uint8_t from_
 {
     r->o = o;
     r->d = d;
-    r->cd = rt_cdir_make(o, d);
+    rt_cdir_set(&r->cd, o, d);
     r->origin = origin;
     r->from_camera = from_camera;
     r->exact = 0;

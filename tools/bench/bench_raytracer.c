@@ -95,6 +95,7 @@ int bench_main(void)
     bad |= report("scene:book/raytracer-05", "adaptive_supersample=on", frame(s, W, H));
     s->rt.supersample = 1;
     s->rt.adaptive_ss = 0;
+    bad |= report("scene:book/raytracer-02", "strip16", frame(rt_book_scene(2), W, H));
     /* many objects: 8x8 spheres on a plane, 80x80 */
     struct scene *g = rt_grid_scene(8);
     bad |= report("scene:grid64@80x80", "plain", frame(g, 80, 80));

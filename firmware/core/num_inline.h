@@ -54,6 +54,18 @@ static inline int64_t num_i_wclamp(int64_t v)
 static inline wnum num_i_wadd(wnum a, wnum b) { return num_i_wclamp(num_i_wclamp(a) + num_i_wclamp(b)); }
 static inline wnum num_i_wsub(wnum a, wnum b) { return num_i_wclamp(num_i_wclamp(a) - num_i_wclamp(b)); }
 
+/* wnum_mul: the renderers' usual case (both below 2^32 in magnitude) is
+ * one rounded 32x32 product, as in num.c; anything else goes there. */
+wnum wnum_mul(wnum a, wnum b);
+static inline wnum num_i_wmul(wnum a, wnum b)
+{
+    uint64_t ua = a < 0 ? (uint64_t)0 - (uint64_t)a : (uint64_t)a;
+    uint64_t ub = b < 0 ? (uint64_t)0 - (uint64_t)b : (uint64_t)b;
+    if ((ua | ub) >> 32) return (wnum_mul)(a, b);
+    uint64_t r = (num_umul32((uint32_t)ua, (uint32_t)ub) + ((uint64_t)1 << (NUM_FRAC - 1))) >> NUM_FRAC;
+    return (a < 0) != (b < 0) ? -(int64_t)r : (int64_t)r;
+}
+
 static inline wnum num_i_dot_wide(vec3 a, vec3 b)
 {
     return num_mul_round(a.x, b.x) + num_mul_round(a.y, b.y) + num_mul_round(a.z, b.z);
@@ -90,6 +102,7 @@ static inline rgb num_i_rgb_add(rgb a, rgb b)
 #define num_mul(a, b)      num_i_mul(a, b)
 #define wnum_add(a, b)     num_i_wadd(a, b)
 #define wnum_sub(a, b)     num_i_wsub(a, b)
+#define wnum_mul(a, b)     num_i_wmul(a, b)
 #define wnum_from_num(a)   ((wnum)(a))
 #define v3_dot_wide(a, b)  num_i_dot_wide(a, b)
 #define v3_dot(a, b)       num_i_sat64(num_i_dot_wide(a, b))

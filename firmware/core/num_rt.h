@@ -355,4 +355,23 @@ static inline int rt_coarse_cos_at_most(vec3 r, vec3 v, num t)
 #endif
 }
 
+/* wnum_mul(t, 1/4) and wnum_mul(t, 4) for 0 <= t < 2^52, bit for bit:
+ * round(t / 4) halves up, and 4 t (exact). */
+static inline wnum wnum_div4_round(wnum t)
+{
+#if NUM_MODE == NUM_MODE_FIXED
+    return (t + 2) >> 2;
+#else
+    return wnum_mul(t, NUM_C(0.25));
+#endif
+}
+static inline wnum wnum_mul4(wnum t)
+{
+#if NUM_MODE == NUM_MODE_FIXED
+    return t * 4;
+#else
+    return wnum_mul(t, NUM_C(4.0));
+#endif
+}
+
 #endif

@@ -53,9 +53,10 @@ void rt_ray_exact(struct rt_ray *r)
     num ts = NUM_ONE;
     wnum four = wnum_from_num(NUM_C(4.0)), quarter = wnum_from_num(NUM_C(0.25));
     int k = 0;
-    for (wnum t = a; t >= four && k < 15; k++) t = wnum_mul(t, quarter);
+    /* t * 1/4 and t * 4 rounded as wnum_mul rounds them (t >= 0) */
+    for (wnum t = a; t >= four && k < 15; k++) t = wnum_div4_round(t);
     if (k == 0)
-        for (wnum t = a; t < quarter && t > 0 && k > -8; k--) t = wnum_mul(t, four);
+        for (wnum t = a; t < quarter && t > 0 && k > -8; k--) t = wnum_mul4(t);
     if (k > 0) {
         ts = wnum_to_num_shr(wnum_from_num(NUM_ONE), k);
         d = v3_scale(d, ts);

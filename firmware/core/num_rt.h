@@ -86,6 +86,21 @@ struct rt_cdir {
     struct rt_cpt o;      /* the ray's origin */
 };
 
+static inline void rt_cpt_set(struct rt_cpt *c, vec3 p)
+{
+#if NUM_MODE == NUM_MODE_FIXED
+    c->x = p.x >> 12;
+    c->y = p.y >> 12;
+    c->z = p.z >> 12;
+    c->fx = p.x >> (NUM_FRAC >= 12 ? RT_FINE_SHIFT : 0);
+    c->fy = p.y >> (NUM_FRAC >= 12 ? RT_FINE_SHIFT : 0);
+    c->fz = p.z >> (NUM_FRAC >= 12 ? RT_FINE_SHIFT : 0);
+#else
+    (void)p;
+    c->none = 1;
+#endif
+}
+
 static inline struct rt_cpt rt_cpt_make(vec3 p)
 {
     struct rt_cpt c;
@@ -127,7 +142,7 @@ static inline uint32_t rt_uabs(int32_t v) { return v < 0 ? 0u - (uint32_t)v : (u
 /* The ray's coarse direction and origin, in place. */
 static inline void rt_cdir_set(struct rt_cdir *c, vec3 o, vec3 d)
 {
-    c->o = rt_cpt_make(o);
+    rt_cpt_set(&c->o, o);
 #if NUM_MODE == NUM_MODE_FIXED
     uint32_t ax = rt_uabs(d.x), ay = rt_uabs(d.y), az = rt_uabs(d.z);
     uint32_t m = ax > ay ? ax : ay;
@@ -156,6 +171,20 @@ static inline void rt_cdir_set(struct rt_cdir *c, vec3 o, vec3 d)
 #else
     (void)d;
     c->none = 1;
+#endif
+}
+
+/* The direction part of src into dst (a ray from another origin along the
+ * same direction). */
+static inline void rt_cdir_copy_dir(struct rt_cdir *dst, const struct rt_cdir *src)
+{
+#if NUM_MODE == NUM_MODE_FIXED
+    dst->x = src->x;
+    dst->y = src->y;
+    dst->z = src->z;
+    dst->len = src->len;
+#else
+    dst->none = src->none;
 #endif
 }
 

@@ -65,10 +65,15 @@ num compute_lighting(struct rt_state *rt, vec3 p, vec3 n, vec3 v, num s, num s_z
             struct rt_ray sr;
             if (directional && rt->shortcuts) {
                 /* the direction's forms are the frame's (rt_frame_constants) */
-                sr = rt->light_ray[k];
+                const struct rt_ray *lr = &rt->light_ray[k];
                 sr.o = p;
-                sr.cd.o = rt_cpt_make(p);
+                sr.d = lr->d;
+                rt_cdir_copy_dir(&sr.cd, &lr->cd);
+                rt_cpt_set(&sr.cd.o, p);
+                sr.a = lr->a; sr.ds = lr->ds; sr.as = lr->as; sr.tscale = lr->tscale;
                 sr.origin = origin;
+                sr.from_camera = 0;
+                sr.exact = 1;
             } else {
                 rt_ray_init(&sr, p, l, origin, 0);
             }

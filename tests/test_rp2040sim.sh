@@ -36,3 +36,17 @@ if [ "$rc" -eq 1 ] && [ "$(wc -l <"$t/err2")" -eq 1 ]; then
 else
   echo "FAIL rp2040sim_broken_image_fails_in_bounded_time: exit $rc: $(cat "$t/err2")"
 fi
+# Any emulator warning ends the run with exit 1 and says what it was: an image
+# whose reset code reads an address nothing answers (0x30000000).
+python3 -c "
+import struct, sys
+img = bytearray(0x100) + struct.pack('<II', 0x20042000, 0x10000109)
+img += struct.pack('<HHHH', 0x4801, 0x6801, 0xe7fe, 0) + struct.pack('<I', 0x30000000)
+open(sys.argv[1], 'wb').write(img)" "$t/stray.bin"
+timeout 60 node tools/rp2040sim/rp2040sim.js --image "$t/stray.bin" --max-cycles 2000000 >/dev/null 2>"$t/err3"
+rc=$?
+if [ "$rc" -eq 1 ] && grep -q "emulator warning: .*30000000" "$t/err3"; then
+  echo "PASS rp2040sim_emulator_warning_fails_the_run"
+else
+  echo "FAIL rp2040sim_emulator_warning_fails_the_run: exit $rc: $(cat "$t/err3")"
+fi

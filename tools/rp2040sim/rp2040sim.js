@@ -32,7 +32,7 @@
  * count at the configured SPI clock, so frame times include transfer time.
  *
  * Exit status: 0 done; 1 emulator or internal error (cycle limit, firmware
- * error line); 2 usage; 3 panel protocol violation (one line). */
+ * error line, any emulator warning); 2 usage; 3 panel protocol violation (one line). */
 const fs = require('fs');
 const path = require('path');
 const { RP2040, GPIOPinState } = require('rp2040js');
@@ -123,7 +123,15 @@ function rawLE(px) {
 function main() {
   const o = parseArgs(process.argv.slice(2));
   const mcu = new RP2040();
-  mcu.logger = { debug() {}, info() {}, warn() {}, error(tag, msg) { process.stderr.write(`rp2040js: ${msg}\n`); } };
+  /* an emulator warning (an unimplemented instruction or register, a stray
+   * access) means the run no longer shows what the board would do: it ends
+   * the run with an error */
+  let emuWarning = null;
+  mcu.logger = {
+    debug() {}, info() {},
+    warn(tag, msg) { if (!emuWarning) emuWarning = `emulator warning: ${tag}: ${msg}`; },
+    error(tag, msg) { process.stderr.write(`rp2040js: ${msg}\n`); },
+  };
   loadImage(o.image, mcu.flash);
   const vt = FLASH_BASE + 0x100;
   mcu.core.VTOR = vt;
@@ -203,6 +211,7 @@ function main() {
         clock.tick(cycles * 1e9 / mcu.clkSys);
       }
     }
+    if (emuWarning) { fwError = emuWarning; break; }
     if (core.waiting && clock.nanosToNextAlarm <= 0) { fwError = 'firmware sleeps with nothing to wake it'; break; }
     if (clock.nanos > maxNs) { fwError = `no frame after ${o.maxCycles} cycles`; break; }
   }

@@ -107,6 +107,7 @@ static void compare(const struct scene *a, const struct scene *b)
     EQ(r->no_frame_cache, q->no_frame_cache, "rt.no_frame_cache");
     EQ(r->no_shortcuts, q->no_shortcuts, "rt.no_shortcuts");
     EQ(r->adaptive_subsample, q->adaptive_subsample, "rt.adaptive_subsample");
+    EQ(r->adaptive_threshold, q->adaptive_threshold, "rt.adaptive_threshold");
 
     EQ(a->nmodels, b->nmodels, "nmodels");
     for (int m = 0; m < a->nmodels && m < b->nmodels; m++) {

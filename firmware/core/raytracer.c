@@ -86,6 +86,7 @@ int rt_init(struct render_ctx *ctx)
     rt->row_item = (int16_t *)(w + l.row_item);
     rt->col_x = (num *)(w + l.colx);
     rt->adapt = (uint8_t)adapt_side(s);
+    rt->adapt_diff = num_from_int(s->rt.adaptive_threshold ? s->rt.adaptive_threshold : RT_SUBSAMPLE_DIFF);
     if (rt->adapt) {
         unsigned char *q = w + l.corner;
         for (int k = 0; k < 2; k++) {
@@ -440,12 +441,12 @@ static int corner_row(struct rt_state *rt, int row)
     return k;
 }
 
-static int samples_agree(const struct rt_sample *a, const struct rt_sample *b)
+static int samples_agree(const struct rt_sample *a, const struct rt_sample *b, num diff)
 {
     return a->item == b->item && a->shadow == b->shadow &&
-           num_abs(num_sub(a->c.r, b->c.r)) <= RT_SUBSAMPLE_DIFF &&
-           num_abs(num_sub(a->c.g, b->c.g)) <= RT_SUBSAMPLE_DIFF &&
-           num_abs(num_sub(a->c.b, b->c.b)) <= RT_SUBSAMPLE_DIFF;
+           num_abs(num_sub(a->c.r, b->c.r)) <= diff &&
+           num_abs(num_sub(a->c.g, b->c.g)) <= diff &&
+           num_abs(num_sub(a->c.b, b->c.b)) <= diff;
 }
 
 /* The block being refined: its samples on a (B+1) x (B+1) grid. Points
@@ -487,10 +488,10 @@ static const struct rt_sample *grid_at(struct rt_block *bk, int gx, int gy)
 }
 
 static int rect_agrees(const struct rt_sample *s00, const struct rt_sample *s01, const struct rt_sample *s10,
-                       const struct rt_sample *s11)
+                       const struct rt_sample *s11, num d)
 {
-    return samples_agree(s00, s01) && samples_agree(s00, s10) && samples_agree(s00, s11) &&
-           samples_agree(s01, s10) && samples_agree(s01, s11) && samples_agree(s10, s11);
+    return samples_agree(s00, s01, d) && samples_agree(s00, s10, d) && samples_agree(s00, s11, d) &&
+           samples_agree(s01, s10, d) && samples_agree(s01, s11, d) && samples_agree(s10, s11, d);
 }
 
 /* Pixels [x, x + wx) x [y, y + wy) of the block (grid units = pixels),
@@ -509,7 +510,7 @@ static void refine(struct rt_block *bk, int x, int y, int wx, int wy, int right,
     }
     const struct rt_sample *s00 = grid_at(bk, x, y), *s01 = grid_at(bk, x + wx, y);
     const struct rt_sample *s10 = grid_at(bk, x, y + wy), *s11 = grid_at(bk, x + wx, y + wy);
-    if ((wx > 1 || wy > 1) && !rect_agrees(s00, s01, s10, s11)) {
+    if ((wx > 1 || wy > 1) && !rect_agrees(s00, s01, s10, s11, bk->rt->adapt_diff)) {
         int hx = wx > 1 ? wx / 2 : wx, hy = wy > 1 ? wy / 2 : wy;
         refine(bk, x, y, hx, hy, right && hx == wx, bottom && hy == wy);
         if (hx < wx) refine(bk, x + hx, y, wx - hx, hy, right, bottom && hy == wy);
@@ -556,7 +557,7 @@ static void refine(struct rt_block *bk, int x, int y, int wx, int wy, int right,
 
 /* 2-D adaptive subsampling (chapter 5's subsampling over blocks, refined
  * as a quadtree): the corners of B x B blocks are traced; a block whose
- * four corners agree (item, shadows, colours within RT_SUBSAMPLE_DIFF) is
+ * four corners agree (item, shadows, colours within the threshold) is
  * filled by bilinear interpolation, any other is split in four and each
  * quarter decided the same way from its own corners, down to single
  * pixels. Block rows cover [r0, r0 + B) and the last one also row h - 1,

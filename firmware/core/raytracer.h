@@ -93,8 +93,8 @@ struct rt_sample {
 
 /* Adaptive subsampling: a block is interpolated when its corners hit the
  * same item with the same shadows and no channel differs by more than
- * this between them. */
-#define RT_SUBSAMPLE_DIFF NUM_C(6.0)
+ * this many levels between them (rt_options.adaptive_threshold, default). */
+#define RT_SUBSAMPLE_DIFF 6
 
 /* Per-object constants, recomputed per frame. */
 struct rt_obj_cache {
@@ -133,6 +133,7 @@ struct rt_state {
     uint8_t shortcuts;    /* coarse rejections and exact early-outs in use */
     uint8_t ss, ss_adaptive, subsample;
     uint8_t adapt;        /* adaptive subsampling block side (0: off) */
+    num adapt_diff;       /* its colour threshold */
     uint8_t pass;         /* enum render_pass of the following strips */
     mat3 cam_rot;
     vec3 cam_pos;

@@ -101,8 +101,10 @@ struct rt_options {
                                   pixel, off (to measure them and to test that claim) */
     uint8_t adaptive_subsample;  /* 0 off; B = 2..8: every frame by 2-D adaptive subsampling:
                                     corners of B x B blocks traced, a block whose four corners
-                                    agree (object, shadows, colours within RT_SUBSAMPLE_DIFF)
-                                    interpolated, any other traced in full (approximate) */
+                                    agree (object, shadows, colours within adaptive_threshold)
+                                    interpolated, any other split (approximate) */
+    uint8_t adaptive_threshold;  /* levels a channel may differ between agreeing corners,
+                                    1..64; 0: RT_SUBSAMPLE_DIFF (6) */
 };
 
 /* ---- rasterizer data (part II) ------------------------------------------ */

@@ -773,9 +773,9 @@ static void read_rt_options(struct parser *p, const struct node *n, struct rt_op
     static const char *const keys[] = { "recursion_depth", "t_min", "epsilon", "lighting", "diffuse", "specular",
                                         "shadows", "supersample", "adaptive_supersample", "subsample", "bvh",
                                         "shadow_any_hit", "shadow_cache", "formulation", "frame_cache",
-                                        "adaptive_subsample", "shortcuts", NULL };
+                                        "adaptive_subsample", "shortcuts", "adaptive_threshold", NULL };
     static const char *const forms[] = { "default", "book", "robust", NULL };
-    const struct node *v[17];
+    const struct node *v[18];
     fields(p, n, "raytracer", keys, v);
     if (v[0]) o->recursion_depth = (uint8_t)get_int(p, v[0], "recursion_depth", 0, 16);
     if (v[1]) o->t_min_primary = to_num(p, v[1], get_num_range(p, v[1], "t_min", 0, 1e6), "t_min");
@@ -797,6 +797,7 @@ static void read_rt_options(struct parser *p, const struct node *n, struct rt_op
         if (o->adaptive_subsample == 1) FAIL_N(p, v[15], "adaptive_subsample: 0 (off) or a block side of 2 .. 8");
     }
     if (v[16]) o->no_shortcuts = (uint8_t)!get_bool(p, v[16], "shortcuts");
+    if (v[17]) o->adaptive_threshold = (uint8_t)get_int(p, v[17], "adaptive_threshold", 1, 64);
 }
 
 static void read_ras_options(struct parser *p, const struct node *n, struct ras_options *o)

@@ -269,10 +269,10 @@ static void emit_scene(const struct scene *s, const char *id, const char *src, i
     emit("    .rt = { .recursion_depth = %d, .diffuse = %d, .specular = %d, .shadows = %d, .supersample = %d,\n"
          "            .adaptive_ss = %d, .subsample = %d, .bvh = %d, .shadow_any_hit = %d, .shadow_cache = %d,\n"
          "            .t_min_primary = %s, .epsilon = %s, .unlit = %d, .formulation = %d, .no_frame_cache = %d,\n"
-         "            .no_shortcuts = %d, .adaptive_subsample = %d },\n",
+         "            .no_shortcuts = %d, .adaptive_subsample = %d, .adaptive_threshold = %d },\n",
          r->recursion_depth, r->diffuse, r->specular, r->shadows, r->supersample, r->adaptive_ss, r->subsample, r->bvh,
          r->shadow_any_hit, r->shadow_cache, lit(r->t_min_primary), lit(r->epsilon), r->unlit, r->formulation,
-         r->no_frame_cache, r->no_shortcuts, r->adaptive_subsample);
+         r->no_frame_cache, r->no_shortcuts, r->adaptive_subsample, r->adaptive_threshold);
     emit("    .nmodels = %d, .ninstances = %d, .ntextures = %d, .nprims = %d, .nlines = %d,\n", s->nmodels,
          s->ninstances, s->ntextures, s->nprims, s->nlines);
     emit("    .models = %s, .instances = %s, .textures = %s, .prims = %s, .lines = %s,\n",

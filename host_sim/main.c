@@ -302,6 +302,31 @@ struct bufs {
     uint8_t *rgb, *ref_rgb;
 };
 
+/* Renders every strip of frame f into strip (and rgb, a full-frame buffer,
+ * if not NULL) and sends each to the panel; adds the times spent to
+ * *render_us and *flush_us. */
+static int send_strips(struct core *c, struct panel_out *po, uint16_t *strip, uint8_t *rgb, unsigned f,
+                       struct render_stats *rs, uint64_t *render_us, uint64_t *flush_us)
+{
+    unsigned w = c->ctx.width, h = c->ctx.height, rows = c->ctx.strip_rows;
+    char err[512];
+    int rc;
+    for (unsigned y0 = 0; y0 < h; y0 += rows) {
+        unsigned y1 = y0 + rows < h ? y0 + rows : h;
+        struct render_target t = { .width = (uint16_t)w, .height = (uint16_t)h,
+                                   .y0 = (uint16_t)y0, .y1 = (uint16_t)y1, .rgb565 = strip,
+                                   .rgb888 = rgb ? rgb + (size_t)y0 * w * 3 : NULL };
+        uint64_t t0 = now_us();
+        if (c->api->render_strip(&c->ctx, &t, rs))
+            return fail(EXIT_INTERNAL, "renderer failed on rows %u..%u of frame %u", y0, y1, f);
+        uint64_t t1 = now_us();
+        *render_us += t1 - t0;
+        if ((rc = panel_out_flush(po, (uint16_t)y0, (uint16_t)y1, strip, err, sizeof err))) return fail(rc, "%s", err);
+        *flush_us += now_us() - t1;
+    }
+    return EXIT_OK;
+}
+
 static int run(const struct opts *o, struct core *c, struct core *ref, struct panel_out **pp,
                struct bufs *b)
 {
@@ -392,36 +417,13 @@ static int run(const struct opts *o, struct core *c, struct core *ref, struct pa
         unsigned long coarse_rays = 0;
         if (o->progressive && c->api->set_pass(&c->ctx, RENDER_PASS_COARSE) == 0) {
             struct render_stats cs = { 0 };
-            for (unsigned y0 = 0; y0 < h; y0 += rows) {
-                unsigned y1 = y0 + rows < h ? y0 + rows : h;
-                struct render_target t = { .width = (uint16_t)w, .height = (uint16_t)h,
-                                           .y0 = (uint16_t)y0, .y1 = (uint16_t)y1, .rgb565 = b->strip };
-                t0 = now_us();
-                if (c->api->render_strip(&c->ctx, &t, &cs))
-                    return fail(EXIT_INTERNAL, "renderer failed on rows %u..%u of frame %u", y0, y1, f);
-                coarse_us += now_us() - t0;
-                if ((rc = panel_out_flush(*pp, (uint16_t)y0, (uint16_t)y1, b->strip, err, sizeof err)))
-                    return fail(rc, "%s", err);
-            }
+            uint64_t coarse_flush_us = 0;
+            if ((rc = send_strips(c, *pp, b->strip, NULL, f, &cs, &coarse_us, &coarse_flush_us))) return rc;
             coarse_rays = cs.rays;
             render_us += coarse_us;
             c->api->set_pass(&c->ctx, RENDER_PASS_FULL);
         }
-        for (unsigned y0 = 0; y0 < h; y0 += rows) {
-            unsigned y1 = y0 + rows < h ? y0 + rows : h;
-            struct render_target t = { .width = (uint16_t)w, .height = (uint16_t)h,
-                                       .y0 = (uint16_t)y0, .y1 = (uint16_t)y1, .rgb565 = b->strip,
-                                       .rgb888 = b->rgb ? b->rgb + (size_t)y0 * w * 3 : NULL };
-            t0 = now_us();
-            if (c->api->render_strip(&c->ctx, &t, &rs))
-                return fail(EXIT_INTERNAL, "renderer failed on rows %u..%u of frame %u", y0, y1, f);
-            uint64_t t1 = now_us();
-            render_us += t1 - t0;
-            if ((rc = panel_out_flush(*pp, (uint16_t)y0, (uint16_t)y1, b->strip, err, sizeof err))) {
-                return fail(rc, "%s", err);
-            }
-            flush_us += now_us() - t1;
-        }
+        if ((rc = send_strips(c, *pp, b->strip, b->rgb, f, &rs, &render_us, &flush_us))) return rc;
         total_render_us += render_us;
         if (o->stats) {
             printf("{\"scene\":");

@@ -104,17 +104,7 @@ static inline void rt_cpt_set(struct rt_cpt *c, vec3 p)
 static inline struct rt_cpt rt_cpt_make(vec3 p)
 {
     struct rt_cpt c;
-#if NUM_MODE == NUM_MODE_FIXED
-    c.x = p.x >> 12;
-    c.y = p.y >> 12;
-    c.z = p.z >> 12;
-    c.fx = p.x >> (NUM_FRAC >= 12 ? RT_FINE_SHIFT : 0);
-    c.fy = p.y >> (NUM_FRAC >= 12 ? RT_FINE_SHIFT : 0);
-    c.fz = p.z >> (NUM_FRAC >= 12 ? RT_FINE_SHIFT : 0);
-#else
-    (void)p;
-    c.none = 1;
-#endif
+    rt_cpt_set(&c, p);
     return c;
 }
 
@@ -137,6 +127,33 @@ static inline struct rt_csphere rt_csphere_make(vec3 center, num r)
 
 #if NUM_MODE == NUM_MODE_FIXED
 static inline uint32_t rt_uabs(int32_t v) { return v < 0 ? 0u - (uint32_t)v : (uint32_t)v; }
+
+static inline uint32_t rt_umax3(uint32_t a, uint32_t b, uint32_t c)
+{
+    uint32_t m = a > b ? a : b;
+    return c > m ? c : m;
+}
+
+/* v (largest component of bit length e) scaled by a power of two to
+ * components < 2^10 in magnitude, the largest >= 2^9 (floor: error in
+ * (-1, 0]; exact when scaled up) into c; returns an upper bound of |c|
+ * without a square root: for a >= b >= c, (a + (b + c)/2)^2 >= a^2 + ab +
+ * ac >= a^2 + b^2 + c^2, so max + (mid + min)/2 (at most 15 % above). */
+static inline uint32_t rt_scale10(vec3 v, int e, int32_t c[3])
+{
+    if (e > 10) {
+        c[0] = v.x >> (e - 10);
+        c[1] = v.y >> (e - 10);
+        c[2] = v.z >> (e - 10);
+    } else {
+        c[0] = v.x * (1 << (10 - e));
+        c[1] = v.y * (1 << (10 - e));
+        c[2] = v.z * (1 << (10 - e));
+    }
+    uint32_t ax = rt_uabs(c[0]), ay = rt_uabs(c[1]), az = rt_uabs(c[2]);
+    uint32_t m = rt_umax3(ax, ay, az);
+    return m + ((ax + ay + az - m + 1) >> 1);
+}
 #endif
 
 /* The ray's coarse direction and origin, in place. */
@@ -144,30 +161,18 @@ static inline void rt_cdir_set(struct rt_cdir *c, vec3 o, vec3 d)
 {
     rt_cpt_set(&c->o, o);
 #if NUM_MODE == NUM_MODE_FIXED
-    uint32_t ax = rt_uabs(d.x), ay = rt_uabs(d.y), az = rt_uabs(d.z);
-    uint32_t m = ax > ay ? ax : ay;
-    if (az > m) m = az;
+    uint32_t m = rt_umax3(rt_uabs(d.x), rt_uabs(d.y), rt_uabs(d.z));
     c->len = 0;
     c->x = c->y = c->z = 0;
     if (m == 0) return;
     int e = 32 - num_clz32(m);               /* m < 2^e <= 2m */
     /* m in [2^(F-8), 2^(F+13)) */
     if (NUM_FRAC < 12 || e < NUM_FRAC - 7 || e > NUM_FRAC + 13) return;
-    if (e > 10) {
-        c->x = d.x >> (e - 10);              /* floor: error in (-1, 0] */
-        c->y = d.y >> (e - 10);
-        c->z = d.z >> (e - 10);
-    } else {
-        c->x = d.x * (1 << (10 - e));        /* exact */
-        c->y = d.y * (1 << (10 - e));
-        c->z = d.z * (1 << (10 - e));
-    }
-    /* |d| <= max + (mid + min)/2 (no square root): for a >= b >= c,
-     * (a + (b + c)/2)^2 >= a^2 + ab + ac >= a^2 + b^2 + c^2 */
-    ax = rt_uabs(c->x); ay = rt_uabs(c->y); az = rt_uabs(c->z);
-    m = ax > ay ? ax : ay;
-    if (az > m) m = az;
-    c->len = (int32_t)(m + ((ax + ay + az - m + 1) >> 1));
+    int32_t s[3];
+    c->len = (int32_t)rt_scale10(d, e, s);
+    c->x = s[0];
+    c->y = s[1];
+    c->z = s[2];
 #else
     (void)d;
     c->none = 1;
@@ -209,9 +214,7 @@ static inline int rt_coarse_units_miss(const struct rt_cdir *cd, const int32_t c
         /* behind (b < 0, as rt_coarse_dot_negative) and certainly outside
          * (|CO| >= r + 2 units, so c > 0): the robust test's early-out */
         if (ap > 3 * len + 2 * n1 + 5) {
-            uint32_t mx = rt_uabs(cx);
-            if (rt_uabs(cy) > mx) mx = rt_uabs(cy);
-            if (rt_uabs(cz) > mx) mx = rt_uabs(cz);
+            uint32_t mx = rt_umax3(rt_uabs(cx), rt_uabs(cy), rt_uabs(cz));
             if (mx >= rc + 3 || n1 >= 2 * rc + 5) return 1;
         }
     }
@@ -330,22 +333,14 @@ static inline num rt_powi_zero_below(uint32_t e)
 }
 
 #if NUM_MODE == NUM_MODE_FIXED
-/* v scaled by a power of two to components < 2^10 in magnitude, the largest
- * >= 2^9 (floor: error in (-1, 0]); 0 when v's largest component is below
- * 2^(F-2) (|v| < 1/4). *ub gets an upper bound of the scaled |v| + 1. */
+/* v's form for rt_coarse_cos_at_most (rt_scale10); 0 when v's largest
+ * component is below 2^(F-2) (|v| < 1/4). *ub gets an upper bound of the
+ * scaled |v| + 1. */
 static inline int rt_coarse_vec(vec3 v, int32_t c[3], uint32_t *ub)
 {
-    uint32_t ax = rt_uabs(v.x), ay = rt_uabs(v.y), az = rt_uabs(v.z);
-    uint32_t m = ax > ay ? ax : ay;
-    if (az > m) m = az;
+    uint32_t m = rt_umax3(rt_uabs(v.x), rt_uabs(v.y), rt_uabs(v.z));
     if (m < (1u << (NUM_FRAC - 2))) return 0;
-    int e = 32 - num_clz32(m);
-    if (e > 10) { c[0] = v.x >> (e - 10); c[1] = v.y >> (e - 10); c[2] = v.z >> (e - 10); }
-    else { c[0] = v.x * (1 << (10 - e)); c[1] = v.y * (1 << (10 - e)); c[2] = v.z * (1 << (10 - e)); }
-    ax = rt_uabs(c[0]); ay = rt_uabs(c[1]); az = rt_uabs(c[2]);
-    m = ax > ay ? ax : ay;
-    if (az > m) m = az;
-    *ub = m + ((ax + ay + az - m + 1) >> 1) + 1;
+    *ub = rt_scale10(v, 32 - num_clz32(m), c) + 1;
     return 1;
 }
 #endif

@@ -9,7 +9,11 @@
  * its left or upper neighbour in object or by more than this per channel. */
 #define RT_ADAPTIVE_DIFF NUM_C(12.0)
 
-struct layout { size_t state, oc, items, unb, bvh, bvh_items, occ, lray, llen, row_c, row_item, colx, corner, grid, total; };
+struct layout {
+    size_t state, oc, items, unb, bvh, bvh_items, occ, lray, llen, row_c, row_item, colx;
+    size_t corner[2], corner_have[2], colbuf[2], colbuf_have[2], grid, grid_have;   /* adaptive subsampling */
+    size_t total;
+};
 
 /* Adaptive subsampling's block side: 0 (off) or 2 .. RT_MAX_ADAPT. */
 static unsigned adapt_side(const struct scene *s)
@@ -36,13 +40,19 @@ static struct layout layout_of(const struct scene *s, uint16_t width)
     l.row_c = off; off += ALIGN8(sizeof(rgb) * width);
     l.row_item = off; off += ALIGN8(sizeof(int16_t) * width);
     l.colx = off; off += ALIGN8(sizeof(num) * width);
-    /* two rows of adaptive-subsampling corners: at most width/2 + 2 each */
-    /* two full rows of samples and their flags, two columns of a block */
-    l.corner = off; off += ab ? 2 * (ALIGN8(sizeof(struct rt_sample) * width) + ALIGN8(width)) +
-                                2 * (ALIGN8(sizeof(struct rt_sample) * (ab + 1u)) + ALIGN8(ab + 1u)) : 0;
-    /* the block being refined: (B + 1)^2 samples and their flags */
-    size_t g = ab ? (size_t)(ab + 1) * (ab + 1) : 0;
-    l.grid = off; off += ALIGN8(sizeof(struct rt_sample) * g) + ALIGN8(g);
+    /* adaptive subsampling: two full rows of samples, a block's two columns
+     * and its (B + 1)^2 grid, each with its flags (empty when off) */
+    size_t nb = ab ? ab + 1u : 0, ng = nb * nb, nw = ab ? width : 0;
+    for (int k = 0; k < 2; k++) {
+        l.corner[k] = off; off += ALIGN8(sizeof(struct rt_sample) * nw);
+        l.corner_have[k] = off; off += ALIGN8(nw);
+    }
+    for (int k = 0; k < 2; k++) {
+        l.colbuf[k] = off; off += ALIGN8(sizeof(struct rt_sample) * nb);
+        l.colbuf_have[k] = off; off += ALIGN8(nb);
+    }
+    l.grid = off; off += ALIGN8(sizeof(struct rt_sample) * ng);
+    l.grid_have = off; off += ALIGN8(ng);
     l.total = off;
     return l;
 }
@@ -87,25 +97,15 @@ int rt_init(struct render_ctx *ctx)
     rt->col_x = (num *)(w + l.colx);
     rt->adapt = (uint8_t)adapt_side(s);
     rt->adapt_diff = num_from_int(s->rt.adaptive_threshold ? s->rt.adaptive_threshold : RT_SUBSAMPLE_DIFF);
-    if (rt->adapt) {
-        unsigned char *q = w + l.corner;
-        for (int k = 0; k < 2; k++) {
-            rt->corner[k] = (struct rt_sample *)q;
-            q += ALIGN8(sizeof(struct rt_sample) * ctx->width);
-            rt->corner_have[k] = q;
-            q += ALIGN8(ctx->width);
-        }
-        for (int k = 0; k < 2; k++) {
-            rt->colbuf[k] = (struct rt_sample *)q;
-            q += ALIGN8(sizeof(struct rt_sample) * (rt->adapt + 1u));
-            rt->colbuf_have[k] = q;
-            q += ALIGN8(rt->adapt + 1u);
-        }
+    for (int k = 0; k < 2; k++) {
+        rt->corner[k] = (struct rt_sample *)(w + l.corner[k]);
+        rt->corner_have[k] = w + l.corner_have[k];
+        rt->colbuf[k] = (struct rt_sample *)(w + l.colbuf[k]);
+        rt->colbuf_have[k] = w + l.colbuf_have[k];
     }
     rt->corner_row[0] = rt->corner_row[1] = -1;
     rt->grid = (struct rt_sample *)(w + l.grid);
-    rt->grid_have = (uint8_t *)(w + l.grid) +
-                    (rt->adapt ? ALIGN8(sizeof(struct rt_sample) * (size_t)(rt->adapt + 1) * (rt->adapt + 1)) : 0);
+    rt->grid_have = w + l.grid_have;
     const struct rt_options *o = &s->rt;
     rt->book = o->formulation == 1 || (o->formulation == 0 && num_rt_reference_mode());
     rt->depth = o->recursion_depth > RT_MAX_DEPTH ? RT_MAX_DEPTH : o->recursion_depth;
@@ -135,6 +135,7 @@ int rt_init(struct render_ctx *ctx)
     rt->cam_pos = s->camera.position;
     rt->cam_rot = s->camera.rotation;
     rt_frame_constants(rt);
+    rt_light_constants(rt);
     for (uint16_t i = 0; i < s->nobjects; i++) {
         num e = s->objects[i].mat.specular;
         rt->oc[i].spec_zero = e >= 0 ? rt_powi_zero_below((uint32_t)num_to_int(e)) : NUM_C(-1.0);
@@ -319,10 +320,11 @@ static rgb supersample(struct rt_state *rt, num x, num y, int n)
     return rgb_scale(sum, num_from_ratio(1, n * n));
 }
 
-static int colours_differ(rgb a, rgb b)
+/* Some channel of a and b more than `diff` apart. */
+static int colours_differ(rgb a, rgb b, num diff)
 {
-    return num_abs(num_sub(a.r, b.r)) > RT_ADAPTIVE_DIFF || num_abs(num_sub(a.g, b.g)) > RT_ADAPTIVE_DIFF ||
-           num_abs(num_sub(a.b, b.b)) > RT_ADAPTIVE_DIFF;
+    return num_abs(num_sub(a.r, b.r)) > diff || num_abs(num_sub(a.g, b.g)) > diff ||
+           num_abs(num_sub(a.b, b.b)) > diff;
 }
 
 /* One pixel: plain, fixed supersampling, or adaptive (refine edges only).
@@ -341,8 +343,8 @@ static rgb pixel(struct rt_state *rt, int col, int row, int have_left, int have_
     if (rt->ss_adaptive) {
         int n = rt->ss > 1 ? rt->ss : 2;
         int edge = 0;
-        if (have_left && col > 0 && (rt->row_item[col - 1] != pr.item || colours_differ(rt->row_c[col - 1], c))) edge = 1;
-        if (have_up && (rt->row_item[col] != pr.item || colours_differ(rt->row_c[col], c))) edge = 1;
+        if (have_left && col > 0 && (rt->row_item[col - 1] != pr.item || colours_differ(rt->row_c[col - 1], c, RT_ADAPTIVE_DIFF))) edge = 1;
+        if (have_up && (rt->row_item[col] != pr.item || colours_differ(rt->row_c[col], c, RT_ADAPTIVE_DIFF))) edge = 1;
         /* the row notes hold the centre samples: the left one is already this
          * row's, the one at col still the row above's until written here */
         rt->row_item[col] = pr.item;
@@ -443,10 +445,7 @@ static int corner_row(struct rt_state *rt, int row)
 
 static int samples_agree(const struct rt_sample *a, const struct rt_sample *b, num diff)
 {
-    return a->item == b->item && a->shadow == b->shadow &&
-           num_abs(num_sub(a->c.r, b->c.r)) <= diff &&
-           num_abs(num_sub(a->c.g, b->c.g)) <= diff &&
-           num_abs(num_sub(a->c.b, b->c.b)) <= diff;
+    return a->item == b->item && a->shadow == b->shadow && !colours_differ(a->c, b->c, diff);
 }
 
 /* The block being refined: its samples on a (B+1) x (B+1) grid. Points
@@ -505,7 +504,7 @@ static void refine(struct rt_block *bk, int x, int y, int wx, int wy, int right,
     int ya = bk->r0 + y, yb = bk->r0 + y + wy + (bottom ? 1 : 0);      /* image rows owned */
     if (yb <= t->y0 || ya >= t->y1) return;
     if (wx <= 1 && wy <= 1 && !right && !bottom) {
-        if (ya >= t->y0) render_put(t, bk->c0 + x, ya, grid_at(bk, x, y)->c);
+        render_put(t, bk->c0 + x, ya, grid_at(bk, x, y)->c);   /* ya is in the strip */
         return;
     }
     const struct rt_sample *s00 = grid_at(bk, x, y), *s01 = grid_at(bk, x + wx, y);
@@ -592,19 +591,9 @@ static void adaptive_strip(struct rt_state *rt, struct render_target *t)
     }
 }
 
-int rt_render_strip(struct render_ctx *ctx, struct render_target *t, struct render_stats *st)
+/* Every pixel of the strip (plain, supersampled, or the book's subsampling). */
+static void full_strip(struct rt_state *rt, struct render_target *t)
 {
-    struct rt_state *rt = rt_state_of(ctx);
-    uint32_t rays0 = rt->n.rays;
-    if (rt->pass == RENDER_PASS_COARSE || rt->adapt) {
-        if (rt->pass == RENDER_PASS_COARSE) coarse_strip(rt, t);
-        else adaptive_strip(rt, t);
-        if (st) {
-            st->rays += rt->n.rays - rays0;
-            st->pixels_written += (uint32_t)(t->y1 - t->y0) * t->width;
-        }
-        return 0;
-    }
     for (int row = t->y0; row < t->y1; row++) {
         uint8_t *probe = rt->shadow_probe ? rt->shadow_probe + (size_t)row * rt->w : NULL;
         if (rt->subsample > 1 && rt->w > 1) {
@@ -619,6 +608,15 @@ int rt_render_strip(struct render_ctx *ctx, struct render_target *t, struct rend
             render_put(t, col, row, pixel(rt, col, row, 1, have_up, probe ? probe + col : NULL));
         rt->last_row = row;
     }
+}
+
+int rt_render_strip(struct render_ctx *ctx, struct render_target *t, struct render_stats *st)
+{
+    struct rt_state *rt = rt_state_of(ctx);
+    uint32_t rays0 = rt->n.rays;
+    if (rt->pass == RENDER_PASS_COARSE) coarse_strip(rt, t);
+    else if (rt->adapt) adaptive_strip(rt, t);
+    else full_strip(rt, t);
     if (st) {
         st->rays += rt->n.rays - rays0;
         st->pixels_written += (uint32_t)(t->y1 - t->y0) * t->width;

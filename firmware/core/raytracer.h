@@ -149,8 +149,8 @@ struct rt_state {
     uint16_t nbvh;
     int16_t *bvh_items;
     int16_t *occluder;         /* per light: last occluder (-1: none) */
-    struct rt_ray *light_ray;  /* per light: directional lights' shadow-ray direction (per frame) */
-    num *light_len;            /* per light: |L| of directional lights (per frame) */
+    struct rt_ray *light_ray;  /* per light: directional lights' shadow-ray direction (rt_light_constants) */
+    num *light_len;            /* per light: |L| of directional lights */
     rgb *row_c;                /* one row of colours (subsampling/adaptive) */
     int16_t *row_item;
     num *col_x;                /* viewport x of each column's centre */
@@ -194,6 +194,8 @@ int rt_item_hit(struct rt_state *rt, int16_t item, struct rt_ray *ray, num t_min
 vec3 rt_hit_normal(const struct rt_state *rt, const struct rt_hit *hit, vec3 p);
 void rt_build_bvh(struct rt_state *rt);
 void rt_frame_constants(struct rt_state *rt);
+/* Directional lights' shadow-ray forms and |L| (the lights do not move). */
+void rt_light_constants(struct rt_state *rt);
 
 /* raytracer.c: refraction direction (unit) by Snell's law for incoming D
  * (any length) at a surface with unit normal N and index of refraction ior

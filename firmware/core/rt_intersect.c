@@ -196,6 +196,18 @@ static int sphere_first_hit(const struct rt_state *rt, int16_t obj, struct rt_ra
     return got;
 }
 
+/* rt_item_hit of a plain sphere with the shortcuts on: the hit filled in. */
+static int sphere_item_hit(const struct rt_state *rt, int16_t item, struct rt_ray *ray, num t_min, num limit,
+                           struct rt_hit *hit)
+{
+    num t;
+    if (!sphere_first_hit(rt, item, ray, t_min, limit, &t)) return 0;
+    hit->t = t;
+    hit->item = hit->surf = item;
+    hit->flip = 0;
+    return 1;
+}
+
 /* n/d in [0, 1], decided without dividing (d != 0). */
 static int ratio_in_unit(wnum n, wnum d)
 {
@@ -353,12 +365,7 @@ int rt_item_hit(struct rt_state *rt, int16_t item, struct rt_ray *ray, num t_min
         uint8_t flip = 0;
         switch (o->shape) {
         case RT_SPHERE:
-            if (rt->shortcuts) {
-                if (!sphere_first_hit(rt, item, ray, t_min, limit, &t)) return 0;
-                limit = t;
-                got = 1;
-                break;
-            }
+            if (rt->shortcuts) return sphere_item_hit(rt, item, ray, t_min, limit, hit);
             if (!intersect_ray_sphere(rt, item, ray, &t1, &t2)) return 0;
             /* book order: t1 first, then t2, strict comparisons */
             if (t_min < t1 && t1 < limit) { limit = t1; got = 1; }
@@ -405,12 +412,9 @@ int closest_intersection(struct rt_state *rt, struct rt_ray *ray, num t_min, num
             if (item == rt->skip_item) continue;
             if (rt->shortcuts && item < (int16_t)rt->s->nobjects && objs[item].shape == RT_SPHERE) {
                 /* rt_item_hit's sphere case, without its dispatch */
-                num t;
                 rt->n.tests++;
-                if (!sphere_first_hit(rt, item, ray, t_min, limit, &t)) continue;
-                hit->t = limit = t;
-                hit->item = hit->surf = item;
-                hit->flip = 0;
+                if (!sphere_item_hit(rt, item, ray, t_min, limit, hit)) continue;
+                limit = hit->t;
                 found = 1;
                 if (any_hit) return 1;
                 continue;
@@ -496,7 +500,7 @@ static void item_bound(const struct rt_state *rt, int16_t item, vec3 *c, num *r)
     *r = rr;
 }
 
-void rt_frame_constants(struct rt_state *rt)
+void rt_light_constants(struct rt_state *rt)
 {
     const struct scene *s = rt->s;
     for (uint16_t k = 0; k < s->nlights; k++)
@@ -505,6 +509,11 @@ void rt_frame_constants(struct rt_state *rt)
             rt_ray_exact(&rt->light_ray[k]);
             rt->light_len[k] = v3_len(s->lights[k].v);
         }
+}
+
+void rt_frame_constants(struct rt_state *rt)
+{
+    const struct scene *s = rt->s;
     for (uint16_t i = 0; i < s->nobjects; i++) {
         const struct rt_object *o = &s->objects[i];
         struct rt_obj_cache *oc = &rt->oc[i];

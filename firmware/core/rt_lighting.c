@@ -64,7 +64,7 @@ num compute_lighting(struct rt_state *rt, vec3 p, vec3 n, vec3 v, num s, num s_z
         if (o->shadows) {
             struct rt_ray sr;
             if (directional && rt->shortcuts) {
-                /* the direction's forms are the frame's (rt_frame_constants) */
+                /* the direction's forms are computed once (rt_light_constants) */
                 const struct rt_ray *lr = &rt->light_ray[k];
                 sr.o = p;
                 sr.d = lr->d;

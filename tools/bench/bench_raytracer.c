@@ -55,6 +55,17 @@ static int report(const char *what, const char *variant, uint64_t instr)
     return 0;
 }
 
+#ifndef BENCH_RT_QUICK
+/* One frame of raytracer-05 with s's options as set, reported as `variant`;
+ * the options go back to base afterwards. */
+static int rt05(struct scene *s, const struct rt_options *base, const char *variant)
+{
+    int r = report("scene:book/raytracer-05", variant, frame(s, W, H));
+    s->rt = *base;
+    return r;
+}
+#endif
+
 int bench_main(void)
 {
     int bad = 0;
@@ -66,35 +77,28 @@ int bench_main(void)
 #ifndef BENCH_RT_QUICK
     /* KEY=VALUE variants are scene options (tools/bench/accuracy.py measures
      * each one's accuracy with that option set) */
+    const struct rt_options base = s->rt;
     bad |= report("scene:book/raytracer-05", "coarse_pass", frame_pass(s, W, H, 1));
     s->rt.adaptive_subsample = 2;
-    bad |= report("scene:book/raytracer-05", "adaptive_subsample=2", frame(s, W, H));
+    bad |= rt05(s, &base, "adaptive_subsample=2");
     s->rt.adaptive_subsample = 4;
-    bad |= report("scene:book/raytracer-05", "adaptive_subsample=4", frame(s, W, H));
+    bad |= rt05(s, &base, "adaptive_subsample=4");
     s->rt.adaptive_subsample = 8;
-    bad |= report("scene:book/raytracer-05", "adaptive_subsample=8", frame(s, W, H));
-    s->rt.adaptive_subsample = 0;
+    bad |= rt05(s, &base, "adaptive_subsample=8");
     s->rt.no_shortcuts = 1;
-    bad |= report("scene:book/raytracer-05", "shortcuts=off", frame(s, W, H));
-    s->rt.no_shortcuts = 0;
+    bad |= rt05(s, &base, "shortcuts=off");
     s->rt.no_frame_cache = 1;
-    bad |= report("scene:book/raytracer-05", "frame_cache=off", frame(s, W, H));
-    s->rt.no_frame_cache = 0;
+    bad |= rt05(s, &base, "frame_cache=off");
     s->rt.shadow_any_hit = 1;
-    bad |= report("scene:book/raytracer-05", "shadow_any_hit=on", frame(s, W, H));
-    s->rt.shadow_cache = 1;
-    bad |= report("scene:book/raytracer-05", "shadow_any_hit+cache", frame(s, W, H));
-    s->rt.shadow_any_hit = s->rt.shadow_cache = 0;
+    bad |= rt05(s, &base, "shadow_any_hit=on");
+    s->rt.shadow_any_hit = s->rt.shadow_cache = 1;
+    bad |= rt05(s, &base, "shadow_any_hit+cache");
     s->rt.subsample = 2;
-    bad |= report("scene:book/raytracer-05", "subsample=2", frame(s, W, H));
-    s->rt.subsample = 1;
+    bad |= rt05(s, &base, "subsample=2");
     s->rt.supersample = 2;
-    bad |= report("scene:book/raytracer-05", "supersample=2", frame(s, W, H));
-    s->rt.supersample = 1;
+    bad |= rt05(s, &base, "supersample=2");
     s->rt.adaptive_ss = 1;
-    bad |= report("scene:book/raytracer-05", "adaptive_supersample=on", frame(s, W, H));
-    s->rt.supersample = 1;
-    s->rt.adaptive_ss = 0;
+    bad |= rt05(s, &base, "adaptive_supersample=on");
     bad |= report("scene:book/raytracer-02", "strip16", frame(rt_book_scene(2), W, H));
     /* many objects: 8x8 spheres on a plane, 80x80 */
     struct scene *g = rt_grid_scene(8);

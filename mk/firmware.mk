@@ -300,7 +300,11 @@ TESTS     += tests/test_rp2040sim.sh:$(BUILD)
 ifneq ($(FW_HAVE_SCENEC),)
 TEST_DEPS += $(FW_OUT)/pico/cgfs-book-1core.elf $(FW_OUT)/pico/cgfs-cube-1core.elf $(BUILD)/host_sim
 TESTS     += tests/test_rp2040sim_book.sh:$(BUILD) tests/test_rp2040sim_cube.sh:$(BUILD):$(FW_CUBE_FRAMES)
+# the two-core images on both emulated cores (tools/rp2040sim/dualcore.js)
+TEST_DEPS += $(FW_OUT)/pico/cgfs.elf $(FW_OUT)/pico/cgfs-book.elf
+TESTS     += tests/test_rp2040sim_dual.sh:$(BUILD)
 endif
+TESTS     += node:tools/rp2040sim/test_dualcore.js
 # The JavaScript panel (emu_panel.js) replays the vectors the C emulator
 # replays (test_panel_vectors), so the two decoders cannot drift apart.
 TESTS     += node:tools/rp2040sim/replay_vectors.js:tests/vectors/panel

@@ -15,8 +15,8 @@
  *   --uart              echo the firmware's UART output to stderr
  *   --json              one JSON object per frame on stdout (scene, frame,
  *                       cycles at the firmware's clk_sys, us, fps, spi_bytes,
- *                       cores: the firmware's boot line, 1 for the images
- *                       that run here, rp2040js emulating one core)
+ *                       cores: from the firmware's boot line; a two-core
+ *                       image runs on both emulated cores, dualcore.js)
  *                       first_image_us: for a progressive (ray-traced) frame,
  *                       when its whole-screen preview was on the glass
  *   --average           with --json: one object per run of consecutive frames
@@ -24,10 +24,13 @@
  *                       frames = how many, cycles_min, cycles_max)
  *   --numeric MODE      the image's numeric mode, for --json (default fixed)
  *   --variant TEXT      the image's method choices, for --json (default single-core)
+ *   --core1-speed F     core 1 runs F times as fast as core 0 (default 1; tests:
+ *                       the frames must not depend on how the cores interleave)
  *
  * Image loading without the boot ROM (facts of rp2040js 1.4.1): the image is
  * copied into the flash array and SP/PC come from the vector table at
- * 0x10000100 (boot2 is not run). Time: each instruction advances the clock
+ * 0x10000100 (boot2 is not run). Core 1 waits in a model of the boot ROM's
+ * launch handshake (dualcore.js). Time: each instruction advances the clock
  * by its cycles at the current clk_sys; SPI words complete after their bit
  * count at the configured SPI clock, so frame times include transfer time.
  *
@@ -37,6 +40,7 @@ const fs = require('fs');
 const path = require('path');
 const { RP2040, GPIOPinState } = require('rp2040js');
 const { EmuPanel } = require('./emu_panel.js');
+const { DualCore } = require('./dualcore.js');
 
 const FLASH_BASE = 0x10000000;
 
@@ -46,7 +50,7 @@ function usage(msg) {
 }
 
 function parseArgs(argv) {
-  const o = { frames: 1, maxCycles: 4e9, panel: 'st7789', pins: { dc: 16, cs: 17, rst: 20, bl: 21 }, uart: false, json: false, average: false, numeric: 'fixed', variant: 'single-core' };
+  const o = { frames: 1, maxCycles: 4e9, panel: 'st7789', pins: { dc: 16, cs: 17, rst: 20, bl: 21 }, uart: false, json: false, average: false, numeric: 'fixed', variant: 'single-core', core1Speed: 1 };
   for (let i = 0; i < argv.length; i++) {
     const a = argv[i];
     const val = () => { if (i + 1 >= argv.length) usage(`${a} needs a value`); return argv[++i]; };
@@ -69,6 +73,7 @@ function parseArgs(argv) {
       case '--average': o.average = true; break;
       case '--numeric': o.numeric = val(); break;
       case '--variant': o.variant = val(); break;
+      case '--core1-speed': o.core1Speed = Number(val()); if (!(o.core1Speed >= 0.01 && o.core1Speed <= 100)) usage('--core1-speed must be in 0.01..100'); break;
       default: usage(`unknown option '${a}'`);
     }
   }
@@ -126,17 +131,21 @@ function main() {
   /* an emulator warning (an unimplemented instruction or register, a stray
    * access) means the run no longer shows what the board would do: it ends
    * the run with an error */
-  let emuWarning = null;
+  let emuWarning = null, dual = null;
   mcu.logger = {
-    debug() {}, info() {},
+    debug() {},
+    info(tag, msg) { if (msg === 'SEV' && dual) dual.sev(); },
     warn(tag, msg) { if (!emuWarning) emuWarning = `emulator warning: ${tag}: ${msg}`; },
     error(tag, msg) { process.stderr.write(`rp2040js: ${msg}\n`); },
   };
+  /* some parts of the package (SIO) warn on the console instead */
+  console.warn = (...a) => { if (!emuWarning) emuWarning = `emulator warning: ${a.join(' ')}`; };
   loadImage(o.image, mcu.flash);
   const vt = FLASH_BASE + 0x100;
   mcu.core.VTOR = vt;
   mcu.core.SP = mcu.readUint32(vt);
   mcu.core.PC = mcu.readUint32(vt + 4) & ~1;
+  dual = new DualCore(mcu, { core1Speed: o.core1Speed });
 
   let panel;
   try { panel = new EmuPanel(o.panel); } catch (e) { usage(e.message); }
@@ -199,22 +208,13 @@ function main() {
 
   const t0 = Date.now();
   const maxNs = o.maxCycles / cpuHz * 1e9;
-  const core = mcu.core;
   while (frames.length < o.frames && !fwError && !panel.violation) {
-    for (let i = 0; i < 100000; i++) {
-      if (core.waiting) {
-        const n = clock.nanosToNextAlarm;
-        if (n <= 0) break;
-        clock.tick(n);
-      } else {
-        const cycles = core.executeInstruction();
-        clock.tick(cycles * 1e9 / mcu.clkSys);
-      }
-    }
+    const awake = dual.run(100000);
     if (emuWarning) { fwError = emuWarning; break; }
-    if (core.waiting && clock.nanosToNextAlarm <= 0) { fwError = 'firmware sleeps with nothing to wake it'; break; }
+    if (!awake) { fwError = 'firmware sleeps with nothing to wake it'; break; }
     if (clock.nanos > maxNs) { fwError = `no frame after ${o.maxCycles} cycles`; break; }
   }
+  if (!fwError && cores === 2 && !dual.launched[1]) fwError = 'a two-core image that never started core 1';
   if (panel.violation) { process.stderr.write(`rp2040sim: panel protocol violation: ${panel.violation}\n`); process.exit(3); }
   if (fwError) { process.stderr.write(`rp2040sim: ${fwError}\n`); process.exit(1); }
 

@@ -1,0 +1,136 @@
+#!/usr/bin/env node
+'use strict';
+/* test_dualcore.js — the second core's SIO and boot ROM model (dualcore.js)
+ * through the bus, as each core's firmware sees it: CPUID, the FIFOs and
+ * their status flags, per-core dividers, shared GPIO and spinlocks, SEV,
+ * and the launch handshake (with a wrong start, stale words and restarts).
+ * Prints PASS/FAIL lines (tests/run.sh). */
+const { RP2040 } = require('rp2040js');
+const { DualCore } = require('./dualcore.js');
+
+const SIO = 0xd0000000;
+const CPUID = SIO, FIFO_ST = SIO + 0x50, FIFO_WR = SIO + 0x54, FIFO_RD = SIO + 0x58;
+const GPIO_OUT_SET = SIO + 0x14, GPIO_OUT = SIO + 0x10, SPINLOCK0 = SIO + 0x100;
+const DIV_UDIVIDEND = SIO + 0x60, DIV_UDIVISOR = SIO + 0x64, DIV_QUOTIENT = SIO + 0x70;
+let failed = 0;
+
+function check(name, ok, why) {
+  if (ok) process.stdout.write(`PASS dualcore_${name}\n`);
+  else { failed++; process.stdout.write(`FAIL dualcore_${name}: ${why}\n`); }
+}
+
+function fresh() {
+  const mcu = new RP2040();
+  mcu.logger = { debug() {}, info() {}, warn() {}, error() {} };
+  const dc = new DualCore(mcu);
+  /* accesses as core i */
+  const as = (i, f) => { const prev = dc.cur; dc.cur = i; mcu.core = dc.cores[i]; try { return f(); } finally { dc.cur = prev; mcu.core = dc.cores[prev]; } };
+  const rd = (i, a) => as(i, () => mcu.readUint32(a) >>> 0);
+  const wr = (i, a, v) => as(i, () => mcu.writeUint32(a, v));
+  return { mcu, dc, rd, wr };
+}
+
+/* core 0's side of the launch as the datasheet gives it; returns the echoes */
+function launch(t, seq) {
+  const echoes = [];
+  let i = 0, guard = 0;
+  while (i < seq.length && guard++ < 100) {
+    if (seq[i] === 0) while (t.rd(0, FIFO_ST) & 1) t.rd(0, FIFO_RD);
+    t.wr(0, FIFO_WR, seq[i]);
+    const e = t.rd(0, FIFO_RD);
+    echoes.push(e);
+    i = e === seq[i] ? i + 1 : 0;
+  }
+  return echoes;
+}
+
+{
+  const t = fresh();
+  check('cpuid_per_core', t.rd(0, CPUID) === 0 && t.rd(1, CPUID) === 1, `${t.rd(0, CPUID)} ${t.rd(1, CPUID)}`);
+}
+
+{
+  /* launch, with garbage first: every word echoed; 0 0 1 V S P starts core 1 */
+  const t = fresh();
+  t.wr(0, FIFO_WR, 0x1234);
+  const stale = t.rd(0, FIFO_RD);
+  const seq = [0, 0, 1, 0x10000100, 0x20041000, 0x10000201];
+  const echoes = launch(t, seq);
+  const c1 = t.dc.cores[1];
+  check('bootrom_echoes_garbage', stale === 0x1234, `echo ${stale}`);
+  check('bootrom_echoes_sequence', echoes.join() === seq.join(), echoes.join());
+  check('bootrom_launches_core1', t.dc.launched[1] && c1.VTOR === 0x10000100 && c1.SP === 0x20041000 &&
+        c1.PC === 0x10000200, `launched ${t.dc.launched[1]} VTOR ${c1.VTOR.toString(16)} SP ${c1.SP.toString(16)} PC ${c1.PC.toString(16)}`);
+}
+
+{
+  /* a restart in the middle (0 after VTOR) and stale words queued for
+   * core 1: the 0 drains them, and the full sequence still launches */
+  const t = fresh();
+  t.wr(0, FIFO_WR, 0); t.rd(0, FIFO_RD);
+  t.wr(0, FIFO_WR, 0); t.rd(0, FIFO_RD);
+  t.wr(0, FIFO_WR, 1); t.rd(0, FIFO_RD);
+  t.wr(0, FIFO_WR, 0x10000100); t.rd(0, FIFO_RD);
+  check('bootrom_not_launched_on_partial_sequence', !t.dc.launched[1], 'launched early');
+  const echoes = launch(t, [0, 0, 1, 0x10000100, 0x20041000, 0x10000201]);
+  check('bootrom_restart_then_launch', t.dc.launched[1] && t.dc.launchCount === 1 && echoes.length === 6,
+        `launched ${t.dc.launched[1]} count ${t.dc.launchCount} echoes ${echoes.join()}`);
+  check('bootrom_needs_one_after_zeros', (() => {
+    const u = fresh();
+    for (const w of [0, 0, 2, 0x10000100, 0x20041000, 0x10000201]) { u.wr(0, FIFO_WR, w); u.rd(0, FIFO_RD); }
+    return !u.dc.launched[1];
+  })(), 'launched without the 1');
+}
+
+{
+  /* FIFOs once core 1 runs: 8 words each way, VLD/RDY, sticky WOF/ROE
+   * cleared by a write to FIFO_ST */
+  const t = fresh();
+  launch(t, [0, 0, 1, 0x10000100, 0x20041000, 0x10000201]);
+  check('fifo_empty_status', t.rd(0, FIFO_ST) === 2 && t.rd(1, FIFO_ST) === 2,
+        `${t.rd(0, FIFO_ST)} ${t.rd(1, FIFO_ST)}`);
+  for (let i = 0; i < 8; i++) t.wr(0, FIFO_WR, 100 + i);
+  check('fifo_full_not_ready', (t.rd(0, FIFO_ST) & 2) === 0 && (t.rd(1, FIFO_ST) & 1) === 1,
+        `${t.rd(0, FIFO_ST)} ${t.rd(1, FIFO_ST)}`);
+  t.wr(0, FIFO_WR, 999);
+  check('fifo_overflow_sticky', (t.rd(0, FIFO_ST) & 4) !== 0, `${t.rd(0, FIFO_ST)}`);
+  const got = [];
+  for (let i = 0; i < 8; i++) got.push(t.rd(1, FIFO_RD));
+  check('fifo_order_and_drop', got.join() === '100,101,102,103,104,105,106,107', got.join());
+  t.rd(1, FIFO_RD);
+  check('fifo_read_empty_sticky', (t.rd(1, FIFO_ST) & 8) !== 0, `${t.rd(1, FIFO_ST)}`);
+  t.wr(0, FIFO_ST, 0); t.wr(1, FIFO_ST, 0);
+  check('fifo_flags_cleared_by_write', t.rd(0, FIFO_ST) === 2 && t.rd(1, FIFO_ST) === 2,
+        `${t.rd(0, FIFO_ST)} ${t.rd(1, FIFO_ST)}`);
+  t.wr(1, FIFO_WR, 77);
+  check('fifo_core1_to_core0', (t.rd(0, FIFO_ST) & 1) === 1 && t.rd(0, FIFO_RD) === 77, 'word lost');
+}
+
+{
+  /* divider per core; GPIO and spinlocks shared */
+  const t = fresh();
+  t.wr(0, DIV_UDIVIDEND, 100); t.wr(0, DIV_UDIVISOR, 7);
+  t.wr(1, DIV_UDIVIDEND, 1000); t.wr(1, DIV_UDIVISOR, 10);
+  check('divider_per_core', t.rd(0, DIV_QUOTIENT) === 14 && t.rd(1, DIV_QUOTIENT) === 100,
+        `${t.rd(0, DIV_QUOTIENT)} ${t.rd(1, DIV_QUOTIENT)}`);
+  t.wr(1, GPIO_OUT_SET, 1 << 16);
+  check('gpio_shared', t.rd(0, GPIO_OUT) === 1 << 16 && t.mcu.sio.gpioValue === 1 << 16, `${t.rd(0, GPIO_OUT)}`);
+  const a = t.rd(0, SPINLOCK0), b = t.rd(1, SPINLOCK0);
+  t.wr(0, SPINLOCK0, 0);
+  const c = t.rd(1, SPINLOCK0);
+  check('spinlock_shared', a !== 0 && b === 0 && c !== 0, `${a} ${b} ${c}`);
+}
+
+{
+  /* SEV: wakes a core in WFE, or leaves the event for its next WFE */
+  const t = fresh();
+  launch(t, [0, 0, 1, 0x10000100, 0x20041000, 0x10000201]);
+  const [c0, c1] = t.dc.cores;
+  c1.waiting = true; c1.eventRegistered = false; c0.eventRegistered = false;
+  t.dc.cur = 0;
+  t.dc.sev();
+  check('sev_wakes_waiting_core', !c1.waiting && !c1.eventRegistered, `waiting ${c1.waiting}`);
+  check('sev_sets_own_event', c0.eventRegistered, 'event not set');
+}
+
+process.exit(failed ? 1 : 0);

@@ -153,6 +153,7 @@ FW_1CORE_FLAGS := -DRP2040_SINGLE_CORE=1 -DFW_WORK_CORES=1
 # per scene so that a run reaches every scene quickly).
 $(call fw_scene_image,cgfs-book,BOOK,)
 $(call fw_scene_image,cgfs-book-1core,BOOK,$(FW_1CORE_FLAGS) -DFW_FRAMES_PER_SCENE=1)
+$(call fw_scene_image,cgfs-book-bench,BOOK,-DFW_FRAMES_PER_SCENE=1)
 # The cube scenes: FW_CUBE_FRAMES frames of each (default 10, all of their
 # frames: a 90-degree turn, so the board's loop is seamless), for the board
 # and for the emulator (`make bench-rp2040` averages them).
@@ -165,7 +166,7 @@ $(call fw_scene_image,cgfs-rt,RT,-DFW_FRAMES_PER_SCENE=1)
 $(call fw_scene_image,cgfs-rt-1core,RT,$(FW_1CORE_FLAGS) -DFW_FRAMES_PER_SCENE=1)
 
 FW_RP_IMAGES := $(FW_OUT)/pico/cgfs.uf2 $(FW_OUT)/pico/cgfs-1core.uf2 \
-                $(if $(FW_HAVE_SCENEC),$(foreach i,cgfs-book cgfs-book-1core cgfs-cube cgfs-cube-1core cgfs-rt cgfs-rt-1core,$(FW_OUT)/pico/$(i).uf2))
+                $(if $(FW_HAVE_SCENEC),$(foreach i,cgfs-book cgfs-book-1core cgfs-book-bench cgfs-cube cgfs-cube-1core cgfs-rt cgfs-rt-1core,$(FW_OUT)/pico/$(i).uf2))
 
 .PHONY: firmware-pico
 firmware-pico: deps-firmware
@@ -304,38 +305,45 @@ TESTS     += tests/test_rp2040sim_book.sh:$(BUILD) tests/test_rp2040sim_cube.sh:
 TEST_DEPS += $(FW_OUT)/pico/cgfs.elf $(FW_OUT)/pico/cgfs-book.elf
 TESTS     += tests/test_rp2040sim_dual.sh:$(BUILD)
 endif
-TESTS     += node:tools/rp2040sim/test_dualcore.js
+TESTS     += node:tools/rp2040sim/test_models.js
 # The JavaScript panel (emu_panel.js) replays the vectors the C emulator
 # replays (test_panel_vectors), so the two decoders cannot drift apart.
 TESTS     += node:tools/rp2040sim/replay_vectors.js:tests/vectors/panel
 
-# `make bench`: the emulated Pico's frame time per scene of the single-core
-# images (cycles at 133 MHz including SPI time, "cores":1), appended to
-# results.jsonl: the placeholder, frame 0 of each book scene, and for each
-# cube scene the mean of its FW_CUBE_FRAMES frames (rp2040sim --average:
-# "frames", "cycles_min", "cycles_max"; frame 0 is drawn without the fps
-# overlay, the others with it, as on the board).
+# `make bench`: the emulated Pico's frame time per scene, of the single-core
+# images ("cores":1, variant single-core) and of the two-core ones ("cores":2,
+# variant two-core, both emulated cores), cycles at 133 MHz including SPI
+# time, appended to results.jsonl: the placeholder, frame 0 of each book
+# scene, for each cube scene the mean of its FW_CUBE_FRAMES frames (rp2040sim
+# --average: "frames", "cycles_min", "cycles_max"; frame 0 is drawn without
+# the fps overlay, the others with it, as on the board), and the ray
+# tracer's benchmark scenes with the progressive preview's first_image_us.
 RP2040SIM_BENCH_FRAMES ?= 1
 RP2040SIM_TMP := $(BUILD)/bench/rp2040sim.jsonl.tmp
 .PHONY: bench-rp2040
-bench-rp2040: $(RP2040SIM_DEPS) $(FW_OUT)/pico/cgfs-1core.elf \
-              $(if $(FW_HAVE_SCENEC),$(FW_OUT)/pico/cgfs-book-1core.elf $(FW_OUT)/pico/cgfs-cube-1core.elf \
-                                     $(FW_OUT)/pico/cgfs-rt-1core.elf)
+RP2040SIM_BENCH_IMAGES := cgfs-1core cgfs $(if $(FW_HAVE_SCENEC),cgfs-book-1core cgfs-book-bench \
+                          cgfs-cube-1core cgfs-cube cgfs-rt-1core cgfs-rt)
+bench-rp2040: $(RP2040SIM_DEPS) $(foreach i,$(RP2040SIM_BENCH_IMAGES),$(FW_OUT)/pico/$(i).elf)
 	@mkdir -p $(BUILD)/bench
 	@# this step's lines are rewritten, the other steps' kept
 	$(Q)grep -v '"target": *"rp2040-sim"' $(BUILD)/bench/results.jsonl >$(BUILD)/bench/results.jsonl.tmp 2>/dev/null; \
 		mv $(BUILD)/bench/results.jsonl.tmp $(BUILD)/bench/results.jsonl
-	$(Q)node tools/rp2040sim/rp2040sim.js --image $(FW_OUT)/pico/cgfs-1core.elf \
-		--frames $(RP2040SIM_BENCH_FRAMES) --json >>$(BUILD)/bench/results.jsonl
+	$(Q)for i in cgfs-1core:single-core cgfs:two-core; do \
+		node tools/rp2040sim/rp2040sim.js --image $(FW_OUT)/pico/$${i%%:*}.elf --variant $${i#*:} \
+			--frames $(RP2040SIM_BENCH_FRAMES) --json >>$(BUILD)/bench/results.jsonl || exit 1; done
 ifneq ($(FW_HAVE_SCENEC),)
-	$(Q)node tools/rp2040sim/rp2040sim.js --image $(FW_OUT)/pico/cgfs-book-1core.elf \
-		--frames $(words $(FW_BOOK_SCENES)) --json >$(RP2040SIM_TMP)
-	$(Q)cat $(RP2040SIM_TMP) && cat $(RP2040SIM_TMP) >>$(BUILD)/bench/results.jsonl
-	$(Q)node tools/rp2040sim/rp2040sim.js --image $(FW_OUT)/pico/cgfs-cube-1core.elf \
-		--frames $$(($(words $(FW_CUBE_SCENES)) * $(FW_CUBE_FRAMES))) --json --average >$(RP2040SIM_TMP)
-	$(Q)cat $(RP2040SIM_TMP) && cat $(RP2040SIM_TMP) >>$(BUILD)/bench/results.jsonl
-	$(Q)node tools/rp2040sim/rp2040sim.js --image $(FW_OUT)/pico/cgfs-rt-1core.elf \
-		--frames $(words $(FW_RT_SCENES)) --json >$(RP2040SIM_TMP)
-	$(Q)cat $(RP2040SIM_TMP) && cat $(RP2040SIM_TMP) >>$(BUILD)/bench/results.jsonl && rm -f $(RP2040SIM_TMP)
+	$(Q)for i in cgfs-book-1core:single-core cgfs-book-bench:two-core; do \
+		node tools/rp2040sim/rp2040sim.js --image $(FW_OUT)/pico/$${i%%:*}.elf --variant $${i#*:} \
+			--frames $(words $(FW_BOOK_SCENES)) --json >$(RP2040SIM_TMP) || exit 1; \
+		cat $(RP2040SIM_TMP) && cat $(RP2040SIM_TMP) >>$(BUILD)/bench/results.jsonl; done
+	$(Q)for i in cgfs-cube-1core:single-core cgfs-cube:two-core; do \
+		node tools/rp2040sim/rp2040sim.js --image $(FW_OUT)/pico/$${i%%:*}.elf --variant $${i#*:} \
+			--frames $$(($(words $(FW_CUBE_SCENES)) * $(FW_CUBE_FRAMES))) --json --average >$(RP2040SIM_TMP) || exit 1; \
+		cat $(RP2040SIM_TMP) && cat $(RP2040SIM_TMP) >>$(BUILD)/bench/results.jsonl; done
+	$(Q)for i in cgfs-rt-1core:single-core cgfs-rt:two-core; do \
+		node tools/rp2040sim/rp2040sim.js --image $(FW_OUT)/pico/$${i%%:*}.elf --variant $${i#*:} \
+			--frames $(words $(FW_RT_SCENES)) --json >$(RP2040SIM_TMP) || exit 1; \
+		cat $(RP2040SIM_TMP) && cat $(RP2040SIM_TMP) >>$(BUILD)/bench/results.jsonl; done
+	$(Q)rm -f $(RP2040SIM_TMP)
 endif
 bench: bench-rp2040

@@ -37,16 +37,38 @@ else
   echo "FAIL rp2040sim_broken_image_fails_in_bounded_time: exit $rc: $(cat "$t/err2")"
 fi
 # Any emulator warning ends the run with exit 1 and says what it was: an image
-# whose reset code reads an address nothing answers (0x30000000).
+# whose reset code reads an address nothing answers (0x30000000), behind the
+# project's boot2.
 python3 -c "
 import struct, sys
-img = bytearray(0x100) + struct.pack('<II', 0x20042000, 0x10000109)
+img = bytearray(open(sys.argv[2], 'rb').read()[:0x100]) + struct.pack('<II', 0x20042000, 0x10000109)
 img += struct.pack('<HHHH', 0x4801, 0x6801, 0xe7fe, 0) + struct.pack('<I', 0x30000000)
-open(sys.argv[1], 'wb').write(img)" "$t/stray.bin"
+open(sys.argv[1], 'wb').write(img)" "$t/stray.bin" "$b/firmware/pico/cgfs-1core.bin"
 timeout 60 node tools/rp2040sim/rp2040sim.js --image "$t/stray.bin" --max-cycles 2000000 >/dev/null 2>"$t/err3"
 rc=$?
 if [ "$rc" -eq 1 ] && grep -q "emulator warning: .*30000000" "$t/err3"; then
   echo "PASS rp2040sim_emulator_warning_fails_the_run"
 else
   echo "FAIL rp2040sim_emulator_warning_fails_the_run: exit $rc: $(cat "$t/err3")"
+fi
+# The boot ROM starts only an image whose boot2 carries the right CRC32: one
+# byte of boot2 changed and the run is refused with one line, exit 1.
+python3 -c "
+import sys
+img = bytearray(open(sys.argv[1], 'rb').read())
+img[8] ^= 0x40
+open(sys.argv[2], 'wb').write(img)" "$b/firmware/pico/cgfs-1core.bin" "$t/badcrc.bin"
+timeout 60 node tools/rp2040sim/rp2040sim.js --image "$t/badcrc.bin" --max-cycles 2000000 >/dev/null 2>"$t/err4"
+rc=$?
+if [ "$rc" -eq 1 ] && [ "$(wc -l <"$t/err4")" -eq 1 ] && grep -q "boot2 CRC32" "$t/err4"; then
+  echo "PASS rp2040sim_boot2_crc_checked"
+else
+  echo "FAIL rp2040sim_boot2_crc_checked: exit $rc: $(cat "$t/err4")"
+fi
+# The XIP cache is charged: a frame reports its misses and what they cost,
+# at the line-fill cost of boot2's 03h serial read at clk_sys/4 (388 cycles).
+if grep -q '"xip_misses":[1-9][0-9]*,"xip_stall_cycles":[1-9][0-9]*,"xip_fill_cycles":388' "$t/json"; then
+  echo "PASS rp2040sim_reports_xip_misses"
+else
+  echo "FAIL rp2040sim_reports_xip_misses: $(cat "$t/json")"
 fi

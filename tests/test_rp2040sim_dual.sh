@@ -55,7 +55,7 @@ done
 # must grow with it (the emulated cores really run side by side)
 c1=$(sed -n 's/.*"cycles":\([0-9]*\).*/\1/p' "$t/book-1.json")
 c03=$(sed -n 's/.*"cycles":\([0-9]*\).*/\1/p' "$t/book-0.3.json")
-if [ -n "$c1" ] && [ -n "$c03" ] && [ "$c03" -gt $((c1 * 2)) ]; then
+if [ -n "$c1" ] && [ -n "$c03" ] && [ "$c03" -gt $((c1 / 2 * 3)) ]; then
   echo "PASS rp2040sim_dual_slow_core1_slows_the_frame ($c1 -> $c03 cycles)"
 else
   echo "FAIL rp2040sim_dual_slow_core1_slows_the_frame: ${c1:-?} -> ${c03:-?} cycles"

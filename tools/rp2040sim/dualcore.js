@@ -40,6 +40,8 @@ class DualCore {
     const core1 = new Core(mcu);
     this.cores = [core0, core1];
     this.speed = [1, opts.core1Speed || 1];
+    /* flash stalls (xip.js): charged to the core whose instruction made them */
+    this.xip = opts.xip || { charging: false, take() { return 0; } };
     this.local = [0, 0];              /* each core's time, ns */
     this.launched = [true, false];
     this.fifo = [[], []];             /* fifo[i]: words for core i */
@@ -190,7 +192,10 @@ class DualCore {
           if (dt <= 0) return false;
           clock.tick(dt);
         } else {
-          clock.tick(c0.executeInstruction() * 1e9 / mcu.clkSys);
+          this.xip.charging = true;
+          const cycles = c0.executeInstruction();
+          this.xip.charging = false;
+          clock.tick((cycles + this.xip.take()) * 1e9 / mcu.clkSys);
         }
         this.local[0] = clock.nanos;
         continue;
@@ -211,8 +216,10 @@ class DualCore {
       const c = this.cores[i];
       this.cur = i;
       mcu.core = c;
+      this.xip.charging = true;
       const cycles = c.executeInstruction();
-      this.local[i] += cycles * 1e9 / mcu.clkSys / this.speed[i];
+      this.xip.charging = false;
+      this.local[i] += (cycles + this.xip.take()) * 1e9 / mcu.clkSys / this.speed[i];
       /* the shared clock follows the earlier of the running cores */
       let t = Infinity;
       if (!c0.waiting) t = this.local[0];

@@ -18,7 +18,10 @@
  *                       cores: from the firmware's boot line; a two-core
  *                       image runs on both emulated cores, dualcore.js)
  *                       first_image_us: for a progressive (ray-traced) frame,
- *                       when its whole-screen preview was on the glass
+ *                       when its whole-screen preview was on the glass;
+ *                       xip_misses, xip_stall_cycles: XIP cache misses in the
+ *                       frame and the cycles they cost (xip.js), at
+ *                       xip_fill_cycles per miss in boot2's read mode
  *   --average           with --json: one object per run of consecutive frames
  *                       of a scene instead, their mean (frame = the first,
  *                       frames = how many, cycles_min, cycles_max)
@@ -27,10 +30,11 @@
  *   --core1-speed F     core 1 runs F times as fast as core 0 (default 1; tests:
  *                       the frames must not depend on how the cores interleave)
  *
- * Image loading without the boot ROM (facts of rp2040js 1.4.1): the image is
- * copied into the flash array and SP/PC come from the vector table at
- * 0x10000100 (boot2 is not run). Core 1 waits in a model of the boot ROM's
- * launch handshake (dualcore.js). Time: each instruction advances the clock
+ * Boot without a boot ROM image (rp2040js 1.4.1 has none): the image is
+ * copied into the flash array, its boot2 checked and run from SRAM as the
+ * boot ROM would (xip.js), and boot2 enters the application; and the XIP cache is modelled with the miss cost of the
+ * read mode boot2 sets up. Core 1 waits in a model of the boot ROM's launch
+ * handshake (dualcore.js). Time: each instruction advances the clock
  * by its cycles at the current clk_sys; SPI words complete after their bit
  * count at the configured SPI clock, so frame times include transfer time.
  *
@@ -41,6 +45,7 @@ const path = require('path');
 const { RP2040, GPIOPinState } = require('rp2040js');
 const { EmuPanel } = require('./emu_panel.js');
 const { DualCore } = require('./dualcore.js');
+const { XipCache, bootThroughBoot2 } = require('./xip.js');
 
 const FLASH_BASE = 0x10000000;
 
@@ -141,11 +146,10 @@ function main() {
   /* some parts of the package (SIO) warn on the console instead */
   console.warn = (...a) => { if (!emuWarning) emuWarning = `emulator warning: ${a.join(' ')}`; };
   loadImage(o.image, mcu.flash);
-  const vt = FLASH_BASE + 0x100;
-  mcu.core.VTOR = vt;
-  mcu.core.SP = mcu.readUint32(vt);
-  mcu.core.PC = mcu.readUint32(vt + 4) & ~1;
-  dual = new DualCore(mcu, { core1Speed: o.core1Speed });
+  const xip = new XipCache(mcu);
+  const bootProblem = bootThroughBoot2(mcu);
+  if (bootProblem) { process.stderr.write(`rp2040sim: ${o.image}: ${bootProblem}\n`); process.exit(1); }
+  dual = new DualCore(mcu, { core1Speed: o.core1Speed, xip });
 
   let panel;
   try { panel = new EmuPanel(o.panel); } catch (e) { usage(e.message); }
@@ -179,7 +183,7 @@ function main() {
   /* UART lines: "begin scene=... frame=..." labels the next frame. */
   let uartLine = '', pending = null, fwError = null, cpuHz = 133e6, cores = 1;
   const frames = [];
-  let frameStartNs = 0, frameStartBytes = 0;
+  let frameStartNs = 0, frameStartBytes = 0, frameStartMiss = 0, frameStartStall = 0;
   mcu.uart[0].onByte = (b) => {
     const ch = String.fromCharCode(b);
     if (o.uart) process.stderr.write(ch);
@@ -188,7 +192,7 @@ function main() {
       uartLine = '';
       const kv = Object.fromEntries(l.split(' ').slice(1).map((s) => s.split('=')));
       if (l.startsWith('boot ')) { cpuHz = Number(kv.cpu_hz) || cpuHz; cores = Number(kv.cores) || cores; }
-      if (l.startsWith('begin ')) { pending = { scene: kv.scene, frame: Number(kv.frame) }; frameStartNs = clock.nanos; frameStartBytes = spiBytes; }
+      if (l.startsWith('begin ')) { pending = { scene: kv.scene, frame: Number(kv.frame) }; frameStartNs = clock.nanos; frameStartBytes = spiBytes; frameStartMiss = xip.misses; frameStartStall = xip.stallTotal; }
       /* a progressive frame: its first full-screen image is the preview */
       if (l.startsWith('coarse ') && pending) pending.coarse = true;
       if (l.startsWith('fps ') && frames.length) frames[frames.length - 1].fw_us = Number(kv.us);
@@ -202,9 +206,20 @@ function main() {
     const ns = clock.nanos - frameStartNs;
     if (pending.coarse && pending.first_ns === undefined) { pending.first_ns = ns; return; }
     frames.push({ scene: pending.scene, frame: pending.frame, ns, first_ns: pending.first_ns,
-                  spi_bytes: spiBytes - frameStartBytes, px: panel.glass() });
+                  spi_bytes: spiBytes - frameStartBytes, xip_misses: xip.misses - frameStartMiss,
+                  xip_stall_cycles: xip.stallTotal - frameStartStall, px: panel.glass() });
     pending = null;
   };
+
+  /* boot2 from SRAM until it enters the application in flash */
+  for (let i = 0; !(mcu.core.PC >= FLASH_BASE && mcu.core.PC < FLASH_BASE + 0x4000000); i++) {
+    if (i > 100000 || !dual.run(1) || emuWarning) {
+      process.stderr.write(`rp2040sim: ${emuWarning || 'boot2 did not enter the application'}\n`);
+      process.exit(1);
+    }
+  }
+  xip.configure();
+  const xipMode = xip.fill;
 
   const t0 = Date.now();
   const maxNs = o.maxCycles / cpuHz * 1e9;
@@ -232,6 +247,7 @@ function main() {
         frame: f.frame, width: w, height: h,
         cycles, per: 'frame', cpu_hz: cpuHz, us: Math.round(f.ns / 1000),
         fps: Number((1e9 / f.ns).toFixed(3)), spi_bytes: f.spi_bytes,
+        xip_misses: f.xip_misses, xip_stall_cycles: f.xip_stall_cycles, xip_fill_cycles: xipMode.cycles,
         ...(f.first_ns !== undefined ? { first_image_us: Math.round(f.first_ns / 1000) } : {}),
       }) + '\n');
     }
@@ -253,6 +269,9 @@ function main() {
         cycles_min: Math.round(Math.min(...cyc)), cycles_max: Math.round(Math.max(...cyc)),
         cpu_hz: cpuHz, us: Math.round(ns / 1000), fps: Number((1e9 / ns).toFixed(3)),
         spi_bytes: Math.round(r.list.reduce((a, f) => a + f.spi_bytes, 0) / n),
+        xip_misses: Math.round(r.list.reduce((a, f) => a + f.xip_misses, 0) / n),
+        xip_stall_cycles: Math.round(r.list.reduce((a, f) => a + f.xip_stall_cycles, 0) / n),
+        xip_fill_cycles: xipMode.cycles,
         ...(r.list[0].first_ns !== undefined
           ? { first_image_us: Math.round(r.list.reduce((a, f) => a + f.first_ns, 0) / n / 1000) } : {}),
       }) + '\n');

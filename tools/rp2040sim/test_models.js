@@ -1,12 +1,16 @@
 #!/usr/bin/env node
 'use strict';
-/* test_dualcore.js — the second core's SIO and boot ROM model (dualcore.js)
- * through the bus, as each core's firmware sees it: CPUID, the FIFOs and
- * their status flags, per-core dividers, shared GPIO and spinlocks, SEV,
- * and the launch handshake (with a wrong start, stale words and restarts).
+/* test_models.js — the emulator driver's hardware models through the bus.
+ * dualcore.js as each core's firmware sees it: CPUID, the FIFOs and their
+ * status flags, per-core dividers, shared GPIO and spinlocks, SEV, and the
+ * launch handshake (with a wrong start, stale words and restarts).
+ * xip.js: hits, misses, the two ways and LRU replacement, the uncached and
+ * non-allocating aliases, the line-fill cost of the 03h and EBh read modes,
+ * and the boot ROM's boot2 CRC.
  * Prints PASS/FAIL lines (tests/run.sh). */
 const { RP2040 } = require('rp2040js');
 const { DualCore } = require('./dualcore.js');
+const { XipCache, lineFillCycles, crc32BootRom, boot2Problem } = require('./xip.js');
 
 const SIO = 0xd0000000;
 const CPUID = SIO, FIFO_ST = SIO + 0x50, FIFO_WR = SIO + 0x54, FIFO_RD = SIO + 0x58;
@@ -131,6 +135,62 @@ function launch(t, seq) {
   t.dc.sev();
   check('sev_wakes_waiting_core', !c1.waiting && !c1.eventRegistered, `waiting ${c1.waiting}`);
   check('sev_sets_own_event', c0.eventRegistered, 'event not set');
+}
+
+{
+  /* the cache: 1024 sets of two 8-byte ways; addresses 16 KB apart share a set */
+  const mcu = new RP2040();
+  mcu.logger = { debug() {}, info() {}, warn() {}, error() {} };
+  const x = new XipCache(mcu);
+  mcu.peripherals[0x18000].crtlr0 = (31 << 16) | (3 << 8);
+  mcu.peripherals[0x18000].spictlr0 = (0x03 << 24) | (2 << 8) | (6 << 2);
+  mcu.peripherals[0x18000].baudr = 4;
+  x.configure();
+  x.charging = true;
+  const A = 0x10001000, B = A + 0x4000, C = A + 0x8000;
+  mcu.readUint32(A); mcu.readUint16(A + 6);
+  check('xip_line_fill_once', x.misses === 1, `${x.misses} misses`);
+  mcu.readUint32(A + 8);
+  check('xip_next_line_misses', x.misses === 2, `${x.misses} misses`);
+  mcu.readUint32(B); mcu.readUint32(B); mcu.readUint32(A);
+  check('xip_two_ways', x.misses === 3, `${x.misses} misses`);
+  mcu.readUint32(C);            /* evicts B, the least recently used */
+  mcu.readUint32(A);
+  const before = x.misses;
+  mcu.readUint32(B);
+  check('xip_lru_replacement', before === 4 && x.misses === 5, `${before} then ${x.misses}`);
+  const m0 = x.misses;
+  mcu.readUint32(0x12000000 + 0x1000); mcu.readUint32(0x12000000 + 0x1000);
+  check('xip_nocache_alias_always_reads_flash', x.misses === m0 + 2, `${x.misses - m0}`);
+  const m1 = x.misses;
+  mcu.readUint32(0x11000000 + 0x2000); mcu.readUint32(0x11000000 + 0x2000);
+  mcu.readUint32(0x11000000 + 0x1000);   /* A is cached: a hit through the alias */
+  check('xip_noalloc_alias', x.misses === m1 + 2, `${x.misses - m1}`);
+  check('xip_stall_charged', x.take() === x.misses * 388 && x.take() === 0, 'stall not as counted');
+  x.charging = false;
+  mcu.readUint32(0x10009000);
+  check('xip_dma_not_charged', x.take() === 0, 'charged outside an instruction');
+}
+
+{
+  /* line fill: 03h serial at clk_sys/4, EBh quad continuous at clk_sys/2 */
+  const serial = lineFillCycles({ crtlr0: (31 << 16) | (3 << 8), spictlr0: (0x03 << 24) | (2 << 8) | (6 << 2), baudr: 4 });
+  const quad = lineFillCycles({ crtlr0: (2 << 21) | (31 << 16) | (3 << 8),
+                                spictlr0: (0xa0 << 24) | (4 << 11) | (0 << 8) | (8 << 2) | 2, baudr: 2 });
+  check('xip_fill_serial_03h', serial.cycles === 388, `${serial.cycles}`);
+  check('xip_fill_quad_ebh', quad.cycles === 60, `${quad.cycles}`);
+}
+
+{
+  /* boot2 CRC as the boot ROM checks it (check value of "123456789": 0x0376e6e7) */
+  check('boot2_crc32_check_value', crc32BootRom(Buffer.from('123456789')) === 0x0376e6e7,
+        crc32BootRom(Buffer.from('123456789')).toString(16));
+  const flash = new Uint8Array(256);
+  const crc = crc32BootRom(flash.subarray(0, 252));
+  flash[252] = crc & 255; flash[253] = (crc >>> 8) & 255; flash[254] = (crc >>> 16) & 255; flash[255] = crc >>> 24;
+  const ok = boot2Problem(flash) === null;
+  flash[3] ^= 1;
+  check('boot2_crc_accepts_and_refuses', ok && boot2Problem(flash) !== null, 'CRC check wrong');
 }
 
 process.exit(failed ? 1 : 0);

@@ -19,6 +19,10 @@ ARM_SIZE    ?= arm-none-eabi-size
 FW_OUT      := $(BUILD)/firmware
 RP2040_SYS_MHZ ?= 133
 RP2040_RAM_TEXT ?= 1
+RP2040_BOOT2 ?= w25q16jv
+ifeq ($(wildcard firmware/board/rp2040/boot2_$(RP2040_BOOT2).S),)
+$(error RP2040_BOOT2=$(RP2040_BOOT2): no firmware/board/rp2040/boot2_$(RP2040_BOOT2).S (w25q16jv or generic_03h))
+endif
 FW_PINS     ?=
 FW_EXTRA    ?=
 FW_SCENE_SRCS ?= firmware/app/scenes_builtin.c
@@ -106,10 +110,16 @@ RP_CFLAGS := -mcpu=cortex-m0plus -mthumb -O2 -g -std=c11 $(WARN) -ffunction-sect
              $(if $(filter 1,$(RP2040_RAM_TEXT)),-DRAS_RAM_TEXT) \
              $(FW_INC) -I$(RP_DIR) -Ihal/rp2040 $(FW_PINS) $(FW_EXTRA)
 RP_LDFLAGS := -mcpu=cortex-m0plus -mthumb --specs=nano.specs -nostartfiles -T $(RP_DIR)/rp2040.ld \
+              -L$(RP_DIR)/ram_text/$(if $(filter 1,$(RP2040_RAM_TEXT)),on,off) \
               -Wl,--gc-sections -Wl,--no-warn-rwx-segments
 
-# boot2: assembled, linked at its SRAM address, CRC appended, re-emitted as .S
-$(FW_OUT)/pico/boot2.elf: $(RP_DIR)/boot2.S $(RP_DIR)/boot2.ld
+# boot2: assembled, linked at its SRAM address, CRC appended, re-emitted as .S.
+# RP2040_BOOT2: w25q16jv (the Pico's flash, quad EBh continuous read at
+# clk_sys/2) or generic_03h (any flash, serial 03h at clk_sys/4); the choice
+# is recorded so that changing it rebuilds boot2.
+$(shell mkdir -p $(FW_OUT)/pico && { echo '$(RP2040_BOOT2)' | cmp -s - $(FW_OUT)/pico/boot2.choice || \
+          echo '$(RP2040_BOOT2)' >$(FW_OUT)/pico/boot2.choice; })
+$(FW_OUT)/pico/boot2.elf: $(RP_DIR)/boot2_$(RP2040_BOOT2).S $(RP_DIR)/boot2.ld $(FW_OUT)/pico/boot2.choice
 	@mkdir -p $(@D)
 	$(Q)$(ARM_CC) -mcpu=cortex-m0plus -mthumb -nostdlib -T $(RP_DIR)/boot2.ld $< -o $@
 $(FW_OUT)/pico/boot2.bin: $(FW_OUT)/pico/boot2.elf
@@ -134,7 +144,8 @@ $(FW_OUT)/pico/obj-$(1)/boot2_crc.o: $(FW_OUT)/pico/boot2_crc.S
 	$$(Q)$$(ARM_CC) -mcpu=cortex-m0plus -mthumb -c $$< -o $$@
 $(FW_OUT)/pico/$(1).elf: $(patsubst %.c,$(FW_OUT)/pico/obj-$(1)/%.o,$(RP_SRCS) $(3)) \
                          $(patsubst %.S,$(FW_OUT)/pico/obj-$(1)/%.o,$(RP_ASM)) \
-                         $(FW_OUT)/pico/obj-$(1)/boot2_crc.o $(RP_DIR)/rp2040.ld
+                         $(FW_OUT)/pico/obj-$(1)/boot2_crc.o $(RP_DIR)/rp2040.ld \
+                         $(RP_DIR)/ram_text/$(if $(filter 1,$(RP2040_RAM_TEXT)),on,off)/ram_text.ld
 	$$(Q)$$(ARM_CC) $$(RP_LDFLAGS) -Wl,-Map=$(FW_OUT)/pico/$(1).map \
 		$$(filter %.o,$$^) -lc -lgcc -o $$@
 $(FW_OUT)/pico/$(1).bin: $(FW_OUT)/pico/$(1).elf

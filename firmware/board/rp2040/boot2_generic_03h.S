@@ -1,5 +1,6 @@
-/* boot2.S — second-stage boot for the QSPI flash (W25Q080 and any flash that
- * answers the plain 03h READ command).
+/* boot2_generic_03h.S — second-stage boot for any QSPI flash that answers the
+ * plain 03h READ command (RP2040_BOOT2=generic_03h; the Pico's own flash
+ * gets the faster boot2_w25q16jv.S by default).
  *
  * The boot ROM copies these 256 bytes from flash offset 0 to SRAM at
  * 0x20041f00, checks the CRC32 stored in the last 4 bytes (computed at build
@@ -10,7 +11,8 @@
  *
  * Why 03h at clk_sys/4: it needs no flash status-register write (quad mode
  * would), and 03h is specified up to 50 MHz; at 133 MHz clk_sys the flash
- * clock is 33 MHz. Code that must run faster is copied to SRAM instead.
+ * clock is 33 MHz. A cache miss then costs about 388 cycles (96 flash
+ * clocks for 8 bytes); the hot code runs from SRAM (RP2040_RAM_TEXT).
  */
     .syntax unified
     .cpu cortex-m0plus

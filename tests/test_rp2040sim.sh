@@ -77,3 +77,13 @@ if grep -q "\"xip_misses\":[1-9][0-9]*,\"xip_stall_cycles\":[1-9][0-9]*,\"xip_fi
 else
   echo "FAIL rp2040sim_reports_xip_misses: $(cat "$t/json")"
 fi
+# A fault is reported, not a silent lock-up: an NMI raised in the middle of
+# the first frame reaches the firmware's default handler, which prints the
+# exception number and the stacked PC on the UART; the run ends with it.
+timeout 120 node tools/rp2040sim/rp2040sim.js --image "$elf" --frames 1 --inject-nmi 30000000 >/dev/null 2>"$t/err5"
+rc=$?
+if [ "$rc" -eq 1 ] && grep -q "fault core=0 ipsr=2 pc=0x[0-9a-f]\{8\} lr=0x[0-9a-f]\{8\} xpsr=0x[0-9a-f]\{8\}" "$t/err5"; then
+  echo "PASS rp2040sim_fault_reported_on_uart"
+else
+  echo "FAIL rp2040sim_fault_reported_on_uart: exit $rc: $(cat "$t/err5")"
+fi

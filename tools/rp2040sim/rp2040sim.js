@@ -29,6 +29,8 @@
  *   --variant TEXT      the image's method choices, for --json (default single-core)
  *   --core1-speed F     core 1 runs F times as fast as core 0 (default 1; tests:
  *                       the frames must not depend on how the cores interleave)
+ *   --inject-nmi N      raise an NMI on core 0 after N cycles (tests: the
+ *                       firmware's fault report, a "fault ..." UART line)
  *
  * Boot without a boot ROM image (rp2040js 1.4.1 has none): the image is
  * copied into the flash array, its boot2 checked and run from SRAM as the
@@ -39,7 +41,7 @@
  * count at the configured SPI clock, so frame times include transfer time.
  *
  * Exit status: 0 done; 1 emulator or internal error (cycle limit, firmware
- * error line, any emulator warning); 2 usage; 3 panel protocol violation (one line). */
+ * error or fault line, any emulator warning); 2 usage; 3 panel protocol violation (one line). */
 const fs = require('fs');
 const path = require('path');
 const { RP2040, GPIOPinState } = require('rp2040js');
@@ -55,7 +57,7 @@ function usage(msg) {
 }
 
 function parseArgs(argv) {
-  const o = { frames: 1, maxCycles: 4e9, panel: 'st7789', pins: { dc: 16, cs: 17, rst: 20, bl: 21 }, uart: false, json: false, average: false, numeric: 'fixed', variant: 'single-core', core1Speed: 1 };
+  const o = { frames: 1, maxCycles: 4e9, panel: 'st7789', pins: { dc: 16, cs: 17, rst: 20, bl: 21 }, uart: false, json: false, average: false, numeric: 'fixed', variant: 'single-core', core1Speed: 1, injectNmi: 0 };
   for (let i = 0; i < argv.length; i++) {
     const a = argv[i];
     const val = () => { if (i + 1 >= argv.length) usage(`${a} needs a value`); return argv[++i]; };
@@ -78,6 +80,7 @@ function parseArgs(argv) {
       case '--average': o.average = true; break;
       case '--numeric': o.numeric = val(); break;
       case '--variant': o.variant = val(); break;
+      case '--inject-nmi': o.injectNmi = Number(val()); if (!(o.injectNmi > 0)) usage('bad --inject-nmi'); break;
       case '--core1-speed': o.core1Speed = Number(val()); if (!(o.core1Speed >= 0.01 && o.core1Speed <= 100)) usage('--core1-speed must be in 0.01..100'); break;
       default: usage(`unknown option '${a}'`);
     }
@@ -196,7 +199,7 @@ function main() {
       /* a progressive frame: its first full-screen image is the preview */
       if (l.startsWith('coarse ') && pending) pending.coarse = true;
       if (l.startsWith('fps ') && frames.length) frames[frames.length - 1].fw_us = Number(kv.us);
-      if (l.startsWith('error')) fwError = l;
+      if (l.startsWith('error') || l.startsWith('fault ')) fwError = l;
     } else {
       uartLine += ch;
     }
@@ -224,7 +227,13 @@ function main() {
   const t0 = Date.now();
   const maxNs = o.maxCycles / cpuHz * 1e9;
   while (frames.length < o.frames && !fwError && !panel.violation) {
-    const awake = dual.run(100000);
+    const awake = dual.run(o.injectNmi ? 1000 : 100000);
+    if (o.injectNmi && clock.nanos * cpuHz / 1e9 >= o.injectNmi) {
+      dual.cores[0].pendingNMI = true;
+      dual.cores[0].interruptsUpdated = true;
+      o.injectNmi = 0;
+    }
+    if (fwError) break;
     if (emuWarning) { fwError = emuWarning; break; }
     if (!awake) { fwError = 'firmware sleeps with nothing to wake it'; break; }
     if (clock.nanos > maxNs) { fwError = `no frame after ${o.maxCycles} cycles`; break; }

@@ -21,6 +21,13 @@ static void pll_start(uint32_t base, uint32_t reset_bit, uint32_t fbdiv, uint32_
     REG_CLR(PLL_PWR(base)) = PLL_PWR_POSTDIVPD;
 }
 
+/* At least n cycles of clk_sys (an iteration takes more than one: a
+ * subtraction and a taken branch; usable before the timer runs). */
+void board_delay_cycles(uint32_t n)
+{
+    for (uint32_t i = n; i; i--) __asm__ volatile("" ::: "memory");
+}
+
 static void clocks_init(void)
 {
     REG(CLK_SYS_RESUS_CTRL) = 0;
@@ -29,9 +36,12 @@ static void clocks_init(void)
     REG_SET(XOSC_CTRL) = XOSC_ENABLE;
     while (!(REG(XOSC_STATUS) & XOSC_STABLE)) {}
 
-    /* Run from clk_ref while the PLLs change. */
+    /* Run from clk_ref while the PLLs change; clk_ref = XOSC / 1 (the
+     * divider written rather than trusted to its reset value: the timer's
+     * 1 us tick below assumes 12 MHz). */
     REG_CLR(CLK_SYS_CTRL) = CLK_SYS_SRC_AUX;
     while (!(REG(CLK_SYS_SELECTED) & 1u)) {}
+    REG(CLK_REF_DIV) = 1u << 8;
     REG(CLK_REF_CTRL) = CLK_REF_SRC_XOSC;
     while (!(REG(CLK_REF_SELECTED) & (1u << CLK_REF_SRC_XOSC))) {}
 
@@ -49,7 +59,14 @@ static void clocks_init(void)
     REG(CLK_SYS_CTRL) = CLK_SYS_AUX_PLL_SYS | CLK_SYS_SRC_AUX;
     while (!(REG(CLK_SYS_SELECTED) & 2u)) {}
 
-    REG(CLK_PERI_CTRL) = 0;
+    /* clk_peri has only an auxiliary mux, which is not glitch-free: stop
+     * the clock, let the stop reach the output (two cycles of the old
+     * source, which can be as slow as the 6.5 MHz ring oscillator: 3 of its
+     * periods are under 64 clk_sys cycles), then change the source and
+     * start it again. */
+    REG_CLR(CLK_PERI_CTRL) = CLK_PERI_ENABLE;
+    board_delay_cycles(64);
+    REG(CLK_PERI_CTRL) = CLK_PERI_AUX_PLL_USB;
     REG(CLK_PERI_CTRL) = CLK_PERI_ENABLE | CLK_PERI_AUX_PLL_USB;
 
     /* Timer tick: 1 us from the 12 MHz clk_ref. */

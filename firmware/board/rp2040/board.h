@@ -27,6 +27,7 @@ void board_init(void);
 /* Microseconds since boot (64-bit timer, never wraps in practice). */
 uint64_t board_now_us(void);
 void board_delay_us(uint32_t us);
+void board_delay_cycles(uint32_t n);   /* at least n cycles of clk_sys */
 
 /* Blocking UART0 output. */
 void board_putc(char c);

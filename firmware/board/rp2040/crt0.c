@@ -5,6 +5,7 @@
  * .bss, brings up clocks and peripherals (board_init) and calls main(). */
 #include <stdint.h>
 #include "board.h"
+#include "rp2040_regs.h"
 
 extern uint32_t __data_start[], __data_end[], __data_load[];
 extern uint32_t __bss_start[], __bss_end[];
@@ -13,10 +14,61 @@ extern uint32_t __stack0_top[];
 int main(void);
 void reset_handler(void);
 
-/* An unexpected fault or interrupt stops here; a debugger shows the cause. */
-static void default_handler(void)
+/* "0x" and 8 hex digits of v at p; returns the end. */
+static char *put_hex(char *p, uint32_t v)
 {
-    for (;;) __asm__ volatile("bkpt #0");
+    *p++ = '0';
+    *p++ = 'x';
+    for (int s = 28; s >= 0; s -= 4) *p++ = "0123456789abcdef"[(v >> s) & 15u];
+    return p;
+}
+
+/* The report of an unexpected fault or interrupt, on UART0 when it is up:
+ *   fault core=C ipsr=N pc=0x... lr=0x... xpsr=0x...
+ * (IPSR: 2 NMI, 3 HardFault, 11 SVCall, 14 PendSV, 15 SysTick, 16 + n IRQ n;
+ * pc, lr and xpsr as the exception stacked them), then the core sleeps. */
+__attribute__((used)) static void fault_report(const uint32_t *frame)
+{
+    uint32_t ipsr;
+    __asm__ volatile("mrs %0, ipsr" : "=r"(ipsr));
+    if (REG(UARTCR) & 1u) {
+        char line[96], *p = line;
+        const char *a = "fault core=";
+        while (*a) *p++ = *a++;
+        *p++ = (char)('0' + (REG(SIO_CPUID) & 1u));
+        a = " ipsr=";
+        while (*a) *p++ = *a++;
+        if (ipsr >= 10) *p++ = (char)('0' + ipsr / 10 % 10);
+        *p++ = (char)('0' + ipsr % 10);
+        const char *names[3] = { " pc=", " lr=", " xpsr=" };
+        const uint32_t vals[3] = { frame[6], frame[5], frame[7] };
+        for (int i = 0; i < 3; i++) {
+            for (a = names[i]; *a;) *p++ = *a++;
+            p = put_hex(p, vals[i]);
+        }
+        *p++ = '\r';
+        *p++ = '\n';
+        *p = 0;
+        board_puts(line);
+    }
+    for (;;) __asm__ volatile("wfi");
+}
+
+/* Every vector but reset: the stacked frame (MSP or PSP, from EXC_RETURN
+ * bit 2) to fault_report. */
+__attribute__((naked)) static void default_handler(void)
+{
+    __asm__ volatile(
+        "movs r0, #4\n"
+        "mov  r1, lr\n"
+        "tst  r0, r1\n"
+        "beq  1f\n"
+        "mrs  r0, psp\n"
+        "b    2f\n"
+        "1:\n"
+        "mrs  r0, msp\n"
+        "2:\n"
+        "bl   fault_report\n");
 }
 
 

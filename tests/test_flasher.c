@@ -20,7 +20,12 @@ struct fake {
     long calls;
     enum phase ph;
     uint32_t token, addr, len;
+    int last_erase;
     int exclusive, xip_exited, rebooted, protocol_error, closed;
+    int resets, reset_before_cmd;   /* interface resets; 1 if the first came before any command */
+    long cmds;
+    uint32_t status_code;           /* what GET_COMMAND_STATUS reports after a failure */
+    unsigned erase_ack_timeout, other_timeout_max;
     uint8_t flash[FAKE_FLASH];
 };
 
@@ -45,16 +50,19 @@ static int bad(struct fake *f)
     return -1;
 }
 
-static int f_out(void *ctx, const uint8_t *d, size_t n)
+static int f_out(void *ctx, const uint8_t *d, size_t n, unsigned ms)
 {
     struct fake *f = ctx;
+    if (f->ph != ACK_OUT && ms > f->other_timeout_max) f->other_timeout_max = ms;
     if (f->fail_at && ++f->calls >= f->fail_at) return -1;
     if (!f->fail_at) f->calls++;
     switch (f->ph) {
     case CMD: {
         if (n != 32 || g32(d) != PB_MAGIC || g32(d + 4) != f->token + 1) return bad(f);
+        f->cmds++;
         f->token = g32(d + 4);
         uint8_t id = d[8], sz = d[9];
+        f->last_erase = id == PB_FLASH_ERASE;
         uint32_t tl = g32(d + 12);
         f->addr = g32(d + 16);
         f->len = g32(d + 20);
@@ -108,9 +116,11 @@ static int f_out(void *ctx, const uint8_t *d, size_t n)
     }
 }
 
-static int f_in(void *ctx, uint8_t *d, size_t n)
+static int f_in(void *ctx, uint8_t *d, size_t n, unsigned ms)
 {
     struct fake *f = ctx;
+    if (f->ph == ACK_IN && f->last_erase) f->erase_ack_timeout = ms;
+    else if (ms > f->other_timeout_max) f->other_timeout_max = ms;
     if (f->fail_at && ++f->calls >= f->fail_at) return -1;
     if (!f->fail_at) f->calls++;
     switch (f->ph) {
@@ -121,7 +131,8 @@ static int f_in(void *ctx, uint8_t *d, size_t n)
         f->ph = ACK_OUT;
         return (int)n;
     case ACK_IN:
-        if (n != 0) return bad(f);
+        /* a real buffer for the zero-length acknowledgement */
+        if (n == 0 || !d) return bad(f);
         f->ph = CMD;
         return 0;
     default:
@@ -130,6 +141,22 @@ static int f_in(void *ctx, uint8_t *d, size_t n)
 }
 
 static void f_close(void *ctx) { ((struct fake *)ctx)->closed = 1; }
+
+static int f_reset(void *ctx)
+{
+    struct fake *f = ctx;
+    if (f->resets++ == 0) f->reset_before_cmd = f->cmds == 0;
+    f->ph = CMD;
+    return 0;
+}
+
+static int f_status(void *ctx, uint8_t out[16])
+{
+    struct fake *f = ctx;
+    memset(out, 0, 16);
+    out[4] = (uint8_t)f->status_code;
+    return 16;
+}
 
 static struct fake *fake_new(void)
 {
@@ -140,7 +167,7 @@ static struct fake *fake_new(void)
 
 static struct pb_transport fake_transport(struct fake *f)
 {
-    struct pb_transport t = { f, f_open, f_out, f_in, f_close };
+    struct pb_transport t = { f, f_open, f_out, f_in, f_close, f_reset, f_status };
     return t;
 }
 
@@ -224,6 +251,30 @@ static void test_success(void)
           "flash_sequence_writes_verifies_and_reboots", "rc %d same %d tail %d reboot %d proto %d: %s", rc,
           same, tail, f->rebooted, f->protocol_error, err);
     long total = f->calls;
+    check(f->resets == 1 && f->reset_before_cmd, "flash_resets_the_interface_before_the_first_command",
+          "%d resets, before: %d", f->resets, f->reset_before_cmd);
+    check(f->erase_ack_timeout == PB_ERASE_TIMEOUT_MS && f->other_timeout_max == PB_TIMEOUT_MS,
+          "flash_transfer_timeouts", "erase ack %u ms, others up to %u ms", f->erase_ack_timeout,
+          f->other_timeout_max);
+    free(f);
+
+    /* without the reboot, exclusive access is given back at the end */
+    f = fake_new();
+    t = fake_transport(f);
+    rc = pb_flash(&t, &img, 0, err, sizeof err, NULL);
+    check(rc == 0 && !f->rebooted && f->exclusive == PB_NOT_EXCLUSIVE && f->closed,
+          "no_reboot_releases_exclusive_access", "rc %d rebooted %d exclusive %d: %s", rc, f->rebooted,
+          f->exclusive, err);
+    free(f);
+
+    /* a failure names the boot ROM's status code when it gives one */
+    f = fake_new();
+    f->fail_at = 12;
+    f->status_code = PB_STATUS_INVALID_ADDRESS;
+    t = fake_transport(f);
+    rc = pb_flash(&t, &img, 1, err, sizeof err, NULL);
+    check(rc == 2 && one_line(err) && strstr(err, "INVALID_ADDRESS (4)"), "failure_reports_boot_rom_status",
+          "rc %d: %s", rc, err);
     free(f);
 
     /* A failure at every bulk transfer: exit 2, one line, never a reboot
@@ -282,32 +333,70 @@ static void test_uf2(void)
     size_t n;
     make_image(&src, 0x10000000u, 8 * 256);
     uint8_t *u = make_uf2(src.data, src.addr, src.len, UF2_FAMILY_RP2040, &n);
-    int rc = image_from_uf2(u, n, &img, err, sizeof err);
+    int rc = image_from_uf2(u, n, PB_FLASH_LIMIT, &img, err, sizeof err);
     check(rc == 0 && img.addr == src.addr && img.len == src.len && memcmp(img.data, src.data, src.len) == 0,
           "uf2_blocks_make_the_image", "rc %d: %s", rc, err);
     if (rc == 0) image_free(&img);
 
     u[512 * 3 + 508] ^= 1;
-    rc = image_from_uf2(u, n, &img, err, sizeof err);
+    rc = image_from_uf2(u, n, PB_FLASH_LIMIT, &img, err, sizeof err);
     check(rc == -1 && strstr(err, "block 3") && strstr(err, "magic"), "uf2_bad_magic_rejected", "%s", err);
     free(u);
 
     u = make_uf2(src.data, src.addr, src.len, 0x12345678u, &n);
-    rc = image_from_uf2(u, n, &img, err, sizeof err);
+    rc = image_from_uf2(u, n, PB_FLASH_LIMIT, &img, err, sizeof err);
     check(rc == -1 && strstr(err, "no RP2040 blocks"), "uf2_other_family_rejected", "%s", err);
     free(u);
 
     u = make_uf2(src.data, src.addr, src.len, UF2_FAMILY_RP2040, &n);
-    rc = image_from_uf2(u, n - 512, &img, err, sizeof err);
+    rc = image_from_uf2(u, n - 512, PB_FLASH_LIMIT, &img, err, sizeof err);
     check(rc == -1 && strstr(err, "truncated"), "uf2_truncated_rejected", "%s", err);
-    rc = image_from_uf2(u, n - 5, &img, err, sizeof err);
+    rc = image_from_uf2(u, n - 5, PB_FLASH_LIMIT, &img, err, sizeof err);
     check(rc == -1 && strstr(err, "multiple of 512"), "uf2_partial_block_rejected", "%s", err);
     free(u);
 
-    rc = image_from_bin(src.data, 300, PB_FLASH_BASE, &img, err, sizeof err);
+    /* a page given twice: a duplicate block, or one block moved onto another */
+    u = make_uf2(src.data, src.addr, src.len, UF2_FAMILY_RP2040, &n);
+    memcpy(u + 512 * 5, u + 512 * 2, 512);
+    put32(u + 512 * 5 + 20, 5);
+    rc = image_from_uf2(u, n, PB_FLASH_LIMIT, &img, err, sizeof err);
+    check(rc == -1 && strstr(err, "given twice") && strstr(err, "block 5"), "uf2_duplicate_block_rejected", "%s",
+          err);
+    free(u);
+    u = make_uf2(src.data, src.addr, src.len, UF2_FAMILY_RP2040, &n);
+    put32(u + 512 * 6 + 12, src.addr + 256 * 1);
+    rc = image_from_uf2(u, n, PB_FLASH_LIMIT, &img, err, sizeof err);
+    check(rc == -1 && strstr(err, "given twice"), "uf2_overlapping_block_rejected", "%s", err);
+    free(u);
+
+    /* addresses past the flash limit (2 MiB by default), and inside a larger one */
+    u = make_uf2(src.data, 0x10000000u + PB_FLASH_LIMIT - 4 * 256, src.len, UF2_FAMILY_RP2040, &n);
+    rc = image_from_uf2(u, n, PB_FLASH_LIMIT, &img, err, sizeof err);
+    check(rc == -1 && strstr(err, "outside the 2048 KB of flash"), "uf2_past_flash_limit_rejected", "%s", err);
+    rc = image_from_uf2(u, n, 2 * PB_FLASH_LIMIT, &img, err, sizeof err);
+    check(rc == 0, "uf2_inside_larger_flash_accepted", "%s", err);
+    if (rc == 0) image_free(&img);
+    free(u);
+
+    /* a sparse image: the gap between its blocks is erased (0xFF) */
+    u = make_uf2(src.data, src.addr, src.len, UF2_FAMILY_RP2040, &n);
+    for (int i = 4; i < 8; i++) put32(u + 512 * i + 12, src.addr + 4096 + 256 * (uint32_t)i);
+    rc = image_from_uf2(u, n, PB_FLASH_LIMIT, &img, err, sizeof err);
+    check(rc == 0 && img.len == 4096 + 8 * 256 && img.data[4 * 256] == 0xFF && img.data[4096 + 4 * 256] ==
+          src.data[4 * 256], "uf2_sparse_image_gaps_erased", "rc %d len %u: %s", rc, (unsigned)img.len, err);
+    if (rc == 0) image_free(&img);
+
+    /* the format is the content's: UF2 bytes are UF2 whatever the name */
+    check(image_is_uf2(u, n) && !image_is_uf2(src.data, src.len) && !image_is_uf2(u, 100),
+          "uf2_decided_by_content", "wrong");
+    free(u);
+
+    rc = image_from_bin(src.data, 300, PB_FLASH_BASE, PB_FLASH_LIMIT, &img, err, sizeof err);
     check(rc == 0 && img.len == 512 && img.data[300] == 0xFF && img.data[0] == src.data[0],
           "bin_padded_to_pages_with_ff", "rc %d len %u", rc, (unsigned)img.len);
     if (rc == 0) image_free(&img);
+    rc = image_from_bin(src.data, 300, PB_FLASH_BASE + PB_FLASH_LIMIT - 256, PB_FLASH_LIMIT, &img, err, sizeof err);
+    check(rc == -1 && strstr(err, "does not fit"), "bin_past_flash_limit_rejected", "%s", err);
     image_free(&src);
 }
 

@@ -40,3 +40,44 @@ if [ "$rc" -eq 2 ] && grep -q "bootsel-pin needs a line number" "$t/out"; then
 else
   echo "FAIL flasher_gpio_bad_pin_exits_2: exit $rc, output: $(cat "$t/out")"
 fi
+# The image is judged by its content and checked whole before the board is
+# looked for: UF2 bytes in a .bin or a .UF2 file are a UF2 (and get as far as
+# the missing board); bad images are refused on one line, exit 2.
+cp "$t/x.uf2" "$t/x.bin"
+cp "$t/x.uf2" "$t/X.UF2"
+for f in x.bin X.UF2; do
+  "$b/flasher" "$t/$f" >"$t/out" 2>&1
+  rc=$?
+  if [ "$rc" -eq 2 ] && grep -q "no RP2040 in BOOTSEL mode\|wrong device\|permission denied" "$t/out" &&
+     [ "$(wc -l <"$t/out")" -eq 1 ]; then
+    echo "PASS flasher_uf2_by_content_$f"
+  else
+    echo "FAIL flasher_uf2_by_content_$f: exit $rc, output: $(cat "$t/out")"
+  fi
+done
+python3 - "$t" <<'EOF2'
+import struct, sys
+d = sys.argv[1]
+def block(addr, no, total):
+    return (struct.pack('<8I', 0x0A324655, 0x9E5D5157, 0x2000, addr, 256, no, total, 0xE48BFF56)
+            + bytes(476) + struct.pack('<I', 0x0AB16F30))
+open(d + '/dup.uf2', 'wb').write(block(0x10000000, 0, 2) + block(0x10000000, 1, 2))
+open(d + '/far.uf2', 'wb').write(block(0x10000000 + 3 * 1024 * 1024, 0, 1))
+open(d + '/big.bin', 'wb').write(bytes(2 * 1024 * 1024 + 1))
+EOF2
+for c in "dup.uf2:given twice" "far.uf2:outside the 2048 KB" "big.bin:more than 2048 KB"; do
+  f=${c%%:*}; want=${c#*:}
+  "$b/flasher" "$t/$f" >"$t/out" 2>&1
+  rc=$?
+  if [ "$rc" -eq 2 ] && grep -q "$want" "$t/out" && [ "$(wc -l <"$t/out")" -eq 1 ]; then
+    echo "PASS flasher_refuses_$f"
+  else
+    echo "FAIL flasher_refuses_$f: exit $rc, output: $(cat "$t/out")"
+  fi
+done
+"$b/flasher" --flash-size 4194304 "$t/far.uf2" >"$t/out" 2>&1
+if grep -q "no RP2040 in BOOTSEL mode\|wrong device\|permission denied" "$t/out"; then
+  echo "PASS flasher_flash_size_option"
+else
+  echo "FAIL flasher_flash_size_option: $(cat "$t/out")"
+fi

@@ -15,16 +15,30 @@ static uint32_t get32(const uint8_t *p)
     return (uint32_t)p[0] | (uint32_t)p[1] << 8 | (uint32_t)p[2] << 16 | (uint32_t)p[3] << 24;
 }
 
-static int in_flash(uint32_t a, uint32_t n)
+static int in_flash(uint32_t a, uint32_t n, uint32_t flash_size)
 {
-    return a >= PB_FLASH_BASE && (uint64_t)a - PB_FLASH_BASE + n <= PB_FLASH_SIZE;
+    return a >= PB_FLASH_BASE && (uint64_t)a - PB_FLASH_BASE + n <= flash_size;
 }
 
-int image_from_uf2(const uint8_t *buf, size_t len, struct pb_image *img, char *err, size_t err_len)
+int image_is_uf2(const uint8_t *buf, size_t len)
+{
+    return len >= 512 && get32(buf) == UF2_MAGIC0 && get32(buf + 4) == UF2_MAGIC1;
+}
+
+int image_from_uf2(const uint8_t *buf, size_t len, uint32_t flash_size, struct pb_image *img, char *err,
+                   size_t err_len)
 {
     img->data = NULL;
+    if (flash_size > PB_FLASH_SIZE) flash_size = PB_FLASH_SIZE;
     if (len == 0 || len % 512) {
         snprintf(err, err_len, "not a UF2 file: %zu bytes is not a multiple of 512", len);
+        return -1;
+    }
+    /* one bit per page of flash: a page given twice (duplicate or
+     * overlapping blocks) would make the image depend on block order */
+    uint8_t *seen = calloc(flash_size / PB_PAGE / 8 + 1, 1);
+    if (!seen) {
+        snprintf(err, err_len, "out of memory");
         return -1;
     }
     uint32_t lo = 0xFFFFFFFFu, hi = 0, nblocks = 0, count = 0;
@@ -34,25 +48,43 @@ int image_from_uf2(const uint8_t *buf, size_t len, struct pb_image *img, char *e
         uint32_t bno = get32(p + 20), total = get32(p + 24), family = get32(p + 28);
         if (get32(p) != UF2_MAGIC0 || get32(p + 4) != UF2_MAGIC1 || get32(p + 508) != UF2_MAGIC_END) {
             snprintf(err, err_len, "UF2 block %zu: bad magic number", b);
+            free(seen);
             return -1;
         }
         if (flags & UF2_FLAG_NOT_MAIN) continue;
         if ((flags & UF2_FLAG_FAMILY) && family != UF2_FAMILY_RP2040) continue;
-        if (size != PB_PAGE || addr % PB_PAGE || !in_flash(addr, size)) {
-            snprintf(err, err_len, "UF2 block %zu: %u bytes at 0x%08x, expected 256 at a page in flash",
+        if (size != PB_PAGE || addr % PB_PAGE) {
+            snprintf(err, err_len, "UF2 block %zu: %u bytes at 0x%08x, expected 256 at a page boundary",
                      b, (unsigned)size, (unsigned)addr);
+            free(seen);
+            return -1;
+        }
+        if (!in_flash(addr, size, flash_size)) {
+            snprintf(err, err_len, "UF2 block %zu: address 0x%08x is outside the %u KB of flash (--flash-size)",
+                     b, (unsigned)addr, (unsigned)(flash_size / 1024));
+            free(seen);
             return -1;
         }
         if (total == 0 || bno >= total || (count && total != count)) {
             snprintf(err, err_len, "UF2 block %zu: block number %u of %u is inconsistent", b,
                      (unsigned)bno, (unsigned)total);
+            free(seen);
             return -1;
         }
+        uint32_t page = (addr - PB_FLASH_BASE) / PB_PAGE;
+        if (seen[page / 8] & (1u << (page % 8))) {
+            snprintf(err, err_len, "UF2 block %zu: page 0x%08x is given twice (duplicate or overlapping blocks)",
+                     b, (unsigned)addr);
+            free(seen);
+            return -1;
+        }
+        seen[page / 8] |= (uint8_t)(1u << (page % 8));
         count = total;
         nblocks++;
         if (addr < lo) lo = addr;
         if (addr + size > hi) hi = addr + size;
     }
+    free(seen);
     if (nblocks == 0) {
         snprintf(err, err_len, "UF2 file has no RP2040 blocks (family 0x%08x)", UF2_FAMILY_RP2040);
         return -1;
@@ -79,15 +111,18 @@ int image_from_uf2(const uint8_t *buf, size_t len, struct pb_image *img, char *e
     return 0;
 }
 
-int image_from_bin(const uint8_t *buf, size_t len, uint32_t addr, struct pb_image *img, char *err,
-                   size_t err_len)
+int image_from_bin(const uint8_t *buf, size_t len, uint32_t addr, uint32_t flash_size, struct pb_image *img,
+                   char *err, size_t err_len)
 {
     img->data = NULL;
-    uint32_t padded = (uint32_t)((len + PB_PAGE - 1) / PB_PAGE * PB_PAGE);
-    if (len == 0 || len > PB_FLASH_SIZE || addr % PB_PAGE || !in_flash(addr, padded)) {
-        snprintf(err, err_len, "binary of %zu bytes does not fit in flash at 0x%08x", len, (unsigned)addr);
+    if (flash_size > PB_FLASH_SIZE) flash_size = PB_FLASH_SIZE;
+    if (len == 0 || len > flash_size || addr % PB_PAGE ||
+        !in_flash(addr, (uint32_t)((len + PB_PAGE - 1) / PB_PAGE * PB_PAGE), flash_size)) {
+        snprintf(err, err_len, "binary of %zu bytes does not fit in the %u KB of flash at 0x%08x (--flash-size)",
+                 len, (unsigned)(flash_size / 1024), (unsigned)addr);
         return -1;
     }
+    uint32_t padded = (uint32_t)((len + PB_PAGE - 1) / PB_PAGE * PB_PAGE);
     img->data = malloc(padded);
     if (!img->data) {
         snprintf(err, err_len, "out of memory");

@@ -1,8 +1,13 @@
 /* main.c — build/flasher: writes a UF2 or .bin image to an RP2040 in
  * BOOTSEL mode over USB (PICOBOOT), verifies it, then reboots the board.
  *
- * usage: flasher [--no-reboot] [--base ADDR] [--gpio-reset [--gpio-chip CHIP]
- *                [--run-pin N] [--bootsel-pin N]] FILE.uf2|FILE.bin
+ * usage: flasher [--no-reboot] [--base ADDR] [--flash-size BYTES]
+ *                [--gpio-reset [--gpio-chip CHIP] [--run-pin N] [--bootsel-pin N]]
+ *                FILE.uf2|FILE.bin
+ * A file is a UF2 when its content is (whatever its name), else a flat
+ * binary placed at --base (default 0x10000000). --flash-size (default 2 MiB,
+ * the Pico's) bounds where an image may go; everything about the image is
+ * checked before the board is touched.
  * --gpio-reset first puts the Pico into its boot ROM through a Raspberry Pi's
  * GPIO lines (gpio_reset.h), then waits up to 5 s for the boot ROM's USB
  * device.
@@ -30,8 +35,8 @@ static int die(const char *msg)
     return 2;
 }
 
-#define USAGE "usage: flasher [--no-reboot] [--base ADDR] [--gpio-reset [--gpio-chip CHIP] " \
-              "[--run-pin N] [--bootsel-pin N]] FILE.uf2|FILE.bin"
+#define USAGE "usage: flasher [--no-reboot] [--base ADDR] [--flash-size BYTES] [--gpio-reset " \
+              "[--gpio-chip CHIP] [--run-pin N] [--bootsel-pin N]] FILE.uf2|FILE.bin"
 
 /* After a GPIO reset the boot ROM needs a moment to enumerate on USB: the
  * open is retried while no device is found, for up to 5 s. */
@@ -51,20 +56,30 @@ static int wait_open(void *ctx, char *detail, size_t detail_len)
     }
     return rc;
 }
-static int wait_out(void *ctx, const uint8_t *d, size_t n)
+static int wait_out(void *ctx, const uint8_t *d, size_t n, unsigned ms)
 {
     struct wait_open *w = ctx;
-    return w->inner.bulk_out(w->inner.ctx, d, n);
+    return w->inner.bulk_out(w->inner.ctx, d, n, ms);
 }
-static int wait_in(void *ctx, uint8_t *d, size_t n)
+static int wait_in(void *ctx, uint8_t *d, size_t n, unsigned ms)
 {
     struct wait_open *w = ctx;
-    return w->inner.bulk_in(w->inner.ctx, d, n);
+    return w->inner.bulk_in(w->inner.ctx, d, n, ms);
 }
 static void wait_close(void *ctx)
 {
     struct wait_open *w = ctx;
     w->inner.close(w->inner.ctx);
+}
+static int wait_reset(void *ctx)
+{
+    struct wait_open *w = ctx;
+    return w->inner.reset ? w->inner.reset(w->inner.ctx) : 0;
+}
+static int wait_status(void *ctx, uint8_t out[16])
+{
+    struct wait_open *w = ctx;
+    return w->inner.status ? w->inner.status(w->inner.ctx, out) : -1;
 }
 
 /* A line offset 0..1023. */
@@ -81,7 +96,7 @@ int main(int argc, char **argv)
 {
     int reboot = 1, gpio = 0;
     struct gpio_reset_cfg gcfg = GPIO_RESET_DEFAULTS;
-    uint32_t base = PB_FLASH_BASE;
+    uint32_t base = PB_FLASH_BASE, flash_size = PB_FLASH_LIMIT;
     const char *file = NULL;
     for (int i = 1; i < argc; i++) {
         if (strcmp(argv[i], "--no-reboot") == 0) {
@@ -95,6 +110,12 @@ int main(int argc, char **argv)
         } else if (strcmp(argv[i], "--bootsel-pin") == 0 && i + 1 < argc) {
             if (pin_arg(argv[++i], &gcfg.bootsel_pin))
                 return die("--bootsel-pin needs a line number 0..1023");
+        } else if (strcmp(argv[i], "--flash-size") == 0 && i + 1 < argc) {
+            char *end;
+            unsigned long v = strtoul(argv[++i], &end, 0);
+            if (*end || v < 4096 || v > PB_FLASH_SIZE || v % 4096)
+                return die("--flash-size needs a multiple of 4096 up to 16777216");
+            flash_size = (uint32_t)v;
         } else if (strcmp(argv[i], "--base") == 0 && i + 1 < argc) {
             char *end;
             unsigned long v = strtoul(argv[++i], &end, 0);
@@ -114,17 +135,28 @@ int main(int argc, char **argv)
         snprintf(m, sizeof m, "%s: cannot open", file);
         return die(m);
     }
+    /* a UF2 block carries 256 of its 512 bytes: twice the flash and one more
+     * byte tells a file that is too large for any image */
     static uint8_t buf[2 * PB_FLASH_SIZE + 1];
     size_t len = fread(buf, 1, sizeof buf, f);
+    int rerr = ferror(f);
     fclose(f);
+    char m[700];
+    if (rerr) {
+        snprintf(m, sizeof m, "%s: read error", file);
+        return die(m);
+    }
 
     struct pb_image img;
     char err[512];
-    size_t fl = strlen(file);
-    int is_uf2 = fl >= 4 && strcmp(file + fl - 4, ".uf2") == 0;
-    if ((is_uf2 ? image_from_uf2(buf, len, &img, err, sizeof err)
-                : image_from_bin(buf, len, base, &img, err, sizeof err)) != 0) {
-        char m[700];
+    int is_uf2 = image_is_uf2(buf, len);
+    if (len > (is_uf2 ? 2 * (size_t)flash_size : (size_t)flash_size)) {
+        snprintf(m, sizeof m, "%s: %s%zu bytes, more than %u KB of flash can hold (--flash-size)", file,
+                 len == sizeof buf ? "over " : "", len, (unsigned)(flash_size / 1024));
+        return die(m);
+    }
+    if ((is_uf2 ? image_from_uf2(buf, len, flash_size, &img, err, sizeof err)
+                : image_from_bin(buf, len, base, flash_size, &img, err, sizeof err)) != 0) {
         snprintf(m, sizeof m, "%s: %s", file, err);
         return die(m);
     }
@@ -137,7 +169,7 @@ int main(int argc, char **argv)
             return die(err);
         }
         w.inner = t;
-        t = (struct pb_transport){ &w, wait_open, wait_out, wait_in, wait_close };
+        t = (struct pb_transport){ &w, wait_open, wait_out, wait_in, wait_close, wait_reset, wait_status };
     }
     int rc = pb_flash(&t, &img, reboot, err, sizeof err, isatty(2) ? progress : NULL);
     image_free(&img);

@@ -64,6 +64,15 @@ size_t pb_encode_reboot(uint8_t out[PB_CMD_LEN], uint32_t token, uint32_t pc, ui
     return pb_encode(out, token, PB_REBOOT, 0, a, 12);
 }
 
+const char *pb_status_name(uint32_t code)
+{
+    static const char *const names[] = {
+        "OK", "UNKNOWN_CMD", "INVALID_CMD_LENGTH", "INVALID_TRANSFER_LENGTH", "INVALID_ADDRESS",
+        "BAD_ALIGNMENT", "INTERLEAVED_WRITE", "REBOOTING", "UNKNOWN_ERROR",
+    };
+    return code < sizeof names / sizeof names[0] ? names[code] : "unknown status";
+}
+
 /* ---- the sequence -------------------------------------------------------- */
 
 struct session {
@@ -73,13 +82,22 @@ struct session {
     size_t err_len;
 };
 
-static int fail(struct session *s, const char *fmt, const char *what, uint32_t addr)
+/* A failed transfer: the message, with the boot ROM's own account of the
+ * command when it can still give one. */
+static int fail(struct session *s, const char *what, uint32_t addr)
 {
-    snprintf(s->err, s->err_len, fmt, what, (unsigned)addr);
+    const struct pb_transport *t = s->t;
+    uint8_t st[16];
+    char why[96] = "board unplugged or reset?";
+    if (t->status && t->status(t->ctx, st) == 16) {
+        uint32_t code = (uint32_t)st[4] | (uint32_t)st[5] << 8 | (uint32_t)st[6] << 16 | (uint32_t)st[7] << 24;
+        if (code != PB_STATUS_OK)
+            snprintf(why, sizeof why, "the boot ROM reports %s (%u)", pb_status_name(code), (unsigned)code);
+    }
+    snprintf(s->err, s->err_len, "USB transfer failed during %s at 0x%08x: %s Flash is not verified; "
+             "nothing was rebooted", what, (unsigned)addr, why);
     return 2;
 }
-
-#define USB_LOST "USB transfer failed during %s at 0x%08x: board unplugged or reset? Flash is not verified; nothing was rebooted"
 
 /* Sends a command, its data phase (OUT data or IN into `in`), and checks the
  * acknowledgement. */
@@ -87,13 +105,15 @@ static int run(struct session *s, const uint8_t cmd[PB_CMD_LEN], const char *wha
                const uint8_t *out, uint8_t *in, uint32_t len)
 {
     const struct pb_transport *t = s->t;
-    uint8_t ack;
-    if (t->bulk_out(t->ctx, cmd, PB_CMD_LEN) != (int)PB_CMD_LEN) return fail(s, USB_LOST, what, addr);
-    if (out && len && t->bulk_out(t->ctx, out, len) != (int)len) return fail(s, USB_LOST, what, addr);
-    if (in && len && t->bulk_in(t->ctx, in, len) != (int)len) return fail(s, USB_LOST, what, addr);
-    /* Acknowledgement: a zero-length packet the other way. */
-    int rc = in ? t->bulk_out(t->ctx, NULL, 0) : t->bulk_in(t->ctx, &ack, 0);
-    if (rc != 0) return fail(s, USB_LOST, what, addr);
+    uint8_t ack[1];
+    unsigned ack_timeout = cmd[8] == PB_FLASH_ERASE ? PB_ERASE_TIMEOUT_MS : PB_TIMEOUT_MS;
+    if (t->bulk_out(t->ctx, cmd, PB_CMD_LEN, PB_TIMEOUT_MS) != (int)PB_CMD_LEN) return fail(s, what, addr);
+    if (out && len && t->bulk_out(t->ctx, out, len, PB_TIMEOUT_MS) != (int)len) return fail(s, what, addr);
+    if (in && len && t->bulk_in(t->ctx, in, len, PB_TIMEOUT_MS) != (int)len) return fail(s, what, addr);
+    /* Acknowledgement: a zero-length packet the other way (read into a
+     * one-byte buffer: anything longer is an error, not an overflow) */
+    int rc = in ? t->bulk_out(t->ctx, NULL, 0, ack_timeout) : t->bulk_in(t->ctx, ack, sizeof ack, ack_timeout);
+    if (rc != 0) return fail(s, what, addr);
     s->token++;
     return 0;
 }
@@ -138,6 +158,12 @@ int pb_flash(const struct pb_transport *t, const struct pb_image *img, int reboo
     uint32_t erase_lo = img->addr & ~(PB_SECTOR - 1);
     uint32_t erase_hi = (img->addr + img->len + PB_SECTOR - 1) & ~(PB_SECTOR - 1);
 
+    if (t->reset && t->reset(t->ctx) != 0) {
+        snprintf(err, err_len, "cannot reset the PICOBOOT interface of the RP2040 boot ROM: unplug the board "
+                 "and hold BOOTSEL while plugging it in again");
+        rc = 2;
+        goto out;
+    }
     pb_encode_exclusive(cmd, s.token, PB_EXCLUSIVE);
     if ((rc = run(&s, cmd, "EXCLUSIVE_ACCESS", img->addr, NULL, NULL, 0))) goto out;
     pb_encode_exit_xip(cmd, s.token);
@@ -173,6 +199,10 @@ int pb_flash(const struct pb_transport *t, const struct pb_image *img, int reboo
         /* pc = 0: a normal boot from flash after delay_ms. */
         pb_encode_reboot(cmd, s.token, 0, 0x20042000u, 100);
         if ((rc = run(&s, cmd, "REBOOT", 0, NULL, NULL, 0))) goto out;
+    } else {
+        /* staying in the boot ROM: give its mass-storage drive back */
+        pb_encode_exclusive(cmd, s.token, PB_NOT_EXCLUSIVE);
+        if ((rc = run(&s, cmd, "EXCLUSIVE_ACCESS", 0, NULL, NULL, 0))) goto out;
     }
 out:
     t->close(t->ctx);

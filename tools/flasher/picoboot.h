@@ -9,6 +9,11 @@
  * READ); then the device acknowledges with a zero-length packet in the
  * direction opposite to the data (IN after OUT commands, OUT after IN).
  *
+ * Control requests of the interface (vendor, recipient interface):
+ *   INTERFACE_RESET (0x41, OUT, no data): clears a stalled command state;
+ *   GET_COMMAND_STATUS (0x42, IN, 16 bytes): u32 token, u32 status code,
+ *   u8 command id, u8 in progress — why the last command failed.
+ *
  * The USB layer is behind struct pb_transport, so the whole sequence runs
  * against a fake in tests. */
 #ifndef PICOBOOT_H
@@ -21,7 +26,8 @@
 #define PB_VID              0x2E8Au
 #define PB_PID_RP2040_BOOT  0x0003u
 #define PB_FLASH_BASE       0x10000000u
-#define PB_FLASH_SIZE       (16u * 1024u * 1024u)  /* address space; the Pico has 2 MB */
+#define PB_FLASH_SIZE       (16u * 1024u * 1024u)  /* XIP address space */
+#define PB_FLASH_LIMIT      (2u * 1024u * 1024u)   /* default image limit: the Pico's W25Q16JV */
 #define PB_SECTOR           4096u   /* erase unit */
 #define PB_PAGE             256u    /* program unit */
 #define PB_CMD_LEN          32u
@@ -36,6 +42,26 @@ enum pb_cmd_id {
 };
 
 enum pb_exclusive { PB_NOT_EXCLUSIVE = 0, PB_EXCLUSIVE = 1, PB_EXCLUSIVE_AND_EJECT = 2 };
+
+/* GET_COMMAND_STATUS codes of the RP2040 boot ROM. */
+enum pb_status {
+    PB_STATUS_OK = 0,
+    PB_STATUS_UNKNOWN_CMD = 1,
+    PB_STATUS_INVALID_CMD_LENGTH = 2,
+    PB_STATUS_INVALID_TRANSFER_LENGTH = 3,
+    PB_STATUS_INVALID_ADDRESS = 4,
+    PB_STATUS_BAD_ALIGNMENT = 5,
+    PB_STATUS_INTERLEAVED_WRITE = 6,
+    PB_STATUS_REBOOTING = 7,
+    PB_STATUS_UNKNOWN_ERROR = 8,
+};
+const char *pb_status_name(uint32_t code);
+
+/* Transfer timeouts: every transfer 3 s (as picotool), the acknowledgement
+ * of an erase 10 s (a 4 KB sector erase takes up to 400 ms, longer on worn
+ * parts). */
+#define PB_TIMEOUT_MS       3000u
+#define PB_ERASE_TIMEOUT_MS 10000u
 
 /* Result of pb_transport.open. */
 enum pb_open {
@@ -52,10 +78,16 @@ struct pb_transport {
      * (may be empty) receives a short description for the error line. */
     int (*open)(void *ctx, char *detail, size_t detail_len);
     /* Bulk transfers: bytes transferred, or < 0 on a USB error (cable
-     * pulled, stall, timeout). n == 0 is a zero-length packet. */
-    int (*bulk_out)(void *ctx, const uint8_t *data, size_t n);
-    int (*bulk_in)(void *ctx, uint8_t *data, size_t n);
+     * pulled, stall, timeout after timeout_ms). n == 0 is a zero-length
+     * packet. */
+    int (*bulk_out)(void *ctx, const uint8_t *data, size_t n, unsigned timeout_ms);
+    int (*bulk_in)(void *ctx, uint8_t *data, size_t n, unsigned timeout_ms);
     void (*close)(void *ctx);
+    /* Optional (may be NULL). reset: clear both endpoints' halt and send
+     * INTERFACE_RESET; 0 or < 0. status: GET_COMMAND_STATUS into out[16];
+     * 16 or < 0. */
+    int (*reset)(void *ctx);
+    int (*status)(void *ctx, uint8_t out[16]);
 };
 
 /* Encodes a command into out[32]; returns PB_CMD_LEN. args_len <= 16. */
@@ -78,10 +110,13 @@ struct pb_image {
     uint8_t *data;
 };
 
-/* The whole sequence: open, exclusive access, exit XIP, erase the sectors
- * the image covers, write it in pages, read it back and compare, and only
- * then reboot into it (nothing half-written runs). Returns 0, or 2 with a
- * one-line message (no newline) in err. `progress` may be NULL. */
+/* The whole sequence: open, reset the interface (a previous run may have
+ * left it stalled), exclusive access, exit XIP, erase the sectors the image
+ * covers, write it in pages, read it back and compare, and only then reboot
+ * into it (nothing half-written runs); without reboot, exclusive access is
+ * released instead. Returns 0, or 2 with a one-line message (no newline) in
+ * err, which names the boot ROM's status code when it gives one.
+ * `progress` may be NULL. */
 int pb_flash(const struct pb_transport *t, const struct pb_image *img, int reboot,
              char *err, size_t err_len, void (*progress)(const char *stage, uint32_t done, uint32_t total));
 

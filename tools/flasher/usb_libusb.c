@@ -5,7 +5,8 @@
 #include <libusb.h>
 #include "usb_libusb.h"
 
-#define TIMEOUT_MS 3000
+#define PB_REQ_INTERFACE_RESET 0x41
+#define PB_REQ_GET_COMMAND_STATUS 0x42
 
 struct usb_state {
     libusb_context *usb;
@@ -96,25 +97,47 @@ static int u_open(void *ctx, char *detail, size_t dlen)
     return res;
 }
 
-static int bulk(struct usb_state *s, unsigned char ep, uint8_t *data, size_t n)
+static int bulk(struct usb_state *s, unsigned char ep, uint8_t *data, size_t n, unsigned timeout_ms)
 {
     int done = 0;
     uint8_t dummy;
     if (!s->h) return -1;
-    int rc = libusb_bulk_transfer(s->h, ep, n ? data : &dummy, (int)n, &done, TIMEOUT_MS);
+    int rc = libusb_bulk_transfer(s->h, ep, n ? data : &dummy, (int)n, &done, timeout_ms);
     return rc == 0 ? done : -1;
 }
 
-static int u_out(void *ctx, const uint8_t *data, size_t n)
+static int u_out(void *ctx, const uint8_t *data, size_t n, unsigned timeout_ms)
 {
     struct usb_state *s = ctx;
-    return bulk(s, s->ep_out, (uint8_t *)(uintptr_t)data, n);
+    return bulk(s, s->ep_out, (uint8_t *)(uintptr_t)data, n, timeout_ms);
 }
 
-static int u_in(void *ctx, uint8_t *data, size_t n)
+static int u_in(void *ctx, uint8_t *data, size_t n, unsigned timeout_ms)
 {
     struct usb_state *s = ctx;
-    return bulk(s, s->ep_in, data, n);
+    return bulk(s, s->ep_in, data, n, timeout_ms);
+}
+
+/* Both endpoints' halt cleared, then the interface's own reset request. */
+static int u_reset(void *ctx)
+{
+    struct usb_state *s = ctx;
+    if (!s->h) return -1;
+    if (libusb_clear_halt(s->h, s->ep_in) != 0 || libusb_clear_halt(s->h, s->ep_out) != 0) return -1;
+    int rc = libusb_control_transfer(s->h, LIBUSB_REQUEST_TYPE_VENDOR | LIBUSB_RECIPIENT_INTERFACE |
+                                     LIBUSB_ENDPOINT_OUT, PB_REQ_INTERFACE_RESET, 0, (uint16_t)s->iface,
+                                     NULL, 0, PB_TIMEOUT_MS);
+    return rc == 0 ? 0 : -1;
+}
+
+static int u_status(void *ctx, uint8_t out[16])
+{
+    struct usb_state *s = ctx;
+    if (!s->h) return -1;
+    int rc = libusb_control_transfer(s->h, LIBUSB_REQUEST_TYPE_VENDOR | LIBUSB_RECIPIENT_INTERFACE |
+                                     LIBUSB_ENDPOINT_IN, PB_REQ_GET_COMMAND_STATUS, 0, (uint16_t)s->iface,
+                                     out, 16, PB_TIMEOUT_MS);
+    return rc;
 }
 
 static void u_close(void *ctx)
@@ -137,4 +160,6 @@ void usb_libusb_transport(struct pb_transport *t)
     t->bulk_out = u_out;
     t->bulk_in = u_in;
     t->close = u_close;
+    t->reset = u_reset;
+    t->status = u_status;
 }

@@ -155,6 +155,10 @@ $(FW_OUT)/pico/$(1).uf2: $(FW_OUT)/pico/$(1).bin tools/uf2/uf2conv.py
 endef
 $(eval $(call RP_IMAGE,cgfs,,$(FW_SCENE_SRCS)))
 $(eval $(call RP_IMAGE,cgfs-1core,-DRP2040_SINGLE_CORE=1,$(FW_SCENE_SRCS)))
+# The other panel: an ILI9341 module in landscape, 320x240 (two cores).
+$(eval $(call RP_IMAGE,cgfs-ili9341,-DFW_PANEL=panel_ili9341_320x240 -DFW_WIDTH=320 -DFW_HEIGHT=240,$(FW_SCENE_SRCS)))
+# The ST7789 upside down (FW_ROTATION=2: the module mounted the other way).
+$(eval $(call RP_IMAGE,cgfs-rot2,-DFW_ROTATION=2,$(FW_SCENE_SRCS)))
 # fw_scene_image(IMAGE,SET,FLAGS): an image of the scene set SET (its table,
 # its format), built with FLAGS.
 fw_scene_image = $(eval $(call RP_IMAGE,$(1),$(3) $(FW_$(2)_FRAC_FLAGS),$(FW_$(2)_SRCS)))$(if $(FW_HAVE_SCENEC),\
@@ -176,7 +180,8 @@ $(call fw_scene_image,cgfs-cube-1core,CUBE,$(FW_1CORE_FLAGS) -DFW_FRAMES_PER_SCE
 $(call fw_scene_image,cgfs-rt,RT,-DFW_FRAMES_PER_SCENE=1)
 $(call fw_scene_image,cgfs-rt-1core,RT,$(FW_1CORE_FLAGS) -DFW_FRAMES_PER_SCENE=1)
 
-FW_RP_IMAGES := $(FW_OUT)/pico/cgfs.uf2 $(FW_OUT)/pico/cgfs-1core.uf2 \
+FW_RP_IMAGES := $(FW_OUT)/pico/cgfs.uf2 $(FW_OUT)/pico/cgfs-1core.uf2 $(FW_OUT)/pico/cgfs-ili9341.uf2 \
+                $(FW_OUT)/pico/cgfs-rot2.uf2 \
                 $(if $(FW_HAVE_SCENEC),$(foreach i,cgfs-book cgfs-book-1core cgfs-book-bench cgfs-cube cgfs-cube-1core cgfs-rt cgfs-rt-1core,$(FW_OUT)/pico/$(i).uf2))
 
 .PHONY: firmware-pico
@@ -309,6 +314,8 @@ $(FW_HOST_REF): $(call obj,host,none,tests/fw_host_ref.c) $(call obj,host,fixed,
 
 TEST_DEPS += $(RP2040SIM_DEPS) $(FW_HOST_REF) $(FW_OUT)/pico/cgfs-1core.elf $(FW_OUT)/pico/cgfs-1core.bin
 TESTS     += tests/test_rp2040sim.sh:$(BUILD)
+TEST_DEPS += $(FW_OUT)/pico/cgfs-ili9341.elf $(FW_OUT)/pico/cgfs-rot2.elf
+TESTS     += tests/test_rp2040sim_panels.sh:$(BUILD)
 ifneq ($(FW_HAVE_SCENEC),)
 TEST_DEPS += $(FW_OUT)/pico/cgfs-book-1core.elf $(FW_OUT)/pico/cgfs-cube-1core.elf $(BUILD)/host_sim
 TESTS     += tests/test_rp2040sim_book.sh:$(BUILD) tests/test_rp2040sim_cube.sh:$(BUILD):$(FW_CUBE_FRAMES)

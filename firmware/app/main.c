@@ -47,6 +47,11 @@
 #ifndef FW_PANEL
 #define FW_PANEL panel_st7789_240x240
 #endif
+/* The panel's rotation (0..3, panel.h); odd ones swap its width and height,
+ * which must then be FW_WIDTH x FW_HEIGHT. */
+#ifndef FW_ROTATION
+#define FW_ROTATION 0
+#endif
 
 #define NSTRIPS ((FW_HEIGHT + FW_STRIP_ROWS - 1) / FW_STRIP_ROWS)
 #define MSG_FRAME 0x80000000u
@@ -249,8 +254,12 @@ int main(void)
     *p = 0;
     fw_board_puts(line);
 
-    if (panel_init(&panel, &FW_PANEL, &hal, 0) != 0) {
+    if (panel_init(&panel, &FW_PANEL, &hal, FW_ROTATION) != 0) {
         fw_board_puts("error panel_init failed\r\n");
+        return 1;
+    }
+    if (panel.width != FW_WIDTH || panel.height != FW_HEIGHT) {
+        fw_board_puts("error the panel in this rotation is not FW_WIDTH x FW_HEIGHT\r\n");
         return 1;
     }
     if (dual) fw_board_core1_start(core1_main);

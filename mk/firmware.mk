@@ -291,8 +291,10 @@ TEST_DEPS += $(BUILD)/asan/tests/test_gpio_reset
 TESTS     += $(BUILD)/asan/tests/test_gpio_reset
 endif
 
-# `make flash`: the two-core image through the flasher (FLASH_IMAGE to override).
-FLASH_IMAGE ?= $(FW_OUT)/pico/cgfs.uf2
+# `make flash`: the two-core book image (raytracer-02 and raster-11, three
+# frames each, in a loop) through the flasher; FLASH_IMAGE to override (for
+# example build/firmware/pico/cgfs-cube.uf2, the real-time cube scenes).
+FLASH_IMAGE ?= $(FW_OUT)/pico/$(if $(FW_HAVE_SCENEC),cgfs-book,cgfs).uf2
 flash: $(FLASHER_BIN)
 	$(Q)tools/deps.sh flash
 	$(Q)$(MAKE) --no-print-directory $(FLASH_IMAGE)

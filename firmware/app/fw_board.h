@@ -30,6 +30,15 @@ void fw_board_core1_start(void (*entry)(void));
 /* Inter-core mailbox, blocking, in order (each direction its own queue). */
 void fw_board_send(uint32_t v);
 uint32_t fw_board_recv(void);
+/* Shared memory between the cores: lock/unlock a lock that orders every
+ * access made while holding it (a hardware spinlock and memory barriers);
+ * notify wakes a core in fw_board_wait (an event that is remembered if
+ * the other core is not waiting yet); wait may also return spuriously.
+ * No-ops on single-core boards. */
+void fw_board_lock(void);
+void fw_board_unlock(void);
+void fw_board_notify(void);
+void fw_board_wait(void);
 
 /* Core clock in Hz (for cycle figures). */
 uint32_t fw_board_cpu_hz(void);

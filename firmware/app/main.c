@@ -2,12 +2,14 @@
  * into the image, rendering each frame strip by strip while DMA sends the
  * previous strip, and shows the frame rate on screen and over UART.
  *
- * Strips: FW_STRIP_ROWS rows of FW_WIDTH pixels. With one core, strips
- * alternate between two buffers: strip k renders into buffer k&1 while DMA
- * sends strip k-1. With two cores, core 0 renders the even strips and core 1
- * the odd ones, each into its own pair of buffers; core 0 sends all strips
- * in order. Core 1 reuses a buffer only after core 0 returns a credit for it
- * (sent when that strip's DMA has finished).
+ * Strips: FW_STRIP_ROWS rows of FW_WIDTH pixels, rendered into a ring of
+ * FW_RING buffers (strip k into ring[k % FW_RING]) while DMA sends the ones
+ * before them. The cores take strips in order from a shared counter, each
+ * the next one whose buffer is free (strip k - FW_RING has been sent), so
+ * the work balances itself whatever the strips cost; core 0 also sends the
+ * strips in order as they are done, and renders when the next one to send
+ * is not done yet. With one core the same loop renders strip k while strip
+ * k - 1 is on the bus.
  *
  * UART lines (115200 8N1), one per event, parsed by tools/rp2040sim:
  *   boot board=B cores=N cpu_hz=H size=WxH strip_rows=R scenes=S
@@ -53,13 +55,24 @@
 #define FW_ROTATION 0
 #endif
 
+#ifndef FW_RING
+#define FW_RING 4
+#endif
+
 #define NSTRIPS ((FW_HEIGHT + FW_STRIP_ROWS - 1) / FW_STRIP_ROWS)
 #define MSG_FRAME 0x80000000u
-#define MSG_CREDIT 1u
-#define MSG_ERROR 0xffffffffu
+#define MSG_FRAME_DONE 1u
 
-/* [0], [1]: core 0's strips; [2], [3]: core 1's. */
-static uint16_t strip_buf[4][FW_WIDTH * FW_STRIP_ROWS];
+static uint16_t ring[FW_RING][FW_WIDTH * FW_STRIP_ROWS];
+/* the progressive preview's strips (core 1 may fill the ring meanwhile) */
+static uint16_t preview_buf[2][FW_WIDTH * FW_STRIP_ROWS];
+
+/* Shared by the cores, under fw_board_lock(). */
+static struct {
+    uint32_t claim;             /* next strip to take */
+    uint32_t sent;              /* strips whose transfer has finished */
+    uint8_t done[NSTRIPS];      /* 0 not yet, 1 rendered, 2 failed */
+} sh;
 static struct render_ctx ctx[2];
 static struct hal hal;
 static struct panel panel;
@@ -115,6 +128,47 @@ static char *put_fps(char *p, uint32_t us)
     return p;
 }
 
+/* ---- strips shared by the cores ------------------------------------------- */
+
+/* The next strip whose buffer is free: its index; NSTRIPS when every strip
+ * is taken; -1 when the next one's buffer is still being sent. */
+static int claim_strip(void)
+{
+    int r;
+    fw_board_lock();
+    if (sh.claim >= NSTRIPS) r = NSTRIPS;
+    else if (sh.claim >= sh.sent + FW_RING) r = -1;
+    else r = (int)sh.claim++;
+    fw_board_unlock();
+    return r;
+}
+
+static void mark_done(unsigned k, int ok)
+{
+    fw_board_lock();
+    sh.done[k] = ok ? 1u : 2u;
+    fw_board_unlock();
+    fw_board_notify();
+}
+
+static unsigned strip_state(unsigned k)
+{
+    fw_board_lock();
+    unsigned v = sh.done[k];
+    fw_board_unlock();
+    return v;
+}
+
+/* DMA finished sending strip k (called by the HAL on core 0): its buffer
+ * and every one before it are free again. */
+static void strip_sent(void *arg)
+{
+    fw_board_lock();
+    sh.sent = (uint32_t)(uintptr_t)arg + 1u;
+    fw_board_unlock();
+    fw_board_notify();
+}
+
 /* ---- core 1 --------------------------------------------------------------- */
 
 static void core1_main(void)
@@ -130,20 +184,18 @@ static void core1_main(void)
             cur = ok ? (int)si : -1;
         }
         if (ok) ok = render_begin_frame(&ctx[1], (uint16_t)(m & 0xffffu)) == 0;
-        unsigned j = 0;
-        for (unsigned k = 1; k < NSTRIPS; k += 2, j++) {
-            if (j >= 2) (void)fw_board_recv();  /* credit for buffer j & 1 */
-            int rc = ok ? render_one(&ctx[1], k, strip_buf[2 + (j & 1u)]) : -1;
-            fw_board_send(rc == 0 ? k : MSG_ERROR);
+        for (;;) {
+            int k = claim_strip();
+            if (k == NSTRIPS) break;
+            if (k < 0) {
+                fw_board_wait();        /* core 0 notifies when a strip has been sent */
+                continue;
+            }
+            /* a failed strip is still marked, so that core 0 never waits for it */
+            mark_done((unsigned)k, ok && render_one(&ctx[1], (unsigned)k, ring[k % FW_RING]) == 0);
         }
-        for (unsigned i = 0; i < (j < 2 ? j : 2); i++) (void)fw_board_recv();
+        fw_board_send(MSG_FRAME_DONE);
     }
-}
-
-static void strip_sent_credit(void *arg)
-{
-    (void)arg;
-    fw_board_send(MSG_CREDIT);
 }
 
 /* ---- core 0 --------------------------------------------------------------- */
@@ -174,6 +226,12 @@ static uint32_t frame(unsigned si, uint16_t f, uint32_t last_us, int dual)
 
     uint64_t t0 = hal.now_us(hal.ctx);
     if (render_begin_frame(&ctx[0], f) != 0) return 0;
+    /* core 1 is idle between frames (it said so with MSG_FRAME_DONE) */
+    fw_board_lock();
+    sh.claim = 0;
+    sh.sent = 0;
+    for (unsigned k = 0; k < NSTRIPS; k++) sh.done[k] = 0;
+    fw_board_unlock();
     if (dual) fw_board_send(MSG_FRAME | ((uint32_t)si << 16) | f);
     int err = 0;
     if (FW_PROGRESSIVE && render_set_pass(&ctx[0], RENDER_PASS_COARSE) == 0) {
@@ -185,7 +243,7 @@ static uint32_t frame(unsigned si, uint16_t f, uint32_t last_us, int dual)
         dcs_set_window(&panel.dcs, 0, 0, FW_WIDTH - 1, FW_HEIGHT - 1);
         dcs_write_begin(&panel.dcs, 0);
         for (unsigned k = 0; k < NSTRIPS; k++) {
-            uint16_t *buf = strip_buf[k & 1u];
+            uint16_t *buf = preview_buf[k & 1u];
             uint16_t y0, y1;
             strip_rows(k, &y0, &y1);
             if (render_one(&ctx[0], k, buf) != 0) err = 1;
@@ -203,25 +261,35 @@ static uint32_t frame(unsigned si, uint16_t f, uint32_t last_us, int dual)
     }
     dcs_set_window(&panel.dcs, 0, 0, FW_WIDTH - 1, FW_HEIGHT - 1);
     dcs_write_begin(&panel.dcs, 0);
-    for (unsigned k = 0; k < NSTRIPS; k++) {
-        uint16_t *buf;
-        uint16_t y0, y1;
-        strip_rows(k, &y0, &y1);
-        if (dual && (k & 1u)) {
-            uint32_t m = fw_board_recv();
-            if (m != k) err = 1;
-            buf = strip_buf[2 + ((k / 2u) & 1u)];
-        } else {
-            buf = strip_buf[(dual ? k / 2u : k) & 1u];
-            if (render_one(&ctx[0], k, buf) != 0) err = 1;
+    for (unsigned next = 0; next < NSTRIPS;) {
+        unsigned st = strip_state(next);
+        if (st) {
+            /* the next strip in order is done: on the bus with it */
+            uint16_t *buf = ring[next % FW_RING];
+            uint16_t y0, y1;
+            strip_rows(next, &y0, &y1);
+            if (st != 1) err = 1;
+            if (overlay)
+                font5x7_draw(buf, FW_WIDTH, y0, y1, 2, 2, 2, text, 0xffffu, 0x0000u);
+            fw_board_pixels_async(&hal, buf, (size_t)(y1 - y0) * FW_WIDTH, strip_sent,
+                                  (void *)(uintptr_t)next);
+            next++;
+            continue;
         }
-        if (overlay)
-            font5x7_draw(buf, FW_WIDTH, y0, y1, 2, 2, 2, text, 0xffffu, 0x0000u);
-        fw_board_pixels_async(&hal, buf, (size_t)(y1 - y0) * FW_WIDTH,
-                              dual && (k & 1u) ? strip_sent_credit : NULL, NULL);
+        int k = claim_strip();
+        if (k >= 0 && k < NSTRIPS) {
+            mark_done((unsigned)k, render_one(&ctx[0], (unsigned)k, ring[k % FW_RING]) == 0);
+            continue;
+        }
+        /* the next strip is core 1's and not done yet: let the bus finish
+         * (freeing the buffers core 1 may be waiting for), then sleep until
+         * core 1 marks a strip */
+        hal.spi_wait(hal.ctx);
+        if (!strip_state(next)) fw_board_wait();
     }
     hal.spi_wait(hal.ctx);
     dcs_write_end(&panel.dcs);
+    if (dual) (void)fw_board_recv();     /* MSG_FRAME_DONE: core 1 is idle again */
     uint64_t us = hal.now_us(hal.ctx) - t0;
     if (err) {
         say("error scene=", name, " render_strip failed\r\n");

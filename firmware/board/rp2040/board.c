@@ -121,6 +121,18 @@ void board_puts(const char *s)
 
 uint32_t board_core_id(void) { return REG(SIO_CPUID); }
 
+void board_lock(void)
+{
+    while (REG(SIO_SPINLOCK(31)) == 0) {}
+    __asm__ volatile("dmb" ::: "memory");
+}
+
+void board_unlock(void)
+{
+    __asm__ volatile("dmb" ::: "memory");
+    REG(SIO_SPINLOCK(31)) = 0;
+}
+
 void board_fifo_push(uint32_t v)
 {
     while (!(REG(SIO_FIFO_ST) & SIO_FIFO_RDY)) {}

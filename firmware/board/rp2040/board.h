@@ -40,6 +40,11 @@ uint32_t board_core_id(void);
  * through the boot ROM's SIO FIFO handshake. */
 void board_core1_launch(void (*entry)(void), uint32_t *stack_top);
 
+/* The inter-core lock: SIO spinlock 31, with memory barriers (an access
+ * inside it is not moved out by the compiler or the bus). */
+void board_lock(void);
+void board_unlock(void);
+
 /* Inter-core FIFO (8 words each direction); blocking push and pop. */
 void board_fifo_push(uint32_t v);
 uint32_t board_fifo_pop(void);

@@ -35,4 +35,8 @@ void fw_board_core1_start(void (*entry)(void))
 
 void fw_board_send(uint32_t v) { board_fifo_push(v); }
 uint32_t fw_board_recv(void) { return board_fifo_pop(); }
+void fw_board_lock(void) { board_lock(); }
+void fw_board_unlock(void) { board_unlock(); }
+void fw_board_notify(void) { __asm__ volatile("dmb\n sev" ::: "memory"); }
+void fw_board_wait(void) { __asm__ volatile("wfe" ::: "memory"); }
 uint32_t fw_board_cpu_hz(void) { return RP2040_SYS_MHZ * 1000000u; }

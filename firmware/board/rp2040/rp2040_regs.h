@@ -83,6 +83,7 @@
 #define SIO_GPIO_OUT_SET   (SIO_BASE + 0x014)
 #define SIO_GPIO_OUT_CLR   (SIO_BASE + 0x018)
 #define SIO_GPIO_OE_SET    (SIO_BASE + 0x024)
+#define SIO_SPINLOCK(n)    (SIO_BASE + 0x100 + 4u * (n))
 #define SIO_FIFO_ST        (SIO_BASE + 0x050)
 #define SIO_FIFO_WR        (SIO_BASE + 0x054)
 #define SIO_FIFO_RD        (SIO_BASE + 0x058)

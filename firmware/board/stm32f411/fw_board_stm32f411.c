@@ -19,4 +19,8 @@ unsigned fw_board_cores(void) { return 1u; }
 void fw_board_core1_start(void (*entry)(void)) { (void)entry; }
 void fw_board_send(uint32_t v) { (void)v; }
 uint32_t fw_board_recv(void) { return 0; }
+void fw_board_lock(void) {}
+void fw_board_unlock(void) {}
+void fw_board_notify(void) {}
+void fw_board_wait(void) {}
 uint32_t fw_board_cpu_hz(void) { return STM32_SYS_HZ; }

@@ -17,6 +17,7 @@
     .syntax unified
     .cpu cortex-m0plus
     .thumb
+    .include "boot2_enter_app.inc"
 
     .equ SSI_BASE,        0x18000000
     .equ SSI_CTRLR0,      0x00
@@ -30,8 +31,6 @@
      * ADDR_L = 6 (24-bit address in 4-bit units, bits 5:2), TRANS_TYPE = 0 (all serial) */
     .equ SPI_CTRLR0_XIP,  (0x03 << 24) | (2 << 8) | (6 << 2)
     .equ FLASH_DIV,       4
-    .equ APP_VECTORS,     0x10000100
-    .equ PPB_VTOR,        0xe000ed08
 
     .section .text.boot2, "ax"
     .global boot2_entry
@@ -52,11 +51,5 @@ boot2_entry:
     movs r0, #1
     str  r0, [r3, #SSI_SSIENR]
 
-    /* Enter the application: VTOR, MSP and the reset vector from its table. */
-    ldr  r0, =APP_VECTORS
-    ldr  r1, =PPB_VTOR
-    str  r0, [r1]
-    ldmia r0, {r0, r1}
-    msr  msp, r0
-    bx   r1
+    boot2_enter_app
     .ltorg

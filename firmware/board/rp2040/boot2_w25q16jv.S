@@ -25,6 +25,7 @@
     .syntax unified
     .cpu cortex-m0plus
     .thumb
+    .include "boot2_enter_app.inc"
 
     .equ SSI_BASE,          0x18000000
     .equ SSI_CTRLR0,        0x00
@@ -63,8 +64,6 @@
     /* then: no instruction, address and mode on four lines (TRANS_TYPE = 2),
      * XIP_CMD = the mode bits sent after the address */
     .equ SPI_CTRLR0_XIP,    (MODE_CONTINUOUS << 24) | (4 << 11) | (0 << 8) | (8 << 2) | 2
-    .equ APP_VECTORS,       0x10000100
-    .equ PPB_VTOR,          0xe000ed08
 
     .section .text.boot2, "ax"
     .global boot2_entry
@@ -142,13 +141,7 @@ quad_enabled:
     movs r0, #1
     str  r0, [r3, #SSI_SSIENR]
 
-    /* Enter the application: VTOR, MSP and the reset vector from its table. */
-    ldr  r0, =APP_VECTORS
-    ldr  r1, =PPB_VTOR
-    str  r0, [r1]
-    ldmia r0, {r0, r1}
-    msr  msp, r0
-    bx   r1
+    boot2_enter_app
 
 /* until the transmit FIFO is empty and the SSI idle (r3 = SSI_BASE) */
 wait_ssi:

@@ -25,6 +25,19 @@ static int load(const char *path, void **scene, char *err, size_t errlen)
     return rc;
 }
 
+static int parse_text(const char *path, const char *text, size_t len, void **scene, char *err, size_t errlen)
+{
+    struct scene *s = NULL;
+    int rc = scene_parse_text(path, text, len, &s, err, errlen);
+    *scene = s;
+    return rc;
+}
+
+static int read_text(const char *path, char **text, size_t *len, char *err, size_t errlen)
+{
+    return scene_read_text(path, text, len, err, errlen);
+}
+
 static void free_scene(void *scene) { scene_free(scene); }
 
 static void info(const void *scene, struct scene_info *out)
@@ -35,6 +48,9 @@ static void info(const void *scene, struct scene_info *out)
     out->canvas_w = s->canvas_w;
     out->canvas_h = s->canvas_h;
     out->frames = s->frames;
+    out->nlights = s->nlights;
+    out->uses_lights = s->kind == SCENE_RAYTRACE ? !s->rt.unlit : s->ras.shading != SHADE_NONE;
+    out->ninstances = s->kind == SCENE_RAYTRACE ? 0 : s->ninstances;
 }
 
 static size_t work_size(const void *scene, uint16_t w, uint16_t h, uint16_t strip_rows)
@@ -66,6 +82,6 @@ static void exact_methods(void *scene)
 }
 
 const struct core_api API = {
-    NUM_NAME, load, free_scene, info, work_size, init, render_begin_frame, render_strip,
+    NUM_NAME, load, parse_text, read_text, free_scene, info, work_size, init, render_begin_frame, render_strip,
     &num_saturations, API_FRAC, format, exact_methods, render_set_pass,
 };

@@ -19,11 +19,18 @@ struct scene_info {
     int kind;                  /* enum scene_kind */
     uint16_t canvas_w, canvas_h;
     uint16_t frames;
+    uint16_t nlights;
+    uint8_t uses_lights;       /* ray tracer: not unlit; rasterizer: a shading mode other than none */
+    uint16_t ninstances;       /* rasterizer: model instances (0 for the ray tracer) */
 };
 
 struct core_api {
     const char *numeric;       /* "fixed", "float", "double" */
     int (*scene_load)(const char *path, void **scene, char *err, size_t errlen);
+    /* scene_parse.h's scene_parse_text and scene_read_text (the text is the
+     * same for every mode: read once, parse per mode) */
+    int (*scene_parse)(const char *path, const char *text, size_t len, void **scene, char *err, size_t errlen);
+    int (*scene_read)(const char *path, char **text, size_t *len, char *err, size_t errlen);
     void (*scene_free)(void *scene);
     void (*scene_info)(const void *scene, struct scene_info *info);
     size_t (*work_size)(const void *scene, uint16_t w, uint16_t h, uint16_t strip_rows);

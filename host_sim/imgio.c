@@ -13,10 +13,17 @@
 #include <unistd.h>
 
 /* The temporary file being written, removed by the signal handler if the
- * program is interrupted (SIGINT, SIGTERM, SIGHUP) so nothing half-written
- * is left behind even then. */
+ * program is killed by a signal it can catch, so nothing half-written is
+ * left behind even then (SIGKILL cannot be caught: a temporary
+ * ".NAME.XXXXXX" can then remain, never a half-written NAME). SIGPIPE and
+ * SIGXFSZ (a FIFO's reader gone, `ulimit -f` exceeded) are ignored instead,
+ * so that the write fails with EPIPE / EFBIG and is reported on one line. */
 static char tmp_name[4096];
 static volatile sig_atomic_t tmp_live;
+/* The files this run has written (removed again if a later output fails). */
+static char done_name[3][4096];
+static int done_count;
+int img_fault_signal_in_write;
 
 static void on_signal(int sig)
 {
@@ -30,10 +37,26 @@ static void install_handlers(void)
     static int done;
     if (done) return;
     done = 1;
-    signal(SIGINT, on_signal);
-    signal(SIGTERM, on_signal);
-    signal(SIGHUP, on_signal);
+    static const int sigs[] = { SIGINT, SIGTERM, SIGHUP, SIGQUIT, SIGALRM, SIGUSR1, SIGUSR2,
+                                SIGXCPU, SIGVTALRM, SIGPROF };
+    struct sigaction sa;
+    memset(&sa, 0, sizeof sa);
+    sa.sa_handler = on_signal;
+    sigfillset(&sa.sa_mask);
+    for (size_t i = 0; i < sizeof sigs / sizeof sigs[0]; i++) sigaction(sigs[i], &sa, NULL);
+    signal(SIGPIPE, SIG_IGN);
+    signal(SIGXFSZ, SIG_IGN);
 }
+
+void img_remove_written(void)
+{
+    for (int i = 0; i < done_count; i++) unlink(done_name[i]);
+    done_count = 0;
+}
+
+/* A FIFO or character device is written in place (renaming a file over it
+ * would replace the device by a regular file). */
+static int in_place;
 
 enum img_format img_format_of(const char *path)
 {
@@ -81,9 +104,15 @@ int img_check_dest(const char *path, char *err, size_t errlen)
         snprintf(err, errlen, "%s: directory %s is not writable", path, dir);
         return 2;
     }
-    if (!stat(path, &st) && S_ISDIR(st.st_mode)) {
-        snprintf(err, errlen, "%s: is a directory", path);
-        return 2;
+    if (!stat(path, &st)) {
+        if (S_ISDIR(st.st_mode)) {
+            snprintf(err, errlen, "%s: is a directory", path);
+            return 2;
+        }
+        if (!S_ISREG(st.st_mode) && !S_ISFIFO(st.st_mode) && !S_ISCHR(st.st_mode)) {
+            snprintf(err, errlen, "%s: not a regular file, FIFO or character device", path);
+            return 2;
+        }
     }
     return 0;
 }
@@ -100,6 +129,17 @@ static FILE *tmp_open(const char *path, char *err, size_t errlen)
         return NULL;
     }
     install_handlers();
+    struct stat st;
+    in_place = !stat(path, &st) && (S_ISFIFO(st.st_mode) || S_ISCHR(st.st_mode));
+    if (in_place) {
+        int pfd = open(path, O_WRONLY);
+        FILE *pf = pfd < 0 ? NULL : fdopen(pfd, "wb");
+        if (!pf) {
+            snprintf(err, errlen, "%s: cannot open: %s", path, strerror(errno));
+            if (pfd >= 0) close(pfd);
+        }
+        return pf;
+    }
     int fd = mkstemp(tmp_name);
     if (fd < 0) {
         snprintf(err, errlen, "%s: cannot create a file in %s: %s", path, dir, strerror(errno));
@@ -128,6 +168,14 @@ static int tmp_close(FILE *f, const char *path, int ok, char *err, size_t errlen
         snprintf(err, errlen, "%s: write failed: %s", path, strerror(errno));
         ok = 0;
     }
+    if (in_place) {
+        if (fclose(f) && ok) {
+            snprintf(err, errlen, "%s: close failed: %s", path, strerror(errno));
+            ok = 0;
+        }
+        in_place = 0;
+        return ok ? 0 : 1;
+    }
     if (ok && fsync(fileno(f))) {
         snprintf(err, errlen, "%s: fsync failed: %s", path, strerror(errno));
         ok = 0;
@@ -142,6 +190,7 @@ static int tmp_close(FILE *f, const char *path, int ok, char *err, size_t errlen
     }
     if (!ok) unlink(tmp_name);
     tmp_live = 0;
+    if (ok && done_count < 3) snprintf(done_name[done_count++], sizeof done_name[0], "%s", path);
     return ok ? 0 : 1;
 }
 
@@ -250,6 +299,10 @@ int img_write_raw565(const char *path, const uint16_t *px, unsigned w, unsigned 
             row[2 * x + 1] = (uint8_t)(src[x] >> 8);
         }
         ok = fwrite(row, 2, w, f) == w;
+        if (img_fault_signal_in_write && y == 0) {
+            fflush(f);
+            raise(SIGTERM);
+        }
     }
     free(row);
     if (!ok) snprintf(err, errlen, "%s: write failed: %s", path, strerror(errno));

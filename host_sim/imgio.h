@@ -5,6 +5,11 @@
  * any failure the temporary file is removed, so the destination is either
  * the old file (or absent) or the complete new one, never half-written.
  *
+ * A destination that is a FIFO or a character device (/dev/stdout) is
+ * written in place instead. Signals that can be caught remove the temporary
+ * file; SIGPIPE and SIGXFSZ are ignored so that the write fails with a
+ * message (a FIFO's reader gone, `ulimit -f`).
+ *
  * Return values follow host_sim's exit codes: 0 success; 2 the destination
  * cannot be created (missing or non-writable directory, bad name: a usage
  * error); 1 any other failure (short write, fsync, rename, libpng). One line
@@ -34,6 +39,14 @@ int img_write_raw565(const char *path, const uint16_t *px, unsigned w, unsigned 
 /* 8-bit RGB triples (3*w*h bytes, row-major) as binary PPM (P6). */
 int img_write_ppm888(const char *path, const uint8_t *rgb, unsigned w, unsigned h,
                      char *err, size_t errlen);
+
+/* Tests: img_write_raw565 sends SIGTERM to the process after its first row,
+ * with the temporary file half-written. */
+extern int img_fault_signal_in_write;
+
+/* Removes the files written so far in this run (when a later output fails,
+ * none of the run's outputs is left). */
+void img_remove_written(void);
 
 /* 0 if a file could be created next to `path` (its directory exists and is
  * writable), else 2 with a message: lets host_sim refuse before rendering. */

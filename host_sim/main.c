@@ -48,7 +48,9 @@ static const char usage_text[] =
     "  --strip-rows N                rows per strip (default 16)\n"
     "  --num-frac F                  fixed point in Q(31-F).F, F in 12..20, instead of\n"
     "                                the scene's own format\n"
-    "  --inject-fault NAME           make the panel driver misbehave (tests): %s\n"
+    "  --inject-fault NAME           make the panel driver misbehave (tests): %s;\n"
+    "                                signal-in-write: SIGTERM to itself in the middle of\n"
+    "                                writing --out-raw (tests: nothing is left behind)\n"
     "exit status: 0 ok, 1 internal error, 2 usage or input error,\n"
     "             3 panel protocol violation\n";
 
@@ -164,7 +166,10 @@ static int parse_args(int argc, char **argv, struct opts *o)
                 return fail(EXIT_USAGE, "bad --num-frac '%s' (%d..%d)", val, SCENE_FORMAT_FRAC_MIN,
                             SCENE_FORMAT_FRAC_MAX);
             o->num_frac = (int)f;
-        } else if (!strcmp(name, "--inject-fault")) o->fault = val;
+        } else if (!strcmp(name, "--inject-fault")) {
+            if (!strcmp(val, "signal-in-write")) img_fault_signal_in_write = 1;   /* imgio's, not the panel's */
+            else o->fault = val;
+        }
     }
     if (!o->scene) return fail(EXIT_USAGE, "--scene FILE is required (try --help)");
     if (o->num_frac && strcmp(o->numeric ? o->numeric : "fixed", "fixed") &&
@@ -219,11 +224,16 @@ struct core {
     void *work;
 };
 
+/* The scene file's text, read once (a FIFO or /dev/stdin can be read only
+ * once) and parsed by each core that needs it. */
+static char *scene_text;
+static size_t scene_len;
+
 static int core_open(struct core *c, const struct core_api *api, const char *path)
 {
     char err[512] = "";
     c->api = api;
-    if (api->scene_load(path, &c->scene, err, sizeof err)) {
+    if (api->scene_parse(path, scene_text, scene_len, &c->scene, err, sizeof err)) {
         fprintf(stderr, "%s\n", err[0] ? err : "scene: cannot load");
         return EXIT_USAGE;
     }
@@ -357,10 +367,35 @@ static int run(const struct opts *o, struct core *c, struct core *ref, struct pa
         return fail(EXIT_USAGE, "%s: cannot open scene: %s", o->scene, strerror(errno));
     if (S_ISDIR(st.st_mode))
         return fail(EXIT_USAGE, "%s: cannot open scene: is a directory", o->scene);
+    /* an output must not overwrite the scene, nor two outputs each other */
+    for (int i = 0; i < 3; i++) {
+        struct stat so;
+        if (!outs[i]) continue;
+        if (!stat(outs[i], &so) && so.st_dev == st.st_dev && so.st_ino == st.st_ino && S_ISREG(st.st_mode))
+            return fail(EXIT_USAGE, "%s: is the scene file; refusing to overwrite it", outs[i]);
+        for (int j = 0; j < i; j++)
+            if (outs[j] && !strcmp(outs[i], outs[j]))
+                return fail(EXIT_USAGE, "%s: given as two outputs", outs[i]);
+    }
+    if (core_api_double.scene_read(o->scene, &scene_text, &scene_len, err, sizeof err)) {
+        fprintf(stderr, "%s\n", err);
+        return EXIT_USAGE;
+    }
     /* The scene's canvas (for --panel none) from the double parse, which holds
      * any scene the format analysis may accept. */
     if ((rc = core_open(c, !strcmp(numeric, "fixed") ? &core_api_double : core_api_by_name(numeric), o->scene)))
         return rc;
+
+    /* valid, but almost certainly not what was meant: said, not refused */
+    if (c->info.uses_lights && c->info.nlights == 0 && (c->info.kind == SCENE_RAYTRACE || c->info.ninstances))
+        fprintf(stderr, "host_sim: warning: %s: no lights: every lit surface renders black%s\n", o->scene,
+                c->info.kind == SCENE_RAYTRACE ? " (add a light, or unlit = on)" : " (add a light, or shading = none)");
+    if (!c->info.uses_lights && c->info.nlights && c->info.kind != SCENE_RAYTRACE)
+        fprintf(stderr, "host_sim: warning: %s: %u lights, but no shading mode uses them (shading = none)\n",
+                o->scene, (unsigned)c->info.nlights);
+    if (!o->out && !o->out_raw && !o->out_rgb888 && !o->stats && !o->summary && !o->compare)
+        fprintf(stderr, "host_sim: warning: no output given (--out, --out-raw, --out-rgb888, --stats, --summary): "
+                        "the frame is rendered and discarded\n");
 
     unsigned w = o->width, h = o->height;
     if (!o->has_size) {
@@ -476,13 +511,14 @@ static int run(const struct opts *o, struct core *c, struct core *ref, struct pa
     /* What the glass shows (or the framebuffer) after the last frame. */
     if (o->out || o->out_raw) {
         if ((rc = panel_out_read(*pp, b->fb, err, sizeof err))) return fail(rc, "%s", err);
+        /* a failed output removes the ones this run wrote before it */
         if (o->out && (rc = img_write_565(o->out, img_format_of(o->out), b->fb, w, h, w, err, sizeof err)))
-            return fail(rc, "%s", err);
+            return img_remove_written(), fail(rc, "%s", err);
         if (o->out_raw && (rc = img_write_raw565(o->out_raw, b->fb, w, h, w, err, sizeof err)))
-            return fail(rc, "%s", err);
+            return img_remove_written(), fail(rc, "%s", err);
     }
     if (o->out_rgb888 && (rc = img_write_ppm888(o->out_rgb888, b->rgb, w, h, err, sizeof err)))
-        return fail(rc, "%s", err);
+        return img_remove_written(), fail(rc, "%s", err);
 
     if (o->summary) {
         char fmt[16] = "-";

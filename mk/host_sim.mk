@@ -49,6 +49,9 @@ $(foreach v,$(VARIANTS),$(eval $(call HOST_SIM_LINK,$(v))))
 PROGRAMS  += $(HOST_SIM_BIN_host)
 TEST_DEPS += $(HOST_SIM_BIN_asan) $(HOST_SIM_BIN_host)
 TESTS     += tests/test_host_sim.sh:$(HOST_SIM_BIN_asan)
+# input/output faults (FIFOs, devices, ulimit -f, signals) of host_sim and scenec
+TEST_DEPS += $(BUILD)/scenec
+TESTS     += tests/test_io_faults.sh:$(HOST_SIM_BIN_asan):$(BUILD)/scenec
 TESTS     += tests/test_make_run.sh:$(BUILD)
 
 # `make run`: every scene in firmware/scenes/ through host_sim (ST7789

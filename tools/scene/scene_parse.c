@@ -1561,9 +1561,10 @@ int scene_depth_bits(const struct scene *s, double *far_out, double *step_out, d
     return step <= rmin / 256 ? 16 : 32;
 }
 
-int scene_load(const char *path, struct scene **out, char *err, size_t errlen)
+int scene_read_text(const char *path, char **text, size_t *len, char *err, size_t errlen)
 {
-    *out = NULL;
+    *text = NULL;
+    *len = 0;
     FILE *f = fopen(path, "rb");
     if (!f) {
         snprintf(err, errlen, "%s:1:1: error: cannot open file: %s", path, strerror(errno));
@@ -1591,13 +1592,31 @@ int scene_load(const char *path, struct scene **out, char *err, size_t errlen)
         snprintf(err, errlen, "%s:1:1: error: %s", path, buf ? "read error" : "out of memory");
         return 2;
     }
+    *text = buf;
+    *len = n;
+    return 0;
+}
+
+int scene_parse_text(const char *path, const char *text, size_t len, struct scene **out, char *err,
+                     size_t errlen)
+{
+    *out = NULL;
     char dir[1024] = "";
     const char *slash = strrchr(path, '/');
     if (slash && (size_t)(slash - path) + 1 < sizeof dir) {
         memcpy(dir, path, (size_t)(slash - path) + 1);
         dir[slash - path + 1] = 0;
     }
-    int rc = parse(path, dir, buf, n, out, err, errlen);
+    return parse(path, dir, text, len, out, err, errlen);
+}
+
+int scene_load(const char *path, struct scene **out, char *err, size_t errlen)
+{
+    char *buf;
+    size_t n;
+    *out = NULL;
+    if (scene_read_text(path, &buf, &n, err, errlen)) return 2;
+    int rc = scene_parse_text(path, buf, n, out, err, errlen);
     /* the scene keeps no pointer into the text */
     free(buf);
     return rc;

@@ -23,6 +23,16 @@
  * one line "FILE:LINE:COLUMN: error: MESSAGE" (no newline) into err. */
 int scene_load(const char *path, struct scene **out, char *err, size_t errlen);
 
+/* The two halves of scene_load, for a caller that parses one file several
+ * times (once per numeric mode) but must read it once (a FIFO, /dev/stdin):
+ * scene_read_text reads FILE (at most SCENE_MAX_BYTES + 1 bytes) into a
+ * malloc'ed *text (free() it), 0 or 2 with the line in err; scene_parse_text
+ * parses text as the content of FILE (image files relative to its
+ * directory); the scene keeps no pointer into text. */
+int scene_read_text(const char *path, char **text, size_t *len, char *err, size_t errlen);
+int scene_parse_text(const char *path, const char *text, size_t len, struct scene **out, char *err,
+                     size_t errlen);
+
 /* The same from memory (fuzzing, tests). `name` is used in messages and as
  * the default scene name; image files cannot be referenced (no directory). */
 int scene_parse_mem(const char *name, const char *text, size_t len, struct scene **out,

@@ -22,10 +22,13 @@
  * every other member has the same size and alignment on both.
  */
 #include <math.h>
+#include <signal.h>
 #include <stdarg.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
+#include <unistd.h>
 #include "core_api.h"
 #include "scene_format.h"
 #include "scene_parse.h"
@@ -37,6 +40,60 @@ extern const struct core_api core_api_fixed12;
 /* ---- output helpers --------------------------------------------------- */
 
 static FILE *out;
+
+/* The outputs are written to temporary files next to them and renamed into
+ * place only when both are complete (the .c last: it is what make waits
+ * for), so an interrupted or failed run leaves the old files or none, never
+ * a half-written one; a caught signal removes the temporaries. */
+static char tmp_path[2][1100];
+static volatile sig_atomic_t tmp_live[2];
+
+static void on_signal(int sig)
+{
+    for (int i = 0; i < 2; i++)
+        if (tmp_live[i]) unlink(tmp_path[i]);
+    signal(sig, SIG_DFL);
+    raise(sig);
+}
+
+static FILE *tmp_create(int i, const char *final)
+{
+    const char *slash = strrchr(final, '/');
+    int dirlen = slash ? (int)(slash - final) + 1 : 0;
+    if (snprintf(tmp_path[i], sizeof tmp_path[i], "%.*s.%s.XXXXXX", dirlen, final, slash ? slash + 1 : final) >=
+        (int)sizeof tmp_path[i])
+        return NULL;
+    static int handlers;
+    if (!handlers) {
+        handlers = 1;
+        const int sigs[] = { SIGINT, SIGTERM, SIGHUP, SIGQUIT, SIGALRM, SIGUSR1, SIGUSR2, SIGXCPU };
+        for (size_t k = 0; k < sizeof sigs / sizeof sigs[0]; k++) signal(sigs[k], on_signal);
+        signal(SIGPIPE, SIG_IGN);
+        signal(SIGXFSZ, SIG_IGN);
+    }
+    int fd = mkstemp(tmp_path[i]);
+    if (fd < 0) return NULL;
+    tmp_live[i] = 1;
+    mode_t mask = umask(0);
+    umask(mask);
+    (void)fchmod(fd, 0666 & ~mask);
+    FILE *f = fdopen(fd, "w");
+    if (!f) {
+        close(fd);
+        unlink(tmp_path[i]);
+        tmp_live[i] = 0;
+    }
+    return f;
+}
+
+static void tmp_discard(void)
+{
+    for (int i = 0; i < 2; i++)
+        if (tmp_live[i]) {
+            unlink(tmp_path[i]);
+            tmp_live[i] = 0;
+        }
+}
 static size_t flash_bytes;
 static const char *outh_path;   /* const data emitted, by sizeof of what we emit */
 static int target_work_given;   /* the work size is the target's (--target-work) */
@@ -353,8 +410,16 @@ int main(int argc, char **argv)
 
     char err[600];
     struct scene *s = NULL;
-    if (scene_load(path, &s, err, sizeof err)) {
+    /* read once (a FIFO or /dev/stdin), parsed by the double and the fixed core */
+    char *text;
+    size_t text_len;
+    if (scene_read_text(path, &text, &text_len, err, sizeof err)) {
         fprintf(stderr, "%s\n", err);
+        return 2;
+    }
+    if (scene_parse_text(path, text, text_len, &s, err, sizeof err)) {
+        fprintf(stderr, "%s\n", err);
+        free(text);
         return 2;
     }
     /* the C identifier: path under firmware/scenes/ without .scene */
@@ -397,7 +462,9 @@ int main(int argc, char **argv)
 
     /* the renderer's work memory, from the fixed-point core */
     void *fs = NULL;
-    if (core_api_fixed12.scene_load(path, &fs, err, sizeof err)) {
+    int frc = core_api_fixed12.scene_parse(path, text, text_len, &fs, err, sizeof err);
+    free(text);
+    if (frc) {
         fprintf(stderr, "%s\n", err);
         scene_free(s);
         return 2;
@@ -424,7 +491,7 @@ int main(int argc, char **argv)
     }
     outh[n - 1] = 'h';
     outh_path = outh;
-    FILE *h = fopen(outh, "w");
+    FILE *h = tmp_create(0, outh);
     if (!h) {
         fprintf(stderr, "scenec: cannot write %s\n", outh);
         scene_free(s);
@@ -441,20 +508,30 @@ int main(int argc, char **argv)
                "#define SCENE_%s_STRIP_ROWS %d\n#define SCENE_%s_WORK_SIZE  %zu\n#define SCENE_%s_STRIP_BYTES %zu\n\n",
             ID, frac, ID, width, ID, height, ID, strip, ID, work, ID, strip_bytes);
     fprintf(h, "extern const struct scene scene_%s;\nextern uint8_t scene_%s_work[];\n\n#endif\n", id, id);
-    fclose(h);
-    out = fopen(outc, "w");
+    int herr = ferror(h);
+    if (fclose(h) || herr) {
+        fprintf(stderr, "scenec: error writing %s\n", outh);
+        tmp_discard();
+        scene_free(s);
+        return 1;
+    }
+    out = tmp_create(1, outc);
     if (!out) {
         fprintf(stderr, "scenec: cannot write %s\n", outc);
+        tmp_discard();
         scene_free(s);
         return 1;
     }
     target_work_given = target_work >= 0;
     emit_scene(s, id, path, frac, work, width, height, strip);
-    if (fclose(out)) {
+    int cerr = ferror(out);
+    if (fclose(out) || cerr || rename(tmp_path[0], outh) || (tmp_live[0] = 0, rename(tmp_path[1], outc))) {
         fprintf(stderr, "scenec: error writing %s\n", outc);
+        tmp_discard();
         scene_free(s);
         return 1;
     }
+    tmp_live[1] = 0;
     printf("  memory: RAM %zu bytes of work (%s; this host's core: %zu) + %zu bytes of strip (%dx%d, %d rows);\n"
            "    flash: the const data of %s\n",
            work, target_work >= 0 ? "the target's render_work_size" : "this host's render_work_size, an upper bound",

@@ -52,6 +52,14 @@ TESTS     += tests/test_host_sim.sh:$(HOST_SIM_BIN_asan)
 # input/output faults (FIFOs, devices, ulimit -f, signals) of host_sim and scenec
 TEST_DEPS += $(BUILD)/scenec
 TESTS     += tests/test_io_faults.sh:$(HOST_SIM_BIN_asan):$(BUILD)/scenec
+# the format promise on generated extreme scenes (tools/scene/gen_extreme.py),
+# under the sanitizers: a bounded count here, `make extremes` for more
+EXTREMES_COUNT ?= 300
+TESTS     += tests/test_scene_extremes.sh:$(HOST_SIM_BIN_asan):1:$(EXTREMES_COUNT)
+EXTREMES_SEEDS ?= 2 3 4 5 6 7 8 9 10 11
+.PHONY: extremes
+extremes: $(HOST_SIM_BIN_asan)
+	$(Q)tests/run.sh $(foreach s,$(EXTREMES_SEEDS),tests/test_scene_extremes.sh:$(HOST_SIM_BIN_asan):$(s):1000)
 TESTS     += tests/test_make_run.sh:$(BUILD)
 
 # `make run`: every scene in firmware/scenes/ through host_sim (ST7789

@@ -353,6 +353,13 @@ num num_mul(num a, num b)
 
 num num_mul_int(num a, int32_t k) { return sat64(num_smul32(a, k)); }
 
+num num_mul_int_mod(num a, int32_t k, num m)
+{
+    if (m <= 0) return NUM_ZERO;
+    /* the exact 64-bit product, reduced: |result| < m, never saturates */
+    return (num)(num_smul32(a, k) % (int64_t)m);
+}
+
 num num_div(num a, num b)
 {
     if (b == 0) {
@@ -802,6 +809,12 @@ num num_neg(num a) { return -a; }
 num num_abs(num a) { return F(fabs)(a); }
 num num_mul(num a, num b) { return a * b; }
 num num_mul_int(num a, int32_t k) { return a * (num)k; }
+num num_mul_int_mod(num a, int32_t k, num m)
+{
+    if (m <= 0) return 0;
+    /* the product in double (exact for a float a and |k| < 2^29), reduced */
+    return (num)fmod((double)a * (double)k, (double)m);
+}
 num num_div(num a, num b)
 {
     if (b == 0) {

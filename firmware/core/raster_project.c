@@ -25,10 +25,8 @@ static vec3 anim_pos(vec3 p, const struct scene_anim *a, uint16_t frame)
 static mat3 anim_rot(const mat3 *r, const struct scene_anim *a, uint16_t frame)
 {
     if (frame == 0 || a->rot_y_per_frame == NUM_ZERO) return *r;
-    /* reduce the angle first so fixed point never saturates */
-    int32_t deg100 = num_to_int(num_mul_int(a->rot_y_per_frame, 100));
-    int64_t total = ((int64_t)deg100 * frame) % 36000;
-    mat3 ry = m3_rot_y_deg(num_from_ratio((int32_t)total, 100));
+    /* the angle rot x frame reduced modulo 360 exactly: no saturation, no drift */
+    mat3 ry = m3_rot_y_deg(num_mul_int_mod(a->rot_y_per_frame, frame, NUM_C(360.0)));
     return m3_mul(&ry, r);
 }
 

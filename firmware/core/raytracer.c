@@ -157,11 +157,15 @@ int rt_begin_frame(struct render_ctx *ctx, uint16_t frame)
     struct rt_state *rt = rt_state_of(ctx);
     const struct scene *s = rt->s;
     /* animation: the camera moves and turns about y by per-frame increments */
-    num f = num_from_int(frame);
-    rt->cam_pos = v3_add(s->camera.position, v3_scale(s->camera_anim.move_per_frame, f));
+    /* position + move x frame and the angle rot x frame modulo 360, both
+     * from exact integer products (a frame index past the format's range
+     * neither saturates nor drifts) */
+    vec3 mv = s->camera_anim.move_per_frame;
+    rt->cam_pos = v3_add(s->camera.position, v3(num_mul_int(mv.x, frame), num_mul_int(mv.y, frame),
+                                                 num_mul_int(mv.z, frame)));
     rt->cam_rot = s->camera.rotation;
     if (frame && s->camera_anim.rot_y_per_frame != 0) {
-        mat3 ry = m3_rot_y_deg(num_mul(s->camera_anim.rot_y_per_frame, f));
+        mat3 ry = m3_rot_y_deg(num_mul_int_mod(s->camera_anim.rot_y_per_frame, frame, NUM_C(360.0)));
         rt->cam_rot = m3_mul(&ry, &s->camera.rotation);
     }
     rt->cam_rotated = !is_identity(&rt->cam_rot);

@@ -39,6 +39,14 @@ static double anim_reach(const struct scene_anim *a, int frames)
     return len3(a->move_per_frame) * (frames - 1);
 }
 
+static void shortest_dir(struct scene_format *R, double v, const char *what)
+{
+    if (v > 0 && v < R->smallest_dir) {
+        R->smallest_dir = v;
+        snprintf(R->smallest_dir_what, sizeof R->smallest_dir_what, "%s", what);
+    }
+}
+
 static void smallest(struct scene_format *R, double v, const char *what)
 {
     v = fabs(v);
@@ -128,6 +136,8 @@ static void shadow_volume_ranges(const struct scene *s, struct scene_format *R, 
 static void scan(const struct scene *s, struct scene_format *R, int width, int height)
 {
     R->smallest = 1e300;
+    R->smallest_dir = 1e300;
+    R->smallest_radius = 1e300;
     double cam = len3(s->camera.position) + anim_reach(&s->camera_anim, s->frames);
     note(&R->position, cam, "camera position");
     double itot = 0;
@@ -141,13 +151,36 @@ static void scan(const struct scene *s, struct scene_format *R, int width, int h
     /* diffuse and specular each add at most the light's intensity */
     double colour = 255 * (2 * itot > 1 ? 2 * itot : 1);
     note(&R->colour, colour, "colour x total light intensity %.3g (diffuse + specular)", 2 * itot);
+    for (int i = 0; i < s->nlights; i++)
+        if (s->lights[i].type == LIGHT_DIRECTIONAL) {
+            smallest(R, len3(s->lights[i].v), "a light direction's length");
+            if (s->kind == SCENE_RAYTRACE) shortest_dir(R, len3(s->lights[i].v), "a light direction");
+        }
+    /* the viewport and the frame count are num (angles x frames are reduced
+     * exactly, num_mul_int_mod; positions x frames are bounded by the reach) */
+    note(&R->other, num_to_double(s->viewport_w), "viewport width");
+    note(&R->other, num_to_double(s->viewport_h), "viewport height");
+    note(&R->other, num_to_double(s->projection_d), "viewport distance d");
+    if (s->frames > 1) note(&R->other, s->frames - 1, "the last frame's index");
+    note(&R->other, len3(s->camera_anim.move_per_frame) * (s->frames > 1 ? s->frames - 1 : 0) + cam,
+         "camera: position at the last frame");
     if (s->kind == SCENE_RAYTRACE) {
         /* a ray from the viewport runs at most this far across the scene */
         smallest(R, num_to_double(s->viewport_w) / (width > 0 ? width : 1), "viewport step per pixel");
         smallest(R, num_to_double(s->rt.epsilon), "epsilon");
+        note(&R->other, num_to_double(s->rt.t_min_primary), "t_min");
+        note(&R->other, width > height ? width : height, "render size (pixel counts are num)");
+        /* canvas x times viewport size, before the division by the width */
+        double vmax = num_to_double(s->viewport_w) > num_to_double(s->viewport_h) ? num_to_double(s->viewport_w)
+                                                                                 : num_to_double(s->viewport_h);
+        note(&R->other, (width > height ? width : height) / 2.0 * vmax, "canvas coordinate x viewport size");
+        /* supersampling sums n^2 colours before dividing */
+        int n = s->rt.supersample > 1 ? s->rt.supersample : 1;
+        if (n > 1) note(&R->colour, colour * n * n, "supersample %d: the sum of %d colours", n, n * n);
         int book = s->rt.formulation == 1;
         for (int i = 0; i < s->nobjects; i++) {
             const struct rt_object *o = &s->objects[i];
+            note(&R->other, num_to_double(o->mat.specular), "object %d: specular exponent", i);
             if (o->shape == RT_SPHERE) {
                 double r = num_to_double(o->radius), c = len3(o->center);
                 note(&R->position, c + r, "sphere %d: centre + radius", i);
@@ -160,12 +193,50 @@ static void scan(const struct scene *s, struct scene_format *R, int width, int h
                     note(&R->square, (c + cam) * (c + cam), "sphere %d: |CO|^2 from the camera", i);
                 }
                 smallest(R, r, "a sphere radius");
+                if (r > 0 && r < R->smallest_radius) R->smallest_radius = r;
             } else if (o->shape == RT_PLANE) {
                 note(&R->position, num_to_double(o->dist), "plane %d: distance from the origin", i);
             } else {
                 for (int k = 0; k < 3; k++) note(&R->position, len3(o->p[k]) + cam, "triangle %d: corner %d", i, k);
+                /* Moller-Trumbore keeps two cross products in num: D' x e2
+                 * (|D'| < 2) and (O - p0) x e1 */
+                double e1, e2, o0 = len3(o->p[0]) + cam;
+                {
+                    double ax = num_to_double(o->p[1].x) - num_to_double(o->p[0].x),
+                           ay = num_to_double(o->p[1].y) - num_to_double(o->p[0].y),
+                           az = num_to_double(o->p[1].z) - num_to_double(o->p[0].z);
+                    double bx = num_to_double(o->p[2].x) - num_to_double(o->p[0].x),
+                           by = num_to_double(o->p[2].y) - num_to_double(o->p[0].y),
+                           bz = num_to_double(o->p[2].z) - num_to_double(o->p[0].z);
+                    e1 = sqrt(ax * ax + ay * ay + az * az);
+                    e2 = sqrt(bx * bx + by * by + bz * bz);
+                }
+                note(&R->position, e1 > e2 ? e1 : e2, "triangle %d: an edge", i);
+                note(&R->other, 2 * e2, "triangle %d: direction x edge 2", i);
+                note(&R->other, o0 * e1, "triangle %d: (origin - corner 0) x edge 1", i);
             }
         }
+        /* The view direction D = (x vw / W, y vh / H, d) and the light
+         * vectors stay unnormalised (the book's lighting), so two products
+         * are num: the specular term's R.V and |R| |V| (|R| = |L|, |V| = |D|,
+         * reflections keep |D|), and a root t = distance / |direction|
+         * (primary and reflected rays: |D| >= d; shadow rays to a
+         * directional light: its direction's length; point lights: t <= 1). */
+        double vw2 = num_to_double(s->viewport_w) / 2, vh2 = num_to_double(s->viewport_h) / 2,
+               dd = fabs(num_to_double(s->projection_d));
+        double dmax = sqrt(vw2 * vw2 + vh2 * vh2 + dd * dd), dmin = dd, lmax = 0;
+        shortest_dir(R, dd, "the view direction (|D| >= viewport d)");
+        for (int k = 0; k < s->nlights; k++) {
+            const struct scene_light *l = &s->lights[k];
+            if (l->type == LIGHT_POINT && R->position.value > lmax) lmax = R->position.value;
+            if (l->type == LIGHT_DIRECTIONAL) {
+                double ll = len3(l->v);
+                if (ll > lmax) lmax = ll;
+                if (s->rt.shadows && ll < dmin) dmin = ll;
+            }
+        }
+        if (s->rt.specular) note(&R->other, lmax * dmax, "specular: R.V of the longest light vector and view ray");
+        if (dmin > 0) note(&R->other, R->position.value / dmin, "a ray parameter t: distance / |direction| (%.3g)", dmin);
     } else {
         double w = width, W = num_to_double(s->viewport_w), d = num_to_double(s->projection_d);
         smallest(R, 1.0 / 1024, "texture coordinates (1/1024 of a texture)");
@@ -191,6 +262,17 @@ static void scan(const struct scene *s, struct scene_format *R, int width, int h
                 }
             }
         }
+        /* every model as written (parsed into num whether instanced or not) */
+        for (int i = 0; i < s->nmodels; i++) {
+            const struct ras_model *m = &s->models[i];
+            for (int k = 0; k < m->nverts; k++)
+                note(&R->position, maxabs3(m->verts[k]), "model %s: vertex %d as written", m->name, k);
+            note(&R->position, len3(m->bound_center) + num_to_double(m->bound_radius), "model %s: bounding sphere",
+                 m->name);
+            for (int k = 0; k < m->ntris && m->has_normals; k++)
+                for (int c = 0; c < 3; c++)
+                    note(&R->other, maxabs3(m->tris[k].n[c]), "model %s: normal of triangle %d as written", m->name, k);
+        }
         for (int i = 0; i < s->ninstances; i++) {
             const struct ras_instance *in = &s->instances[i];
             const struct ras_model *m = &s->models[in->model];
@@ -198,6 +280,11 @@ static void scan(const struct scene *s, struct scene_format *R, int width, int h
             double vmax = 0;
             for (int k = 0; k < m->nverts; k++)
                 if (len3(m->verts[k]) > vmax) vmax = len3(m->verts[k]);
+            note(&R->other, sc, "instance %d (%s): scale", i, m->name);
+            note(&R->other, num_to_double(in->specular), "instance %d (%s): specular exponent", i, m->name);
+            note(&R->position, sc * (len3(m->bound_center) + num_to_double(m->bound_radius)),
+                 "instance %d (%s): scaled bounding sphere", i, m->name);
+
             double far = t + sc * vmax;
             note(&R->position, t + sc * len3(m->bound_center) + cam, "instance %d (%s): bounding-sphere centre", i,
                  m->name);
@@ -275,6 +362,7 @@ int scene_format_choose(const struct scene *s, int width, int height, const int 
      * of two of them (a - b of two positions, colour plus reflected colour);
      * longer sums (dot products) are taken wide by the core */
     f->big = f->position;
+    if (f->other.value > f->big.value) f->big = f->other;
     if (f->square.value > f->big.value) f->big = f->square;
     if (f->colour.value > f->big.value) f->big = f->colour;
     if (f->screen.value > f->big.value) f->big = f->screen;
@@ -285,6 +373,25 @@ int scene_format_choose(const struct scene *s, int width, int height, const int 
         double lim = ldexp(1.0, 31 - fracs[i]);
         if (f->need < lim && (f->num_frac < 0 || fracs[i] > f->num_frac)) f->num_frac = fracs[i];
         if (fracs[i] < f->coarsest) f->coarsest = fracs[i];
+    }
+    /* the robust tests scale a direction by a power of two from its squared
+     * length D.D, rounded to the format: under 64 steps it has no precision
+     * (or is 0), and the scene spans more than a 32-bit format holds */
+    /* likewise a sphere's normal (P - C) / r: a radius under 256 steps
+     * leaves the normal's length wrong by more than 0.4 %, which reflections
+     * multiply into the ray directions */
+    if (f->num_frac >= 0 && f->smallest_radius < 256 * ldexp(1.0, -f->num_frac)) {
+        f->ill = 2;
+        f->ill_frac = f->num_frac;
+        f->num_frac = -1;
+        return 2;
+    }
+    if (f->num_frac >= 0 && f->smallest_dir < 1e300 &&
+        f->smallest_dir * f->smallest_dir < 64 * ldexp(1.0, -f->num_frac)) {
+        f->ill = 1;
+        f->ill_frac = f->num_frac;
+        f->num_frac = -1;
+        return 2;
     }
     if (f->num_frac >= 0) return 0;
     if (!allow_wide) return 2;
@@ -301,6 +408,8 @@ void scene_format_print_ranges(FILE *out, const struct scene_format *f)
     fprintf(out, "          colour intermediates <= %.6g (%s)\n", f->colour.value, f->colour.what);
     if (f->screen.value > 0)
         fprintf(out, "          screen quantities <= %.6g (%s)\n", f->screen.value, f->screen.what);
+    if (f->other.value > 0)
+        fprintf(out, "          other values kept in num <= %.6g (%s)\n", f->other.value, f->other.what);
     if (f->smallest < 1e300)
         fprintf(out, "          smallest step relied on: %.6g (%s)\n", f->smallest, f->smallest_what);
 }
@@ -326,6 +435,24 @@ void scene_format_print_argument(FILE *out, const struct scene_format *f)
 
 void scene_format_refusal(const struct scene_format *f, const char *path, char *msg, size_t len)
 {
+    if (f->ill == 2) {
+        snprintf(msg, len,
+                 "%s:1:1: error: ill-conditioned for fixed point: a sphere of radius %.3g is under 256 steps of "
+                 "NUM_FRAC %d, the finest format that holds %s = %.6g, so its normals are imprecise; make the "
+                 "sphere larger or the scene smaller (float and double render it)",
+                 path, f->smallest_radius, f->ill_frac, f->big.what, f->big.value);
+        return;
+    }
+    if (f->ill) {
+        int frac = f->ill_frac;
+        snprintf(msg, len,
+                 "%s:1:1: error: ill-conditioned for fixed point: %s has length %.3g, whose square %.3g is under 64 "
+                 "steps of NUM_FRAC %d, the finest format that holds %s = %.6g; make the direction longer or the "
+                 "scene smaller (float and double render it)",
+                 path, f->smallest_dir_what, f->smallest_dir, f->smallest_dir * f->smallest_dir, frac, f->big.what,
+                 f->big.value);
+        return;
+    }
     double lim = ldexp(1.0, 31 - f->coarsest);
     /* a square kept in num is the book's operation order: the robust one keeps it wide */
     const char *fix = f->big.value == f->square.value

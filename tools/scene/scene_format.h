@@ -35,9 +35,19 @@ struct scene_format {
     struct scene_format_range square;   /* squared distances kept in num */
     struct scene_format_range colour;   /* unclamped colour intermediates */
     struct scene_format_range screen;   /* projected coordinates, 1/z, texel coordinates */
+    struct scene_format_range other;    /* parameters and their products kept in num: exponents,
+                                           t_min, scales, normals, viewport products, frames */
     double smallest;           /* smallest nonzero magnitude relied on (1e300: none) */
     char smallest_what[160];
-    struct scene_format_range big;      /* the largest of the four above */
+    double smallest_dir;       /* shortest direction whose squared length the ray tracer forms
+                                  (a light direction, the view direction; 1e300: none) */
+    char smallest_dir_what[160];
+    double smallest_radius;    /* smallest sphere radius (ray tracer; 1e300: none): a normal
+                                  (P - C) / r is only as precise as r in steps */
+    int ill;                   /* refused: at the format the largest quantity needs (ill_frac),
+                                  that squared length is under 64 steps (scene_format_refusal) */
+    int ill_frac;
+    struct scene_format_range big;      /* the largest of the five above */
     double need;               /* 2 x big.value */
     int num_frac;              /* the chosen NUM_FRAC; -1 when nothing fits (refused) */
     int coarsest;              /* the smallest candidate NUM_FRAC */

@@ -138,6 +138,7 @@ static void scan(const struct scene *s, struct scene_format *R, int width, int h
     R->smallest = 1e300;
     R->smallest_dir = 1e300;
     R->smallest_radius = 1e300;
+    R->pixel_step = 1e300;
     double cam = len3(s->camera.position) + anim_reach(&s->camera_anim, s->frames);
     note(&R->position, cam, "camera position");
     double itot = 0;
@@ -167,6 +168,7 @@ static void scan(const struct scene *s, struct scene_format *R, int width, int h
     if (s->kind == SCENE_RAYTRACE) {
         /* a ray from the viewport runs at most this far across the scene */
         smallest(R, num_to_double(s->viewport_w) / (width > 0 ? width : 1), "viewport step per pixel");
+        R->pixel_step = num_to_double(s->viewport_w) / (width > 0 ? width : 1);
         smallest(R, num_to_double(s->rt.epsilon), "epsilon");
         note(&R->other, num_to_double(s->rt.t_min_primary), "t_min");
         note(&R->other, width > height ? width : height, "render size (pixel counts are num)");
@@ -380,6 +382,14 @@ int scene_format_choose(const struct scene *s, int width, int height, const int 
     /* likewise a sphere's normal (P - C) / r: a radius under 256 steps
      * leaves the normal's length wrong by more than 0.4 %, which reflections
      * multiply into the ray directions */
+    /* and the primary rays: under 16 steps of the format from one pixel to
+     * the next, the directions are quantised coarser than 1/16 pixel */
+    if (f->num_frac >= 0 && f->pixel_step < 16 * ldexp(1.0, -f->num_frac)) {
+        f->ill = 3;
+        f->ill_frac = f->num_frac;
+        f->num_frac = -1;
+        return 2;
+    }
     if (f->num_frac >= 0 && f->smallest_radius < 256 * ldexp(1.0, -f->num_frac)) {
         f->ill = 2;
         f->ill_frac = f->num_frac;
@@ -435,6 +445,14 @@ void scene_format_print_argument(FILE *out, const struct scene_format *f)
 
 void scene_format_refusal(const struct scene_format *f, const char *path, char *msg, size_t len)
 {
+    if (f->ill == 3) {
+        snprintf(msg, len,
+                 "%s:1:1: error: ill-conditioned for fixed point: the viewport step from pixel to pixel, %.3g, is "
+                 "under 16 steps of NUM_FRAC %d, the finest format that holds %s = %.6g; widen the viewport, "
+                 "render smaller or make the scene smaller (float and double render it)",
+                 path, f->pixel_step, f->ill_frac, f->big.what, f->big.value);
+        return;
+    }
     if (f->ill == 2) {
         snprintf(msg, len,
                  "%s:1:1: error: ill-conditioned for fixed point: a sphere of radius %.3g is under 256 steps of "

@@ -42,6 +42,7 @@ struct scene_format {
     double smallest_dir;       /* shortest direction whose squared length the ray tracer forms
                                   (a light direction, the view direction; 1e300: none) */
     char smallest_dir_what[160];
+    double pixel_step;         /* ray tracer: viewport width / render width (1e300: none) */
     double smallest_radius;    /* smallest sphere radius (ray tracer; 1e300: none): a normal
                                   (P - C) / r is only as precise as r in steps */
     int ill;                   /* refused: at the format the largest quantity needs (ill_frac),

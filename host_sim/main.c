@@ -386,17 +386,6 @@ static int run(const struct opts *o, struct core *c, struct core *ref, struct pa
     if ((rc = core_open(c, !strcmp(numeric, "fixed") ? &core_api_double : core_api_by_name(numeric), o->scene)))
         return rc;
 
-    /* valid, but almost certainly not what was meant: said, not refused */
-    if (c->info.uses_lights && c->info.nlights == 0 && (c->info.kind == SCENE_RAYTRACE || c->info.ninstances))
-        fprintf(stderr, "host_sim: warning: %s: no lights: every lit surface renders black%s\n", o->scene,
-                c->info.kind == SCENE_RAYTRACE ? " (add a light, or unlit = on)" : " (add a light, or shading = none)");
-    if (!c->info.uses_lights && c->info.nlights && c->info.kind != SCENE_RAYTRACE)
-        fprintf(stderr, "host_sim: warning: %s: %u lights, but no shading mode uses them (shading = none)\n",
-                o->scene, (unsigned)c->info.nlights);
-    if (!o->out && !o->out_raw && !o->out_rgb888 && !o->stats && !o->summary && !o->compare)
-        fprintf(stderr, "host_sim: warning: no output given (--out, --out-raw, --out-rgb888, --stats, --summary): "
-                        "the frame is rendered and discarded\n");
-
     unsigned w = o->width, h = o->height;
     if (!o->has_size) {
         uint16_t nw, nh;
@@ -425,6 +414,18 @@ static int run(const struct opts *o, struct core *c, struct core *ref, struct pa
     struct panel_out_opts po = { panel, backend, o->fault, (uint16_t)w, (uint16_t)h };
     if ((rc = panel_out_open(pp, &po, err, sizeof err))) return fail(rc, "%s", err);
     if ((rc = core_init(c, w, h, rows))) return rc;
+    /* valid, but almost certainly not what was meant: said (once every check
+     * has passed, so an error stays the only line), not refused */
+    if (c->info.uses_lights && c->info.nlights == 0 && (c->info.kind == SCENE_RAYTRACE || c->info.ninstances))
+        fprintf(stderr, "host_sim: warning: %s: no lights: every lit surface renders black%s\n", o->scene,
+                c->info.kind == SCENE_RAYTRACE ? " (add a light, or unlit = on)" : " (add a light, or shading = none)");
+    if (!c->info.uses_lights && c->info.nlights && c->info.kind != SCENE_RAYTRACE)
+        fprintf(stderr, "host_sim: warning: %s: %u lights, but no shading mode uses them (shading = none)\n",
+                o->scene, (unsigned)c->info.nlights);
+    if (!o->out && !o->out_raw && !o->out_rgb888 && !o->stats && !o->summary && !o->compare)
+        fprintf(stderr, "host_sim: warning: no output given (--out, --out-raw, --out-rgb888, --stats, --summary): "
+                        "the frame is rendered and discarded\n");
+
 
     size_t npx = (size_t)w * h;
     int want_rgb = o->out_rgb888 || o->compare;

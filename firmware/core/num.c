@@ -356,8 +356,16 @@ num num_mul_int(num a, int32_t k) { return sat64(num_smul32(a, k)); }
 num num_mul_int_mod(num a, int32_t k, num m)
 {
     if (m <= 0) return NUM_ZERO;
-    /* the exact 64-bit product, reduced: |result| < m, never saturates */
-    return (num)(num_smul32(a, k) % (int64_t)m);
+    /* the exact 64-bit product, reduced by an exact division without a
+     * software 64-bit divide: |result| < m. The quotient must fit 32 bits
+     * (|a k| < m 2^32: always for an angle, m = 360 in any format and
+     * |k| < 2^16); otherwise it saturates */
+    int64_t p = num_smul32(a, k);
+    uint64_t u = p < 0 ? (uint64_t)0 - (uint64_t)p : (uint64_t)p;
+    if ((u >> 32) >= (uint64_t)(uint32_t)m) return p < 0 ? NUM_MIN : NUM_MAX;
+    uint32_t r;
+    (void)num_udiv64_32(u, (uint32_t)m, &r);
+    return p < 0 ? -(num)r : (num)r;
 }
 
 num num_div(num a, num b)
@@ -812,8 +820,8 @@ num num_mul_int(num a, int32_t k) { return a * (num)k; }
 num num_mul_int_mod(num a, int32_t k, num m)
 {
     if (m <= 0) return 0;
-    /* the product in double (exact for a float a and |k| < 2^29), reduced */
-    return (num)fmod((double)a * (double)k, (double)m);
+    /* the product in the mode's precision, reduced */
+    return F(fmod)(a * (num)k, m);
 }
 num num_div(num a, num b)
 {

@@ -114,8 +114,9 @@ num num_abs(num a);
 num num_mul(num a, num b);                /* rounded to nearest: <= 0.5 ulp */
 num num_mul_int(num a, int32_t k);
 /* (a * k) mod m (m > 0; 0 otherwise), with the sign of a * k: exact in fixed
- * point (the 64-bit product, reduced), so an angle per frame times a frame
- * index neither saturates nor drifts (animations). */
+ * point (the 64-bit product, reduced; saturates only if |a k| >= m 2^32), so
+ * an angle per frame times a frame index neither saturates nor drifts
+ * (animations); the floating modes reduce the product in their precision. */
 num num_mul_int_mod(num a, int32_t k, num m);
 num num_div(num a, num b);                /* correctly rounded (<= 0.5 ulp, halves away
                                            * from 0); b == 0: saturated, sign of a (0/0 = 0) */

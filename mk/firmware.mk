@@ -119,7 +119,7 @@ RP_LDFLAGS := -mcpu=cortex-m0plus -mthumb --specs=nano.specs -nostartfiles -T $(
 # is recorded so that changing it rebuilds boot2.
 $(shell mkdir -p $(FW_OUT)/pico && { echo '$(RP2040_BOOT2)' | cmp -s - $(FW_OUT)/pico/boot2.choice || \
           echo '$(RP2040_BOOT2)' >$(FW_OUT)/pico/boot2.choice; })
-$(FW_OUT)/pico/boot2.elf: $(RP_DIR)/boot2_$(RP2040_BOOT2).S $(RP_DIR)/boot2_enter_app.inc $(RP_DIR)/boot2.ld \
+$(FW_OUT)/pico/boot2.elf: $(RP_DIR)/boot2_$(RP2040_BOOT2).S $(RP_DIR)/boot2_common.inc $(RP_DIR)/boot2.ld \
                          $(FW_OUT)/pico/boot2.choice
 	@mkdir -p $(@D)
 	$(Q)$(ARM_CC) -mcpu=cortex-m0plus -mthumb -nostdlib -Wa,-I$(RP_DIR) -T $(RP_DIR)/boot2.ld $< -o $@

@@ -5,7 +5,7 @@
  * Strips: FW_STRIP_ROWS rows of FW_WIDTH pixels, rendered into a ring of
  * FW_RING buffers (strip k into ring[k % FW_RING]) while DMA sends the ones
  * before them. The cores take strips in order from a shared counter, each
- * the next one whose buffer is free (strip k - FW_RING has been sent), so
+ * the next one whose buffer is available (strip k - FW_RING has been sent), so
  * the work balances itself whatever the strips cost; core 0 also sends the
  * strips in order as they are done, and renders when the next one to send
  * is not done yet. With one core the same loop renders strip k while strip
@@ -130,7 +130,7 @@ static char *put_fps(char *p, uint32_t us)
 
 /* ---- strips shared by the cores ------------------------------------------- */
 
-/* The next strip whose buffer is free: its index; NSTRIPS when every strip
+/* The next strip whose buffer can be reused: its index; NSTRIPS when every strip
  * is taken; -1 when the next one's buffer is still being sent. */
 static int claim_strip(void)
 {
@@ -160,7 +160,7 @@ static unsigned strip_state(unsigned k)
 }
 
 /* DMA finished sending strip k (called by the HAL on core 0): its buffer
- * and every one before it are free again. */
+ * and every one before it can be reused again. */
 static void strip_sent(void *arg)
 {
     fw_board_lock();
@@ -282,7 +282,7 @@ static uint32_t frame(unsigned si, uint16_t f, uint32_t last_us, int dual)
             continue;
         }
         /* the next strip is core 1's and not done yet: let the bus finish
-         * (freeing the buffers core 1 may be waiting for), then sleep until
+         * (releasing the buffers core 1 may be waiting for), then sleep until
          * core 1 marks a strip */
         hal.spi_wait(hal.ctx);
         if (!strip_state(next)) fw_board_wait();

@@ -25,6 +25,13 @@ static double len3(vec3 v)
     return sqrt(x * x + y * y + z * z);
 }
 
+static double dist3(vec3 a, vec3 b)
+{
+    double x = num_to_double(a.x) - num_to_double(b.x), y = num_to_double(a.y) - num_to_double(b.y),
+           z = num_to_double(a.z) - num_to_double(b.z);
+    return sqrt(x * x + y * y + z * z);
+}
+
 static double maxabs3(vec3 v)
 {
     double m = fabs(num_to_double(v.x));
@@ -167,15 +174,15 @@ static void scan(const struct scene *s, struct scene_format *R, int width, int h
          "camera: position at the last frame");
     if (s->kind == SCENE_RAYTRACE) {
         /* a ray from the viewport runs at most this far across the scene */
-        smallest(R, num_to_double(s->viewport_w) / (width > 0 ? width : 1), "viewport step per pixel");
         R->pixel_step = num_to_double(s->viewport_w) / (width > 0 ? width : 1);
+        smallest(R, R->pixel_step, "viewport step per pixel");
         smallest(R, num_to_double(s->rt.epsilon), "epsilon");
         note(&R->other, num_to_double(s->rt.t_min_primary), "t_min");
         note(&R->other, width > height ? width : height, "render size (pixel counts are num)");
         /* canvas x times viewport size, before the division by the width */
-        double vmax = num_to_double(s->viewport_w) > num_to_double(s->viewport_h) ? num_to_double(s->viewport_w)
-                                                                                 : num_to_double(s->viewport_h);
-        note(&R->other, (width > height ? width : height) / 2.0 * vmax, "canvas coordinate x viewport size");
+        note(&R->other, (width > height ? width : height) / 2.0 *
+                            fmax(num_to_double(s->viewport_w), num_to_double(s->viewport_h)),
+             "canvas coordinate x viewport size");
         /* supersampling sums n^2 colours before dividing */
         int n = s->rt.supersample > 1 ? s->rt.supersample : 1;
         if (n > 1) note(&R->colour, colour * n * n, "supersample %d: the sum of %d colours", n, n * n);
@@ -202,18 +209,8 @@ static void scan(const struct scene *s, struct scene_format *R, int width, int h
                 for (int k = 0; k < 3; k++) note(&R->position, len3(o->p[k]) + cam, "triangle %d: corner %d", i, k);
                 /* Moller-Trumbore keeps two cross products in num: D' x e2
                  * (|D'| < 2) and (O - p0) x e1 */
-                double e1, e2, o0 = len3(o->p[0]) + cam;
-                {
-                    double ax = num_to_double(o->p[1].x) - num_to_double(o->p[0].x),
-                           ay = num_to_double(o->p[1].y) - num_to_double(o->p[0].y),
-                           az = num_to_double(o->p[1].z) - num_to_double(o->p[0].z);
-                    double bx = num_to_double(o->p[2].x) - num_to_double(o->p[0].x),
-                           by = num_to_double(o->p[2].y) - num_to_double(o->p[0].y),
-                           bz = num_to_double(o->p[2].z) - num_to_double(o->p[0].z);
-                    e1 = sqrt(ax * ax + ay * ay + az * az);
-                    e2 = sqrt(bx * bx + by * by + bz * bz);
-                }
-                note(&R->position, e1 > e2 ? e1 : e2, "triangle %d: an edge", i);
+                double e1 = dist3(o->p[1], o->p[0]), e2 = dist3(o->p[2], o->p[0]), o0 = len3(o->p[0]) + cam;
+                note(&R->position, fmax(e1, e2), "triangle %d: an edge", i);
                 note(&R->other, 2 * e2, "triangle %d: direction x edge 2", i);
                 note(&R->other, o0 * e1, "triangle %d: (origin - corner 0) x edge 1", i);
             }
@@ -286,7 +283,6 @@ static void scan(const struct scene *s, struct scene_format *R, int width, int h
             note(&R->other, num_to_double(in->specular), "instance %d (%s): specular exponent", i, m->name);
             note(&R->position, sc * (len3(m->bound_center) + num_to_double(m->bound_radius)),
                  "instance %d (%s): scaled bounding sphere", i, m->name);
-
             double far = t + sc * vmax;
             note(&R->position, t + sc * len3(m->bound_center) + cam, "instance %d (%s): bounding-sphere centre", i,
                  m->name);
@@ -376,32 +372,24 @@ int scene_format_choose(const struct scene *s, int width, int height, const int 
         if (f->need < lim && (f->num_frac < 0 || fracs[i] > f->num_frac)) f->num_frac = fracs[i];
         if (fracs[i] < f->coarsest) f->coarsest = fracs[i];
     }
-    /* the robust tests scale a direction by a power of two from its squared
-     * length D.D, rounded to the format: under 64 steps it has no precision
-     * (or is 0), and the scene spans more than a 32-bit format holds */
-    /* likewise a sphere's normal (P - C) / r: a radius under 256 steps
-     * leaves the normal's length wrong by more than 0.4 %, which reflections
-     * multiply into the ray directions */
-    /* and the primary rays: under 16 steps of the format from one pixel to
-     * the next, the directions are quantised coarser than 1/16 pixel */
-    if (f->num_frac >= 0 && f->pixel_step < 16 * ldexp(1.0, -f->num_frac)) {
-        f->ill = 3;
-        f->ill_frac = f->num_frac;
-        f->num_frac = -1;
-        return 2;
-    }
-    if (f->num_frac >= 0 && f->smallest_radius < 256 * ldexp(1.0, -f->num_frac)) {
-        f->ill = 2;
-        f->ill_frac = f->num_frac;
-        f->num_frac = -1;
-        return 2;
-    }
-    if (f->num_frac >= 0 && f->smallest_dir < 1e300 &&
-        f->smallest_dir * f->smallest_dir < 64 * ldexp(1.0, -f->num_frac)) {
-        f->ill = 1;
-        f->ill_frac = f->num_frac;
-        f->num_frac = -1;
-        return 2;
+    /* Ill-conditioned for fixed point, at the finest format that holds the
+     * largest quantity: the primary rays step from pixel to pixel by under 16
+     * steps (directions quantised coarser than 1/16 pixel); a sphere radius
+     * is under 256 steps (its normal (P - C) / r is off by more than 0.4 %,
+     * which reflections multiply into the ray directions); a direction's
+     * squared length, from which the robust tests scale it by a power of
+     * two, is under 64 steps (no precision left, or 0). */
+    if (f->num_frac >= 0) {
+        double step = ldexp(1.0, -f->num_frac);
+        f->ill = f->pixel_step < 16 * step                            ? SCENE_ILL_PIXEL_STEP
+                 : f->smallest_radius < 256 * step                    ? SCENE_ILL_RADIUS
+                 : f->smallest_dir * f->smallest_dir < 64 * step      ? SCENE_ILL_DIRECTION
+                                                                      : 0;
+        if (f->ill) {
+            f->ill_frac = f->num_frac;
+            f->num_frac = -1;
+            return 2;
+        }
     }
     if (f->num_frac >= 0) return 0;
     if (!allow_wide) return 2;
@@ -445,30 +433,24 @@ void scene_format_print_argument(FILE *out, const struct scene_format *f)
 
 void scene_format_refusal(const struct scene_format *f, const char *path, char *msg, size_t len)
 {
-    if (f->ill == 3) {
-        snprintf(msg, len,
-                 "%s:1:1: error: ill-conditioned for fixed point: the viewport step from pixel to pixel, %.3g, is "
-                 "under 16 steps of NUM_FRAC %d, the finest format that holds %s = %.6g; widen the viewport, "
-                 "render smaller or make the scene smaller (float and double render it)",
-                 path, f->pixel_step, f->ill_frac, f->big.what, f->big.value);
-        return;
-    }
-    if (f->ill == 2) {
-        snprintf(msg, len,
-                 "%s:1:1: error: ill-conditioned for fixed point: a sphere of radius %.3g is under 256 steps of "
-                 "NUM_FRAC %d, the finest format that holds %s = %.6g, so its normals are imprecise; make the "
-                 "sphere larger or the scene smaller (float and double render it)",
-                 path, f->smallest_radius, f->ill_frac, f->big.what, f->big.value);
-        return;
-    }
     if (f->ill) {
-        int frac = f->ill_frac;
+        char what[320];
+        if (f->ill == SCENE_ILL_PIXEL_STEP)
+            snprintf(what, sizeof what, "the viewport step from pixel to pixel, %.3g, is under 16 steps",
+                     f->pixel_step);
+        else if (f->ill == SCENE_ILL_RADIUS)
+            snprintf(what, sizeof what, "a sphere of radius %.3g is under 256 steps (its normals are imprecise)",
+                     f->smallest_radius);
+        else
+            snprintf(what, sizeof what, "%s has length %.3g, whose square %.3g is under 64 steps",
+                     f->smallest_dir_what, f->smallest_dir, f->smallest_dir * f->smallest_dir);
+        const char *fix = f->ill == SCENE_ILL_PIXEL_STEP ? "widen the viewport, render smaller"
+                          : f->ill == SCENE_ILL_RADIUS   ? "make the sphere larger"
+                                                         : "make the direction longer";
         snprintf(msg, len,
-                 "%s:1:1: error: ill-conditioned for fixed point: %s has length %.3g, whose square %.3g is under 64 "
-                 "steps of NUM_FRAC %d, the finest format that holds %s = %.6g; make the direction longer or the "
-                 "scene smaller (float and double render it)",
-                 path, f->smallest_dir_what, f->smallest_dir, f->smallest_dir * f->smallest_dir, frac, f->big.what,
-                 f->big.value);
+                 "%s:1:1: error: ill-conditioned for fixed point: %s of NUM_FRAC %d, the finest format that holds "
+                 "%s = %.6g; %s or make the scene smaller (float and double render it)",
+                 path, what, f->ill_frac, f->big.what, f->big.value, fix);
         return;
     }
     double lim = ldexp(1.0, 31 - f->coarsest);

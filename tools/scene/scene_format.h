@@ -29,6 +29,9 @@ struct scene_format_range {
     char what[160];            /* object and quantity */
 };
 
+/* Why a scene is ill-conditioned for fixed point (scene_format.ill). */
+enum scene_ill { SCENE_ILL_DIRECTION = 1, SCENE_ILL_RADIUS = 2, SCENE_ILL_PIXEL_STEP = 3 };
+
 struct scene_format {
     int width, height;         /* the render size analysed */
     struct scene_format_range position; /* world and camera-space coordinates, distances */
@@ -45,8 +48,8 @@ struct scene_format {
     double pixel_step;         /* ray tracer: viewport width / render width (1e300: none) */
     double smallest_radius;    /* smallest sphere radius (ray tracer; 1e300: none): a normal
                                   (P - C) / r is only as precise as r in steps */
-    int ill;                   /* refused: at the format the largest quantity needs (ill_frac),
-                                  that squared length is under 64 steps (scene_format_refusal) */
+    int ill;                   /* refused as ill-conditioned at ill_frac, the format the largest
+                                  quantity needs: enum scene_ill (scene_format_refusal) */
     int ill_frac;
     struct scene_format_range big;      /* the largest of the five above */
     double need;               /* 2 x big.value */

@@ -17,14 +17,8 @@
     .syntax unified
     .cpu cortex-m0plus
     .thumb
-    .include "boot2_enter_app.inc"
+    .include "boot2_common.inc"
 
-    .equ SSI_BASE,        0x18000000
-    .equ SSI_CTRLR0,      0x00
-    .equ SSI_CTRLR1,      0x04
-    .equ SSI_SSIENR,      0x08
-    .equ SSI_BAUDR,       0x14
-    .equ SSI_SPI_CTRLR0,  0xf4
     /* CTRLR0: DFS_32 = 31 (32-bit frames, bits 20:16), TMOD = 3 (EEPROM read, bits 9:8) */
     .equ CTRLR0_XIP,      (31 << 16) | (3 << 8)
     /* SPI_CTRLR0: XIP_CMD = 0x03 (bits 31:24), INST_L = 2 (8-bit instruction, bits 9:8),

@@ -25,17 +25,8 @@
     .syntax unified
     .cpu cortex-m0plus
     .thumb
-    .include "boot2_enter_app.inc"
+    .include "boot2_common.inc"
 
-    .equ SSI_BASE,          0x18000000
-    .equ SSI_CTRLR0,        0x00
-    .equ SSI_CTRLR1,        0x04
-    .equ SSI_SSIENR,        0x08
-    .equ SSI_BAUDR,         0x14
-    .equ SSI_SR,            0x28
-    .equ SSI_DR0,           0x60
-    .equ SSI_RX_SAMPLE_DLY, 0xf0
-    .equ SSI_SPI_CTRLR0,    0xf4
     .equ SR_BUSY,           1
     .equ SR_TFE,            4
 

@@ -97,6 +97,25 @@ static inline rgb num_i_rgb_add(rgb a, rgb b)
     return r;
 }
 
+/* num_chan_levels for L = 31 or 63 (RGB565), as in num.c: x < 255 L + 128
+ * < 2^16, so x / 255 is always the multiply-shift; c L + 255 2^(F-1) <
+ * 2^(F+14) fits 32 bits for F <= 17. */
+static inline uint32_t num_i_chan565(num c, uint32_t levels)
+{
+    if (c <= 0) return 0;
+    if (c >= (num)(255 * NUM_ONE_RAW)) return levels;
+#if NUM_FRAC <= 17
+    uint32_t x = ((uint32_t)c * levels + 255u * (NUM_ONE_RAW / 2)) >> NUM_FRAC;
+#else
+    uint32_t x = (uint32_t)((num_umul32((uint32_t)c, levels) + (uint64_t)255 * (NUM_ONE_RAW / 2)) >> NUM_FRAC);
+#endif
+    return (x * 0x8081u) >> 23;
+}
+static inline uint16_t num_i_rgb_to_565(rgb c)
+{
+    return (uint16_t)(num_i_chan565(c.r, 31) << 11 | num_i_chan565(c.g, 63) << 5 | num_i_chan565(c.b, 31));
+}
+
 #define num_add(a, b)      num_i_add(a, b)
 #define num_sub(a, b)      num_i_sub(a, b)
 #define num_mul(a, b)      num_i_mul(a, b)
@@ -111,5 +130,6 @@ static inline rgb num_i_rgb_add(rgb a, rgb b)
 #define v3_scale(a, s)     num_i_v3_scale(a, s)
 #define rgb_scale(c, k)    num_i_rgb_scale(c, k)
 #define rgb_add(a, b)      num_i_rgb_add(a, b)
+#define rgb_to_565(c)      num_i_rgb_to_565(c)
 
 #endif

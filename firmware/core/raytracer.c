@@ -97,6 +97,9 @@ int rt_init(struct render_ctx *ctx)
     rt->col_x = (num *)(w + l.colx);
     rt->adapt = (uint8_t)adapt_side(s);
     rt->adapt_diff = num_from_int(s->rt.adaptive_threshold ? s->rt.adaptive_threshold : RT_SUBSAMPLE_DIFF);
+    /* the bilinear weights i / w of every rectangle side w a block can have */
+    for (int w = 1; w <= rt->adapt; w++)
+        for (int i = 0; i <= w; i++) rt->adapt_ratio[w][i] = num_from_ratio(i, w);
     for (int k = 0; k < 2; k++) {
         rt->corner[k] = (struct rt_sample *)(w + l.corner[k]);
         rt->corner_have[k] = w + l.corner_have[k];
@@ -538,12 +541,11 @@ static void refine(struct rt_block *bk, int x, int y, int wx, int wy, int right,
     }
     /* bilinear: per row the colours at the left and right edges, then
      * along the row L + (R - L) fx, with fx per column from a table */
-    num fxs[RT_MAX_ADAPT + 1];
-    for (int i = 0; i <= wx; i++) fxs[i] = num_from_ratio(i, wx);
+    const num *fxs = bk->rt->adapt_ratio[wx], *fys = bk->rt->adapt_ratio[wy];
     for (int gy = y; gy < y + wy + (bottom ? 1 : 0); gy++) {
         int row = bk->r0 + gy;
         if (row < t->y0 || row >= t->y1) continue;
-        num fy = num_from_ratio(gy - y, wy);
+        num fy = fys[gy - y];
         rgb lc = rgb_add(s00->c, rgb_scale(rgb_sub(s10->c, s00->c), fy));
         rgb rc = rgb_add(s01->c, rgb_scale(rgb_sub(s11->c, s01->c), fy));
         rgb dc = rgb_sub(rc, lc);

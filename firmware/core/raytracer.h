@@ -134,6 +134,7 @@ struct rt_state {
     uint8_t ss, ss_adaptive, subsample;
     uint8_t adapt;        /* adaptive subsampling block side (0: off) */
     num adapt_diff;       /* its colour threshold */
+    num adapt_ratio[RT_MAX_ADAPT + 1][RT_MAX_ADAPT + 1]; /* [w][i] = num_from_ratio(i, w), w <= adapt */
     uint8_t pass;         /* enum render_pass of the following strips */
     mat3 cam_rot;
     vec3 cam_pos;

@@ -3,13 +3,6 @@
 #include "raytracer.h"
 #include "raster.h"
 
-void render_put(struct render_target *t, int x, int y, rgb c)
-{
-    size_t i = (size_t)(y - t->y0) * t->width + (size_t)x;
-    t->rgb565[i] = rgb_to_565(c);
-    if (t->rgb888) rgb_to_888(c, t->rgb888 + 3 * i);
-}
-
 size_t render_work_size(const struct scene *s, uint16_t width, uint16_t height, uint16_t strip_rows)
 {
     (void)strip_rows;

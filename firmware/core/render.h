@@ -73,7 +73,13 @@ enum render_pass { RENDER_PASS_FULL = 0, RENDER_PASS_COARSE = 1 };
 int render_set_pass(struct render_ctx *ctx, uint8_t pass);
 
 /* Writes one pixel of a strip (both outputs); x, y are screen coordinates
- * inside the strip. Shared by both renderers. */
-void render_put(struct render_target *t, int x, int y, rgb c);
+ * inside the strip. Shared by both renderers (inline: on ARMv6-M the call
+ * and the by-value colour cost as much as the conversion). */
+static inline void render_put(struct render_target *t, int x, int y, rgb c)
+{
+    size_t i = (size_t)(y - t->y0) * t->width + (size_t)x;
+    t->rgb565[i] = rgb_to_565(c);
+    if (t->rgb888) rgb_to_888(c, t->rgb888 + 3 * i);
+}
 
 #endif

@@ -31,7 +31,10 @@ void rt_ray_init(struct rt_ray *r, vec3 o, vec3 d, int16_t origin, uint8_t from_
     r->from_camera = from_camera;
     r->exact = 0;
     r->a = r->as = 0;           /* set by rt_ray_exact */
-    r->ds = d;
+    /* by components: a struct copy here becomes a memcpy call on ARMv6-M */
+    r->ds.x = d.x;
+    r->ds.y = d.y;
+    r->ds.z = d.z;
     r->tscale = NUM_ONE;
 }
 

@@ -73,6 +73,9 @@ int bench_main(void)
 #ifdef BENCH_RT_ADAPT
     s->rt.adaptive_subsample = BENCH_RT_ADAPT;   /* the adaptive profile image */
 #endif
+#ifdef BENCH_RT_THRESH
+    s->rt.adaptive_threshold = BENCH_RT_THRESH;
+#endif
     bad |= report("scene:book/raytracer-05", "strip16", frame(s, W, H));
 #ifndef BENCH_RT_QUICK
     /* KEY=VALUE variants are scene options (tools/bench/accuracy.py measures

@@ -46,6 +46,8 @@ $(foreach v,$(VARIANTS),$(eval $(call RT_ACC_PROG,$(v))))
 TEST_DEPS += $(BUILD)/host/test_raytracer_accuracy
 # The big comparison runs optimised (30 renders, 15 of them 600x600).
 TESTS += $(BUILD)/host/test_raytracer_accuracy
+# The real-time option's accuracy and ray counts (docs/raytracer.md).
+TESTS += tests/test_rt_realtime.sh:$(BUILD)/host_sim
 
 # `make bench`: raytracer-05 at 240x240 on the emulated Cortex-M0+ and M4F,
 # fixed and float, plus each chapter-5 option (tools/bench/bench_raytracer.c).

@@ -41,6 +41,17 @@ static inline num num_i_sub(num a, num b)
     return r;
 }
 
+static inline num num_i_neg(num a)
+{
+    if (a == INT32_MIN) { NUM_I_SAT(); return NUM_MAX; }
+    return -a;
+}
+static inline num num_i_abs(num a)
+{
+    if (a == INT32_MIN) { NUM_I_SAT(); return NUM_MAX; }
+    return a < 0 ? -a : a;
+}
+
 static inline num num_i_mul(num a, num b) { return num_i_sat64(num_mul_round(a, b)); }
 
 /* wnum_add / wnum_sub: operands and result clamped to +-INT64_MAX/4 */
@@ -81,6 +92,21 @@ static inline vec3 num_i_v3_sub(vec3 a, vec3 b)
     vec3 r = { num_i_sub(a.x, b.x), num_i_sub(a.y, b.y), num_i_sub(a.z, b.z) };
     return r;
 }
+static inline vec3 num_i_v3(num x, num y, num z)
+{
+    vec3 r = { x, y, z };
+    return r;
+}
+static inline rgb num_i_rgb_make(num r, num g, num b)
+{
+    rgb c = { r, g, b };
+    return c;
+}
+static inline vec3 num_i_v3_neg(vec3 a)
+{
+    vec3 r = { num_i_neg(a.x), num_i_neg(a.y), num_i_neg(a.z) };
+    return r;
+}
 static inline vec3 num_i_v3_scale(vec3 a, num s)
 {
     vec3 r = { num_i_mul(a.x, s), num_i_mul(a.y, s), num_i_mul(a.z, s) };
@@ -96,6 +122,7 @@ static inline rgb num_i_rgb_add(rgb a, rgb b)
     rgb r = { num_i_add(a.r, b.r), num_i_add(a.g, b.g), num_i_add(a.b, b.b) };
     return r;
 }
+
 
 /* num_chan_levels for L = 31 or 63 (RGB565), as in num.c: x < 255 L + 128
  * < 2^16, so x / 255 is always the multiply-shift; c L + 255 2^(F-1) <
@@ -119,6 +146,8 @@ static inline uint16_t num_i_rgb_to_565(rgb c)
 #define num_add(a, b)      num_i_add(a, b)
 #define num_sub(a, b)      num_i_sub(a, b)
 #define num_mul(a, b)      num_i_mul(a, b)
+#define num_neg(a)         num_i_neg(a)
+#define num_abs(a)         num_i_abs(a)
 #define wnum_add(a, b)     num_i_wadd(a, b)
 #define wnum_sub(a, b)     num_i_wsub(a, b)
 #define wnum_mul(a, b)     num_i_wmul(a, b)
@@ -128,6 +157,9 @@ static inline uint16_t num_i_rgb_to_565(rgb c)
 #define v3_add(a, b)       num_i_v3_add(a, b)
 #define v3_sub(a, b)       num_i_v3_sub(a, b)
 #define v3_scale(a, s)     num_i_v3_scale(a, s)
+#define v3_neg(a)          num_i_v3_neg(a)
+#define v3(x, y, z)        num_i_v3(x, y, z)
+#define rgb_make(r, g, b)  num_i_rgb_make(r, g, b)
 #define rgb_scale(c, k)    num_i_rgb_scale(c, k)
 #define rgb_add(a, b)      num_i_rgb_add(a, b)
 #define rgb_to_565(c)      num_i_rgb_to_565(c)

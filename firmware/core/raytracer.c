@@ -10,7 +10,7 @@
 #define RT_ADAPTIVE_DIFF NUM_C(12.0)
 
 struct layout {
-    size_t state, oc, items, unb, bvh, bvh_items, occ, lray, llen, row_c, row_item, colx;
+    size_t state, oc, items, unb, bvh, bvh_items, occ, lray, llen, row_c, row_item, colx, rowy, ratio;
     size_t corner[2], corner_have[2], colbuf[2], colbuf_have[2], grid, grid_have;   /* adaptive subsampling */
     size_t total;
 };
@@ -22,7 +22,7 @@ static unsigned adapt_side(const struct scene *s)
     return v < 2 ? 0u : (v > RT_MAX_ADAPT ? RT_MAX_ADAPT : v);
 }
 
-static struct layout layout_of(const struct scene *s, uint16_t width)
+static struct layout layout_of(const struct scene *s, uint16_t width, uint16_t height)
 {
     unsigned ab = adapt_side(s);
     struct layout l;
@@ -40,6 +40,9 @@ static struct layout layout_of(const struct scene *s, uint16_t width)
     l.row_c = off; off += ALIGN8(sizeof(rgb) * width);
     l.row_item = off; off += ALIGN8(sizeof(int16_t) * width);
     l.colx = off; off += ALIGN8(sizeof(num) * width);
+    /* adaptive subsampling visits rows out of order: every row's viewport y */
+    l.rowy = off; off += ALIGN8(sizeof(num) * (ab ? height : 0u));
+    l.ratio = off; off += ALIGN8(sizeof(num) * (ab ? (ab + 1u) * (ab + 1u) : 0u));
     /* adaptive subsampling: two full rows of samples, a block's two columns
      * and its (B + 1)^2 grid, each with its flags (empty when off) */
     size_t nb = ab ? ab + 1u : 0, ng = nb * nb, nw = ab ? width : 0;
@@ -59,8 +62,7 @@ static struct layout layout_of(const struct scene *s, uint16_t width)
 
 size_t rt_work_size(const struct scene *s, uint16_t width, uint16_t height)
 {
-    (void)height;
-    return layout_of(s, width).total;
+    return layout_of(s, width, height).total;
 }
 
 void rt_set_shadow_probe(struct render_ctx *ctx, uint8_t *probe)
@@ -77,7 +79,7 @@ int rt_init(struct render_ctx *ctx)
         if (s->csg[k].a >= s->nobjects || s->csg[k].b >= s->nobjects ||
             s->objects[s->csg[k].a].shape != RT_SPHERE || s->objects[s->csg[k].b].shape != RT_SPHERE)
             return -1;
-    struct layout l = layout_of(s, ctx->width);
+    struct layout l = layout_of(s, ctx->width, ctx->height);
     unsigned char *w = ctx->work;
     struct rt_state *rt = (struct rt_state *)(w + l.state);
     *rt = (struct rt_state){ 0 };
@@ -95,11 +97,13 @@ int rt_init(struct render_ctx *ctx)
     rt->row_c = (rgb *)(w + l.row_c);
     rt->row_item = (int16_t *)(w + l.row_item);
     rt->col_x = (num *)(w + l.colx);
+    rt->row_y_tab = adapt_side(s) ? (num *)(w + l.rowy) : NULL;
     rt->adapt = (uint8_t)adapt_side(s);
     rt->adapt_diff = num_from_int(s->rt.adaptive_threshold ? s->rt.adaptive_threshold : RT_SUBSAMPLE_DIFF);
     /* the bilinear weights i / w of every rectangle side w a block can have */
-    for (int w = 1; w <= rt->adapt; w++)
-        for (int i = 0; i <= w; i++) rt->adapt_ratio[w][i] = num_from_ratio(i, w);
+    rt->adapt_ratio = (num *)(w + l.ratio);
+    for (int side = 1; side <= rt->adapt; side++)
+        for (int i = 0; i <= side; i++) rt->adapt_ratio[side * (rt->adapt + 1) + i] = num_from_ratio(i, side);
     for (int k = 0; k < 2; k++) {
         rt->corner[k] = (struct rt_sample *)(w + l.corner[k]);
         rt->corner_have[k] = w + l.corner_have[k];
@@ -135,6 +139,9 @@ int rt_init(struct render_ctx *ctx)
     for (uint16_t c = 0; c < ctx->width; c++)
         rt->col_x[c] = num_div(num_mul(num_from_int(c - ctx->width / 2), rt->vw), rt->wn);
     rt->row_y_row = -1;
+    if (rt->row_y_tab)
+        for (int r = 0; r < ctx->height; r++)
+            rt->row_y_tab[r] = num_div(num_mul(num_from_int(rt->h / 2 - 1 - r), rt->vh), rt->hn);
     rt->cam_pos = s->camera.position;
     rt->cam_rot = s->camera.rotation;
     rt_frame_constants(rt);
@@ -294,6 +301,7 @@ static vec3 canvas_to_viewport(const struct rt_state *rt, num x, num y)
 /* The same for a pixel's centre: x from the column table, y once a row. */
 static vec3 pixel_to_viewport(struct rt_state *rt, int col, int row)
 {
+    if (rt->row_y_tab) return rotate_direction(rt, v3(rt->col_x[col], rt->row_y_tab[row], rt->d));
     if (rt->row_y_row != row) {
         rt->row_y = num_div(num_mul(num_from_int(rt->h / 2 - 1 - row), rt->vh), rt->hn);
         rt->row_y_row = row;
@@ -395,7 +403,7 @@ static void subsampled_row(struct rt_state *rt, struct render_target *t, int row
     render_put(t, w - 1, row, rt->row_c[w - 1]);
 }
 
-static rgb rgb_sub(rgb a, rgb b) { return rgb_make(num_sub(a.r, b.r), num_sub(a.g, b.g), num_sub(a.b, b.b)); }
+static inline rgb rgb_sub(rgb a, rgb b) { return rgb_make(num_sub(a.r, b.r), num_sub(a.g, b.g), num_sub(a.b, b.b)); }
 
 /* One primary ray through the centre of pixel (col, row). */
 static struct rt_sample sample_at(struct rt_state *rt, int col, int row)
@@ -541,7 +549,8 @@ static void refine(struct rt_block *bk, int x, int y, int wx, int wy, int right,
     }
     /* bilinear: per row the colours at the left and right edges, then
      * along the row L + (R - L) fx, with fx per column from a table */
-    const num *fxs = bk->rt->adapt_ratio[wx], *fys = bk->rt->adapt_ratio[wy];
+    const num *ratio = bk->rt->adapt_ratio;
+    const num *fxs = ratio + wx * (bk->rt->adapt + 1), *fys = ratio + wy * (bk->rt->adapt + 1);
     for (int gy = y; gy < y + wy + (bottom ? 1 : 0); gy++) {
         int row = bk->r0 + gy;
         if (row < t->y0 || row >= t->y1) continue;

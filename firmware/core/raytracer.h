@@ -134,7 +134,7 @@ struct rt_state {
     uint8_t ss, ss_adaptive, subsample;
     uint8_t adapt;        /* adaptive subsampling block side (0: off) */
     num adapt_diff;       /* its colour threshold */
-    num adapt_ratio[RT_MAX_ADAPT + 1][RT_MAX_ADAPT + 1]; /* [w][i] = num_from_ratio(i, w), w <= adapt */
+    num *adapt_ratio;     /* [w (adapt + 1) + i] = num_from_ratio(i, w) for w <= adapt (bilinear weights) */
     uint8_t pass;         /* enum render_pass of the following strips */
     mat3 cam_rot;
     vec3 cam_pos;
@@ -155,6 +155,7 @@ struct rt_state {
     rgb *row_c;                /* one row of colours (subsampling/adaptive) */
     int16_t *row_item;
     num *col_x;                /* viewport x of each column's centre */
+    num *row_y_tab;            /* adaptive subsampling: viewport y of every row (else NULL) */
     num row_y;                 /* viewport y of row row_y_row */
     int32_t row_y_row;
     int16_t skip_item;         /* item closest_intersection skips (already tested), -1 none */

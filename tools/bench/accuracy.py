@@ -9,7 +9,8 @@ mode against the double build of the same scene at the same size:
 `host_sim --compare double`. Accuracy is of the scene as written (its own
 options), stated in `accuracy_of`; a variant named KEY=VALUE (a rasterizer
 method, e.g. perspective_step=32 or lighting=vertex) is measured on the scene
-with that option set (in the scene's rasterizer or raytracer block). A
+with that option set (in the scene's rasterizer or raytracer block; several
+options joined by commas, KEY=VALUE,KEY=VALUE, are all set). A
 variant named *_pass measures one pass of the progressive display, not an
 image: it gets no accuracy. The reference is always the double build's
 exact method (host_sim --compare). The file is rewritten atomically.
@@ -25,6 +26,18 @@ sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."
 from stability import host_sim_compare  # noqa: E402
 
 
+def set_option(text, opt):
+    """The scene text with `KEY = VALUE` set: replaced where the key is
+    written, else added to the rasterizer (or raytracer) block."""
+    k, _, v = opt.partition("=")
+    if re.search(r"^\s*%s\s*=" % k, text, re.M):
+        return re.sub(r"^(\s*%s\s*=\s*)\S+" % k, r"\g<1>%s" % v, text, count=1, flags=re.M)
+    block = "raytracer" if re.search(r"^renderer\s*=\s*raytracer", text, re.M) else "rasterizer"
+    if re.search(r"^%s\s*\{" % block, text, re.M):
+        return re.sub(r"^(%s\s*\{)" % block, r"\1 %s = %s" % (k, v), text, count=1, flags=re.M)
+    return text + "\n%s { %s = %s }\n" % (block, k, v)
+
+
 def compare_variant(host_sim, path, numeric, w, h, opt):
     """host_sim --compare double of the scene, with `KEY = VALUE` added to
     its rasterizer (or raytracer) block when opt is given."""
@@ -33,15 +46,8 @@ def compare_variant(host_sim, path, numeric, w, h, opt):
         return host_sim_compare(host_sim, path, numeric, size)
     with open(path) as f:
         text = f.read()
-    k, _, v = opt.partition("=")
-    if re.search(r"^\s*%s\s*=" % k, text, re.M):
-        text = re.sub(r"^(\s*%s\s*=\s*)\S+" % k, r"\g<1>%s" % v, text, count=1, flags=re.M)
-    else:
-        block = "raytracer" if re.search(r"^renderer\s*=\s*raytracer", text, re.M) else "rasterizer"
-        if re.search(r"^%s\s*\{" % block, text, re.M):
-            text = re.sub(r"^(%s\s*\{)" % block, r"\1 %s = %s" % (k, v), text, count=1, flags=re.M)
-        else:
-            text += "\n%s { %s = %s }\n" % (block, k, v)
+    for one in opt.split(","):
+        text = set_option(text, one)
     fd, tmp = tempfile.mkstemp(suffix=".scene")
     try:
         with os.fdopen(fd, "w") as f:
@@ -74,7 +80,7 @@ def main():
         variant = l.get("variant", "default")
         if variant.endswith("_pass"):
             continue
-        opt = variant if re.match(r"^[a-z_]+=[a-z0-9_]+$", variant) else None
+        opt = variant if re.match(r"^[a-z_]+=[a-z0-9_]+(,[a-z_]+=[a-z0-9_]+)*$", variant) else None
         key = (path, numeric, l["width"], l["height"], opt)
         if key not in cache:
             try:

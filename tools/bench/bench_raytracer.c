@@ -88,6 +88,10 @@ int bench_main(void)
     bad |= rt05(s, &base, "adaptive_subsample=4");
     s->rt.adaptive_subsample = 8;
     bad |= rt05(s, &base, "adaptive_subsample=8");
+    /* the real-time option at its cheapest setting above 55 dB */
+    s->rt.adaptive_subsample = 4;
+    s->rt.adaptive_threshold = 7;
+    bad |= rt05(s, &base, "adaptive_subsample=4,adaptive_threshold=7");
     s->rt.no_shortcuts = 1;
     bad |= rt05(s, &base, "shortcuts=off");
     s->rt.no_frame_cache = 1;

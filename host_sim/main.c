@@ -39,6 +39,17 @@ static const char usage_text[] =
     "  --frames N                    render N frames (default 1)\n"
     "  --stats                       one JSON object per frame on stdout\n"
     "  --backend sim|linux           where the HAL's bytes go (default sim)\n"
+    "  --rotation 0..3               quarter turns added to the panel's orientation (the\n"
+    "                                module mounted turned; odd turns need a square size)\n"
+    "Raspberry Pi (--backend linux: spidev + libgpiod; docs/raspberry-pi.md):\n"
+    "  --spi-dev PATH                spidev device (default /dev/spidev0.0)\n"
+    "  --spi-hz N                    SPI clock in Hz (default 32000000)\n"
+    "  --spi-mode 0..3               SPI mode (default 3 for the ST7789, CS-less modules\n"
+    "                                need it; 0 for the ILI9341)\n"
+    "  --gpio-chip NAME|PATH         GPIO chip of the lines (default gpiochip0)\n"
+    "  --dc N, --rst N|none, --bl N|none\n"
+    "                                BCM line numbers of D/C, RESET, backlight\n"
+    "                                (default 25, 27, 18)\n"
     "tool options:\n"
     "  --compare fixed|float|double  also render with this core (memory framebuffer)\n"
     "                                and report psnr/max_err of the last frame's colours\n"
@@ -55,6 +66,9 @@ static const char usage_text[] =
     "             3 panel protocol violation\n";
 
 struct opts {
+    const char *spi_dev, *gpio_chip;
+    unsigned spi_hz, rotation;
+    int spi_mode, dc, rst, bl;   /* -1 / PANEL_OUT_PIN_DEFAULT: the default */
     const char *scene, *panel, *numeric, *out, *out_raw, *out_rgb888, *backend;
     const char *compare, *fault;
     int has_size, stats, summary, progressive;
@@ -105,7 +119,8 @@ static int parse_args(int argc, char **argv, struct opts *o)
 {
     static const char *const with_arg[] = {
         "--scene", "--panel", "--size", "--numeric", "--out", "--out-raw", "--out-rgb888",
-        "--frames", "--backend", "--compare", "--strip-rows", "--inject-fault", "--num-frac", NULL,
+        "--frames", "--backend", "--compare", "--strip-rows", "--inject-fault", "--num-frac",
+        "--spi-dev", "--spi-hz", "--spi-mode", "--gpio-chip", "--dc", "--rst", "--bl", "--rotation", NULL,
     };
     for (int i = 1; i < argc; i++) {
         const char *a = argv[i], *val = NULL;
@@ -166,6 +181,23 @@ static int parse_args(int argc, char **argv, struct opts *o)
                 return fail(EXIT_USAGE, "bad --num-frac '%s' (%d..%d)", val, SCENE_FORMAT_FRAC_MIN,
                             SCENE_FORMAT_FRAC_MAX);
             o->num_frac = (int)f;
+        } else if (!strcmp(name, "--spi-dev")) o->spi_dev = val;
+        else if (!strcmp(name, "--gpio-chip")) o->gpio_chip = val;
+        else if (!strcmp(name, "--spi-hz")) {
+            if (!(o->spi_hz = parse_count(val, 125000000)))
+                return fail(EXIT_USAGE, "bad --spi-hz '%s' (1..125000000)", val);
+        } else if (!strcmp(name, "--spi-mode") || !strcmp(name, "--rotation")) {
+            if (val[0] < '0' || val[0] > '3' || val[1])
+                return fail(EXIT_USAGE, "bad %s '%s' (0..3)", name, val);
+            if (!strcmp(name, "--spi-mode")) o->spi_mode = val[0] - '0';
+            else o->rotation = (unsigned)(val[0] - '0');
+        } else if (!strcmp(name, "--dc") || !strcmp(name, "--rst") || !strcmp(name, "--bl")) {
+            int *pin = !strcmp(name, "--dc") ? &o->dc : !strcmp(name, "--rst") ? &o->rst : &o->bl;
+            if (strcmp(name, "--dc") && !strcmp(val, "none")) *pin = -1;
+            else if (!strcmp(val, "0")) *pin = 0;
+            else if (!(*pin = (int)parse_count(val, 1023)))
+                return fail(EXIT_USAGE, "bad %s '%s' (a line number 0..1023%s)", name, val,
+                            strcmp(name, "--dc") ? " or none" : "");
         } else if (!strcmp(name, "--inject-fault")) {
             if (!strcmp(val, "signal-in-write")) img_fault_signal_in_write = 1;   /* imgio's, not the panel's */
             else o->fault = val;
@@ -357,6 +389,11 @@ static int run(const struct opts *o, struct core *c, struct core *ref, struct pa
         return fail(EXIT_USAGE, "--inject-fault needs an emulated panel, not --panel none");
     if (o->compare && !strcmp(backend, "linux"))
         return fail(EXIT_USAGE, "--compare needs --backend sim");
+    if (strcmp(backend, "linux") && (o->spi_dev || o->gpio_chip || o->spi_hz || o->spi_mode >= 0 ||
+                                     o->dc != PANEL_OUT_PIN_DEFAULT || o->rst != PANEL_OUT_PIN_DEFAULT ||
+                                     o->bl != PANEL_OUT_PIN_DEFAULT))
+        return fail(EXIT_USAGE, "--spi-dev, --spi-hz, --spi-mode, --gpio-chip, --dc, --rst and --bl "
+                                "need --backend linux");
     const char *outs[3] = { o->out, o->out_raw, o->out_rgb888 };
     for (int i = 0; i < 3; i++)
         if (outs[i] && (rc = img_check_dest(outs[i], err, sizeof err)))
@@ -411,7 +448,11 @@ static int run(const struct opts *o, struct core *c, struct core *ref, struct pa
         if ((rc = core_open(c, api, o->scene))) return rc;
     }
 
-    struct panel_out_opts po = { panel, backend, o->fault, (uint16_t)w, (uint16_t)h };
+    struct panel_out_opts po = { .panel = panel, .backend = backend, .fault = o->fault,
+                                 .width = (uint16_t)w, .height = (uint16_t)h,
+                                 .rotation = (uint8_t)o->rotation, .spi_dev = o->spi_dev,
+                                 .gpio_chip = o->gpio_chip, .spi_hz = o->spi_hz, .spi_mode = o->spi_mode,
+                                 .dc = o->dc, .rst = o->rst, .bl = o->bl };
     if ((rc = panel_out_open(pp, &po, err, sizeof err))) return fail(rc, "%s", err);
     if ((rc = core_init(c, w, h, rows))) return rc;
     /* valid, but almost certainly not what was meant: said (once every check
@@ -538,7 +579,8 @@ static int run(const struct opts *o, struct core *c, struct core *ref, struct pa
 
 int main(int argc, char **argv)
 {
-    struct opts o = { 0 };
+    struct opts o = { .spi_mode = -1, .dc = PANEL_OUT_PIN_DEFAULT, .rst = PANEL_OUT_PIN_DEFAULT,
+                      .bl = PANEL_OUT_PIN_DEFAULT };
     int rc = parse_args(argc, argv, &o);
     if (rc) return rc;
     struct core c = { 0 }, ref = { 0 };

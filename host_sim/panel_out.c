@@ -172,6 +172,13 @@ int panel_out_open(struct panel_out **out, const struct panel_out_opts *o, char 
 #else
     uint8_t rot;
     const char *name = pick_module(o->panel, o->width, o->height, &rot);
+    if (o->rotation > 3 || ((o->rotation & 1) && o->width != o->height)) {
+        snprintf(err, errlen, "--rotation %u: %s", (unsigned)o->rotation,
+                 o->rotation > 3 ? "quarter turns 0..3" :
+                 "odd turns need a square size (--size picks portrait or landscape)");
+        return 2;
+    }
+    rot = (uint8_t)((rot + o->rotation) & 3);
     const struct panel_desc *d = panel_find(name);
     if (!d) {
         snprintf(err, errlen, "no panel driver for %s in this build", name);
@@ -188,6 +195,13 @@ int panel_out_open(struct panel_out **out, const struct panel_out_opts *o, char 
         p->kind = OUT_LINUX;
         if ((rc = open_memory(p, err, errlen))) return rc;
         hal_linux_default_config(&cfg);
+        if (o->spi_dev) cfg.spi_dev = o->spi_dev;
+        if (o->gpio_chip) cfg.gpio_chip = o->gpio_chip;
+        if (o->spi_hz) cfg.spi_hz = o->spi_hz;
+        cfg.spi_mode = (uint8_t)(o->spi_mode >= 0 ? o->spi_mode : !strcmp(o->panel, "st7789") ? 3 : 0);
+        if (o->dc != PANEL_OUT_PIN_DEFAULT) cfg.dc = o->dc;
+        if (o->rst != PANEL_OUT_PIN_DEFAULT) cfg.reset = o->rst;
+        if (o->bl != PANEL_OUT_PIN_DEFAULT) cfg.bl = o->bl;
         if (hal_linux_open(&p->lx, &p->hal, &cfg)) {
             snprintf(err, errlen, "backend linux: %s", hal_linux_error(&p->lx));
             return 2;

@@ -24,7 +24,16 @@ struct panel_out_opts {
     const char *backend;  /* "sim" or "linux" */
     const char *fault;    /* NULL, or a fault to inject (see panel_out_faults) */
     uint16_t width, height;
+    uint8_t rotation;     /* quarter turns added to the orientation the size picks
+                             (the module mounted turned); odd turns need a square size */
+    /* --backend linux (0 / NULL / PANEL_OUT_PIN_DEFAULT: hal_linux's defaults) */
+    const char *spi_dev, *gpio_chip;
+    uint32_t spi_hz;
+    int spi_mode;         /* 0..3, or -1: 3 for the ST7789 (works with CS-less modules), 0 else */
+    int dc, rst, bl;      /* line offsets; -1 not connected; PANEL_OUT_PIN_DEFAULT */
 };
+
+#define PANEL_OUT_PIN_DEFAULT (-2)
 
 /* Names accepted in panel_out_opts.fault, separated by '|', for messages. */
 extern const char panel_out_faults[];

@@ -265,7 +265,8 @@ FLASHER_BIN  := $(BUILD)/flasher
 # --gpio-reset (Raspberry Pi host) with libgpiod when pkg-config finds it;
 # without it the option says so and exits 2.
 GPIOD_OK     := $(shell pkg-config --exists libgpiod 2>/dev/null && echo 1)
-FLASHER_GPIOD_CFLAGS := $(if $(GPIOD_OK),-DFLASHER_GPIOD $(shell pkg-config --cflags libgpiod))
+FLASHER_GPIOD_CFLAGS := $(if $(GPIOD_OK),-DFLASHER_GPIOD -DGPIOD_API_MAJOR=$(shell pkg-config --modversion libgpiod | cut -d. -f1) \
+                        $(shell pkg-config --cflags libgpiod))
 FLASHER_GPIOD_LIBS   := $(if $(GPIOD_OK),$(shell pkg-config --libs libgpiod))
 $(BUILD)/host/none/tools/flasher/%.o $(BUILD)/asan/none/tools/flasher/%.o: EXTRA_CFLAGS += -Itools/flasher $(USB_CFLAGS)
 $(BUILD)/host/none/tools/flasher/gpio_reset.o $(BUILD)/asan/none/tools/flasher/gpio_reset.o: EXTRA_CFLAGS += $(FLASHER_GPIOD_CFLAGS)
@@ -281,11 +282,11 @@ PROGRAMS  += $(FLASHER_BIN)
 TEST_DEPS += $(FLASHER_BIN) $(BUILD)/asan/tests/test_flasher
 TESTS     += $(BUILD)/asan/tests/test_flasher tests/test_flasher_noboard.sh:$(BUILD)
 
-# The GPIO reset sequence against a fake libgpiod (the test defines the
-# gpiod functions; needs only the header).
+# The GPIO reset sequence against a fake libgpiod (tests/fake_gpiod.c defines
+# the gpiod functions; needs only the header). The 2.x API: mk/pi.mk.
 ifneq ($(GPIOD_OK),)
-$(BUILD)/asan/none/tests/test_gpio_reset.o: EXTRA_CFLAGS += -Itools/flasher -Itests $(FLASHER_GPIOD_CFLAGS)
-$(BUILD)/asan/tests/test_gpio_reset: $(call obj,asan,none,tools/flasher/gpio_reset.c tests/test_gpio_reset.c)
+$(BUILD)/asan/none/tests/test_gpio_reset.o $(BUILD)/asan/none/tests/fake_gpiod.o: EXTRA_CFLAGS += -Itools/flasher -Itests $(FLASHER_GPIOD_CFLAGS)
+$(BUILD)/asan/tests/test_gpio_reset: $(call obj,asan,none,tools/flasher/gpio_reset.c tests/fake_gpiod.c tests/test_gpio_reset.c)
 	@mkdir -p $(@D)
 	$(Q)$(CC) $(LDFLAGS_asan) $^ -o $@
 TEST_DEPS += $(BUILD)/asan/tests/test_gpio_reset

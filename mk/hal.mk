@@ -13,9 +13,13 @@ HAL_LINUX_SRCS := hal/linux/hal_linux.c
 HAL_GPIOD := $(shell pkg-config --exists libgpiod 2>/dev/null && echo 1)
 ifeq ($(HAL_GPIOD),1)
 HAL_LDLIBS := $(shell pkg-config --libs libgpiod)
+# its API (1.x or 2.x) by the version pkg-config reports
+HAL_GPIOD_MAJOR := $(shell pkg-config --modversion libgpiod | cut -d. -f1)
+$(BUILD)/%/none/hal/linux/hal_linux.o $(BUILD)/%/none/tests/test_hal_linux.o: EXTRA_CFLAGS += -DGPIOD_API_MAJOR=$(HAL_GPIOD_MAJOR) \
+                                                       $(shell pkg-config --cflags libgpiod)
 else
 HAL_LDLIBS :=
-$(BUILD)/%/none/hal/linux/hal_linux.o: EXTRA_CFLAGS += -DHAL_LINUX_NO_GPIOD
+$(BUILD)/%/none/hal/linux/hal_linux.o $(BUILD)/%/none/tests/test_hal_linux.o: EXTRA_CFLAGS += -DHAL_LINUX_NO_GPIOD
 endif
 
 hal_objs = $(call obj,$(1),none,$(HAL_SRCS) $(HAL_SIM_SRCS) $(HAL_LINUX_SRCS))

@@ -12,7 +12,8 @@ flash_pkgs="libusb-1.0-0-dev libgpiod-dev pkg-config"
 charts_pkgs="python3 python3-matplotlib"
 bench_pkgs="$firmware_pkgs qemu-system-arm valgrind nodejs"
 # libFuzzer's runtime is only recommended by clang, and installs skip recommends.
-test_pkgs="$run_pkgs $firmware_pkgs $flash_pkgs $bench_pkgs clang libclang-rt-dev python3"
+# python3-pip: pip downloads the gpiod source distribution (libgpiod 2, mk/pi.mk).
+test_pkgs="$run_pkgs $firmware_pkgs $flash_pkgs $bench_pkgs clang libclang-rt-dev python3 python3-pip"
 
 case "$group" in
   run) want=$run_pkgs ;;

@@ -1,4 +1,11 @@
-/* hal_linux.c — HAL backend: spidev + libgpiod (1.6 API) + CLOCK_MONOTONIC. */
+/* hal_linux.c — HAL backend: spidev + libgpiod + CLOCK_MONOTONIC.
+ *
+ * libgpiod's API changed with its major version: 1.x (Debian 12) has line
+ * objects (gpiod_chip_get_line, gpiod_line_request_output); 2.x (Debian 13,
+ * current Raspberry Pi OS) has line requests built from settings and a line
+ * config. GPIOD_API_MAJOR (1 or 2, from pkg-config's version of libgpiod,
+ * mk/hal.mk) selects the one compiled; each line is its own request/object,
+ * so an error names the line either way. */
 #include <errno.h>
 #include <fcntl.h>
 #include <stdarg.h>
@@ -10,6 +17,9 @@
 #include <linux/spi/spidev.h>
 #ifndef HAL_LINUX_NO_GPIOD
 #include <gpiod.h>
+#ifndef GPIOD_API_MAJOR
+#define GPIOD_API_MAJOR 1
+#endif
 #endif
 #include "hal_linux.h"
 
@@ -23,6 +33,58 @@ static void set_err(struct hal_linux *l, const char *fmt, ...)
     vsnprintf(l->err, sizeof l->err, fmt, ap);
     va_end(ap);
 }
+
+#ifndef HAL_LINUX_NO_GPIOD
+#if GPIOD_API_MAJOR >= 2
+/* "gpiochip0" -> /dev/gpiochip0; a path (with '/') as it is. */
+static struct gpiod_chip *open_chip(const char *name)
+{
+    char path[96];
+    if (strchr(name, '/'))
+        return gpiod_chip_open(name);
+    if ((size_t)snprintf(path, sizeof path, "/dev/%s", name) >= sizeof path) {
+        errno = ENAMETOOLONG;
+        return NULL;
+    }
+    return gpiod_chip_open(path);
+}
+
+/* One output line as its own request, driven to level at once. */
+static struct gpiod_line_request *request_output(struct gpiod_chip *chip, unsigned off, int level)
+{
+    struct gpiod_line_settings *ls = gpiod_line_settings_new();
+    struct gpiod_line_config *lc = gpiod_line_config_new();
+    struct gpiod_request_config *rc = gpiod_request_config_new();
+    struct gpiod_line_request *req = NULL;
+    if (ls && lc && rc && gpiod_line_settings_set_direction(ls, GPIOD_LINE_DIRECTION_OUTPUT) == 0 &&
+        gpiod_line_settings_set_output_value(ls, level ? GPIOD_LINE_VALUE_ACTIVE
+                                                       : GPIOD_LINE_VALUE_INACTIVE) == 0 &&
+        gpiod_line_config_add_line_settings(lc, &off, 1, ls) == 0) {
+        gpiod_request_config_set_consumer(rc, "cgfs-hal");
+        req = gpiod_chip_request_lines(chip, rc, lc);
+    }
+    int e = errno;
+    if (rc) gpiod_request_config_free(rc);
+    if (lc) gpiod_line_config_free(lc);
+    if (ls) gpiod_line_settings_free(ls);
+    errno = e;
+    return req;
+}
+#else
+static struct gpiod_chip *open_chip(const char *name)
+{
+    return strchr(name, '/') ? gpiod_chip_open(name) : gpiod_chip_open_by_name(name);
+}
+
+static struct gpiod_line *request_output(struct gpiod_chip *chip, unsigned off, int level)
+{
+    struct gpiod_line *ln = gpiod_chip_get_line(chip, off);
+    if (!ln || gpiod_line_request_output(ln, "cgfs-hal", level) < 0)
+        return NULL;
+    return ln;
+}
+#endif
+#endif
 
 void hal_linux_default_config(struct hal_linux_config *cfg)
 {
@@ -76,8 +138,14 @@ static void lx_line_set(void *ctx, enum hal_line line, int level)
 {
 #ifndef HAL_LINUX_NO_GPIOD
     struct hal_linux *l = ctx;
-    if ((unsigned)line < 4 && l->lines[line])
-        gpiod_line_set_value(l->lines[line], level != 0);
+    if ((unsigned)line >= 4 || !l->lines[line])
+        return;
+#if GPIOD_API_MAJOR >= 2
+    gpiod_line_request_set_value(l->lines[line], l->offs[line],
+                                 level ? GPIOD_LINE_VALUE_ACTIVE : GPIOD_LINE_VALUE_INACTIVE);
+#else
+    gpiod_line_set_value(l->lines[line], level != 0);
+#endif
 #else
     (void)ctx; (void)line; (void)level;
 #endif
@@ -104,7 +172,11 @@ void hal_linux_close(struct hal_linux *l)
 #ifndef HAL_LINUX_NO_GPIOD
     for (int i = 0; i < 4; i++)
         if (l->lines[i])
+#if GPIOD_API_MAJOR >= 2
+            gpiod_line_request_release(l->lines[i]);
+#else
             gpiod_line_release(l->lines[i]);
+#endif
     if (l->chip)
         gpiod_chip_close(l->chip);
 #endif
@@ -159,7 +231,7 @@ int hal_linux_open(struct hal_linux *l, struct hal *out, const struct hal_linux_
     for (int i = 0; i < 4; i++)
         any |= offs[i] >= 0;
     if (any) {
-        l->chip = gpiod_chip_open_by_name(cfg->gpio_chip);
+        l->chip = open_chip(cfg->gpio_chip);
         if (!l->chip) {
             set_err(l, "hal_linux: cannot open GPIO chip %s: %s", cfg->gpio_chip, strerror(errno));
             hal_linux_close(l);
@@ -169,14 +241,16 @@ int hal_linux_open(struct hal_linux *l, struct hal *out, const struct hal_linux_
     for (int i = 0; i < 4; i++) {
         if (offs[i] < 0)
             continue;
-        struct gpiod_line *ln = gpiod_chip_get_line(l->chip, (unsigned)offs[i]);
-        if (!ln || gpiod_line_request_output(ln, "cgfs-hal", initial[i]) < 0) {
+        errno = 0;
+        void *ln = request_output(l->chip, (unsigned)offs[i], initial[i]);
+        if (!ln) {
             set_err(l, "hal_linux: cannot drive %s line %d on %s: %s", names[i], offs[i],
-                    cfg->gpio_chip, strerror(errno));
+                    cfg->gpio_chip, errno ? strerror(errno) : "request refused");
             hal_linux_close(l);
             return -1;
         }
         l->lines[i] = ln;
+        l->offs[i] = (unsigned)offs[i];
     }
 #endif
     out->ctx = l;

@@ -1,5 +1,6 @@
-/* hal_linux.h — HAL backend for Linux: spidev for SPI, libgpiod (1.6 API)
- * for the D/C, RESET, CS and backlight lines, CLOCK_MONOTONIC for time.
+/* hal_linux.h — HAL backend for Linux: spidev for SPI, libgpiod (the 1.x
+ * or the 2.x API, whichever pkg-config finds at build time) for the D/C,
+ * RESET, CS and backlight lines, CLOCK_MONOTONIC for time.
  *
  * Typical Raspberry Pi wiring: spi_dev "/dev/spidev0.0", gpio_chip
  * "gpiochip0", DC 25, RESET 27, BL 18, CS handled by spidev (cs = -1).
@@ -17,7 +18,7 @@ struct hal_linux_config {
     const char *spi_dev;         /* e.g. "/dev/spidev0.0" */
     uint32_t spi_hz;             /* bus clock, e.g. 32000000 */
     uint8_t spi_mode;            /* 0..3 (ST7789 modules without CS often need 3) */
-    const char *gpio_chip;       /* e.g. "gpiochip0" */
+    const char *gpio_chip;       /* e.g. "gpiochip0" (in /dev), or a path */
     int dc, reset, cs, bl;       /* line offsets on gpio_chip; -1 = not connected */
 };
 
@@ -25,7 +26,9 @@ struct hal_linux {
     int fd;                      /* spidev, -1 when closed */
     uint32_t spi_hz;
     void *chip;                  /* struct gpiod_chip * */
-    void *lines[4];              /* struct gpiod_line *, by enum hal_line */
+    void *lines[4];              /* by enum hal_line: struct gpiod_line * (1.x),
+                                    struct gpiod_line_request * (2.x) */
+    unsigned offs[4];            /* their line offsets */
     int async_pending;
     char err[160];               /* last error, one line */
 };

@@ -1,5 +1,5 @@
 /* gpio_reset.h — puts a Pico into its boot ROM from a Raspberry Pi host:
- * libgpiod (1.6 API) drives the Pico's RUN and BOOTSEL lines.
+ * libgpiod (1.x or 2.x API) drives the Pico's RUN and BOOTSEL lines.
  *
  * Wiring (defaults; the pins are options of the flasher):
  *   Pi GPIO23 (header pin 16)  → Pico RUN (pin 30)
@@ -20,7 +20,7 @@
 #define GPIO_BOOTSEL_HOLD_MS 100u
 
 struct gpio_reset_cfg {
-    const char *chip;        /* "gpiochip0", a number, or a /dev path (gpiod_chip_open_lookup) */
+    const char *chip;        /* "gpiochip0", a number, or a /dev path */
     unsigned run_pin;        /* line offsets on that chip */
     unsigned bootsel_pin;
 };

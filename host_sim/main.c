@@ -13,11 +13,14 @@
 #include <string.h>
 #include <sys/stat.h>
 #include <time.h>
+#include <signal.h>
+#include <unistd.h>
 
 #include "host_sim/compare.h"
 #include "host_sim/core_api.h"
 #include "host_sim/imgio.h"
 #include "host_sim/panel_out.h"
+#include "firmware/app/font5x7.h"
 
 /* Rows a strip has: what a small MCU can hold (16 rows x 320 x 2 bytes = 10 KiB). */
 #define STRIP_ROWS_DEFAULT 16
@@ -37,6 +40,17 @@ static const char usage_text[] =
     "  --out-raw FILE                the same as raw RGB565 (little-endian uint16)\n"
     "  --out-rgb888 FILE.ppm         the renderer's colour before RGB565 quantisation\n"
     "  --frames N                    render N frames (default 1)\n"
+    "  --loop                        render the scene's animation (its frames, or the still\n"
+    "                                frame) endlessly, one line per frame on stdout (frame,\n"
+    "                                fps, SPI bytes); SIGINT (Ctrl-C) or SIGTERM ends it after\n"
+    "                                the frame, exit 0; --out FILE: the last frame\n"
+    "  --loop-frames N               end --loop after N frames\n"
+    "  --flush dirty|full            dirty: only the changed rectangles of each strip go to\n"
+    "                                the panel (default with --loop); full: every row\n"
+    "  --fps-overlay                 the frame rate drawn on the glass (top-left)\n"
+    "  --window                      a live window of the glass (SDL2), updated per strip\n"
+    "  --out PATTERN.png             with one %%d (or %%0Nd) in the name: a file per frame\n"
+    "  (a progress line goes to stderr during long frames when stderr is a terminal)\n"
     "  --stats                       one JSON object per frame on stdout\n"
     "  --backend sim|linux           where the HAL's bytes go (default sim)\n"
     "  --rotation 0..3               quarter turns added to the panel's orientation (the\n"
@@ -72,6 +86,9 @@ struct opts {
     const char *scene, *panel, *numeric, *out, *out_raw, *out_rgb888, *backend;
     const char *compare, *fault;
     int has_size, stats, summary, progressive;
+    int loop, fps_overlay, window;
+    unsigned loop_frames;
+    int flush;                 /* 0 default, 1 full, 2 dirty */
     int num_frac;              /* --num-frac, 0: the scene's own format */
     unsigned width, height, frames, strip_rows;
 };
@@ -120,7 +137,7 @@ static int parse_args(int argc, char **argv, struct opts *o)
     static const char *const with_arg[] = {
         "--scene", "--panel", "--size", "--numeric", "--out", "--out-raw", "--out-rgb888",
         "--frames", "--backend", "--compare", "--strip-rows", "--inject-fault", "--num-frac",
-        "--spi-dev", "--spi-hz", "--spi-mode", "--gpio-chip", "--dc", "--rst", "--bl", "--rotation", NULL,
+        "--loop-frames", "--flush", "--spi-dev", "--spi-hz", "--spi-mode", "--gpio-chip", "--dc", "--rst", "--bl", "--rotation", NULL,
     };
     for (int i = 1; i < argc; i++) {
         const char *a = argv[i], *val = NULL;
@@ -135,9 +152,13 @@ static int parse_args(int argc, char **argv, struct opts *o)
             printf(usage_text, panel_out_faults);
             exit(EXIT_OK);
         }
-        if (!strcmp(name, "--stats") || !strcmp(name, "--summary") || !strcmp(name, "--progressive")) {
+        if (!strcmp(name, "--stats") || !strcmp(name, "--summary") || !strcmp(name, "--progressive") ||
+            !strcmp(name, "--loop") || !strcmp(name, "--fps-overlay") || !strcmp(name, "--window")) {
             if (eq) return fail(EXIT_USAGE, "option %s takes no argument", name);
             if (!strcmp(name, "--stats")) o->stats = 1;
+            else if (!strcmp(name, "--loop")) o->loop = 1;
+            else if (!strcmp(name, "--fps-overlay")) o->fps_overlay = 1;
+            else if (!strcmp(name, "--window")) o->window = 1;
             else if (!strcmp(name, "--summary")) o->summary = 1;
             else o->progressive = 1;
             continue;
@@ -181,6 +202,13 @@ static int parse_args(int argc, char **argv, struct opts *o)
                 return fail(EXIT_USAGE, "bad --num-frac '%s' (%d..%d)", val, SCENE_FORMAT_FRAC_MIN,
                             SCENE_FORMAT_FRAC_MAX);
             o->num_frac = (int)f;
+        } else if (!strcmp(name, "--loop-frames")) {
+            if (!(o->loop_frames = parse_count(val, 4000000000u)))
+                return fail(EXIT_USAGE, "bad --loop-frames '%s' (1..4000000000)", val);
+        } else if (!strcmp(name, "--flush")) {
+            if (strcmp(val, "full") && strcmp(val, "dirty"))
+                return fail(EXIT_USAGE, "unknown --flush '%s' (dirty|full)", val);
+            o->flush = !strcmp(val, "full") ? 1 : 2;
         } else if (!strcmp(name, "--spi-dev")) o->spi_dev = val;
         else if (!strcmp(name, "--gpio-chip")) o->gpio_chip = val;
         else if (!strcmp(name, "--spi-hz")) {
@@ -340,15 +368,61 @@ static int core_render_memory(struct core *c, unsigned f, uint16_t *fb, uint8_t 
 
 /* Everything allocated by run(), freed in one place. */
 struct bufs {
-    uint16_t *strip, *fb, *ref_fb;
+    uint16_t *strip, *fb, *ref_fb, *shown;
     uint8_t *rgb, *ref_rgb;
 };
+
+/* What --loop, --flush dirty, --fps-overlay and the progress line add to
+ * sending a frame. */
+struct live {
+    uint16_t *shown;           /* --flush dirty: what the glass shows (w*h), else NULL */
+    const char *overlay;       /* text drawn top-left into each frame, or NULL */
+    int progress;              /* stderr is a terminal: a progress line in long frames */
+    uint64_t frame_t0;         /* now_us() at the frame's start */
+    int progress_shown;
+    unsigned rects;            /* rectangles sent this frame (dirty) */
+};
+
+/* Sends rows [y0, y1) of strip, or with l->shown only the rectangles in it
+ * that differ from what the glass shows: each run of changed rows as one
+ * rectangle spanning their changed columns. */
+static int flush_strip(struct panel_out *po, struct live *l, unsigned w, unsigned y0, unsigned y1,
+                       const uint16_t *strip, char *err, size_t errlen)
+{
+    if (!l || !l->shown)
+        return panel_out_flush(po, (uint16_t)y0, (uint16_t)y1, strip, err, errlen);
+    unsigned n = y1 - y0, r = 0;
+    size_t rowb = (size_t)w * sizeof *strip;
+    while (r < n) {
+        while (r < n && !memcmp(strip + (size_t)r * w, l->shown + (size_t)(y0 + r) * w, rowb)) r++;
+        if (r == n) break;
+        unsigned e = r, x0 = w, x1 = 0;
+        for (; e < n; e++) {
+            const uint16_t *a = strip + (size_t)e * w, *g = l->shown + (size_t)(y0 + e) * w;
+            unsigned lo = 0, hi = w;
+            while (lo < w && a[lo] == g[lo]) lo++;
+            if (lo == w) break;
+            while (hi > lo && a[hi - 1] == g[hi - 1]) hi--;
+            if (lo < x0) x0 = lo;
+            if (hi > x1) x1 = hi;
+        }
+        int rc = panel_out_flush_rect(po, (uint16_t)x0, (uint16_t)(y0 + r), (uint16_t)(x1 - x0),
+                                      (uint16_t)(e - r), strip + (size_t)r * w + x0, w, err, errlen);
+        if (rc) return rc;
+        for (unsigned k = r; k < e; k++)
+            memcpy(l->shown + (size_t)(y0 + k) * w + x0, strip + (size_t)k * w + x0,
+                   (size_t)(x1 - x0) * sizeof *strip);
+        l->rects++;
+        r = e;
+    }
+    return 0;
+}
 
 /* Renders every strip of frame f into strip (and rgb, a full-frame buffer,
  * if not NULL) and sends each to the panel; adds the times spent to
  * *render_us and *flush_us. */
 static int send_strips(struct core *c, struct panel_out *po, uint16_t *strip, uint8_t *rgb, unsigned f,
-                       struct render_stats *rs, uint64_t *render_us, uint64_t *flush_us)
+                       struct render_stats *rs, uint64_t *render_us, uint64_t *flush_us, struct live *l)
 {
     unsigned w = c->ctx.width, h = c->ctx.height, rows = c->ctx.strip_rows;
     char err[512];
@@ -363,10 +437,70 @@ static int send_strips(struct core *c, struct panel_out *po, uint16_t *strip, ui
             return fail(EXIT_INTERNAL, "renderer failed on rows %u..%u of frame %u", y0, y1, f);
         uint64_t t1 = now_us();
         *render_us += t1 - t0;
-        if ((rc = panel_out_flush(po, (uint16_t)y0, (uint16_t)y1, strip, err, sizeof err))) return fail(rc, "%s", err);
-        *flush_us += now_us() - t1;
+        if (l && l->overlay)
+            font5x7_draw(strip, (int)w, (int)y0, (int)y1, 2, 2, 2, l->overlay, 0xffff, 0x0000);
+        if ((rc = flush_strip(po, l, w, y0, y1, strip, err, sizeof err))) return fail(rc, "%s", err);
+        uint64_t t2 = now_us();
+        *flush_us += t2 - t1;
+        if (l && l->progress && t2 - l->frame_t0 > 500000) {
+            fprintf(stderr, "\rhost_sim: frame %u: rows %u/%u (%u%%), %.1f s", f, y1, h, y1 * 100u / h,
+                    (double)(t2 - l->frame_t0) / 1e6);
+            l->progress_shown = 1;
+        }
+    }
+    if (l && l->progress_shown) {
+        fputs("\r\033[K", stderr);
+        l->progress_shown = 0;
     }
     return EXIT_OK;
+}
+
+/* --loop ends after the frame in progress on SIGINT or SIGTERM. */
+static volatile sig_atomic_t loop_stop;
+
+static void on_loop_signal(int sig)
+{
+    (void)sig;
+    loop_stop = 1;
+}
+
+static void loop_signals(void)
+{
+    struct sigaction sa;
+    memset(&sa, 0, sizeof sa);
+    sa.sa_handler = on_loop_signal;
+    sigemptyset(&sa.sa_mask);
+    sigaction(SIGINT, &sa, NULL);
+    sigaction(SIGTERM, &sa, NULL);
+}
+
+/* --out with a frame number: one "%d" or "%0Nd" (N 1..9) and no other
+ * '%' but "%%". 1 a pattern, 0 a plain name, -1 a bad one. */
+static int out_pattern(const char *s)
+{
+    int conv = 0;
+    for (; *s; s++) {
+        if (*s != '%') continue;
+        if (s[1] == '%') { s++; continue; }
+        const char *q = s + 1;
+        if (*q == '0' && q[1] >= '1' && q[1] <= '9') q += 2;
+        if (*q != 'd' || conv++) return -1;
+        s = q;
+    }
+    return conv;
+}
+
+/* The name of frame f of a pattern (checked by out_pattern). */
+static void out_name(char *buf, size_t len, const char *pattern, unsigned f)
+{
+#if defined(__GNUC__)
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wformat-nonliteral"
+#endif
+    snprintf(buf, len, pattern, (int)(f & 0x7fffffffu));
+#if defined(__GNUC__)
+#pragma GCC diagnostic pop
+#endif
 }
 
 static int run(const struct opts *o, struct core *c, struct core *ref, struct panel_out **pp,
@@ -383,6 +517,16 @@ static int run(const struct opts *o, struct core *c, struct core *ref, struct pa
     /* Usage checks that need no scene first, so a bad command fails at once. */
     if (o->out && img_format_of(o->out) == IMG_NONE)
         return fail(EXIT_USAGE, "--out %s: the file name must end in .png or .ppm", o->out);
+    const int pattern = o->out ? out_pattern(o->out) : 0;
+    char frame_out[4096];
+    if (pattern < 0)
+        return fail(EXIT_USAGE, "--out %s: a per-frame name takes one %%d or %%0Nd (N 1..9), no other %%", o->out);
+    if (o->loop && (o->compare || o->frames))
+        return fail(EXIT_USAGE, "--loop renders the scene's own frames: not with %s", o->compare ? "--compare" : "--frames");
+    if (o->loop_frames && !o->loop)
+        return fail(EXIT_USAGE, "--loop-frames needs --loop");
+    if (o->window)
+        return fail(EXIT_USAGE, "--window: this build has no SDL2 (install libsdl2-dev and rebuild)");
     if (o->out_rgb888 && img_format_of(o->out_rgb888) != IMG_PPM)
         return fail(EXIT_USAGE, "--out-rgb888 %s: the file name must end in .ppm", o->out_rgb888);
     if (o->fault && none)
@@ -394,7 +538,8 @@ static int run(const struct opts *o, struct core *c, struct core *ref, struct pa
                                      o->bl != PANEL_OUT_PIN_DEFAULT))
         return fail(EXIT_USAGE, "--spi-dev, --spi-hz, --spi-mode, --gpio-chip, --dc, --rst and --bl "
                                 "need --backend linux");
-    const char *outs[3] = { o->out, o->out_raw, o->out_rgb888 };
+    if (pattern) out_name(frame_out, sizeof frame_out, o->out, 0);
+    const char *outs[3] = { pattern ? frame_out : o->out, o->out_raw, o->out_rgb888 };
     for (int i = 0; i < 3; i++)
         if (outs[i] && (rc = img_check_dest(outs[i], err, sizeof err)))
             return fail(rc, "%s", err);
@@ -463,7 +608,7 @@ static int run(const struct opts *o, struct core *c, struct core *ref, struct pa
     if (!c->info.uses_lights && c->info.nlights && c->info.kind != SCENE_RAYTRACE)
         fprintf(stderr, "host_sim: warning: %s: %u lights, but no shading mode uses them (shading = none)\n",
                 o->scene, (unsigned)c->info.nlights);
-    if (!o->out && !o->out_raw && !o->out_rgb888 && !o->stats && !o->summary && !o->compare)
+    if (!o->out && !o->out_raw && !o->out_rgb888 && !o->stats && !o->summary && !o->compare && !o->loop)
         fprintf(stderr, "host_sim: warning: no output given (--out, --out-raw, --out-rgb888, --stats, --summary): "
                         "the frame is rendered and discarded\n");
 
@@ -480,14 +625,35 @@ static int run(const struct opts *o, struct core *c, struct core *ref, struct pa
 
     scene_name(o->scene, name, sizeof name);
     unsigned frames = o->frames ? o->frames : 1;
+    /* --loop: the scene's animation over and over (frame index f mod its
+     * frames), until --loop-frames or a signal */
+    const unsigned anim = c->info.frames ? c->info.frames : 1;
+    if (o->loop) {
+        frames = o->loop_frames ? o->loop_frames : UINT32_MAX;
+        loop_stop = 0;
+        loop_signals();
+    }
+    struct live lv = { 0 };
+    char overlay[32] = "";
+    lv.progress = isatty(STDERR_FILENO);
+    if (o->fps_overlay) lv.overlay = overlay;
+    if (o->flush == 2 || (o->loop && o->flush == 0)) {
+        /* panel_init cleared the controller's memory to black */
+        if (!(b->shown = calloc(npx, sizeof *b->shown)))
+            return fail(EXIT_INTERNAL, "out of memory for a %ux%u image", w, h);
+        lv.shown = b->shown;
+    }
     uint64_t total_render_us = 0;
     for (unsigned f = 0; f < frames; f++) {
+        const unsigned fi = o->loop ? f % anim : f;
+        lv.frame_t0 = now_us();
+        lv.rects = 0;
         struct render_stats rs = { 0 };
         uint32_t sat0 = *c->api->saturations;
         uint64_t spi0 = panel_out_spi_bytes(*pp), bus0 = panel_out_bus_us(*pp);
         uint64_t render_us = 0, flush_us = 0, t0 = now_us();
-        if (c->api->begin_frame(&c->ctx, (uint16_t)f))
-            return fail(EXIT_INTERNAL, "renderer failed to begin frame %u", f);
+        if (c->api->begin_frame(&c->ctx, (uint16_t)fi))
+            return fail(EXIT_INTERNAL, "renderer failed to begin frame %u", fi);
         render_us += now_us() - t0;
         /* progressive: the coarse pass to the panel first, then the full one */
         uint64_t coarse_us = 0;
@@ -495,12 +661,12 @@ static int run(const struct opts *o, struct core *c, struct core *ref, struct pa
         if (o->progressive && c->api->set_pass(&c->ctx, RENDER_PASS_COARSE) == 0) {
             struct render_stats cs = { 0 };
             uint64_t coarse_flush_us = 0;
-            if ((rc = send_strips(c, *pp, b->strip, NULL, f, &cs, &coarse_us, &coarse_flush_us))) return rc;
+            if ((rc = send_strips(c, *pp, b->strip, NULL, fi, &cs, &coarse_us, &coarse_flush_us, &lv))) return rc;
             coarse_rays = cs.rays;
             render_us += coarse_us;
             c->api->set_pass(&c->ctx, RENDER_PASS_FULL);
         }
-        if ((rc = send_strips(c, *pp, b->strip, b->rgb, f, &rs, &render_us, &flush_us))) return rc;
+        if ((rc = send_strips(c, *pp, b->strip, b->rgb, fi, &rs, &render_us, &flush_us, &lv))) return rc;
         total_render_us += render_us;
         if (o->stats) {
             printf("{\"scene\":");
@@ -522,6 +688,26 @@ static int run(const struct opts *o, struct core *c, struct core *ref, struct pa
                    (unsigned long)rs.rays, (unsigned long)(uint32_t)(*c->api->saturations - sat0));
             if (o->progressive) printf(",\"coarse_us\":%llu,\"coarse_rays\":%lu", (unsigned long long)coarse_us, coarse_rays);
             if (!(o->compare && f + 1 == frames)) printf("}\n");
+        }
+        uint64_t frame_us = now_us() - lv.frame_t0;
+        double fps = frame_us ? 1e6 / (double)frame_us : 0.0;
+        if (o->fps_overlay) snprintf(overlay, sizeof overlay, "%.1f fps", fps);
+        if (pattern) {
+            /* this frame's glass, as --out does after the last one */
+            out_name(frame_out, sizeof frame_out, o->out, f);
+            if ((rc = panel_out_read(*pp, b->fb, err, sizeof err))) return fail(rc, "%s", err);
+            if ((rc = img_write_565(frame_out, img_format_of(frame_out), b->fb, w, h, w, err, sizeof err)))
+                return fail(rc, "%s", err);
+            if (o->loop) loop_signals();   /* (imgio's own handlers while it writes) */
+        }
+        if (o->loop) {
+            printf("frame %u (%u/%u): %.1f fps, %.2f ms, %llu SPI bytes, %u rects\n", f, fi + 1, anim, fps,
+                   (double)frame_us / 1000.0, (unsigned long long)(panel_out_spi_bytes(*pp) - spi0), lv.rects);
+            if (fflush(stdout)) return fail(EXIT_INTERNAL, "stdout: write failed");
+            if (loop_stop) {
+                frames = f + 1;
+                break;
+            }
         }
     }
 
@@ -551,10 +737,10 @@ static int run(const struct opts *o, struct core *c, struct core *ref, struct pa
     fflush(stdout);
 
     /* What the glass shows (or the framebuffer) after the last frame. */
-    if (o->out || o->out_raw) {
+    if ((o->out && !pattern) || o->out_raw) {
         if ((rc = panel_out_read(*pp, b->fb, err, sizeof err))) return fail(rc, "%s", err);
         /* a failed output removes the ones this run wrote before it */
-        if (o->out && (rc = img_write_565(o->out, img_format_of(o->out), b->fb, w, h, w, err, sizeof err)))
+        if (o->out && !pattern && (rc = img_write_565(o->out, img_format_of(o->out), b->fb, w, h, w, err, sizeof err)))
             return img_remove_written(), fail(rc, "%s", err);
         if (o->out_raw && (rc = img_write_raw565(o->out_raw, b->fb, w, h, w, err, sizeof err)))
             return img_remove_written(), fail(rc, "%s", err);
@@ -595,5 +781,6 @@ int main(int argc, char **argv)
     free(b.rgb);
     free(b.ref_fb);
     free(b.ref_rgb);
+    free(b.shown);
     return rc;
 }

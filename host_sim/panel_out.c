@@ -260,6 +260,39 @@ int panel_out_flush(struct panel_out *p, uint16_t y0, uint16_t y1, const uint16_
     return 0;
 }
 
+int panel_out_flush_rect(struct panel_out *p, uint16_t x, uint16_t y, uint16_t w, uint16_t h,
+                         const uint16_t *px, size_t stride, char *err, size_t errlen)
+{
+    if (!w || !h || x + w > p->width || y + h > p->height) {
+        snprintf(err, errlen, "flush of %ux%u at (%u,%u) outside the %ux%u image", w, h, x, y,
+                 p->width, p->height);
+        return 1;
+    }
+    if (x == 0 && w == p->width && stride == p->width)
+        return panel_out_flush(p, y, (uint16_t)(y + h), px, err, errlen);
+    uint16_t *packed = malloc((size_t)w * h * sizeof *packed);
+    if (!packed) {
+        snprintf(err, errlen, "out of memory");
+        return 1;
+    }
+    for (unsigned r = 0; r < h; r++) {
+        memcpy(packed + (size_t)r * w, px + (size_t)r * stride, (size_t)w * sizeof *px);
+        if (p->fb) memcpy(p->fb + (size_t)(y + r) * p->width + x, px + (size_t)r * stride, (size_t)w * sizeof *px);
+    }
+    int rc = 0;
+#ifdef HOST_SIM_HAVE_HAL
+    if (p->kind != OUT_MEMORY) {
+        int prc = panel_flush(&p->panel, x, y, w, h, packed);
+        if ((rc = violation(p, err, errlen)) == 0 && prc) {
+            snprintf(err, errlen, "panel_flush of %ux%u at (%u,%u) failed (%d)", w, h, x, y, prc);
+            rc = 1;
+        }
+    }
+#endif
+    free(packed);
+    return rc;
+}
+
 int panel_out_finish(struct panel_out *p, char *err, size_t errlen)
 {
 #ifdef HOST_SIM_HAVE_HAL

@@ -51,6 +51,11 @@ int panel_out_open(struct panel_out **out, const struct panel_out_opts *o, char 
 int panel_out_flush(struct panel_out *p, uint16_t y0, uint16_t y1, const uint16_t *px,
                     char *err, size_t errlen);
 
+/* Sends the rectangle (x, y) w x h of the image; px points at its top-left
+ * pixel in rows of `stride` pixels (a dirty-rectangle update). */
+int panel_out_flush_rect(struct panel_out *p, uint16_t x, uint16_t y, uint16_t w, uint16_t h,
+                         const uint16_t *px, size_t stride, char *err, size_t errlen);
+
 /* After the last flush: the end of the stream (a command left without its
  * parameters, half a pixel) is checked too. 0 or 3. */
 int panel_out_finish(struct panel_out *p, char *err, size_t errlen);

@@ -8,6 +8,8 @@
 # scene's ranges call for (tools/scene/scene_format.c).
 
 HOST_SIM_SRCS := host_sim/main.c host_sim/imgio.c host_sim/panel_out.c host_sim/compare.c
+# the frame-rate overlay's font (--fps-overlay), shared with the firmware
+HOST_SIM_SRCS += firmware/app/font5x7.c
 
 # The panel path needs the HAL (mk/hal.mk: hal_objs, HAL_LDLIBS); without its
 # sources host_sim still builds, with --panel none only.
@@ -49,6 +51,8 @@ $(foreach v,$(VARIANTS),$(eval $(call HOST_SIM_LINK,$(v))))
 PROGRAMS  += $(HOST_SIM_BIN_host)
 TEST_DEPS += $(HOST_SIM_BIN_asan) $(HOST_SIM_BIN_host)
 TESTS     += tests/test_host_sim.sh:$(HOST_SIM_BIN_asan)
+# --loop, dirty-rectangle flush, per-frame --out, --fps-overlay, progress line
+TESTS     += tests/test_live.sh:$(HOST_SIM_BIN_asan)
 # input/output faults (FIFOs, devices, ulimit -f, signals) of host_sim and scenec
 TEST_DEPS += $(BUILD)/scenec
 TESTS     += tests/test_io_faults.sh:$(HOST_SIM_BIN_asan):$(BUILD)/scenec

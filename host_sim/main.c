@@ -20,6 +20,7 @@
 #include "host_sim/core_api.h"
 #include "host_sim/imgio.h"
 #include "host_sim/panel_out.h"
+#include "host_sim/window.h"
 #include "firmware/app/font5x7.h"
 
 /* Rows a strip has: what a small MCU can hold (16 rows x 320 x 2 bytes = 10 KiB). */
@@ -48,7 +49,9 @@ static const char usage_text[] =
     "  --flush dirty|full            dirty: only the changed rectangles of each strip go to\n"
     "                                the panel (default with --loop); full: every row\n"
     "  --fps-overlay                 the frame rate drawn on the glass (top-left)\n"
-    "  --window                      a live window of the glass (SDL2), updated per strip\n"
+    "  --window                      a live window of the glass (SDL2), updated per strip;\n"
+    "                                without --loop it stays until closed (or SIGINT)\n"
+    "  --window-scale N              its pixels per glass pixel (default 2)\n"
     "  --out PATTERN.png             with one %%d (or %%0Nd) in the name: a file per frame\n"
     "  (a progress line goes to stderr during long frames when stderr is a terminal)\n"
     "  --stats                       one JSON object per frame on stdout\n"
@@ -87,7 +90,7 @@ struct opts {
     const char *compare, *fault;
     int has_size, stats, summary, progressive;
     int loop, fps_overlay, window;
-    unsigned loop_frames;
+    unsigned loop_frames, window_scale;
     int flush;                 /* 0 default, 1 full, 2 dirty */
     int num_frac;              /* --num-frac, 0: the scene's own format */
     unsigned width, height, frames, strip_rows;
@@ -137,7 +140,7 @@ static int parse_args(int argc, char **argv, struct opts *o)
     static const char *const with_arg[] = {
         "--scene", "--panel", "--size", "--numeric", "--out", "--out-raw", "--out-rgb888",
         "--frames", "--backend", "--compare", "--strip-rows", "--inject-fault", "--num-frac",
-        "--loop-frames", "--flush", "--spi-dev", "--spi-hz", "--spi-mode", "--gpio-chip", "--dc", "--rst", "--bl", "--rotation", NULL,
+        "--loop-frames", "--flush", "--window-scale", "--spi-dev", "--spi-hz", "--spi-mode", "--gpio-chip", "--dc", "--rst", "--bl", "--rotation", NULL,
     };
     for (int i = 1; i < argc; i++) {
         const char *a = argv[i], *val = NULL;
@@ -205,6 +208,9 @@ static int parse_args(int argc, char **argv, struct opts *o)
         } else if (!strcmp(name, "--loop-frames")) {
             if (!(o->loop_frames = parse_count(val, 4000000000u)))
                 return fail(EXIT_USAGE, "bad --loop-frames '%s' (1..4000000000)", val);
+        } else if (!strcmp(name, "--window-scale")) {
+            if (!(o->window_scale = parse_count(val, 8)))
+                return fail(EXIT_USAGE, "bad --window-scale '%s' (1..8)", val);
         } else if (!strcmp(name, "--flush")) {
             if (strcmp(val, "full") && strcmp(val, "dirty"))
                 return fail(EXIT_USAGE, "unknown --flush '%s' (dirty|full)", val);
@@ -368,13 +374,20 @@ static int core_render_memory(struct core *c, unsigned f, uint16_t *fb, uint8_t 
 
 /* Everything allocated by run(), freed in one place. */
 struct bufs {
-    uint16_t *strip, *fb, *ref_fb, *shown;
+    struct window *win;
+    uint16_t *strip, *fb, *ref_fb, *shown, *glass;
     uint8_t *rgb, *ref_rgb;
 };
+
+/* --loop ends after the frame in progress on SIGINT or SIGTERM (or the
+ * window closing). */
+static volatile sig_atomic_t loop_stop;
 
 /* What --loop, --flush dirty, --fps-overlay and the progress line add to
  * sending a frame. */
 struct live {
+    struct window *win;        /* --window, or NULL */
+    uint16_t *glass;           /* w*h: what the glass shows, for the window */
     uint16_t *shown;           /* --flush dirty: what the glass shows (w*h), else NULL */
     const char *overlay;       /* text drawn top-left into each frame, or NULL */
     int progress;              /* stderr is a terminal: a progress line in long frames */
@@ -440,6 +453,11 @@ static int send_strips(struct core *c, struct panel_out *po, uint16_t *strip, ui
         if (l && l->overlay)
             font5x7_draw(strip, (int)w, (int)y0, (int)y1, 2, 2, 2, l->overlay, 0xffff, 0x0000);
         if ((rc = flush_strip(po, l, w, y0, y1, strip, err, sizeof err))) return fail(rc, "%s", err);
+        if (l && l->win) {
+            if ((rc = panel_out_read(po, l->glass, err, sizeof err))) return fail(rc, "%s", err);
+            window_update(l->win, l->glass, y0, y1);
+            if (window_closed(l->win)) loop_stop = 1;
+        }
         uint64_t t2 = now_us();
         *flush_us += t2 - t1;
         if (l && l->progress && t2 - l->frame_t0 > 500000) {
@@ -454,9 +472,6 @@ static int send_strips(struct core *c, struct panel_out *po, uint16_t *strip, ui
     }
     return EXIT_OK;
 }
-
-/* --loop ends after the frame in progress on SIGINT or SIGTERM. */
-static volatile sig_atomic_t loop_stop;
 
 static void on_loop_signal(int sig)
 {
@@ -525,8 +540,10 @@ static int run(const struct opts *o, struct core *c, struct core *ref, struct pa
         return fail(EXIT_USAGE, "--loop renders the scene's own frames: not with %s", o->compare ? "--compare" : "--frames");
     if (o->loop_frames && !o->loop)
         return fail(EXIT_USAGE, "--loop-frames needs --loop");
-    if (o->window)
+    if (o->window && !window_available())
         return fail(EXIT_USAGE, "--window: this build has no SDL2 (install libsdl2-dev and rebuild)");
+    if (o->window_scale && !o->window)
+        return fail(EXIT_USAGE, "--window-scale needs --window");
     if (o->out_rgb888 && img_format_of(o->out_rgb888) != IMG_PPM)
         return fail(EXIT_USAGE, "--out-rgb888 %s: the file name must end in .ppm", o->out_rgb888);
     if (o->fault && none)
@@ -634,6 +651,16 @@ static int run(const struct opts *o, struct core *c, struct core *ref, struct pa
         loop_signals();
     }
     struct live lv = { 0 };
+    if (o->window) {
+        char title[300];
+        snprintf(title, sizeof title, "host_sim %s", name);
+        if (!(b->glass = malloc(npx * sizeof *b->glass)))
+            return fail(EXIT_INTERNAL, "out of memory for a %ux%u image", w, h);
+        if ((rc = window_open(&b->win, title, w, h, o->window_scale ? o->window_scale : 2, err, sizeof err)))
+            return fail(rc, "%s", err);
+        lv.win = b->win;
+        lv.glass = b->glass;
+    }
     char overlay[32] = "";
     lv.progress = isatty(STDERR_FILENO);
     if (o->fps_overlay) lv.overlay = overlay;
@@ -712,6 +739,13 @@ static int run(const struct opts *o, struct core *c, struct core *ref, struct pa
     }
 
     if ((rc = panel_out_finish(*pp, err, sizeof err))) return fail(rc, "%s", err);
+    if (b->win && !o->loop) {
+        /* the last frame stays on view until the window is closed */
+        struct timespec ts = { 0, 20000000L };
+        loop_stop = 0;
+        loop_signals();
+        while (!loop_stop && !window_closed(b->win)) nanosleep(&ts, NULL);
+    }
 
     struct compare_result cmp = { 0 };
     if (o->compare) {
@@ -782,5 +816,7 @@ int main(int argc, char **argv)
     free(b.ref_fb);
     free(b.ref_rgb);
     free(b.shown);
+    free(b.glass);
+    window_close(b.win);
     return rc;
 }

@@ -10,6 +10,12 @@
 HOST_SIM_SRCS := host_sim/main.c host_sim/imgio.c host_sim/panel_out.c host_sim/compare.c
 # the frame-rate overlay's font (--fps-overlay), shared with the firmware
 HOST_SIM_SRCS += firmware/app/font5x7.c
+# --window: SDL2 from the distribution when pkg-config finds it
+# (tools/deps.sh test installs it); without it the option says so, exit 2
+HOST_SIM_SRCS += host_sim/window.c
+HOST_SIM_SDL  := $(shell pkg-config --exists sdl2 2>/dev/null && echo 1)
+SDL_CFLAGS    := $(if $(HOST_SIM_SDL),-DHOST_SIM_HAVE_SDL $(patsubst -I%,-isystem %,$(shell pkg-config --cflags sdl2)))
+SDL_LIBS      := $(if $(HOST_SIM_SDL),$(shell pkg-config --libs sdl2))
 
 # The panel path needs the HAL (mk/hal.mk: hal_objs, HAL_LDLIBS); without its
 # sources host_sim still builds, with --panel none only.
@@ -17,7 +23,7 @@ HOST_SIM_HAVE_HAL   := $(and $(wildcard hal/sim/hal_sim.c),$(value hal_objs))
 HOST_SIM_HAVE_LINUX := $(and $(HOST_SIM_HAVE_HAL),$(wildcard hal/linux/hal_linux.c))
 # (only the HAL sources present: the Linux backend may come later)
 host_sim_hal = $(if $(HOST_SIM_HAVE_HAL),$(call obj,$(1),none,$(wildcard $(HAL_SRCS) $(HAL_SIM_SRCS) $(HAL_LINUX_SRCS))))
-HOST_SIM_DEFS := $(if $(HOST_SIM_HAVE_HAL),-DHOST_SIM_HAVE_HAL) $(if $(HOST_SIM_HAVE_LINUX),-DHOST_SIM_HAVE_LINUX)
+HOST_SIM_DEFS := $(if $(HOST_SIM_HAVE_HAL),-DHOST_SIM_HAVE_HAL) $(if $(HOST_SIM_HAVE_LINUX),-DHOST_SIM_HAVE_LINUX) $(if $(HOST_SIM_SDL),-DHOST_SIM_HAVE_SDL)
 $(foreach v,$(VARIANTS),$(call obj,$(v),none,host_sim/panel_out.c)): EXTRA_CFLAGS += $(HOST_SIM_DEFS)
 # Rebuild panel_out when those flags change (the HAL arriving): a file that
 # holds them, rewritten only when they differ.
@@ -27,6 +33,8 @@ $(shell mkdir -p $(BUILD) && { echo '$(HOST_SIM_DEFS)' | cmp -s - $(HOST_SIM_CON
 $(HOST_SIM_CONFIG):
 	@mkdir -p $(@D) && echo '$(HOST_SIM_DEFS)' >$@
 $(foreach v,$(VARIANTS),$(call obj,$(v),none,host_sim/panel_out.c)): $(HOST_SIM_CONFIG)
+$(foreach v,$(VARIANTS),$(call obj,$(v),none,host_sim/window.c)): $(HOST_SIM_CONFIG)
+$(foreach v,$(VARIANTS),$(call obj,$(v),none,host_sim/window.c)): EXTRA_CFLAGS += $(SDL_CFLAGS)
 
 # libpng through pkg-config; recursive (=) so that it is asked only when a
 # recipe runs, after tools/deps.sh may have installed it.
@@ -44,7 +52,7 @@ define HOST_SIM_LINK
 $(HOST_SIM_BIN_$(1)): $(call obj,$(1),none,$(HOST_SIM_SRCS)) $(call core_bundles,$(1)) $(call core_frac_bundles,$(1)) \
                       $(call host_sim_hal,$(1))
 	@mkdir -p $$(@D)
-	$(Q)$$(CC) $(LDFLAGS_$(1)) -o $$@ $$^ $$(PNG_LIBS) $(if $(HOST_SIM_HAVE_HAL),$$(HAL_LDLIBS)) -lm
+	$(Q)$$(CC) $(LDFLAGS_$(1)) -o $$@ $$^ $$(PNG_LIBS) $(if $(HOST_SIM_HAVE_HAL),$$(HAL_LDLIBS)) $$(SDL_LIBS) -lm
 endef
 $(foreach v,$(VARIANTS),$(eval $(call HOST_SIM_LINK,$(v))))
 
@@ -53,6 +61,8 @@ TEST_DEPS += $(HOST_SIM_BIN_asan) $(HOST_SIM_BIN_host)
 TESTS     += tests/test_host_sim.sh:$(HOST_SIM_BIN_asan)
 # --loop, dirty-rectangle flush, per-frame --out, --fps-overlay, progress line
 TESTS     += tests/test_live.sh:$(HOST_SIM_BIN_asan)
+# --window under Xvfb: a screenshot (xwd) against the PNG
+TESTS     += tests/test_window.sh:$(HOST_SIM_BIN_asan)
 # input/output faults (FIFOs, devices, ulimit -f, signals) of host_sim and scenec
 TEST_DEPS += $(BUILD)/scenec
 TESTS     += tests/test_io_faults.sh:$(HOST_SIM_BIN_asan):$(BUILD)/scenec

@@ -13,7 +13,9 @@ charts_pkgs="python3 python3-matplotlib"
 bench_pkgs="$firmware_pkgs qemu-system-arm valgrind nodejs"
 # libFuzzer's runtime is only recommended by clang, and installs skip recommends.
 # python3-pip: pip downloads the gpiod source distribution (libgpiod 2, mk/pi.mk).
-test_pkgs="$run_pkgs $firmware_pkgs $flash_pkgs $bench_pkgs clang libclang-rt-dev python3 python3-pip"
+# libsdl2-dev: host_sim --window; xvfb, xauth, x11-apps (xwd): its test on a virtual display.
+test_pkgs="$run_pkgs $firmware_pkgs $flash_pkgs $bench_pkgs clang libclang-rt-dev python3 python3-pip \
+  libsdl2-dev xvfb xauth x11-apps"
 
 case "$group" in
   run) want=$run_pkgs ;;

@@ -12,6 +12,7 @@ build=${1:-build}
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
 scene=firmware/scenes/book/raster-11.scene
+case $build in /*) shimdir=$build/shim ;; *) shimdir=$(pwd)/$build/shim ;; esac
 
 pass() { echo "PASS $1"; }
 fail() { echo "FAIL $1: $2"; }
@@ -26,7 +27,7 @@ run_linux() {
   rm -f "$tmp/lx.raw" "$tmp/lx.log"
   CGFS_SHIM_SPIDEV=${SPIDEV:-/dev/spidev0.0} CGFS_SHIM_MODULE=$module CGFS_SHIM_ROT=$rot \
   CGFS_SHIM_PINS=$pins CGFS_SHIM_GLASS=$tmp/lx.raw CGFS_SHIM_LOG=$tmp/lx.log \
-  LD_PRELOAD=$(pwd)/$build/shim/$api/shim_linux_panel.so \
+  LD_PRELOAD=$shimdir/$api/shim_linux_panel.so \
     "$hs" --scene $scene --backend linux "$@" >"$tmp/out" 2>"$tmp/err"
 }
 

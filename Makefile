@@ -23,7 +23,7 @@ CSTD      := -std=c11 -D_POSIX_C_SOURCE=200809L
 HOST_OPT  := -O2 -g -ffp-contract=off
 ASAN_OPT  := -O1 -g -ffp-contract=off -fno-omit-frame-pointer \
              -fsanitize=address,undefined -fno-sanitize-recover=all
-INCLUDES  := -I. -Ifirmware/core -Ihal -Itools/scene
+INCLUDES  := -I. -Ifirmware/core -Ihal -Itools/scene -Itools/core_api
 
 # Numeric modes of the renderer core: the value of NUM_MODE for each.
 NUM_MODES        := fixed float double

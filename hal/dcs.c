@@ -125,6 +125,25 @@ int dcs_write_pixels(struct dcs *d, const uint16_t *px, size_t n)
     return 0;
 }
 
+int dcs_write_pixels_async(struct dcs *d, const uint16_t *px, size_t n, hal_done_fn done, void *arg)
+{
+    const struct hal *h = d->hal;
+    if (h->pixels_async) {
+        d->bytes_sent += (uint32_t)(2u * n);
+        return h->pixels_async(h->ctx, px, n, done, arg);
+    }
+    int rc = dcs_write_pixels(d, px, n);
+    if (rc == 0 && done)
+        done(arg);
+    return rc;
+}
+
+int dcs_wait(struct dcs *d)
+{
+    const struct hal *h = d->hal;
+    return h->spi_wait ? h->spi_wait(h->ctx) : 0;
+}
+
 int dcs_write_fill(struct dcs *d, uint16_t colour, size_t n)
 {
     /* One buffer never changes while it is on the bus, so it is filled once. */
@@ -151,7 +170,7 @@ int dcs_write_fill(struct dcs *d, uint16_t colour, size_t n)
 int dcs_write_end(struct dcs *d)
 {
     int rc = 0;
-    if (d->hal->spi_write_async && d->hal->spi_wait)
+    if ((d->hal->spi_write_async || d->hal->pixels_async) && d->hal->spi_wait)
         rc = d->hal->spi_wait(d->hal->ctx);
     end(d);
     return rc;

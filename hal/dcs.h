@@ -94,6 +94,15 @@ int dcs_write_begin(struct dcs *d, int cont);
 int dcs_write_data(struct dcs *d, const uint8_t *data, size_t n);
 /* Sends n RGB565 pixels big-endian, converted in chunks through d->buf. */
 int dcs_write_pixels(struct dcs *d, const uint16_t *px, size_t n);
+/* Sends n RGB565 pixels inside a write begun with dcs_write_begin and
+ * returns; done(arg) (may be NULL) runs once px may be reused. With the HAL's
+ * pixels_async the pixels go as 16-bit frames by DMA and done runs on
+ * completion (px untouched until then, or until dcs_wait/dcs_write_end);
+ * otherwise they are converted as dcs_write_pixels does and done runs
+ * before this returns. The bytes on the wire are the same either way. */
+int dcs_write_pixels_async(struct dcs *d, const uint16_t *px, size_t n, hal_done_fn done, void *arg);
+/* Waits until no asynchronous write is in flight (completions run). */
+int dcs_wait(struct dcs *d);
 /* Sends n copies of one RGB565 colour. */
 int dcs_write_fill(struct dcs *d, uint16_t colour, size_t n);
 /* Waits for the bus and deselects (CS high). */

@@ -1,7 +1,7 @@
 /* hal.h — what a display needs from a board.
  *
  * A backend (host emulation, Linux spidev + libgpiod, RP2040, ...) fills a
- * struct hal with its operations. Nothing above this interface knows which
+ * struct hal with its seven operations (docs/embedding.md). Nothing above this interface knows which
  * backend runs. All operations are called from one thread/core at a time.
  *
  * Lines are active-high logical levels as the panel sees them: DC 0 =
@@ -32,6 +32,13 @@ struct hal {
     void (*delay_ms)(void *ctx, uint32_t ms);
     /* Monotonic microsecond clock. */
     uint64_t (*now_us)(void *ctx);
+    /* Optional (NULL: the DCS layer byte-swaps the pixels through its own
+     * buffers and sends them with spi_write_async or spi_write). Starts
+     * sending n RGB565 pixels from native-endian memory as 16-bit SPI frames,
+     * high byte first on the wire, inside a memory write (CS low, D/C high),
+     * and returns; `done(arg)` runs on completion (DMA). `px` must stay
+     * untouched until then or until spi_wait returns. */
+    int (*pixels_async)(void *ctx, const uint16_t *px, size_t n, hal_done_fn done, void *arg);
 };
 
 #endif

@@ -41,6 +41,8 @@ int panel_init(struct panel *p, const struct panel_desc *d, const struct hal *ha
     if (rotation > 3 || !d || !hal)
         return -1;
     p->desc = d;
+    p->flush_w = 0;
+    p->flush_rows = 0;
     int rc = dcs_init(&p->dcs, hal);
     hal->line_set(hal->ctx, HAL_LINE_BL, 0);
     if (rc == 0)
@@ -70,11 +72,59 @@ static int rect_ok(const struct panel *p, uint16_t x, uint16_t y, uint16_t w, ui
     return w > 0 && h > 0 && (uint32_t)x + w <= p->width && (uint32_t)y + h <= p->height;
 }
 
+int panel_flush_begin(struct panel *p, uint16_t x, uint16_t y, uint16_t w, uint16_t h)
+{
+    if (!rect_ok(p, x, y, w, h) || p->flush_rows)
+        return -1;
+    int rc = dcs_set_window(&p->dcs, x, y, (uint16_t)(x + w - 1), (uint16_t)(y + h - 1));
+    if (rc == 0)
+        rc = dcs_write_begin(&p->dcs, 0);
+    if (rc != 0) {
+        dcs_write_end(&p->dcs);
+        return rc;
+    }
+    p->flush_w = w;
+    p->flush_rows = h;
+    return 0;
+}
+
+int panel_flush_rows(struct panel *p, const uint16_t *px, uint16_t rows, hal_done_fn done, void *arg)
+{
+    if (!px || rows == 0 || rows > p->flush_rows)
+        return -1;
+    p->flush_rows = (uint16_t)(p->flush_rows - rows);
+    size_t n = (size_t)p->flush_w * rows;
+    const struct hal *h = p->dcs.hal;
+    if (h->pixels_async) {          /* the DMA path, without a call through dcs.c */
+        p->dcs.bytes_sent += (uint32_t)(2u * n);
+        return h->pixels_async(h->ctx, px, n, done, arg);
+    }
+    return dcs_write_pixels_async(&p->dcs, px, n, done, arg);
+}
+
+int panel_flush_end(struct panel *p)
+{
+    int left = p->flush_rows != 0;
+    p->flush_rows = 0;
+    int rc = dcs_write_end(&p->dcs);
+    return rc ? rc : (left ? -1 : 0);
+}
+
+int panel_wait(struct panel *p)
+{
+    return dcs_wait(&p->dcs);
+}
+
 int panel_flush(struct panel *p, uint16_t x, uint16_t y, uint16_t w, uint16_t h, const uint16_t *px)
 {
     if (!rect_ok(p, x, y, w, h) || !px)
         return -1;
-    return dcs_flush(&p->dcs, x, y, w, h, px);
+    int rc = panel_flush_begin(p, x, y, w, h);
+    if (rc != 0)
+        return rc;
+    rc = panel_flush_rows(p, px, h, NULL, NULL);
+    int rc2 = panel_flush_end(p);
+    return rc ? rc : rc2;
 }
 
 int panel_fill(struct panel *p, uint16_t x, uint16_t y, uint16_t w, uint16_t h, uint16_t colour)

@@ -9,7 +9,9 @@
  * descriptor's rotation 0; odd rotations swap width and height.
  * Pixels are RGB565, native uint16_t, row-major.
  *
- * Flushing a rectangle (panel_flush) is the one way pixels leave a renderer.
+ * Flushing a rectangle is the one way pixels leave a renderer: in one call
+ * (panel_flush) or streamed, rows as they are rendered (panel_flush_begin,
+ * panel_flush_rows ..., panel_flush_end). Both send the same bytes.
  */
 #ifndef HAL_PANEL_H
 #define HAL_PANEL_H
@@ -53,6 +55,8 @@ struct panel {
     struct dcs dcs;
     uint8_t rotation;
     uint16_t width, height;      /* in the current rotation */
+    uint16_t flush_w;            /* streaming flush: the window's width, */
+    uint16_t flush_rows;         /* and its rows not sent yet (0: no flush open) */
 };
 
 /* Looks a descriptor up by name: a full name ("st7789_240x240") or a
@@ -73,6 +77,25 @@ int panel_set_rotation(struct panel *p, uint8_t rotation);
 /* Sends the w*h pixels px (row-major, stride w) to the rectangle at (x, y).
  * Returns -1 if the rectangle is empty or leaves the panel (nothing sent). */
 int panel_flush(struct panel *p, uint16_t x, uint16_t y, uint16_t w, uint16_t h, const uint16_t *px);
+
+/* Streaming flush of the w x h rectangle at (x, y): begin opens the window
+ * (CASET, RASET, RAMWR; -1 and nothing sent if it is empty or leaves the
+ * panel, or a flush is open), each panel_flush_rows call sends the next rows
+ * (rows * w pixels, stride w; -1 and nothing sent for more rows than are
+ * left), end waits for the bus and closes the write (-1 if rows were left,
+ * after closing it).
+ *
+ * panel_flush_rows returns once the pixels are on their way: with a HAL that
+ * has pixels_async (DMA) px must stay untouched until done(arg) runs (done
+ * may be NULL), which is at the latest in the next panel call that waits for
+ * the bus (panel_wait, panel_flush_rows, panel_flush_end); without it, done
+ * runs before panel_flush_rows returns. Every call returns 0 or the HAL's
+ * error; after an error the flush should still be ended. */
+int panel_flush_begin(struct panel *p, uint16_t x, uint16_t y, uint16_t w, uint16_t h);
+int panel_flush_rows(struct panel *p, const uint16_t *px, uint16_t rows, hal_done_fn done, void *arg);
+int panel_flush_end(struct panel *p);
+/* Waits until the bus is idle (pending completions run). */
+int panel_wait(struct panel *p);
 
 /* Fills a rectangle with one colour (same rules as panel_flush). */
 int panel_fill(struct panel *p, uint16_t x, uint16_t y, uint16_t w, uint16_t h, uint16_t colour);

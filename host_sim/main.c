@@ -17,7 +17,7 @@
 #include <unistd.h>
 
 #include "host_sim/compare.h"
-#include "host_sim/core_api.h"
+#include "core_api.h"
 #include "host_sim/imgio.h"
 #include "host_sim/panel_out.h"
 #include "host_sim/window.h"

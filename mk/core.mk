@@ -7,7 +7,7 @@
 
 CORE_SRCS  := $(sort $(wildcard firmware/core/*.c))
 SCENE_SRCS := $(sort $(wildcard tools/scene/*.c))
-CORE_GLUE  := host_sim/core_api.c
+CORE_GLUE  := tools/core_api/core_api.c
 
 # Debug/test counting of saturations in host builds.
 $(BUILD)/host/%.o $(BUILD)/asan/%.o: EXTRA_CFLAGS += -DNUM_COUNT_SAT
@@ -22,7 +22,7 @@ endef
 $(foreach v,$(VARIANTS),$(foreach m,$(NUM_MODES),$(eval $(call CORE_BUNDLE,$(v),$(m)))))
 
 # All three modes of a variant, as objects to link.
-core_bundles = $(foreach m,$(NUM_MODES),$(BUILD)/$(1)/core_$(m).o) $(call obj,$(1),none,host_sim/core_select.c)
+core_bundles = $(foreach m,$(NUM_MODES),$(BUILD)/$(1)/core_$(m).o) $(call obj,$(1),none,tools/core_api/core_select.c)
 
 # ---- fixed point at every NUM_FRAC the scene analysis may choose ------------
 # (tools/scene/scene_format.c: scenec for the firmware, host_sim --numeric
@@ -50,4 +50,4 @@ $(foreach v,$(VARIANTS),$(foreach m,$(CORE_FRAC_MODES),$(eval $(call CORE_FRAC_B
 
 # Every format's bundle of a variant and the selector core_api_fixed_frac().
 core_frac_bundles = $(foreach m,$(CORE_FRAC_MODES),$(BUILD)/$(1)/core_$(m).o) \
-                    $(call obj,$(1),none,host_sim/core_fracs.c)
+                    $(call obj,$(1),none,tools/core_api/core_fracs.c)

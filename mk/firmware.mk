@@ -243,7 +243,7 @@ firmware: firmware-pico firmware-stm32f411
 # Instructions per frame of the book scenes: Cortex-M4F (mps2-an386) fixed vs
 # float, and Cortex-M0+ code (mps2-an385) in fixed point.
 ifneq ($(FW_HAVE_SCENEC),)
-FW_BENCH_SRCS := firmware/app/bench_frame.c $(FW_CORE_SRCS) $(FW_BOOK_SRCS)
+FW_BENCH_SRCS := tools/bench/bench_frame.c $(FW_CORE_SRCS) $(FW_BOOK_SRCS)
 FW_BENCH_FLAGS := -Ifirmware/app -I$(FW_OUT)/scenes -DFW_STRIP_ROWS=$(FW_STRIP_ROWS) -DFW_WORK_CORES=1
 $(call bench_image,frame,m4f-qemu,fixed,$(FW_BENCH_SRCS),$(FW_BENCH_FLAGS) $(FW_BOOK_FRAC_FLAGS))
 $(call bench_image,frame,m4f-qemu,float,$(FW_BENCH_SRCS),$(FW_BENCH_FLAGS))
@@ -311,7 +311,7 @@ $(RP2040SIM_DEPS): tools/rp2040sim/package.json tools/rp2040sim/package-lock.jso
 # The host reference of the firmware's scene table (fixed point, as on the MCU).
 FW_HOST_REF := $(BUILD)/fw_host_ref
 $(BUILD)/host/fixed/firmware/app/%.o: EXTRA_CFLAGS += -Ifirmware/app
-$(BUILD)/host/none/tests/fw_host_ref.o: EXTRA_CFLAGS += -Ifirmware/app -Ihost_sim
+$(BUILD)/host/none/tests/fw_host_ref.o: EXTRA_CFLAGS += -Ifirmware/app
 $(FW_HOST_REF): $(call obj,host,none,tests/fw_host_ref.c) $(call obj,host,fixed,$(FW_SCENE_SRCS)) \
                 $(BUILD)/host/core_fixed.o
 	$(Q)$(CC) $^ -lm -o $@

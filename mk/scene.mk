@@ -40,7 +40,6 @@ SCENEC := $(BUILD)/scenec
 $(SCENEC): $(call obj,host,double,tools/scenec/scenec.c tools/scene/scene_format.c $(SCENE_PARSER_SRCS)) $(BUILD)/host/core_fixed12.o
 	@mkdir -p $(@D)
 	$(Q)$(CC) -o $@ $^ -lm
-$(BUILD)/host/double/tools/scenec/scenec.o: EXTRA_CFLAGS += -Ihost_sim
 PROGRAMS += $(SCENEC)
 
 # Every scene compiled for the default panel (ST7789 240x240, 16-row strips).

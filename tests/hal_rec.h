@@ -137,6 +137,7 @@ static void rec_init(struct rec *r, struct hal *h, int async)
     h->line_set = rec_line_set;
     h->delay_ms = rec_delay_ms;
     h->now_us = rec_now_us;
+    h->pixels_async = NULL;
 }
 
 /* The log so far (pending runs written out), reset afterwards. */

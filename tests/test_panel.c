@@ -152,6 +152,60 @@ static void test_sim_timing(struct emu_panel *e)
           "%llu bytes in %llu us", (unsigned long long)(s.spi_bytes - b0), (unsigned long long)us);
 }
 
+/* A 16-bit-frame pixel operation for the recording HAL: the bytes it would
+ * put on the wire, high byte first, and the completion at once. */
+static int rec_pixels(void *ctx, const uint16_t *px, size_t n, hal_done_fn done, void *arg)
+{
+    for (size_t i = 0; i < n; i++) {
+        uint8_t b[2] = { (uint8_t)(px[i] >> 8), (uint8_t)px[i] };
+        rec_spi_write(ctx, b, 2);
+    }
+    if (done)
+        done(arg);
+    return 0;
+}
+
+static void count_done(void *arg) { ++*(int *)arg; }
+
+/* The streaming flush sends what panel_flush sends, with and without the
+ * HAL's pixel operation, and refuses rows beyond its window. */
+static void test_streaming(void)
+{
+    static const uint16_t px[6] = { 0x1234, 0xABCD, 0x0001, 0xFF00, 0x00FF, 0x8001 };
+    char want[600];
+    for (int mode = 0; mode < 3; mode++) {
+        struct rec r; struct hal h; struct panel p;
+        char name[64];
+        rec_init(&r, &h, mode > 0);
+        if (mode == 2)
+            h.pixels_async = rec_pixels;
+        panel_init(&p, &panel_st7789_240x240, &h, 0);
+        rec_take(&r);
+        panel_flush(&p, 10, 20, 2, 3, px);
+        snprintf(want, sizeof want, "%s", rec_take(&r));
+        int done = 0;
+        int rc = panel_flush_begin(&p, 10, 20, 2, 3);
+        rc |= panel_flush_rows(&p, px, 1, count_done, &done);
+        rc |= panel_flush_rows(&p, px + 2, 2, count_done, &done);
+        int over = panel_flush_rows(&p, px, 1, NULL, NULL);
+        rc |= panel_flush_end(&p);
+        snprintf(name, sizeof name, "panel_streaming_flush_same_bytes_mode%d", mode);
+        expect_log(name, rec_take(&r), want);
+        snprintf(name, sizeof name, "panel_streaming_flush_rules_mode%d", mode);
+        check(rc == 0 && over == -1 && done == 2, name, "rc %d, extra row %d, %d completions", rc, over, done);
+        /* an end before every row was sent closes the write and says so */
+        panel_flush_begin(&p, 0, 0, 2, 2);
+        panel_flush_rows(&p, px, 1, NULL, NULL);
+        int short_end = panel_flush_end(&p);
+        int again = panel_flush_begin(&p, 0, 0, 1, 1);
+        panel_flush_end(&p);
+        snprintf(name, sizeof name, "panel_streaming_flush_short_end_mode%d", mode);
+        check(short_end == -1 && again == 0, name, "end %d, next begin %d", short_end, again);
+        if (mode == 0)
+            check(panel_flush_begin(&p, 239, 0, 2, 1) == -1, "panel_streaming_flush_window_outside", "accepted");
+    }
+}
+
 int main(void)
 {
     struct emu_panel *e = malloc(sizeof *e);
@@ -160,6 +214,7 @@ int main(void)
         return 1;
     test_init_streams();
     test_find();
+    test_streaming();
     for (size_t i = 0; panel_all[i]; i++)
         for (uint8_t r = 0; r < 4; r++)
             round_trip(panel_all[i], r, e, img, glass);

@@ -1,5 +1,5 @@
 /* test_raster_ch15.c — chapter 15 on the default path, through the parser
- * and the core of each numeric mode (host_sim/core_api.h):
+ * and the core of each numeric mode (tools/core_api/core_api.h):
  * - shadow maps and shadow volumes: a cube over a floor, lit from one side,
  *   darkens floor pixels on the far side only, never brightens a pixel;
  *   the two techniques agree on most pixels; strips of 8, 16 and 240 rows
@@ -14,7 +14,7 @@
 #include <string.h>
 #include <unistd.h>
 #include "check.h"
-#include "host_sim/core_api.h"
+#include "core_api.h"
 
 #define W 240
 #define H 240

@@ -1,5 +1,5 @@
 /* test_raster_scenes.c — the book's raster scene files (firmware/scenes/book)
- * through the parser and the core of each numeric mode (host_sim/core_api.h):
+ * through the parser and the core of each numeric mode (tools/core_api/core_api.h):
  * the double build at 600x600 reproduces the reference digests, and fixed
  * and float agree with double at 240x240 and 320x240 (coverage >= 99.9%,
  * colour within one RGB565 level on >= 99% of pixels). */
@@ -7,7 +7,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include "check.h"
-#include "host_sim/core_api.h"
+#include "core_api.h"
 
 struct img { int w, h; uint16_t *c565; uint8_t *c888, *wr; };
 

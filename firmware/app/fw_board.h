@@ -12,13 +12,13 @@
 /* Board name shown on UART ("rp2040", "stm32f411"). */
 extern const char fw_board_name[];
 
-/* Clocks, pins, bus; fills *h. 0 on success. */
+/* Clocks, pins, bus; fills *h (the board's HAL backend, which sends the
+ * pixels: every byte to the panel goes through panel.h). 0 on success. */
 int fw_board_init(struct hal *h);
 
-/* Sends n RGB565 pixels (native-endian memory, big-endian on the wire) by
- * DMA inside a memory write the DCS layer began (CS low, D/C high). The
- * buffer must stay untouched until hal->spi_wait() returns or done runs. */
-int fw_board_pixels_async(struct hal *h, const uint16_t *px, size_t n, hal_done_fn done, void *arg);
+/* Whether to show the scene table once more: 1 on the boards (forever); a
+ * host build of the application stops after its passes. */
+int fw_board_again(void);
 
 /* Text to the serial console (UART), blocking. */
 void fw_board_puts(const char *s);

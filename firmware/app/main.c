@@ -1,6 +1,8 @@
 /* main.c — the firmware application: cycles through the scenes compiled
  * into the image, rendering each frame strip by strip while DMA sends the
- * previous strip, and shows the frame rate on screen and over UART.
+ * previous strip, and shows the frame rate on screen and over UART. Every
+ * pixel leaves through panel.h's streaming flush (the board's HAL sends
+ * them, by DMA where it has it).
  *
  * Strips: FW_STRIP_ROWS rows of FW_WIDTH pixels, rendered into a ring of
  * FW_RING buffers (strip k into ring[k % FW_RING]) while DMA sends the ones
@@ -17,7 +19,7 @@
  *   coarse scene=NAME frame=F   (ray tracer: a preview of 8x8 blocks follows)
  *   first scene=NAME frame=F us=U   (the preview is on the glass, U after begin)
  *   fps scene=NAME frame=F us=U fps=X.Y
- *   error scene=NAME what
+ *   error scene=NAME what   (render_strip failed, panel flush failed, ...)
  * The first frame of each scene carries no overlay (no frame was timed yet),
  * so it is exactly the renderer's image; later frames show "X.Y fps" in the
  * top-left corner. */
@@ -233,24 +235,22 @@ static uint32_t frame(unsigned si, uint16_t f, uint32_t last_us, int dual)
     for (unsigned k = 0; k < NSTRIPS; k++) sh.done[k] = 0;
     fw_board_unlock();
     if (dual) fw_board_send(MSG_FRAME | ((uint32_t)si << 16) | f);
-    int err = 0;
+    int err = 0, bus_err = 0;
     if (FW_PROGRESSIVE && render_set_pass(&ctx[0], RENDER_PASS_COARSE) == 0) {
         /* core 0 draws the preview while core 1 starts on its strips */
         p = put_str(put_str(line, "coarse scene="), name);
         p = put_str(put_u32(put_str(p, " frame="), f), "\r\n");
         *p = 0;
         fw_board_puts(line);
-        dcs_set_window(&panel.dcs, 0, 0, FW_WIDTH - 1, FW_HEIGHT - 1);
-        dcs_write_begin(&panel.dcs, 0);
+        if (panel_flush_begin(&panel, 0, 0, FW_WIDTH, FW_HEIGHT) != 0) bus_err = 1;
         for (unsigned k = 0; k < NSTRIPS; k++) {
             uint16_t *buf = preview_buf[k & 1u];
             uint16_t y0, y1;
             strip_rows(k, &y0, &y1);
             if (render_one(&ctx[0], k, buf) != 0) err = 1;
-            fw_board_pixels_async(&hal, buf, (size_t)(y1 - y0) * FW_WIDTH, NULL, NULL);
+            if (!bus_err && panel_flush_rows(&panel, buf, (uint16_t)(y1 - y0), NULL, NULL) != 0) bus_err = 1;
         }
-        hal.spi_wait(hal.ctx);
-        dcs_write_end(&panel.dcs);
+        if (panel_flush_end(&panel) != 0) bus_err = 1;
         uint64_t cu = hal.now_us(hal.ctx) - t0;
         p = put_str(put_str(line, "first scene="), name);
         p = put_str(put_u32(put_str(p, " frame="), f), " us=");
@@ -259,8 +259,7 @@ static uint32_t frame(unsigned si, uint16_t f, uint32_t last_us, int dual)
         fw_board_puts(line);
         render_set_pass(&ctx[0], RENDER_PASS_FULL);
     }
-    dcs_set_window(&panel.dcs, 0, 0, FW_WIDTH - 1, FW_HEIGHT - 1);
-    dcs_write_begin(&panel.dcs, 0);
+    if (panel_flush_begin(&panel, 0, 0, FW_WIDTH, FW_HEIGHT) != 0) bus_err = 1;
     for (unsigned next = 0; next < NSTRIPS;) {
         unsigned st = strip_state(next);
         if (st) {
@@ -271,8 +270,13 @@ static uint32_t frame(unsigned si, uint16_t f, uint32_t last_us, int dual)
             if (st != 1) err = 1;
             if (overlay)
                 font5x7_draw(buf, FW_WIDTH, y0, y1, 2, 2, 2, text, 0xffffu, 0x0000u);
-            fw_board_pixels_async(&hal, buf, (size_t)(y1 - y0) * FW_WIDTH, strip_sent,
-                                  (void *)(uintptr_t)next);
+            /* after a bus error the strips are only released, so that core 1
+             * finishes the frame */
+            if (bus_err || panel_flush_rows(&panel, buf, (uint16_t)(y1 - y0), strip_sent,
+                                            (void *)(uintptr_t)next) != 0) {
+                bus_err = 1;
+                strip_sent((void *)(uintptr_t)next);
+            }
             next++;
             continue;
         }
@@ -284,13 +288,16 @@ static uint32_t frame(unsigned si, uint16_t f, uint32_t last_us, int dual)
         /* the next strip is core 1's and not done yet: let the bus finish
          * (releasing the buffers core 1 may be waiting for), then sleep until
          * core 1 marks a strip */
-        hal.spi_wait(hal.ctx);
+        if (panel_wait(&panel) != 0) bus_err = 1;
         if (!strip_state(next)) fw_board_wait();
     }
-    hal.spi_wait(hal.ctx);
-    dcs_write_end(&panel.dcs);
+    if (panel_flush_end(&panel) != 0) bus_err = 1;
     if (dual) (void)fw_board_recv();     /* MSG_FRAME_DONE: core 1 is idle again */
     uint64_t us = hal.now_us(hal.ctx) - t0;
+    if (bus_err) {
+        say("error scene=", name, " panel flush failed\r\n");
+        return 0;
+    }
     if (err) {
         say("error scene=", name, " render_strip failed\r\n");
         return 0;
@@ -332,7 +339,7 @@ int main(void)
     }
     if (dual) fw_board_core1_start(core1_main);
 
-    for (;;) {
+    do {
         for (unsigned si = 0; si < fw_scene_count; si++) {
             if (scene_init(&ctx[0], si, 0) != 0) {
                 say("error scene=", fw_scenes[si].name, " work memory too small\r\n");
@@ -341,5 +348,6 @@ int main(void)
             uint32_t last = 0;
             for (uint16_t f = 0; f < FW_FRAMES_PER_SCENE; f++) last = frame(si, f, last, dual);
         }
-    }
+    } while (fw_board_again());
+    return 0;
 }

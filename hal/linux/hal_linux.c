@@ -260,5 +260,6 @@ int hal_linux_open(struct hal_linux *l, struct hal *out, const struct hal_linux_
     out->line_set = lx_line_set;
     out->delay_ms = lx_delay_ms;
     out->now_us = lx_now_us;
+    out->pixels_async = NULL;   /* the DCS layer converts pixels to bytes */
     return 0;
 }

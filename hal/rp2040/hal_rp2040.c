@@ -1,6 +1,5 @@
 /* hal_rp2040.c — SPI0 + DMA + GPIO + timer behind hal.h. */
 #include "hal_rp2040.h"
-#include "board.h"
 #include "rp2040_regs.h"
 
 #if RP2040_SPI_CPSDVSR < 2 || RP2040_SPI_CPSDVSR > 254 || (RP2040_SPI_CPSDVSR & 1)
@@ -13,6 +12,8 @@ struct rp2040_bus {
     hal_done_fn done;  /* completion of the transfer in flight */
     void *arg;
     uint8_t bits;      /* current SPI frame size: 8 or 16 */
+    uint32_t peri_hz;  /* clk_peri */
+    uint64_t (*now_us)(void);
 };
 
 static struct rp2040_bus bus;
@@ -62,9 +63,9 @@ static int rp_spi_write(void *ctx, const uint8_t *data, size_t n)
     return 0;
 }
 
+/* Both callers have waited for the bus (rp_spi_wait) before. */
 static int dma_start(const void *src, size_t count, uint32_t size, hal_done_fn done, void *arg)
 {
-    rp_spi_wait(0);
     bus.done = done;
     bus.arg = arg;
     if (count == 0) return 0;
@@ -84,8 +85,7 @@ static int rp_spi_write_async(void *ctx, const uint8_t *data, size_t n, hal_done
     return dma_start(data, n, DMA_SIZE_BYTE, done, arg);
 }
 
-int hal_rp2040_write_pixels_async(void *ctx, const uint16_t *px, size_t n, hal_done_fn done,
-                                  void *arg)
+static int rp_pixels_async(void *ctx, const uint16_t *px, size_t n, hal_done_fn done, void *arg)
 {
     (void)ctx;
     rp_spi_wait(0);
@@ -108,22 +108,24 @@ static void rp_line_set(void *ctx, enum hal_line line, int level)
     else REG(SIO_GPIO_OUT_CLR) = bit;
 }
 
-static void rp_delay_ms(void *ctx, uint32_t ms)
-{
-    (void)ctx;
-    board_delay_us(ms * 1000u);
-}
-
 static uint64_t rp_now_us(void *ctx)
 {
     (void)ctx;
-    return board_now_us();
+    return bus.now_us();
 }
 
-uint32_t hal_rp2040_spi_hz(void) { return RP2040_PERI_HZ / RP2040_SPI_CPSDVSR; }
-
-int hal_rp2040_init(struct hal *h)
+static void rp_delay_ms(void *ctx, uint32_t ms)
 {
+    uint64_t end = rp_now_us(ctx) + (uint64_t)ms * 1000u;
+    while (rp_now_us(ctx) < end) {}
+}
+
+uint32_t hal_rp2040_spi_hz(void) { return bus.peri_hz / RP2040_SPI_CPSDVSR; }
+
+int hal_rp2040_init(struct hal *h, uint32_t clk_peri_hz, uint64_t (*now_us)(void))
+{
+    bus.peri_hz = clk_peri_hz;
+    bus.now_us = now_us;
     static const uint8_t sio_pins[] = { RP2040_PIN_CS, RP2040_PIN_DC, RP2040_PIN_RST, RP2040_PIN_BL };
     for (unsigned i = 0; i < sizeof sio_pins; i++) {
         uint32_t bit = 1u << sio_pins[i];
@@ -151,5 +153,6 @@ int hal_rp2040_init(struct hal *h)
     h->line_set = rp_line_set;
     h->delay_ms = rp_delay_ms;
     h->now_us = rp_now_us;
+    h->pixels_async = rp_pixels_async;
     return 0;
 }

@@ -42,15 +42,12 @@
 #define RP2040_SPI_DMA_CH 0
 #endif
 
-/* Configures pins, SPI0 and DMA; fills *h. The board must be initialised
- * (board_init) first. Returns 0. */
-int hal_rp2040_init(struct hal *h);
-
-/* Fast path for pixels: sends n RGB565 pixels from native-endian memory as
- * 16-bit SPI frames (high byte first on the wire, as the panel wants) by DMA,
- * without byte swapping. Same completion rules as spi_write_async. */
-int hal_rp2040_write_pixels_async(void *ctx, const uint16_t *px, size_t n, hal_done_fn done,
-                                  void *arg);
+/* Configures pins, SPI0 and DMA; fills *h (all seven operations; pixels
+ * go as 16-bit SPI frames by DMA, without byte swapping). What the backend
+ * needs from the board: the resets of IO_BANK0, PADS_BANK0, DMA and SPI0
+ * released, clk_peri running at clk_peri_hz, and a microsecond clock
+ * (now_us and delay_ms use it). Returns 0. */
+int hal_rp2040_init(struct hal *h, uint32_t clk_peri_hz, uint64_t (*now_us)(void));
 
 /* SPI clock in Hz as configured. */
 uint32_t hal_rp2040_spi_hz(void);

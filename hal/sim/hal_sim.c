@@ -23,6 +23,27 @@ static int sim_spi_write_async(void *ctx, const uint8_t *data, size_t n, hal_don
     return rc;
 }
 
+/* 16-bit frames: each pixel high byte first, as a DMA to a 16-bit SPI port
+ * sends them. */
+static int sim_pixels_async(void *ctx, const uint16_t *px, size_t n, hal_done_fn done, void *arg)
+{
+    uint8_t b[256];
+    int rc = 0;
+    while (rc == 0 && n > 0) {
+        size_t m = n < sizeof b / 2 ? n : sizeof b / 2;
+        for (size_t i = 0; i < m; i++) {
+            b[2 * i] = (uint8_t)(px[i] >> 8);
+            b[2 * i + 1] = (uint8_t)px[i];
+        }
+        rc = sim_spi_write(ctx, b, 2 * m);
+        px += m;
+        n -= m;
+    }
+    if (done)
+        done(arg);
+    return rc;
+}
+
 static int sim_spi_wait(void *ctx)
 {
     (void)ctx;
@@ -62,6 +83,7 @@ void hal_sim_init(struct hal_sim *s, struct hal *out, struct emu_panel *panel)
     out->line_set = sim_line_set;
     out->delay_ms = sim_delay_ms;
     out->now_us = sim_now_us;
+    out->pixels_async = sim_pixels_async;
 }
 
 void hal_sim_set_spi_hz(struct hal_sim *s, uint32_t hz)

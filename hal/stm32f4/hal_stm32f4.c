@@ -1,6 +1,5 @@
 /* hal_stm32f4.c — SPI1 + DMA2 + GPIO + TIM2 behind hal.h. */
 #include "hal_stm32f4.h"
-#include "board.h"
 #include "stm32f411_regs.h"
 
 #if STM32_SPI_BR < 0 || STM32_SPI_BR > 7
@@ -16,6 +15,8 @@ struct stm32_bus {
     void *arg;
     uint8_t bits;      /* current SPI frame size: 8 or 16 */
     uint8_t busy;      /* a DMA transfer was started */
+    uint32_t apb2_hz;  /* SPI1's clock */
+    uint64_t (*now_us)(void);
 };
 
 static struct stm32_bus bus;
@@ -109,8 +110,7 @@ static int st_spi_write_async(void *ctx, const uint8_t *data, size_t n, hal_done
     return dma_write(data, n, 8, done, arg);
 }
 
-int hal_stm32f4_write_pixels_async(void *ctx, const uint16_t *px, size_t n, hal_done_fn done,
-                                   void *arg)
+static int st_pixels_async(void *ctx, const uint16_t *px, size_t n, hal_done_fn done, void *arg)
 {
     (void)ctx;
     return dma_write(px, n, 16, done, arg);
@@ -126,32 +126,34 @@ static void st_line_set(void *ctx, enum hal_line line, int level)
     if ((unsigned)line > HAL_LINE_BL) return;
     /* A line changes only once the bytes sent before it have left the wire. */
     st_spi_wait(ctx);
-    board_pin_set(line_pin[line], level);
-}
-
-static void st_delay_ms(void *ctx, uint32_t ms)
-{
-    (void)ctx;
-    board_delay_us(ms * 1000u);
+    stm32_pin_set(line_pin[line], level);
 }
 
 static uint64_t st_now_us(void *ctx)
 {
     (void)ctx;
-    return board_now_us();
+    return bus.now_us();
 }
 
-uint32_t hal_stm32f4_spi_hz(void) { return STM32_APB2_HZ >> (STM32_SPI_BR + 1); }
-
-int hal_stm32f4_init(struct hal *h)
+static void st_delay_ms(void *ctx, uint32_t ms)
 {
+    uint64_t end = st_now_us(ctx) + (uint64_t)ms * 1000u + 1u;   /* at least ms whole milliseconds */
+    while (st_now_us(ctx) < end) {}
+}
+
+uint32_t hal_stm32f4_spi_hz(void) { return bus.apb2_hz >> (STM32_SPI_BR + 1); }
+
+int hal_stm32f4_init(struct hal *h, uint32_t apb2_hz, uint64_t (*now_us)(void))
+{
+    bus.apb2_hz = apb2_hz;
+    bus.now_us = now_us;
     /* Idle levels: CS high (deselected), DC high, RST high, BL off. */
-    board_pin_output(STM32_PIN_CS, 1);
-    board_pin_output(STM32_PIN_DC, 1);
-    board_pin_output(STM32_PIN_RST, 1);
-    board_pin_output(STM32_PIN_BL, 0);
-    board_pin_af(STM32_PIN_SCK, 5u);
-    board_pin_af(STM32_PIN_MOSI, 5u);
+    stm32_pin_output(STM32_PIN_CS, 1);
+    stm32_pin_output(STM32_PIN_DC, 1);
+    stm32_pin_output(STM32_PIN_RST, 1);
+    stm32_pin_output(STM32_PIN_BL, 0);
+    stm32_pin_af(STM32_PIN_SCK, 5u);
+    stm32_pin_af(STM32_PIN_MOSI, 5u);
 
     bus.bits = 0;
     bus.busy = 0;
@@ -166,5 +168,6 @@ int hal_stm32f4_init(struct hal *h)
     h->line_set = st_line_set;
     h->delay_ms = st_delay_ms;
     h->now_us = st_now_us;
+    h->pixels_async = st_pixels_async;
     return 0;
 }

@@ -38,15 +38,12 @@
 #define STM32_SPI_BR 0       /* SPI clock f_PCLK2 / 2^(BR+1), 0..7 */
 #endif
 
-/* Configures pins, SPI1 and DMA2; fills *h. board_init must have run.
- * Returns 0. */
-int hal_stm32f4_init(struct hal *h);
-
-/* Sends n RGB565 pixels from native-endian memory as 16-bit SPI frames (high
- * byte first on the wire) by DMA, without byte swapping. Same completion
- * rules as spi_write_async. At most 65535 pixels per call. */
-int hal_stm32f4_write_pixels_async(void *ctx, const uint16_t *px, size_t n, hal_done_fn done,
-                                   void *arg);
+/* Configures pins, SPI1 and DMA2; fills *h (all seven operations; pixels
+ * go as 16-bit SPI frames by DMA, without byte swapping). What the backend
+ * needs from the board: the clocks of the GPIO ports, DMA2 and SPI1 enabled,
+ * SPI1's bus clock (APB2) at apb2_hz, and a microsecond clock (now_us and
+ * delay_ms use it). Returns 0. */
+int hal_stm32f4_init(struct hal *h, uint32_t apb2_hz, uint64_t (*now_us)(void));
 
 /* SPI clock in Hz as configured. */
 uint32_t hal_stm32f4_spi_hz(void);

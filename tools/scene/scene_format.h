@@ -12,7 +12,7 @@
  * wide by the core). docs/scene-format.md states the argument.
  *
  * Everything in struct scene_format is plain C (no `num`): host programs
- * built without a numeric mode read it through host_sim/core_api.h.
+ * built without a numeric mode read it through tools/core_api/core_api.h.
  */
 #ifndef SCENE_FORMAT_H
 #define SCENE_FORMAT_H

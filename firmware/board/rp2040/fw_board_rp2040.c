@@ -17,14 +17,11 @@ const char fw_board_name[] = "rp2040";
 
 static uint64_t core1_stack[RP2040_CORE1_STACK / 8];
 
-int fw_board_init(struct hal *h) { return hal_rp2040_init(h); }
-
-int fw_board_pixels_async(struct hal *h, const uint16_t *px, size_t n, hal_done_fn done, void *arg)
-{
-    return hal_rp2040_write_pixels_async(h->ctx, px, n, done, arg);
-}
+int fw_board_init(struct hal *h) { return hal_rp2040_init(h, RP2040_PERI_HZ, board_now_us); }
 
 void fw_board_puts(const char *s) { board_puts(s); }
+
+int fw_board_again(void) { return 1; }
 
 unsigned fw_board_cores(void) { return RP2040_SINGLE_CORE ? 1u : 2u; }
 

@@ -25,33 +25,6 @@ static void clocks_init(void)
     while ((REG(RCC_CFGR) & RCC_CFGR_SWS_MASK) != RCC_CFGR_SWS_PLL) {}
 }
 
-static void mode_bits(unsigned pin, uint32_t mode)
-{
-    unsigned port = pin >> 4, i = pin & 15u;
-    REG(GPIO_OSPEEDR(port)) |= GPIO_SPEED_VHIGH << (2u * i);
-    REG(GPIO_OTYPER(port)) &= ~(1u << i);
-    REG(GPIO_MODER(port)) = (REG(GPIO_MODER(port)) & ~(3u << (2u * i))) | (mode << (2u * i));
-}
-
-void board_pin_set(unsigned pin, int level)
-{
-    unsigned i = pin & 15u;
-    REG(GPIO_BSRR(pin >> 4)) = level ? (1u << i) : (1u << (i + 16u));
-}
-
-void board_pin_output(unsigned pin, int level)
-{
-    board_pin_set(pin, level);   /* level first: no glitch when the driver turns on */
-    mode_bits(pin, GPIO_MODE_OUT);
-}
-
-void board_pin_af(unsigned pin, unsigned af)
-{
-    unsigned port = pin >> 4, i = pin & 15u, sh = 4u * (i & 7u);
-    REG(GPIO_AFR(port, i)) = (REG(GPIO_AFR(port, i)) & ~(0xFu << sh)) | ((uint32_t)af << sh);
-    mode_bits(pin, GPIO_MODE_AF);
-}
-
 void board_init(void)
 {
     clocks_init();
@@ -67,7 +40,7 @@ void board_init(void)
     REG(TIM_CR1) = 1u;
 
     /* USART1 TX on PA9 (AF7), 115200 baud: 100 MHz / 115200 = 868.06 (16x oversampling). */
-    board_pin_af(STM32_PA(9), 7u);
+    stm32_pin_af(STM32_PA(9), 7u);
     REG(USART_BRR) = (STM32_APB2_HZ + 57600u) / 115200u;
     REG(USART_CR1) = USART_CR1_UE | USART_CR1_TE;
 }

@@ -31,9 +31,5 @@ uint64_t board_now_us(void);
 void board_delay_us(uint32_t us);
 /* Blocking text to USART1. */
 void board_puts(const char *s);
-/* A pin as push-pull output (level) or as alternate function af. */
-void board_pin_output(unsigned pin, int level);
-void board_pin_af(unsigned pin, unsigned af);
-void board_pin_set(unsigned pin, int level);
 
 #endif

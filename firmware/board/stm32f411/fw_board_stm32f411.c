@@ -6,14 +6,11 @@
 
 const char fw_board_name[] = "stm32f411";
 
-int fw_board_init(struct hal *h) { return hal_stm32f4_init(h); }
-
-int fw_board_pixels_async(struct hal *h, const uint16_t *px, size_t n, hal_done_fn done, void *arg)
-{
-    return hal_stm32f4_write_pixels_async(h->ctx, px, n, done, arg);
-}
+int fw_board_init(struct hal *h) { return hal_stm32f4_init(h, STM32_APB2_HZ, board_now_us); }
 
 void fw_board_puts(const char *s) { board_puts(s); }
+
+int fw_board_again(void) { return 1; }
 
 unsigned fw_board_cores(void) { return 1u; }
 void fw_board_core1_start(void (*entry)(void)) { (void)entry; }

@@ -60,7 +60,7 @@ const struct core_api *core_api_by_name(const char *numeric);
 
 /* The fixed-point core at NUM_FRAC frac (SCENE_FORMAT_FRAC_MIN .. MAX; NULL
  * otherwise): core_api_fixed12 … core_api_fixed20, core_api_fixed for 16
- * (host_sim/core_fracs.c; link the bundles of mk/core.mk's core_frac_bundles). */
+ * (tools/core_api/core_fracs.c; link the bundles of mk/core.mk's core_frac_bundles). */
 const struct core_api *core_api_fixed_frac(int frac);
 
 #endif

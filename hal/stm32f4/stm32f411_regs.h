@@ -56,6 +56,36 @@
 #define GPIO_MODE_AF    2u
 #define GPIO_SPEED_VHIGH 3u
 
+/* Pins numbered port * 16 + index (PA5 = 5, PB0 = 16). */
+static inline void stm32_pin_mode(unsigned pin, uint32_t mode)
+{
+    unsigned port = pin >> 4, i = pin & 15u;
+    REG(GPIO_OSPEEDR(port)) |= GPIO_SPEED_VHIGH << (2u * i);
+    REG(GPIO_OTYPER(port)) &= ~(1u << i);
+    REG(GPIO_MODER(port)) = (REG(GPIO_MODER(port)) & ~(3u << (2u * i))) | (mode << (2u * i));
+}
+
+static inline void stm32_pin_set(unsigned pin, int level)
+{
+    unsigned i = pin & 15u;
+    REG(GPIO_BSRR(pin >> 4)) = level ? (1u << i) : (1u << (i + 16u));
+}
+
+/* A push-pull output at level (set first: no glitch when the driver turns on). */
+static inline void stm32_pin_output(unsigned pin, int level)
+{
+    stm32_pin_set(pin, level);
+    stm32_pin_mode(pin, GPIO_MODE_OUT);
+}
+
+/* Alternate function af. */
+static inline void stm32_pin_af(unsigned pin, unsigned af)
+{
+    unsigned port = pin >> 4, i = pin & 15u, sh = 4u * (i & 7u);
+    REG(GPIO_AFR(port, i)) = (REG(GPIO_AFR(port, i)) & ~(0xFu << sh)) | ((uint32_t)af << sh);
+    stm32_pin_mode(pin, GPIO_MODE_AF);
+}
+
 /* SPI1 (APB2) */
 #define SPI1_BASE       0x40013000u
 #define SPI_CR1         (SPI1_BASE + 0x00u)

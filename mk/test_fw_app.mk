@@ -1,0 +1,46 @@
+# The firmware application on a host board (tests/fw_app_host.c): main.c,
+# the HAL's DCS layer and panel drivers, hal/sim into the emulated ST7789,
+# the core in fixed point; scenes compiled by tools/scenec for this host (its
+# own work sizes) at the coarsest format among them. ASan+UBSan. (This file
+# is read after mk/core.mk, hal.mk and scene.mk: it uses their variables.)
+FWH         := $(BUILD)/fw_app_host
+FWH_SCENES  ?= book/raytracer-02 book/raster-11
+FWH_STRIP   := 8
+FWH_FLAGS   := -DNUM_MODE=1 -include $(FWH)/scenes/num_frac.h -Ifirmware/app -I$(FWH)/scenes -Itests \
+               -DFW_STRIP_ROWS=$(FWH_STRIP) -DFW_FRAMES_PER_SCENE=2 -DFW_WORK_CORES=1
+FWH_SCENE_C := $(foreach n,$(FWH_SCENES),$(FWH)/scenes/$(call fw_scene_id,$(n)).c)
+FWH_SRCS    := firmware/app/main.c firmware/app/font5x7.c $(HAL_SRCS) $(HAL_SIM_SRCS) $(CORE_SRCS) \
+               tests/fw_app_host.c
+FWH_OBJS    := $(patsubst %.c,$(FWH)/obj/%.o,$(FWH_SRCS)) \
+               $(patsubst $(FWH)/scenes/%.c,$(FWH)/obj/scenes/%.o,$(FWH_SCENE_C) $(FWH)/scenes/fw_scenes_host.c)
+
+define FWH_SCENE
+$(FWH)/scenes/$(call fw_scene_id,$(1)).c: firmware/scenes/$(1).scene $(SCENEC)
+	@mkdir -p $$(@D)
+	$$(Q)$(SCENEC) --size 240x240 --strip-rows $(FWH_STRIP) --id $(call fw_scene_id,$(1)) \
+		-o $$@ $$< >$$(@:.c=.log) || { cat $$(@:.c=.log); exit 2; }
+$(FWH)/scenes/$(call fw_scene_id,$(1)).h: $(FWH)/scenes/$(call fw_scene_id,$(1)).c
+endef
+$(foreach n,$(FWH_SCENES),$(eval $(call FWH_SCENE,$(n))))
+$(FWH)/scenes/fw_scenes_host.c: $(FWH_SCENE_C:.c=.h) firmware/app/scene_table.sh
+	$(Q)firmware/app/scene_table.sh $@ $(foreach n,$(FWH_SCENES),$(n)=$(FWH)/scenes/$(call fw_scene_id,$(n)).h)
+$(FWH)/scenes/num_frac.h: $(FWH_SCENE_C:.c=.h)
+	$(Q)f=$$(sed -n 's/^#define SCENE_[A-Za-z0-9_]*_NUM_FRAC *\([0-9][0-9]*\)$$/\1/p' $^ | sort -n | head -n 1); \
+	[ -n "$$f" ] || { echo "$@: no SCENE_<ID>_NUM_FRAC in $^" >&2; exit 2; }; \
+	printf '#ifndef NUM_FRAC\n#define NUM_FRAC %s\n#endif\n' "$$f" >$@
+
+$(FWH)/obj/firmware/app/main.o: FWH_MAIN := -Dmain=fw_app_main
+$(FWH)/obj/%.o: %.c $(FWH)/scenes/num_frac.h $(FWH_SCENE_C:.c=.h)
+	@mkdir -p $(@D)
+	$(Q)$(CC) $(CSTD) $(WARN) $(ASAN_OPT) $(INCLUDES) $(FWH_FLAGS) $(FWH_MAIN) -MMD -MP -c $< -o $@
+$(FWH)/obj/scenes/%.o: $(FWH)/scenes/%.c $(FWH)/scenes/num_frac.h
+	@mkdir -p $(@D)
+	$(Q)$(CC) $(CSTD) $(WARN) $(ASAN_OPT) $(INCLUDES) $(FWH_FLAGS) -MMD -MP -c $< -o $@
+$(FWH)/fw_app_host: $(FWH_OBJS)
+	$(Q)$(CC) $(LDFLAGS_asan) -o $@ $^ -lm
+
+TEST_DEPS += $(FWH)/fw_app_host
+TESTS     += $(FWH)/fw_app_host
+
+# The include graph follows the layers (the table is in the script).
+TESTS     += tests/test_includes.py

@@ -10,7 +10,12 @@ its inclusive cost (callees included) by following BL/BLX calls and their
 returns on a shadow stack (a recursive function is counted once per
 outermost call).
 
-  profile.py [--target m0plus-qemu|m4f-qemu] [--top N] [--json FILE] IMAGE.elf
+  profile.py [--target m0plus-qemu|m4f-qemu] [--top N] [--json FILE]
+             [--lines N] [--annotate FUNC ...] IMAGE.elf
+
+--lines N lists the N source lines whose instructions ran most (code
+inlined from a header counted at the header's line); --annotate FUNC prints FUNC's disassembly (with source lines) and how many
+times each instruction ran: where inside a function the time goes.
 
 The target is taken from the image's path (build/bench/<target>/...) when
 not given. Tracing slows qemu by about 50x: profile small images (a few
@@ -45,6 +50,7 @@ def profile(elf, target):
            "-d", "in_asm,exec,nochain", "-D", fifo, "-kernel", elf]
     proc = subprocess.Popen(cmd, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
     size = {}                          # block start pc -> instructions
+    insns = {}                         # block start pc -> addresses of its instructions
     calls = {}                         # block start pc -> return address if it ends in BL/BLX
     runs = collections.Counter()       # block start pc -> executions
     name = {}                          # block start pc -> function
@@ -86,8 +92,11 @@ def profile(elf, target):
                         stack.append(pending)
                 elif c == "0":         # 0x0000349a:  3b01  subs ...
                     if block is not None:
+                        a = int(line[:line.find(":")], 16)
                         if count == 0:
-                            block = int(line[:line.find(":")], 16)
+                            block = a
+                            addrs = []
+                        addrs.append(a)
                         count += 1
                         last = line
                 elif c == "I":         # IN: symbol
@@ -95,6 +104,7 @@ def profile(elf, target):
                 elif c == "\n" or c == "-":
                     if block is not None and block >= 0 and count:
                         size[block] = count
+                        insns[block] = addrs
                         f2 = last.split()
                         # 0xADDR: hex [hex] mnemonic ...: BL is 4 bytes, BLX reg 2
                         if len(f2) >= 3:
@@ -113,9 +123,60 @@ def profile(elf, target):
             incl[callee] += total - t0
             active[callee] = 0
     per = collections.Counter()
+    at = collections.Counter()         # instruction address -> executions
     for pc, n in runs.items():
         per[name.get(pc, hex(pc))] += n * size.get(pc, 1)
-    return per, incl, ncalls
+        for a in insns.get(pc, ()):
+            at[a] += n
+    return per, incl, ncalls, at
+
+
+def by_line(elf, at, top):
+    """The top source lines (inlined code under its own line) by executions
+    of their instructions."""
+    addrs = sorted(at)
+    res = subprocess.run(["arm-none-eabi-addr2line", "-e", elf, "-f", "-i", "-a"] +
+                         [hex(a) for a in addrs], capture_output=True, text=True).stdout.splitlines()
+    per = collections.Counter()
+    a = None
+    i = 0
+    while i < len(res):
+        line = res[i]
+        if line.startswith("0x"):
+            a = int(line, 16)
+            i += 1
+            # the innermost location comes first (function name, file:line)
+            if i + 1 < len(res):
+                fn, loc = res[i], res[i + 1].split(" (discriminator")[0]
+                per[f"{os.path.relpath(loc.split(':')[0]) if ':' in loc else loc}:{loc.rsplit(':', 1)[-1]} {fn}"] += at[a]
+            while i < len(res) and not res[i].startswith("0x"):
+                i += 1
+        else:
+            i += 1
+    total = sum(at.values())
+    print(f"{'source line (innermost, function)':60s} {'instructions':>14s} {'share':>7s}")
+    for k, n in per.most_common(top):
+        print(f"{k:60s} {n:14d} {100.0 * n / total:6.2f}%")
+
+
+def annotate(elf, fn, at):
+    """The disassembly of function fn with each instruction's executions."""
+    out = subprocess.run(["arm-none-eabi-objdump", "-d", "-l", "--no-show-raw-insn",
+                          f"--disassemble={fn}", elf], capture_output=True, text=True).stdout
+    total = 0
+    for line in out.splitlines():
+        m = line.split(":", 1)
+        try:
+            a = int(m[0].strip(), 16) if len(m) == 2 and line.startswith(" ") else None
+        except ValueError:
+            a = None
+        if a is None:
+            print(f"{'':>10s}  {line}")
+            continue
+        n = at.get(a, 0)
+        total += n
+        print(f"{n:10d}  {line}")
+    print(f"{total:10d}  instructions executed in {fn}")
 
 
 def main():
@@ -124,13 +185,17 @@ def main():
     ap.add_argument("--target", choices=sorted(MACHINES))
     ap.add_argument("--top", type=int, default=25)
     ap.add_argument("--json")
+    ap.add_argument("--lines", type=int, metavar="N",
+                    help="also list the N most executed source lines (inlined code at its own line)")
+    ap.add_argument("--annotate", metavar="FUNC", action="append", default=[],
+                    help="print FUNC's disassembly with each instruction's executions")
     a = ap.parse_args()
     if not os.path.isfile(a.image):
         sys.exit(f"profile.py: {a.image}: no such image")
     target = a.target or target_of(a.image)
     if target is None:
         sys.exit(f"profile.py: {a.image}: path names no target; give --target")
-    per, incl, ncalls = profile(a.image, target)
+    per, incl, ncalls, at = profile(a.image, target)
     total = sum(per.values())
     if total == 0:
         sys.exit("profile.py: no blocks traced (qemu-system-arm missing or the image did not run)")
@@ -143,6 +208,12 @@ def main():
     for fn, n in incl.most_common(a.top):
         c = ncalls.get(fn, 0)
         print(f"{fn:40s} {n:14d} {100.0 * n / total:6.2f}% {c:10d} {n / c if c else 0:9.0f}")
+    if a.lines:
+        print()
+        by_line(a.image, at, a.lines)
+    for fn in a.annotate:
+        print()
+        annotate(a.image, fn, at)
     if a.json:
         with open(a.json, "w") as f:
             json.dump({"image": a.image, "target": target, "total": total,

@@ -64,3 +64,13 @@ num-report: $(foreach m,$(NUM_TEST_MODES),$(BUILD)/host/test_num_$(m))
 
 # Soft-float check of the cross-compiled fixed-point core (all firmware/core/*.c).
 TESTS += tests/test_softfloat.sh:$(BUILD)
+
+# The ARMv6-M kernels (Thumb-1 assembly, clz table) on the emulated
+# Cortex-M0+ against the compiler's 64-bit arithmetic, at NUM_FRAC 16 (the
+# num_mul_round kernel of its own) and 20; they also print each kernel's
+# instructions per call.
+$(call bench_image,test_num_v6m_q16,m0plus-qemu,fixed,tests/test_num_v6m.c firmware/core/num.c,-Itests -DNUM_FRAC=16)
+$(call bench_image,test_num_v6m_q20,m0plus-qemu,fixed,tests/test_num_v6m.c firmware/core/num.c,-Itests -DNUM_FRAC=20)
+NUM_V6M_IMAGES := $(BUILD)/bench/m0plus-qemu/fixed/test_num_v6m_q16.elf $(BUILD)/bench/m0plus-qemu/fixed/test_num_v6m_q20.elf
+TEST_DEPS += $(NUM_V6M_IMAGES)
+TESTS     += tools/bench/run.py:--smoke:$(subst $(eval) ,:,$(NUM_V6M_IMAGES))

@@ -8,10 +8,53 @@
 
 #include <stdint.h>
 
+/* ARMv6-M (Cortex-M0/M0+) kernels in Thumb-1 assembly: MULS is 32x32->32
+ * only, and the compiler's 64-bit arithmetic spills registers. Each is the
+ * same function as its portable C twin below (tests/test_num_v6m.c checks
+ * them against it on the emulated Cortex-M0+). NUM_PORTABLE_INT selects
+ * the C forms (host tests of the ARMv6-M paths). */
+#if defined(__ARM_ARCH_6M__) && !defined(NUM_PORTABLE_INT) && (defined(__GNUC__) || defined(__clang__))
+#define NUM_V6M_ASM 1
+#else
+#define NUM_V6M_ASM 0
+#endif
+/* The kernels are written in unified syntax; GCC's Thumb-1 inline assembly
+ * is divided by default (clang's is unified). */
+#if NUM_V6M_ASM && !defined(__clang__)
+#define NUM_ASM_UNIFIED(text) ".syntax unified\n\t" text "\n\t.syntax divided"
+#else
+#define NUM_ASM_UNIFIED(text) text
+#endif
+
 /* 32x32 -> 64 unsigned product. */
 static inline uint64_t num_umul32(uint32_t a, uint32_t b)
 {
-#if defined(__ARM_ARCH_6M__) || defined(NUM_PORTABLE_INT)
+#if NUM_V6M_ASM
+    /* four 16x16 partial products; the two middle ones added with carry:
+     * 17 instructions */
+    uint32_t lo, t0, t1, t2;
+    __asm__(NUM_ASM_UNIFIED("uxth  %[t0], %[a]\n\t"
+            "lsrs  %[a], %[a], #16\n\t"
+            "uxth  %[t1], %[b]\n\t"
+            "lsrs  %[b], %[b], #16\n\t"
+            "movs  %[lo], %[t0]\n\t"
+            "muls  %[lo], %[t1]\n\t"
+            "muls  %[t0], %[b]\n\t"
+            "muls  %[t1], %[a]\n\t"
+            "muls  %[a], %[b]\n\t"
+            "lsls  %[t2], %[t0], #16\n\t"
+            "lsrs  %[t0], %[t0], #16\n\t"
+            "adds  %[lo], %[lo], %[t2]\n\t"
+            "adcs  %[a], %[t0]\n\t"
+            "lsls  %[t2], %[t1], #16\n\t"
+            "lsrs  %[t1], %[t1], #16\n\t"
+            "adds  %[lo], %[lo], %[t2]\n\t"
+            "adcs  %[a], %[t1]")
+            : [lo] "=&l"(lo), [t0] "=&l"(t0), [t1] "=&l"(t1), [t2] "=&l"(t2), [a] "+l"(a), [b] "+l"(b)
+            :
+            : "cc");
+    return (uint64_t)a << 32 | lo;
+#elif defined(__ARM_ARCH_6M__) || defined(NUM_PORTABLE_INT)
     /* MULS is 32x32->32 only: four 16x16 partial products, no __aeabi_lmul. */
     uint32_t al = a & 0xFFFFu, ah = a >> 16, bl = b & 0xFFFFu, bh = b >> 16;
     uint32_t ll = al * bl, lh = al * bh, hl = ah * bl, hh = ah * bh;
@@ -33,7 +76,34 @@ static inline uint32_t num_mulhi32(uint32_t a, uint32_t b)
 /* 32x32 -> 64 signed product (two's complement correction of the unsigned one). */
 static inline int64_t num_smul32(int32_t a, int32_t b)
 {
-#if defined(__ARM_ARCH_6M__) || defined(NUM_PORTABLE_INT)
+#if NUM_V6M_ASM
+    /* a = ah 2^16 + al with ah = a >> 16 (signed) and al unsigned: the
+     * products al bl (unsigned), al bh, ah bl (|.| < 2^31) and ah bh
+     * (|.| <= 2^30) each fit a MULS; the middle two are added at 2^16
+     * sign-extended: 17 instructions */
+    uint32_t lo, t0, t1, t2;
+    __asm__(NUM_ASM_UNIFIED("uxth  %[t0], %[a]\n\t"
+            "asrs  %[a], %[a], #16\n\t"
+            "uxth  %[t1], %[b]\n\t"
+            "asrs  %[b], %[b], #16\n\t"
+            "movs  %[lo], %[t0]\n\t"
+            "muls  %[lo], %[t1]\n\t"
+            "muls  %[t0], %[b]\n\t"
+            "muls  %[t1], %[a]\n\t"
+            "muls  %[a], %[b]\n\t"
+            "lsls  %[t2], %[t0], #16\n\t"
+            "asrs  %[t0], %[t0], #16\n\t"
+            "adds  %[lo], %[lo], %[t2]\n\t"
+            "adcs  %[a], %[t0]\n\t"
+            "lsls  %[t2], %[t1], #16\n\t"
+            "asrs  %[t1], %[t1], #16\n\t"
+            "adds  %[lo], %[lo], %[t2]\n\t"
+            "adcs  %[a], %[t1]")
+            : [lo] "=&l"(lo), [t0] "=&l"(t0), [t1] "=&l"(t1), [t2] "=&l"(t2), [a] "+l"(a), [b] "+l"(b)
+            :
+            : "cc");
+    return (int64_t)((uint64_t)(uint32_t)a << 32 | lo);
+#elif defined(__ARM_ARCH_6M__) || defined(NUM_PORTABLE_INT)
     uint64_t p = num_umul32((uint32_t)a, (uint32_t)b);
     if (a < 0) p -= (uint64_t)(uint32_t)b << 32;
     if (b < 0) p -= (uint64_t)(uint32_t)a << 32;
@@ -43,19 +113,21 @@ static inline int64_t num_smul32(int32_t a, int32_t b)
 #endif
 }
 
+/* Leading zeros of a byte (8 for 0), for num_clz32 without CLZ. */
+extern const uint8_t num_clz8_tab[256];
+
 /* Leading zeros of x != 0. */
 static inline int num_clz32(uint32_t x)
 {
 #if (defined(__GNUC__) || defined(__clang__)) && !defined(__ARM_ARCH_6M__) && !defined(NUM_PORTABLE_INT)
     return __builtin_clz(x);
 #else
+    /* two halving steps, then the top byte's leading zeros from a table
+     * (ARMv6-M has no CLZ): 12 instructions instead of 28 */
     int n = 0;
-    if (!(x & 0xFFFF0000u)) { n += 16; x <<= 16; }
-    if (!(x & 0xFF000000u)) { n += 8; x <<= 8; }
-    if (!(x & 0xF0000000u)) { n += 4; x <<= 4; }
-    if (!(x & 0xC0000000u)) { n += 2; x <<= 2; }
-    if (!(x & 0x80000000u)) n += 1;
-    return n;
+    if (!(x >> 16)) { n = 16; x <<= 16; }
+    if (!(x >> 24)) { n += 8; x <<= 8; }
+    return n + num_clz8_tab[x >> 24];
 #endif
 }
 
@@ -120,7 +192,38 @@ uint32_t num_sqrt_est32(uint32_t xh);
  * 2^30, |ah bl|, |al bh| < 2^31. Four MULS, no 64-bit shift. */
 static inline int64_t num_mul_round(int32_t a, int32_t b)
 {
-#if (defined(__ARM_ARCH_6M__) || defined(NUM_PORTABLE_INT)) && NUM_FRAC <= 16
+#if NUM_V6M_ASM && NUM_FRAC == 16
+    /* the same pieces in Thumb-1: hh 2^16 | round(al bl / 2^16) (the low
+     * half of hh 2^16 is zero, so an OR adds them), then the middle
+     * products sign-extended: 22 instructions */
+    uint32_t lo, t0, t1, t2;
+    __asm__(NUM_ASM_UNIFIED("uxth  %[t0], %[a]\n\t"
+            "asrs  %[a], %[a], #16\n\t"
+            "uxth  %[t1], %[b]\n\t"
+            "asrs  %[b], %[b], #16\n\t"
+            "movs  %[lo], %[t0]\n\t"
+            "muls  %[lo], %[t1]\n\t"
+            "muls  %[t0], %[b]\n\t"
+            "muls  %[t1], %[a]\n\t"
+            "muls  %[a], %[b]\n\t"
+            "movs  %[t2], #1\n\t"
+            "lsls  %[t2], %[t2], #15\n\t"
+            "adds  %[lo], %[lo], %[t2]\n\t"
+            "lsrs  %[lo], %[lo], #16\n\t"
+            "lsls  %[t2], %[a], #16\n\t"
+            "asrs  %[a], %[a], #16\n\t"
+            "orrs  %[lo], %[t2]\n\t"
+            "asrs  %[t2], %[t0], #31\n\t"
+            "adds  %[lo], %[lo], %[t0]\n\t"
+            "adcs  %[a], %[t2]\n\t"
+            "asrs  %[t2], %[t1], #31\n\t"
+            "adds  %[lo], %[lo], %[t1]\n\t"
+            "adcs  %[a], %[t2]")
+            : [lo] "=&l"(lo), [t0] "=&l"(t0), [t1] "=&l"(t1), [t2] "=&l"(t2), [a] "+l"(a), [b] "+l"(b)
+            :
+            : "cc");
+    return (int64_t)((uint64_t)(uint32_t)a << 32 | lo);
+#elif !NUM_V6M_ASM && (defined(__ARM_ARCH_6M__) || defined(NUM_PORTABLE_INT)) && NUM_FRAC <= 16
     int32_t ah = a >> 16, bh = b >> 16;
     uint32_t al = (uint32_t)a & 0xFFFFu, bl = (uint32_t)b & 0xFFFFu;
     int64_t hi = (int64_t)(ah * bh) * ((int64_t)1 << (32 - NUM_FRAC));

@@ -310,16 +310,15 @@ static int core_open(struct core *c, const struct core_api *api, const char *pat
 /* The core of mode `numeric` for the scene at w x h. For fixed point: the
  * format of --num-frac, or the one the scene's ranges call for, analysed on
  * the scene as the double core parsed it (tools/scene/scene_format.c); a
- * scene that fits no format is an input error (exit 2, the analysis's line). */
+ * scene that fits no format is an input error (exit 2, the analysis's line)
+ * unless --num-frac forces one. *fits gets the products the analysis proved
+ * in range at that format (struct scene.fits; 0 when it refused the scene). */
 static int core_pick(const struct opts *o, const char *numeric, unsigned w, unsigned h,
-                     const struct core_api **api)
+                     const struct core_api **api, unsigned *fits)
 {
+    *fits = 0;
     if (strcmp(numeric, "fixed")) {
         *api = core_api_by_name(numeric);
-        return EXIT_OK;
-    }
-    if (o->num_frac) {
-        *api = core_api_fixed_frac(o->num_frac);
         return EXIT_OK;
     }
     struct core d = { 0 };
@@ -329,11 +328,17 @@ static int core_pick(const struct opts *o, const char *numeric, unsigned w, unsi
     char msg[768];
     rc = d.api->format(d.scene, o->scene, (uint16_t)w, (uint16_t)h, &f, msg, sizeof msg);
     d.api->scene_free(d.scene);
+    if (o->num_frac) {
+        *api = core_api_fixed_frac(o->num_frac);
+        if (!rc) *fits = scene_format_fits(&f, o->num_frac);
+        return EXIT_OK;
+    }
     if (rc) {
         fprintf(stderr, "%s\n", msg);
         return EXIT_USAGE;
     }
     *api = core_api_fixed_frac(f.num_frac);
+    *fits = scene_format_fits(&f, f.num_frac);
     return *api ? EXIT_OK : fail(EXIT_INTERNAL, "no fixed-point core at NUM_FRAC %d", f.num_frac);
 }
 
@@ -604,10 +609,12 @@ static int run(const struct opts *o, struct core *c, struct core *ref, struct pa
     if (rows > h) rows = h;
     if (!strcmp(numeric, "fixed")) {
         const struct core_api *api;
-        if ((rc = core_pick(o, numeric, w, h, &api))) return rc;
+        unsigned fits;
+        if ((rc = core_pick(o, numeric, w, h, &api, &fits))) return rc;
         core_close(c);
         memset(c, 0, sizeof *c);
         if ((rc = core_open(c, api, o->scene))) return rc;
+        c->api->set_fits(c->scene, fits);
     }
 
     struct panel_out_opts po = { .panel = panel, .backend = backend, .fault = o->fault,
@@ -750,8 +757,10 @@ static int run(const struct opts *o, struct core *c, struct core *ref, struct pa
     struct compare_result cmp = { 0 };
     if (o->compare) {
         const struct core_api *rapi;
-        if ((rc = core_pick(o, o->compare, w, h, &rapi))) return rc;
+        unsigned rfits;
+        if ((rc = core_pick(o, o->compare, w, h, &rapi, &rfits))) return rc;
         if ((rc = core_open(ref, rapi, o->scene))) return rc;
+        ref->api->set_fits(ref->scene, rfits);
         ref->api->exact_methods(ref->scene);   /* every method is measured against the exact one */
         if ((rc = core_init(ref, w, h, rows))) return rc;
         b->ref_fb = malloc(npx * sizeof *b->ref_fb);

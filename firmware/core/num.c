@@ -361,6 +361,8 @@ num num_mul(num a, num b)
 }
 
 num num_mul_int(num a, int32_t k) { return sat64(num_smul32(a, k)); }
+num (num_mul_fit)(num a, num b) { return num_mul_round32(a, b); }
+num (num_add_fit)(num a, num b) { return (num)((uint32_t)a + (uint32_t)b); }
 
 num num_mul_int_mod(num a, int32_t k, num m)
 {
@@ -826,6 +828,8 @@ num num_neg(num a) { return -a; }
 num num_abs(num a) { return F(fabs)(a); }
 num num_mul(num a, num b) { return a * b; }
 num num_mul_int(num a, int32_t k) { return a * (num)k; }
+num num_mul_fit(num a, num b) { return a * b; }
+num num_add_fit(num a, num b) { return a + b; }
 num num_mul_int_mod(num a, int32_t k, num m)
 {
     if (m <= 0) return 0;

@@ -234,4 +234,39 @@ static inline int64_t num_mul_round(int32_t a, int32_t b)
 #endif
 }
 
+/* num_mul_round(a, b) for a product whose result is known to lie in
+ * (-2^31, 2^31): the same value in 32-bit arithmetic (the pieces summed
+ * modulo 2^32 are exact when the sum fits). Only for products the scene's
+ * format analysis proved in range (num_mul_fit). */
+static inline int32_t num_mul_round32(int32_t a, int32_t b)
+{
+#if NUM_V6M_ASM && NUM_FRAC == 16
+    /* hh 2^16 + al bh + ah bl + round(al bl / 2^16), mod 2^32: 17 instructions */
+    uint32_t lo, t0, t1, t2;
+    __asm__(NUM_ASM_UNIFIED("uxth  %[t0], %[a]\n\t"
+            "asrs  %[a], %[a], #16\n\t"
+            "uxth  %[t1], %[b]\n\t"
+            "asrs  %[b], %[b], #16\n\t"
+            "movs  %[lo], %[t0]\n\t"
+            "muls  %[lo], %[t1]\n\t"
+            "muls  %[t0], %[b]\n\t"
+            "muls  %[t1], %[a]\n\t"
+            "muls  %[a], %[b]\n\t"
+            "movs  %[t2], #1\n\t"
+            "lsls  %[t2], %[t2], #15\n\t"
+            "adds  %[lo], %[lo], %[t2]\n\t"
+            "lsrs  %[lo], %[lo], #16\n\t"
+            "lsls  %[a], %[a], #16\n\t"
+            "adds  %[lo], %[lo], %[a]\n\t"
+            "adds  %[lo], %[lo], %[t0]\n\t"
+            "adds  %[lo], %[lo], %[t1]")
+            : [lo] "=&l"(lo), [t0] "=&l"(t0), [t1] "=&l"(t1), [t2] "=&l"(t2), [a] "+l"(a), [b] "+l"(b)
+            :
+            : "cc");
+    return (int32_t)lo;
+#else
+    return (int32_t)(uint32_t)(uint64_t)num_mul_round(a, b);
+#endif
+}
+
 #endif

@@ -205,7 +205,8 @@ static int16_t item_material_object(const struct rt_state *rt, int16_t item)
 /* ReflectRay: R = N*(2*(V.N)) - V. */
 static vec3 reflect_ray(vec3 v, vec3 n)
 {
-    return v3_sub(v3_scale(n, num_mul(NUM_C(2.0), v3_dot(v, n))), v);
+    num d = v3_dot(v, n);
+    return v3_sub(v3_scale(n, num_add(d, d)), v);     /* 2 (V.N) as a sum: the same bits */
 }
 
 int rt_refract(vec3 d, vec3 n, num ior, vec3 *out)
@@ -226,6 +227,20 @@ int rt_refract(vec3 d, vec3 n, num ior, vec3 *out)
     return 1;
 }
 
+/* Colour x weight and colour + colour, in 32-bit arithmetic when the
+ * scene's format analysis proved colour intermediates in range
+ * (SCENE_FITS_COLOUR: same bits, no saturation checks). */
+static rgb colour_scale(const struct scene *s, rgb c, num k)
+{
+    if (s->fits & SCENE_FITS_COLOUR) return rgb_make(num_mul_fit(c.r, k), num_mul_fit(c.g, k), num_mul_fit(c.b, k));
+    return rgb_scale(c, k);
+}
+static rgb colour_add(const struct scene *s, rgb a, rgb b)
+{
+    if (s->fits & SCENE_FITS_COLOUR) return rgb_make(num_add_fit(a.r, b.r), num_add_fit(a.g, b.g), num_add_fit(a.b, b.b));
+    return rgb_add(a, b);
+}
+
 /* TraceRay: colour seen along the ray with t in (t_min, t_max); `depth`
  * more reflection/refraction bounces allowed (bounded recursion). */
 static rgb trace_ray(struct rt_state *rt, struct rt_ray *ray, num t_min, num t_max, int depth,
@@ -241,7 +256,11 @@ static rgb trace_ray(struct rt_state *rt, struct rt_ray *ray, num t_min, num t_m
     if (prim) prim->item = hit.item;
     int16_t mo = item_material_object(rt, hit.item);
     const struct rt_material *m = &s->objects[mo].mat;
-    vec3 p = v3_add(ray->o, v3_scale(ray->d, hit.t));
+    /* P = O + D t; D t in 32-bit arithmetic when every hit is proven to lie
+     * on a bounded object (SCENE_FITS_HIT) */
+    vec3 p = s->fits & SCENE_FITS_HIT
+                 ? v3_add(ray->o, v3(num_mul_fit(ray->d.x, hit.t), num_mul_fit(ray->d.y, hit.t), num_mul_fit(ray->d.z, hit.t)))
+                 : v3_add(ray->o, v3_scale(ray->d, hit.t));
     vec3 n = rt_hit_normal(rt, &hit, p);
     vec3 v = v3_neg(ray->d);
     rgb local;
@@ -250,7 +269,7 @@ static rgb trace_ray(struct rt_state *rt, struct rt_ray *ray, num t_min, num t_m
     } else {
         num i = compute_lighting(rt, p, n, v, m->specular, rt->oc[mo].spec_zero, hit.surf,
                                  prim ? &prim->shadow : NULL);
-        local = rgb_scale(m->color, i);
+        local = colour_scale(s, m->color, i);
     }
     num r = m->reflective;
     num tr = m->transparency;
@@ -261,7 +280,7 @@ static rgb trace_ray(struct rt_state *rt, struct rt_ray *ray, num t_min, num t_m
         struct rt_ray rr;
         rt_ray_init(&rr, p, reflect_ray(v, n), hit.surf, 0);
         rgb reflected = trace_ray(rt, &rr, s->rt.epsilon, NUM_MAX, depth - 1, NULL);
-        out = rgb_add(rgb_scale(local, num_sub(NUM_ONE, r)), rgb_scale(reflected, r));
+        out = colour_add(s, colour_scale(s, local, num_sub(NUM_ONE, r)), colour_scale(s, reflected, r));
     }
     if (tr > 0) {
         /* Transparency: what the refracted ray sees, by Snell's law; on total
@@ -272,7 +291,7 @@ static rgb trace_ray(struct rt_state *rt, struct rt_ray *ray, num t_min, num t_m
         struct rt_ray tr_ray;
         rt_ray_init(&tr_ray, p, dir, hit.surf, 0);
         rgb seen = trace_ray(rt, &tr_ray, s->rt.epsilon, NUM_MAX, depth - 1, NULL);
-        out = rgb_add(rgb_scale(out, num_sub(NUM_ONE, tr)), rgb_scale(seen, tr));
+        out = colour_add(s, colour_scale(s, out, num_sub(NUM_ONE, tr)), colour_scale(s, seen, tr));
     }
     return out;
 }

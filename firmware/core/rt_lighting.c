@@ -91,7 +91,7 @@ num compute_lighting(struct rt_state *rt, vec3 p, vec3 n, vec3 v, num s, num s_z
         }
         /* The demos run this step even when n.l <= 0; only shadows stop it. */
         if (o->specular && s >= 0) {
-            vec3 r = v3_sub(v3_scale(n, num_mul(NUM_C(2.0), n_dot_l)), l);
+            vec3 r = v3_sub(v3_scale(n, num_add(n_dot_l, n_dot_l)), l);   /* 2 N.L: a sum, the same bits */
             num r_dot_v = v3_dot(r, v);
             if (r_dot_v > 0) {
                 /* cos <= s_zero: pow(cos, s) is exactly 0, and so is the term */

@@ -212,9 +212,21 @@ struct ras_options {
 
 /* ---- the scene ------------------------------------------------------- */
 
+/* Products the scene's format analysis (tools/scene/scene_format.c) proved
+ * to stay inside num's range at the scene's NUM_FRAC (and every coarser
+ * one): the core computes them in 32-bit arithmetic without saturation
+ * checks (num_mul_fit, num_add_fit: the same bits as num_mul and num_add
+ * wherever the result is in range). struct scene.fits; 0 when the scene was
+ * not analysed. */
+#define SCENE_FITS_COLOUR 1u      /* ray tracer: colour x intensity, reflection and transparency
+                                     weights, their sums (colour intermediates) */
+#define SCENE_FITS_HIT    2u      /* ray tracer: D t of a hit point (no planes in the scene: every
+                                     hit lies on a bounded object) */
+
 struct scene {
     const char *name;
     uint8_t kind;                 /* enum scene_kind */
+    uint8_t fits;                 /* SCENE_FITS_* proved for this scene */
     uint16_t canvas_w, canvas_h;  /* the scene's own canvas (book: 600 x 600) */
     num viewport_w, viewport_h, projection_d;
     rgb background;               /* colour of pixels nothing covers */

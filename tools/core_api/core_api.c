@@ -81,7 +81,13 @@ static void exact_methods(void *scene)
     s->rt.subsample = 1;
 }
 
+static void set_fits(void *scene, unsigned fits)
+{
+    struct scene *s = scene;
+    s->fits = (uint8_t)fits;
+}
+
 const struct core_api API = {
     NUM_NAME, load, parse_text, read_text, free_scene, info, work_size, init, render_begin_frame, render_strip,
-    &num_saturations, API_FRAC, format, exact_methods, render_set_pass,
+    &num_saturations, API_FRAC, format, exact_methods, render_set_pass, set_fits,
 };

@@ -51,6 +51,10 @@ struct core_api {
     void (*exact_methods)(void *scene);
     /* render_set_pass (render.h): progressive display */
     int (*set_pass)(struct render_ctx *ctx, uint8_t pass);
+    /* Sets struct scene.fits (SCENE_FITS_*, from scene_format_fits for this
+     * core's NUM_FRAC) on a loaded scene: the products the analysis proved
+     * in range, which the core then takes in 32-bit arithmetic. */
+    void (*set_fits)(void *scene, unsigned fits);
 };
 
 extern const struct core_api core_api_fixed, core_api_float, core_api_double;

@@ -7,6 +7,9 @@
 #include <string.h>
 #include "scene.h"
 
+_Static_assert(SCENE_FORMAT_FITS_COLOUR == SCENE_FITS_COLOUR && SCENE_FORMAT_FITS_HIT == SCENE_FITS_HIT,
+               "struct scene.fits bits");
+
 /* Records v in r if it is the largest magnitude so far, with what it is. */
 static void note(struct scene_format_range *r, double v, const char *fmt, ...)
 {
@@ -391,6 +394,9 @@ int scene_format_choose(const struct scene *s, int width, int height, const int 
             return 2;
         }
     }
+    f->raytrace = s->kind == SCENE_RAYTRACE;
+    for (int i = 0; i < s->nobjects; i++)
+        if (s->objects[i].shape == RT_PLANE) f->planes = 1;
     if (f->num_frac >= 0) return 0;
     if (!allow_wide) return 2;
     f->num_frac = f->coarsest;

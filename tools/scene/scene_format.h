@@ -17,8 +17,14 @@
 #ifndef SCENE_FORMAT_H
 #define SCENE_FORMAT_H
 
+#include <math.h>
 #include <stddef.h>
 #include <stdio.h>
+
+/* struct scene.fits's bits (scene.h's SCENE_FITS_*; repeated here for host
+ * programs without a numeric mode, checked equal in scene_format.c). */
+#define SCENE_FORMAT_FITS_COLOUR 1u
+#define SCENE_FORMAT_FITS_HIT    2u
 
 /* The formats the renderers are checked at (tests/test_scene_fracs.c). */
 #define SCENE_FORMAT_FRAC_MIN 12
@@ -56,6 +62,8 @@ struct scene_format {
     int num_frac;              /* the chosen NUM_FRAC; -1 when nothing fits (refused) */
     int coarsest;              /* the smallest candidate NUM_FRAC */
     int wide;                  /* nothing fits, allow_wide: num_frac = coarsest, wide paths assumed */
+    int raytrace;              /* a ray-traced scene */
+    int planes;                /* ray tracer: the scene has plane objects (unbounded hits) */
 };
 
 struct scene;
@@ -67,6 +75,21 @@ struct scene;
  * scene_format_refusal). */
 int scene_format_choose(const struct scene *s, int width, int height, const int *fracs, int nfracs,
                         int allow_wide, struct scene_format *f);
+
+/* The products the core may take in 32-bit arithmetic at NUM_FRAC frac
+ * (struct scene.fits, SCENE_FITS_*; ray-traced scenes): every quantity of the analysis, twice
+ * over, inside 2^(31 - frac), i.e. frac no finer than the format chosen; 0
+ * for a refused or wide scene. Colour intermediates are bounded by
+ * 255 x 2 x the lights' total intensity (the colour range); a hit point D t
+ * by the distance between two points of the scene (the position range),
+ * which needs every object bounded (no planes). Inline: host programs read
+ * it without a numeric mode (tools/core_api). */
+static inline unsigned scene_format_fits(const struct scene_format *f, int frac)
+{
+    if (!f->raytrace || f->num_frac < 0 || f->wide || frac > f->num_frac || !(f->need < ldexp(1.0, 31 - frac)))
+        return 0;
+    return SCENE_FORMAT_FITS_COLOUR | (f->planes ? 0u : SCENE_FORMAT_FITS_HIT);
+}
 
 /* The ranges found, one per line ("  ranges: ..."), as scenec prints them. */
 void scene_format_print_ranges(FILE *out, const struct scene_format *f);

@@ -1,11 +1,12 @@
 # Rasterizer (firmware/core/raster*.c, num_ras.c): tests and docs in docs/rasterizer.md.
 #
 # Test programs link the core sources of one numeric mode directly, plus
-# tests/raster_scenes.c (the book's raster demos as C data). The cross-mode
-# accuracy test links three per-mode bundles (core + scenes + a small API),
-# each keeping only its raster_api_<mode> symbol, like mk/core.mk does.
+# the scene parser: they load the book's scene files (tests/scene_files.h).
+# The cross-mode accuracy test links three per-mode bundles (core + parser
+# + a small API), each keeping only its raster_api_<mode> symbol, like
+# mk/core.mk does.
 
-RASTER_TEST_SRCS := tests/raster_scenes.c
+RASTER_TEST_SRCS := tools/scene/scene_parse.c
 
 define RASTER_PROG
 $(BUILD)/$(1)/tests/$(2)_$(3): $(call obj,$(1),$(3),tests/$(2).c $(RASTER_TEST_SRCS) $(CORE_SRCS))

@@ -1,12 +1,13 @@
 # Ray tracer (part I of the book): its tests and measurements.
 # See docs/raytracer.md. The renderer itself is part of CORE_SRCS (mk/core.mk).
 
-RT_TEST_HELPERS := tests/rt_book_scenes.c
+# The tests load the repository's scene files through the parser
+# (tests/scene_files.h); the reference digests are tests/data/book_digests.txt.
 
 # test_raytracer_<mode>: one program per numeric mode (the core's symbols
 # clash between modes), in both variants.
 define RT_TEST_PROG
-$(BUILD)/$(1)/test_raytracer_$(2): $(call obj,$(1),$(2),tests/test_raytracer.c $(RT_TEST_HELPERS) $(CORE_SRCS) $(SCENE_SRCS))
+$(BUILD)/$(1)/test_raytracer_$(2): $(call obj,$(1),$(2),tests/test_raytracer.c $(CORE_SRCS) $(SCENE_SRCS))
 	@mkdir -p $$(@D)
 	$(Q)$$(CC) $(LDFLAGS_$(1)) -o $$@ $$^ -lm
 endef
@@ -25,11 +26,11 @@ test-raytracer: $(RT_TEST_BINS) $(BUILD)/host/test_raytracer_accuracy
 	    %test_raytracer_double %test_raytracer_accuracy,$(TESTS))
 
 # Accuracy test: fixed and float against double in one program. Each mode's
-# core + test scenes become one object exporting only rtacc_<mode>.
+# core + scene parser become one object exporting only rtacc_<mode>.
 $(foreach v,$(VARIANTS),$(foreach m,$(NUM_MODES),$(eval \
     $(call obj,$(v),$(m),tests/rt_acc_api.c): EXTRA_CFLAGS += -DRTACC_NAME=rtacc_$(m))))
 define RT_ACC_BUNDLE
-$(BUILD)/$(1)/rtacc_$(2).o: $(call obj,$(1),$(2),tests/rt_acc_api.c $(RT_TEST_HELPERS) $(CORE_SRCS))
+$(BUILD)/$(1)/rtacc_$(2).o: $(call obj,$(1),$(2),tests/rt_acc_api.c $(CORE_SRCS) $(SCENE_SRCS))
 	@mkdir -p $$(@D)
 	$(Q)ld -r -o $$@.tmp $$^
 	$(Q)objcopy --keep-global-symbol=rtacc_$(2) $$@.tmp $$@
@@ -50,17 +51,26 @@ TESTS += $(BUILD)/host/test_raytracer_accuracy
 TESTS += tests/test_rt_realtime.sh:$(BUILD)/host_sim
 
 # `make bench`: raytracer-05 at 240x240 on the emulated Cortex-M0+ and M4F,
-# fixed and float, plus each chapter-5 option (tools/bench/bench_raytracer.c).
-BENCH_RT_SRCS := tools/bench/bench_raytracer.c $(RT_TEST_HELPERS) $(CORE_SRCS)
+# fixed and float, plus each chapter-5 option (tools/bench/bench_raytracer.c;
+# scenes as C data from scenec).
+BENCH_RT_SCENES := $(BUILD)/scenes/book/raytracer-05.c $(BUILD)/scenes/book/raytracer-02.c \
+                   $(BUILD)/scenes/bench/grid64.c
+BENCH_RT_SRCS := tools/bench/bench_raytracer.c $(BENCH_RT_SCENES) $(CORE_SRCS)
+# bench_rt_image(NAME,TARGET,MODE,FLAGS)
+define BENCH_RT_IMAGE
+$$(call bench_image,$(1),$(2),$(3),$(BENCH_RT_SRCS),-I$(BUILD)/scenes $(4))
+$(BUILD)/bench/$(2)/$(3)/$(1).objs/tools/bench/bench_raytracer.o: $(BENCH_RT_SCENES)
+endef
+bench_rt_image = $(eval $(call BENCH_RT_IMAGE,$(1),$(2),$(3),$(4)))
 $(foreach t,$(BENCH_TARGETS),$(foreach m,fixed float,\
-  $(call bench_image,raytracer,$(t),$(m),$(BENCH_RT_SRCS),-Itests)\
+  $(call bench_rt_image,raytracer,$(t),$(m))\
   $(eval BENCH_IMAGES += $(BUILD)/bench/$(t)/$(m)/raytracer.elf)))
 
 # `make profile-raytracer`: instructions per function of raytracer-05
 # (fixed, M0+, 60x60, one frame) from a qemu block trace (tools/bench/profile.py);
 # `make profile-raytracer-adaptive`: the same at 120x120 with adaptive_subsample = 4.
-$(call bench_image,raytracer-prof,m0plus-qemu,fixed,$(BENCH_RT_SRCS),-Itests -DBENCH_RT_QUICK -DBENCH_RT_SIZE=60)
-$(call bench_image,raytracer-prof-adaptive,m0plus-qemu,fixed,$(BENCH_RT_SRCS),-Itests -DBENCH_RT_QUICK -DBENCH_RT_SIZE=120 -DBENCH_RT_ADAPT=4)
+$(call bench_rt_image,raytracer-prof,m0plus-qemu,fixed,-DBENCH_RT_QUICK -DBENCH_RT_SIZE=60)
+$(call bench_rt_image,raytracer-prof-adaptive,m0plus-qemu,fixed,-DBENCH_RT_QUICK -DBENCH_RT_SIZE=120 -DBENCH_RT_ADAPT=4)
 .PHONY: profile-raytracer profile-raytracer-adaptive
 profile-raytracer: $(BUILD)/bench/m0plus-qemu/fixed/raytracer-prof.elf
 	$(Q)$(PYTHON) tools/bench/profile.py --top 30 $<

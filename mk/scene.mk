@@ -1,7 +1,7 @@
 # Scene files: the parser's tests (per numeric mode), its fuzz target, and
 # the scene compiler (tools/scenec).
 
-SCENE_PARSER_SRCS := tools/scene/scene_parse.c firmware/core/num.c firmware/core/vec.c
+SCENE_PARSER_SRCS := tools/scene/scene_parse.c firmware/core/num.c firmware/core/vec.c firmware/core/mipmap.c
 
 # test_scene_<mode>: the parser built alone in each numeric mode.
 define SCENE_TEST

@@ -1,13 +1,13 @@
-/* raster_api.c — one numeric mode's rasterizer and test scenes behind a
+/* raster_api.c — one numeric mode's rasterizer and scene parser behind a
  * table, so test_raster_modes can compare the three builds in one program
  * (compiled once per NUM_MODE, bundled by mk/raster.mk). */
 #include "raster_api.h"
 #include "raster_harness.h"
-#include "raster_scenes.h"
+#include "scene_files.h"
 
 static int render(const char *name, int book_exact, int w, int h, int rows, struct frame *f)
 {
-    struct scene *s = ras_test_scene(name);
+    struct scene *s = book_scene(name);
     if (!s) return -1;
     if (!book_exact) {
         s->ras.book_exact = 0;
@@ -20,7 +20,7 @@ static uint8_t probe_rgb[600 * 600 * 3];
 
 static int render_texel_probe(const char *name, int book_exact, int w, int h, struct frame *f)
 {
-    struct scene *s = ras_test_scene(name);
+    struct scene *s = book_scene(name);
     if (!s || !s->ntextures) return -1;
     struct ras_texture *t = (struct ras_texture *)&s->textures[0];
     for (int y = 0; y < t->h; y++)
@@ -42,7 +42,7 @@ static int render_texel_probe(const char *name, int book_exact, int w, int h, st
 
 static int render_texel_probe_trilinear(const char *name, int w, int h, struct frame *f)
 {
-    struct scene *s = ras_test_scene(name);
+    struct scene *s = book_scene(name);
     if (!s || !s->ntextures) return -1;
     struct ras_texture *t = (struct ras_texture *)&s->textures[0];
     t->w = t->h = 256;

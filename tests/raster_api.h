@@ -5,7 +5,7 @@
 struct frame;
 struct raster_api {
     const char *numeric;
-    /* Renders test scene `name` (raster_scenes.h); book_exact 0 switches it
+    /* Renders book scene `name` (firmware/scenes/book); book_exact 0 switches it
      * to the default path (clipping by splitting). 0 on success. */
     int (*render)(const char *name, int book_exact, int w, int h, int rows, struct frame *f);
     /* The same with the scene's texture replaced by a coordinate texture

@@ -1,12 +1,14 @@
 /* rt_acc_api.c — one mode's entry in the accuracy test (compiled per mode). */
 #include "rt_acc_api.h"
-#include "rt_book_scenes.h"
 #include "rt_render.h"
+#include "scene_files.h"
 
 static int render_book(int n, int w, int h, int formulation, uint8_t *rgb888, uint8_t *probe)
 {
-    struct scene *s = rt_book_scene(n);
-    if (!s) return -1;
+    if (n < 1 || n > 9) return -1;
+    char name[32];
+    snprintf(name, sizeof name, "raytracer-0%d", n);
+    struct scene *s = book_scene(name);
     s->rt.formulation = (uint8_t)formulation;
     return rt_render(s, w, h, 16, rgb888, probe, NULL);
 }

@@ -1,5 +1,5 @@
 /* rt_acc_api.h — the ray tracer of each numeric mode side by side in one
- * program (the accuracy test). Each mode's core and test scenes are linked
+ * program (the accuracy test). Each mode's core and scene parser are linked
  * into one object whose only global symbol is rtacc_<mode> (mk/raytracer.mk). */
 #ifndef RT_ACC_API_H
 #define RT_ACC_API_H

@@ -47,7 +47,7 @@ LAYERS = {
     "tools/scene": (CORE,),
     "tools/core_api": (CORE, "tools/scene"),
     "tools/scenec": (CORE, "tools/scene", "tools/core_api", "tools/bench"),
-    "tools/bench": (CORE, "firmware/app", "tools/scene", "tests"),
+    "tools/bench": (CORE, "firmware/app", "tools/scene"),
     "tools/flasher": (),
     "host_sim": ("*",),
     "tests": ("*",),

@@ -6,11 +6,11 @@
 #include <string.h>
 #include "check.h"
 #include "raster_harness.h"
-#include "raster_scenes.h"
+#include "scene_files.h"
 
 static struct scene *default_scene(const char *name)
 {
-    struct scene *s = ras_test_scene(name);
+    struct scene *s = book_scene(name);
     s->ras.book_exact = 0;
     if (s->ras.clip) s->ras.clip = 2;
     return s;
@@ -25,7 +25,7 @@ static void strips_identical(void)
             static const int rows[3] = { 240, 8, 16 };
             int rc = 0;
             for (int k = 0; k < 3; k++) {
-                struct scene *s = book ? ras_test_scene(names[n]) : default_scene(names[n]);
+                struct scene *s = book ? book_scene(names[n]) : default_scene(names[n]);
                 rc |= render_frame(s, 320, 240, rows[k], 0, &f[k]);
             }
             int same = !rc;
@@ -216,9 +216,9 @@ static void depth_precision(void)
 static void outlines_raster10(void)
 {
     struct frame a, b;
-    struct scene *s = ras_test_scene("raster-10");
+    struct scene *s = book_scene("raster-10");
     int rc = render_frame(s, 240, 240, 16, 0, &a);
-    s = ras_test_scene("raster-10");
+    s = book_scene("raster-10");
     s->ras.outlines = 1;
     rc |= render_frame(s, 240, 240, 16, 0, &b);
     static const uint8_t cols[6][3] = { { 191, 0, 0 }, { 0, 191, 0 }, { 0, 0, 191 }, { 191, 191, 0 }, { 191, 0, 191 }, { 0, 191, 191 } };

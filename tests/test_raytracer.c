@@ -1,20 +1,42 @@
 /* test_raytracer.c — the ray tracer in one numeric mode (built per mode).
  *
- * Double mode: the book demos' reference digests (book-scenes.md Appendix A),
+ * Double mode: the book demos' reference digests (tests/data/book_digests.txt),
  * SHA-256 over the 600x600 RGBA buffer, every pixel written (A = 255).
  * Every mode: strips equal one full frame; the robust sphere test on the
  * radius-5000 ground; CSG, planes, triangles, refraction; each chapter-5
- * optimisation keeps the image (or stays close) and does less work. */
+ * optimisation keeps the image (or stays close) and does less work.
+ * Scenes are the repository's scene files, parsed in the mode under test. */
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
 #include "check.h"
 #include "sha256.h"
-#include "rt_book_scenes.h"
+#include "book_digests.h"
 #include "rt_render.h"
-#include "scene_parse.h"
+#include "scene_files.h"
 
 static int is_double(void) { return strcmp(NUM_NAME, "double") == 0; }
+
+/* raytracer-0n of the book (firmware/scenes/book) */
+static struct scene *rt_book(int n)
+{
+    char name[32];
+    snprintf(name, sizeof name, "raytracer-0%d", n);
+    return book_scene(name);
+}
+
+/* 64 small spheres on a plane: many objects (the bounding-sphere hierarchy) */
+static struct scene *rt_grid64(void) { return scene_file("firmware/scenes/bench/grid64.scene"); }
+
+/* chapter 5 in one scene (plane, triangle, CSG, glass), its speed-ups and
+ * supersampling off: each test switches on what it measures */
+static struct scene *rt_ch5(void)
+{
+    struct scene *s = scene_file("firmware/scenes/demo/raytracer-ch5.scene");
+    s->rt.supersample = 1;
+    s->rt.adaptive_ss = s->rt.shadow_any_hit = s->rt.shadow_cache = 0;
+    return s;
+}
 
 static void digest(const uint8_t *rgb888, int w, int h, char hex[65])
 {
@@ -51,52 +73,29 @@ static void test_sha256(void)
           "sha256_known_answer", "got %s", hex);
 }
 
-/* Appendix A: raytracer-01..06 and the non-default modes. */
+/* The book's demos and their non-default modes: the reference digests. */
 static void test_book_digests(void)
 {
-    static const struct { int n; int eps0; int depth; const char *want; } ref[] = {
-        { 1, 0, 3, "1663e7353794ec2b" }, { 2, 0, 3, "4949dfa183be85c2" }, { 3, 0, 3, "b641bd1d4c9572e9" },
-        { 4, 0, 3, "ef6e9c54551130b0" }, { 5, 0, 3, "f2ed4b7a0e946001" }, { 6, 0, 3, "bd5fe383188550a0" },
-        { 4, 1, 3, "a845155ea61bfd84" }, { 5, 0, 0, "7e39c2946a34cc91" }, { 5, 0, 1, "670ca0859204615d" },
-        { 5, 0, 2, "4e29ab18e6805deb" }, { 5, 0, 4, "8099d2d27a2ea28c" }, { 5, 0, 5, "926d7d338022e160" },
-    };
+    struct book_digest refs[BOOK_DIGESTS_MAX];
+    int n = book_digests_read(refs, BOOK_DIGESTS_MAX), tested = 0;
     uint8_t *img = malloc(600 * 600 * 3);
-    for (size_t i = 0; i < sizeof ref / sizeof ref[0]; i++) {
-        struct scene *s = rt_book_scene(ref[i].n);
-        if (ref[i].eps0) s->rt.epsilon = NUM_ZERO;
-        s->rt.recursion_depth = (uint8_t)ref[i].depth;
-        memset(img, 0, 600 * 600 * 3);
-        char hex[65], name[64];
-        int rc = rt_render(s, 600, 600, 600, img, NULL, NULL);
-        digest(img, 600, 600, hex);
-        snprintf(name, sizeof name, "book_digest_raytracer-0%d%s_depth%d", ref[i].n, ref[i].eps0 ? "_eps0" : "",
-                 ref[i].depth);
-        check(rc == 0 && strncmp(hex, ref[i].want, 16) == 0, name, "rc %d, sha256 %.16s, want %s", rc, hex,
-              ref[i].want);
-    }
-    free(img);
-}
-
-/* The parsed book scene files give the same digests as the C-built scenes. */
-static void test_scene_files(void)
-{
-    static const char *want[7] = { "", "1663e7353794ec2b", "4949dfa183be85c2", "b641bd1d4c9572e9",
-                                   "ef6e9c54551130b0", "f2ed4b7a0e946001", "bd5fe383188550a0" };
-    uint8_t *img = malloc(600 * 600 * 3);
-    for (int n = 1; n <= 6; n++) {
-        char path[96], err[256], hex[65], name[64];
-        snprintf(path, sizeof path, "firmware/scenes/book/raytracer-0%d.scene", n);
-        snprintf(name, sizeof name, "scene_file_digest_raytracer-0%d", n);
-        struct scene *s = NULL;
-        if (scene_load(path, &s, err, sizeof err) != 0) {
-            check(0, name, "%s", err);
+    for (int i = 0; i < n; i++) {
+        if (strncmp(refs[i].scene, "raytracer-", 10) || !refs[i].digest[0]) continue;
+        struct scene *s = book_scene(refs[i].scene);
+        char hex[65] = "", name[160];
+        snprintf(name, sizeof name, "book_digest_%s%s%s", refs[i].scene, refs[i].options[0] ? "_" : "", refs[i].options);
+        if (scene_options(s, refs[i].options)) {
+            check(0, name, "unknown option in %s", refs[i].options);
             continue;
         }
-        int rc = rt_render(s, 600, 600, 40, img, NULL, NULL);
+        memset(img, 0, 600 * 600 * 3);
+        int rc = rt_render(s, 600, 600, 600, img, NULL, NULL);
         digest(img, 600, 600, hex);
-        check(rc == 0 && strncmp(hex, want[n], 16) == 0, name, "rc %d sha256 %.16s want %s", rc, hex, want[n]);
-        scene_free(s);
+        check(rc == 0 && strncmp(hex, refs[i].digest, 16) == 0, name, "rc %d, sha256 %.16s, want %s", rc, hex,
+              refs[i].digest);
+        tested++;
     }
+    check(tested > 0, "book_digests_raytracer_read", "no raytracer line in %s", BOOK_DIGESTS_FILE);
     free(img);
 }
 
@@ -105,7 +104,7 @@ static void test_strips(void)
 {
     int w = 96, h = 72;
     uint8_t *a = malloc((size_t)w * h * 3), *b = malloc((size_t)w * h * 3);
-    struct scene *sc[3] = { rt_book_scene(5), rt_book_scene(6), rt_ch5_scene() };
+    struct scene *sc[3] = { rt_book(5), rt_book(6), rt_ch5() };
     for (int k = 0; k < 3; k++) {
         for (int mode = 0; mode < 5; mode++) {
             struct scene *s = sc[k];
@@ -138,7 +137,7 @@ static void test_progressive(void)
     int w = 100, h = 75, strip = 16;
     size_t n = (size_t)w * h * 3;
     uint8_t *ref = malloc(n), *img = malloc(n), *coarse = malloc(n);
-    struct scene *s = rt_book_scene(5);
+    struct scene *s = rt_book(5);
     struct rt_run r0, r1;
     rt_render(s, w, h, strip, ref, NULL, &r0);
     size_t need = render_work_size(s, (uint16_t)w, (uint16_t)h, (uint16_t)strip);
@@ -203,7 +202,7 @@ static double dd(num v) { return num_to_double(v); }
 /* The radius-5000 ground sphere: robust roots against the exact ones. */
 static void test_ground_sphere(void)
 {
-    struct scene *s = rt_book_scene(5);
+    struct scene *s = rt_book(5);
     uint8_t saved = s->rt.formulation;
     s->rt.formulation = 2;
     struct probe_ctx p;
@@ -251,7 +250,7 @@ static void test_csg_planes_triangles(void)
 {
     static struct rt_object o[6];
     static struct rt_csg g[1];
-    struct scene *s = rt_book_scene(2);
+    struct scene *s = rt_book(2);
     struct scene save = *s;
     const struct rt_object *so = s->objects;
     o[0] = so[0];
@@ -353,7 +352,7 @@ static void test_optimisations(void)
     size_t n = (size_t)w * h * 3;
     uint8_t *ref = malloc(n), *img = malloc(n);
     struct rt_run r0, r1;
-    struct scene *s = rt_book_scene(5);
+    struct scene *s = rt_book(5);
     char name[96];
 
     /* the chapter-5 options measured on the plain path (the shortcuts
@@ -401,7 +400,7 @@ static void test_optimisations(void)
     s->rt.no_shortcuts = 0;
 
     /* bounding-sphere hierarchy on a scene of many objects */
-    struct scene *g = rt_grid_scene(16);
+    struct scene *g = rt_grid64();
     rt_render(g, w, h, 16, ref, NULL, &r0);
     g->rt.bvh = 1;
     rt_render(g, w, h, 16, img, NULL, &r1);
@@ -419,8 +418,7 @@ static void test_shortcuts_same_image(void)
     int w = 96, h = 72;
     size_t n = (size_t)w * h * 3;
     uint8_t *a = malloc(n), *b = malloc(n);
-    struct scene *sc[] = { rt_book_scene(2), rt_book_scene(4), rt_book_scene(5), rt_book_scene(6), rt_ch5_scene(),
-                           rt_grid_scene(8) };
+    struct scene *sc[] = { rt_book(2), rt_book(4), rt_book(5), rt_book(6), rt_ch5(), rt_grid64() };
     for (size_t k = 0; k < sizeof sc / sizeof sc[0]; k++) {
         for (int variant = 0; variant < 3; variant++) {
             struct scene *s = sc[k];
@@ -455,7 +453,7 @@ static double urand(uint32_t *st)
 static void test_coarse_rejection(void)
 {
     static struct rt_object o[2];
-    struct scene *s = rt_book_scene(5);
+    struct scene *s = rt_book(5);
     struct scene save = *s;
     s->objects = o;
     s->nobjects = 2;
@@ -565,7 +563,7 @@ static void test_ch5_scene(void)
 {
     int w = 80, h = 80;
     uint8_t *img = malloc((size_t)w * h * 3);
-    struct scene *s = rt_ch5_scene();
+    struct scene *s = rt_ch5();
     uint32_t sat0 = num_saturations;
     int rc = rt_render(s, w, h, 8, img, NULL, NULL);
     check(rc == 0 && num_saturations == sat0, "ch5_scene_renders_without_saturation", "rc %d, saturations %u", rc,
@@ -578,7 +576,7 @@ static int dump(const char *path, int ss)
 {
     int w = 240, h = 240;
     uint8_t *img = malloc((size_t)w * h * 3);
-    struct scene *s = rt_ch5_scene();
+    struct scene *s = rt_ch5();
     s->rt.supersample = (uint8_t)ss;
     int rc = rt_render(s, w, h, 16, img, NULL, NULL);
     FILE *f = fopen(path, "wb");
@@ -597,7 +595,6 @@ int main(int argc, char **argv)
     test_sha256();
     if (is_double() && !quick) {
         test_book_digests();
-        test_scene_files();
     }
     test_strips();
     test_progressive();

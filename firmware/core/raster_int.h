@@ -50,7 +50,8 @@ struct ras_range { int16_t r0, r1; };
 struct ras_tex565 { const uint16_t *p; uint8_t wlog2, hlog2; };
 
 /* Mip chain of a texture, built in work memory when the scene has none. */
-struct ras_mips { uint8_t levels; uint16_t w[12], h[12]; const uint8_t *p[12]; };
+#define RAS_MIP_MAX 12   /* levels used: 2048 texels a side down to 1 */
+struct ras_mips { uint8_t levels; uint16_t w[RAS_MIP_MAX], h[RAS_MIP_MAX]; const uint8_t *p[RAS_MIP_MAX]; };
 
 #define RAS_FP_LIGHTS 8           /* lights of fast Phong at most */
 

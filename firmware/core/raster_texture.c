@@ -1,5 +1,6 @@
 /* raster_texture.c — chapter 14: texel lookups, filtering, mipmaps. */
 #include "raster_int.h"
+#include "mipmap.h"
 
 static num texel_chan(const uint8_t *img, int64_t idx, int ch)
 {
@@ -79,15 +80,16 @@ size_t ras_mips_size(const struct ras_texture *t)
     if (t->filter != TEX_TRILINEAR || t->mip_levels > 1) return 0;
     size_t n = 0;
     unsigned w = t->w, h = t->h;
-    for (int l = 1; l < 12 && (w > 1 || h > 1); l++) {
-        w = w > 1 ? w / 2 : 1;
-        h = h > 1 ? h / 2 : 1;
+    for (int l = 1; l < RAS_MIP_MAX && (w > 1 || h > 1); l++) {
+        w = mip_side(w);
+        h = mip_side(h);
         n += (size_t)w * h * 3;
     }
     return n;
 }
 
-/* Box-filtered chain down to 1x1 (level 0 is the image itself). */
+/* The texture's own chain, or one built by mipmap.h's box filter into mem
+ * (ras_mips_size bytes; level 0 is the image itself). */
 void ras_mips_build(const struct ras_texture *t, struct ras_mips *m, uint8_t *mem)
 {
     m->levels = 1;
@@ -95,7 +97,7 @@ void ras_mips_build(const struct ras_texture *t, struct ras_mips *m, uint8_t *me
     m->h[0] = t->h;
     m->p[0] = t->rgb;
     if (t->mip_levels > 1 && t->mip) {
-        for (int l = 1; l < t->mip_levels && l < 12; l++) {
+        for (int l = 1; l < t->mip_levels && l < RAS_MIP_MAX; l++) {
             m->w[l] = t->w >> l ? (uint16_t)(t->w >> l) : 1;
             m->h[l] = t->h >> l ? (uint16_t)(t->h >> l) : 1;
             m->p[l] = t->mip[l];
@@ -104,23 +106,13 @@ void ras_mips_build(const struct ras_texture *t, struct ras_mips *m, uint8_t *me
         return;
     }
     if (!mem) return;
-    for (int l = 1; l < 12 && (m->w[l - 1] > 1 || m->h[l - 1] > 1); l++) {
+    for (int l = 1; l < RAS_MIP_MAX && (m->w[l - 1] > 1 || m->h[l - 1] > 1); l++) {
         unsigned pw = m->w[l - 1], ph = m->h[l - 1];
-        unsigned w = pw > 1 ? pw / 2 : 1, h = ph > 1 ? ph / 2 : 1;
-        const uint8_t *src = m->p[l - 1];
-        for (unsigned y = 0; y < h; y++)
-            for (unsigned x = 0; x < w; x++)
-                for (int ch = 0; ch < 3; ch++) {
-                    unsigned x0 = x * 2 < pw ? x * 2 : pw - 1, x1 = x * 2 + 1 < pw ? x * 2 + 1 : pw - 1;
-                    unsigned y0 = y * 2 < ph ? y * 2 : ph - 1, y1 = y * 2 + 1 < ph ? y * 2 + 1 : ph - 1;
-                    unsigned s = src[(y0 * pw + x0) * 3 + ch] + src[(y0 * pw + x1) * 3 + ch] +
-                                 src[(y1 * pw + x0) * 3 + ch] + src[(y1 * pw + x1) * 3 + ch];
-                    mem[(y * w + x) * 3 + ch] = (uint8_t)((s + 2) / 4);
-                }
-        m->w[l] = (uint16_t)w;
-        m->h[l] = (uint16_t)h;
+        mip_next(m->p[l - 1], pw, ph, mem);
+        m->w[l] = (uint16_t)mip_side(pw);
+        m->h[l] = (uint16_t)mip_side(ph);
         m->p[l] = mem;
-        mem += (size_t)w * h * 3;
+        mem += (size_t)m->w[l] * m->h[l] * 3;
         m->levels++;
     }
 }

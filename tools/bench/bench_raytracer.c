@@ -2,12 +2,15 @@
  * emulated MCUs: raytracer-05 at 240x240 rendered in strips of 16 rows (the
  * firmware's way), then the same frame with each chapter-5 option switched
  * on or off, and the bounding-sphere hierarchy on a scene of many spheres.
- * Scenes are built in C (tests/rt_book_scenes.c, book-scenes.md §1.3);
- * building them is not measured. Figures are instructions, not cycles. */
+ * Scenes are the scene files compiled by tools/scenec (book/raytracer-05,
+ * book/raytracer-02, bench/grid64), copied to RAM to change their options;
+ * the copy is not measured. Figures are instructions, not cycles. */
 #include <string.h>
 #include "bench.h"
 #include "raytracer.h"
-#include "rt_book_scenes.h"
+#include "bench/grid64.h"
+#include "book/raytracer-02.h"
+#include "book/raytracer-05.h"
 
 #ifndef BENCH_RT_SIZE
 #define BENCH_RT_SIZE 240    /* the profile image (make profile-raytracer) is smaller */
@@ -89,7 +92,9 @@ static int rt05(struct scene *s, const struct rt_options *base, const char *vari
 int bench_main(void)
 {
     int bad = 0;
-    struct scene *s = rt_book_scene(5);
+    static struct scene s05;
+    s05 = scene_book_raytracer_05;
+    struct scene *s = &s05;
 #ifdef BENCH_RT_ADAPT
     s->rt.adaptive_subsample = BENCH_RT_ADAPT;   /* the adaptive profile image */
 #endif
@@ -126,9 +131,12 @@ int bench_main(void)
     bad |= rt05(s, &base, "supersample=2");
     s->rt.adaptive_ss = 1;
     bad |= rt05(s, &base, "adaptive_supersample=on");
-    bad |= report("scene:book/raytracer-02", "strip16", frame(rt_book_scene(2), W, H));
+    static struct scene s02, grid;
+    s02 = scene_book_raytracer_02;
+    bad |= report("scene:book/raytracer-02", "strip16", frame(&s02, W, H));
     /* many objects: 8x8 spheres on a plane, 80x80 */
-    struct scene *g = rt_grid_scene(8);
+    grid = scene_bench_grid64;
+    struct scene *g = &grid;
     bad |= report("scene:grid64@80x80", "plain", frame(g, 80, 80));
     g->rt.bvh = 1;
     bad |= report("scene:grid64@80x80", "bvh", frame(g, 80, 80));

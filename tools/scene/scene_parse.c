@@ -21,6 +21,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include "scene_parse.h"
+#include "mipmap.h"
 
 #define MAX_DEPTH      32
 #define ARENA_LIMIT    ((size_t)256 << 20)   /* total bytes a scene may allocate */
@@ -1140,30 +1141,18 @@ static uint8_t *load_ppm(struct parser *p, const struct node *at, const char *na
     return px;
 }
 
+/* The texture's mipmap chain down to 1x1 (firmware/core/mipmap.h). */
 static void make_mips(struct parser *p, struct ras_texture *t, const uint8_t *base)
 {
-    int levels = 1, w = t->w, h = t->h;
-    while (w > 1 || h > 1) { w = w > 1 ? w / 2 : 1; h = h > 1 ? h / 2 : 1; levels++; }
-    const uint8_t **mip = alloc_array(p, (size_t)levels, sizeof *mip);
+    unsigned levels = mip_levels(t->w, t->h), w = t->w, h = t->h;
+    const uint8_t **mip = alloc_array(p, levels, sizeof *mip);
     mip[0] = base;
-    w = t->w;
-    h = t->h;
-    for (int l = 1; l < levels; l++) {
-        int nw = w > 1 ? w / 2 : 1, nh = h > 1 ? h / 2 : 1;
-        uint8_t *m = alloc(p, (size_t)nw * nh * 3);
-        const uint8_t *src = mip[l - 1];
-        for (int y = 0; y < nh; y++)
-            for (int x = 0; x < nw; x++)
-                for (int c = 0; c < 3; c++) {
-                    int x0 = 2 * x < w ? 2 * x : w - 1, x1 = 2 * x + 1 < w ? 2 * x + 1 : w - 1;
-                    int y0 = 2 * y < h ? 2 * y : h - 1, y1 = 2 * y + 1 < h ? 2 * y + 1 : h - 1;
-                    int s = src[3 * (y0 * w + x0) + c] + src[3 * (y0 * w + x1) + c] + src[3 * (y1 * w + x0) + c] +
-                            src[3 * (y1 * w + x1) + c];
-                    m[3 * (y * nw + x) + c] = (uint8_t)((s + 2) / 4);
-                }
+    for (unsigned l = 1; l < levels; l++) {
+        uint8_t *m = alloc(p, (size_t)mip_side(w) * mip_side(h) * 3);
+        mip_next(mip[l - 1], w, h, m);
         mip[l] = m;
-        w = nw;
-        h = nh;
+        w = mip_side(w);
+        h = mip_side(h);
     }
     t->mip_levels = (uint8_t)levels;
     t->mip = mip;

@@ -230,12 +230,12 @@ int rt_refract(vec3 d, vec3 n, num ior, vec3 *out)
 /* Colour x weight and colour + colour, in 32-bit arithmetic when the
  * scene's format analysis proved colour intermediates in range
  * (SCENE_FITS_COLOUR: same bits, no saturation checks). */
-static rgb colour_scale(const struct scene *s, rgb c, num k)
+static inline rgb colour_scale(const struct scene *s, rgb c, num k)
 {
     if (s->fits & SCENE_FITS_COLOUR) return rgb_make(num_mul_fit(c.r, k), num_mul_fit(c.g, k), num_mul_fit(c.b, k));
     return rgb_scale(c, k);
 }
-static rgb colour_add(const struct scene *s, rgb a, rgb b)
+static inline rgb colour_add(const struct scene *s, rgb a, rgb b)
 {
     if (s->fits & SCENE_FITS_COLOUR) return rgb_make(num_add_fit(a.r, b.r), num_add_fit(a.g, b.g), num_add_fit(a.b, b.b));
     return rgb_add(a, b);

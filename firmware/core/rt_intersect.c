@@ -85,14 +85,15 @@ static num scale_t(num t, num tscale)
  * caller rejects (t_min >= 0). Not for a ray leaving this sphere. */
 struct sphere_quad { wnum a, b, c, disc, q; num ts; };
 
-static int sphere_quad(const struct rt_state *rt, int16_t obj, struct rt_ray *ray, struct sphere_quad *k)
+static int sphere_quad(const struct rt_state *rt, int16_t obj, struct rt_ray *ray, struct sphere_quad *k,
+                       int coarse_done)
 {
     const struct rt_object *o = &rt->s->objects[obj];
     const struct rt_obj_cache *oc = &rt->oc[obj];
     int cam = ray->from_camera && rt->cached;
     /* certain misses, decided in 32-bit arithmetic (num_rt.h): the test
-     * below would return 0 too */
-    if (rt->shortcuts && rt_coarse_sphere_miss(&ray->cd, &oc->cs)) return 0;
+     * below would return 0 too (coarse_done: the caller has tried it) */
+    if (rt->shortcuts && !coarse_done && rt_coarse_sphere_miss(&ray->cd, &oc->cs)) return 0;
     rt_ray_exact(ray);
     vec3 co = cam ? oc->co_cam : v3_sub(ray->o, o->center);
     k->a = ray->as;
@@ -149,7 +150,7 @@ int intersect_ray_sphere(const struct rt_state *rt, int16_t obj, struct rt_ray *
         return 1;
     }
     struct sphere_quad k;
-    if (!sphere_quad(rt, obj, ray, &k)) return 0;
+    if (!sphere_quad(rt, obj, ray, &k, 0)) return 0;
     if (k.q == 0) { *t1 = *t2 = NUM_ZERO; return 1; }
     num ra = scale_t(wnum_div(k.q, k.a), k.ts);
     num rc = scale_t(wnum_div(k.c, k.q), k.ts);
@@ -165,7 +166,7 @@ int intersect_ray_sphere(const struct rt_state *rt, int16_t obj, struct rt_ray *
  * c/q is the smaller (q^2 - a c >= disc - 1 ulp + 2 b h >= 0, and rounding
  * keeps the order), so the far root q/a is only needed when c/q <= t_min. */
 static int sphere_first_hit(const struct rt_state *rt, int16_t obj, struct rt_ray *ray, num t_min, num limit,
-                            num *t)
+                            num *t, int coarse_done)
 {
     num t1, t2;
     if (ray->origin == obj) {
@@ -177,7 +178,7 @@ static int sphere_first_hit(const struct rt_state *rt, int16_t obj, struct rt_ra
         return 0;   /* the other root, 0, is never above t_min */
     }
     struct sphere_quad k;
-    if (!sphere_quad(rt, obj, ray, &k)) return 0;
+    if (!sphere_quad(rt, obj, ray, &k, coarse_done)) return 0;
     if (k.q == 0) {
         t1 = t2 = NUM_ZERO;
     } else if (k.c > 0 && k.disc > 0) {
@@ -201,10 +202,10 @@ static int sphere_first_hit(const struct rt_state *rt, int16_t obj, struct rt_ra
 
 /* rt_item_hit of a plain sphere with the shortcuts on: the hit filled in. */
 static int sphere_item_hit(const struct rt_state *rt, int16_t item, struct rt_ray *ray, num t_min, num limit,
-                           struct rt_hit *hit)
+                           struct rt_hit *hit, int coarse_done)
 {
     num t;
-    if (!sphere_first_hit(rt, item, ray, t_min, limit, &t)) return 0;
+    if (!sphere_first_hit(rt, item, ray, t_min, limit, &t, coarse_done)) return 0;
     hit->t = t;
     hit->item = hit->surf = item;
     hit->flip = 0;
@@ -368,7 +369,7 @@ int rt_item_hit(struct rt_state *rt, int16_t item, struct rt_ray *ray, num t_min
         uint8_t flip = 0;
         switch (o->shape) {
         case RT_SPHERE:
-            if (rt->shortcuts) return sphere_item_hit(rt, item, ray, t_min, limit, hit);
+            if (rt->shortcuts) return sphere_item_hit(rt, item, ray, t_min, limit, hit, 0);
             if (!intersect_ray_sphere(rt, item, ray, &t1, &t2)) return 0;
             /* book order: t1 first, then t2, strict comparisons */
             if (t_min < t1 && t1 < limit) { limit = t1; got = 1; }
@@ -416,7 +417,11 @@ int closest_intersection(struct rt_state *rt, struct rt_ray *ray, num t_min, num
             if (rt->shortcuts && item < (int16_t)rt->s->nobjects && objs[item].shape == RT_SPHERE) {
                 /* rt_item_hit's sphere case, without its dispatch */
                 rt->n.tests++;
-                if (!sphere_item_hit(rt, item, ray, t_min, limit, hit)) continue;
+                /* the common outcome first, without the calls: a certain
+                 * miss (the ray's own sphere takes sphere_first_hit's path) */
+                int other = item != ray->origin;
+                if (other && rt_coarse_sphere_miss(&ray->cd, &rt->oc[item].cs)) continue;
+                if (!sphere_item_hit(rt, item, ray, t_min, limit, hit, other)) continue;
                 limit = hit->t;
                 found = 1;
                 if (any_hit) return 1;

@@ -25,6 +25,40 @@ ASAN_OPT  := -O1 -g -ffp-contract=off -fno-omit-frame-pointer \
              -fsanitize=address,undefined -fno-sanitize-recover=all
 INCLUDES  := -I. -Ifirmware/core -Ihal -Itools/scene -Itools/core_api
 
+# Optional libraries, each found with pkg-config unless given on the command
+# line (make WITH_SDL2=0 ...); `make test` installs both first
+# (tools/deps.sh test):
+#   WITH_SDL2   host_sim --window, a live window of the glass
+#   WITH_GPIOD  the Raspberry Pi's GPIO lines (libgpiod 1.x or 2.x): the
+#               hal/linux backend's D/C, RESET and backlight (host_sim
+#               --backend linux) and the flasher's --gpio-reset
+# Without one, those options say so in one line and exit 2; everything else
+# builds. The sources that use one are compiled with its *_FLAGS (-DWITH_SDL2,
+# -DWITH_GPIOD) and linked with its *_LIBS.
+pkg_found = $(shell pkg-config --exists $(1) 2>/dev/null && echo 1 || echo 0)
+ifndef WITH_SDL2
+WITH_SDL2 := $(call pkg_found,sdl2)
+endif
+ifndef WITH_GPIOD
+WITH_GPIOD := $(call pkg_found,libgpiod)
+endif
+ifeq ($(WITH_SDL2),1)
+SDL2_FLAGS  := -DWITH_SDL2 $(patsubst -I%,-isystem %,$(shell pkg-config --cflags sdl2))
+SDL2_LIBS   := $(shell pkg-config --libs sdl2)
+endif
+# libgpiod's API (1.x or 2.x) by the version pkg-config reports
+ifeq ($(WITH_GPIOD),1)
+GPIOD_FLAGS := -DWITH_GPIOD -DGPIOD_API_MAJOR=$(shell pkg-config --modversion libgpiod | cut -d. -f1) \
+               $(shell pkg-config --cflags libgpiod)
+GPIOD_LIBS  := $(shell pkg-config --libs libgpiod)
+endif
+# The configuration built, rewritten only when it changes: the objects that
+# depend on it have CONFIG_STAMP as a prerequisite, so they follow a change
+# (the library installed later, WITH_SDL2=0 on the command line).
+CONFIG_STAMP := $(BUILD)/config
+$(shell mkdir -p $(BUILD) && { echo '$(SDL2_FLAGS) $(GPIOD_FLAGS)' | cmp -s - $(CONFIG_STAMP) || \
+          echo '$(SDL2_FLAGS) $(GPIOD_FLAGS)' >$(CONFIG_STAMP); })
+
 # Numeric modes of the renderer core: the value of NUM_MODE for each.
 NUM_MODES        := fixed float double
 NUM_MODE_fixed   := 1

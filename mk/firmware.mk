@@ -41,8 +41,7 @@ FW_INC       := -I. -Ifirmware/core -Ifirmware/app -Ihal -I$(FW_OUT)/scenes
 # image that links a set builds its core at the coarsest format among its
 # scenes: fw_<set>_num_frac.h (-include'd) defines NUM_FRAC as the smallest
 # SCENE_<ID>_NUM_FRAC of their headers (a finer one would trip the generated
-# #error; a coarser one holds every range the finer one does). Built only
-# when the scene compiler's source is present.
+# #error; a coarser one holds every range the finer one does).
 #   book  FW_BOOK_SCENES: the "book" images (raytracer-02 and raster-11)
 #   cube  FW_CUBE_SCENES: small3dlib's cube workload (firmware/scenes/bench)
 #   rt    FW_RT_SCENES: the ray tracer's benchmark (raytracer-05, exact and with
@@ -50,7 +49,6 @@ FW_INC       := -I. -Ifirmware/core -Ifirmware/app -Ihal -I$(FW_OUT)/scenes
 # $(call fw_scene_set,SET,set) with FW_<SET>_SCENES set defines FW_<SET>_SRCS
 # (the scenes' sources and their table fw_scenes_<set>.c), FW_<SET>_FRAC_H
 # and FW_<SET>_FRAC_FLAGS (the -include of it).
-FW_HAVE_SCENEC := $(if $(wildcard tools/scenec/scenec.c),1,)
 FW_BOOK_SCENES ?= book/raytracer-02 book/raster-11
 FW_CUBE_SCENES ?= bench/cube-textured bench/cube-gouraud bench/cube-flat
 FW_RT_SCENES   ?= book/raytracer-05 bench/raytracer-05-adaptive
@@ -77,11 +75,9 @@ FW_$(1)_LIST   := $(FW_OUT)/scenes/fw_$(2)_scenes.list
 FW_$(1)_FRAC_H := $(FW_OUT)/scenes/fw_$(2)_num_frac.h
 FW_$(1)_SRCS   := $(foreach n,$(FW_$(1)_SCENES),$(FW_OUT)/scenes/$(call fw_scene_id,$(n)).c) \
                   $(FW_OUT)/scenes/fw_scenes_$(2).c
-FW_$(1)_FRAC_FLAGS := $(if $(FW_HAVE_SCENEC),-include $(FW_OUT)/scenes/fw_$(2)_num_frac.h)
-ifneq ($(FW_HAVE_SCENEC),)
+FW_$(1)_FRAC_FLAGS := -include $(FW_OUT)/scenes/fw_$(2)_num_frac.h
 $$(shell mkdir -p $(FW_OUT)/scenes && { echo '$(FW_$(1)_SCENES)' | cmp -s - $(FW_OUT)/scenes/fw_$(2)_scenes.list || \
           echo '$(FW_$(1)_SCENES)' >$(FW_OUT)/scenes/fw_$(2)_scenes.list; })
-endif
 $(FW_OUT)/scenes/fw_scenes_$(2).c: $(call fw_scene_h,$(FW_$(1)_SCENES)) firmware/app/scene_table.sh \
                                    $(FW_OUT)/scenes/fw_$(2)_scenes.list
 	$(Q)firmware/app/scene_table.sh $$@ $(foreach n,$(FW_$(1)_SCENES),$(n)=$(call fw_scene_h,$(n)))
@@ -162,8 +158,8 @@ $(eval $(call RP_IMAGE,cgfs-ili9341,-DFW_PANEL=panel_ili9341_320x240 -DFW_WIDTH=
 $(eval $(call RP_IMAGE,cgfs-rot2,-DFW_ROTATION=2,$(FW_SCENE_SRCS)))
 # fw_scene_image(IMAGE,SET,FLAGS): an image of the scene set SET (its table,
 # its format), built with FLAGS.
-fw_scene_image = $(eval $(call RP_IMAGE,$(1),$(3) $(FW_$(2)_FRAC_FLAGS),$(FW_$(2)_SRCS)))$(if $(FW_HAVE_SCENEC),\
-    $(eval $(call fw_frac_objs,$(FW_OUT)/pico/obj-$(1),$(RP_SRCS) $(FW_$(2)_SRCS)): $(FW_$(2)_FRAC_H)))
+fw_scene_image = $(eval $(call RP_IMAGE,$(1),$(3) $(FW_$(2)_FRAC_FLAGS),$(FW_$(2)_SRCS)))\
+    $(eval $(call fw_frac_objs,$(FW_OUT)/pico/obj-$(1),$(RP_SRCS) $(FW_$(2)_SRCS)): $(FW_$(2)_FRAC_H))
 FW_1CORE_FLAGS := -DRP2040_SINGLE_CORE=1 -DFW_WORK_CORES=1
 # The book scenes: for the board, and for the emulator (one core, one frame
 # per scene so that a run reaches every scene quickly).
@@ -183,7 +179,7 @@ $(call fw_scene_image,cgfs-rt-1core,RT,$(FW_1CORE_FLAGS) -DFW_FRAMES_PER_SCENE=1
 
 FW_RP_IMAGES := $(FW_OUT)/pico/cgfs.uf2 $(FW_OUT)/pico/cgfs-1core.uf2 $(FW_OUT)/pico/cgfs-ili9341.uf2 \
                 $(FW_OUT)/pico/cgfs-rot2.uf2 \
-                $(if $(FW_HAVE_SCENEC),$(foreach i,cgfs-book cgfs-book-1core cgfs-book-bench cgfs-cube cgfs-cube-1core cgfs-rt cgfs-rt-1core,$(FW_OUT)/pico/$(i).uf2))
+                $(foreach i,cgfs-book cgfs-book-1core cgfs-book-bench cgfs-cube cgfs-cube-1core cgfs-rt cgfs-rt-1core,$(FW_OUT)/pico/$(i).uf2)
 
 .PHONY: firmware-pico
 firmware-pico: deps-firmware
@@ -199,7 +195,7 @@ STM32_NUM_MODE ?= float
 STM32_PINS ?=
 STM32_HSE_MHZ ?= 25
 ST_SRCS  := $(ST_DIR)/crt0.c $(ST_DIR)/board.c $(ST_DIR)/fw_board_stm32f411.c hal/stm32f4/hal_stm32f4.c \
-            $(FW_COMMON) $(if $(FW_HAVE_SCENEC),$(FW_BOOK_SRCS),$(FW_SCENE_SRCS))
+            $(FW_COMMON) $(FW_BOOK_SRCS)
 ST_CPU   := -mcpu=cortex-m4 -mthumb -mfloat-abi=hard -mfpu=fpv4-sp-d16
 ST_CFLAGS := $(ST_CPU) -O2 -g -std=c11 $(WARN) -ffunction-sections -fdata-sections -ffreestanding \
              -fno-common -fno-math-errno -ffp-contract=off -DSTM32_HSE_MHZ=$(STM32_HSE_MHZ) \
@@ -221,11 +217,9 @@ $(FW_OUT)/stm32f411/$(1).bin: $(FW_OUT)/stm32f411/$(1).elf
 endef
 $(eval $(call ST_IMAGE,cgfs,$(STM32_NUM_MODE)))
 $(eval $(call ST_IMAGE,cgfs-fixed,fixed))
-ifneq ($(FW_HAVE_SCENEC),)
 $(call fw_frac_objs,$(FW_OUT)/stm32f411/obj-cgfs-fixed,$(ST_SRCS)): $(FW_BOOK_FRAC_H)
 ifeq ($(STM32_NUM_MODE),fixed)
 $(call fw_frac_objs,$(FW_OUT)/stm32f411/obj-cgfs,$(ST_SRCS)): $(FW_BOOK_FRAC_H)
-endif
 endif
 
 FW_ST_IMAGES := $(FW_OUT)/stm32f411/cgfs.bin $(FW_OUT)/stm32f411/cgfs-fixed.bin
@@ -242,7 +236,6 @@ firmware: firmware-pico firmware-stm32f411
 # ---- the renderer core alone on the qemu benchmark boards (mk/bench.mk) ----------
 # Instructions per frame of the book scenes: Cortex-M4F (mps2-an386) fixed vs
 # float, and Cortex-M0+ code (mps2-an385) in fixed point.
-ifneq ($(FW_HAVE_SCENEC),)
 FW_BENCH_SRCS := tools/bench/bench_frame.c $(FW_CORE_SRCS) $(FW_BOOK_SRCS)
 FW_BENCH_FLAGS := -Ifirmware/app -I$(FW_OUT)/scenes -DFW_STRIP_ROWS=$(FW_STRIP_ROWS) -DFW_WORK_CORES=1
 $(call bench_image,frame,m4f-qemu,fixed,$(FW_BENCH_SRCS),$(FW_BENCH_FLAGS) $(FW_BOOK_FRAC_FLAGS))
@@ -252,7 +245,6 @@ $(foreach t,m4f-qemu m0plus-qemu,$(call fw_frac_objs,$(BUILD)/bench/$(t)/fixed/f
     $(FW_BOOK_FRAC_H)
 BENCH_IMAGES += $(BUILD)/bench/m4f-qemu/fixed/frame.elf $(BUILD)/bench/m4f-qemu/float/frame.elf \
                 $(BUILD)/bench/m0plus-qemu/fixed/frame.elf
-endif
 
 # ---- flasher (host) --------------------------------------------------------------
 # build/flasher links the real libusb transport; tests drive the same sequence
@@ -262,18 +254,15 @@ USB_LIBS   := $(shell pkg-config --libs libusb-1.0 2>/dev/null || echo -lusb-1.0
 FLASHER_CORE := tools/flasher/picoboot.c tools/flasher/image.c
 FLASHER_SRCS := $(FLASHER_CORE) tools/flasher/usb_libusb.c tools/flasher/gpio_reset.c tools/flasher/main.c
 FLASHER_BIN  := $(BUILD)/flasher
-# --gpio-reset (Raspberry Pi host) with libgpiod when pkg-config finds it;
+# --gpio-reset (Raspberry Pi host) with libgpiod (the Makefile's WITH_GPIOD);
 # without it the option says so and exits 2.
-GPIOD_OK     := $(shell pkg-config --exists libgpiod 2>/dev/null && echo 1)
-FLASHER_GPIOD_CFLAGS := $(if $(GPIOD_OK),-DFLASHER_GPIOD -DGPIOD_API_MAJOR=$(shell pkg-config --modversion libgpiod | cut -d. -f1) \
-                        $(shell pkg-config --cflags libgpiod))
-FLASHER_GPIOD_LIBS   := $(if $(GPIOD_OK),$(shell pkg-config --libs libgpiod))
 $(BUILD)/host/none/tools/flasher/%.o $(BUILD)/asan/none/tools/flasher/%.o: EXTRA_CFLAGS += -Itools/flasher $(USB_CFLAGS)
-$(BUILD)/host/none/tools/flasher/gpio_reset.o $(BUILD)/asan/none/tools/flasher/gpio_reset.o: EXTRA_CFLAGS += $(FLASHER_GPIOD_CFLAGS)
+$(BUILD)/host/none/tools/flasher/gpio_reset.o $(BUILD)/asan/none/tools/flasher/gpio_reset.o: EXTRA_CFLAGS += $(GPIOD_FLAGS)
+$(BUILD)/host/none/tools/flasher/gpio_reset.o $(BUILD)/asan/none/tools/flasher/gpio_reset.o: $(CONFIG_STAMP)
 $(BUILD)/asan/none/tests/test_flasher.o: EXTRA_CFLAGS += -Itools/flasher -Itests
 
 $(FLASHER_BIN): $(call obj,host,none,$(FLASHER_SRCS))
-	$(Q)$(CC) $(LDFLAGS_host) $^ $(USB_LIBS) $(FLASHER_GPIOD_LIBS) -o $@
+	$(Q)$(CC) $(LDFLAGS_host) $^ $(USB_LIBS) $(GPIOD_LIBS) -o $@
 $(BUILD)/asan/tests/test_flasher: $(call obj,asan,none,$(FLASHER_CORE) tests/test_flasher.c)
 	@mkdir -p $(@D)
 	$(Q)$(CC) $(LDFLAGS_asan) $^ -o $@
@@ -284,8 +273,8 @@ TESTS     += $(BUILD)/asan/tests/test_flasher tests/test_flasher_noboard.sh:$(BU
 
 # The GPIO reset sequence against a fake libgpiod (tests/fake_gpiod.c defines
 # the gpiod functions; needs only the header). The 2.x API: mk/pi.mk.
-ifneq ($(GPIOD_OK),)
-$(BUILD)/asan/none/tests/test_gpio_reset.o $(BUILD)/asan/none/tests/fake_gpiod.o: EXTRA_CFLAGS += -Itools/flasher -Itests $(FLASHER_GPIOD_CFLAGS)
+ifeq ($(WITH_GPIOD),1)
+$(BUILD)/asan/none/tests/test_gpio_reset.o $(BUILD)/asan/none/tests/fake_gpiod.o: EXTRA_CFLAGS += -Itools/flasher -Itests $(GPIOD_FLAGS)
 $(BUILD)/asan/tests/test_gpio_reset: $(call obj,asan,none,tools/flasher/gpio_reset.c tests/fake_gpiod.c tests/test_gpio_reset.c)
 	@mkdir -p $(@D)
 	$(Q)$(CC) $(LDFLAGS_asan) $^ -o $@
@@ -296,7 +285,7 @@ endif
 # `make flash`: the two-core book image (raytracer-02 and raster-11, three
 # frames each, in a loop) through the flasher; FLASH_IMAGE to override (for
 # example build/firmware/pico/cgfs-cube.uf2, the real-time cube scenes).
-FLASH_IMAGE ?= $(FW_OUT)/pico/$(if $(FW_HAVE_SCENEC),cgfs-book,cgfs).uf2
+FLASH_IMAGE ?= $(FW_OUT)/pico/cgfs-book.uf2
 flash: $(FLASHER_BIN)
 	$(Q)tools/deps.sh flash
 	$(Q)$(MAKE) --no-print-directory $(FLASH_IMAGE)
@@ -320,13 +309,11 @@ TEST_DEPS += $(RP2040SIM_DEPS) $(FW_HOST_REF) $(FW_OUT)/pico/cgfs-1core.elf $(FW
 TESTS     += tests/test_rp2040sim.sh:$(BUILD)
 TEST_DEPS += $(FW_OUT)/pico/cgfs-ili9341.elf $(FW_OUT)/pico/cgfs-rot2.elf
 TESTS     += tests/test_rp2040sim_panels.sh:$(BUILD)
-ifneq ($(FW_HAVE_SCENEC),)
 TEST_DEPS += $(FW_OUT)/pico/cgfs-book-1core.elf $(FW_OUT)/pico/cgfs-cube-1core.elf $(BUILD)/host_sim
 TESTS     += tests/test_rp2040sim_book.sh:$(BUILD) tests/test_rp2040sim_cube.sh:$(BUILD):$(FW_CUBE_FRAMES)
 # the two-core images on both emulated cores (tools/rp2040sim/dualcore.js)
 TEST_DEPS += $(FW_OUT)/pico/cgfs.elf $(FW_OUT)/pico/cgfs-book.elf
 TESTS     += tests/test_rp2040sim_dual.sh:$(BUILD)
-endif
 TESTS     += node:tools/rp2040sim/test_models.js
 # The JavaScript panel (emu_panel.js) replays the vectors the C emulator
 # replays (test_panel_vectors), so the two decoders cannot drift apart.
@@ -343,8 +330,8 @@ TESTS     += node:tools/rp2040sim/replay_vectors.js:tests/vectors/panel
 RP2040SIM_BENCH_FRAMES ?= 1
 RP2040SIM_TMP := $(BUILD)/bench/rp2040sim.jsonl.tmp
 .PHONY: bench-rp2040
-RP2040SIM_BENCH_IMAGES := cgfs-1core cgfs $(if $(FW_HAVE_SCENEC),cgfs-book-1core cgfs-book-bench \
-                          cgfs-cube-1core cgfs-cube cgfs-rt-1core cgfs-rt)
+RP2040SIM_BENCH_IMAGES := cgfs-1core cgfs cgfs-book-1core cgfs-book-bench \
+                          cgfs-cube-1core cgfs-cube cgfs-rt-1core cgfs-rt
 bench-rp2040: $(RP2040SIM_DEPS) $(foreach i,$(RP2040SIM_BENCH_IMAGES),$(FW_OUT)/pico/$(i).elf)
 	@mkdir -p $(BUILD)/bench
 	@# this step's lines are rewritten, the other steps' kept
@@ -353,7 +340,6 @@ bench-rp2040: $(RP2040SIM_DEPS) $(foreach i,$(RP2040SIM_BENCH_IMAGES),$(FW_OUT)/
 	$(Q)for i in cgfs-1core:single-core cgfs:two-core; do \
 		node tools/rp2040sim/rp2040sim.js --image $(FW_OUT)/pico/$${i%%:*}.elf --variant $${i#*:} \
 			--frames $(RP2040SIM_BENCH_FRAMES) --json >>$(BUILD)/bench/results.jsonl || exit 1; done
-ifneq ($(FW_HAVE_SCENEC),)
 	$(Q)for i in cgfs-book-1core:single-core cgfs-book-bench:two-core; do \
 		node tools/rp2040sim/rp2040sim.js --image $(FW_OUT)/pico/$${i%%:*}.elf --variant $${i#*:} \
 			--frames $(words $(FW_BOOK_SCENES)) --json >$(RP2040SIM_TMP) || exit 1; \
@@ -367,5 +353,4 @@ ifneq ($(FW_HAVE_SCENEC),)
 			--frames $(words $(FW_RT_SCENES)) --json >$(RP2040SIM_TMP) || exit 1; \
 		cat $(RP2040SIM_TMP) && cat $(RP2040SIM_TMP) >>$(BUILD)/bench/results.jsonl; done
 	$(Q)rm -f $(RP2040SIM_TMP)
-endif
 bench: bench-rp2040

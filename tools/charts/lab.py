@@ -230,10 +230,17 @@ class Cache:
         return value
 
 
+class ImageMissing(RuntimeError):
+    """A benchmark image is not built (and this Lab may not build it)."""
+
+
 class Lab:
-    def __init__(self, host_sim, build, jobs=2, log=print, rp2040=True, make="make"):
+    """build_images: run make for the benchmark images it needs (else they
+    must exist: ImageMissing)."""
+
+    def __init__(self, host_sim, build, jobs=2, log=print, rp2040=True, make="make", build_images=True):
         self.host_sim, self.build, self.jobs, self.log = host_sim, build, jobs, log
-        self.make, self.want_rp2040 = make, rp2040
+        self.make, self.want_rp2040, self.build_images = make, rp2040, build_images
         self.cache = Cache(os.path.join(build, "charts", "cache"))
         self.scene_dir = os.path.join(build, "charts", "scenes")
         os.makedirs(self.scene_dir, exist_ok=True)
@@ -282,6 +289,12 @@ class Lab:
             self.elf_hash = {}
         paths = sorted({self.elf(t, m) for t, m in pairs} - set(self.elf_hash))
         if not paths:
+            return
+        if not self.build_images:
+            missing = [p for p in paths if not os.path.exists(p)]
+            if missing:
+                raise ImageMissing("%s is not built (make %s)" % (missing[0], missing[0]))
+            self.elf_hash.update({p: hostsim.file_hash(p) for p in paths})
             return
         if not quiet:
             self.log("lab: %d benchmark images (built by make when out of date)" % len(paths))

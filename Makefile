@@ -76,13 +76,39 @@ LDFLAGS_asan := -fsanitize=address,undefined
 #   $(BUILD)/<variant>/<mode>/<src>.o
 obj = $(patsubst %.c,$(BUILD)/$(1)/$(2)/%.o,$(3))
 
+# Compile modes and their flags: "none", the three numeric modes, and the
+# modes mk fragments add (COMPILE_MODES += fixed13, MODE_FLAGS_fixed13 := ...);
+# every variant compiles every mode by the one rule below.
+COMPILE_MODES   := none $(NUM_MODES)
+MODE_FLAGS_none :=
+$(foreach m,$(NUM_MODES),$(eval MODE_FLAGS_$(m) := -DNUM_MODE=$(NUM_MODE_$(m))))
 define COMPILE_RULES
 $(BUILD)/$(1)/$(2)/%.o: %.c
 	@mkdir -p $$(@D)
-	$(Q)$$(CC) $(CSTD) $(WARN) $(VFLAGS_$(1)) $(if $(filter none,$(2)),,-DNUM_MODE=$(NUM_MODE_$(2))) \
-		$(INCLUDES) $$(EXTRA_CFLAGS) -MMD -MP -c $$< -o $$@
+	$(Q)$$(CC) $(CSTD) $(WARN) $(VFLAGS_$(1)) $(MODE_FLAGS_$(2)) $(INCLUDES) $$(EXTRA_CFLAGS) -MMD -MP -c $$< -o $$@
 endef
-$(foreach v,$(VARIANTS),$(foreach m,none $(NUM_MODES),$(eval $(call COMPILE_RULES,$(v),$(m)))))
+
+# $(call program,OUT,OBJECTS,VARIANT[,LIBS]): links OBJECTS into the host
+# program OUT with VARIANT's link flags.
+define PROGRAM_RULE
+$(1): $(2)
+	@mkdir -p $$(@D)
+	$(Q)$$(CC) $(LDFLAGS_$(3)) -o $$@ $$^ $(4) -lm
+endef
+program = $(eval $(call PROGRAM_RULE,$(1),$(2),$(3),$(4)))
+
+# $(call bundle,OUT.o,OBJECTS,SYMBOL[,FROM]): links OBJECTS (one numeric
+# mode of the core and what goes with it) into the relocatable object OUT.o
+# whose only global symbol is SYMBOL (FROM renamed to SYMBOL, when given),
+# so that several modes of the same sources link into one program.
+define BUNDLE_RULE
+$(1): $(2)
+	@mkdir -p $$(@D)
+	$(Q)ld -r -o $$@.tmp $$^
+	$(Q)objcopy --keep-global-symbol=$(3) $(if $(4),--redefine-sym $(4)=$(3)) $$@.tmp $$@
+	$(Q)rm -f $$@.tmp
+endef
+bundle = $(eval $(call BUNDLE_RULE,$(1),$(2),$(3),$(4)))
 
 # Programs built by `make`, tests run by `make test` (commands, one per
 # word; each prints PASS/FAIL lines, see tests/run.sh), and bench steps.
@@ -97,6 +123,8 @@ BENCH_DEPS :=
 all: programs
 
 include $(sort $(wildcard mk/*.mk))
+
+$(foreach v,$(VARIANTS),$(foreach m,$(COMPILE_MODES),$(eval $(call COMPILE_RULES,$(v),$(m)))))
 
 .PHONY: programs
 programs: $(PROGRAMS)

@@ -4,12 +4,8 @@
 SCENE_PARSER_SRCS := tools/scene/scene_parse.c firmware/core/num.c firmware/core/vec.c firmware/core/mipmap.c
 
 # test_scene_<mode>: the parser built alone in each numeric mode.
-define SCENE_TEST
-$(BUILD)/$(1)/test_scene_$(2): $(call obj,$(1),$(2),tests/test_scene.c $(SCENE_PARSER_SRCS))
-	@mkdir -p $$(@D)
-	$(Q)$$(CC) $(LDFLAGS_$(1)) -o $$@ $$^ -lm
-endef
-$(foreach m,$(NUM_MODES),$(eval $(call SCENE_TEST,asan,$(m))))
+$(foreach m,$(NUM_MODES),$(call program,$(BUILD)/asan/test_scene_$(m),\
+    $(call obj,asan,$(m),tests/test_scene.c $(SCENE_PARSER_SRCS)),asan))
 $(BUILD)/asan/%/tests/test_scene.o: EXTRA_CFLAGS += -Itests
 
 SCENE_TESTS := $(foreach m,$(NUM_MODES),$(BUILD)/asan/test_scene_$(m))
@@ -83,13 +79,8 @@ SCENE_FRACS       := $(CORE_FRACS)
 SCENE_FRAC_MODES  := $(CORE_FRAC_MODES)
 
 # test_scene_fracs: every scene at every format against the double core.
-define SCENE_FRACS_PROG
-$(BUILD)/$(1)/test_scene_fracs: $(call obj,$(1),none,tests/test_scene_fracs.c host_sim/compare.c) \
-    $(foreach m,$(SCENE_FRAC_MODES) fixed double,$(BUILD)/$(1)/core_$(m).o)
-	@mkdir -p $$(@D)
-	$(Q)$$(CC) $(LDFLAGS_$(1)) -o $$@ $$^ -lm
-endef
-$(foreach v,$(VARIANTS),$(eval $(call SCENE_FRACS_PROG,$(v))))
+$(foreach v,$(VARIANTS),$(call program,$(BUILD)/$(v)/test_scene_fracs,$(call obj,$(v),none,tests/test_scene_fracs.c \
+    host_sim/compare.c) $(foreach m,$(SCENE_FRAC_MODES) fixed double,$(BUILD)/$(v)/core_$(m).o),$(v)))
 $(foreach v,$(VARIANTS),$(call obj,$(v),none,tests/test_scene_fracs.c)): EXTRA_CFLAGS += -Itests -Ihost_sim
 .PHONY: scene-fracs-report
 scene-fracs-report: $(BUILD)/host/test_scene_fracs

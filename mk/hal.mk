@@ -4,7 +4,7 @@
 #   $(call hal_objs,<variant>)  all HAL objects of a variant (mode "none")
 #   $(HAL_LDLIBS)               libraries they need (libgpiod with WITH_GPIOD=1)
 
-HAL_SRCS       := hal/dcs.c hal/panel.c hal/panel_st7789.c hal/panel_ili9341.c
+# (HAL_SRCS, the DCS layer and the panel drivers: the Makefile)
 HAL_SIM_SRCS   := hal/sim/emu_panel.c hal/sim/hal_sim.c
 HAL_LINUX_SRCS := hal/linux/hal_linux.c
 

@@ -73,26 +73,32 @@ def pareto(a, outdir):
     for scene in sorted({r["scene"] for r in rows}):
         rs = [r for r in rows if r["scene"] == scene]
         targets = [t for t in lab.TARGETS if any(r["target"] == t for r in rs)]
-        fig, axes = plt.subplots(1, len(targets), figsize=(6.2 * len(targets), 5.6), squeeze=False)
+        fig, axes = plt.subplots(1, len(targets), figsize=(6.2 * len(targets), 5.0), squeeze=False)
+        longest = 0
         for ax, t in zip(axes[0], targets):
             pts = [r for r in rs if r["target"] == t]
             for r in pts:
-                ax.scatter(r["cost"], plot_psnr(r["psnr"]), s=28 if r["frontier"] else 16,
+                ax.scatter(r["cost"], plot_psnr(r["psnr"]), s=30 if r["frontier"] else 18,
                            color=NUM_COLOURS[r["numeric"]], edgecolors="k" if r["frontier"] else "none",
-                           zorder=3, alpha=1 if r["frontier"] else 0.55)
+                           zorder=3, alpha=1 if r["frontier"] else 0.5)
             front = sorted((r for r in pts if r["frontier"]), key=lambda r: r["cost"])
-            if front:
-                xs, ys = [], []
-                for r in front:
-                    if xs:
-                        xs.append(r["cost"])
-                        ys.append(ys[-1])
+            xs, ys = [], []
+            for r in front:
+                if xs:
                     xs.append(r["cost"])
-                    ys.append(plot_psnr(r["psnr"]))
-                ax.plot(xs, ys, color="crimson", lw=1.2, zorder=2, label="Pareto frontier")
-                for r in front:
-                    ax.annotate(r["variant"], (r["cost"], plot_psnr(r["psnr"])), fontsize=6.5,
-                                xytext=(4, -3), textcoords="offset points", color="crimson")
+                    ys.append(ys[-1])
+                xs.append(r["cost"])
+                ys.append(plot_psnr(r["psnr"]))
+            ax.plot(xs, ys, color="crimson", lw=1.2, zorder=2, label="Pareto frontier")
+            lines = []
+            for k, r in enumerate(front, 1):
+                ax.annotate(str(k), (r["cost"], plot_psnr(r["psnr"])), fontsize=7.5, xytext=(3, 3),
+                            textcoords="offset points", color="crimson", weight="bold")
+                lines.append("%d  %s: %.4g M, %s" % (k, r["variant"], r["cost"] / 1e6,
+                                                     "identical" if r["psnr"] is None else "%.1f dB" % r["psnr"]))
+            longest = max(longest, len(lines))
+            ax.text(0.0, -0.19, "\n".join(lines), transform=ax.transAxes, va="top", ha="left", fontsize=7,
+                    family="monospace", color="crimson")
             ax.set_xscale("log")
             ax.set_xlabel(("cycles" if t == "rp2040-sim" else "instructions") + " per frame")
             ax.set_title(TARGET_NAMES[t], fontsize=10)
@@ -101,7 +107,9 @@ def pareto(a, outdir):
         for n, c in NUM_COLOURS.items():
             axes[0][0].scatter([], [], color=c, label=n)
         axes[0][0].legend(fontsize=7, loc="lower right")
-        fig.suptitle("%s, %dx%d: cost against accuracy, every variant" % ((scene,) + lab.SIZE), fontsize=11)
+        fig.suptitle("%s, %dx%d: cost against accuracy of every variant; numbered: the Pareto frontier"
+                     % ((scene,) + lab.SIZE), fontsize=11)
+        fig.subplots_adjust(bottom=0.16 + 0.03 * longest)
         save(fig, outdir, "pareto-" + scene.replace("/", "-"))
     return rows
 
@@ -136,28 +144,32 @@ def formats(a, outdir):
     write_csv(outdir, "formats", ["scene", "format", "num_frac", "chosen", "relation", "psnr", "saturations",
                                   "error"], rows)
     scenes = sorted({r[0] for r in rows})
-    fig, ax = plt.subplots(figsize=(11, 6))
-    cmap = plt.get_cmap("tab20")
-    for i, s in enumerate(scenes):
-        pts = [(r[2], plot_psnr(None if r[5] == "inf" else r[5])) for r in rows if r[0] == s and r[5] != ""]
-        if not pts:
-            continue
-        c = cmap(i % 20)
-        ax.plot([p[0] for p in pts], [p[1] for p in pts], "-", color=c, lw=1, marker=".", label=s)
-        ch = [(r[2], plot_psnr(None if r[5] == "inf" else r[5])) for r in rows if r[0] == s and r[3] == 1]
-        if ch:
-            ax.scatter([ch[0][0]], [ch[0][1]], s=70, facecolors="none", edgecolors=c, linewidths=1.6, zorder=4)
-    ax.set_xticks(list(lab.FRACS))
-    ax.set_xticklabels([lab.qfmt(f) for f in lab.FRACS], fontsize=8)
-    ax.set_xlabel("fixed-point format (finer to the right); ring: the format the scene analysis chooses")
-    ax.set_ylabel("PSNR vs double (dB; identical at %g)" % IDENTICAL)
-    ax.set_title("Each scene at every format, 240x240: the chosen one and the finer and coarser ones")
-    ax.grid(True, alpha=0.3)
-    ax.legend(fontsize=6, ncol=2, loc="center left", bbox_to_anchor=(1.01, 0.5))
+    cols = 6
+    nrow = (len(scenes) + cols - 1) // cols
+    fig, axes = plt.subplots(nrow, cols, figsize=(2.6 * cols, 2.1 * nrow), sharex=True, sharey=True, squeeze=False)
+    for i, sc in enumerate(scenes):
+        ax = axes[i // cols][i % cols]
+        pts = [(r[2], plot_psnr(None if r[5] == "inf" else r[5]), r[3]) for r in rows if r[0] == sc and r[5] != ""]
+        ax.plot([p[0] for p in pts], [p[1] for p in pts], "-", color="tab:blue", lw=1, marker=".", ms=4)
+        for p in pts:
+            if p[2]:
+                ax.scatter([p[0]], [p[1]], s=70, facecolors="none", edgecolors="crimson", linewidths=1.6, zorder=4)
+        refused = [r[2] for r in rows if r[0] == sc and r[5] == ""]
+        for f in refused:
+            ax.axvspan(f - 0.5, f + 0.5, color="grey", alpha=0.15, lw=0)
+        ax.set_title(sc, fontsize=7.5)
+        ax.grid(True, alpha=0.3)
+        ax.set_ylim(20, 102)
+    for j in range(len(scenes), nrow * cols):
+        axes[j // cols][j % cols].axis("off")
+    for ax in axes[-1]:
+        ax.set_xticks([12, 14, 16, 18, 20])
+        ax.set_xticklabels(["Q19.12", "Q17.14", "Q15.16", "Q13.18", "Q11.20"], fontsize=6.5)
+    fig.suptitle("Every scene at every fixed-point format, 240x240: PSNR against double (identical at %g); "
+                 "ring: the format the scene analysis chooses; grey: formats the scene does not load in" % IDENTICAL,
+                 fontsize=10)
+    fig.tight_layout(rect=(0, 0, 1, 0.97))
     save(fig, outdir, "formats")
-
-
-SWEEP_FIELDS = ["within1", "psnr", "max_err", "bleed", "per_pixel", "pixels", "num_frac", "saturations", "error"]
 
 
 def stability(a, outdir):

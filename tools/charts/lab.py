@@ -70,7 +70,9 @@ class Variant:
 class LabScene:
     """A scene of the lab: its reference options (the exact method, rendered
     in double), its variants, and the firmware images that run some of them
-    on the emulated RP2040: (image, scene set, variant label, options)."""
+    on the emulated RP2040: (image, scene set, the firmware's scene, variant
+    label, options); the firmware's frame 0 must equal host_sim's render of
+    the variant (same_image)."""
 
     def __init__(self, name, reference, variants, rp2040=()):
         self.name, self.reference, self.variants, self.rp2040 = name, reference, variants, list(rp2040)
@@ -127,6 +129,7 @@ def raster_book_variants(textured):
           ras_default(fast.replace("16", "32"), *tex, "perspective_step=32"),
           ras_default("exact N=1" + (" nearest" if textured else ""), *tex, *RAS_EXACT),
           ras_default("exact N=1" + (" nearest" if textured else ""), *tex, *RAS_EXACT, numeric="float"),
+          ras_default("exact N=1" + (" nearest" if textured else ""), *tex, *RAS_EXACT, numeric="double"),
           ras_default("exact Phong N=16" + (" nearest" if textured else ""), *tex, "lighting=exact"),
           ras_default("vertex lighting" + (" nearest" if textured else ""), *tex, "lighting=vertex")]
     if textured:
@@ -153,6 +156,7 @@ def cube_variants():
         v.append(Variant("N=%d" % n, options=["perspective_step=%d" % n]))
     v += [Variant("exact N=1", options=["perspective_step=1"]),
           Variant("exact N=1", "float", options=["perspective_step=1"]),
+          Variant("exact N=1", "double", options=["perspective_step=1"]),
           Variant("uv=linear", options=["uv=linear"]),
           Variant("N=16 depth_bits=16", options=["depth_bits=16"]),
           Variant("N=16 depth_bits=32", options=["depth_bits=32"]),
@@ -172,6 +176,7 @@ def shadow_map_variants():
         v.append(Variant("map 192 pcf %d" % k, options=["pcf=%d" % k]))
     vol = ["shadows=off", "shadow_volumes=on"]
     v += [Variant("volumes", options=vol), Variant("volumes", "float", options=vol),
+          Variant("volumes", "double", options=vol),
           Variant("volumes", options=vol, strip=8), Variant("volumes", options=vol, strip=48),
           Variant("no shadows", options=["shadows=off"])]
     return v
@@ -179,15 +184,16 @@ def shadow_map_variants():
 
 LAB = [
     LabScene("book/raytracer-02", RT_EXACT, rt_variants(False),
-             rp2040=[("cgfs-book-1core", "book", "", [])]),
+             rp2040=[("cgfs-book-1core", "book", "book/raytracer-02", "", [])]),
     LabScene("book/raytracer-05", RT_EXACT, rt_variants(True),
-             rp2040=[("cgfs-rt-1core", "rt", "", []),
-                     ("cgfs-rt-1core", "rt", "adaptive_subsample=4", ["adaptive_subsample=4"])]),
+             rp2040=[("cgfs-rt-1core", "rt", "book/raytracer-05", "", []),
+                     ("cgfs-rt-1core", "rt", "bench/raytracer-05-adaptive", "adaptive_subsample=4",
+                      ["adaptive_subsample=4"])]),
     LabScene("book/raster-11", RAS_DEFAULT + RAS_EXACT, raster_book_variants(False),
-             rp2040=[("cgfs-book-1core", "book", "book path", [])]),
+             rp2040=[("cgfs-book-1core", "book", "book/raster-11", "book path", [])]),
     LabScene("book/raster-13", RAS_DEFAULT + RAS_EXACT + ["texture.filter=trilinear"], raster_book_variants(True)),
     LabScene("bench/cube-textured", ["perspective_step=1"], cube_variants(),
-             rp2040=[("cgfs-cube-1core", "cube", "N=16", [])]),
+             rp2040=[("cgfs-cube-1core", "cube", "bench/cube-textured", "N=16", [])]),
     LabScene("demo/ch15-shadow-map", ["shadows=off", "shadow_volumes=on"] + RAS_EXACT, shadow_map_variants()),
 ]
 
@@ -298,7 +304,7 @@ class Lab:
             return
         if not quiet:
             self.log("lab: %d benchmark images (built by make when out of date)" % len(paths))
-        r = subprocess.run([self.make, "--no-print-directory", "-j%d" % self.jobs, "BUILD=%s" % self.build] + paths,
+        r = subprocess.run([self.make, "-s", "--no-print-directory", "-j%d" % self.jobs, "BUILD=%s" % self.build] + paths,
                            env=MAKE_ENV, stdout=subprocess.DEVNULL if quiet else None)
         if r.returncode != 0:
             raise SystemExit("lab: building the benchmark images failed")
@@ -404,12 +410,12 @@ class Lab:
                     a = self.accuracy(vt, ref_text, "fixed", None, 16)
                     own_of[vt] = a["num_frac"] if a else None
                 return own_of[vt]
-            rp_of = {}   # variant name -> the RP2040 image that runs it
-            for img, set_name, label, opts in s.rp2040:
+            rp_of = {}   # variant name -> (the RP2040 image that runs it, its scene there)
+            for img, set_name, fw_scene, label, opts in s.rp2040:
                 if img in rp:
                     v = Variant(label, "fixed", self.set_frac(set_name), opts, RP2040_STRIP)
                     variants.append(v)
-                    rp_of[v.name(own_frac(scenetext.apply(text, opts)))] = img
+                    rp_of[v.name(own_frac(scenetext.apply(text, opts)))] = (img, fw_scene)
             seen = set()
             for v in variants:
                 vt = scenetext.apply(text, v.options)
@@ -434,16 +440,21 @@ class Lab:
             frames = c["frames"]
             rows.append(self.row(s, v, name, acc, target, (c["init"] + c["total"]) / frames, "instructions",
                                  c["checksum"] == acc["checksum"], c["init"], c["total"] / frames, frames))
-        for (s, v, name, vt, acc, img) in plan:
-            if not img:
+        for (s, v, name, vt, acc, on_rp) in plan:
+            if not on_rp:
                 continue
-            recs = [r for r in rp[img] if r.get("what") == "scene:" + s.name]
+            img, fw_scene = on_rp
+            recs = [r for r in rp[img] if r.get("what") == "scene:" + fw_scene]
             if not recs:
-                self.log("lab: %s: no frame of %s in %s" % (img, s.name, s.name))
+                self.log("lab: %s: no frame of %s" % (img, fw_scene))
                 continue
             r = recs[0]
             rows.append(self.row(s, v, name, acc, "rp2040-sim", r["cycles"], "cycles",
                                  r["checksum"] == acc["checksum"], 0, r["cycles"], r.get("frames", 1)))
+        for r in rows:
+            if not r["same_image"]:
+                self.log("lab: %s %s on %s: frame 0 differs from host_sim's render of the variant" %
+                         (r["scene"], r["variant"], r["target"]))
         self.log("lab: %d emulator runs, %d cached results reused" % (self.runs, self.hits))
         return frontier(rows)
 

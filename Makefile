@@ -25,6 +25,40 @@ ASAN_OPT  := -O1 -g -ffp-contract=off -fno-omit-frame-pointer \
              -fsanitize=address,undefined -fno-sanitize-recover=all
 INCLUDES  := -I. -Ifirmware/core -Ihal -Itools/scene -Itools/core_api
 
+# Optional libraries, each found with pkg-config unless given on the command
+# line (make WITH_SDL2=0 ...); `make test` installs both first
+# (tools/deps.sh test):
+#   WITH_SDL2   host_sim --window, a live window of the glass
+#   WITH_GPIOD  the Raspberry Pi's GPIO lines (libgpiod 1.x or 2.x): the
+#               hal/linux backend's D/C, RESET and backlight (host_sim
+#               --backend linux) and the flasher's --gpio-reset
+# Without one, those options say so in one line and exit 2; everything else
+# builds. The sources that use one are compiled with its *_FLAGS (-DWITH_SDL2,
+# -DWITH_GPIOD) and linked with its *_LIBS.
+pkg_found = $(shell pkg-config --exists $(1) 2>/dev/null && echo 1 || echo 0)
+ifndef WITH_SDL2
+WITH_SDL2 := $(call pkg_found,sdl2)
+endif
+ifndef WITH_GPIOD
+WITH_GPIOD := $(call pkg_found,libgpiod)
+endif
+ifeq ($(WITH_SDL2),1)
+SDL2_FLAGS  := -DWITH_SDL2 $(patsubst -I%,-isystem %,$(shell pkg-config --cflags sdl2))
+SDL2_LIBS   := $(shell pkg-config --libs sdl2)
+endif
+# libgpiod's API (1.x or 2.x) by the version pkg-config reports
+ifeq ($(WITH_GPIOD),1)
+GPIOD_FLAGS := -DWITH_GPIOD -DGPIOD_API_MAJOR=$(shell pkg-config --modversion libgpiod | cut -d. -f1) \
+               $(shell pkg-config --cflags libgpiod)
+GPIOD_LIBS  := $(shell pkg-config --libs libgpiod)
+endif
+# The configuration built, rewritten only when it changes: the objects that
+# depend on it have CONFIG_STAMP as a prerequisite, so they follow a change
+# (the library installed later, WITH_SDL2=0 on the command line).
+CONFIG_STAMP := $(BUILD)/config
+$(shell mkdir -p $(BUILD) && { echo '$(SDL2_FLAGS) $(GPIOD_FLAGS)' | cmp -s - $(CONFIG_STAMP) || \
+          echo '$(SDL2_FLAGS) $(GPIOD_FLAGS)' >$(CONFIG_STAMP); })
+
 # Numeric modes of the renderer core: the value of NUM_MODE for each.
 NUM_MODES        := fixed float double
 NUM_MODE_fixed   := 1
@@ -42,13 +76,76 @@ LDFLAGS_asan := -fsanitize=address,undefined
 #   $(BUILD)/<variant>/<mode>/<src>.o
 obj = $(patsubst %.c,$(BUILD)/$(1)/$(2)/%.o,$(3))
 
+# Compile modes and their flags: "none", the three numeric modes, and the
+# modes mk fragments add (COMPILE_MODES += fixed13, MODE_FLAGS_fixed13 := ...);
+# every variant compiles every mode by the one rule below.
+COMPILE_MODES   := none $(NUM_MODES)
+MODE_FLAGS_none :=
+$(foreach m,$(NUM_MODES),$(eval MODE_FLAGS_$(m) := -DNUM_MODE=$(NUM_MODE_$(m))))
 define COMPILE_RULES
 $(BUILD)/$(1)/$(2)/%.o: %.c
 	@mkdir -p $$(@D)
-	$(Q)$$(CC) $(CSTD) $(WARN) $(VFLAGS_$(1)) $(if $(filter none,$(2)),,-DNUM_MODE=$(NUM_MODE_$(2))) \
-		$(INCLUDES) $$(EXTRA_CFLAGS) -MMD -MP -c $$< -o $$@
+	$(Q)$$(CC) $(CSTD) $(WARN) $(VFLAGS_$(1)) $(MODE_FLAGS_$(2)) $(INCLUDES) $$(EXTRA_CFLAGS) -MMD -MP -c $$< -o $$@
 endef
-$(foreach v,$(VARIANTS),$(foreach m,none $(NUM_MODES),$(eval $(call COMPILE_RULES,$(v),$(m)))))
+
+# $(call program,OUT,OBJECTS,VARIANT[,LIBS]): links OBJECTS into the host
+# program OUT with VARIANT's link flags.
+define PROGRAM_RULE
+$(1): $(2)
+	@mkdir -p $$(@D)
+	$(Q)$$(CC) $(LDFLAGS_$(3)) -o $$@ $$^ $(4) -lm
+endef
+program = $(eval $(call PROGRAM_RULE,$(strip $(1)),$(strip $(2)),$(strip $(3)),$(strip $(4))))
+
+# $(call bundle,OUT.o,OBJECTS,SYMBOL[,FROM]): links OBJECTS (one numeric
+# mode of the core and what goes with it) into the relocatable object OUT.o
+# whose only global symbol is SYMBOL (FROM renamed to SYMBOL, when given),
+# so that several modes of the same sources link into one program.
+define BUNDLE_RULE
+$(1): $(2)
+	@mkdir -p $$(@D)
+	$(Q)ld -r -o $$@.tmp $$^
+	$(Q)objcopy --keep-global-symbol=$(3) $(if $(4),--redefine-sym $(4)=$(3)) $$@.tmp $$@
+	$(Q)rm -f $$@.tmp
+endef
+bundle = $(eval $(call BUNDLE_RULE,$(strip $(1)),$(strip $(2)),$(strip $(3)),$(strip $(4))))
+
+# The display layer every program with a panel links: the DCS layer and the
+# panel drivers (hal/; backends and the emulated panel: mk/hal.mk).
+HAL_SRCS := hal/dcs.c $(sort $(wildcard hal/panel*.c))
+
+# Scenes compiled by tools/scenec (mk/scene.mk builds scenec and the work
+# probe). $(call scenec_rule,OUT.c,SCENE,WxH,STRIP_ROWS,ID,TARGET) writes
+# OUT.c and OUT.h from firmware/scenes/SCENE.scene, with the C identifier ID
+# (empty: scenec's default) and the work size of the emulated Cortex-M0+
+# (TARGET 1: measured by the work probe) or of this host (TARGET 0: an upper
+# bound for the target).
+SCENEC      := $(BUILD)/scenec
+SCENE_PROBE := $(BUILD)/scenes/work_probe.elf
+define SCENEC_RULE
+$(1): firmware/scenes/$(2).scene $(SCENEC) $(if $(filter 1,$(6)),$(SCENE_PROBE))
+	@mkdir -p $$(@D)
+	$(Q)$(if $(filter 1,$(6)),tw=$$$$(tools/scenec/target_work.sh $(SCENE_PROBE) $$< $(subst x, ,$(3)) $(4)) || exit 2;) \
+	$(SCENEC) --size $(3) --strip-rows $(4) $(if $(5),--id $(5)) $(if $(filter 1,$(6)),--target-work $$$$tw) \
+		-o $$@ $$< >$$(@:.c=.log) || { cat $$(@:.c=.log); exit 2; }
+$(patsubst %.c,%.h,$(1)): $(1)
+endef
+scenec_rule = $(eval $(call SCENEC_RULE,$(strip $(1)),$(strip $(2)),$(strip $(3)),$(strip $(4)),$(strip $(5)),$(strip $(6))))
+
+# $(call scene_frac_rule,OUT.h,HEADERS[,MORE]): OUT.h defines NUM_FRAC as the
+# smallest SCENE_<ID>_NUM_FRAC of the scenec headers HEADERS (MORE: other
+# prerequisites). That is the coarsest format among those scenes, the one a
+# program linking them all is compiled at: a finer one would trip a scene's
+# #error, and a coarser one holds every range a finer one does.
+define SCENE_FRAC_RULE
+$(1): $(2) $(3)
+	@mkdir -p $$(@D)
+	$(Q)f=$$$$(sed -n 's/^#define SCENE_[A-Za-z0-9_]*_NUM_FRAC *\([0-9][0-9]*\)$$$$/\1/p' $(2) | sort -n | head -n 1); \
+	[ -n "$$$$f" ] || { echo "$$@: no SCENE_<ID>_NUM_FRAC in $(2)" >&2; exit 2; }; \
+	printf '/* %s: generated by the Makefile, the coarsest format among %s */\n#ifndef NUM_FRAC\n#define NUM_FRAC %s\n#endif\n' \
+		"$$(@F)" "$(notdir $(2))" "$$$$f" >$$@
+endef
+scene_frac_rule = $(eval $(call SCENE_FRAC_RULE,$(strip $(1)),$(strip $(2)),$(strip $(3))))
 
 # Programs built by `make`, tests run by `make test` (commands, one per
 # word; each prints PASS/FAIL lines, see tests/run.sh), and bench steps.
@@ -63,6 +160,8 @@ BENCH_DEPS :=
 all: programs
 
 include $(sort $(wildcard mk/*.mk))
+
+$(foreach v,$(VARIANTS),$(foreach m,$(COMPILE_MODES),$(eval $(call COMPILE_RULES,$(v),$(m)))))
 
 .PHONY: programs
 programs: $(PROGRAMS)

@@ -5,20 +5,20 @@
 #include "panel.h"
 
 const struct panel_desc *const panel_all[] = {
-    &panel_st7789_240x240, &panel_st7789_240x320,
-    &panel_ili9341_320x240, &panel_ili9341_240x320, NULL,
+#define PANEL(name, controller, glass, view) &panel_##name,
+#define GLASS(...)
+#include "panels.def"
+#undef PANEL
+#undef GLASS
+    NULL,
 };
 
 const struct panel_desc *panel_find(const char *name)
 {
     if (!name)
         return NULL;
-    if (strcmp(name, "st7789") == 0)
-        return &panel_st7789_240x240;
-    if (strcmp(name, "ili9341") == 0)
-        return &panel_ili9341_320x240;
     for (size_t i = 0; panel_all[i]; i++)
-        if (strcmp(name, panel_all[i]->name) == 0)
+        if (strcmp(name, panel_all[i]->name) == 0 || strcmp(name, panel_all[i]->controller) == 0)
             return panel_all[i];
     return NULL;
 }

@@ -45,10 +45,12 @@ struct panel_desc {
     uint8_t invert;              /* 1: INVON (IPS glass), 0: INVOFF */
 };
 
-extern const struct panel_desc panel_st7789_240x240;
-extern const struct panel_desc panel_st7789_240x320;
-extern const struct panel_desc panel_ili9341_320x240;
-extern const struct panel_desc panel_ili9341_240x320;
+/* panel_st7789_240x240, ...: every descriptor of panels.def */
+#define PANEL(name, controller, glass, view) extern const struct panel_desc panel_##name;
+#define GLASS(...)
+#include "panels.def"
+#undef PANEL
+#undef GLASS
 
 struct panel {
     const struct panel_desc *desc;
@@ -60,10 +62,11 @@ struct panel {
 };
 
 /* Looks a descriptor up by name: a full name ("st7789_240x240") or a
- * controller name ("st7789" = st7789_240x240, "ili9341" = ili9341_320x240).
+ * controller name, meaning the controller's first descriptor in panels.def
+ * ("st7789" = st7789_240x240, "ili9341" = ili9341_320x240).
  * Returns NULL if unknown. */
 const struct panel_desc *panel_find(const char *name);
-/* The descriptors panel_find knows, NULL-terminated. */
+/* The descriptors panel_find knows, in panels.def's order, NULL-terminated. */
 extern const struct panel_desc *const panel_all[];
 
 /* Resets and initialises the panel (hardware reset, init table, MADCTL for

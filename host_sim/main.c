@@ -32,7 +32,7 @@ enum { EXIT_OK = 0, EXIT_INTERNAL = 1, EXIT_USAGE = 2, EXIT_PROTOCOL = 3 };
 
 static const char usage_text[] =
     "usage: host_sim --scene FILE [options]\n"
-    "  --panel st7789|ili9341|none   emulated controller (default st7789)\n"
+    "  --panel %s|none   emulated controller (default %s; hal/panels.def)\n"
     "  --size WxH                    render size (default: the panel's native size;\n"
     "                                with --panel none, the scene's canvas size)\n"
     "  --numeric fixed|float|double  arithmetic of the renderer (default fixed; fixed point\n"
@@ -152,7 +152,9 @@ static int parse_args(int argc, char **argv, struct opts *o)
         memcpy(name, a, n);
         name[n] = 0;
         if (!strcmp(name, "--help") || !strcmp(name, "-h")) {
-            printf(usage_text, panel_out_faults);
+            char panels[64];
+            panel_out_controllers(panels, sizeof panels);
+            printf(usage_text, panels, panel_out_default(), panel_out_faults);
             exit(EXIT_OK);
         }
         if (!strcmp(name, "--stats") || !strcmp(name, "--summary") || !strcmp(name, "--progressive") ||
@@ -175,8 +177,12 @@ static int parse_args(int argc, char **argv, struct opts *o)
 
         if (!strcmp(name, "--scene")) o->scene = val;
         else if (!strcmp(name, "--panel")) {
-            if (strcmp(val, "st7789") && strcmp(val, "ili9341") && strcmp(val, "none"))
-                return fail(EXIT_USAGE, "unknown panel '%s' (st7789|ili9341|none)", val);
+            uint16_t pw, ph;
+            char panels[64];
+            if (strcmp(val, "none") && panel_out_native(val, &pw, &ph)) {
+                panel_out_controllers(panels, sizeof panels);
+                return fail(EXIT_USAGE, "unknown panel '%s' (%s|none)", val, panels);
+            }
             o->panel = val;
         } else if (!strcmp(name, "--size")) {
             if (parse_size(val, &o->width, &o->height))
@@ -529,7 +535,7 @@ static int run(const struct opts *o, struct core *c, struct core *ref, struct pa
     char err[512];
     char name[256];
     int rc;
-    const char *panel = o->panel ? o->panel : "st7789";
+    const char *panel = o->panel ? o->panel : panel_out_default();
     const char *backend = o->backend ? o->backend : "sim";
     const char *numeric = o->numeric ? o->numeric : "fixed";
     const int none = !strcmp(panel, "none");

@@ -8,8 +8,8 @@
  *                be read back).
  * --panel none:  a plain memory framebuffer.
  *
- * The HAL parts are compiled in when the HAL sources are present
- * (mk/host_sim.mk defines HOST_SIM_HAVE_HAL, HOST_SIM_HAVE_LINUX).
+ * The panels are those of hal/panels.def (panel_all): --panel names a
+ * controller, and the size picks the module.
  */
 #include "panel_out.h"
 
@@ -17,13 +17,9 @@
 #include <stdlib.h>
 #include <string.h>
 
-#ifdef HOST_SIM_HAVE_HAL
 #include "hal/panel.h"
 #include "hal/sim/hal_sim.h"
-#endif
-#ifdef HOST_SIM_HAVE_LINUX
 #include "hal/linux/hal_linux.h"
-#endif
 
 /* The emulated bus clock: what an ST7789 accepts (62.5 MHz write cycle
  * limit) rounded down to a clock an RP2040 or a Raspberry Pi can make. It
@@ -38,46 +34,58 @@ struct panel_out {
     enum kind kind;
     uint16_t width, height;
     uint16_t *fb;                /* memory framebuffer, or the copy of what was sent (linux) */
-#ifdef HOST_SIM_HAVE_HAL
     struct hal hal;
     struct hal_sim sim;
     struct emu_panel *emu;       /* ~150 KiB, so on the heap */
     struct panel panel;
-#endif
-#ifdef HOST_SIM_HAVE_LINUX
     struct hal_linux lx;
     int lx_open;
-#endif
 };
+
+/* A controller's first descriptor (panel_find of a controller name), NULL
+ * for anything else. */
+static const struct panel_desc *controller_default(const char *panel)
+{
+    const struct panel_desc *d = panel_find(panel);
+    return d && !strcmp(d->controller, panel) ? d : NULL;
+}
 
 int panel_out_native(const char *panel, uint16_t *w, uint16_t *h)
 {
-    if (!strcmp(panel, "st7789")) { *w = 240; *h = 240; return 0; }
-    if (!strcmp(panel, "ili9341")) { *w = 320; *h = 240; return 0; }
-    return -1;
+    const struct panel_desc *d = controller_default(panel);
+    if (!d) return -1;
+    *w = d->width;
+    *h = d->height;
+    return 0;
 }
 
-/* Both controllers have 240x320 pixels of memory; MADCTL's row/column
- * exchange makes it 320x240. */
-static int fits(unsigned w, unsigned h)
+const char *panel_out_default(void) { return panel_all[0]->controller; }
+
+int panel_out_controllers(char *buf, size_t len)
 {
-    return (w <= 240 && h <= 320) || (w <= 320 && h <= 240);
+    size_t n = 0;
+    if (len) buf[0] = 0;
+    for (size_t i = 0; panel_all[i]; i++)
+        if (controller_default(panel_all[i]->controller) == panel_all[i]) {
+            int k = snprintf(buf + n, len - n, "%s%s", n ? "|" : "", panel_all[i]->controller);
+            if (k < 0 || (size_t)k >= len - n) return -1;
+            n += (size_t)k;
+        }
+    return 0;
 }
 
-#ifdef HOST_SIM_HAVE_HAL
-/* The module and rotation that show a w x h image: the smallest module of
- * the controller that holds it, turned if it is wider than tall. */
-static const char *pick_module(const char *panel, unsigned w, unsigned h, uint8_t *rot)
+/* The module and rotation that show a w x h image: the first descriptor of
+ * the controller (in panels.def's order, smallest first) that holds it
+ * upright, else the first that holds it turned a quarter; NULL if none. */
+static const struct panel_desc *pick_module(const char *panel, unsigned w, unsigned h, uint8_t *rot)
 {
-    *rot = 0;
-    if (!strcmp(panel, "st7789")) {
-        if (w <= 240 && h <= 240) return "st7789_240x240";
-        if (w <= 240) return "st7789_240x320";
-        *rot = 1;
-        return "st7789_240x320";
-    }
-    if (w <= 320 && h <= 240) return "ili9341_320x240";
-    return "ili9341_240x320";
+    for (*rot = 0; *rot < 2; (*rot)++)
+        for (size_t i = 0; panel_all[i]; i++) {
+            const struct panel_desc *d = panel_all[i];
+            unsigned pw = *rot ? d->height : d->width, ph = *rot ? d->width : d->height;
+            if (!strcmp(d->controller, panel) && w <= pw && h <= ph) return d;
+        }
+    return NULL;
 }
 
 /* A protocol violation recorded by the emulated panel: 3 and its line. */
@@ -122,7 +130,6 @@ static int inject_fault(struct panel_out *p, const struct panel_desc *d, const c
     snprintf(err, errlen, "injected fault %s was not reported by the emulated panel", fault);
     return 1;
 }
-#endif
 
 static int open_memory(struct panel_out *p, char *err, size_t errlen)
 {
@@ -139,19 +146,15 @@ int panel_out_open(struct panel_out **out, const struct panel_out_opts *o, char 
     int linux_be = !strcmp(o->backend, "linux");
     int none = !strcmp(o->panel, "none");
     *out = NULL;
-#ifndef HOST_SIM_HAVE_LINUX
-    if (linux_be) {
-        snprintf(err, errlen, "backend linux not available in this build");
-        return 2;
-    }
-#endif
     if (none && linux_be) {
         snprintf(err, errlen, "--backend linux needs a panel, not --panel none");
         return 2;
     }
-    if (!none && !fits(o->width, o->height)) {
-        snprintf(err, errlen, "size %ux%u is larger than the %s panel's memory (240x320 or 320x240)",
-                 o->width, o->height, o->panel);
+    uint8_t rot = 0;
+    const struct panel_desc *d = none ? NULL : pick_module(o->panel, o->width, o->height, &rot);
+    if (!none && !d) {
+        if (!controller_default(o->panel)) snprintf(err, errlen, "unknown panel '%s'", o->panel);
+        else snprintf(err, errlen, "size %ux%u is larger than every %s module", o->width, o->height, o->panel);
         return 2;
     }
     struct panel_out *p = calloc(1, sizeof *p);
@@ -166,12 +169,7 @@ int panel_out_open(struct panel_out **out, const struct panel_out_opts *o, char 
         p->kind = OUT_MEMORY;
         return open_memory(p, err, errlen);
     }
-#ifndef HOST_SIM_HAVE_HAL
-    snprintf(err, errlen, "panel %s not available in this build", o->panel);
-    return 2;
-#else
-    uint8_t rot;
-    const char *name = pick_module(o->panel, o->width, o->height, &rot);
+    const char *name = d->name;
     if (o->rotation > 3 || ((o->rotation & 1) && o->width != o->height)) {
         snprintf(err, errlen, "--rotation %u: %s", (unsigned)o->rotation,
                  o->rotation > 3 ? "quarter turns 0..3" :
@@ -179,14 +177,8 @@ int panel_out_open(struct panel_out **out, const struct panel_out_opts *o, char 
         return 2;
     }
     rot = (uint8_t)((rot + o->rotation) & 3);
-    const struct panel_desc *d = panel_find(name);
-    if (!d) {
-        snprintf(err, errlen, "no panel driver for %s in this build", name);
-        return 1;
-    }
     int rc;
     if (linux_be) {
-#ifdef HOST_SIM_HAVE_LINUX
         struct hal_linux_config cfg;
         if (o->fault) {
             snprintf(err, errlen, "--inject-fault needs the emulated panel (--backend sim)");
@@ -212,14 +204,13 @@ int panel_out_open(struct panel_out **out, const struct panel_out_opts *o, char 
             return 1;
         }
         return 0;
-#endif
     }
     p->kind = OUT_SIM;
     uint8_t view;
     const struct emu_module *m = emu_module_find(name, &view);
     p->emu = malloc(sizeof *p->emu);
     if (!m || !p->emu) {
-        snprintf(err, errlen, m ? "out of memory" : "no emulated module %s in this build", name);
+        snprintf(err, errlen, m ? "out of memory" : "no emulated module shows %s (hal/panels.def)", name);
         return 1;
     }
     if (emu_panel_init(p->emu, m, (uint8_t)((view + rot) & 3))) {
@@ -236,7 +227,6 @@ int panel_out_open(struct panel_out **out, const struct panel_out_opts *o, char 
         return 1;
     }
     return 0;
-#endif
 }
 
 int panel_out_flush(struct panel_out *p, uint16_t y0, uint16_t y1, const uint16_t *px,
@@ -247,7 +237,6 @@ int panel_out_flush(struct panel_out *p, uint16_t y0, uint16_t y1, const uint16_
         return 1;
     }
     if (p->fb) memcpy(p->fb + (size_t)y0 * p->width, px, (size_t)(y1 - y0) * p->width * sizeof *px);
-#ifdef HOST_SIM_HAVE_HAL
     if (p->kind != OUT_MEMORY) {
         int rc = panel_flush(&p->panel, 0, y0, p->width, (uint16_t)(y1 - y0), px);
         if (violation(p, err, errlen)) return 3;
@@ -256,7 +245,6 @@ int panel_out_flush(struct panel_out *p, uint16_t y0, uint16_t y1, const uint16_
             return 1;
         }
     }
-#endif
     return 0;
 }
 
@@ -280,7 +268,6 @@ int panel_out_flush_rect(struct panel_out *p, uint16_t x, uint16_t y, uint16_t w
         if (p->fb) memcpy(p->fb + (size_t)(y + r) * p->width + x, px + (size_t)r * stride, (size_t)w * sizeof *px);
     }
     int rc = 0;
-#ifdef HOST_SIM_HAVE_HAL
     if (p->kind != OUT_MEMORY) {
         int prc = panel_flush(&p->panel, x, y, w, h, packed);
         if ((rc = violation(p, err, errlen)) == 0 && prc) {
@@ -288,45 +275,37 @@ int panel_out_flush_rect(struct panel_out *p, uint16_t x, uint16_t y, uint16_t w
             rc = 1;
         }
     }
-#endif
     free(packed);
     return rc;
 }
 
 int panel_out_finish(struct panel_out *p, char *err, size_t errlen)
 {
-#ifdef HOST_SIM_HAVE_HAL
     if (p->kind == OUT_SIM) {
         emu_panel_finish(p->emu, p->sim.t_ns);
         return violation(p, err, errlen);
     }
-#endif
     (void)p; (void)err; (void)errlen;
     return 0;
 }
 
 uint64_t panel_out_spi_bytes(const struct panel_out *p)
 {
-#ifdef HOST_SIM_HAVE_HAL
     if (p->kind == OUT_SIM) return p->sim.spi_bytes;
     if (p->kind == OUT_LINUX) return p->panel.dcs.bytes_sent;
-#endif
     (void)p;
     return 0;
 }
 
 uint64_t panel_out_bus_us(const struct panel_out *p)
 {
-#ifdef HOST_SIM_HAVE_HAL
     if (p->kind == OUT_SIM) return hal_sim_now_us(&p->sim);
-#endif
     (void)p;
     return 0;
 }
 
 int panel_out_read(struct panel_out *p, uint16_t *dst, char *err, size_t errlen)
 {
-#ifdef HOST_SIM_HAVE_HAL
     if (p->kind == OUT_SIM) {
         uint16_t gw = emu_panel_glass_width(p->emu), gh = emu_panel_glass_height(p->emu);
         if (gw < p->width || gh < p->height) {
@@ -349,7 +328,6 @@ int panel_out_read(struct panel_out *p, uint16_t *dst, char *err, size_t errlen)
         free(g);
         return 0;
     }
-#endif
     (void)err; (void)errlen;
     memcpy(dst, p->fb, (size_t)p->width * p->height * sizeof *dst);
     return 0;
@@ -358,12 +336,8 @@ int panel_out_read(struct panel_out *p, uint16_t *dst, char *err, size_t errlen)
 void panel_out_close(struct panel_out *p)
 {
     if (!p) return;
-#ifdef HOST_SIM_HAVE_LINUX
     if (p->lx_open) hal_linux_close(&p->lx);
-#endif
-#ifdef HOST_SIM_HAVE_HAL
     free(p->emu);
-#endif
     free(p->fb);
     free(p);
 }

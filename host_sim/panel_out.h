@@ -20,7 +20,7 @@
 struct panel_out;
 
 struct panel_out_opts {
-    const char *panel;    /* "st7789", "ili9341" or "none" */
+    const char *panel;    /* a controller of hal/panels.def ("st7789", "ili9341") or "none" */
     const char *backend;  /* "sim" or "linux" */
     const char *fault;    /* NULL, or a fault to inject (see panel_out_faults) */
     uint16_t width, height;
@@ -38,13 +38,20 @@ struct panel_out_opts {
 /* Names accepted in panel_out_opts.fault, separated by '|', for messages. */
 extern const char panel_out_faults[];
 
-/* The panel's native size (the default --size); -1 for an unknown panel.
+/* The panel's native size (the default --size): the size of the
+ * controller's first module in hal/panels.def; -1 for an unknown panel.
  * "none" has no native size (returns -1 too). */
 int panel_out_native(const char *panel, uint16_t *w, uint16_t *h);
 
+/* The panel names (controllers) --panel accepts, "st7789|ili9341", into buf;
+ * -1 if it does not fit. */
+int panel_out_controllers(char *buf, size_t len);
+
+/* The default panel: the controller of hal/panels.def's first module. */
+const char *panel_out_default(void);
+
 /* Opens the path and brings the panel up (reset, init sequence, display on).
- * Returns 2 if the panel is unknown, the size does not fit its memory or the
- * backend is not available in this build. */
+ * Returns 2 if the panel is unknown or no module of it holds the size. */
 int panel_out_open(struct panel_out **out, const struct panel_out_opts *o, char *err, size_t errlen);
 
 /* Sends rows [y0, y1) of the image: px holds (y1-y0)*width pixels, row-major. */

@@ -4,7 +4,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 
-#ifdef HOST_SIM_HAVE_SDL
+#ifdef WITH_SDL2
 #include <SDL.h>
 
 int window_available(void) { return 1; }

@@ -2,25 +2,16 @@
 #
 # For programs that link the HAL (host_sim, tests):
 #   $(call hal_objs,<variant>)  all HAL objects of a variant (mode "none")
-#   $(HAL_LDLIBS)               libraries they need (libgpiod when present)
+#   $(HAL_LDLIBS)               libraries they need (libgpiod with WITH_GPIOD=1)
 
-HAL_SRCS       := hal/dcs.c hal/panel.c hal/panel_st7789.c hal/panel_ili9341.c
+# (HAL_SRCS, the DCS layer and the panel drivers: the Makefile)
 HAL_SIM_SRCS   := hal/sim/emu_panel.c hal/sim/hal_sim.c
 HAL_LINUX_SRCS := hal/linux/hal_linux.c
 
-# libgpiod is optional for `make`/`make run` (only the Linux backend needs it);
-# `make test` installs it first (tools/deps.sh test) and re-reads this file.
-HAL_GPIOD := $(shell pkg-config --exists libgpiod 2>/dev/null && echo 1)
-ifeq ($(HAL_GPIOD),1)
-HAL_LDLIBS := $(shell pkg-config --libs libgpiod)
-# its API (1.x or 2.x) by the version pkg-config reports
-HAL_GPIOD_MAJOR := $(shell pkg-config --modversion libgpiod | cut -d. -f1)
-$(BUILD)/%/none/hal/linux/hal_linux.o $(BUILD)/%/none/tests/test_hal_linux.o: EXTRA_CFLAGS += -DGPIOD_API_MAJOR=$(HAL_GPIOD_MAJOR) \
-                                                       $(shell pkg-config --cflags libgpiod)
-else
-HAL_LDLIBS :=
-$(BUILD)/%/none/hal/linux/hal_linux.o $(BUILD)/%/none/tests/test_hal_linux.o: EXTRA_CFLAGS += -DHAL_LINUX_NO_GPIOD
-endif
+# libgpiod: the Makefile's WITH_GPIOD, GPIOD_FLAGS, GPIOD_LIBS.
+HAL_LDLIBS := $(GPIOD_LIBS)
+$(BUILD)/%/none/hal/linux/hal_linux.o $(BUILD)/%/none/tests/test_hal_linux.o: EXTRA_CFLAGS += $(GPIOD_FLAGS)
+$(foreach v,$(VARIANTS),$(call obj,$(v),none,hal/linux/hal_linux.c tests/test_hal_linux.c)): $(CONFIG_STAMP)
 
 hal_objs = $(call obj,$(1),none,$(HAL_SRCS) $(HAL_SIM_SRCS) $(HAL_LINUX_SRCS))
 

@@ -10,31 +10,10 @@
 HOST_SIM_SRCS := host_sim/main.c host_sim/imgio.c host_sim/panel_out.c host_sim/compare.c
 # the frame-rate overlay's font (--fps-overlay), shared with the firmware
 HOST_SIM_SRCS += firmware/app/font5x7.c
-# --window: SDL2 from the distribution when pkg-config finds it
-# (tools/deps.sh test installs it); without it the option says so, exit 2
+# --window: SDL2 (the Makefile's WITH_SDL2); without it the option says so, exit 2
 HOST_SIM_SRCS += host_sim/window.c
-HOST_SIM_SDL  := $(shell pkg-config --exists sdl2 2>/dev/null && echo 1)
-SDL_CFLAGS    := $(if $(HOST_SIM_SDL),-DHOST_SIM_HAVE_SDL $(patsubst -I%,-isystem %,$(shell pkg-config --cflags sdl2)))
-SDL_LIBS      := $(if $(HOST_SIM_SDL),$(shell pkg-config --libs sdl2))
-
-# The panel path needs the HAL (mk/hal.mk: hal_objs, HAL_LDLIBS); without its
-# sources host_sim still builds, with --panel none only.
-HOST_SIM_HAVE_HAL   := $(and $(wildcard hal/sim/hal_sim.c),$(value hal_objs))
-HOST_SIM_HAVE_LINUX := $(and $(HOST_SIM_HAVE_HAL),$(wildcard hal/linux/hal_linux.c))
-# (only the HAL sources present: the Linux backend may come later)
-host_sim_hal = $(if $(HOST_SIM_HAVE_HAL),$(call obj,$(1),none,$(wildcard $(HAL_SRCS) $(HAL_SIM_SRCS) $(HAL_LINUX_SRCS))))
-HOST_SIM_DEFS := $(if $(HOST_SIM_HAVE_HAL),-DHOST_SIM_HAVE_HAL) $(if $(HOST_SIM_HAVE_LINUX),-DHOST_SIM_HAVE_LINUX) $(if $(HOST_SIM_SDL),-DHOST_SIM_HAVE_SDL)
-$(foreach v,$(VARIANTS),$(call obj,$(v),none,host_sim/panel_out.c)): EXTRA_CFLAGS += $(HOST_SIM_DEFS)
-# Rebuild panel_out when those flags change (the HAL arriving): a file that
-# holds them, rewritten only when they differ.
-HOST_SIM_CONFIG := $(BUILD)/host_sim.config
-$(shell mkdir -p $(BUILD) && { echo '$(HOST_SIM_DEFS)' | cmp -s - $(HOST_SIM_CONFIG) || \
-          echo '$(HOST_SIM_DEFS)' >$(HOST_SIM_CONFIG); })
-$(HOST_SIM_CONFIG):
-	@mkdir -p $(@D) && echo '$(HOST_SIM_DEFS)' >$@
-$(foreach v,$(VARIANTS),$(call obj,$(v),none,host_sim/panel_out.c)): $(HOST_SIM_CONFIG)
-$(foreach v,$(VARIANTS),$(call obj,$(v),none,host_sim/window.c)): $(HOST_SIM_CONFIG)
-$(foreach v,$(VARIANTS),$(call obj,$(v),none,host_sim/window.c)): EXTRA_CFLAGS += $(SDL_CFLAGS)
+$(foreach v,$(VARIANTS),$(call obj,$(v),none,host_sim/window.c)): EXTRA_CFLAGS += $(SDL2_FLAGS)
+$(foreach v,$(VARIANTS),$(call obj,$(v),none,host_sim/window.c)): $(CONFIG_STAMP)
 
 # libpng through pkg-config; recursive (=) so that it is asked only when a
 # recipe runs, after tools/deps.sh may have installed it.
@@ -50,9 +29,9 @@ HOST_SIM_BIN_asan := $(BUILD)/asan/host_sim
 
 define HOST_SIM_LINK
 $(HOST_SIM_BIN_$(1)): $(call obj,$(1),none,$(HOST_SIM_SRCS)) $(call core_bundles,$(1)) $(call core_frac_bundles,$(1)) \
-                      $(call host_sim_hal,$(1))
+                      $(call hal_objs,$(1))
 	@mkdir -p $$(@D)
-	$(Q)$$(CC) $(LDFLAGS_$(1)) -o $$@ $$^ $$(PNG_LIBS) $(if $(HOST_SIM_HAVE_HAL),$$(HAL_LDLIBS)) $$(SDL_LIBS) -lm
+	$(Q)$$(CC) $(LDFLAGS_$(1)) -o $$@ $$^ $$(PNG_LIBS) $$(HAL_LDLIBS) $$(SDL2_LIBS) -lm
 endef
 $(foreach v,$(VARIANTS),$(eval $(call HOST_SIM_LINK,$(v))))
 

@@ -7,28 +7,19 @@
 
 NUM_SRCS       := firmware/core/num.c firmware/core/vec.c
 NUM_TEST_MODES := fixed fixed12 fixed20 float double
-NUMX_CFLAGS_fixed12 := -DNUM_MODE=1 -DNUM_FRAC=12 -DNUM_PORTABLE_INT
-NUMX_CFLAGS_fixed20 := -DNUM_MODE=1 -DNUM_FRAC=20
+COMPILE_MODES       += fixed12 fixed20 fixed16p
+MODE_FLAGS_fixed12  := -DNUM_MODE=1 -DNUM_FRAC=12 -DNUM_PORTABLE_INT
+MODE_FLAGS_fixed20  := -DNUM_MODE=1 -DNUM_FRAC=20
 # fixed16p: the firmware default format with the portable ARMv6-M kernels.
-NUMX_CFLAGS_fixed16p := -DNUM_MODE=1 -DNUM_FRAC=16 -DNUM_PORTABLE_INT
-
-define NUM_EXTRA_MODE
-$(BUILD)/$(1)/$(2)/%.o: %.c
-	@mkdir -p $$(@D)
-	$(Q)$$(CC) $(CSTD) $(WARN) $(VFLAGS_$(1)) $(NUMX_CFLAGS_$(2)) $(INCLUDES) -Itests $$(EXTRA_CFLAGS) -MMD -MP -c $$< -o $$@
-endef
-$(foreach v,$(VARIANTS),$(foreach m,fixed12 fixed20 fixed16p,$(eval $(call NUM_EXTRA_MODE,$(v),$(m)))))
+MODE_FLAGS_fixed16p := -DNUM_MODE=1 -DNUM_FRAC=16 -DNUM_PORTABLE_INT
 
 # tests/test_num.c includes tests/check.h
 $(BUILD)/host/%/tests/test_num.o $(BUILD)/asan/%/tests/test_num.o: EXTRA_CFLAGS += -Itests
 $(BUILD)/host/%/tests/test_num_kernels.o $(BUILD)/asan/%/tests/test_num_kernels.o: EXTRA_CFLAGS += -Itests
 $(BUILD)/host/%/tests/test_num_div.o $(BUILD)/asan/%/tests/test_num_div.o: EXTRA_CFLAGS += -Itests
 
-define NUM_TEST_PROG
-$(BUILD)/$(1)/test_num_$(2): $(call obj,$(1),$(2),tests/test_num.c $(NUM_SRCS))
-	$(Q)$$(CC) $(LDFLAGS_$(1)) -o $$@ $$^ -lm
-endef
-$(foreach v,$(VARIANTS),$(foreach m,$(NUM_TEST_MODES),$(eval $(call NUM_TEST_PROG,$(v),$(m)))))
+$(foreach v,$(VARIANTS),$(foreach m,$(NUM_TEST_MODES),\
+    $(call program,$(BUILD)/$(v)/test_num_$(m),$(call obj,$(v),$(m),tests/test_num.c $(NUM_SRCS)),$(v))))
 
 TEST_DEPS += $(foreach m,$(NUM_TEST_MODES),$(BUILD)/asan/test_num_$(m))
 TESTS     += $(foreach m,$(NUM_TEST_MODES),$(BUILD)/asan/test_num_$(m))
@@ -36,11 +27,8 @@ TESTS     += $(foreach m,$(NUM_TEST_MODES),$(BUILD)/asan/test_num_$(m))
 # The square-root kernels against slow references, bit for bit (fixed point;
 # fixed12 runs the portable ARMv6-M integer paths).
 NUM_KERNEL_MODES := fixed fixed12 fixed20
-define NUM_KERNEL_PROG
-$(BUILD)/$(1)/test_num_kernels_$(2): $(call obj,$(1),$(2),tests/test_num_kernels.c $(NUM_SRCS))
-	$(Q)$$(CC) $(LDFLAGS_$(1)) -o $$@ $$^ -lm
-endef
-$(foreach v,$(VARIANTS),$(foreach m,$(NUM_KERNEL_MODES),$(eval $(call NUM_KERNEL_PROG,$(v),$(m)))))
+$(foreach v,$(VARIANTS),$(foreach m,$(NUM_KERNEL_MODES),\
+    $(call program,$(BUILD)/$(v)/test_num_kernels_$(m),$(call obj,$(v),$(m),tests/test_num_kernels.c $(NUM_SRCS)),$(v))))
 TEST_DEPS += $(foreach m,$(NUM_KERNEL_MODES),$(BUILD)/asan/test_num_kernels_$(m))
 TESTS     += $(foreach m,$(NUM_KERNEL_MODES),$(BUILD)/asan/test_num_kernels_$(m))
 
@@ -48,11 +36,8 @@ TESTS     += $(foreach m,$(NUM_KERNEL_MODES),$(BUILD)/asan/test_num_kernels_$(m)
 # (fixed12, fixed16p: the ARMv6-M reciprocal digits and 16x16 products;
 # fixed, fixed20: the 32-bit hardware-divide digits, as on ARMv7-M).
 NUM_DIV_MODES := $(NUM_KERNEL_MODES) fixed16p
-define NUM_DIV_PROG
-$(BUILD)/$(1)/test_num_div_$(2): $(call obj,$(1),$(2),tests/test_num_div.c $(NUM_SRCS))
-	$(Q)$$(CC) $(LDFLAGS_$(1)) -o $$@ $$^ -lm
-endef
-$(foreach v,$(VARIANTS),$(foreach m,$(NUM_DIV_MODES),$(eval $(call NUM_DIV_PROG,$(v),$(m)))))
+$(foreach v,$(VARIANTS),$(foreach m,$(NUM_DIV_MODES),\
+    $(call program,$(BUILD)/$(v)/test_num_div_$(m),$(call obj,$(v),$(m),tests/test_num_div.c $(NUM_SRCS)),$(v))))
 TEST_DEPS += $(foreach m,$(NUM_DIV_MODES),$(BUILD)/asan/test_num_div_$(m))
 TESTS     += $(foreach m,$(NUM_DIV_MODES),$(BUILD)/asan/test_num_div_$(m))
 

@@ -56,7 +56,7 @@ $(GPIOD2_LIB): $(GPIOD2_SRC)/.unpacked
 define GPIOD2_COMPILE
 $(GPIOD2_DIR)/obj/$(1)/%.o: %.c $(GPIOD2_LIB)
 	@mkdir -p $$(@D)
-	$(Q)$$(CC) $(CSTD) $(WARN) $(VFLAGS_$(1)) $(INCLUDES) -Itools/flasher -Itests -DFLASHER_GPIOD \
+	$(Q)$$(CC) $(CSTD) $(WARN) $(VFLAGS_$(1)) $(INCLUDES) -Itools/flasher -Itests -DWITH_GPIOD \
 		-DGPIOD_API_MAJOR=$$(call gpiod_major,$(GPIOD2_PC_DIR)) $$(call gpiod_pc,$(GPIOD2_PC_DIR),--cflags) \
 		-MMD -MP -c $$< -o $$@
 endef
@@ -74,8 +74,8 @@ $(GPIOD2_DIR)/test_hal_linux: $(call gpiod2_obj,asan,tests/test_hal_linux.c hal/
 # host_sim with the Linux backend on libgpiod 2 (the rest as $(BUILD)/host_sim).
 GPIOD2_HOST_SIM := $(GPIOD2_DIR)/host_sim
 $(GPIOD2_HOST_SIM): $(call obj,host,none,$(HOST_SIM_SRCS)) $(call core_bundles,host) $(call core_frac_bundles,host) \
-                    $(filter-out %/hal_linux.o,$(call host_sim_hal,host)) $(call gpiod2_obj,host,hal/linux/hal_linux.c)
-	$(Q)$(CC) $(LDFLAGS_host) -o $@ $^ $(PNG_LIBS) $(call gpiod_pc,$(GPIOD2_PC_DIR),--libs) $(SDL_LIBS) -lm
+                    $(filter-out %/hal_linux.o,$(call hal_objs,host)) $(call gpiod2_obj,host,hal/linux/hal_linux.c)
+	$(Q)$(CC) $(LDFLAGS_host) -o $@ $^ $(PNG_LIBS) $(call gpiod_pc,$(GPIOD2_PC_DIR),--libs) $(SDL2_LIBS) -lm
 
 # The LD_PRELOAD shim, once per API: the emulated panel behind spidev and a
 # fake libgpiod (position-independent objects of their own).
@@ -83,7 +83,7 @@ SHIM_SRCS := tests/shim_linux_panel.c tests/fake_gpiod.c hal/sim/emu_panel.c
 $(BUILD)/shim/v1/%.o: %.c
 	@mkdir -p $(@D)
 	$(Q)$(CC) $(CSTD) $(WARN) $(HOST_OPT) -fPIC $(INCLUDES) -Itests \
-		-DGPIOD_API_MAJOR=$(HAL_GPIOD_MAJOR) $(shell pkg-config --cflags libgpiod 2>/dev/null) -MMD -MP -c $< -o $@
+		$(GPIOD_FLAGS) -MMD -MP -c $< -o $@
 $(BUILD)/shim/v2/%.o: %.c $(GPIOD2_LIB)
 	@mkdir -p $(@D)
 	$(Q)$(CC) $(CSTD) $(WARN) $(HOST_OPT) -fPIC $(INCLUDES) -Itests \
@@ -93,7 +93,7 @@ $(BUILD)/shim/v2/%.o: %.c $(GPIOD2_LIB)
 $(BUILD)/shim/%/shim_linux_panel.so: $(foreach s,$(SHIM_SRCS),$(BUILD)/shim/%/$(s:.c=.o))
 	$(Q)$(CC) -shared -o $@ $^ -ldl
 
-ifeq ($(HAL_GPIOD),1)
+ifeq ($(WITH_GPIOD),1)
 GPIOD2_TESTS := $(GPIOD2_DIR)/test_gpio_reset $(GPIOD2_DIR)/test_hal_linux
 TEST_DEPS += $(GPIOD2_TESTS) $(GPIOD2_HOST_SIM) $(BUILD)/shim/v1/shim_linux_panel.so \
              $(BUILD)/shim/v2/shim_linux_panel.so

@@ -3,31 +3,18 @@
 # Test programs link the core sources of one numeric mode directly, plus
 # the scene parser: they load the book's scene files (tests/scene_files.h).
 # The cross-mode accuracy test links three per-mode bundles (core + parser
-# + a small API), each keeping only its raster_api_<mode> symbol, like
-# mk/core.mk does.
+# + a small API), each keeping only its raster_api_<mode> symbol (the
+# Makefile's bundle).
 
 RASTER_TEST_SRCS := tools/scene/scene_parse.c
 
-define RASTER_PROG
-$(BUILD)/$(1)/tests/$(2)_$(3): $(call obj,$(1),$(3),tests/$(2).c $(RASTER_TEST_SRCS) $(CORE_SRCS))
-	@mkdir -p $$(@D)
-	$(Q)$$(CC) $(LDFLAGS_$(1)) -o $$@ $$^ -lm
-endef
-$(foreach v,$(VARIANTS),$(foreach m,$(NUM_MODES),$(foreach p,test_raster_book test_raster,$(eval $(call RASTER_PROG,$(v),$(p),$(m))))))
+$(foreach v,$(VARIANTS),$(foreach m,$(NUM_MODES),$(foreach p,test_raster_book test_raster,$(call program,\
+    $(BUILD)/$(v)/tests/$(p)_$(m),$(call obj,$(v),$(m),tests/$(p).c $(RASTER_TEST_SRCS) $(CORE_SRCS)),$(v)))))
 
-define RASTER_BUNDLE
-$(BUILD)/$(1)/raster_api_$(2).o: $(call obj,$(1),$(2),$(CORE_SRCS) $(RASTER_TEST_SRCS) tests/raster_api.c)
-	@mkdir -p $$(@D)
-	$(Q)ld -r -o $$@.tmp $$^
-	$(Q)objcopy --keep-global-symbol=raster_api_$(2) $$@.tmp $$@
-	$(Q)rm -f $$@.tmp
-endef
-$(foreach v,$(VARIANTS),$(foreach m,$(NUM_MODES),$(eval $(call RASTER_BUNDLE,$(v),$(m)))))
-
-$(BUILD)/%/tests/test_raster_modes: $(BUILD)/%/none/tests/test_raster_modes.o \
-		$(BUILD)/%/raster_api_fixed.o $(BUILD)/%/raster_api_float.o $(BUILD)/%/raster_api_double.o
-	@mkdir -p $(@D)
-	$(Q)$(CC) $(LDFLAGS_$*) -o $@ $^ -lm
+$(foreach v,$(VARIANTS),$(foreach m,$(NUM_MODES),$(call bundle,$(BUILD)/$(v)/raster_api_$(m).o,\
+    $(call obj,$(v),$(m),$(CORE_SRCS) $(RASTER_TEST_SRCS) tests/raster_api.c),raster_api_$(m))))
+$(foreach v,$(VARIANTS),$(call program,$(BUILD)/$(v)/tests/test_raster_modes,\
+    $(call obj,$(v),none,tests/test_raster_modes.c) $(foreach m,$(NUM_MODES),$(BUILD)/$(v)/raster_api_$(m).o),$(v)))
 
 RASTER_TESTS := $(BUILD)/asan/tests/test_raster_book_double:$(BUILD) \
                 $(BUILD)/asan/tests/test_raster_fixed $(BUILD)/asan/tests/test_raster_float \
@@ -37,12 +24,8 @@ TESTS += $(RASTER_TESTS)
 TEST_DEPS += $(foreach t,$(RASTER_TESTS),$(firstword $(subst :, ,$(t))))
 
 # The book's scene files through the parser and core_api (three modes).
-define RASTER_SCENES_PROG
-$(BUILD)/$(1)/tests/test_raster_scenes: $(call obj,$(1),none,tests/test_raster_scenes.c) $(call core_bundles,$(1))
-	@mkdir -p $$(@D)
-	$(Q)$$(CC) $(LDFLAGS_$(1)) -o $$@ $$^ -lm
-endef
-$(foreach v,$(VARIANTS),$(eval $(call RASTER_SCENES_PROG,$(v))))
+$(foreach v,$(VARIANTS),$(call program,$(BUILD)/$(v)/tests/test_raster_scenes,\
+    $(call obj,$(v),none,tests/test_raster_scenes.c) $(call core_bundles,$(v)),$(v)))
 TESTS += $(BUILD)/host/tests/test_raster_scenes
 TEST_DEPS += $(BUILD)/host/tests/test_raster_scenes
 
@@ -58,12 +41,8 @@ $(foreach t,$(BENCH_TARGETS),$(foreach m,fixed float,\
 
 # Chapter 15 (normal maps, environment maps, shadow maps, shadow volumes)
 # through the parser and core_api in three modes, and the demo scenes.
-define RASTER_CH15_PROG
-$(BUILD)/$(1)/tests/test_raster_ch15: $(call obj,$(1),none,tests/test_raster_ch15.c) $(call core_bundles,$(1))
-	@mkdir -p $$(@D)
-	$(Q)$$(CC) $(LDFLAGS_$(1)) -o $$@ $$^ -lm
-endef
-$(foreach v,$(VARIANTS),$(eval $(call RASTER_CH15_PROG,$(v))))
+$(foreach v,$(VARIANTS),$(call program,$(BUILD)/$(v)/tests/test_raster_ch15,\
+    $(call obj,$(v),none,tests/test_raster_ch15.c) $(call core_bundles,$(v)),$(v)))
 TESTS += $(BUILD)/host/tests/test_raster_ch15
 TEST_DEPS += $(BUILD)/host/tests/test_raster_ch15
 

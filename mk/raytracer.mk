@@ -6,12 +6,8 @@
 
 # test_raytracer_<mode>: one program per numeric mode (the core's symbols
 # clash between modes), in both variants.
-define RT_TEST_PROG
-$(BUILD)/$(1)/test_raytracer_$(2): $(call obj,$(1),$(2),tests/test_raytracer.c $(CORE_SRCS) $(SCENE_SRCS))
-	@mkdir -p $$(@D)
-	$(Q)$$(CC) $(LDFLAGS_$(1)) -o $$@ $$^ -lm
-endef
-$(foreach v,$(VARIANTS),$(foreach m,$(NUM_MODES),$(eval $(call RT_TEST_PROG,$(v),$(m)))))
+$(foreach v,$(VARIANTS),$(foreach m,$(NUM_MODES),$(call program,$(BUILD)/$(v)/test_raytracer_$(m),\
+    $(call obj,$(v),$(m),tests/test_raytracer.c $(CORE_SRCS) $(SCENE_SRCS)),$(v))))
 
 RT_TEST_BINS := $(foreach m,$(NUM_MODES),$(BUILD)/asan/test_raytracer_$(m)) $(BUILD)/host/test_raytracer_double
 TEST_DEPS += $(RT_TEST_BINS)
@@ -29,21 +25,10 @@ test-raytracer: $(RT_TEST_BINS) $(BUILD)/host/test_raytracer_accuracy
 # core + scene parser become one object exporting only rtacc_<mode>.
 $(foreach v,$(VARIANTS),$(foreach m,$(NUM_MODES),$(eval \
     $(call obj,$(v),$(m),tests/rt_acc_api.c): EXTRA_CFLAGS += -DRTACC_NAME=rtacc_$(m))))
-define RT_ACC_BUNDLE
-$(BUILD)/$(1)/rtacc_$(2).o: $(call obj,$(1),$(2),tests/rt_acc_api.c $(CORE_SRCS) $(SCENE_SRCS))
-	@mkdir -p $$(@D)
-	$(Q)ld -r -o $$@.tmp $$^
-	$(Q)objcopy --keep-global-symbol=rtacc_$(2) $$@.tmp $$@
-	$(Q)rm -f $$@.tmp
-endef
-$(foreach v,$(VARIANTS),$(foreach m,$(NUM_MODES),$(eval $(call RT_ACC_BUNDLE,$(v),$(m)))))
-define RT_ACC_PROG
-$(BUILD)/$(1)/test_raytracer_accuracy: $(call obj,$(1),none,tests/test_raytracer_accuracy.c) \
-        $(foreach m,$(NUM_MODES),$(BUILD)/$(1)/rtacc_$(m).o)
-	@mkdir -p $$(@D)
-	$(Q)$$(CC) $(LDFLAGS_$(1)) -o $$@ $$^ -lm
-endef
-$(foreach v,$(VARIANTS),$(eval $(call RT_ACC_PROG,$(v))))
+$(foreach v,$(VARIANTS),$(foreach m,$(NUM_MODES),$(call bundle,$(BUILD)/$(v)/rtacc_$(m).o,\
+    $(call obj,$(v),$(m),tests/rt_acc_api.c $(CORE_SRCS) $(SCENE_SRCS)),rtacc_$(m))))
+$(foreach v,$(VARIANTS),$(call program,$(BUILD)/$(v)/test_raytracer_accuracy,\
+    $(call obj,$(v),none,tests/test_raytracer_accuracy.c) $(foreach m,$(NUM_MODES),$(BUILD)/$(v)/rtacc_$(m).o),$(v)))
 TEST_DEPS += $(BUILD)/host/test_raytracer_accuracy
 # The big comparison runs optimised (30 renders, 15 of them 600x600).
 TESTS += $(BUILD)/host/test_raytracer_accuracy

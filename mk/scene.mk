@@ -4,12 +4,8 @@
 SCENE_PARSER_SRCS := tools/scene/scene_parse.c firmware/core/num.c firmware/core/vec.c firmware/core/mipmap.c
 
 # test_scene_<mode>: the parser built alone in each numeric mode.
-define SCENE_TEST
-$(BUILD)/$(1)/test_scene_$(2): $(call obj,$(1),$(2),tests/test_scene.c $(SCENE_PARSER_SRCS))
-	@mkdir -p $$(@D)
-	$(Q)$$(CC) $(LDFLAGS_$(1)) -o $$@ $$^ -lm
-endef
-$(foreach m,$(NUM_MODES),$(eval $(call SCENE_TEST,asan,$(m))))
+$(foreach m,$(NUM_MODES),$(call program,$(BUILD)/asan/test_scene_$(m),\
+    $(call obj,asan,$(m),tests/test_scene.c $(SCENE_PARSER_SRCS)),asan))
 $(BUILD)/asan/%/tests/test_scene.o: EXTRA_CFLAGS += -Itests
 
 SCENE_TESTS := $(foreach m,$(NUM_MODES),$(BUILD)/asan/test_scene_$(m))
@@ -36,7 +32,6 @@ TESTS += tests/test_scene_fuzz.sh:$(FUZZ_SCENE):$(FUZZ_SECONDS)
 # Built in the double mode (the parser's exact doubles are emitted as NUM_C
 # literals) and linked with the NUM_FRAC 12 core bundle for render_work_size
 # (its fallback when the target's is not given).
-SCENEC := $(BUILD)/scenec
 $(SCENEC): $(call obj,host,double,tools/scenec/scenec.c tools/scene/scene_format.c $(SCENE_PARSER_SRCS)) $(BUILD)/host/core_fixed12.o
 	@mkdir -p $(@D)
 	$(Q)$(CC) -o $@ $^ -lm
@@ -49,12 +44,8 @@ SCENE_FILES := $(sort $(shell find firmware/scenes -name '*.scene' 2>/dev/null))
 SCENE_CSRCS := $(patsubst firmware/scenes/%.scene,$(BUILD)/scenes/%.c,$(SCENE_FILES))
 # The work size is the target's (SCENE_TARGET_WORK=0: this host's upper bound).
 SCENE_TARGET_WORK ?= 1
-SCENE_PROBE := $(BUILD)/scenes/work_probe.elf
-$(BUILD)/scenes/%.c: firmware/scenes/%.scene $(SCENEC) $(if $(filter 1,$(SCENE_TARGET_WORK)),$(SCENE_PROBE))
-	@mkdir -p $(@D)
-	$(Q)tw=$(if $(filter 1,$(SCENE_TARGET_WORK)),$$(tools/scenec/target_work.sh $(SCENE_PROBE) $< $(subst x, ,$(SCENE_SIZE)) $(SCENE_STRIP)) || exit 2;) \
-	$(SCENEC) --size $(SCENE_SIZE) --strip-rows $(SCENE_STRIP) $(if $(filter 1,$(SCENE_TARGET_WORK)),--target-work $$tw) \
-		-o $@ $< > $(@:.c=.log) || { cat $(@:.c=.log); exit 2; }
+$(foreach f,$(SCENE_FILES),$(call scenec_rule,$(patsubst firmware/scenes/%.scene,$(BUILD)/scenes/%.c,$(f)),\
+    $(patsubst firmware/scenes/%.scene,%,$(f)),$(SCENE_SIZE),$(SCENE_STRIP),,$(SCENE_TARGET_WORK)))
 
 # The work probe: core + parser for the Cortex-M0+ at NUM_FRAC 12, run in
 # qemu-system-arm by tools/scenec/target_work.sh (file I/O by semihosting).
@@ -83,13 +74,8 @@ SCENE_FRACS       := $(CORE_FRACS)
 SCENE_FRAC_MODES  := $(CORE_FRAC_MODES)
 
 # test_scene_fracs: every scene at every format against the double core.
-define SCENE_FRACS_PROG
-$(BUILD)/$(1)/test_scene_fracs: $(call obj,$(1),none,tests/test_scene_fracs.c host_sim/compare.c) \
-    $(foreach m,$(SCENE_FRAC_MODES) fixed double,$(BUILD)/$(1)/core_$(m).o)
-	@mkdir -p $$(@D)
-	$(Q)$$(CC) $(LDFLAGS_$(1)) -o $$@ $$^ -lm
-endef
-$(foreach v,$(VARIANTS),$(eval $(call SCENE_FRACS_PROG,$(v))))
+$(foreach v,$(VARIANTS),$(call program,$(BUILD)/$(v)/test_scene_fracs,$(call obj,$(v),none,tests/test_scene_fracs.c \
+    host_sim/compare.c) $(foreach m,$(SCENE_FRAC_MODES) fixed double,$(BUILD)/$(v)/core_$(m).o),$(v)))
 $(foreach v,$(VARIANTS),$(call obj,$(v),none,tests/test_scene_fracs.c)): EXTRA_CFLAGS += -Itests -Ihost_sim
 .PHONY: scene-fracs-report
 scene-fracs-report: $(BUILD)/host/test_scene_fracs

@@ -14,20 +14,11 @@ FWH_SRCS    := firmware/app/main.c firmware/app/font5x7.c $(HAL_SRCS) $(HAL_SIM_
 FWH_OBJS    := $(patsubst %.c,$(FWH)/obj/%.o,$(FWH_SRCS)) \
                $(patsubst $(FWH)/scenes/%.c,$(FWH)/obj/scenes/%.o,$(FWH_SCENE_C) $(FWH)/scenes/fw_scenes_host.c)
 
-define FWH_SCENE
-$(FWH)/scenes/$(call fw_scene_id,$(1)).c: firmware/scenes/$(1).scene $(SCENEC)
-	@mkdir -p $$(@D)
-	$$(Q)$(SCENEC) --size 240x240 --strip-rows $(FWH_STRIP) --id $(call fw_scene_id,$(1)) \
-		-o $$@ $$< >$$(@:.c=.log) || { cat $$(@:.c=.log); exit 2; }
-$(FWH)/scenes/$(call fw_scene_id,$(1)).h: $(FWH)/scenes/$(call fw_scene_id,$(1)).c
-endef
-$(foreach n,$(FWH_SCENES),$(eval $(call FWH_SCENE,$(n))))
+$(foreach n,$(FWH_SCENES),\
+    $(call scenec_rule,$(FWH)/scenes/$(call fw_scene_id,$(n)).c,$(n),240x240,$(FWH_STRIP),$(call fw_scene_id,$(n)),0))
 $(FWH)/scenes/fw_scenes_host.c: $(FWH_SCENE_C:.c=.h) firmware/app/scene_table.sh
 	$(Q)firmware/app/scene_table.sh $@ $(foreach n,$(FWH_SCENES),$(n)=$(FWH)/scenes/$(call fw_scene_id,$(n)).h)
-$(FWH)/scenes/num_frac.h: $(FWH_SCENE_C:.c=.h)
-	$(Q)f=$$(sed -n 's/^#define SCENE_[A-Za-z0-9_]*_NUM_FRAC *\([0-9][0-9]*\)$$/\1/p' $^ | sort -n | head -n 1); \
-	[ -n "$$f" ] || { echo "$@: no SCENE_<ID>_NUM_FRAC in $^" >&2; exit 2; }; \
-	printf '#ifndef NUM_FRAC\n#define NUM_FRAC %s\n#endif\n' "$$f" >$@
+$(call scene_frac_rule,$(FWH)/scenes/num_frac.h,$(FWH_SCENE_C:.c=.h))
 
 $(FWH)/obj/firmware/app/main.o: FWH_MAIN := -Dmain=fw_app_main
 $(FWH)/obj/%.o: %.c $(FWH)/scenes/num_frac.h $(FWH_SCENE_C:.c=.h)

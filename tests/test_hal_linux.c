@@ -26,7 +26,7 @@ int main(void)
     rc = hal_linux_open(&l, &h, &cfg);
     check(rc == -1 && strcmp(hal_linux_error(&l), "hal_linux: SPI mode 4 out of range 0..3") == 0,
           "hal_linux_rejects_bad_spi_mode", "rc %d: %s", rc, hal_linux_error(&l));
-#ifndef HAL_LINUX_NO_GPIOD
+#ifdef WITH_GPIOD
 #if GPIOD_API_MAJOR >= 2
     check(1, "hal_linux_libgpiod_api_2", "");
 #else

@@ -8,10 +8,8 @@ hs=${1:?usage: test_host_sim.sh HOST_SIM}
 tmp=$(mktemp -d)
 trap 'chmod -R u+w "$tmp" 2>/dev/null; rm -rf "$tmp"' EXIT
 
-# A scene to render: the book's raytracer-02 once it exists, else a small
-# scene of the tests.
+# A scene to render: the book's raytracer-02.
 scene=firmware/scenes/book/raytracer-02.scene
-[ -f "$scene" ] || scene=tests/data/spheres.scene
 
 pass() { echo "PASS $1"; }
 fail() { echo "FAIL $1: $2"; }
@@ -52,10 +50,6 @@ png_size() {
 
 fsize() { wc -c <"$1" | tr -d ' '; }
 
-# Panel path available in this build?
-run --scene "$scene" --size 8x8
-if grep -q "not available in this build" "$tmp/e"; then panels=0; else panels=1; fi
-
 # ---- usage errors -----------------------------------------------------------
 expect_err no_args 2 "scene" 
 expect_err unknown_option 2 "unknown option '--frobnicate'" --scene "$scene" --frobnicate
@@ -84,21 +78,16 @@ if [ "$rc" -eq 0 ] && grep -q -- "--scene FILE" "$tmp/o"; then pass help; else f
 
 # Scene errors are printed as the parser returns them: FILE:LINE:COLUMN: error: MESSAGE.
 run --scene tests/data/bad.scene --panel none --size 4x4
-if [ "$rc" -eq 0 ]; then
-  skip scene_error_format "the parser in this build accepts any readable file"
-elif [ "$rc" -eq 2 ] && [ "$(wc -l <"$tmp/e")" -eq 1 ] &&
+if [ "$rc" -eq 2 ] && [ "$(wc -l <"$tmp/e")" -eq 1 ] &&
      grep -q '^tests/data/bad.scene:[0-9][0-9]*:[0-9][0-9]*: error: ' "$tmp/e"; then
   pass scene_error_format
 else
   fail scene_error_format "exit $rc: $(cat "$tmp/e")"
 fi
 
-# --backend linux: either built in, or refused with exit 2.
-run --scene "$scene" --backend linux --size 8x8
-if grep -q "backend linux not available in this build" "$tmp/e"; then
-  [ "$rc" -eq 2 ] && pass backend_linux_unavailable || fail backend_linux_unavailable "exit $rc"
-elif [ ! -e /dev/spidev0.0 ]; then
-  # Built in, but no SPI device here: a one-line error, exit 2, no file written.
+# --backend linux without an SPI device: a one-line error, exit 2, no file
+# written (tests/test_linux_backend.sh runs it against an emulated device).
+if [ ! -e /dev/spidev0.0 ]; then
   expect_err backend_linux_no_device 2 "backend linux" --scene "$scene" --backend linux --out "$tmp/l.png"
   [ ! -e "$tmp/l.png" ] && pass backend_linux_no_file || fail backend_linux_no_file "l.png was written"
 else
@@ -121,9 +110,8 @@ run --scene "$scene" --panel none --size 64x48 --out "$tmp/n.ppm"
 hdr=$(head -c 13 "$tmp/n.ppm" | tr '\n' ' ')
 [ "$rc" -eq 0 ] && [ "$hdr" = "P6 64 48 255 " ] && [ "$(fsize "$tmp/n.ppm")" = $((13 + 64 * 48 * 3)) ] &&
   pass out_ppm || fail out_ppm "exit $rc, header '$hdr'"
-# The PNG and the PPM hold the same pixels: compare through python if present.
-if command -v python3 >/dev/null 2>&1 && python3 -c 'import zlib' 2>/dev/null; then
-  if python3 - "$tmp/n.png" "$tmp/n.ppm" "$tmp/n.raw" <<'PY'
+# The PNG and the PPM hold the same pixels.
+if python3 - "$tmp/n.png" "$tmp/n.ppm" "$tmp/n.raw" <<'PY'
 import struct, sys, zlib
 png = open(sys.argv[1], 'rb').read()
 pos, idat, w, h = 8, b'', 0, 0
@@ -154,8 +142,7 @@ for k in range(0, len(rw), 2):
     exp += bytes((r << 3 | r >> 2, g << 2 | g >> 4, b << 3 | b >> 2))
 sys.exit(0 if bytes(out) == ppm == bytes(exp) else 1)
 PY
-  then pass png_ppm_raw_same_pixels; else fail png_ppm_raw_same_pixels "PNG, PPM and raw differ"; fi
-fi
+then pass png_ppm_raw_same_pixels; else fail png_ppm_raw_same_pixels "PNG, PPM and raw differ"; fi
 
 # Default size with --panel none: the scene's canvas.
 run --scene "$scene" --panel none --out "$tmp/c.png"
@@ -213,18 +200,14 @@ for i, l in enumerate(lines):
         if not isinstance(o[k], int) or o[k] < 0: sys.exit("%s not a count: %r" % (k, o[k]))
 PY
 }
-if command -v python3 >/dev/null 2>&1; then
-  run --scene "$scene" --panel none --size 32x24 --stats
-  if [ "$rc" -eq 0 ] && msg=$(stats_check "$tmp/o" 1 2>&1); then pass stats_json; else fail stats_json "exit $rc: $msg"; fi
-  run --scene "$scene" --panel none --size 32x24 --stats --frames 3
-  if [ "$rc" -eq 0 ] && msg=$(stats_check "$tmp/o" 3 2>&1); then pass stats_frames; else fail stats_frames "exit $rc: $msg"; fi
-  run --scene "$scene" --panel none --size 32x24 --stats --numeric double --compare fixed
-  if [ "$rc" -eq 0 ] && msg=$(stats_check "$tmp/o" 1 2>&1) &&
-     python3 -c 'import json,sys; o=json.loads(open(sys.argv[1]).read()); assert "psnr" in o and "max_err" in o' "$tmp/o"
-  then pass stats_compare; else fail stats_compare "exit $rc: $msg"; fi
-else
-  skip stats_json "python3 not installed"
-fi
+run --scene "$scene" --panel none --size 32x24 --stats
+if [ "$rc" -eq 0 ] && msg=$(stats_check "$tmp/o" 1 2>&1); then pass stats_json; else fail stats_json "exit $rc: $msg"; fi
+run --scene "$scene" --panel none --size 32x24 --stats --frames 3
+if [ "$rc" -eq 0 ] && msg=$(stats_check "$tmp/o" 3 2>&1); then pass stats_frames; else fail stats_frames "exit $rc: $msg"; fi
+run --scene "$scene" --panel none --size 32x24 --stats --numeric double --compare fixed
+if [ "$rc" -eq 0 ] && msg=$(stats_check "$tmp/o" 1 2>&1) &&
+   python3 -c 'import json,sys; o=json.loads(open(sys.argv[1]).read()); assert "psnr" in o and "max_err" in o' "$tmp/o"
+then pass stats_compare; else fail stats_compare "exit $rc: $msg"; fi
 run --scene "$scene" --panel none --size 32x24 --frames 4
 [ "$rc" -eq 0 ] && [ ! -s "$tmp/o" ] && pass frames_quiet_without_stats || fail frames_quiet_without_stats "exit $rc"
 
@@ -235,14 +218,12 @@ run --scene "$scene" --panel none --size 32x24 --frames 4
 num_frac_of() { sed -n 's/.*"num_frac":\([0-9a-z]*\).*/\1/p' "$tmp/o" | head -n 1; }
 for want in book/raster-06=20 book/raytracer-02=16 demo/planet-horizon=12 book/raster-rt-scene=20 demo/ch15-shadow-volume=20; do
   n=${want%=*} f=${want#*=} id=$(basename "${want%=*}")
-  if [ ! -f "firmware/scenes/$n.scene" ]; then skip "num_frac_$id" "no scene $n"; continue; fi
   run --scene "firmware/scenes/$n.scene" --panel none --size 240x240 --stats
   got=$(num_frac_of)
   [ "$rc" -eq 0 ] && [ "$got" = "$f" ] && pass "num_frac_$id ($f)" ||
     fail "num_frac_$id" "exit $rc, num_frac '$got', want $f: $(head -n 1 "$tmp/e")"
 done
 r6=firmware/scenes/book/raster-06.scene
-[ -f "$r6" ] || r6=$scene
 run --scene "$r6" --panel none --size 240x240 --stats --num-frac 16
 [ "$rc" -eq 0 ] && [ "$(num_frac_of)" = 16 ] && pass num_frac_override ||
   fail num_frac_override "exit $rc, num_frac '$(num_frac_of)'"
@@ -280,10 +261,6 @@ run --scene "$tmp/ground.scene" --panel none --size 32x24 --numeric double
 [ "$rc" -eq 0 ] && pass num_frac_refused_double_renders || fail num_frac_refused_double_renders "exit $rc"
 
 # ---- the panel path ---------------------------------------------------------
-if [ "$panels" -eq 0 ]; then
-  skip panels "the panel drivers are not in this build"
-  exit 0
-fi
 run --scene "$scene" --panel st7789 --out "$tmp/s.png"
 [ "$rc" -eq 0 ] && [ "$(png_size "$tmp/s.png")" = 240x240 ] && pass st7789_png_240x240 ||
   fail st7789_png_240x240 "exit $rc, $(png_size "$tmp/s.png"): $(head -n 1 "$tmp/e")"

@@ -75,6 +75,25 @@ static void test_find(void)
           panel_find("st7789_240x320") == &panel_st7789_240x320 &&
           panel_find("ili9341_240x320") == &panel_ili9341_240x320 && panel_find("ssd1306") == NULL,
           "panel_find_names", "mismatch");
+    /* hal/panels.def: each PANEL names its descriptor's own controller and a
+     * glass the emulator has, with the glass's size in the view it is shown
+     * (the round trips below check the pixels) */
+    int bad = 0, n = 0;
+#define PANEL(p_name, p_ctl, p_glass, p_view)                                                                \
+    {                                                                                                    \
+        uint8_t v = 9;                                                                                   \
+        const struct panel_desc *d = panel_find(#p_name);                                                   \
+        const struct emu_module *m = emu_module_find(#p_name, &v);                                          \
+        bad += !d || d != panel_all[n] || strcmp(d->controller, #p_ctl) || m != &emu_module_##p_glass || \
+               v != (p_view) || ((p_view) & 1 ? m->glass_h : m->glass_w) != d->width ||                      \
+               ((p_view) & 1 ? m->glass_w : m->glass_h) != d->height;                                      \
+        n++;                                                                                             \
+    }
+#define GLASS(...)
+#include "panels.def"
+#undef PANEL
+#undef GLASS
+    check(!bad && !panel_all[n], "panels_def_consistent", "%d of %d PANEL lines disagree with their descriptor", bad, n);
 }
 
 static uint16_t pattern(uint32_t x, uint32_t y)

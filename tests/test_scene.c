@@ -79,7 +79,7 @@ static struct scene *load_book(const char *n)
     return s;
 }
 
-/* The book's numbers as the double build must hold them (book-scenes.md). */
+/* The book's numbers as the double build must hold them (docs/book-demos.md). */
 static void test_exact_values(void)
 {
     char name[128];

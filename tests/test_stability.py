@@ -1,46 +1,53 @@
 #!/usr/bin/env python3
-"""Numeric stability where methods fail: the ray-sphere test under scene scale.
+"""The boundaries of the stability sweeps, pinned (tools/charts/sweeps.py).
 
-The same scene multiplied by k has the same exact image. The robust
-formulation in fixed point (in the format each scaled scene's ranges call
-for) must stay within the ray tracer's accuracy bound
-(PSNR >= 45 dB against double) from k = 1 to k = 2048, while the book's
-quadratic, evaluated in Q15.16, must be seen to fail by k = 64 (r^2 and
-|CO|^2 leave the format) — if it stops failing, the sweep no longer reaches
-the edge it is meant to test.
-usage: test_stability.py HOST_SIM
+Each sweep of `make charts` finds where a method fails along one parameter
+(depth bits against depth range, perspective step against slope, sub-pixel
+bits against screen size and the span loops' range, the rasterizer's and the
+ray tracer's formats against scene scale, accumulated rotation, specular
+exponent, near plane, triangle size). Its PINS are the swept points on
+either side of each boundary as measured: this test renders exactly those
+points, with the sweep's own scenes, sizes and measures, and fails when one
+of them is on the other side of the threshold, i.e. when a boundary moved.
+A method that got better or worse is then a documented change: update the
+pin and docs/charts.md. The subpixel-range pins measure cost on the emulated
+Cortex-M0+ with the lab's benchmark images (built by make test).
+usage: test_stability.py HOST_SIM BUILD
 """
 import os
 import sys
-import tempfile
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "tools", "charts"))
-from stability import host_sim_compare, scaled_scene  # noqa: E402
-
-
-def psnr_of(host_sim, tmp, k, form, numeric, num_frac=None):
-    path = os.path.join(tmp, "k%d-%s.scene" % (k, form))
-    with open(path, "w") as f:
-        f.write(scaled_scene(k, form))
-    s = host_sim_compare(host_sim, path, numeric, "80x80", num_frac)
-    return float("inf") if s["psnr"] is None else s["psnr"]
+import lab  # noqa: E402
+import sweeps  # noqa: E402
 
 
 def main():
-    host_sim = sys.argv[1]
-    with tempfile.TemporaryDirectory() as tmp:
-        for k in (1, 16, 256, 2048):
-            p = psnr_of(host_sim, tmp, k, "robust", "fixed")
-            ok = p >= 45
-            print("%s robust_fixed_holds_at_scale_%d%s" % ("PASS" if ok else "FAIL", k,
-                  "" if ok else ": PSNR %.2f dB < 45" % p))
-        # the book's quadratic in Q15.16 (host_sim would refuse the scene in
-        # its own format: r^2 fits none)
-        p = psnr_of(host_sim, tmp, 64, "book", "fixed", 16)
-        ok = p < 45
-        print("%s book_quadratic_fixed_fails_at_scale_64%s" % ("PASS" if ok else "FAIL",
-              "" if ok else ": PSNR %.2f dB, expected the Q15.16 overflow to show" % p))
+    if len(sys.argv) != 3:
+        print("usage: test_stability.py HOST_SIM BUILD", file=sys.stderr)
+        return 2
+    host_sim, build = sys.argv[1], sys.argv[2]
+    L = lab.Lab(host_sim, build, jobs=1, log=lambda m: None, rp2040=False, build_images=False)
+    for sw in sweeps.SWEEPS:
+        for label, pins in sw.pins.items():
+            s = sweeps.series_of(sw, label)
+            for x, want in pins:
+                name = "stability_%s_%s_%s_at_%g" % (sw.name, "".join(c if c.isalnum() else "_" for c in label)
+                                                     .strip("_"), "holds" if want else "fails", x)
+                try:
+                    v, r = sweeps.measure(host_sim, sw, s, x, L)
+                except lab.ImageMissing as e:
+                    print("FAIL %s: %s" % (name, e))
+                    continue
+                if v is None:
+                    print("FAIL %s: %s" % (name, r.get("error", "no measure")))
+                elif bool(sw.holds(v)) != want:
+                    print("FAIL %s: %s = %s, the boundary moved (threshold %g; update the pin in "
+                          "tools/charts/sweeps.py and docs/charts.md)" % (name, sw.metric, v, sw.threshold))
+                else:
+                    print("PASS %s" % name)
+    return 0
 
 
 if __name__ == "__main__":
-    main()
+    sys.exit(main())

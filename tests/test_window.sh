@@ -28,8 +28,11 @@ for t in xvfb-run xwd; do
 done
 "$hs" --scene $scene --out "$tmp/ref.png" 2>/dev/null
 
+# (the log exists before the loop reads it; --loop-frames bounds a run whose
+# SIGINT went astray)
+: >"$tmp/log"
 cat >"$tmp/run.sh" <<EOS
-"$hs" --scene $scene --window --window-scale 2 --loop >"$tmp/log" 2>"$tmp/err" &
+"$hs" --scene $scene --window --window-scale 2 --loop --loop-frames 600 >"$tmp/log" 2>"$tmp/err" &
 pid=\$!
 i=0
 while [ "\$(grep -c '^frame' "$tmp/log")" -lt 2 ] && [ \$i -lt 200 ]; do sleep 0.05; i=\$((i + 1)); done

@@ -2,7 +2,7 @@
 # Installs the distribution packages a make target needs (Debian, Ubuntu,
 # Raspberry Pi OS). As root or with passwordless sudo it installs what is
 # missing; otherwise it prints the one command to run and fails.
-#   tools/deps.sh run|test|firmware|charts|flash
+#   tools/deps.sh run|test|firmware|examples|charts|flash|bench
 set -eu
 
 group=${1:-run}
@@ -11,6 +11,8 @@ firmware_pkgs="gcc-arm-none-eabi libnewlib-arm-none-eabi binutils-arm-none-eabi"
 flash_pkgs="libusb-1.0-0-dev libgpiod-dev pkg-config"
 charts_pkgs="python3 python3-matplotlib"
 bench_pkgs="$firmware_pkgs qemu-system-arm valgrind nodejs"
+# make examples: the Cortex-M0+ build, and qemu for the work probe (scenec)
+examples_pkgs="$firmware_pkgs qemu-system-arm"
 # libFuzzer's runtime is only recommended by clang, and installs skip recommends.
 # python3-pip: pip downloads the gpiod source distribution (libgpiod 2, mk/pi.mk).
 # libsdl2-dev: host_sim --window; xvfb, xauth, x11-apps (xwd): its test on a virtual display.
@@ -20,11 +22,12 @@ test_pkgs="$run_pkgs $firmware_pkgs $flash_pkgs $bench_pkgs clang libclang-rt-de
 case "$group" in
   run) want=$run_pkgs ;;
   firmware) want=$firmware_pkgs ;;
+  examples) want=$examples_pkgs ;;
   flash) want=$flash_pkgs ;;
   charts) want=$charts_pkgs ;;
   bench) want=$bench_pkgs ;;
   test) want=$test_pkgs ;;
-  *) echo "deps.sh: unknown group '$group' (run|test|firmware|charts|flash|bench)" >&2; exit 2 ;;
+  *) echo "deps.sh: unknown group '$group' (run|test|firmware|examples|charts|flash|bench)" >&2; exit 2 ;;
 esac
 
 if ! command -v dpkg-query >/dev/null 2>&1; then

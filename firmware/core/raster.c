@@ -464,7 +464,7 @@ int raster_begin_frame(struct render_ctx *ctx, uint16_t frame)
     return 0;
 }
 
-/* ---- render_triangle, book path (§1.7) ---------------------------------- */
+/* ---- render_triangle, book path (docs/book-demos.md, RenderTriangle) ----- */
 
 struct book_tri {
     rgb color;

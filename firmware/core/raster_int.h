@@ -146,9 +146,10 @@ void draw_wireframe_triangle(struct ras_ctx *rc, const num x[3], const num y[3],
 /* ---- chapters 7, 8: the book's scan conversion (raster_triangles.c) ---- */
 /* Called per pixel with integer canvas coordinates and the span's attributes. */
 typedef void (*ras_book_pixel_fn)(struct ras_ctx *rc, int32_t x, int32_t y, const num *q, void *ud);
-/* Sort order of the book (§1.5 step 1): idx[] receives corner indices. */
+/* Sort order of the book (docs/book-demos.md, "Filled and shaded
+ * triangles", step 1): idx[] receives corner indices. */
 void book_sort_corners(const num y[3], int idx[3]);
-/* §1.5 steps 2–5 on corners already sorted by y; nq attributes q[k][corner];
+/* Steps 2–5 of the same on corners already sorted by y; nq attributes q[k][corner];
  * truncated spans (raster-04 and every 3D demo). */
 void book_scan_triangle(struct ras_ctx *rc, const num x[3], const num y[3], int nq,
                         const num (*q)[3], ras_book_pixel_fn fn, void *ud);

@@ -1,5 +1,5 @@
 /* raster_triangles.c — chapters 7 and 8: DrawFilledTriangle,
- * DrawShadedTriangle and the book's scan conversion (§1.5), plus the
+ * DrawShadedTriangle and the book's scan conversion (docs/book-demos.md), plus the
  * default path's edge-function triangle with the top-left fill rule. */
 #include "raster_int.h"
 
@@ -51,7 +51,7 @@ static void book_scan(struct ras_ctx *rc, const num x[3], const num y[3], int nq
     int32_t split = len01 - 1;          /* first index of x012 taken from x12 */
     int32_t m = len02 / 2;
 
-    /* left/right from the middle row (§1.5 step 3) */
+    /* left/right from the middle row (step 3) */
     num x02m = interp_at(y[0], x[0], y[2], x[2], m);
     num x012m = m < split ? interp_at(y[0], x[0], y[1], x[1], m)
                           : interp_at(y[1], x[1], y[2], x[2], m - split);

@@ -15,7 +15,7 @@
 #include <unistd.h>
 #include <sys/ioctl.h>
 #include <linux/spi/spidev.h>
-#ifndef HAL_LINUX_NO_GPIOD
+#ifdef WITH_GPIOD
 #include <gpiod.h>
 #ifndef GPIOD_API_MAJOR
 #define GPIOD_API_MAJOR 1
@@ -34,7 +34,7 @@ static void set_err(struct hal_linux *l, const char *fmt, ...)
     va_end(ap);
 }
 
-#ifndef HAL_LINUX_NO_GPIOD
+#ifdef WITH_GPIOD
 #if GPIOD_API_MAJOR >= 2
 /* "gpiochip0" -> /dev/gpiochip0; a path (with '/') as it is. */
 static struct gpiod_chip *open_chip(const char *name)
@@ -136,7 +136,7 @@ static int lx_spi_wait(void *ctx)
 
 static void lx_line_set(void *ctx, enum hal_line line, int level)
 {
-#ifndef HAL_LINUX_NO_GPIOD
+#ifdef WITH_GPIOD
     struct hal_linux *l = ctx;
     if ((unsigned)line >= 4 || !l->lines[line])
         return;
@@ -169,7 +169,7 @@ static uint64_t lx_now_us(void *ctx)
 
 void hal_linux_close(struct hal_linux *l)
 {
-#ifndef HAL_LINUX_NO_GPIOD
+#ifdef WITH_GPIOD
     for (int i = 0; i < 4; i++)
         if (l->lines[i])
 #if GPIOD_API_MAJOR >= 2
@@ -217,7 +217,7 @@ int hal_linux_open(struct hal_linux *l, struct hal *out, const struct hal_linux_
     }
     const int offs[4] = { cfg->dc, cfg->reset, cfg->cs, cfg->bl };
     static const char *const names[4] = { "DC", "RESET", "CS", "BL" };
-#ifdef HAL_LINUX_NO_GPIOD
+#ifndef WITH_GPIOD
     for (int i = 0; i < 4; i++)
         if (offs[i] >= 0) {
             set_err(l, "hal_linux: %s line %d needs libgpiod; install libgpiod-dev and rebuild",

@@ -162,32 +162,35 @@ static const struct cmd_info cmds[] = {
 
 static const char *const model_name[] = { "ST7789", "ILI9341" };
 
-const struct emu_module emu_module_st7789_240x240 = {
-    "st7789_240x240", EMU_ST7789, 240, 240, 0, 0, 0, 0, 1, 1,
-};
-const struct emu_module emu_module_st7789_240x320 = {
-    "st7789_240x320", EMU_ST7789, 240, 320, 0, 0, 0, 0, 1, 1,
-};
-const struct emu_module emu_module_ili9341_240x320 = {
-    "ili9341_240x320", EMU_ILI9341, 240, 320, 0, 0, 1, 1, 0, 0,
-};
+#define GLASS(nm, model, w, h, mem_x, mem_y, mirror_x, bgr, inverted, normally_black) \
+    const struct emu_module emu_module_##nm = { #nm, EMU_##model, w, h, mem_x, mem_y, mirror_x, bgr, inverted, normally_black };
+#define PANEL(...)
+#include "panels.def"
+#undef GLASS
+#undef PANEL
 
 const struct emu_module *emu_module_find(const char *name, uint8_t *view)
 {
-    static const struct { const char *name; const struct emu_module *m; uint8_t view; } t[] = {
-        { "st7789", &emu_module_st7789_240x240, 0 },
-        { "st7789_240x240", &emu_module_st7789_240x240, 0 },
-        { "st7789_240x320", &emu_module_st7789_240x320, 0 },
-        { "ili9341", &emu_module_ili9341_240x320, 1 },
-        { "ili9341_320x240", &emu_module_ili9341_240x320, 1 },
-        { "ili9341_240x320", &emu_module_ili9341_240x320, 0 },
+    static const struct { const char *name, *controller; const struct emu_module *m; uint8_t view; } t[] = {
+#define PANEL(nm, controller, glass, v) { #nm, #controller, &emu_module_##glass, v },
+#define GLASS(...)
+#include "panels.def"
+#undef PANEL
+#undef GLASS
+#define PANEL(...)
+#define GLASS(nm, ...) { #nm, NULL, &emu_module_##nm, 0 },
+#include "panels.def"
+#undef PANEL
+#undef GLASS
     };
-    for (size_t i = 0; name && i < sizeof t / sizeof t[0]; i++)
-        if (strcmp(name, t[i].name) == 0) {
-            if (view)
-                *view = t[i].view;
-            return t[i].m;
-        }
+    /* a PANEL, then a GLASS, by name; then a controller's first PANEL */
+    for (int pass = 0; name && pass < 2; pass++)
+        for (size_t i = 0; i < sizeof t / sizeof t[0]; i++)
+            if (strcmp(name, pass ? (t[i].controller ? t[i].controller : "") : t[i].name) == 0) {
+                if (view)
+                    *view = t[i].view;
+                return t[i].m;
+            }
     return NULL;
 }
 

@@ -31,7 +31,7 @@
 enum emu_model { EMU_ST7789 = 0, EMU_ILI9341 = 1 };
 
 /* A module: a controller behind a glass. Facts of the hardware, not of the
- * driver. */
+ * driver; the modules are the GLASS lines of hal/panels.def. */
 struct emu_module {
     const char *name;            /* "st7789_240x240", "st7789_240x320", "ili9341_240x320" */
     enum emu_model model;
@@ -43,9 +43,12 @@ struct emu_module {
     uint8_t normally_black;      /* colour shown when the display is off or asleep */
 };
 
-extern const struct emu_module emu_module_st7789_240x240;
-extern const struct emu_module emu_module_st7789_240x320;
-extern const struct emu_module emu_module_ili9341_240x320;
+/* emu_module_st7789_240x240, ...: one per GLASS of hal/panels.def */
+#define GLASS(name, ...) extern const struct emu_module emu_module_##name;
+#define PANEL(...)
+#include "panels.def"
+#undef GLASS
+#undef PANEL
 
 struct emu_panel {
     const struct emu_module *mod;
@@ -79,9 +82,9 @@ struct emu_panel {
     uint16_t mem[EMU_MEM_H][EMU_MEM_W];
 };
 
-/* Looks a module up by name, or by panel name as panel_find accepts
- * ("st7789", "st7789_240x240", "st7789_240x320", "ili9341",
- * "ili9341_320x240", "ili9341_240x320"); *view receives the glass view
+/* Looks a module up by panel name as panel_find accepts (a PANEL of
+ * hal/panels.def, "st7789_240x240", or a controller, "st7789": its first
+ * PANEL) or by module name (a GLASS, view 0); *view receives the glass view
  * rotation matching that panel descriptor's rotation 0 (may be NULL).
  * Returns NULL if unknown. */
 const struct emu_module *emu_module_find(const char *name, uint8_t *view);

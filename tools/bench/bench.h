@@ -24,6 +24,9 @@ void bench_put_u64(uint64_t v);
  * `per` ("op", "frame", "pixel") in thousandths (12345 means 12.345). */
 void bench_report(const char *what, const char *numeric, const char *variant,
                   uint64_t milli_instructions, const char *per);
+/* The arguments qemu was given (-semihosting-config ...,arg=A,arg=B) as one
+ * line "A B", by semihosting SYS_GET_CMDLINE; 0 on success. */
+int bench_cmdline(char *buf, unsigned len);
 int bench_main(void);                     /* provided by the image */
 
 #endif

@@ -1,158 +1,241 @@
 #!/usr/bin/env python3
-"""Speed-vs-accuracy and numeric-stability charts (make charts).
+"""Speed-against-accuracy and numeric-stability charts (make charts).
 
-speed_vs_accuracy: every scene measured by `make bench` (instructions per
-frame on the emulated Cortex-M0+ and Cortex-M4F, fixed and float) against
-its accuracy versus the double build of the same scene (PSNR from
-host_sim --compare double at the same size).
+pareto: the lab (tools/charts/lab.py): every variant of each lab scene, its
+cost on each emulated target against its accuracy versus the double build's
+exact render, the Pareto frontier marked. out/charts/pareto.csv and
+pareto-<scene>.{png,svg}.
 
-stability_scale: the ray tracer's sphere test where methods fail. A scene
-whose geometry is multiplied by k (camera at the origin, so the exact image
-does not change with k) is rendered for k = 1 … 4096 in fixed and float,
-with the book's quadratic and with the robust formulation, and compared with
-the double build. The book's formulation in Q15.16 breaks once k·|CO| and
-r² leave the number format; the robust one holds.
+formats: every scene of firmware/scenes at every fixed-point format Q19.12 …
+Q11.20 against the double build, the format the scene analysis chooses
+marked (formats.csv, formats.{png,svg}).
 
-Writes out/charts/<name>.png, .svg and .csv.
+stability-<name>: the sweeps of tools/charts/sweeps.py, each with the
+boundary where its method fails (stability-<name>.{csv,png,svg}).
+
+usage: charts.py [--only pareto,formats,stability] [--jobs N] [--lab-scenes A,B]
 """
 import argparse
 import csv
-import json
+import math
 import os
 import sys
-import tempfile
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from stability import host_sim_compare, scaled_scene  # noqa: E402
+import hostsim  # noqa: E402
+import lab  # noqa: E402
+import sweeps  # noqa: E402
 
 import matplotlib  # noqa: E402
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
+TARGET_NAMES = {"m0plus-qemu": "Cortex-M0+ (qemu, instructions)", "m4f-qemu": "Cortex-M4F (qemu, instructions)",
+                "rp2040-sim": "RP2040 (rp2040js, cycles)"}
+NUM_COLOURS = {"fixed": "tab:blue", "float": "tab:orange", "double": "tab:green"}
+IDENTICAL = 99.0   # where an identical image is drawn
 
-def write_outputs(fig, rows, header, outdir, name):
+
+def save(fig, outdir, name):
     os.makedirs(outdir, exist_ok=True)
     for ext in ("png", "svg"):
         fig.savefig(os.path.join(outdir, "%s.%s" % (name, ext)), dpi=110, bbox_inches="tight")
-    with open(os.path.join(outdir, name + ".csv"), "w", newline="") as f:
+    plt.close(fig)
+
+
+def write_csv(outdir, name, header, rows):
+    os.makedirs(outdir, exist_ok=True)
+    path = os.path.join(outdir, name + ".csv")
+    with open(path, "w", newline="") as f:
         w = csv.writer(f)
         w.writerow(header)
-        w.writerows(rows)
-    plt.close(fig)
-    print("charts: %s/%s.{png,svg,csv} (%d rows)" % (outdir, name, len(rows)))
+        for r in rows:
+            w.writerow([cell(h, r.get(h)) for h in header] if isinstance(r, dict) else r)
+    print("charts: %s (%d rows)" % (path, len(rows)))
 
 
-DEFAULT_VARIANTS = ("default", "strip16", "plain", "")
+def cell(column, v):
+    """A CSV cell: PSNR of identical images is inf, other missing values empty."""
+    if v is None:
+        return "inf" if column.startswith("psnr") else ""
+    return v
 
 
-def speed_vs_accuracy(results, host_sim, scenes_dir, outdir):
-    lines = []
-    if os.path.exists(results):
-        with open(results) as f:
-            lines = [json.loads(l) for l in f if l.strip()]
-    # one measurement per (target, scene, numeric): the scene's default variant
-    pick = {}
-    for l in lines:
-        what = l.get("what", "")
-        if not what.startswith("scene:") or l.get("per") != "frame":
-            continue
-        if l.get("target") not in ("m0plus-qemu", "m4f-qemu", "rp2040-sim"):
-            continue
-        name = what[len("scene:"):]
-        if not os.path.exists(os.path.join(scenes_dir, name + ".scene")):
-            continue
-        key = (l["target"], name, l.get("numeric", "fixed"))
-        variant = l.get("variant", "")
-        if key not in pick or (variant in DEFAULT_VARIANTS and pick[key].get("variant") not in DEFAULT_VARIANTS):
-            pick[key] = l
-    rows, acc = [], {}
-    for (target, name, numeric), l in sorted(pick.items()):
-        size = "%dx%d" % (l.get("width", 240), l.get("height", 240))
-        if (name, numeric, size) not in acc:
-            s = host_sim_compare(host_sim, os.path.join(scenes_dir, name + ".scene"), numeric, size)
-            acc[(name, numeric, size)] = s
-        s = acc[(name, numeric, size)]
-        cost = l.get("instructions", l.get("cycles"))
-        unit = "instructions" if "instructions" in l else "cycles"
-        psnr = s.get("psnr")
-        rows.append([target, name, numeric, size, cost, unit,
-                     "inf" if psnr is None else psnr, s.get("ssim"), s.get("max_err"), s.get("pct_diff")])
-    fig, ax = plt.subplots(figsize=(8, 5.5))
-    markers = {"m0plus-qemu": "o", "m4f-qemu": "s", "rp2040-sim": "^"}
-    colours = {"fixed": "tab:blue", "float": "tab:orange", "double": "tab:green"}
-    for r in rows:
-        psnr = 99.0 if r[6] == "inf" else float(r[6])
-        ax.scatter(float(r[4]), psnr, marker=markers.get(r[0], "x"), color=colours.get(r[2], "k"))
-        ax.annotate(r[1].split("/")[-1], (float(r[4]), psnr), fontsize=6, xytext=(3, 2),
-                    textcoords="offset points")
-    for t, m in markers.items():
-        ax.scatter([], [], marker=m, color="grey", label=t)
-    for n, c in colours.items():
-        ax.scatter([], [], marker="o", color=c, label=n)
-    ax.set_xscale("log")
-    ax.set_xlabel("instructions per frame (qemu, -icount) / cycles (rp2040-sim)")
-    ax.set_ylabel("PSNR vs double build (dB; identical plotted at 99)")
-    ax.set_title("Speed against accuracy, 240x240")
-    ax.grid(True, which="both", alpha=0.3)
-    ax.legend(fontsize=7)
-    if not rows:
-        ax.text(0.5, 0.5, "no scene measurements: run `make bench` first", ha="center",
-                transform=ax.transAxes)
-    write_outputs(fig, rows, ["target", "scene", "numeric", "size", "cost", "unit", "psnr", "ssim",
-                              "max_err", "pct_diff"], outdir, "speed_vs_accuracy")
+def plot_psnr(p):
+    return IDENTICAL if p is None else min(float(p), IDENTICAL)
 
 
-def stability(host_sim, outdir, size):
-    ks = [1, 2, 4, 8, 16, 32, 64, 128, 256, 512, 1024, 2048, 4096]
+def pareto(a, outdir):
+    L = lab.Lab(a.host_sim, a.build, a.jobs, rp2040=not a.no_rp2040, make=a.make)
+    rows = L.run(a.scenes, a.lab_scenes.split(",") if a.lab_scenes else None)
+    rows.sort(key=lambda r: (r["scene"], lab.TARGETS.index(r["target"]), r["cost"]))
+    write_csv(outdir, "pareto", lab.COLUMNS, rows)
+    for scene in sorted({r["scene"] for r in rows}):
+        rs = [r for r in rows if r["scene"] == scene]
+        targets = [t for t in lab.TARGETS if any(r["target"] == t for r in rs)]
+        fig, axes = plt.subplots(1, len(targets), figsize=(6.2 * len(targets), 5.0), squeeze=False)
+        longest = 0
+        for ax, t in zip(axes[0], targets):
+            pts = [r for r in rs if r["target"] == t]
+            for r in pts:
+                ax.scatter(r["cost"], plot_psnr(r["psnr"]), s=30 if r["frontier"] else 18,
+                           color=NUM_COLOURS[r["numeric"]], edgecolors="k" if r["frontier"] else "none",
+                           zorder=3, alpha=1 if r["frontier"] else 0.5)
+            front = sorted((r for r in pts if r["frontier"]), key=lambda r: r["cost"])
+            xs, ys = [], []
+            for r in front:
+                if xs:
+                    xs.append(r["cost"])
+                    ys.append(ys[-1])
+                xs.append(r["cost"])
+                ys.append(plot_psnr(r["psnr"]))
+            ax.plot(xs, ys, color="crimson", lw=1.2, zorder=2, label="Pareto frontier")
+            lines = []
+            for k, r in enumerate(front, 1):
+                ax.annotate(str(k), (r["cost"], plot_psnr(r["psnr"])), fontsize=7.5, xytext=(3, 3),
+                            textcoords="offset points", color="crimson", weight="bold")
+                lines.append("%d  %s: %.4g M, %s" % (k, r["variant"], r["cost"] / 1e6,
+                                                     "identical" if r["psnr"] is None else "%.1f dB" % r["psnr"]))
+            longest = max(longest, len(lines))
+            ax.text(0.0, -0.19, "\n".join(lines), transform=ax.transAxes, va="top", ha="left", fontsize=7,
+                    family="monospace", color="crimson")
+            ax.set_xscale("log")
+            ax.set_xlabel(("cycles" if t == "rp2040-sim" else "instructions") + " per frame")
+            ax.set_title(TARGET_NAMES[t], fontsize=10)
+            ax.grid(True, which="both", alpha=0.3)
+        axes[0][0].set_ylabel("PSNR vs double exact (dB; identical at %g)" % IDENTICAL)
+        for n, c in NUM_COLOURS.items():
+            axes[0][0].scatter([], [], color=c, label=n)
+        axes[0][0].legend(fontsize=7, loc="lower right")
+        fig.suptitle("%s, %dx%d: cost against accuracy of every variant; numbered: the Pareto frontier"
+                     % ((scene,) + lab.SIZE), fontsize=11)
+        fig.subplots_adjust(bottom=0.16 + 0.03 * longest)
+        save(fig, outdir, "pareto-" + scene.replace("/", "-"))
+    return rows
+
+
+def formats(a, outdir):
+    """Every scene at every format against double; the chosen one marked."""
     rows = []
-    with tempfile.TemporaryDirectory() as tmp:
-        for form in ("book", "robust"):
-            for k in ks:
-                # the ground sphere keeps the book's 5000/k ratio up to the format's limit
-                text = scaled_scene(k, form)
-                path = os.path.join(tmp, "k%d-%s.scene" % (k, form))
-                with open(path, "w") as f:
-                    f.write(text)
-                for numeric in ("fixed", "float"):
-                    try:
-                        # fixed point in Q15.16 throughout (the chart's question)
-                        s = host_sim_compare(host_sim, path, numeric, size, 16)
-                        psnr = s.get("psnr")
-                        rows.append([form, numeric, k, "inf" if psnr is None else psnr,
-                                     s.get("pct_within2"), s.get("saturations"), ""])
-                    except RuntimeError as e:
-                        rows.append([form, numeric, k, "", "", "", str(e).splitlines()[-1][:120]])
-    fig, ax = plt.subplots(figsize=(8, 5))
-    for form, style in (("book", "--"), ("robust", "-")):
-        for numeric, colour in (("fixed", "tab:blue"), ("float", "tab:orange")):
-            pts = [(r[2], 99.0 if r[3] == "inf" else float(r[3])) for r in rows
-                   if r[0] == form and r[1] == numeric and r[3] != ""]
-            if pts:
-                ax.plot([p[0] for p in pts], [p[1] for p in pts], style, marker="o", color=colour,
-                        label="%s, %s" % (numeric, form))
-    ax.axhline(45, color="grey", lw=0.8, ls=":")
-    ax.set_xscale("log", base=2)
-    ax.set_xlabel("scene scale k (positions and radii multiplied by k)")
-    ax.set_ylabel("PSNR vs double build (dB; identical at 99)")
-    ax.set_title("Ray-sphere test stability with scene scale, %s" % size)
-    ax.grid(True, which="both", alpha=0.3)
-    ax.legend(fontsize=8)
-    write_outputs(fig, rows, ["formulation", "numeric", "k", "psnr", "pct_within2", "saturations",
-                              "error"], outdir, "stability_scale")
+    names = []
+    for root, _, files in os.walk(a.scenes):
+        for f in files:
+            if f.endswith(".scene"):
+                names.append(os.path.relpath(os.path.join(root, f), a.scenes)[:-6])
+    for name in sorted(names):
+        with open(os.path.join(a.scenes, name + ".scene")) as f:
+            text = f.read()
+        try:
+            _, ref_rgb, _ = hostsim.render(a.host_sim, text, "double", "240x240")
+            _, _, st = hostsim.render(a.host_sim, text, "fixed", "240x240")
+            chosen = st["num_frac"]
+        except hostsim.RenderError as e:
+            print("charts: formats: %s: %s" % (name, e))
+            continue
+        for frac in lab.FRACS:
+            try:
+                raw, rgb, st = hostsim.render(a.host_sim, text, "fixed", "240x240", frac)
+                p = hostsim.psnr(rgb, ref_rgb)
+                rows.append([name, lab.qfmt(frac), frac, int(frac == chosen),
+                             "finer" if frac > chosen else "coarser" if frac < chosen else "chosen",
+                             "inf" if math.isinf(p) else round(p, 2), st["saturations"], ""])
+            except hostsim.RenderError as e:
+                rows.append([name, lab.qfmt(frac), frac, 0, "finer" if frac > chosen else "coarser", "", "", str(e)[-100:]])
+    write_csv(outdir, "formats", ["scene", "format", "num_frac", "chosen", "relation", "psnr", "saturations",
+                                  "error"], rows)
+    scenes = sorted({r[0] for r in rows})
+    cols = 6
+    nrow = (len(scenes) + cols - 1) // cols
+    fig, axes = plt.subplots(nrow, cols, figsize=(2.6 * cols, 2.1 * nrow), sharex=True, sharey=True, squeeze=False)
+    for i, sc in enumerate(scenes):
+        ax = axes[i // cols][i % cols]
+        pts = [(r[2], plot_psnr(None if r[5] == "inf" else r[5]), r[3]) for r in rows if r[0] == sc and r[5] != ""]
+        ax.plot([p[0] for p in pts], [p[1] for p in pts], "-", color="tab:blue", lw=1, marker=".", ms=4)
+        for p in pts:
+            if p[2]:
+                ax.scatter([p[0]], [p[1]], s=70, facecolors="none", edgecolors="crimson", linewidths=1.6, zorder=4)
+        refused = [r[2] for r in rows if r[0] == sc and r[5] == ""]
+        for f in refused:
+            ax.axvspan(f - 0.5, f + 0.5, color="grey", alpha=0.15, lw=0)
+        ax.set_title(sc, fontsize=7.5)
+        ax.grid(True, alpha=0.3)
+        ax.set_ylim(20, 102)
+    for j in range(len(scenes), nrow * cols):
+        axes[j // cols][j % cols].axis("off")
+    for ax in axes[-1]:
+        ax.set_xticks([12, 14, 16, 18, 20])
+        ax.set_xticklabels(["Q19.12", "Q17.14", "Q15.16", "Q13.18", "Q11.20"], fontsize=6.5)
+    fig.suptitle("Every scene at every fixed-point format, 240x240: PSNR against double (identical at %g); "
+                 "ring: the format the scene analysis chooses; grey: formats the scene does not load in" % IDENTICAL,
+                 fontsize=10)
+    fig.tight_layout(rect=(0, 0, 1, 0.97))
+    save(fig, outdir, "formats")
+
+
+def stability(a, outdir):
+    L = None
+    for sw in sweeps.SWEEPS:
+        if a.sweeps and sw.name not in a.sweeps.split(","):
+            continue
+        if sw.metric == "per_pixel":
+            if L is None:
+                L = lab.Lab(a.host_sim, a.build, a.jobs, rp2040=False, make=a.make)
+        print("charts: sweep %s (%d series x %d points)" % (sw.name, len(sw.series), len(sw.xs)))
+        rows = sweeps.run(a.host_sim, sw, L)
+        fields = [f for f in SWEEP_FIELDS if any(f in r for r in rows)]
+        header = ["series", "x", "value", "holds", "boundary"] + fields
+        write_csv(outdir, "stability-" + sw.name, header, [[cell("psnr" if h == "value" and sw.metric == "psnr" else h,
+                                                                  r.get(h)) for h in header] for r in rows])
+        fig, ax = plt.subplots(figsize=(8.5, 5.2))
+        cmap = plt.get_cmap("tab10")
+        styles = ["-", "--", "-.", ":", (0, (5, 1)), (0, (3, 1, 1, 1))]
+        for i, s in enumerate(sw.series):
+            pts = [r for r in rows if r["series"] == s.label and r["holds"] != ""]
+            ys = [plot_psnr(r["value"]) if sw.metric == "psnr" else r["value"] for r in pts]
+            ax.plot([r["x"] for r in pts], ys, linestyle=styles[i % len(styles)], marker="o", ms=3.5 - 0.4 * i,
+                    lw=2.2 - 0.3 * i, color=cmap(i), label=s.label)
+            for r, y in zip(pts, ys):
+                if r["boundary"]:
+                    ax.scatter([r["x"]], [y], s=110, facecolors="none", edgecolors=cmap(i), linewidths=1.5, zorder=4)
+        ax.axhline(sw.threshold, color="grey", lw=0.9, ls=":", label="threshold (%g)" % sw.threshold)
+        if sw.logx:
+            ax.set_xscale("log")
+        if sw.metric == "per_pixel":
+            ax.set_yscale("log")
+        ax.set_xlabel(sw.xlabel)
+        ax.set_ylabel(sw.ylabel)
+        ax.set_title(sw.title + ("\nringed: the first point past a boundary" + ("; " + sw.note if sw.note else "")),
+                     fontsize=9.5)
+        ax.grid(True, which="both", alpha=0.3)
+        ax.legend(fontsize=7)
+        save(fig, outdir, "stability-" + sw.name)
 
 
 def main():
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    ap.add_argument("--results", default="build/bench/results.jsonl")
     ap.add_argument("--host-sim", default="build/host_sim")
+    ap.add_argument("--build", default="build")
     ap.add_argument("--scenes", default="firmware/scenes")
     ap.add_argument("--out", default="out/charts")
-    ap.add_argument("--size", default="120x120", help="render size of the stability sweep")
+    ap.add_argument("--jobs", type=int, default=2)
+    ap.add_argument("--only", default="pareto,formats,stability")
+    ap.add_argument("--lab-scenes", default="")
+    ap.add_argument("--no-rp2040", action="store_true")
+    ap.add_argument("--make", default="make")
+    ap.add_argument("--sweeps", default="", help="only these sweeps (comma-separated names)")
     a = ap.parse_args()
     if not os.path.exists(a.host_sim):
         sys.exit("charts: %s is missing (run make first)" % a.host_sim)
-    speed_vs_accuracy(a.results, a.host_sim, a.scenes, a.out)
-    stability(a.host_sim, a.out, a.size)
+    only = a.only.split(",")
+    bad = [o for o in only if o not in ("pareto", "formats", "stability")]
+    if bad:
+        sys.exit("charts: --only %s: expected pareto, formats or stability" % ",".join(bad))
+    if "pareto" in only:
+        pareto(a, a.out)
+    if "formats" in only:
+        formats(a, a.out)
+    if "stability" in only:
+        stability(a, a.out)
 
 
 if __name__ == "__main__":

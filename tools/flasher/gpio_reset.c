@@ -8,7 +8,7 @@
 #include <time.h>
 #include "gpio_reset.h"
 
-#ifdef FLASHER_GPIOD
+#ifdef WITH_GPIOD
 #include <gpiod.h>
 #ifndef GPIOD_API_MAJOR
 #define GPIOD_API_MAJOR 1

@@ -4,6 +4,9 @@
  * the same way (same rules, same violation lines; tools/rp2040sim/replay_vectors.js
  * and tests/test_panel_vectors.c replay the same vectors through both). Keep the two in step. */
 
+const fs = require('fs');
+const path = require('path');
+
 const MS = 1000000;
 const MEM_W = 240;
 const MEM_H = 320;
@@ -84,17 +87,36 @@ const CMDS = [
 
 const MODEL_NAME = ['ST7789', 'ILI9341'];
 
-/* name, model, glass_w, glass_h, mem_x, mem_y, mirror_x, bgr, inverted, normally_black */
-const MODULES = {
-  st7789_240x240: { name: 'st7789_240x240', model: ST, gw: 240, gh: 240, memX: 0, memY: 0, mirrorX: 0, bgr: 0, inverted: 1, normallyBlack: 1 },
-  st7789_240x320: { name: 'st7789_240x320', model: ST, gw: 240, gh: 320, memX: 0, memY: 0, mirrorX: 0, bgr: 0, inverted: 1, normallyBlack: 1 },
-  ili9341_240x320: { name: 'ili9341_240x320', model: IL, gw: 240, gh: 320, memX: 0, memY: 0, mirrorX: 1, bgr: 1, inverted: 0, normallyBlack: 0 },
-};
-const FIND = {
-  st7789: ['st7789_240x240', 0], st7789_240x240: ['st7789_240x240', 0],
-  st7789_240x320: ['st7789_240x320', 0], ili9341: ['ili9341_240x320', 1],
-  ili9341_320x240: ['ili9341_240x320', 1], ili9341_240x320: ['ili9341_240x320', 0],
-};
+/* The modules and the panels they show: the GLASS and PANEL lines of
+ * hal/panels.def, the table hal/sim/emu_panel.c compiles in. */
+function readPanels(file) {
+  const modules = {}, find = {}, controllers = {};
+  const text = fs.readFileSync(file, 'utf8');
+  for (const m of text.matchAll(/^(GLASS|PANEL)\(([^)]*)\)\s*$/gm)) {
+    const a = m[2].split(',').map((x) => x.trim());
+    if (m[1] === 'GLASS') {
+      const n = a.slice(2).map(Number);
+      if (a.length !== 10 || n.some((x) => !Number.isInteger(x)) || !(a[1] in MODEL)) {
+        throw new Error(`${file}: bad GLASS line: ${m[0]}`);
+      }
+      modules[a[0]] = { name: a[0], model: MODEL[a[1]], gw: n[0], gh: n[1], memX: n[2], memY: n[3],
+        mirrorX: n[4], bgr: n[5], inverted: n[6], normallyBlack: n[7] };
+    } else {
+      if (a.length !== 4 || !/^[0-3]$/.test(a[3])) throw new Error(`${file}: bad PANEL line: ${m[0]}`);
+      find[a[0]] = [a[2], Number(a[3])];
+      if (!(a[1] in controllers)) controllers[a[1]] = find[a[0]];
+    }
+  }
+  for (const [name, [glass]] of Object.entries(find)) {
+    if (!modules[glass]) throw new Error(`${file}: panel ${name} shows an unknown glass ${glass}`);
+  }
+  /* a panel by name, then a module by name (view 0), then a controller's first panel */
+  for (const name of Object.keys(modules)) if (!(name in find)) find[name] = [name, 0];
+  for (const [c, f] of Object.entries(controllers)) if (!(c in find)) find[c] = f;
+  return { MODULES: modules, FIND: find };
+}
+const MODEL = { ST7789: ST, ILI9341: IL };
+const { MODULES, FIND } = readPanels(path.join(__dirname, '..', '..', 'hal', 'panels.def'));
 
 function hex2(v) { return v.toString(16).toUpperCase().padStart(2, '0'); }
 

@@ -538,7 +538,8 @@ static const struct node *need(struct parser *p, const struct node *blk, const s
 /* ---- rotations ---------------------------------------------------------- */
 
 /* cos and sin of the angles the book's demos use, as their doubles
- * (book-scenes.md §1.10); other angles use the generic formula. */
+ * (docs/book-demos.md, "Angles and the sphere table"); other angles use
+ * the generic formula. */
 static const struct { double deg, c, s; } exact_angles[] = {
     { -30.0, 0.86602540378443871, -0.49999999999999994 },
     { 195.0, -0.96592582628906842, -0.25881904510252035 },
@@ -855,7 +856,7 @@ static void read_ras_options(struct parser *p, const struct node *n, struct ras_
 
 /* ---- models --------------------------------------------------------------- */
 
-/* cos(i·δ), sin(i·δ) for δ = 2π/15 as the demos compute them (book-scenes.md §1.10). */
+/* cos(i·δ), sin(i·δ) for δ = 2π/15 as the demos compute them (docs/book-demos.md). */
 static const double sphere15_cos[15] = {
     1.0, 0.91354545764260087, 0.66913060635885824, 0.30901699437494745, -0.10452846326765333,
     -0.49999999999999978, -0.80901699437494734, -0.97814760073380558, -0.97814760073380569,

@@ -20,16 +20,6 @@
 
 void initialise_monitor_handles(void);
 
-/* SYS_GET_CMDLINE: the arguments qemu was given with arg=... */
-static int cmdline(char *buf, size_t len)
-{
-    struct { char *p; size_t n; } blk = { buf, len };
-    register int r0 __asm__("r0") = 0x15;
-    register void *r1 __asm__("r1") = &blk;
-    __asm__ volatile("bkpt 0xab" : "+r"(r0) : "r"(r1) : "memory");
-    return r0;
-}
-
 static int fail(const char *msg)
 {
     bench_puts("ERROR ");
@@ -42,7 +32,7 @@ int bench_main(void)
 {
     initialise_monitor_handles();
     static char line[1200], err[600];
-    if (cmdline(line, sizeof line - 1)) return fail("no command line");
+    if (bench_cmdline(line, sizeof line - 1)) return fail("no command line");
     char *argv[6];
     int argc = 0;
     for (char *t = strtok(line, " "); t && argc < 6; t = strtok(NULL, " ")) argv[argc++] = t;

@@ -1,0 +1,99 @@
+/* bench_file.c — instructions per frame of any scene file on the emulated
+ * MCUs: the cost side of the speed/accuracy lab (tools/charts/lab.py).
+ *
+ * The image parses the scene on the target (the parser of the image's
+ * numeric mode, file read through semihosting, not measured), so one image
+ * per target, numeric mode and NUM_FRAC measures every scene and every
+ * method choice written into a scene file. Arguments (qemu
+ * -semihosting-config ...,arg=bench,arg=SCENE,arg=W,arg=H,arg=STRIP,arg=FRAMES):
+ * the render size, the strip height and how many of the scene's frames to
+ * render (0: all of them). Measured, in instructions (qemu -icount, not
+ * cycles): render_init once, and per frame render_begin_frame and every
+ * render_strip. Printed:
+ *   RESULT init=I frames=F total=T checksum=C rays=R pixels=P
+ * T is the instructions of the F frames (init not included); C a checksum of
+ * frame 0's RGB565 pixels (host_sim --out-raw of the same scene, tested by
+ * lab.py, shows that the image measured is the image judged); R and P the
+ * rays traced and the pixels written in frame 0. Errors: "ERROR message",
+ * exit status 1. */
+#include <stdlib.h>
+#include <string.h>
+#include "bench.h"
+#include "render.h"
+#include "scene_parse.h"
+
+void initialise_monitor_handles(void);
+
+static int fail(const char *msg)
+{
+    bench_puts("ERROR ");
+    bench_puts(msg);
+    bench_puts("\n");
+    return 1;
+}
+
+static void field(const char *name, uint64_t v)
+{
+    bench_puts(name);
+    bench_put_u64(v);
+}
+
+int bench_main(void)
+{
+    initialise_monitor_handles();
+    static char line[1200], err[600];
+    if (bench_cmdline(line, sizeof line - 1)) return fail("no command line");
+    char *argv[8];
+    int argc = 0;
+    for (char *t = strtok(line, " "); t && argc < 8; t = strtok(NULL, " ")) argv[argc++] = t;
+    if (argc != 6) return fail("usage: bench SCENE W H STRIP FRAMES");
+    long w = strtol(argv[2], NULL, 10), h = strtol(argv[3], NULL, 10);
+    long strip = strtol(argv[4], NULL, 10), nframes = strtol(argv[5], NULL, 10);
+    if (w < 1 || w > 4096 || h < 1 || h > 4096 || strip < 1 || nframes < 0 || nframes > 10000)
+        return fail("bad size, strip or frames");
+    if (strip > h) strip = h;
+    struct scene *s = NULL;
+    if (scene_load(argv[1], &s, err, sizeof err)) return fail(err);
+    uint16_t frames = s->frames ? s->frames : 1;
+    if (nframes && nframes < frames) frames = (uint16_t)nframes;
+    size_t need = render_work_size(s, (uint16_t)w, (uint16_t)h, (uint16_t)strip);
+    void *work = malloc(need ? need : 1);
+    uint16_t *px = malloc((size_t)w * (size_t)strip * sizeof *px);
+    if (!work || !px) return fail("out of memory");
+    struct render_ctx ctx;
+    uint64_t t0 = bench_now();
+    if (render_init(&ctx, s, (uint16_t)w, (uint16_t)h, (uint16_t)strip, work, need) != 0)
+        return fail("render_init");
+    uint64_t init = bench_now() - t0, total = 0;
+    uint32_t sum = 2166136261u;   /* FNV-1a over frame 0's pixels, little-endian */
+    struct render_stats st0;
+    memset(&st0, 0, sizeof st0);
+    for (uint16_t f = 0; f < frames; f++) {
+        struct render_stats st;
+        memset(&st, 0, sizeof st);
+        uint64_t a = bench_now();
+        if (render_begin_frame(&ctx, f) != 0) return fail("render_begin_frame");
+        total += bench_now() - a;
+        for (long y = 0; y < h; y += strip) {
+            struct render_target t = { .width = (uint16_t)w, .height = (uint16_t)h, .y0 = (uint16_t)y,
+                                       .y1 = (uint16_t)(y + strip < h ? y + strip : h), .rgb565 = px };
+            a = bench_now();
+            if (render_strip(&ctx, &t, &st) != 0) return fail("render_strip");
+            total += bench_now() - a;
+            if (f == 0)
+                for (long i = 0; i < (long)(t.y1 - t.y0) * w; i++) {
+                    sum = (sum ^ (px[i] & 0xFFu)) * 16777619u;
+                    sum = (sum ^ (px[i] >> 8)) * 16777619u;
+                }
+        }
+        if (f == 0) st0 = st;
+    }
+    field("RESULT init=", init);
+    field(" frames=", frames);
+    field(" total=", total);
+    field(" checksum=", sum);
+    field(" rays=", st0.rays);
+    field(" pixels=", st0.pixels_written);
+    bench_puts("\n");
+    return 0;
+}

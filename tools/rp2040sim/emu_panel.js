@@ -19,71 +19,21 @@ const F_PIXELS = 1;
 const F_NOTEMU = 2;
 const F_READ = 4;   /* a read command: the bytes after it are its read phase (dummy clocks) */
 
-/* [code, models, min, max, flags, name] */
-const CMDS = [
-  [0x00, M_ALL, 0, 0, 0, 'NOP'], [0x01, M_ALL, 0, 0, 0, 'SWRESET'],
-  [0x04, M_ALL, 0, 4, F_READ, 'RDDID'], [0x09, M_ALL, 0, 5, F_READ, 'RDDST'],
-  [0x0A, M_ALL, 0, 2, F_READ, 'RDDPM'], [0x0B, M_ALL, 0, 2, F_READ, 'RDDMADCTL'],
-  [0x0C, M_ALL, 0, 2, F_READ, 'RDDCOLMOD'], [0x0D, M_ALL, 0, 2, F_READ, 'RDDIM'],
-  [0x0E, M_ALL, 0, 2, F_READ, 'RDDSM'], [0x0F, M_ALL, 0, 2, F_READ, 'RDDSDR'],
-  [0x10, M_ALL, 0, 0, 0, 'SLPIN'], [0x11, M_ALL, 0, 0, 0, 'SLPOUT'],
-  [0x12, M_ALL, 0, 0, F_NOTEMU, 'PTLON'], [0x13, M_ALL, 0, 0, 0, 'NORON'],
-  [0x20, M_ALL, 0, 0, 0, 'INVOFF'], [0x21, M_ALL, 0, 0, 0, 'INVON'],
-  [0x26, M_ALL, 1, 1, 0, 'GAMSET'], [0x28, M_ALL, 0, 0, 0, 'DISPOFF'],
-  [0x29, M_ALL, 0, 0, 0, 'DISPON'], [0x2A, M_ALL, 4, 4, 0, 'CASET'],
-  [0x2B, M_ALL, 4, 4, 0, 'RASET'], [0x2C, M_ALL, 0, 0, F_PIXELS, 'RAMWR'],
-  [0x30, M_ALL, 4, 4, F_NOTEMU, 'PTLAR'], [0x33, M_ALL, 6, 6, F_NOTEMU, 'VSCRDEF'],
-  [0x34, M_ALL, 0, 0, 0, 'TEOFF'], [0x35, M_ALL, 1, 1, 0, 'TEON'],
-  [0x36, M_ALL, 1, 1, 0, 'MADCTL'], [0x37, M_ALL, 2, 2, 0, 'VSCSAD'],
-  [0x38, M_ALL, 0, 0, 0, 'IDMOFF'], [0x39, M_ALL, 0, 0, 0, 'IDMON'],
-  [0x3A, M_ALL, 1, 1, 0, 'COLMOD'], [0x3C, M_ALL, 0, 0, F_PIXELS, 'RAMWRC'],
-  [0x44, M_ALL, 2, 2, 0, 'TESCAN'], [0x45, M_ALL, 0, 3, F_READ, 'RDTESCAN'],
-  [0x51, M_ALL, 1, 1, 0, 'WRDISBV'], [0x52, M_ALL, 0, 2, F_READ, 'RDDISBV'],
-  [0x53, M_ALL, 1, 1, 0, 'WRCTRLD'], [0x54, M_ALL, 0, 2, F_READ, 'RDCTRLD'],
-  [0x55, M_ALL, 1, 1, 0, 'WRCACE'], [0x56, M_ALL, 0, 2, F_READ, 'RDCABC'],
-  [0x5E, M_ALL, 1, 1, 0, 'WRCABCMB'], [0x5F, M_ALL, 0, 2, F_READ, 'RDCABCMB'],
-  [0xDA, M_ALL, 0, 2, F_READ, 'RDID1'], [0xDB, M_ALL, 0, 2, F_READ, 'RDID2'],
-  [0xDC, M_ALL, 0, 2, F_READ, 'RDID3'],
-  [0xB0, M_ST, 2, 2, 0, 'RAMCTRL'], [0xB1, M_ST, 3, 3, 0, 'RGBCTRL'],
-  [0xB2, M_ST, 5, 5, 0, 'PORCTRL'], [0xB3, M_ST, 3, 3, 0, 'FRCTRL1'],
-  [0xB5, M_ST, 1, 1, 0, 'PARCTRL'], [0xB7, M_ST, 1, 1, 0, 'GCTRL'],
-  [0xB8, M_ST, 4, 4, 0, 'GTADJ'], [0xBA, M_ST, 1, 1, 0, 'DGMEN'],
-  [0xBB, M_ST, 1, 1, 0, 'VCOMS'], [0xC0, M_ST, 1, 1, 0, 'LCMCTRL'],
-  [0xC1, M_ST, 3, 3, 0, 'IDSET'], [0xC2, M_ST, 1, 2, 0, 'VDVVRHEN'],
-  [0xC3, M_ST, 1, 1, 0, 'VRHS'], [0xC4, M_ST, 1, 1, 0, 'VDVS'],
-  [0xC5, M_ST, 1, 1, 0, 'VCMOFSET'], [0xC6, M_ST, 1, 1, 0, 'FRCTRL2'],
-  [0xC7, M_ST, 1, 1, 0, 'CABCCTRL'], [0xC8, M_ST, 1, 1, 0, 'REGSEL1'],
-  [0xCA, M_ST, 1, 1, 0, 'REGSEL2'], [0xCC, M_ST, 1, 1, 0, 'PWMFRSEL'],
-  [0xD0, M_ST, 2, 2, 0, 'PWCTRL1'], [0xD2, M_ST, 1, 1, 0, 'VAPVANEN'],
-  [0xDF, M_ST, 4, 4, 0, 'CMD2EN'], [0xE0, M_ST, 14, 14, 0, 'PVGAMCTRL'],
-  [0xE1, M_ST, 14, 14, 0, 'NVGAMCTRL'], [0xE2, M_ST, 64, 64, 0, 'DGMLUTR'],
-  [0xE3, M_ST, 64, 64, 0, 'DGMLUTB'], [0xE4, M_ST, 3, 3, 0, 'GATECTRL'],
-  [0xE7, M_ST, 1, 1, 0, 'SPI2EN'], [0xE8, M_ST, 1, 1, 0, 'PWCTRL2'],
-  [0xE9, M_ST, 3, 3, 0, 'EQCTRL'], [0xEC, M_ST, 1, 1, 0, 'PROMCTRL'],
-  [0xFA, M_ST, 4, 4, 0, 'PROMEN'], [0xFC, M_ST, 2, 2, 0, 'NVMSET'],
-  [0xFE, M_ST, 2, 2, 0, 'PROMACT'],
-  [0xB0, M_IL, 1, 1, 0, 'IFMODE'], [0xB1, M_IL, 2, 2, 0, 'FRMCTR1'],
-  [0xB2, M_IL, 2, 2, 0, 'FRMCTR2'], [0xB3, M_IL, 2, 2, 0, 'FRMCTR3'],
-  [0xB4, M_IL, 1, 1, 0, 'INVTR'], [0xB5, M_IL, 4, 4, 0, 'PRCTR'],
-  [0xB6, M_IL, 3, 4, 0, 'DISCTRL'], [0xB7, M_IL, 1, 1, 0, 'ETMOD'],
-  [0xB8, M_IL, 1, 1, 0, 'BLCTRL1'], [0xB9, M_IL, 1, 1, 0, 'BLCTRL2'],
-  [0xBA, M_IL, 1, 1, 0, 'BLCTRL3'], [0xBB, M_IL, 1, 1, 0, 'BLCTRL4'],
-  [0xBC, M_IL, 1, 1, 0, 'BLCTRL5'], [0xBE, M_IL, 1, 1, 0, 'BLCTRL7'],
-  [0xBF, M_IL, 1, 1, 0, 'BLCTRL8'],
-  [0xC0, M_IL, 1, 1, 0, 'PWCTRL1'], [0xC1, M_IL, 1, 1, 0, 'PWCTRL2'],
-  [0xC5, M_IL, 2, 2, 0, 'VMCTRL1'], [0xC7, M_IL, 1, 1, 0, 'VMCTRL2'],
-  [0xCB, M_IL, 5, 5, 0, 'PWCTRLA'], [0xCF, M_IL, 3, 3, 0, 'PWCTRLB'],
-  [0xD0, M_IL, 1, 1, 0, 'NVMWR'], [0xD1, M_IL, 3, 3, 0, 'NVMPKEY'],
-  [0xD2, M_IL, 0, 3, F_READ, 'RDNVM'], [0xD3, M_IL, 0, 4, F_READ, 'RDID4'],
-  [0xE0, M_IL, 15, 15, 0, 'PGAMCTRL'], [0xE1, M_IL, 15, 15, 0, 'NGAMCTRL'],
-  [0xE2, M_IL, 16, 16, 0, 'DGAMCTRL1'], [0xE3, M_IL, 64, 64, 0, 'DGAMCTRL2'],
-  [0xE8, M_IL, 3, 3, 0, 'DTCA'], [0xEA, M_IL, 2, 2, 0, 'DTCB'],
-  [0xED, M_IL, 4, 4, 0, 'PWRSEQ'],
-  /* not in the ILI9341 datasheet, but the first command of the vendor's
-   * initialisation code that most drivers copy (EFh 03h 80h 02h) */
-  [0xEF, M_IL, 3, 3, 0, 'EFh (vendor init)'], [0xF2, M_IL, 1, 1, 0, 'EN3G'],
-  [0xF6, M_IL, 3, 3, 0, 'IFCTL'], [0xF7, M_IL, 1, 1, 0, 'PRC'],
-].map(([code, models, min, max, flags, name]) => ({ code, models, min, max, flags, name }));
+/* The accepted commands: the CMD lines of hal/sim/emu_commands.def, the table
+ * hal/sim/emu_panel.c compiles in. */
+function readCommands(file) {
+  const consts = { M_ALL, M_ST, M_IL, F_PIXELS, F_NOTEMU, F_READ, 0: 0 };
+  const cmds = [];
+  const text = fs.readFileSync(file, 'utf8');
+  for (const m of text.matchAll(/^CMD\((0x[0-9A-F]{2}), *(\w+), *(\d+), *(\d+), *(\w+), *"([^"]*)"\)/gm)) {
+    if (!(m[2] in consts) || !(m[5] in consts)) throw new Error(`${file}: bad CMD line: ${m[0]}`);
+    cmds.push({ code: Number(m[1]), models: consts[m[2]], min: Number(m[3]), max: Number(m[4]),
+      flags: consts[m[5]], name: m[6] });
+  }
+  if (!cmds.length) throw new Error(`${file}: no CMD lines`);
+  return cmds;
+}
+const CMDS = readCommands(path.join(__dirname, '..', '..', 'hal', 'sim', 'emu_commands.def'));
 
 const MODEL_NAME = ['ST7789', 'ILI9341'];
 

@@ -5,9 +5,10 @@
  * numeric mode, file read through semihosting, not measured), so one image
  * per target, numeric mode and NUM_FRAC measures every scene and every
  * method choice written into a scene file. Arguments (qemu
- * -semihosting-config ...,arg=bench,arg=SCENE,arg=W,arg=H,arg=STRIP,arg=FRAMES):
+ * -semihosting-config ...,arg=bench,arg=SCENE,arg=W,arg=H,arg=STRIP,arg=FRAMES[,arg=coarse]):
  * the render size, the strip height and how many of the scene's frames to
- * render (0: all of them). Measured, in instructions (qemu -icount, not
+ * render (0: all of them); `coarse` renders each frame's progressive preview
+ * pass only (render_set_pass RENDER_PASS_COARSE: one ray per block). Measured, in instructions (qemu -icount, not
  * cycles): render_init once, and per frame render_begin_frame and every
  * render_strip. Printed:
  *   RESULT init=I frames=F total=T checksum=C rays=R pixels=P
@@ -46,7 +47,8 @@ int bench_main(void)
     char *argv[8];
     int argc = 0;
     for (char *t = strtok(line, " "); t && argc < 8; t = strtok(NULL, " ")) argv[argc++] = t;
-    if (argc != 6) return fail("usage: bench SCENE W H STRIP FRAMES");
+    if (argc != 6 && !(argc == 7 && !strcmp(argv[6], "coarse"))) return fail("usage: bench SCENE W H STRIP FRAMES [coarse]");
+    int coarse = argc == 7;
     long w = strtol(argv[2], NULL, 10), h = strtol(argv[3], NULL, 10);
     long strip = strtol(argv[4], NULL, 10), nframes = strtol(argv[5], NULL, 10);
     if (w < 1 || w > 4096 || h < 1 || h > 4096 || strip < 1 || nframes < 0 || nframes > 10000)
@@ -73,6 +75,7 @@ int bench_main(void)
         memset(&st, 0, sizeof st);
         uint64_t a = bench_now();
         if (render_begin_frame(&ctx, f) != 0) return fail("render_begin_frame");
+        if (coarse && render_set_pass(&ctx, RENDER_PASS_COARSE) != 0) return fail("render_set_pass");
         total += bench_now() - a;
         for (long y = 0; y < h; y += strip) {
             struct render_target t = { .width = (uint16_t)w, .height = (uint16_t)h, .y0 = (uint16_t)y,

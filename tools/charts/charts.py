@@ -224,19 +224,28 @@ def main():
     ap.add_argument("--make", default="make")
     ap.add_argument("--sweeps", default="", help="only these sweeps (comma-separated names)")
     a = ap.parse_args()
-    if not os.path.exists(a.host_sim):
-        sys.exit("charts: %s is missing (run make first)" % a.host_sim)
     only = a.only.split(",")
     bad = [o for o in only if o not in ("pareto", "formats", "stability")]
     if bad:
-        sys.exit("charts: --only %s: expected pareto, formats or stability" % ",".join(bad))
+        print("charts: --only %s: expected pareto, formats or stability" % ",".join(bad), file=sys.stderr)
+        return 2
+    unknown = [n for n in a.lab_scenes.split(",") if n and n not in [s.name for s in lab.LAB]]
+    unknown += [n for n in a.sweeps.split(",") if n and n not in [s.name for s in sweeps.SWEEPS]]
+    if unknown:
+        print("charts: %s: not a lab scene (%s) or sweep (%s)" % (unknown[0], ", ".join(s.name for s in lab.LAB),
+              ", ".join(s.name for s in sweeps.SWEEPS)), file=sys.stderr)
+        return 2
+    if not os.path.exists(a.host_sim):
+        print("charts: %s is missing (run make first)" % a.host_sim, file=sys.stderr)
+        return 2
     if "pareto" in only:
         pareto(a, a.out)
     if "formats" in only:
         formats(a, a.out)
     if "stability" in only:
         stability(a, a.out)
+    return 0
 
 
 if __name__ == "__main__":
-    main()
+    sys.exit(main())

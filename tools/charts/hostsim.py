@@ -62,6 +62,26 @@ def render(host_sim, text, numeric="fixed", size="240x240", frac=None, strip=16,
         return raw_px, _read_ppm(rgb), stats
 
 
+def coarse_blocks(raw, rgb, w, h, b=8):
+    """The ray tracer's progressive preview (RENDER_PASS_COARSE) from a full
+    render without subsampling: each b x b block takes the colour of the
+    pixel at its centre, ((c0 + c1 - 1) / 2, (r0 + r1 - 1) / 2), whose ray
+    the preview traces. Returns (raw565, rgb888)."""
+    out565, out888 = bytearray(len(raw)), bytearray(len(rgb))
+    for r0 in range(0, h, b):
+        r1 = min(r0 + b, h)
+        for c0 in range(0, w, b):
+            c1 = min(c0 + b, w)
+            src = ((r0 + r1 - 1) // 2) * w + (c0 + c1 - 1) // 2
+            p565, p888 = raw[2 * src:2 * src + 2], rgb[3 * src:3 * src + 3]
+            for y in range(r0, r1):
+                for x in range(c0, c1):
+                    i = y * w + x
+                    out565[2 * i:2 * i + 2] = p565
+                    out888[3 * i:3 * i + 3] = p888
+    return bytes(out565), bytes(out888)
+
+
 def psnr(a, b):
     """PSNR in dB of two 8-bit images of the same size; inf when identical."""
     if len(a) != len(b):

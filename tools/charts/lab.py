@@ -53,11 +53,13 @@ def qfmt(frac):
 class Variant:
     """label: the method in words (the scene's options beyond the reference's
     ones); numeric: fixed, float or double; frac: NUM_FRAC (None: the
-    scene's own format); options: scene options; strip: rows per strip."""
+    scene's own format); options: scene options; strip: rows per strip;
+    coarse: the ray tracer's progressive preview pass alone (one ray per
+    8x8 block)."""
 
-    def __init__(self, label, numeric="fixed", frac=None, options=(), strip=16):
+    def __init__(self, label, numeric="fixed", frac=None, options=(), strip=16, coarse=False):
         self.label, self.numeric, self.frac = label, numeric, frac
-        self.options, self.strip = list(options), strip
+        self.options, self.strip, self.coarse = list(options), strip, coarse
 
     def name(self, own_frac=None):
         mode = self.numeric
@@ -105,7 +107,9 @@ def rt_variants(reflective):
           Variant("adaptive_supersample=on", options=["adaptive_supersample=on"]),
           Variant("shortcuts=off", options=["shortcuts=off"]),
           Variant("bvh=on", options=["bvh=on"]),
-          Variant("", strip=8)]
+          Variant("", strip=8),
+          Variant("preview (8x8 blocks)", coarse=True),
+          Variant("preview (8x8 blocks)", "float", coarse=True)]
     if reflective:
         v += [Variant("recursion_depth=%d" % d, options=["recursion_depth=%d" % d]) for d in (0, 1, 2)]
     return v
@@ -254,10 +258,12 @@ class Lab:
         self.hits = self.runs = 0
 
     # ---- accuracy (host_sim) --------------------------------------------------
-    def accuracy(self, text, ref_text, numeric, frac, strip):
+    def accuracy(self, text, ref_text, numeric, frac, strip, coarse=False):
         """Accuracy of one variant; None when host_sim refuses it (a format
-        the scene does not load in)."""
-        key = sha("acc2", self.hs_hash, text, ref_text, numeric, str(frac), str(strip), "%dx%d" % SIZE)
+        the scene does not load in). coarse: of the progressive preview, made
+        from the full render (hostsim.coarse_blocks)."""
+        key = sha("acc2", self.hs_hash, text, ref_text, numeric, str(frac), str(strip), "%dx%d" % SIZE,
+                  "coarse" if coarse else "")
         got = self.cache.get(key)
         if got is not None:
             return got.get("result")
@@ -267,10 +273,14 @@ class Lab:
             raw, rgb, st = hostsim.render(self.host_sim, text, numeric, size, frac, strip)
         except hostsim.RenderError as e:
             return self.cache.put(key, {"result": None, "error": str(e)})["result"]
+        if coarse:
+            raw, rgb = hostsim.coarse_blocks(raw, rgb, *SIZE)
         if numeric == "double":
             num_psnr = math.inf
         else:
-            _, drgb, _ = hostsim.render(self.host_sim, text, "double", size, None, strip)
+            draw, drgb, _ = hostsim.render(self.host_sim, text, "double", size, None, strip)
+            if coarse:
+                draw, drgb = hostsim.coarse_blocks(draw, drgb, *SIZE)
             num_psnr = hostsim.psnr(rgb, drgb)
         r = {"psnr": _fin(hostsim.psnr(rgb, ref_rgb)), "within1": hostsim.within1(raw, ref_raw),
              "psnr_numeric": _fin(num_psnr), "num_frac": st.get("num_frac"), "checksum": hostsim.fnv1a(raw),
@@ -310,10 +320,11 @@ class Lab:
             raise SystemExit("lab: building the benchmark images failed")
         self.elf_hash.update({p: hostsim.file_hash(p) for p in paths})
 
-    def cost(self, target, mode, text, strip, size=SIZE):
+    def cost(self, target, mode, text, strip, size=SIZE, coarse=False):
         elf = self.elf(target, mode)
         w, h = size
-        key = sha("cost1", self.elf_hash[elf], text, str(w), str(h), str(strip))
+        key = sha("cost1", self.elf_hash[elf], text, str(w), str(h), str(strip)) if not coarse else \
+            sha("cost1", self.elf_hash[elf], text, str(w), str(h), str(strip), "coarse")
         got = self.cache.get(key)
         if got is not None:
             self.hits += 1
@@ -324,7 +335,8 @@ class Lab:
                 f.write(text)
         cmd = ["qemu-system-arm", "-M", MACHINES[target], "-nographic", "-monitor", "none", "-serial", "null",
                "-icount", "shift=0,align=off", "-semihosting-config",
-               "enable=on,target=native,arg=bench,arg=%s,arg=%d,arg=%d,arg=%d,arg=0" % (path, w, h, strip),
+               "enable=on,target=native,arg=bench,arg=%s,arg=%d,arg=%d,arg=%d,arg=0%s"
+               % (path, w, h, strip, ",arg=coarse" if coarse else ""),
                "-kernel", elf]
         try:
             p = subprocess.run(cmd, capture_output=True, text=True, timeout=1800)
@@ -423,7 +435,7 @@ class Lab:
                 if name in seen:
                     continue
                 seen.add(name)
-                acc = self.accuracy(vt, ref_text, v.numeric, v.frac, v.strip)
+                acc = self.accuracy(vt, ref_text, v.numeric, v.frac, v.strip, v.coarse)
                 if acc is None:
                     continue
                 plan.append((s, v, name, vt, acc, rp_of.get(name)))
@@ -432,7 +444,8 @@ class Lab:
         self.build_elves([(t, modes(v, acc)) for (_, v, _, _, acc, _) in plan for t in MACHINES])
         jobs = [(p, t) for p in plan for t in MACHINES]
         with concurrent.futures.ThreadPoolExecutor(max_workers=self.jobs) as ex:
-            costs = list(ex.map(lambda j: self.cost(j[1], modes(j[0][1], j[0][4]), j[0][3], j[0][1].strip), jobs))
+            costs = list(ex.map(lambda j: self.cost(j[1], modes(j[0][1], j[0][4]), j[0][3], j[0][1].strip,
+                                                    coarse=j[0][1].coarse), jobs))
         for ((s, v, name, vt, acc, img), target), c in zip(jobs, costs):
             if "error" in c:
                 self.log("lab: %s %s on %s: %s" % (s.name, name, target, c["error"]))
@@ -463,7 +476,8 @@ class Lab:
         return {"scene": s.name, "variant": name, "target": target, "cost": round(cost), "unit": unit,
                 "psnr": acc["psnr"], "within1": round(100 * acc["within1"], 3), "psnr_numeric": acc["psnr_numeric"],
                 "numeric": v.numeric, "format": qfmt(acc["num_frac"]) if acc["num_frac"] else "",
-                "options": " ".join(v.options), "strip": v.strip, "frames": frames,
+                "options": " ".join(v.options + (["pass=coarse"] if v.coarse else [])), "strip": v.strip,
+                "frames": frames,
                 "init": round(init), "frame": round(frame), "same_image": int(bool(same)),
                 "saturations": acc["saturations"]}
 

@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
 """gen_sweep.py — the scenes of the stability sweeps (tools/charts/sweeps.py,
-tests/test_stability_sweeps.py): one scene per point of a sweep, each built
+tests/test_stability.py): one scene per point of a sweep, each built
 so that its exact image is known in advance or changes smoothly with the
 parameter, and the method under test is the only thing that can break it.
 
@@ -10,6 +10,8 @@ SWEEP is one of the names of SWEEPS below; VALUE its parameter; KEY=VALUE
 the sweep's other knobs (e.g. depth_bits=16). Exit 2 with one line on bad
 input.
 """
+import inspect
+import math
 import sys
 
 HEADER = 'renderer = rasterizer\ncanvas {{ width = 240 height = 240 }}\n' \
@@ -18,9 +20,24 @@ HEADER = 'renderer = rasterizer\ncanvas {{ width = 240 height = 240 }}\n' \
 
 def _quad(name, half, z, colour):
     """A square facing the camera at depth z, two triangles, wound to face it."""
-    return ('model {{ name = {n} color = {c} vertices {{ ({a}, {a}, {z}) ({b}, {a}, {z}) ({b}, {b}, {z}) ({a}, {b}, {z}) }}\n'
-            '  triangles {{ (0, 2, 1, normal = (0, 0, -1)) (0, 3, 2, normal = (0, 0, -1)) }} }}\n').format(n=name, c=colour, a="%.9g" % -half,
-                                                             b="%.9g" % half, z="%.9g" % z)
+    a, b, z = "%.9g" % -half, "%.9g" % half, "%.9g" % z
+    return ("model {{ name = {n} color = {c} vertices {{ ({a}, {a}, {z}) ({b}, {a}, {z}) ({b}, {b}, {z}) ({a}, {b}, {z}) }}\n"
+            "  triangles {{ (0, 2, 1, normal = (0, 0, -1)) (0, 3, 2, normal = (0, 0, -1)) }} }}\n"
+            ).format(n=name, c=colour, a=a, b=b, z=z)
+
+
+def _fan(scale, opts):
+    """48 slivers (7.5 degrees each) around the centre of the view at z = 2,
+    their outer corners 0.95 * scale from it, in four colours on black."""
+    n = 48
+    verts = ["(0, 0, 2)"] + ["(%.9g, %.9g, 2)" % (0.95 * scale * math.cos(2 * math.pi * k / n),
+                                                   0.95 * scale * math.sin(2 * math.pi * k / n)) for k in range(n + 1)]
+    cols = ["(255, 64, 64)", "(64, 255, 64)", "(64, 64, 255)", "(255, 255, 64)"]
+    tris = ["(0, %d, %d, color = %s, normal = (0, 0, -1))" % (k + 2, k + 1, cols[k % 4]) for k in range(n)]
+    return (HEADER.format(vw=1, d=1)
+            + "rasterizer { book_exact = off clip = split shading = none %s}\n" % opts
+            + "model { name = fan vertices { %s }\n  triangles { %s } }\n" % (" ".join(verts), " ".join(tris))
+            + "instance { model = fan }\n")
 
 
 def depth(z, depth_bits="auto", gap="0.01", near="1"):
@@ -48,9 +65,9 @@ def slope(angle, perspective_step="16", texture="64", uv="perspective"):
     checkerboard of power-of-two side, nearest), its near edge at the left
     of the view, turned by `angle` degrees about the vertical from facing the
     camera (0: no change of depth along a row; toward 90: a wall receding to
-    several times the near edge's distance). The more it slopes, the more 1/z varies along
-    a span and the further the linear steps between perspective-correct
-    points stray."""
+    several times the near edge's distance). The more it slopes, the more
+    1/z varies along a span and the further the linear steps between
+    perspective-correct points stray."""
     a = float(angle)
     return (HEADER.format(vw=1, d=1)
             + "rasterizer { book_exact = off clip = split shading = none perspective_step = %s uv = %s }\n"
@@ -60,28 +77,15 @@ def slope(angle, perspective_step="16", texture="64", uv="perspective"):
             + "model { name = q vertices { (0, -1, 0) (8, -1, 0) (8, 1, 0) (0, 1, 0) }\n"
               "  triangles { (0, 2, 1, color = (255, 255, 255), normal = (0, 0, -1), uv = ((0, 1), (1, 0), (1, 1)))\n"
               "              (0, 3, 2, color = (255, 255, 255), normal = (0, 0, -1), uv = ((0, 1), (0, 0), (1, 0))) } }\n"
-            + "instance { model = q texture = t transform { rotation { y = %.6g } translation = (-0.5537, 0.0123, 1.2031) } }\n"
-            % (a,))
+            + "instance { model = q texture = t transform { rotation { y = %.6g } "
+              "translation = (-0.5537, 0.0123, 1.2031) } }\n" % a)
 
 
 def subpixel(size, subpixel_bits="4"):
-    """Sub-pixel bits against screen size: a fan of thin triangles around the
-    centre of the view (slivers 1.5 degrees wide), whose edges cross pixel
-    rows at every slope; the screen size is the render size, the scene is
-    the same."""
-    tris, verts = [], ["(0, 0, 2)"]
-    import math
-    n = 48
-    for k in range(n + 1):
-        t = 2 * math.pi * k / n
-        verts.append("(%.9g, %.9g, 2)" % (0.95 * math.cos(t), 0.95 * math.sin(t)))
-    cols = ["(255, 64, 64)", "(64, 255, 64)", "(64, 64, 255)", "(255, 255, 64)"]
-    for k in range(n):
-        tris.append("(0, %d, %d, color = %s, normal = (0, 0, -1))" % (k + 2, k + 1, cols[k % 4]))
-    return (HEADER.format(vw=1, d=1)
-            + "rasterizer { book_exact = off clip = split shading = none subpixel_bits = %s }\n" % subpixel_bits
-            + "model { name = fan vertices { %s }\n  triangles { %s } }\n" % (" ".join(verts), " ".join(tris))
-            + "instance { model = fan }\n")
+    """Sub-pixel bits against screen size: a fan of slivers around the centre
+    of the view, whose edges cross pixel rows at every slope; `size` is the
+    render size (given to host_sim), the scene is the same at every size."""
+    return _fan(1.0, "subpixel_bits = %s " % subpixel_bits)
 
 
 def subpixel_range(size, subpixel_bits="4"):
@@ -103,8 +107,8 @@ def raster_scale(k):
     image does not change with k."""
     k = float(k)
     s = lambda v: "%.9g" % (v * k)  # noqa: E731
-    return (HEADER.format(vw="%.9g" % k, d="%.9g" % k).replace("width = 240 height = 240", "width = 600 height = 600")
-            + "camera { position = (%s, %s, %s) rotation { y = -30 } }\n" % (s(-3), s(1), s(2))
+    head = HEADER.format(vw="%.9g" % k, d="%.9g" % k).replace("width = 240 height = 240", "width = 600 height = 600")
+    return (head + "camera { position = (%s, %s, %s) rotation { y = -30 } }\n" % (s(-3), s(1), s(2))
             + "rasterizer { book_exact = off clip = split shading = phong lighting = exact normals = model }\n"
             + "light { type = ambient intensity = 0.2 }\n"
             + "light { type = directional intensity = 0.2 direction = (-1, 0, 1) }\n"
@@ -113,8 +117,8 @@ def raster_scale(k):
             + "model { name = sphere generate = sphere divs = 15 variant = s450 color = (0, 255, 0) }\n"
             + "instance { model = cube transform { scale = %s translation = (%s, 0, %s) } specular = 50 }\n"
             % (s(0.75), s(-1.5), s(7))
-            + "instance { model = cube transform { scale = %s rotation { y = 195 } translation = (%s, %s, %s) } specular = 50 }\n"
-            % (s(1), s(1.25), s(2.5), s(7.5))
+            + "instance { model = cube transform { scale = %s rotation { y = 195 } translation = (%s, %s, %s) } "
+              "specular = 50 }\n" % (s(1), s(1.25), s(2.5), s(7.5))
             + "instance { model = sphere transform { scale = %s translation = (%s, %s, %s) } specular = 50 }\n"
             % (s(1.5), s(1.75), s(-0.5), s(7)))
 
@@ -135,7 +139,7 @@ CUBE = """model {
 """
 
 
-def rotation(frames, rate="7.3", numeric_hint=""):
+def rotation(frames, rate="7.3"):
     """Accumulated rotation over many animation frames: the lit cube turning
     `rate` degrees a frame; the frame rendered is the last of `frames`."""
     return (HEADER.format(vw=1, d=1)
@@ -152,7 +156,6 @@ def _highlight():
     """Where the highlight of a unit sphere at (0, 0, 3) lit from (-2, 2, 0)
     lies, seen from the origin: the point whose normal halves the angle
     between the light and the view (fixed-point iteration)."""
-    import math
     c, light = (0.0, 0.0, 3.0), (-2.0, 2.0, 0.0)
     unit = lambda v: tuple(x / math.sqrt(sum(y * y for y in v)) for x in v)  # noqa: E731
     n = unit((-0.3, 0.3, -1.0))
@@ -172,7 +175,6 @@ def specular(exponent, lighting="fast", renderer="rasterizer"):
     (where cos^e falls to a half) covers the same part of the image at every
     exponent. The field of view stays 53 degrees (viewport = d), so the
     projection's scale stays the render size."""
-    import math
     e = int(exponent)
     p = _highlight()
     dist = math.sqrt(sum(x * x for x in p))
@@ -220,17 +222,7 @@ def triangle_size(scale):
     """Tiny and huge triangles: the fan of the sub-pixel sweep scaled by
     `scale` about the centre of the view, so its slivers shrink below a pixel
     or reach far beyond the screen (the clipper cuts them at the guard band)."""
-    import math
-    s = float(scale)
-    n = 48
-    verts = ["(0, 0, 2)"] + ["(%.9g, %.9g, 2)" % (0.95 * s * math.cos(2 * math.pi * k / n),
-                                                   0.95 * s * math.sin(2 * math.pi * k / n)) for k in range(n + 1)]
-    cols = ["(255, 64, 64)", "(64, 255, 64)", "(64, 64, 255)", "(255, 255, 64)"]
-    tris = ["(0, %d, %d, color = %s, normal = (0, 0, -1))" % (k + 2, k + 1, cols[k % 4]) for k in range(n)]
-    return (HEADER.format(vw=1, d=1)
-            + "rasterizer { book_exact = off clip = split shading = none }\n"
-            + "model { name = fan vertices { %s }\n  triangles { %s } }\n" % (" ".join(verts), " ".join(tris))
-            + "instance { model = fan }\n")
+    return _fan(float(scale), "")
 
 
 RT_SCALE = """name = "stability-k{k}"
@@ -272,11 +264,13 @@ def main(argv):
         print("usage: gen_sweep.py SWEEP VALUE [KEY=VALUE ...] (SWEEP: %s)" % ", ".join(sorted(SWEEPS)),
               file=sys.stderr)
         return 2
+    knobs = list(inspect.signature(SWEEPS[argv[1]]).parameters)[1:]
     kw = {}
     for a in argv[3:]:
         k, eq, v = a.partition("=")
-        if not eq:
-            print("gen_sweep.py: %s: expected KEY=VALUE" % a, file=sys.stderr)
+        if not eq or k not in knobs:
+            print("gen_sweep.py: %s: expected KEY=VALUE with KEY one of %s" % (a, ", ".join(knobs) or "none"),
+                  file=sys.stderr)
             return 2
         kw[k] = v
     try:

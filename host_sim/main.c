@@ -305,9 +305,10 @@ static int core_open(struct core *c, const struct core_api *api, const char *pat
 {
     char err[512] = "";
     c->api = api;
-    if (api->scene_parse(path, scene_text, scene_len, &c->scene, err, sizeof err)) {
+    int rc = api->scene_parse(path, scene_text, scene_len, &c->scene, err, sizeof err);
+    if (rc) {
         fprintf(stderr, "%s\n", err[0] ? err : "scene: cannot load");
-        return EXIT_USAGE;
+        return rc == CORE_SCENE_ENOMEM ? EXIT_INTERNAL : EXIT_USAGE;
     }
     api->scene_info(c->scene, &c->info);
     return EXIT_OK;
@@ -587,9 +588,9 @@ static int run(const struct opts *o, struct core *c, struct core *ref, struct pa
             if (outs[j] && !strcmp(outs[i], outs[j]))
                 return fail(EXIT_USAGE, "%s: given as two outputs", outs[i]);
     }
-    if (core_api_double.scene_read(o->scene, &scene_text, &scene_len, err, sizeof err)) {
+    if ((rc = core_api_double.scene_read(o->scene, &scene_text, &scene_len, err, sizeof err))) {
         fprintf(stderr, "%s\n", err);
-        return EXIT_USAGE;
+        return rc == CORE_SCENE_ENOMEM ? EXIT_INTERNAL : EXIT_USAGE;
     }
     /* The scene's canvas (for --panel none) from the double parse, which holds
      * any scene the format analysis may accept. */

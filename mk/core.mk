@@ -34,3 +34,10 @@ $(foreach v,$(VARIANTS),$(foreach m,$(CORE_FRAC_MODES),$(call bundle,$(BUILD)/$(
 # Every format's bundle of a variant and the selector core_api_fixed_frac().
 core_frac_bundles = $(foreach m,$(CORE_FRAC_MODES),$(BUILD)/$(1)/core_$(m).o) \
                     $(call obj,$(1),none,tools/core_api/core_fracs.c)
+
+# render.h's contract, the same for both renderers (coverage mask and count,
+# NULL stats, strip heights, bad arguments), in every numeric mode.
+$(foreach m,$(NUM_MODES),$(call program,$(BUILD)/asan/test_render_contract_$(m),\
+    $(call obj,asan,$(m),tests/test_render_contract.c $(CORE_SRCS) $(SCENE_SRCS)),asan))
+TEST_DEPS += $(foreach m,$(NUM_MODES),$(BUILD)/asan/test_render_contract_$(m))
+TESTS     += $(foreach m,$(NUM_MODES),$(BUILD)/asan/test_render_contract_$(m))

@@ -6,7 +6,7 @@
 #include <stdint.h>
 #include <stdlib.h>
 #include <string.h>
-#include "raytracer.h"
+#include "rt_int.h"
 
 struct rt_run {
     uint32_t rays, primary_rays, shadow_rays, tests;
@@ -32,7 +32,7 @@ static int rt_render(const struct scene *s, int w, int h, int strip, uint8_t *rg
     if (render_begin_frame(&ctx, 0) != 0) goto out;
     struct render_stats st = { 0 };
     for (int y0 = 0; y0 < h; y0 += strip) {
-        struct render_target t;
+        struct render_target t = { 0 };
         t.width = (uint16_t)w;
         t.height = (uint16_t)h;
         t.y0 = (uint16_t)y0;

@@ -20,6 +20,12 @@ LAYERS: a directory may include only from the directories listed for it.
     tools/bench        the core and the firmware's scene table
     host_sim, tests    anything below them
 
+Outside firmware/core (and host_sim, tests), only the core's public headers
+may be included from it: PUBLIC_CORE (render.h the interface, scene.h and
+num.h its data, raytracer.h and raster.h the renderers' contracts,
+mipmap.h the texture levels scene builders make); the rest (rt_int.h,
+raster_int.h, num_rt.h, ...) are internal.
+
 Usage: test_includes.py [ROOT]   (default: the tree this file is in)
        test_includes.py --self-test
 Prints one PASS/FAIL line per layer.
@@ -52,6 +58,8 @@ LAYERS = {
     "host_sim": ("*",),
     "tests": ("*",),
 }
+
+PUBLIC_CORE = {"render.h", "scene.h", "num.h", "raytracer.h", "raster.h", "mipmap.h"}
 
 SKIP_DIRS = {".git", "node_modules", "out"}
 INCLUDE = re.compile(r'^\s*#\s*include\s*"([^"]+)"', re.M)
@@ -109,6 +117,9 @@ def check(root):
                 dirs = by_name.get(os.path.basename(name), [])
             if dirs and not any(allowed(layer, own, d) for d in dirs):
                 bad.setdefault(layer, []).append("%s includes \"%s\" (%s)" % (f, name, ", ".join(dirs)))
+            elif (dirs == [CORE] and layer != CORE and "*" not in LAYERS[layer]
+                  and os.path.basename(name) not in PUBLIC_CORE):
+                bad.setdefault(layer, []).append("%s includes the core's internal \"%s\"" % (f, name))
     return bad
 
 
@@ -130,9 +141,10 @@ def self_test():
         "hal/rp2040": ("hal/rp2040/b.c", '#include "board.h"\n'),
         "firmware/app": ("firmware/app/c.c", '#include "bench.h"\n'),
         "tools/scenec": ("tools/scenec/d.c", '#include "host_sim/imgio.h"\n'),
+        "tools/bench": ("tools/bench/e.c", '#include "rt_int.h"\n'),
     }
     headers = ["hal/panel.h", "firmware/board/rp2040/board.h", "tools/bench/bench.h",
-               "host_sim/imgio.h"]
+               "host_sim/imgio.h", "firmware/core/rt_int.h"]
     failed = 0
     for layer, (path, text) in cases.items():
         with tempfile.TemporaryDirectory() as root:

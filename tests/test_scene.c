@@ -230,7 +230,7 @@ static void test_bad(void)
         int rc = scene_parse_mem("bad.scene", bad_cases[i].text, strlen(bad_cases[i].text), &s, err, sizeof err);
         snprintf(name, sizeof name, "bad_input_%02zu_%s", i, NUM_NAME);
         snprintf(want, sizeof want, "bad.scene:%s", bad_cases[i].msg);
-        check(rc == 2 && s == NULL && !strncmp(err, want, strlen(want)), name, "rc %d: got \"%s\", want \"%s...\"", rc,
+        check(rc == SCENE_EINPUT && s == NULL && !strncmp(err, want, strlen(want)), name, "rc %d: got \"%s\", want \"%s...\"", rc,
               rc ? err : "", want);
         if (rc == 0) scene_free(s);
     }
@@ -239,7 +239,7 @@ static void test_bad(void)
     int rc = scene_parse_mem("big.scene", big, strlen(big), &s, err, sizeof err);
     snprintf(name, sizeof name, "out_of_range_for_mode_%s", NUM_NAME);
     if (!strcmp(NUM_NAME, "fixed"))
-        check(rc == 2 && strstr(err, "big.scene:1:19: error: sphere center: 40000 is out of range for fixed numbers"),
+        check(rc == SCENE_EINPUT && strstr(err, "big.scene:1:19: error: sphere center: 40000 is out of range for fixed numbers"),
               name, "rc %d %s", rc, err);
     else
         check(rc == 0, name, "rc %d %s", rc, err);
@@ -251,12 +251,12 @@ static void test_bad(void)
     memset(huge, ' ', n);
     rc = scene_parse_mem("huge.scene", huge, n, &s, err, sizeof err);
     snprintf(name, sizeof name, "huge_file_refused_%s", NUM_NAME);
-    check(rc == 2 && strstr(err, "huge.scene:1:1: error: file larger than"), name, "rc %d %s", rc, err);
+    check(rc == SCENE_EINPUT && strstr(err, "huge.scene:1:1: error: file larger than"), name, "rc %d %s", rc, err);
     free(huge);
 
     rc = scene_load("/nonexistent/x.scene", &s, err, sizeof err);
     snprintf(name, sizeof name, "missing_file_%s", NUM_NAME);
-    check(rc == 2 && !strncmp(err, "/nonexistent/x.scene:1:1: error: cannot open file", 49), name, "%s", err);
+    check(rc == SCENE_EIO && !strncmp(err, "/nonexistent/x.scene:1:1: error: cannot open file", 49), name, "%s", err);
 }
 
 int main(void)

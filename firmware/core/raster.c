@@ -341,6 +341,90 @@ static struct ras_range default_tri_rows(const struct ras_ctx *rc, vec3 a, vec3 
 static void tri_cache(struct ras_ctx *rc, const struct ras_instance *in, const struct ras_inst *ri,
                       const struct ras_model *m, const struct ras_triangle *t, uint32_t gi);
 
+/* RenderInstance, its frame half (the strip half is render_instance):
+ * the instance's vertices to camera space (ApplyTransform), culled against
+ * the viewport's bounding sphere (ClipInstance), projected
+ * (ProjectVertex), and each triangle binned to the rows it may touch.
+ * vb, tb: the instance's first vertex and triangle in the frame tables. */
+static void prepare_instance(struct ras_ctx *rc, uint16_t i, uint16_t frame, uint32_t vb, uint32_t tb)
+{
+    const struct scene *s = rc->s;
+    const struct ras_options *o = &s->ras;
+    const struct ras_instance *in = &s->instances[i];
+    const struct ras_model *m = &s->models[in->model];
+    struct ras_inst *ri = &rc->inst[i];
+    ri->vbase = vb;
+    ri->tbase = tb;
+    mat3 r3 = ras_instance_rotation(in, frame);
+    mat4 r4 = m4_from_m3(&r3);
+    ri->nmat = m4_mul(&rc->cam_rot_t, &r4);
+    if (o->instance_transform) {
+        mat4 mi = ras_instance_matrix(in, frame);
+        ri->m = o->camera_transform ? m4_mul(&rc->cam, &mi) : mi;
+    } else {
+        /* raster-07: vertices simply moved by the position */
+        mat4 t = m4_translation(in->position);
+        ri->m = o->camera_transform ? m4_mul(&rc->cam, &t) : t;
+    }
+    ri->visible = o->clip ? (uint8_t)ras_instance_visible(rc, ri, m, o->instance_transform ? in->scale : NUM_ONE) : 1;
+    for (uint16_t k = 0; k < m->nverts; k++) {
+        struct ras_vert *v = &rc->verts[vb + k];
+        vec3 p = m->verts[k];
+        if (o->instance_transform) {
+            vec4 p4 = { p.x, p.y, p.z, NUM_ONE };
+            p4 = m4_mul_v4(&ri->m, p4);
+            v->c = v3(p4.x, p4.y, p4.z);
+        } else {
+            v->c = v3_add(p, in->position);
+            if (o->camera_transform) {
+                vec4 p4 = { v->c.x, v->c.y, v->c.z, NUM_ONE };
+                p4 = m4_mul_v4(&rc->cam, p4);
+                v->c = v3(p4.x, p4.y, p4.z);
+            }
+        }
+        project_vertex(rc, v->c, &v->px, &v->py);
+        if (o->project_truncate) {
+            v->px = num_from_int(num_to_int(v->px));
+            v->py = num_from_int(num_to_int(v->py));
+        }
+        if (rc->pv) {
+            struct ras_pv *q = &rc->pv[vb + k];
+            q->inside = (uint8_t)(ri->visible && ras_point_inside(rc, v->c));
+            if (q->inside) {
+                project_sub(rc, v->c, &q->sx, &q->sy);
+                q->iz = num_recip(v->c.z);
+                q->depth = ras_depth32(rc->near_z, v->c.z);
+            }
+        }
+    }
+    for (uint16_t k = 0; k < m->ntris; k++) {
+        const struct ras_triangle *t = &m->tris[k];
+        struct ras_range *rr = &rc->tri_rows[tb + k];
+        rc->tris_in++;
+        *rr = no_rows();
+        if (!ri->visible || t->v[0] >= m->nverts || t->v[1] >= m->nverts || t->v[2] >= m->nverts) continue;
+        const struct ras_vert *a = &rc->verts[vb + t->v[0]], *b = &rc->verts[vb + t->v[1]],
+                              *c = &rc->verts[vb + t->v[2]];
+        if (rc->book || o->wireframe) {
+            if (o->clip && !ras_triangle_inside(a->c, b->c, c->c)) continue;
+            if (!rc->book && !o->clip && (a->c.z <= rc->near_z || b->c.z <= rc->near_z || c->c.z <= rc->near_z))
+                continue; /* default path, clipping off: never project behind the camera */
+            num ys[3] = { a->py, b->py, c->py }, lo, hi;
+            range3(ys, &lo, &hi);
+            *rr = rows_of_canvas_y(rc, lo, hi);
+        } else {
+            const struct ras_pv *pa = &rc->pv[vb + t->v[0]], *pb = &rc->pv[vb + t->v[1]], *pc = &rc->pv[vb + t->v[2]];
+            if (pa->inside && pb->inside && pc->inside)
+                *rr = sub_rows(rc, num_min(num_min(pa->sy, pb->sy), pc->sy), num_max(num_max(pa->sy, pb->sy), pc->sy));
+            else
+                *rr = default_tri_rows(rc, a->c, b->c, c->c);
+            if (rr->r0 <= rr->r1) tri_cache(rc, in, ri, m, t, tb + k);
+            else rc->tri_flags[tb + k] = 0;
+        }
+        if (rr->r0 <= rr->r1) rc->tris_drawn++;
+    }
+}
+
 int raster_begin_frame(struct render_ctx *ctx, uint16_t frame)
 {
     struct ras_ctx *rc = ctx_of(ctx);
@@ -379,83 +463,12 @@ int raster_begin_frame(struct render_ctx *ctx, uint16_t frame)
 
     for (uint16_t k = 0; k < rc->nkeep; k++) rc->keep[k].tri = UINT32_MAX;
 
-    /* render_instance, first half: transform, cull, project, bin */
+    /* RenderInstance, its frame half, for every instance */
     uint32_t vb = 0, tb = 0;
     rc->tris_in = rc->tris_drawn = 0;
     for (uint16_t i = 0; i < s->ninstances; i++) {
-        const struct ras_instance *in = &s->instances[i];
-        const struct ras_model *m = &s->models[in->model];
-        struct ras_inst *ri = &rc->inst[i];
-        ri->vbase = vb;
-        ri->tbase = tb;
-        mat3 r3 = ras_instance_rotation(in, frame);
-        mat4 r4 = m4_from_m3(&r3);
-        ri->nmat = m4_mul(&rc->cam_rot_t, &r4);
-        if (o->instance_transform) {
-            mat4 mi = ras_instance_matrix(in, frame);
-            ri->m = o->camera_transform ? m4_mul(&rc->cam, &mi) : mi;
-        } else {
-            /* raster-07: vertices simply moved by the position */
-            mat4 t = m4_translation(in->position);
-            ri->m = o->camera_transform ? m4_mul(&rc->cam, &t) : t;
-        }
-        ri->visible = o->clip ? (uint8_t)ras_instance_visible(rc, ri, m, o->instance_transform ? in->scale : NUM_ONE) : 1;
-        for (uint16_t k = 0; k < m->nverts; k++) {
-            struct ras_vert *v = &rc->verts[vb + k];
-            vec3 p = m->verts[k];
-            if (o->instance_transform) {
-                vec4 p4 = { p.x, p.y, p.z, NUM_ONE };
-                p4 = m4_mul_v4(&ri->m, p4);
-                v->c = v3(p4.x, p4.y, p4.z);
-            } else {
-                v->c = v3_add(p, in->position);
-                if (o->camera_transform) {
-                    vec4 p4 = { v->c.x, v->c.y, v->c.z, NUM_ONE };
-                    p4 = m4_mul_v4(&rc->cam, p4);
-                    v->c = v3(p4.x, p4.y, p4.z);
-                }
-            }
-            project_vertex(rc, v->c, &v->px, &v->py);
-            if (o->project_truncate) {
-                v->px = num_from_int(num_to_int(v->px));
-                v->py = num_from_int(num_to_int(v->py));
-            }
-            if (rc->pv) {
-                struct ras_pv *q = &rc->pv[vb + k];
-                q->inside = (uint8_t)(ri->visible && ras_point_inside(rc, v->c));
-                if (q->inside) {
-                    project_sub(rc, v->c, &q->sx, &q->sy);
-                    q->iz = num_recip(v->c.z);
-                    q->depth = ras_depth32(rc->near_z, v->c.z);
-                }
-            }
-        }
-        for (uint16_t k = 0; k < m->ntris; k++) {
-            const struct ras_triangle *t = &m->tris[k];
-            struct ras_range *rr = &rc->tri_rows[tb + k];
-            rc->tris_in++;
-            *rr = no_rows();
-            if (!ri->visible || t->v[0] >= m->nverts || t->v[1] >= m->nverts || t->v[2] >= m->nverts) continue;
-            const struct ras_vert *a = &rc->verts[vb + t->v[0]], *b = &rc->verts[vb + t->v[1]],
-                                  *c = &rc->verts[vb + t->v[2]];
-            if (rc->book || o->wireframe) {
-                if (o->clip && !ras_triangle_inside(a->c, b->c, c->c)) continue;
-                if (!rc->book && !o->clip && (a->c.z <= rc->near_z || b->c.z <= rc->near_z || c->c.z <= rc->near_z))
-                    continue; /* default path, clipping off: never project behind the camera */
-                num ys[3] = { a->py, b->py, c->py }, lo, hi;
-                range3(ys, &lo, &hi);
-                *rr = rows_of_canvas_y(rc, lo, hi);
-            } else {
-                const struct ras_pv *pa = &rc->pv[vb + t->v[0]], *pb = &rc->pv[vb + t->v[1]], *pc = &rc->pv[vb + t->v[2]];
-                if (pa->inside && pb->inside && pc->inside)
-                    *rr = sub_rows(rc, num_min(num_min(pa->sy, pb->sy), pc->sy), num_max(num_max(pa->sy, pb->sy), pc->sy));
-                else
-                    *rr = default_tri_rows(rc, a->c, b->c, c->c);
-                if (rr->r0 <= rr->r1) tri_cache(rc, in, ri, m, t, tb + k);
-                else rc->tri_flags[tb + k] = 0;
-            }
-            if (rr->r0 <= rr->r1) rc->tris_drawn++;
-        }
+        const struct ras_model *m = &s->models[s->instances[i].model];
+        prepare_instance(rc, i, frame, vb, tb);
         vb += m->nverts;
         tb += m->ntris;
     }
@@ -942,6 +955,35 @@ static int rows_hit(struct ras_range r, const struct render_target *t)
     return r.r0 <= r.r1 && r.r1 >= (int)t->y0 && r.r0 < (int)t->y1;
 }
 
+/* RenderInstance, its strip half: the instance's triangles that touch the
+ * strip (binned by prepare_instance), each through RenderTriangle. */
+static void render_instance(struct ras_ctx *rc, uint16_t i, const struct render_target *t)
+{
+    const struct scene *s = rc->s;
+    const struct ras_instance *in = &s->instances[i];
+    const struct ras_inst *ri = &rc->inst[i];
+    const struct ras_model *m = &s->models[in->model];
+    if (!ri->visible) return;
+    for (uint16_t k = 0; k < m->ntris; k++) {
+        if (!rows_hit(rc->tri_rows[ri->tbase + k], t)) continue;
+        if (rc->book || s->ras.wireframe) book_render_triangle(rc, in, ri, m, &m->tris[k]);
+        else default_render_triangle(rc, in, ri, m, &m->tris[k], ri->tbase + k);
+    }
+}
+
+/* RenderScene for one strip: every instance, in the scene's order; with
+ * shadow volumes (chapter 15) three passes: depth only, the volumes into
+ * the stencil, then shading where the depth equals the visible surface's. */
+static void render_scene(struct ras_ctx *rc, const struct render_target *t)
+{
+    for (int pass = rc->sv_on ? 0 : 2; pass < 3; pass++) {
+        if (pass == 1) { ras_shadow_volumes(rc); continue; }
+        rc->depth_only = (uint8_t)(pass == 0);
+        rc->depth_func = (uint8_t)(rc->sv_on && pass == 2 ? RAS_DEPTH_EQUAL : RAS_DEPTH_LESS_WRITE);
+        for (uint16_t i = 0; i < rc->s->ninstances; i++) render_instance(rc, i, t);
+    }
+}
+
 int raster_strip(struct render_ctx *ctx, struct render_target *t, struct render_stats *st)
 {
     struct ras_ctx *rc = ctx_of(ctx);
@@ -984,24 +1026,7 @@ int raster_strip(struct render_ctx *ctx, struct render_target *t, struct render_
         project_vertex(rc, s->lines[i].b, &bx, &by);
         draw_line(rc, ax, ay, bx, by, s->lines[i].color);
     }
-    /* shadow volumes: depth pass, the volumes into the stencil, then
-     * shading where the depth equals the visible surface's */
-    for (int pass = rc->sv_on ? 0 : 2; pass < 3; pass++) {
-        if (pass == 1) { ras_shadow_volumes(rc); continue; }
-        rc->depth_only = (uint8_t)(pass == 0);
-        rc->depth_func = (uint8_t)(rc->sv_on && pass == 2 ? RAS_DEPTH_EQUAL : RAS_DEPTH_LESS_WRITE);
-        for (uint16_t i = 0; i < s->ninstances; i++) {
-            const struct ras_instance *in = &s->instances[i];
-            const struct ras_inst *ri = &rc->inst[i];
-            const struct ras_model *m = &s->models[in->model];
-            if (!ri->visible) continue;
-            for (uint16_t k = 0; k < m->ntris; k++) {
-                if (!rows_hit(rc->tri_rows[ri->tbase + k], t)) continue;
-                if (rc->book || s->ras.wireframe) book_render_triangle(rc, in, ri, m, &m->tris[k]);
-                else default_render_triangle(rc, in, ri, m, &m->tris[k], ri->tbase + k);
-            }
-        }
-    }
+    render_scene(rc, t);
     rc->depth_only = 0;
     rc->depth_func = RAS_DEPTH_LESS_WRITE;
     if (t->y0 == 0) {

@@ -38,6 +38,9 @@
  * row ranges of every triangle (the binning of triangles to strips, done
  * once per frame), light vectors, and one strip's depth buffer.
  * Not thread-safe per context.
+ *
+ * This header is the rasterizer's contract (conventions); the entry points
+ * are render.h's, the internals raster_int.h's.
  */
 #ifndef RASTER_H
 #define RASTER_H
@@ -46,10 +49,5 @@
 #include "render.h"
 
 #define RAS_SUBPIXEL_BITS 4   /* default vertex precision: 1/16 pixel */
-
-size_t raster_work_size(const struct scene *s, uint16_t width, uint16_t height, uint16_t strip_rows);
-int raster_init(struct render_ctx *ctx);
-int raster_begin_frame(struct render_ctx *ctx, uint16_t frame);
-int raster_strip(struct render_ctx *ctx, struct render_target *t, struct render_stats *st);
 
 #endif

@@ -1,9 +1,19 @@
-/* raster_int.h — what the rasterizer's files share (not a public API). */
+/* raster_int.h — what the rasterizer's files share, and render.c's entry
+ * points into it (not a public API: render.h is the interface, raster.h the
+ * contract). */
 #ifndef RASTER_INT_H
 #define RASTER_INT_H
 
+#include <stddef.h>
 #include "raster.h"
 #include "num_ras.h"
+
+/* ---- the entry points behind render.h (render.c dispatches) ----------- */
+
+size_t raster_work_size(const struct scene *s, uint16_t width, uint16_t height, uint16_t strip_rows);
+int raster_init(struct render_ctx *ctx);
+int raster_begin_frame(struct render_ctx *ctx, uint16_t frame);
+int raster_strip(struct render_ctx *ctx, struct render_target *t, struct render_stats *st);
 
 /* Code of the fast path's inner loops: placed in SRAM where the board's
  * build asks for it (RAS_RAM_TEXT: the RP2040 runs from flash through a

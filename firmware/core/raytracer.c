@@ -1,7 +1,7 @@
 /* raytracer.c — the main loop (chapter 2), TraceRay with reflections
  * (chapter 4), the camera (chapter 5), and chapter 5's transparency,
  * supersampling and subsampling; rendering by strips of rows. */
-#include "raytracer.h"
+#include "rt_int.h"
 #include "num_rt.h"
 
 #define ALIGN8(n) (((n) + 7u) & ~(size_t)7u)
@@ -193,6 +193,23 @@ struct rt_prim {
     uint8_t shadow;
 };
 
+/* row_item of a supersampled pixel (not a single sample's item; subsampling
+ * never interpolates across it): whether any of its rays hit an object. */
+#define RT_ITEM_SS_NONE (-2)
+#define RT_ITEM_SS_HIT  (-3)
+
+/* An item note says the pixel shows an object (not only the background). */
+static int item_covers(int16_t item) { return item >= 0 || item == RT_ITEM_SS_HIT; }
+
+/* Writes pixel (x, y) of the strip, with render.h's coverage: the mask
+ * (t->written) and the count of render_stats.pixels_written. */
+static void rt_put(struct rt_state *rt, struct render_target *t, int x, int y, rgb c, int covered)
+{
+    render_put(t, x, y, c);
+    if (t->written) t->written[(size_t)(y - t->y0) * t->width + (size_t)x] = (uint8_t)(covered != 0);
+    rt->n.covered += covered != 0;
+}
+
 static rgb background(const struct rt_state *rt) { return rt->s->background; }
 
 /* The object whose material an item shows (a CSG shows operand a's). */
@@ -341,15 +358,20 @@ static rgb primary(struct rt_state *rt, num x, num y, struct rt_prim *prim)
     return trace_primary(rt, canvas_to_viewport(rt, x, y), prim);
 }
 
-/* n x n rays on a regular grid inside the pixel, averaged. */
-static rgb supersample(struct rt_state *rt, num x, num y, int n)
+/* n x n rays on a regular grid inside the pixel, averaged; *hit set when
+ * one of them hit an object. */
+static rgb supersample(struct rt_state *rt, num x, num y, int n, int *hit)
 {
     rgb sum = rgb_make(NUM_ZERO, NUM_ZERO, NUM_ZERO);
+    struct rt_prim pr;
+    *hit = 0;
     for (int j = 0; j < n; j++)
         for (int i = 0; i < n; i++) {
             num ox = num_from_ratio(2 * i + 1 - n, 2 * n);
             num oy = num_from_ratio(2 * j + 1 - n, 2 * n);
-            sum = rgb_add(sum, primary(rt, num_add(x, ox), num_add(y, oy), NULL));
+            pr.item = -1;
+            sum = rgb_add(sum, primary(rt, num_add(x, ox), num_add(y, oy), &pr));
+            if (pr.item >= 0) *hit = 1;
         }
     return rgb_scale(sum, num_from_ratio(1, n * n));
 }
@@ -362,17 +384,23 @@ static int colours_differ(rgb a, rgb b, num diff)
 }
 
 /* One pixel: plain, fixed supersampling, or adaptive (refine edges only).
- * The centre sample's colour and object are kept in the row notes. */
+ * The centre sample's colour and object are kept in the row notes (a
+ * supersampled pixel's object as RT_ITEM_SS_*), and rt->px_covered says
+ * whether the pixel shows an object. */
 static rgb pixel(struct rt_state *rt, int col, int row, int have_left, int have_up, uint8_t *probe)
 {
     num x = num_from_int(col - rt->w / 2);
     num y = num_from_int(rt->h / 2 - 1 - row);
     if (rt->ss > 1 && !rt->ss_adaptive) {
-        rt->row_item[col] = -2;
-        return supersample(rt, x, y, rt->ss);
+        int hit;
+        rgb c = supersample(rt, x, y, rt->ss, &hit);
+        rt->row_item[col] = hit ? RT_ITEM_SS_HIT : RT_ITEM_SS_NONE;
+        rt->px_covered = (uint8_t)hit;
+        return c;
     }
     struct rt_prim pr = { -1, 0 };
     rgb c = trace_primary(rt, pixel_to_viewport(rt, col, row), &pr);
+    rt->px_covered = pr.item >= 0;
     if (probe) *probe = pr.item < 0 ? 0x80 : pr.shadow;
     if (rt->ss_adaptive) {
         int n = rt->ss > 1 ? rt->ss : 2;
@@ -383,7 +411,11 @@ static rgb pixel(struct rt_state *rt, int col, int row, int have_left, int have_
          * row's, the one at col still the row above's until written here */
         rt->row_item[col] = pr.item;
         rt->row_c[col] = c;
-        if (edge) return supersample(rt, x, y, n);
+        if (edge) {
+            int hit;
+            c = supersample(rt, x, y, n, &hit);
+            rt->px_covered = (uint8_t)hit;
+        }
         return c;
     }
     rt->row_item[col] = pr.item;
@@ -405,21 +437,22 @@ static void subsampled_row(struct rt_state *rt, struct render_target *t, int row
     }
     for (int a = 0; a < w - 1;) {
         int b = a + k < w ? a + k : w - 1;
-        int same = rt->row_item[a] == rt->row_item[b] && rt->row_item[a] != -2;
+        int same = rt->row_item[a] == rt->row_item[b] && rt->row_item[a] >= -1;
         for (int x = a + 1; x < b; x++) {
             if (same) {
                 num wgt = num_from_ratio(x - a, b - a);
                 rgb c = rgb_add(rgb_scale(rt->row_c[a], num_sub(NUM_ONE, wgt)), rgb_scale(rt->row_c[b], wgt));
-                render_put(t, x, row, c);
+                rt_put(rt, t, x, row, c, rt->row_item[a] >= 0);
                 if (probe) probe[x] = 0xFF;   /* not traced */
             } else {
-                render_put(t, x, row, pixel(rt, x, row, 0, 0, probe ? probe + x : NULL));
+                rgb c = pixel(rt, x, row, 0, 0, probe ? probe + x : NULL);
+                rt_put(rt, t, x, row, c, rt->px_covered);
             }
         }
-        render_put(t, a, row, rt->row_c[a]);
+        rt_put(rt, t, a, row, rt->row_c[a], item_covers(rt->row_item[a]));
         a = b;
     }
-    render_put(t, w - 1, row, rt->row_c[w - 1]);
+    rt_put(rt, t, w - 1, row, rt->row_c[w - 1], item_covers(rt->row_item[w - 1]));
 }
 
 static inline rgb rgb_sub(rgb a, rgb b) { return rgb_make(num_sub(a.r, b.r), num_sub(a.g, b.g), num_sub(a.b, b.b)); }
@@ -443,15 +476,18 @@ static void coarse_strip(struct rt_state *rt, struct render_target *t)
         int r1 = r0 + b < rt->h ? r0 + b : rt->h;
         for (int c0 = 0; c0 < rt->w; c0 += b) {
             int c1 = c0 + b < rt->w ? c0 + b : rt->w;
-            rgb c = sample_at(rt, (c0 + c1 - 1) / 2, (r0 + r1 - 1) / 2).c;
+            struct rt_sample sm = sample_at(rt, (c0 + c1 - 1) / 2, (r0 + r1 - 1) / 2);
+            rgb c = sm.c;
+            int covered = sm.item >= 0;
             uint16_t v = rgb_to_565(c);
             for (int y = r0 > t->y0 ? r0 : t->y0; y < r1 && y < t->y1; y++) {
-                if (t->rgb888) {
-                    for (int x = c0; x < c1; x++) render_put(t, x, y, c);
+                if (t->rgb888 || t->written) {
+                    for (int x = c0; x < c1; x++) rt_put(rt, t, x, y, c, covered);
                     continue;
                 }
                 uint16_t *row = t->rgb565 + (size_t)(y - t->y0) * t->width;
                 for (int x = c0; x < c1; x++) row[x] = v;   /* the block's one colour */
+                if (covered) rt->n.covered += (uint32_t)(c1 - c0);
             }
         }
     }
@@ -538,7 +574,8 @@ static void refine(struct rt_block *bk, int x, int y, int wx, int wy, int right,
     int ya = bk->r0 + y, yb = bk->r0 + y + wy + (bottom ? 1 : 0);      /* image rows owned */
     if (yb <= t->y0 || ya >= t->y1) return;
     if (wx <= 1 && wy <= 1 && !right && !bottom) {
-        render_put(t, bk->c0 + x, ya, grid_at(bk, x, y)->c);   /* ya is in the strip */
+        const struct rt_sample *sp = grid_at(bk, x, y);
+        rt_put(bk->rt, t, bk->c0 + x, ya, sp->c, sp->item >= 0);   /* ya is in the strip */
         return;
     }
     const struct rt_sample *s00 = grid_at(bk, x, y), *s01 = grid_at(bk, x + wx, y);
@@ -561,8 +598,10 @@ static void refine(struct rt_block *bk, int x, int y, int wx, int wy, int right,
         for (int gy = y; gy < y + wy + (bottom ? 1 : 0); gy++) {
             int row = bk->r0 + gy;
             if (row < t->y0 || row >= t->y1) continue;
-            for (int gx = x; gx < x + wx + (right ? 1 : 0); gx++)
-                render_put(t, bk->c0 + gx, row, grid_at(bk, gx, gy)->c);
+            for (int gx = x; gx < x + wx + (right ? 1 : 0); gx++) {
+                const struct rt_sample *sp = grid_at(bk, gx, gy);
+                rt_put(bk->rt, t, bk->c0 + gx, row, sp->c, sp->item >= 0);
+            }
         }
         return;
     }
@@ -583,7 +622,7 @@ static void refine(struct rt_block *bk, int x, int y, int wx, int wy, int right,
             int cx = gx == x ? 0 : (gx == x + wx ? 1 : -1);
             if (cx >= 0 && cy >= 0) c = (cy ? (cx ? s11 : s10) : (cx ? s01 : s00))->c;
             else c = rgb_add(lc, rgb_scale(dc, fxs[gx - x]));
-            render_put(t, bk->c0 + gx, row, c);
+            rt_put(bk->rt, t, bk->c0 + gx, row, c, s00->item >= 0);   /* the corners agree on it */
         }
     }
 }
@@ -602,7 +641,10 @@ static void adaptive_strip(struct rt_state *rt, struct render_target *t)
     const int b = rt->adapt, w = rt->w, h = rt->h;
     if (w < 2 || h < 2) {
         for (int y = t->y0; y < t->y1; y++)
-            for (int x = 0; x < w; x++) render_put(t, x, y, sample_at(rt, x, y).c);
+            for (int x = 0; x < w; x++) {
+                struct rt_sample sm = sample_at(rt, x, y);
+                rt_put(rt, t, x, y, sm.c, sm.item >= 0);
+            }
         return;
     }
     int r0 = t->y0 - t->y0 % b;
@@ -638,8 +680,10 @@ static void full_strip(struct rt_state *rt, struct render_target *t)
         /* adaptive supersampling compares with the row above when that was
          * the last row rendered (also across strips) */
         int have_up = row == rt->last_row + 1;
-        for (int col = 0; col < rt->w; col++)
-            render_put(t, col, row, pixel(rt, col, row, 1, have_up, probe ? probe + col : NULL));
+        for (int col = 0; col < rt->w; col++) {
+            rgb c = pixel(rt, col, row, 1, have_up, probe ? probe + col : NULL);
+            rt_put(rt, t, col, row, c, rt->px_covered);
+        }
         rt->last_row = row;
     }
 }
@@ -647,13 +691,13 @@ static void full_strip(struct rt_state *rt, struct render_target *t)
 int rt_render_strip(struct render_ctx *ctx, struct render_target *t, struct render_stats *st)
 {
     struct rt_state *rt = rt_state_of(ctx);
-    uint32_t rays0 = rt->n.rays;
+    uint32_t rays0 = rt->n.rays, covered0 = rt->n.covered;
     if (rt->pass == RENDER_PASS_COARSE) coarse_strip(rt, t);
     else if (rt->adapt) adaptive_strip(rt, t);
     else full_strip(rt, t);
     if (st) {
         st->rays += rt->n.rays - rays0;
-        st->pixels_written += (uint32_t)(t->y1 - t->y0) * t->width;
+        st->pixels_written += rt->n.covered - covered0;
     }
     return 0;
 }

@@ -32,14 +32,14 @@
  * recursion, at most RT_MAX_DEPTH levels of trace_ray (figures in raytracer.md).
  * Not thread-safe per state; two states may render different strips of the
  * same scene.
+ *
+ * This header is the ray tracer's contract (conventions and limits); the
+ * entry points are render.h's, the internals rt_int.h's.
  */
 #ifndef RAYTRACER_H
 #define RAYTRACER_H
 
-#include <stddef.h>
-#include <stdint.h>
 #include "render.h"
-#include "num_rt.h"
 
 /* Deepest reflection/refraction recursion honoured (rt_options.recursion_depth
  * is clamped to it; the book's control allows 0..5). */
@@ -48,167 +48,5 @@
 #define RT_MAX_ADAPT 8
 /* Rays per pixel side for supersampling (4 -> 16 rays). */
 #define RT_MAX_SS 4
-
-/* Work memory the ray tracer needs (scene-dependent tables + one row of
- * per-pixel notes for subsampling/adaptive supersampling). */
-size_t rt_work_size(const struct scene *s, uint16_t width, uint16_t height);
-/* Builds the state in ctx->work (tables, bounding-sphere hierarchy). */
-int rt_init(struct render_ctx *ctx);
-/* Per-frame constants: camera (with animation), per-object constants. */
-int rt_begin_frame(struct render_ctx *ctx, uint16_t frame);
-/* Rows [t->y0, t->y1) of the current frame. */
-int rt_render_strip(struct render_ctx *ctx, struct render_target *t, struct render_stats *st);
-
-/* ---- internals shared by raytracer.c, rt_intersect.c, rt_lighting.c ---- */
-
-/* A ray O + t*D; `origin` is the object whose surface O lies on (-1: none).
- * The exact tests' forms of D (a, ds, as, tscale) are computed on first use
- * (rt_ray_exact): a ray that every coarse test rejects never needs them. */
-struct rt_ray {
-    vec3 o, d;
-    struct rt_cdir cd;    /* coarse direction (num_rt.h) */
-    wnum a;               /* D.D, wide (the book's k1) */
-    vec3 ds;              /* D / 2^k with ds.ds = as in [0.25, 4) (robust tests) */
-    wnum as;
-    num tscale;           /* 2^-k: t = t' * tscale for a root t' along ds */
-    int16_t origin;
-    uint8_t from_camera;  /* O is the camera: per-frame sphere constants apply */
-    uint8_t exact;        /* a, ds, as, tscale computed */
-};
-
-/* What closest_intersection found. */
-struct rt_hit {
-    num t;
-    int16_t item;         /* drawn item: object index, or nobjects + CSG index */
-    int16_t surf;         /* object whose surface was hit (a CSG operand for CSG) */
-    uint8_t flip;         /* 1: the normal is the surface's, negated */
-};
-
-/* One traced primary sample: colour, item hit (-1: none), shadow bits. */
-struct rt_sample {
-    rgb c;
-    int16_t item;
-    uint8_t shadow;
-};
-
-/* Adaptive subsampling: a block is interpolated when its corners hit the
- * same item with the same shadows and no channel differs by more than
- * this many levels between them (rt_options.adaptive_threshold, default). */
-#define RT_SUBSAMPLE_DIFF 6
-
-/* Per-object constants, recomputed per frame. */
-struct rt_obj_cache {
-    wnum r2;              /* radius^2 */
-    vec3 co_cam;          /* camera - centre */
-    num k3_cam;           /* book: CO.CO - r*r for rays from the camera */
-    wnum c_cam;           /* robust: the same, wide */
-    vec3 e1, e2, n;       /* triangle: p1 - p0, p2 - p0, unit normal */
-    vec3 bc;              /* bounding sphere of the item (BVH) */
-    num br;
-    num spec_zero;        /* rt_powi_zero_below(material's exponent) */
-    struct rt_csphere cs; /* the sphere for the coarse tests (num_rt.h) */
-    struct num_divisor rdiv; /* radius, for the normals (P - C) / r */
-};
-
-/* Bounding-sphere hierarchy node: a leaf holds items [first, first+count). */
-struct rt_bvh_node {
-    vec3 c;
-    num r;
-    int16_t left, right;  /* children, -1 for a leaf */
-    int16_t first, count;
-};
-
-struct rt_counters {
-    uint32_t rays, primary_rays, shadow_rays;
-    uint32_t tests;       /* ray-object (or ray-bound) intersection tests */
-};
-
-struct rt_state {
-    const struct scene *s;
-    uint16_t w, h;
-    uint8_t book;         /* 1: book formulation, 0: robust */
-    uint8_t depth;        /* reflection depth of primary rays */
-    uint8_t cam_rotated;
-    uint8_t cached;       /* per-frame constants in use */
-    uint8_t shortcuts;    /* coarse rejections and exact early-outs in use */
-    uint8_t ss, ss_adaptive, subsample;
-    uint8_t adapt;        /* adaptive subsampling block side (0: off) */
-    num adapt_diff;       /* its colour threshold */
-    num *adapt_ratio;     /* [w (adapt + 1) + i] = num_from_ratio(i, w) for w <= adapt (bilinear weights) */
-    uint8_t pass;         /* enum render_pass of the following strips */
-    mat3 cam_rot;
-    vec3 cam_pos;
-    num vw, vh, d;        /* viewport of this render size */
-    num sx, sy;           /* Vw/W, Vh/H (cached canvas_to_viewport scale) */
-    num wn, hn;           /* W, H as num */
-    struct rt_obj_cache *oc;   /* nobjects */
-    int16_t *items;            /* drawn items, book order */
-    uint16_t nitems;
-    int16_t *unbounded;        /* planes (not in the hierarchy) */
-    uint16_t nunbounded;
-    struct rt_bvh_node *bvh;   /* 2*nitems nodes */
-    uint16_t nbvh;
-    int16_t *bvh_items;
-    int16_t *occluder;         /* per light: last occluder (-1: none) */
-    struct rt_ray *light_ray;  /* per light: directional lights' shadow-ray direction (rt_light_constants) */
-    num *light_len;            /* per light: |L| of directional lights */
-    rgb *row_c;                /* one row of colours (subsampling/adaptive) */
-    int16_t *row_item;
-    num *col_x;                /* viewport x of each column's centre */
-    num *row_y_tab;            /* adaptive subsampling: viewport y of every row (else NULL) */
-    num row_y;                 /* viewport y of row row_y_row */
-    int32_t row_y_row;
-    int16_t skip_item;         /* item closest_intersection skips (already tested), -1 none */
-    int32_t last_row;          /* row of the notes in row_c/row_item (-2: none) */
-    uint8_t *shadow_probe;     /* optional, w*h: shadow bits of primary hits */
-    struct rt_sample *corner[2]; /* adaptive subsampling: two rows of samples (width) */
-    uint8_t *corner_have[2];     /* which of them are traced */
-    struct rt_sample *colbuf[2]; /* a block's left and right columns (B + 1) */
-    uint8_t *colbuf_have[2];
-    uint8_t col_left;            /* which colbuf is the left column */
-    int32_t corner_row[2];       /* their image rows (-1: none) */
-    struct rt_sample *grid;      /* the block being refined, (B + 1)^2 samples */
-    uint8_t *grid_have;          /* which of them are traced */
-    struct rt_counters n;
-};
-
-/* The state inside a context (ctx->work). */
-static inline struct rt_state *rt_state_of(struct render_ctx *ctx) { return (struct rt_state *)ctx->work; }
-
-/* Records, for each primary hit, bit k set when light k is shadowed, 0x80 for
- * no hit; probe is w*h bytes, row-major (tests compare shadow decisions). */
-void rt_set_shadow_probe(struct render_ctx *ctx, uint8_t *probe);
-
-/* rt_intersect.c */
-struct rt_ray rt_make_ray(vec3 o, vec3 d, int16_t origin, uint8_t from_camera);
-void rt_ray_init(struct rt_ray *r, vec3 o, vec3 d, int16_t origin, uint8_t from_camera);
-/* Computes the exact tests' forms of the direction (once per ray). */
-void rt_ray_exact(struct rt_ray *r);
-int intersect_ray_sphere(const struct rt_state *rt, int16_t obj, struct rt_ray *ray,
-                         num *t1, num *t2);
-/* Closest hit with t_min < t < t_max (strict, earlier item wins ties); 0 if none.
- * any_hit: stop at the first hit found (shadow rays). */
-int closest_intersection(struct rt_state *rt, struct rt_ray *ray, num t_min, num t_max,
-                         struct rt_hit *hit, int any_hit);
-/* Whether `item` is hit with t_min < t < t_max. */
-int rt_item_hit(struct rt_state *rt, int16_t item, struct rt_ray *ray, num t_min, num t_max,
-                struct rt_hit *hit);
-vec3 rt_hit_normal(const struct rt_state *rt, const struct rt_hit *hit, vec3 p);
-void rt_build_bvh(struct rt_state *rt);
-void rt_frame_constants(struct rt_state *rt);
-/* Directional lights' shadow-ray forms and |L| (the lights do not move). */
-void rt_light_constants(struct rt_state *rt);
-
-/* raytracer.c: refraction direction (unit) by Snell's law for incoming D
- * (any length) at a surface with unit normal N and index of refraction ior
- * (N facing the incoming ray: entering; otherwise leaving); 0 on total
- * internal reflection. */
-int rt_refract(vec3 d, vec3 n, num ior, vec3 *out);
-
-/* rt_lighting.c: intensity at P (normal N, view V = -D) for specular exponent s
- * (s_zero: rt_powi_zero_below of it, or -1).
- * *shadow_bits gets bit k set when light k is shadowed (may be NULL). */
-num compute_lighting(struct rt_state *rt, vec3 p, vec3 n, vec3 v, num s, num s_zero, int16_t origin,
-                     uint8_t *shadow_bits);
 
 #endif

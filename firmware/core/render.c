@@ -1,7 +1,8 @@
 /* render.c — dispatch to the scene's renderer, and the shared pixel write. */
+#include <string.h>
 #include "render.h"
-#include "raytracer.h"
-#include "raster.h"
+#include "rt_int.h"
+#include "raster_int.h"
 
 size_t render_work_size(const struct scene *s, uint16_t width, uint16_t height, uint16_t strip_rows)
 {
@@ -49,7 +50,13 @@ int render_begin_frame(struct render_ctx *ctx, uint16_t frame)
 
 int render_strip(struct render_ctx *ctx, struct render_target *t, struct render_stats *st)
 {
-    if (t->y0 >= t->y1 || t->y1 > ctx->height || t->width != ctx->width) return -1;
+    struct render_stats ignored;
+    if (t->y0 >= t->y1 || t->y1 > ctx->height || t->width != ctx->width || t->y1 - t->y0 > ctx->strip_rows)
+        return -1;
+    if (!st) {
+        memset(&ignored, 0, sizeof ignored);
+        st = &ignored;      /* the renderers count into it; the caller asked for nothing */
+    }
     if (ctx->scene->kind == SCENE_RAYTRACE) return rt_render_strip(ctx, t, st);
     if (ctx->scene->kind == SCENE_RASTER) return raster_strip(ctx, t, st);
     return -1;  /* not a kind this core renders */

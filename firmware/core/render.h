@@ -33,9 +33,14 @@ struct render_target {
                                 the scene wrote the pixel, 0 where only the background is */
 };
 
+/* What render_strip adds up (the caller zeroes it; NULL: not counted).
+ * pixels_written means the same for both renderers: writes of the scene's
+ * own content into the strip, not the background fill; a pixel drawn over
+ * again (rasterizer overdraw) counts again, and the ray tracer writes every
+ * covered pixel once. render_target.written marks the pixels so covered. */
 struct render_stats {
-    uint32_t rays;
-    uint32_t triangles_in, triangles_drawn;
+    uint32_t rays;                           /* ray tracer: rays traced (primary and secondary) */
+    uint32_t triangles_in, triangles_drawn;  /* rasterizer: the frame's, counted with its first strip */
     uint32_t pixels_written;
 };
 
@@ -58,7 +63,11 @@ int render_init(struct render_ctx *ctx, const struct scene *s, uint16_t width, u
 /* Prepares frame `frame` (animation, per-frame constants, binning). */
 int render_begin_frame(struct render_ctx *ctx, uint16_t frame);
 
-/* Renders rows [t->y0, t->y1) of the current frame into t. */
+/* Renders rows [t->y0, t->y1) of the current frame into t (at most
+ * strip_rows of them, the full width): every pixel of the strip and, when
+ * given, of t->rgb888 and t->written; nothing outside them. 0, or -1 for a
+ * strip that is empty, too tall, past the frame or of another width. st may
+ * be NULL. */
 int render_strip(struct render_ctx *ctx, struct render_target *t, struct render_stats *st);
 
 /* How the following strips of the current frame are rendered (progressive

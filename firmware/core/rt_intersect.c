@@ -15,7 +15,7 @@
  *   tests then reject). The near root c/q has no cancellation: for the
  *   book's ground seen from the camera c = 5001^2 - 5000^2 = 10001 exactly.
  */
-#include "raytracer.h"
+#include "rt_int.h"
 
 #define CSG_ITEM(rt, item) ((item) - (int16_t)(rt)->s->nobjects)
 

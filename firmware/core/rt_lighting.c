@@ -6,7 +6,7 @@
  * i += I*pow((r.v)/(|R|*|V|), s). In Q15.16 they hold for |L| up to 16000:
  * n.l and r.v are wide dot products rounded once, |L| comes from a wide sum.
  */
-#include "raytracer.h"
+#include "rt_int.h"
 
 /* Shadow test: is anything between P and the light (t in (epsilon, t_max))?
  * With any-hit the search stops at the first occluder; with the cache the

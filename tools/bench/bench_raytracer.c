@@ -7,7 +7,7 @@
  * the copy is not measured. Figures are instructions, not cycles. */
 #include <string.h>
 #include "bench.h"
-#include "raytracer.h"
+#include "render.h"
 #include "bench/grid64.h"
 #include "book/raytracer-02.h"
 #include "book/raytracer-05.h"

@@ -3,6 +3,9 @@
 #include "scene_format.h"
 #include "scene_parse.h"
 
+_Static_assert(CORE_SCENE_EINPUT == SCENE_EINPUT && CORE_SCENE_EIO == SCENE_EIO && CORE_SCENE_ENOMEM == SCENE_ENOMEM,
+               "core_api.h repeats enum scene_status");
+
 #define CAT2(a, b) a##b
 #define CAT(a, b) CAT2(a, b)
 #if NUM_MODE == NUM_MODE_FIXED
@@ -69,7 +72,7 @@ static int format(const void *scene, const char *path, uint16_t w, uint16_t h, s
 {
     if (!scene_format_choose(scene, w, h, NULL, 0, 0, f)) return 0;
     scene_format_refusal(f, path, msg, msglen);
-    return 2;
+    return -1;
 }
 
 static void exact_methods(void *scene)

@@ -24,6 +24,12 @@ struct scene_info {
     uint16_t ninstances;       /* rasterizer: model instances (0 for the ray tracer) */
 };
 
+/* What scene_load, scene_parse and scene_read return besides 0
+ * (scene_parse.h's enum scene_status, for programs without a numeric mode). */
+#define CORE_SCENE_EINPUT (-1)
+#define CORE_SCENE_EIO    (-2)
+#define CORE_SCENE_ENOMEM (-3)
+
 struct core_api {
     const char *numeric;       /* "fixed", "float", "double" */
     int (*scene_load)(const char *path, void **scene, char *err, size_t errlen);
@@ -41,7 +47,7 @@ struct core_api {
     uint32_t *saturations;     /* the mode's saturation counter */
     int num_frac;              /* NUM_FRAC of a fixed-point core, 0 in float and double */
     /* The number format the scene needs at w x h (tools/scene/scene_format.h):
-     * 0 with f->num_frac set, or 2 with the refusal, one line naming PATH, in
+     * 0 with f->num_frac set, or -1 with the refusal, one line naming PATH, in
      * msg. Meaningful on the double core, whose scene holds the exact values. */
     int (*format)(const void *scene, const char *path, uint16_t w, uint16_t h, struct scene_format *f,
                   char *msg, size_t msglen);

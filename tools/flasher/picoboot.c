@@ -96,7 +96,7 @@ static int fail(struct session *s, const char *what, uint32_t addr)
     }
     snprintf(s->err, s->err_len, "USB transfer failed during %s at 0x%08x: %s Flash is not verified; "
              "nothing was rebooted", what, (unsigned)addr, why);
-    return 2;
+    return -1;
 }
 
 /* Sends a command, its data phase (OUT data or IN into `in`), and checks the
@@ -131,7 +131,7 @@ int pb_flash(const struct pb_transport *t, const struct pb_image *img, int reboo
         img->addr - PB_FLASH_BASE + (uint64_t)img->len > PB_FLASH_SIZE) {
         snprintf(err, err_len, "image of %u bytes at 0x%08x is not page-aligned flash", (unsigned)img->len,
                  (unsigned)img->addr);
-        return 2;
+        return -1;
     }
 
     int o = t->open(t->ctx, detail, sizeof detail);
@@ -140,18 +140,18 @@ int pb_flash(const struct pb_transport *t, const struct pb_image *img, int reboo
     case PB_OPEN_NODEV:
         snprintf(err, err_len, "no RP2040 in BOOTSEL mode found (USB %04x:%04x): hold BOOTSEL while "
                  "plugging the board in%s%s", PB_VID, PB_PID_RP2040_BOOT, detail[0] ? "; " : "", detail);
-        return 2;
+        return -1;
     case PB_OPEN_ACCESS:
         snprintf(err, err_len, "permission denied opening the RP2040 boot ROM (USB %04x:%04x): install "
                  "tools/flasher/60-picoboot.rules in /etc/udev/rules.d (docs/firmware.md)", PB_VID,
                  PB_PID_RP2040_BOOT);
-        return 2;
+        return -1;
     case PB_OPEN_WRONG:
         snprintf(err, err_len, "wrong device: %s", detail[0] ? detail : "no PICOBOOT interface");
-        return 2;
+        return -1;
     default:
         snprintf(err, err_len, "cannot open the RP2040 boot ROM: %s", detail[0] ? detail : "USB error");
-        return 2;
+        return -1;
     }
 
     int rc = 0;
@@ -161,7 +161,7 @@ int pb_flash(const struct pb_transport *t, const struct pb_image *img, int reboo
     if (t->reset && t->reset(t->ctx) != 0) {
         snprintf(err, err_len, "cannot reset the PICOBOOT interface of the RP2040 boot ROM: unplug the board "
                  "and hold BOOTSEL while plugging it in again");
-        rc = 2;
+        rc = -1;
         goto out;
     }
     pb_encode_exclusive(cmd, s.token, PB_EXCLUSIVE);
@@ -191,7 +191,7 @@ int pb_flash(const struct pb_transport *t, const struct pb_image *img, int reboo
                 snprintf(err, err_len, "verify failed at 0x%08x (wrote 0x%02x, read 0x%02x): not rebooted "
                          "into a bad image; flash again", (unsigned)(img->addr + off + i),
                          img->data[off + i], back[i]);
-                rc = 2;
+                rc = -1;
                 goto out;
             }
     }

@@ -114,7 +114,7 @@ struct pb_image {
  * left it stalled), exclusive access, exit XIP, erase the sectors the image
  * covers, write it in pages, read it back and compare, and only then reboot
  * into it (nothing half-written runs); without reboot, exclusive access is
- * released instead. Returns 0, or 2 with a one-line message (no newline) in
+ * released instead. Returns 0, or -1 with a one-line message (no newline) in
  * err, which names the boot ROM's status code when it gives one.
  * `progress` may be NULL. */
 int pb_flash(const struct pb_transport *t, const struct pb_image *img, int reboot,

@@ -391,14 +391,14 @@ int scene_format_choose(const struct scene *s, int width, int height, const int 
         if (f->ill) {
             f->ill_frac = f->num_frac;
             f->num_frac = -1;
-            return 2;
+            return -1;
         }
     }
     f->raytrace = s->kind == SCENE_RAYTRACE;
     for (int i = 0; i < s->nobjects; i++)
         if (s->objects[i].shape == RT_PLANE) f->planes = 1;
     if (f->num_frac >= 0) return 0;
-    if (!allow_wide) return 2;
+    if (!allow_wide) return -1;
     f->num_frac = f->coarsest;
     f->wide = 1;
     return 0;

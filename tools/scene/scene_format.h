@@ -70,7 +70,7 @@ struct scene;
 
 /* Analyses S rendered at WIDTH x HEIGHT (both >= 1) and picks among
  * FRACS[0 .. NFRACS) (each in SCENE_FORMAT_FRAC_MIN..MAX; NFRACS >= 1; NULL
- * for all of 20 … 12). Returns 0 with f->num_frac set, or 2 when no candidate
+ * for all of 20 … 12). Returns 0 with f->num_frac set, or -1 when no candidate
  * holds the scene and ALLOW_WIDE is 0 (f->num_frac = -1; see
  * scene_format_refusal). */
 int scene_format_choose(const struct scene *s, int width, int height, const int *fracs, int nfracs,

@@ -86,6 +86,7 @@ struct parser {
     jmp_buf fail;
     char *err;
     size_t errlen;
+    int oom;                /* the failure was an allocation */
 };
 
 static void fail_at(struct parser *p, int line, int col, const char *fmt, ...)
@@ -116,6 +117,7 @@ static void *alloc(struct parser *p, size_t n)
         unsigned char *m = c ? calloc(1, sz) : NULL;
         if (!m) {
             free(c);
+            p->oom = 1;
             fail_at(p, p->line, p->col, "out of memory");
         }
         c->mem = m;
@@ -1474,7 +1476,7 @@ static int parse(const char *file, const char *dir, const char *text, size_t len
     *out = NULL;
     if (!p) {
         snprintf(err, errlen, "%s:1:1: error: out of memory", file);
-        return 2;
+        return SCENE_ENOMEM;
     }
     p->file = file;
     p->src = text;
@@ -1487,9 +1489,10 @@ static int parse(const char *file, const char *dir, const char *text, size_t len
         snprintf(p->dir, sizeof p->dir, "%s", dir);
     }
     if (setjmp(p->fail)) {
+        int rc = p->oom ? SCENE_ENOMEM : SCENE_EINPUT;
         arena_free(&p->arena);
         free(p);
-        return 2;
+        return rc;
     }
     if (len == 0) fail_at(p, 1, 1, "empty file");
     if (len > SCENE_MAX_BYTES) fail_at(p, 1, 1, "file larger than %u bytes", SCENE_MAX_BYTES);
@@ -1558,7 +1561,7 @@ int scene_read_text(const char *path, char **text, size_t *len, char *err, size_
     FILE *f = fopen(path, "rb");
     if (!f) {
         snprintf(err, errlen, "%s:1:1: error: cannot open file: %s", path, strerror(errno));
-        return 2;
+        return SCENE_EIO;
     }
     /* read at most SCENE_MAX_BYTES + 1 so a huge (or endless) file is refused */
     size_t cap = 65536, n = 0;
@@ -1580,7 +1583,7 @@ int scene_read_text(const char *path, char **text, size_t *len, char *err, size_
     if (!buf || ioerr) {
         free(buf);
         snprintf(err, errlen, "%s:1:1: error: %s", path, buf ? "read error" : "out of memory");
-        return 2;
+        return buf ? SCENE_EIO : SCENE_ENOMEM;
     }
     *text = buf;
     *len = n;
@@ -1605,7 +1608,8 @@ int scene_load(const char *path, struct scene **out, char *err, size_t errlen)
     char *buf;
     size_t n;
     *out = NULL;
-    if (scene_read_text(path, &buf, &n, err, errlen)) return 2;
+    int rrc = scene_read_text(path, &buf, &n, err, errlen);
+    if (rrc) return rrc;
     int rc = scene_parse_text(path, buf, n, out, err, errlen);
     /* the scene keeps no pointer into the text */
     free(buf);

@@ -19,14 +19,25 @@
 
 #define SCENE_MAX_BYTES (4u << 20)
 
-/* Loads FILE. Returns 0 and sets *out, or returns 2 (input error) and writes
- * one line "FILE:LINE:COLUMN: error: MESSAGE" (no newline) into err. */
+/* What the functions below return: 0, or a negative code with one line
+ * "FILE:LINE:COLUMN: error: MESSAGE" (no newline) in err. A program maps
+ * them to its exit status (host_sim and scenec: 2 for SCENE_EINPUT and
+ * SCENE_EIO, 1 for SCENE_ENOMEM). */
+enum scene_status {
+    SCENE_OK = 0,
+    SCENE_EINPUT = -1,      /* not a valid scene (syntax, values, limits, a missing image file) */
+    SCENE_EIO = -2,         /* the scene file cannot be opened or read */
+    SCENE_ENOMEM = -3       /* out of memory */
+};
+
+/* Loads FILE. Returns 0 and sets *out, or an enum scene_status code with
+ * the line in err. */
 int scene_load(const char *path, struct scene **out, char *err, size_t errlen);
 
 /* The two halves of scene_load, for a caller that parses one file several
  * times (once per numeric mode) but must read it once (a FIFO, /dev/stdin):
  * scene_read_text reads FILE (at most SCENE_MAX_BYTES + 1 bytes) into a
- * malloc'ed *text (free() it), 0 or 2 with the line in err; scene_parse_text
+ * malloc'ed *text (free() it), 0 or a scene_status code; scene_parse_text
  * parses text as the content of FILE (image files relative to its
  * directory); the scene keeps no pointer into text. */
 int scene_read_text(const char *path, char **text, size_t *len, char *err, size_t errlen);

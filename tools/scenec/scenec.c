@@ -413,14 +413,15 @@ int main(int argc, char **argv)
     /* read once (a FIFO or /dev/stdin), parsed by the double and the fixed core */
     char *text;
     size_t text_len;
-    if (scene_read_text(path, &text, &text_len, err, sizeof err)) {
+    int rc = scene_read_text(path, &text, &text_len, err, sizeof err);
+    if (rc) {
         fprintf(stderr, "%s\n", err);
-        return 2;
+        return rc == SCENE_ENOMEM ? 1 : 2;
     }
-    if (scene_parse_text(path, text, text_len, &s, err, sizeof err)) {
+    if ((rc = scene_parse_text(path, text, text_len, &s, err, sizeof err))) {
         fprintf(stderr, "%s\n", err);
         free(text);
-        return 2;
+        return rc == SCENE_ENOMEM ? 1 : 2;
     }
     /* the C identifier: path under firmware/scenes/ without .scene */
     char id[256], ID[256];

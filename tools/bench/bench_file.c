@@ -8,7 +8,9 @@
  * -semihosting-config ...,arg=bench,arg=SCENE,arg=W,arg=H,arg=STRIP,arg=FRAMES[,arg=coarse]):
  * the render size, the strip height and how many of the scene's frames to
  * render (0: all of them); `coarse` renders each frame's progressive preview
- * pass only (render_set_pass RENDER_PASS_COARSE: one ray per block). Measured, in instructions (qemu -icount, not
+ * pass only (render_set_pass RENDER_PASS_COARSE: one ray per block). In
+ * fixed point the scene gets struct scene.fits from the format analysis at
+ * the image's NUM_FRAC, as host_sim and the scene compiler give it. Measured, in instructions (qemu -icount, not
  * cycles): render_init once, and per frame render_begin_frame and every
  * render_strip. Printed:
  *   RESULT init=I frames=F total=T checksum=C rays=R pixels=P
@@ -21,6 +23,7 @@
 #include <string.h>
 #include "bench.h"
 #include "render.h"
+#include "scene_format.h"
 #include "scene_parse.h"
 
 void initialise_monitor_handles(void);
@@ -49,6 +52,11 @@ int bench_main(void)
     if (strip > h) strip = h;
     struct scene *s = NULL;
     if (scene_load(argv[1], &s, err, sizeof err)) return bench_fail(err);
+#if NUM_MODE == NUM_MODE_FIXED
+    struct scene_format fmt;
+    if (scene_format_choose(s, (int)w, (int)h, NULL, 0, 0, &fmt) == 0)
+        s->fits = (uint8_t)scene_format_fits(&fmt, NUM_FRAC);
+#endif
     uint16_t frames = s->frames ? s->frames : 1;
     if (nframes && nframes < frames) frames = (uint16_t)nframes;
     size_t need = render_work_size(s, (uint16_t)w, (uint16_t)h, (uint16_t)strip);

@@ -27,6 +27,8 @@ void bench_report(const char *what, const char *numeric, const char *variant,
 /* The arguments qemu was given (-semihosting-config ...,arg=A,arg=B) as one
  * line "A B", by semihosting SYS_GET_CMDLINE; 0 on success. */
 int bench_cmdline(char *buf, unsigned len);
+/* "ERROR <msg>" on its own line; returns 1 (for bench_main's exit status). */
+int bench_fail(const char *msg);
 int bench_main(void);                     /* provided by the image */
 
 #endif

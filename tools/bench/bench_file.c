@@ -8,7 +8,9 @@
  * -semihosting-config ...,arg=bench,arg=SCENE,arg=W,arg=H,arg=STRIP,arg=FRAMES[,arg=coarse]):
  * the render size, the strip height and how many of the scene's frames to
  * render (0: all of them); `coarse` renders each frame's progressive preview
- * pass only (render_set_pass RENDER_PASS_COARSE: one ray per block). Measured, in instructions (qemu -icount, not
+ * pass only (render_set_pass RENDER_PASS_COARSE: one ray per block). In
+ * fixed point the scene gets struct scene.fits from the format analysis at
+ * the image's NUM_FRAC, as host_sim and the scene compiler give it. Measured, in instructions (qemu -icount, not
  * cycles): render_init once, and per frame render_begin_frame and every
  * render_strip. Printed:
  *   RESULT init=I frames=F total=T checksum=C rays=R pixels=P
@@ -21,17 +23,10 @@
 #include <string.h>
 #include "bench.h"
 #include "render.h"
+#include "scene_format.h"
 #include "scene_parse.h"
 
 void initialise_monitor_handles(void);
-
-static int fail(const char *msg)
-{
-    bench_puts("ERROR ");
-    bench_puts(msg);
-    bench_puts("\n");
-    return 1;
-}
 
 static void field(const char *name, uint64_t v)
 {
@@ -43,29 +38,35 @@ int bench_main(void)
 {
     initialise_monitor_handles();
     static char line[1200], err[600];
-    if (bench_cmdline(line, sizeof line - 1)) return fail("no command line");
+    if (bench_cmdline(line, sizeof line - 1)) return bench_fail("no command line");
     char *argv[8];
     int argc = 0;
     for (char *t = strtok(line, " "); t && argc < 8; t = strtok(NULL, " ")) argv[argc++] = t;
-    if (argc != 6 && !(argc == 7 && !strcmp(argv[6], "coarse"))) return fail("usage: bench SCENE W H STRIP FRAMES [coarse]");
+    if (argc != 6 && !(argc == 7 && !strcmp(argv[6], "coarse")))
+        return bench_fail("usage: bench SCENE W H STRIP FRAMES [coarse]");
     int coarse = argc == 7;
     long w = strtol(argv[2], NULL, 10), h = strtol(argv[3], NULL, 10);
     long strip = strtol(argv[4], NULL, 10), nframes = strtol(argv[5], NULL, 10);
     if (w < 1 || w > 4096 || h < 1 || h > 4096 || strip < 1 || nframes < 0 || nframes > 10000)
-        return fail("bad size, strip or frames");
+        return bench_fail("bad size, strip or frames");
     if (strip > h) strip = h;
     struct scene *s = NULL;
-    if (scene_load(argv[1], &s, err, sizeof err)) return fail(err);
+    if (scene_load(argv[1], &s, err, sizeof err)) return bench_fail(err);
+#if NUM_MODE == NUM_MODE_FIXED
+    struct scene_format fmt;
+    if (scene_format_choose(s, (int)w, (int)h, NULL, 0, 0, &fmt) == 0)
+        s->fits = (uint8_t)scene_format_fits(&fmt, NUM_FRAC);
+#endif
     uint16_t frames = s->frames ? s->frames : 1;
     if (nframes && nframes < frames) frames = (uint16_t)nframes;
     size_t need = render_work_size(s, (uint16_t)w, (uint16_t)h, (uint16_t)strip);
     void *work = malloc(need ? need : 1);
     uint16_t *px = malloc((size_t)w * (size_t)strip * sizeof *px);
-    if (!work || !px) return fail("out of memory");
+    if (!work || !px) return bench_fail("out of memory");
     struct render_ctx ctx;
     uint64_t t0 = bench_now();
     if (render_init(&ctx, s, (uint16_t)w, (uint16_t)h, (uint16_t)strip, work, need) != 0)
-        return fail("render_init");
+        return bench_fail("render_init");
     uint64_t init = bench_now() - t0, total = 0;
     uint32_t sum = 2166136261u;   /* FNV-1a over frame 0's pixels, little-endian */
     struct render_stats st0;
@@ -74,14 +75,14 @@ int bench_main(void)
         struct render_stats st;
         memset(&st, 0, sizeof st);
         uint64_t a = bench_now();
-        if (render_begin_frame(&ctx, f) != 0) return fail("render_begin_frame");
-        if (coarse && render_set_pass(&ctx, RENDER_PASS_COARSE) != 0) return fail("render_set_pass");
+        if (render_begin_frame(&ctx, f) != 0) return bench_fail("render_begin_frame");
+        if (coarse && render_set_pass(&ctx, RENDER_PASS_COARSE) != 0) return bench_fail("render_set_pass");
         total += bench_now() - a;
         for (long y = 0; y < h; y += strip) {
             struct render_target t = { .width = (uint16_t)w, .height = (uint16_t)h, .y0 = (uint16_t)y,
                                        .y1 = (uint16_t)(y + strip < h ? y + strip : h), .rgb565 = px };
             a = bench_now();
-            if (render_strip(&ctx, &t, &st) != 0) return fail("render_strip");
+            if (render_strip(&ctx, &t, &st) != 0) return bench_fail("render_strip");
             total += bench_now() - a;
             if (f == 0)
                 for (long i = 0; i < (long)(t.y1 - t.y0) * w; i++) {

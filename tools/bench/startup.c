@@ -68,6 +68,14 @@ int bench_cmdline(char *buf, unsigned len)
     return semihost(0x15, &blk);
 }
 
+int bench_fail(const char *msg)
+{
+    bench_puts("ERROR ");
+    bench_puts(msg);
+    bench_puts("\n");
+    return 1;
+}
+
 uint64_t bench_now(void)
 {
     uint32_t w1, w2, v, pending;

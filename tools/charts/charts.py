@@ -172,6 +172,9 @@ def formats(a, outdir):
     save(fig, outdir, "formats")
 
 
+SWEEP_FIELDS = ["within1", "psnr", "max_err", "bleed", "per_pixel", "pixels", "num_frac", "saturations", "error"]
+
+
 def stability(a, outdir):
     L = None
     for sw in sweeps.SWEEPS:

@@ -20,27 +20,19 @@
 
 void initialise_monitor_handles(void);
 
-static int fail(const char *msg)
-{
-    bench_puts("ERROR ");
-    bench_puts(msg);
-    bench_puts("\n");
-    return 1;
-}
-
 int bench_main(void)
 {
     initialise_monitor_handles();
     static char line[1200], err[600];
-    if (bench_cmdline(line, sizeof line - 1)) return fail("no command line");
+    if (bench_cmdline(line, sizeof line - 1)) return bench_fail("no command line");
     char *argv[6];
     int argc = 0;
     for (char *t = strtok(line, " "); t && argc < 6; t = strtok(NULL, " ")) argv[argc++] = t;
-    if (argc != 5) return fail("usage: probe SCENE W H STRIP");
+    if (argc != 5) return bench_fail("usage: probe SCENE W H STRIP");
     long w = strtol(argv[2], NULL, 10), h = strtol(argv[3], NULL, 10), strip = strtol(argv[4], NULL, 10);
-    if (w < 1 || w > 4096 || h < 1 || h > 4096 || strip < 1 || strip > 4096) return fail("bad size");
+    if (w < 1 || w > 4096 || h < 1 || h > 4096 || strip < 1 || strip > 4096) return bench_fail("bad size");
     struct scene *s = NULL;
-    if (scene_load(argv[1], &s, err, sizeof err)) return fail(err);
+    if (scene_load(argv[1], &s, err, sizeof err)) return bench_fail(err);
     size_t n = render_work_size(s, (uint16_t)w, (uint16_t)h, (uint16_t)(strip > h ? h : strip));
     scene_free(s);
     bench_puts("WORK ");

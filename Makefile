@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT
 # Top-level build. GNU make; out-of-tree objects in $(BUILD); header
 # dependencies from -MMD; safe under make -j.
 #
@@ -122,13 +123,14 @@ HAL_SRCS := hal/dcs.c $(sort $(wildcard hal/panel*.c))
 # bound for the target).
 SCENEC      := $(BUILD)/scenec
 SCENE_PROBE := $(BUILD)/scenes/work_probe.elf
+# The .c and the .h are one grouped target (GNU make 4.3): whatever includes
+# the header is rebuilt in the same run as the scene is recompiled.
 define SCENEC_RULE
-$(1): firmware/scenes/$(2).scene $(SCENEC) $(if $(filter 1,$(6)),$(SCENE_PROBE))
-	@mkdir -p $$(@D)
+$(1) $(patsubst %.c,%.h,$(1)) &: firmware/scenes/$(2).scene $(SCENEC) $(if $(filter 1,$(6)),$(SCENE_PROBE))
+	@mkdir -p $(dir $(1))
 	$(Q)$(if $(filter 1,$(6)),tw=$$$$(tools/scenec/target_work.sh $(SCENE_PROBE) $$< $(subst x, ,$(3)) $(4)) || exit 2;) \
 	$(SCENEC) --size $(3) --strip-rows $(4) $(if $(5),--id $(5)) $(if $(filter 1,$(6)),--target-work $$$$tw) \
-		-o $$@ $$< >$$(@:.c=.log) || { cat $$(@:.c=.log); exit 2; }
-$(patsubst %.c,%.h,$(1)): $(1)
+		-o $(1) $$< >$(patsubst %.c,%.log,$(1)) || { cat $(patsubst %.c,%.log,$(1)); exit 2; }
 endef
 scenec_rule = $(eval $(call SCENEC_RULE,$(strip $(1)),$(strip $(2)),$(strip $(3)),$(strip $(4)),$(strip $(5)),$(strip $(6))))
 

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* dcs.c — MIPI DCS/DBI command layer over struct hal. */
 #include "dcs.h"
 

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* dcs.h — the generic MIPI DCS/DBI command layer (type C, 4-wire SPI).
  *
  * Everything a panel driver sends goes through here: a command byte with D/C

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* hal.h — what a display needs from a board.
  *
  * A backend (host emulation, Linux spidev + libgpiod, RP2040, ...) fills a

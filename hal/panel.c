@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* panel.c — the generic part of the panel drivers: runs a descriptor's
  * tables through the DCS layer. Controller specifics live in the
  * descriptors (panel_st7789.c, panel_ili9341.c). */

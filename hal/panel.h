@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* panel.h — display controller drivers as data, on top of the DCS layer.
  *
  * A struct panel_desc describes one module (controller + glass): its size,

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* panel_ili9341.c — Ilitek ILI9341 modules (240x320 memory and glass).
  *
  * The common modules have a BGR colour filter (MADCTL BGR set in every

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* panel_st7789.c — Sitronix ST7789 modules (240x320 memory).
  *
  * The controller's memory is 240 columns x 320 rows. A 240x240 glass shows

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* compare.c — PSNR, SSIM and per-pixel difference counts. */
 #include <math.h>
 #include <stdlib.h>

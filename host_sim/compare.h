@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* compare.h — image accuracy figures against a reference (the double build). */
 #ifndef COMPARE_H
 #define COMPARE_H

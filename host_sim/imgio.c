@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* imgio.c — atomic PNG/PPM/raw writers (see imgio.h). */
 #include "imgio.h"
 

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* imgio.h — host_sim's output files, written atomically.
  *
  * Every writer creates a temporary file in the destination's directory,

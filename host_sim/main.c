@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* main.c — host_sim: renders a scene strip by strip with one of the three
  * renderer cores and sends every strip through the panel driver into the
  * emulated controller (or a memory framebuffer), then writes what the glass

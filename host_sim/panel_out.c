@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* panel_out.c — host_sim's display path (see panel_out.h).
  *
  * sim backend:   panel driver (hal/panel.c) -> DCS layer -> hal_sim ->

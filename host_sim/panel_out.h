@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* panel_out.h — where host_sim's strips go: a panel driver over a HAL
  * backend (the emulated controller by default), or a plain memory
  * framebuffer (--panel none).

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* window.c — see window.h. */
 #include "host_sim/window.h"
 

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* window.h — host_sim --window: a live window of the glass (SDL2 from the
  * distribution), scaled by a whole factor, updated per strip. Built without
  * SDL2 (no pkg-config sdl2 at build time), window_open fails with one line

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT
 # `make bench` on the emulated MCUs (qemu-system-arm, see docs/numerics.md).
 #
 # Images run on two emulated boards:

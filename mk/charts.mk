@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT
 # `make charts`: the speed/accuracy lab's Pareto charts, each scene at every
 # fixed-point format, and the stability sweeps (tools/charts/charts.py,
 # matplotlib from the distribution), into $(OUT)/charts. The lab measures

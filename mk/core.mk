@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT
 # Renderer core + scene parser, bundled once per numeric mode.
 #
 # CORE_SRCS run on the microcontroller; SCENE_SRCS are the host-side parser.

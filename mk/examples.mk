@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT
 # `make examples`: the renderer and the HAL in a program of your own
 # (firmware/examples/, docs/embedding.md), one source built twice:
 #   $(BUILD)/examples/host/panel_demo        this host (ASan+UBSan)

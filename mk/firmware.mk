@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT
 # Board images: `make firmware` cross-builds the RP2040 (Pico + ST7789) and
 # STM32F411 images; `make flash` writes the Pico image over USB.
 #

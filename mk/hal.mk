@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT
 # HAL: DCS layer, panel drivers, emulated panel + sim backend, Linux backend.
 #
 # For programs that link the HAL (host_sim, tests):

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT
 # host_sim: the host simulator (see docs/host_sim.md).
 #
 # Built in two variants: $(BUILD)/host_sim (optimised, what `make` and

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT
 # Numeric layer (firmware/core/num*): accuracy tests, report, soft-float check.
 #
 # test_num is built per numeric mode, and for fixed point also with

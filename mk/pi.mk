@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT
 # Raspberry Pi: the Linux HAL backend and the flasher's GPIO reset against
 # both libgpiod APIs, and the backend's byte stream through the emulated panel.
 #

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT
 # Rasterizer (firmware/core/raster*.c, num_ras.c): tests and docs in docs/rasterizer.md.
 #
 # Test programs link the core sources of one numeric mode directly, plus

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT
 # Ray tracer (part I of the book): its tests and measurements.
 # See docs/raytracer.md. The renderer itself is part of CORE_SRCS (mk/core.mk).
 

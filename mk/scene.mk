@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT
 # Scene files: the parser's tests (per numeric mode), its fuzz target, and
 # the scene compiler (tools/scenec).
 

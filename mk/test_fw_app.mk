@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT
 # The firmware application on a host board (tests/fw_app_host.c): main.c,
 # the HAL's DCS layer and panel drivers, hal/sim into the emulated ST7789,
 # the core in fixed point; scenes compiled by tools/scenec for this host (its
@@ -35,3 +36,6 @@ TESTS     += $(FWH)/fw_app_host
 
 # The include graph follows the layers (the table is in the script).
 TESTS     += tests/test_includes.py
+
+# Every source file carries its licence (SPDX-License-Identifier: MIT).
+TESTS     += tests/test_spdx.py

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* book_digests.h — the reference digests of the book's demos, read from
  * tests/data/book_digests.txt (the only place they are written down).
  *

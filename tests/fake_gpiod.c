@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* fake_gpiod.c — see fake_gpiod.h. */
 #define _POSIX_C_SOURCE 200809L
 #include <errno.h>

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* fake_gpiod.h — a libgpiod without a kernel, for tests: the functions the
  * Linux HAL backend (hal/linux/hal_linux.c) and the flasher's GPIO reset
  * (tools/flasher/gpio_reset.c) call, in the 1.x API or the 2.x API

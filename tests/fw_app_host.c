@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* fw_app_host.c — the firmware application (firmware/app/main.c, built with
  * main renamed fw_app_main) on a host board: its HAL is hal/sim's, into the
  * strict emulated ST7789, so the byte sequence the board sends (init, the

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* fw_host_ref.c — renders frame 0 of scene `index` of a firmware scene table
  * (firmware/app/fw_scenes.h) on the host through the fixed-point core, as
  * raw RGB565 little-endian: the reference the emulated Pico's glass must

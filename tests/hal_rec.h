@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* A recording fake HAL for tests: every operation is appended to a text log
  * ("CS0 DC0 2A DC1 00 00 00 EF CS1 D120 ..."); runs of 8 or more equal
  * bytes are written "BBxN". With async = 1 the asynchronous write stays in

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* raster_api.c — one numeric mode's rasterizer and scene parser behind a
  * table, so test_raster_modes can compare the three builds in one program
  * (compiled once per NUM_MODE, bundled by mk/raster.mk). */

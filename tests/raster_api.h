@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* raster_api.h — per-mode entry of the rasterizer tests (see raster_api.c). */
 #ifndef RASTER_API_H
 #define RASTER_API_H

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* raster_harness.h — renders a scene strip by strip into whole-frame test
  * buffers (RGB565, RGB888, coverage), through the core's render_* API. */
 #ifndef RASTER_HARNESS_H

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* rt_acc_api.c — one mode's entry in the accuracy test (compiled per mode). */
 #include "rt_acc_api.h"
 #include "rt_render.h"

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* rt_acc_api.h — the ray tracer of each numeric mode side by side in one
  * program (the accuracy test). Each mode's core and scene parser are linked
  * into one object whose only global symbol is rtacc_<mode> (mk/raytracer.mk). */

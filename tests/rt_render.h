@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* rt_render.h — render a ray-tracer scene through the core's entry points
  * into caller buffers (tests; compiled once per numeric mode). */
 #ifndef RT_RENDER_H

@@ -1,4 +1,5 @@
 #!/bin/sh
+# SPDX-License-Identifier: MIT
 # Runs every test command given as an argument and totals the results.
 #
 # A test command prints one line per case: "PASS <name>", "FAIL <name>: <why>"

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* scene_files.h — scene files as test fixtures, loaded through the parser
  * (tools/scene/scene_parse.h) in the numeric mode the test is compiled in.
  *

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* scenec_fields — the C data scenec emits equals the parsed scene, field by
  * field: each generated scene (compiled for the host in fixed point at the
  * NUM_FRAC scenec chose) against scene_load() of its file in the same build.

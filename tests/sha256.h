@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* sha256.h — SHA-256 (FIPS 180-4) for test digests of rendered buffers.
  * The round constants are derived from the primes at first use (fractional
  * parts of square and cube roots), which double precision gives exactly. */

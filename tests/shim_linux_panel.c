@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* shim_linux_panel.c — an LD_PRELOAD library that puts the emulated strict
  * panel (hal/sim/emu_panel.c) behind the Linux HAL backend: host_sim
  * --backend linux runs unchanged, its spidev device and its GPIO lines are

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Exact byte streams and line changes of the DCS layer. */
 #include <string.h>
 #include "check.h"

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Emulated panel API and the sim backend (the command-level rules are in
  * the vectors, tests/vectors/panel, replayed by test_panel_vectors). */
 #include <stdlib.h>

@@ -1,4 +1,5 @@
 #!/bin/sh
+# SPDX-License-Identifier: MIT
 # make examples: firmware/examples/panel_demo on the host and on the emulated
 # Cortex-M0+. The host's trace (its HAL's bus, in the notation of the panel
 # test vectors) is replayed through the strict emulated ST7789: no protocol

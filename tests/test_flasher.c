@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* test_flasher.c — PICOBOOT command encoding, UF2 loading, and the whole
  * flashing sequence against a fake USB device, with a failure injected at
  * every step. */

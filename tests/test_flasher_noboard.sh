@@ -1,4 +1,5 @@
 #!/bin/sh
+# SPDX-License-Identifier: MIT
 # With no board in BOOTSEL mode attached, the real flasher says so on one
 # line and exits 2. Usage: test_flasher_noboard.sh BUILD_DIR
 set -u

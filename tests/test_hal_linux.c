@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* What the Linux backend does without hardware: clear one-line errors. */
 #include <string.h>
 #include "check.h"

@@ -1,4 +1,5 @@
 #!/bin/sh
+# SPDX-License-Identifier: MIT
 # host_sim's command line: exit codes and messages for bad input, output
 # sizes and formats, atomic output, --stats, --frames, and protocol
 # violations injected into the panel driver (exit 3).

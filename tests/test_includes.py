@@ -1,4 +1,5 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: MIT
 """test_includes.py — the include graph follows the layers.
 
 Every quoted #include of every C source and header is resolved to the

@@ -1,4 +1,5 @@
 #!/bin/sh
+# SPDX-License-Identifier: MIT
 # Input and output faults of host_sim and scenec: a FIFO or /dev/stdin as the
 # scene is read once; an output that is the scene file, or two outputs on
 # one path, are refused; a FIFO or character device as an output is written

@@ -1,4 +1,5 @@
 #!/bin/sh
+# SPDX-License-Identifier: MIT
 # host_sim --backend linux, its real byte stream and line changes checked by
 # the strict emulated panel: tests/shim_linux_panel.c is preloaded in place
 # of spidev and libgpiod, once with the distribution's libgpiod (1.x API,

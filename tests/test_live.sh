@@ -1,4 +1,5 @@
 #!/bin/sh
+# SPDX-License-Identifier: MIT
 # host_sim live: --loop (bounded by --loop-frames, ended by SIGINT/SIGTERM
 # with exit 0), the dirty-rectangle flush against the full one (same glass,
 # fewer SPI bytes), per-frame --out patterns, --fps-overlay and the progress
@@ -46,7 +47,9 @@ for sig in INT TERM; do
   "$hs" --scene $anim --loop --out "$tmp/sig.png" >"$tmp/sig.txt" 2>&1 &
   pid=$!
   i=0
-  while [ "$(grep -c '^frame' "$tmp/sig.txt")" -lt 3 ] && [ $i -lt 100 ]; do sleep 0.05; i=$((i + 1)); done
+  # up to 60 s for three frames (a loaded machine starts the ASan build slowly;
+  # a signal before the handler is installed would kill it)
+  while [ "$(grep -c '^frame' "$tmp/sig.txt")" -lt 3 ] && [ $i -lt 1200 ]; do sleep 0.05; i=$((i + 1)); done
   kill -$sig $pid
   wait $pid
   rc=$?

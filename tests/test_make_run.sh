@@ -1,4 +1,5 @@
 #!/bin/sh
+# SPDX-License-Identifier: MIT
 # `make run` itself: renders every scene of firmware/scenes/ into a
 # temporary OUT directory, one line per scene, each a 240x240 PNG at
 # OUT/<scene>.png (subdirectories created); and the scene loop on a scene

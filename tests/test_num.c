@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* test_num.c — accuracy and edge cases of the numeric layer (num.h).
  *
  * Built once per numeric mode (and for fixed point with NUM_FRAC 12, 16, 20).

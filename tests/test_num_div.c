@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* test_num_div.c — the fixed-point division kernels and the dot products
  * give exactly the bits of their definitions.
  *

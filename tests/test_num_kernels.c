@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* test_num_kernels.c — the fixed-point square-root kernels (num_int.h) and
  * the operations built on them give exactly the bits of their definitions.
  *

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* test_num_v6m.c — the ARMv6-M integer kernels of num_int.h (Thumb-1
  * assembly: num_umul32, num_smul32, num_mul_round; the table-driven
  * num_clz32) give the bits of their definitions, on the emulated Cortex-M0+.

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Panel drivers: exact init streams, and round trips through the emulated
  * controller in every rotation of every descriptor. */
 #include <stdlib.h>

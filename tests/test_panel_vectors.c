@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Replays the emulated-panel test vectors (the .txt files under tests/vectors/panel, format
  * in docs/hal.md) through emu_panel. The same files drive the JavaScript
  * port of the emulator, so both decode the protocol alike.

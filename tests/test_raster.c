@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* test_raster.c — the default path's promises, in one numeric mode:
  * strips give identical images, the top-left rule writes every pixel of a
  * closed mesh exactly once, any camera position is safe, 16-bit depth

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* test_raster_book.c — the book path (ras_options.book_exact) in the double
  * build at 600x600 reproduces the demos' reference digests and coverage
  * (tests/data/book_digests.txt), whole frame and in strips, and those of

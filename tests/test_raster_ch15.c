@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* test_raster_ch15.c — chapter 15 on the default path, through the parser
  * and the core of each numeric mode (tools/core_api/core_api.h):
  * - shadow maps and shadow volumes: a cube over a floor, lit from one side,

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* test_raster_modes.c — fixed and float rasterizers against the double
  * build at the same size, for every raster scene, book path and default
  * path: coverage (which pixels are written) agrees on >= 99.9% of pixels,

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* test_raster_scenes.c — the book's raster scene files (firmware/scenes/book)
  * through the parser and the core of each numeric mode (tools/core_api/core_api.h):
  * the double build at 600x600 reproduces the reference digests

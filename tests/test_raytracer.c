@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* test_raytracer.c — the ray tracer in one numeric mode (built per mode).
  *
  * Double mode: the book demos' reference digests (tests/data/book_digests.txt),

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* test_raytracer_accuracy.c — fixed and float against the double build.
  *
  * raytracer-02 … 06 at 240x240 and 600x600: at least 99% of pixels with

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* test_render_contract.c — render.h's contract holds the same way for both
  * renderers: the coverage mask (render_target.written) is 1 exactly where a
  * pixel shows the scene and 0 where only the background is, the

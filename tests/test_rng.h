@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Deterministic random numbers for the numeric tests (xorshift64*).
  * Define TEST_RNG_SEED before including to give a test its own sequence. */
 #ifndef TESTS_TEST_RNG_H

@@ -1,4 +1,5 @@
 #!/bin/sh
+# SPDX-License-Identifier: MIT
 # The single-core firmware image runs in the rp2040js emulator: the first
 # frame the emulated ST7789 shows equals the host's render of the same scene
 # table bit for bit, and the run reports cycles per frame.

@@ -1,4 +1,5 @@
 #!/bin/sh
+# SPDX-License-Identifier: MIT
 # The emulated Pico shows the book scenes exactly as host_sim renders them:
 # the single-core book image (raytracer-02, then raster-11, one frame each)
 # runs in rp2040js and each frame the emulated ST7789 shows must equal

@@ -1,4 +1,5 @@
 #!/bin/sh
+# SPDX-License-Identifier: MIT
 # The emulated Pico shows the cube scenes (small3dlib's workload,
 # firmware/scenes/bench) as host_sim renders them. These are the scenes that
 # run the rasterizer's fast span loops, which the Pico images execute from

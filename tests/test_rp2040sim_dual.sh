@@ -1,4 +1,5 @@
 #!/bin/sh
+# SPDX-License-Identifier: MIT
 # The two-core images run on both emulated cores (tools/rp2040sim/dualcore.js):
 # core 1 is started through the boot ROM's launch handshake, renders the odd
 # strips and hands them to core 0 over the SIO FIFOs; every first frame the

@@ -1,4 +1,5 @@
 #!/bin/sh
+# SPDX-License-Identifier: MIT
 # The board's panel options in the emulator: the ILI9341 320x240 image
 # (cgfs-ili9341, FW_PANEL=panel_ili9341_320x240) shows on the emulated
 # ILI9341 module exactly the host's 320x240 render of the firmware's scene

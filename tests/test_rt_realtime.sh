@@ -1,4 +1,5 @@
 #!/bin/sh
+# SPDX-License-Identifier: MIT
 # The ray tracer's real-time option (adaptive subsampling) keeps the accuracy
 # and ray counts docs/raytracer.md states: raytracer-05 at 240x240 in fixed
 # point against the double exact render. A change that costs accuracy or

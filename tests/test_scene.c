@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* test_scene — the scene parser: every book scene parses with the expected
  * contents, the book's doubles survive exactly (double build), and bad input
  * gets exit status 2 with the expected message at the expected position.

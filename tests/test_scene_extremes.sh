@@ -1,4 +1,5 @@
 #!/bin/sh
+# SPDX-License-Identifier: MIT
 # The scene compiler's promise on valid extreme scenes (tools/scene/gen_extreme.py):
 # for every generated scene that the double build renders, host_sim in fixed
 # point either refuses it on one line with the format analysis's reason

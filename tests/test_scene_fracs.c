@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* test_scene_fracs — the fixed-point renderers at every NUM_FRAC scenec may
  * choose, against the double build, on every scene under firmware/scenes.
  *

@@ -1,4 +1,5 @@
 #!/bin/sh
+# SPDX-License-Identifier: MIT
 # Runs the scene parser's fuzz target for a bounded time over its corpus
 # (tests/fuzz/corpus/scene, plus every scene under firmware/scenes, read
 # only). New inputs go to a temporary directory, not into the tree.

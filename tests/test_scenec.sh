@@ -1,4 +1,5 @@
 #!/bin/sh
+# SPDX-License-Identifier: MIT
 # scenec: every scene under firmware/scenes compiles to C; the C compiles for
 # the firmware (arm-none-eabi-gcc, Cortex-M0+, fixed point at the NUM_FRAC
 # scenec chose); the RAM it reserves (.bss) is the renderer's exact need ON

@@ -1,4 +1,5 @@
 #!/bin/sh
+# SPDX-License-Identifier: MIT
 # The fixed-point build of the renderer core links no floating-point code.
 #
 # Cross-compiles every firmware/core/*.c for the Cortex-M0+ (ARMv6-M, no FPU)

@@ -1,4 +1,5 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: MIT
 """The boundaries of the stability sweeps, pinned (tools/charts/sweeps.py).
 
 Each sweep of `make charts` finds where a method fails along one parameter

@@ -1,4 +1,5 @@
 #!/bin/sh
+# SPDX-License-Identifier: MIT
 # host_sim --window on a virtual display (Xvfb): the window, read back with
 # xwd, is the glass --out writes, scaled by --window-scale; it is updated
 # while --loop runs and ends cleanly on SIGINT; a build or a machine without

@@ -1,4 +1,5 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: MIT
 """Compares a screenshot (xwd, ZPixmap, 24/32 bits per pixel) with a PNG
 (8-bit RGB or RGBA, as host_sim writes): the screenshot must be the PNG
 scaled up by a whole factor, each channel within a tolerance.

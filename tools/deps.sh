@@ -1,4 +1,5 @@
 #!/bin/sh
+# SPDX-License-Identifier: MIT
 # Installs the distribution packages a make target needs (Debian, Ubuntu,
 # Raspberry Pi OS). As root or with passwordless sudo it installs what is
 # missing; otherwise it prints the one command to run and fails.

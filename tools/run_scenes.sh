@@ -1,4 +1,5 @@
 #!/bin/sh
+# SPDX-License-Identifier: MIT
 # Renders every scene under SCENES (recursively, *.scene) through host_sim
 # on the emulated ST7789 at 240x240 in fixed point, into OUT/<scene>.png,
 # and prints one line per scene: name, size, numeric, panel, render time per

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* font5x7.c — glyph bitmaps and the strip-clipped text drawer. */
 #include <stddef.h>
 #include "font5x7.h"

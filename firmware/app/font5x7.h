@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* font5x7.h — a tiny built-in font for the frame-rate overlay: digits,
  * '.', ' ', 'f', 'p', 's'; 5x7 pixels per glyph, 6 pixels advance. */
 #ifndef FONT5X7_H

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* fw_board.h — what the application needs from a board, beyond hal.h.
  *
  * Implemented once per board (firmware/board/<board>/fw_board_*.c). The

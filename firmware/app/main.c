@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* main.c — the firmware application: cycles through the scenes compiled
  * into the image, rendering each frame strip by strip while DMA sends the
  * previous strip, and shows the frame rate on screen and over UART. Every

@@ -1,4 +1,5 @@
 #!/bin/sh
+# SPDX-License-Identifier: MIT
 # scene_table.sh — writes the firmware's scene table (fw_scenes[], see
 # firmware/app/fw_scenes.h) for scenes compiled by tools/scenec.
 # usage: scene_table.sh OUT.c NAME=HEADER...

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* scenes_builtin.c — the scene table when no compiled scenes are given: one
  * small C-built scene (an empty raster scene: its dark blue background), so
  * the whole chain runs without the scene compiler. */

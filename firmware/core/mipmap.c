@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* mipmap.c — see mipmap.h. */
 #include "mipmap.h"
 

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* mipmap.h — the box filter that makes a texture's mipmaps (chapter 14).
  *
  * Level l + 1 of a w x h RGB888 image is (w > 1 ? w / 2 : 1) x

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* num.c — scalar operations for the three numeric modes (see num.h). */
 #define NUM_NO_INLINE   /* the out-of-line definitions live here */
 #include "num.h"

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* num.h — the numeric layer: one scalar type, three builds.
  *
  * Every renderer algorithm is written once against this interface; the build

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* num_inline.h — inline forms of the fixed-point build's hottest operations
  * (included by num.h; NUM_NO_INLINE, set by num.c and vec.c, which define
  * the out-of-line functions, turns it off).

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* num_int.h — integer kernels of the fixed-point build, shared by num.c and
  * vec.c. Internal to the numeric layer (algorithms use num.h only).
  *

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* num_ras.c — mode-specific rasterizer primitives (see num_ras.h). */
 #include "num_ras.h"
 #if NUM_MODE == NUM_MODE_FIXED

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* num_ras.h — the few rasterizer primitives whose best form depends on the
  * numeric mode (see num.h). Algorithms in raster_*.c call only these and
  * num.h; only this file and num_ras.c test NUM_MODE.

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* num_rt.h — what the ray tracer needs to know about the numeric mode.
  *
  * The ray tracer is one source for the three modes (no NUM_MODE tests in

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* raster.c — the rasterizer's frame and strip loop: work memory, per-frame
  * transforms and binning (render_instance), and render_triangle for the
  * book path and the default path. */

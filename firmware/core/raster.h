@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* raster.h — the rasterizer of part II of the book (chapters 6–14), strip by strip.
  *
  * Coordinates (the book's): world and camera space have +x right, +y up, the

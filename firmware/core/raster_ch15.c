@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* raster_ch15.c — chapter 15 on the default path: shadow maps with
  * percentage-closer filtering, stencil shadow volumes (depth-fail), the
  * procedural environment of environment mapping. Normal maps are applied

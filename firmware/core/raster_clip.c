@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* raster_clip.c — chapter 11: clipping. Instances are culled by their
  * bounding sphere against the book's five planes; the book path drops
  * triangles straddling a plane, the default path splits them. */

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* raster_fast.c — the default path's fast triangle: span loops specialised
  * per feature combination, integer stepping, no division per pixel.
  *

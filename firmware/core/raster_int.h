@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* raster_int.h — what the rasterizer's files share, and render.c's entry
  * points into it (not a public API: render.h is the interface, raster.h the
  * contract). */

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* raster_lines.c — PutPixel and chapter 6: lines (Interpolate, DrawLine). */
 #include "raster_int.h"
 

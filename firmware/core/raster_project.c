@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* raster_project.c — chapters 9 and 10: ProjectVertex, instance and camera
  * transforms as homogeneous 4x4 matrices (the book's bracketing). */
 #include "raster_int.h"

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* raster_shading.c — chapter 13: ComputeIllumination (camera space). */
 #include "raster_int.h"
 

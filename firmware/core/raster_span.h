@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* raster_span.h — one span loop of the fast path (raster_fast.c), included
  * once per feature combination with these macros set:
  *   SPAN_NAME   function name

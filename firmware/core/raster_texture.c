@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* raster_texture.c — chapter 14: texel lookups, filtering, mipmaps. */
 #include "raster_int.h"
 #include "mipmap.h"

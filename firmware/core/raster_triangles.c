@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* raster_triangles.c — chapters 7 and 8: DrawFilledTriangle,
  * DrawShadedTriangle and the book's scan conversion (docs/book-demos.md), plus the
  * default path's edge-function triangle with the top-left fill rule. */

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* raytracer.c — the main loop (chapter 2), TraceRay with reflections
  * (chapter 4), the camera (chapter 5), and chapter 5's transparency,
  * supersampling and subsampling; rendering by strips of rows. */

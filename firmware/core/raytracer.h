@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* raytracer.h — part I of the book: the ray tracer (chapters 2–5).
  *
  * Conventions (the book's): world +x right, +y up, +z forward; the camera at

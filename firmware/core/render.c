@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* render.c — dispatch to the scene's renderer, and the shared pixel write. */
 #include <string.h>
 #include "render.h"

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* render.h — the renderer core's entry points, shared by both renderers.
  *
  * Conventions (the book's, with what real firmware adds):

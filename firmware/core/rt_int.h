@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* rt_int.h — the ray tracer's internals, shared by raytracer.c,
  * rt_intersect.c, rt_lighting.c and render.c (and the tests that look
  * inside). Not for embedders: render.h is the interface, raytracer.h the

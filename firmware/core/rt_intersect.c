@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* rt_intersect.c — rays against objects: IntersectRaySphere (chapter 2),
  * ClosestIntersection, and chapter 5's planes, triangles, CSG of spheres and
  * the bounding-sphere hierarchy.

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* rt_lighting.c — ComputeLighting (chapter 3) with shadows (chapter 4) and
  * chapter 5's shadow-ray optimisations.
  *

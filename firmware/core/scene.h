@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* scene.h — what a scene contains, in the renderer's numbers.
  *
  * The one data model shared by the scene parser (host, tools/scene/), the

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* vec.c — vectors, matrices and colours on top of the scalar layer.
  * Mode-independent: the same source serves fixed, float and double. Operand
  * order follows the book (dot products x, y, z left to right; matrix rows

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* panel_demo.c — the renderer and the HAL in a program of your own.
  *
  * Two scenes compiled by tools/scenec (the book's raytracer-02, ray-traced,

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* qemu_m0plus.c — runs panel_demo on qemu's mps2-an385 board, Cortex-M0+
  * code: tools/bench's start-up code (vector table, .data and .bss) calls
  * bench_main, and newlib's rdimon sends stdout and stderr to the host by

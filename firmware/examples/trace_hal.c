@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* trace_hal.c — see trace_hal.h. */
 #include "trace_hal.h"
 

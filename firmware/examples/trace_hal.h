@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* trace_hal.h — a HAL of seven callbacks (hal/hal.h) whose bus is a text
  * trace: the shape of the HAL a board provides, with a file where the SPI
  * peripheral and the GPIO lines would be.

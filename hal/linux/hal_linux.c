@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* hal_linux.c — HAL backend: spidev + libgpiod + CLOCK_MONOTONIC.
  *
  * libgpiod's API changed with its major version: 1.x (Debian 12) has line

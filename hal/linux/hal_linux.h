@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* hal_linux.h — HAL backend for Linux: spidev for SPI, libgpiod (the 1.x
  * or the 2.x API, whichever pkg-config finds at build time) for the D/C,
  * RESET, CS and backlight lines, CLOCK_MONOTONIC for time.

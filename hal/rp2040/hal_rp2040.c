@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* hal_rp2040.c — SPI0 + DMA + GPIO + timer behind hal.h. */
 #include "hal_rp2040.h"
 #include "rp2040_regs.h"

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* hal_rp2040.h — the RP2040 backend of hal.h: SPI0 (PL022) + DMA + SIO GPIO
  * + the 1 MHz timer.
  *

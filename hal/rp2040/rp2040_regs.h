@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* rp2040_regs.h — the RP2040 registers this firmware touches (addresses and
  * bit positions from the RP2040 datasheet). Only what is used is listed.
  *

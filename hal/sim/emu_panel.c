@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* emu_panel.c — emulated ST7789 / ILI9341 controller behind a module glass.
  *
  * Model (datasheet behaviour; the rules are listed in docs/hal.md):

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* emu_panel.h — an emulated SPI display controller (ST7789, ILI9341).
  *
  * Decodes the byte stream and line changes a driver produces, as the

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* hal_sim.c — HAL backend into an emulated panel with a simulated clock. */
 #include "hal_sim.h"
 

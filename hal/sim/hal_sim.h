@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* hal_sim.h — the host HAL backend: bytes and lines go into an emulated
  * panel, time is a simulated clock.
  *

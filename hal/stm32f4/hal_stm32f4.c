@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* hal_stm32f4.c — SPI1 + DMA2 + GPIO + TIM2 behind hal.h. */
 #include "hal_stm32f4.h"
 #include "stm32f411_regs.h"

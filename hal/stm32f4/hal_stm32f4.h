@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* hal_stm32f4.h — the STM32F4 backend of hal.h: SPI1 + DMA2 + GPIO + TIM2.
  *
  * Pins are build-time options, numbered port * 16 + index (PA5 = 5,

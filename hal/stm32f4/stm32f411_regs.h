@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* stm32f411_regs.h — the STM32F411 registers this firmware touches
  * (addresses and bits from the reference manual, RM0383). */
 #ifndef STM32F411_REGS_H

@@ -1,5 +1,6 @@
+/* SPDX-License-Identifier: MIT */
 /* fuzz_scene — libFuzzer target for the scene parser: any input must give
- * 0 (a scene, which is then walked) or 2 with a one-line
+ * 0 (a scene, which is then walked) or SCENE_EINPUT with a one-line
  * "FILE:LINE:COLUMN: error: ..." message; never a crash, leak or hang. */
 #include <stdint.h>
 #include <stdlib.h>
@@ -24,7 +25,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
         }
         if (bad) abort();
         scene_free(s);
-    } else if (rc != 2 || strncmp(err, "fuzz.scene:", 11) || !strstr(err, ": error: ") || strchr(err, '\n')) {
+    } else if (rc != SCENE_EINPUT || strncmp(err, "fuzz.scene:", 11) || !strstr(err, ": error: ") || strchr(err, '\n')) {
         abort();
     }
     return 0;

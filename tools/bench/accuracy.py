@@ -1,4 +1,5 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: MIT
 """Adds size and accuracy fields to the scene lines of results.jsonl.
 
 Every `scene:NAME` measurement gets `width` and `height` (from a `@WxH` suffix

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* bench.h — measurement API of the emulated-MCU benchmark images.
  *
  * An image runs in qemu-system-arm with -icount shift=0 (one instruction =

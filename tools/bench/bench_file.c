@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* bench_file.c — instructions per frame of any scene file on the emulated
  * MCUs: the cost side of the speed/accuracy lab (tools/charts/lab.py).
  *

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* bench_frame.c — instructions per frame of the renderer core alone (no
  * board, no SPI) for each scene of the firmware's scene table, in the
  * numeric mode the image is built for: the qemu benchmark images of

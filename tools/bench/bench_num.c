@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* bench_num.c — instructions per operation of the numeric layer, in the
  * numeric mode the image is built for, beside the toolchain's own float,
  * double and 64-bit integer routines (fixed-point images only, so each is

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* bench_raster.c — instructions per frame and per drawn pixel of the
  * rasterizer on the emulated MCUs: raster-11 (two cubes and a sphere, Phong)
  * and raster-13 (textured cubes) at 240x240 in strips of 16 rows, each on

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* bench_raytracer.c — instructions per frame of the ray tracer on the
  * emulated MCUs: raytracer-05 at 240x240 rendered in strips of 16 rows (the
  * firmware's way), then the same frame with each chapter-5 option switched

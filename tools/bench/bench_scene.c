@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* bench_scene.c — instructions per frame and per drawn pixel of one
  * compiled raster scene (firmware/scenes/bench/, built by tools/scenec at
  * its own number format) on the emulated MCUs, 240x240 in strips of 16 rows.

@@ -1,4 +1,5 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: MIT
 """Instructions per function of an emulated-MCU image (qemu-system-arm).
 
 Runs IMAGE.elf once in qemu with the translation-block trace

@@ -1,4 +1,5 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: MIT
 """Runs emulated-MCU benchmark images in qemu-system-arm and records results.
 
 Each image is $(BUILD)/bench/<target>/<mode>/<name>.elf, target m0plus-qemu

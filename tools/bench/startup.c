@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* startup.c — minimal start-up for the MPS2 AN385/AN386 emulated boards:
  * vector table, reset handler (.data/.bss, FPU enable on the M4F), SysTick
  * time base and semihosting output/exit. Memory map (both boards): code in

@@ -1,4 +1,5 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: MIT
 """Prints the markdown cost table of docs/numerics.md from results.jsonl:
 instructions per operation (qemu instruction counts, not cycles) for each
 target and numeric mode.  Usage: table.py [build/bench/results.jsonl]"""

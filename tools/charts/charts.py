@@ -1,4 +1,5 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: MIT
 """Speed-against-accuracy and numeric-stability charts (make charts).
 
 pareto: the lab (tools/charts/lab.py): every variant of each lab scene, its

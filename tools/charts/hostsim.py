@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT
 """host_sim renders and image comparisons for the lab, the sweeps and their tests.
 
 render() runs host_sim on scene text (written to a temporary file) with

@@ -1,4 +1,5 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: MIT
 """The speed/accuracy lab: every method choice of the renderers as a variant,
 its cost on the emulated MCUs against its accuracy, the Pareto frontier per
 scene and target.

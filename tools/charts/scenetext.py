@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT
 """Method choices written into scene text (the speed/accuracy lab's variants).
 
 An option is KEY=VALUE: set in the scene's renderer block (`raytracer { }`

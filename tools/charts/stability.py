@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT
 """host_sim's accuracy figures of one scene against the double build
 (`host_sim --compare double --stats`), for tools/bench/accuracy.py.
 """

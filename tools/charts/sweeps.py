@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT
 """The stability sweeps: where each method fails, and the pins that hold
 those boundaries in place.
 

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* core_api.c — the per-mode table (compiled once per NUM_MODE). */
 #include "core_api.h"
 #include "scene_format.h"

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* core_api.h — one renderer core per numeric mode, side by side in one program.
  *
  * The core (firmware/core) and the scene parser (tools/scene) are compiled

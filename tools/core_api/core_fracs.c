@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* core_fracs.c — picks the fixed-point core of a NUM_FRAC (mk/core.mk bundles
  * one per format the scene analysis may choose). */
 #include "core_api.h"

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* core_select.c — picks a numeric mode's core by name. */
 #include <string.h>
 #include "core_api.h"

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* gpio_reset.c — RUN/BOOTSEL through libgpiod (see gpio_reset.h): the 1.x
  * API or the 2.x one, as GPIOD_API_MAJOR says (pkg-config's version of
  * libgpiod at build time, mk/firmware.mk). */

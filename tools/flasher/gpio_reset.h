@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* gpio_reset.h — puts a Pico into its boot ROM from a Raspberry Pi host:
  * libgpiod (1.x or 2.x API) drives the Pico's RUN and BOOTSEL lines.
  *

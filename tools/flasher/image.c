@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* image.c — UF2 and .bin images for the flasher. */
 #include <stdio.h>
 #include <stdlib.h>

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* image.h — loading a flash image from a UF2 or a flat .bin file. */
 #ifndef FLASHER_IMAGE_H
 #define FLASHER_IMAGE_H

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* main.c — build/flasher: writes a UF2 or .bin image to an RP2040 in
  * BOOTSEL mode over USB (PICOBOOT), verifies it, then reboots the board.
  *

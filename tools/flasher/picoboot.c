@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* picoboot.c — PICOBOOT command encoding and the flashing sequence. */
 #include <stdio.h>
 #include <string.h>

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* picoboot.h — the RP2040 boot ROM's PICOBOOT USB interface (vendor
  * interface of USB device 2e8a:0003 in BOOTSEL mode), and the flashing
  * sequence built on it.

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* usb_libusb.c — finds the RP2040 boot ROM (2e8a:0003), claims its vendor
  * (class 0xFF) interface and moves bulk transfers. */
 #include <stdio.h>

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* usb_libusb.h — the real PICOBOOT transport, over libusb-1.0. */
 #ifndef FLASHER_USB_LIBUSB_H
 #define FLASHER_USB_LIBUSB_H

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 'use strict';
 /* dualcore.js — the RP2040's second Cortex-M0+ for the rp2040js emulator,
  * added from outside the package (rp2040js 1.4.1 models one core).

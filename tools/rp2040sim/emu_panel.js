@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 'use strict';
 /* emu_panel.js — the emulated ST7789 / ILI9341 controller of hal/sim/emu_panel.c,
  * ported line for line so the emulated Pico and host_sim decode the same bus

@@ -1,4 +1,5 @@
 #!/usr/bin/env node
+// SPDX-License-Identifier: MIT
 'use strict';
 /* replay_vectors.js — replays the emulated-panel test vectors
  * (tests/vectors/panel/*.txt, format in docs/hal.md) through emu_panel.js,

@@ -1,4 +1,5 @@
 #!/usr/bin/env node
+// SPDX-License-Identifier: MIT
 'use strict';
 /* rp2040sim.js — runs a firmware image on the rp2040js emulator with an
  * emulated ST7789 on SPI0 and the DC/CS/RST/BL pins, and writes the frames

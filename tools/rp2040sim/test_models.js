@@ -1,4 +1,5 @@
 #!/usr/bin/env node
+// SPDX-License-Identifier: MIT
 'use strict';
 /* test_models.js — the emulator driver's hardware models through the bus.
  * dualcore.js as each core's firmware sees it: CPUID, the FIFOs and their

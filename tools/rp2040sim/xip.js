@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 'use strict';
 /* xip.js — the RP2040's boot path and XIP cache for the rp2040js emulator,
  * which by itself loads the image without its boot2 and charges a flash load

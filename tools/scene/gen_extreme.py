@@ -1,4 +1,5 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: MIT
 """gen_extreme.py — valid but extreme scenes, for checking the scene
 compiler's format promise (tests/test_scene_extremes.sh).
 

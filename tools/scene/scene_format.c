@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* scene_format.c — the number format a scene needs: ranges, choice, argument
  * (scene_format.h). */
 #include "scene_format.h"

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* scene_format.h — the fixed-point number format a scene needs (host side:
  * tools/scenec for the firmware, host_sim for --numeric fixed).
  *

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* scene_parse.c — reads the scene notation (docs/scene-format.md) into a
  * struct scene in this build's numbers.
  *

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* scene_parse.h — the scene file parser (host side: host_sim and scenec).
  *
  * Compiled once per numeric mode: the scene it builds is in that mode's

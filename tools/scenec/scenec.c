@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* scenec — compiles a scene file into C source for the firmware.
  *
  *   scenec [--size WxH] [--strip-rows N] [--fracs 20,...,12] [--id NAME]

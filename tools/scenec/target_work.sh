@@ -1,4 +1,5 @@
 #!/bin/sh
+# SPDX-License-Identifier: MIT
 # The renderer's work memory for a scene on the target: runs the work probe
 # image (tools/scenec/work_probe.c) on the emulated Cortex-M0+ and prints
 # render_work_size() as the 32-bit firmware computes it.

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* work_probe.c — the renderer's work memory for one scene, measured on the
  * target: an image for the emulated Cortex-M0+ (qemu-system-arm, mps2-an385,
  * tools/bench's start-up code) that parses a scene file with the fixed-point

@@ -1,4 +1,5 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: MIT
 """boot2crc.py — pads a second-stage boot binary to 252 bytes, appends the
 CRC32 the RP2040 boot ROM checks, and writes it as an assembler source that
 places the 256 bytes in section .boot2.

@@ -1,4 +1,5 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: MIT
 """uf2conv.py — wraps a flat binary image into UF2 blocks for a USB
 mass-storage boot loader (the RP2040 boot ROM's drive).
 

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* board.c — RP2040 clocks, resets, UART0, timer and the second core. */
 #include "board.h"
 #include "rp2040_regs.h"

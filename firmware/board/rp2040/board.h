@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* board.h — what the RP2040 start-up code offers the application.
  *
  * Clocks after board_init(): XOSC 12 MHz -> PLL_SYS -> clk_sys at

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* boot2_generic_03h.S — second-stage boot for any QSPI flash that answers the
  * plain 03h READ command (RP2040_BOOT2=generic_03h; the Pico's own flash
  * gets the faster boot2_w25q16jv.S by default).

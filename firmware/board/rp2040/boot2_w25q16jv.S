@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* boot2_w25q16jv.S — second-stage boot for the Raspberry Pi Pico's flash, a
  * Winbond W25Q16JV (2 MB): quad I/O fast read (EBh) in continuous-read mode
  * at clk_sys/2 (RP2040_BOOT2=w25q16jv, the default).

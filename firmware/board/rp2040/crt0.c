@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* crt0.c — RP2040 vector table and reset handler (bare metal, no SDK).
  *
  * boot2 has set VTOR and MSP from this table and jumped to reset_handler.

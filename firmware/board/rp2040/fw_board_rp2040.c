@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* fw_board_rp2040.c — the application's board interface on the RP2040.
  *
  * RP2040_SINGLE_CORE=1 renders on core 0 only (the rp2040js emulator models

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* hwdiv.S — 32-bit division through the SIO hardware divider.
  *
  * The Cortex-M0+ has no divide instruction; GCC calls these helpers for

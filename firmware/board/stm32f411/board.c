@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* board.c — STM32F411 clocks, pins, USART1 and the microsecond timer. */
 #include "board.h"
 #include "stm32f411_regs.h"

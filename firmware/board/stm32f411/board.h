@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* board.h — STM32F411 bring-up (bare metal, no vendor library).
  *
  * Clocks: HSE crystal STM32_HSE_MHZ (default 25, as on the common

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* crt0.c — STM32F411 vector table and reset handler (bare metal).
  *
  * The reset handler turns the FPU on first (CP10/CP11 full access in

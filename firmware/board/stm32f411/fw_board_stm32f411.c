@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* fw_board_stm32f411.c — the application's board interface on the
  * STM32F411 (one core: the mailbox functions are never called). */
 #include "fw_board.h"

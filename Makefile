@@ -177,9 +177,12 @@ deps-test:
 deps-firmware:
 	$(Q)tools/deps.sh firmware
 
+# What the tests need is built with one job per processor unless make was
+# given -j; the tests then run TEST_JOBS at a time (tests/run.sh).
+TEST_JOBS ?= $(shell nproc 2>/dev/null || echo 1)
 test: deps-test
-	$(Q)$(MAKE) --no-print-directory $(TEST_DEPS) $(PROGRAMS)
-	$(Q)tests/run.sh $(TESTS)
+	$(Q)$(MAKE) --no-print-directory $(if $(filter -j%,$(MAKEFLAGS)),,-j$(TEST_JOBS)) $(TEST_DEPS) $(PROGRAMS)
+	$(Q)TEST_JOBS=$(TEST_JOBS) tests/run.sh $(TESTS)
 
 clean:
 	rm -rf $(BUILD) $(OUT)

@@ -44,6 +44,9 @@ struct panel_desc {
     uint8_t madctl[4];           /* MADCTL per rotation, BGR bit included */
     uint16_t x_off[4], y_off[4]; /* column/row offset per rotation */
     uint8_t invert;              /* 1: INVON (IPS glass), 0: INVOFF */
+    uint8_t spi_mode;            /* SPI mode a host drives the module in by default
+                                    (ST7789: 3, which CS-less modules need and
+                                    modules with CS accept; ILI9341: 0) */
 };
 
 /* panel_st7789_240x240, ...: every descriptor of panels.def */

@@ -38,6 +38,7 @@ const struct panel_desc panel_ili9341_240x320 = {
     .x_off = { 0, 0, 0, 0 },
     .y_off = { 0, 0, 0, 0 },
     .invert = 0,
+    .spi_mode = 0,
 };
 
 /* The same module held landscape: its rotation 0 is the portrait's 1. */
@@ -52,4 +53,5 @@ const struct panel_desc panel_ili9341_320x240 = {
     .x_off = { 0, 0, 0, 0 },
     .y_off = { 0, 0, 0, 0 },
     .invert = 0,
+    .spi_mode = 0,
 };

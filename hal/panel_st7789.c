@@ -38,6 +38,7 @@ const struct panel_desc panel_st7789_240x240 = {
     .x_off = { 0, 0, 0, 80 },
     .y_off = { 0, 0, 80, 0 },
     .invert = 1,
+    .spi_mode = 3,
 };
 
 const struct panel_desc panel_st7789_240x320 = {
@@ -51,4 +52,5 @@ const struct panel_desc panel_st7789_240x320 = {
     .x_off = { 0, 0, 0, 0 },
     .y_off = { 0, 0, 0, 0 },
     .invert = 1,
+    .spi_mode = 3,
 };

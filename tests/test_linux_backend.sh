@@ -87,6 +87,20 @@ for api in v1 v2; do
   fi
 done
 
+# The SPI mode by default is the module's (hal/panel.h, spi_mode), whatever
+# its name: every ST7789 module in mode 3, the ILI9341 in mode 0.
+for m in st7789_240x320:3 ili9341_240x320:0 ili9341_320x240:0; do
+  module=${m%:*} want=${m#*:}
+  size=${module#*_} ctl=${module%%_*}
+  run_linux v1 "$module" 0 25,27,18 -- --panel "$ctl" --size "$size"
+  rc=$?
+  if [ $rc -eq 0 ] && grep -q "^mode $want bits 8 .*violation none" "$tmp/lx.log" 2>/dev/null; then
+    pass "linux_backend_default_spi_mode_${module}_$want"
+  else
+    fail "linux_backend_default_spi_mode_${module}_$want" "rc $rc, $(cat "$tmp/err" "$tmp/lx.log" 2>/dev/null | head -n 2)"
+  fi
+done
+
 hs=$build/host_sim
 "$hs" --scene $scene --backend linux --spi-dev "$tmp/none/spidev9.9" >/dev/null 2>"$tmp/err"
 rc=$?

@@ -155,6 +155,39 @@ static void any_camera(void)
     printf("# any_camera: %ld pixels written over 64 camera placements\n", total);
 }
 
+/* Instance culling on the default path follows the frustum the image shows:
+ * a small cube wholly in front of the book's near plane z = 1 but behind
+ * d = 0.5, and one beside a viewport wider than the book's 45-degree planes,
+ * must both be drawn (the book's planes would drop them). */
+static void culling_follows_viewport(void)
+{
+    static const struct { const char *what; double vh, d, x, z, scale; } cases[] = {
+        { "near_plane_d_0_5", 1.0, 0.5, 0.0, 0.8, 0.1 },
+        { "wide_viewport_4", 4.0, 1.0, 2.0, 1.2, 0.2 },
+    };
+    for (size_t k = 0; k < sizeof cases / sizeof cases[0]; k++) {
+        static struct ras_instance in;
+        struct scene *s = default_scene("raster-11");
+        in = s->instances[0];
+        in.position = v3(num_from_double(cases[k].x), NUM_ZERO, num_from_double(cases[k].z));
+        in.rotation = m3_identity();
+        in.scale = num_from_double(cases[k].scale);
+        s->instances = &in;
+        s->ninstances = 1;
+        s->camera.position = v3(NUM_ZERO, NUM_ZERO, NUM_ZERO);
+        s->camera.rotation = m3_identity();
+        s->viewport_h = num_from_double(cases[k].vh);
+        s->projection_d = num_from_double(cases[k].d);
+        struct frame f;
+        int rc = render_frame(s, 320, 240, 16, 0, &f);
+        long n = rc ? 0 : frame_written(&f);
+        char name[96];
+        snprintf(name, sizeof name, "instance_culling_%s", cases[k].what);
+        check(n > 200, name, "cube drawn on %ld pixels (render status %d)", n, rc);
+        frame_free(&f);
+    }
+}
+
 /* Depth precision: two parallel quads 0.01 apart, the farther drawn first;
  * moving both away, the farther one starts to show through when the depth
  * format can no longer tell them apart. */
@@ -377,6 +410,7 @@ int main(void)
     fill_rule_closed_mesh();
     fast_coverage_exact();
     any_camera();
+    culling_follows_viewport();
     depth_precision();
     outlines_raster10();
     linear_uv_default();

@@ -237,6 +237,8 @@ int raster_init(struct render_ctx *ctx)
      * rounded clip points from landing inside the image edge */
     rc->side_x = num_div(num_add(num_mul(rc->vw, NUM_HALF), num_div_int(num_mul_int(rc->vw, 2), rc->w)), rc->d);
     rc->side_y = num_div(num_add(num_mul(rc->vh, NUM_HALF), num_div_int(num_mul_int(rc->vh, 2), rc->h)), rc->d);
+    rc->side_xk = num_sqrt(num_add(NUM_ONE, num_mul(rc->side_x, rc->side_x)));
+    rc->side_yk = num_sqrt(num_add(NUM_ONE, num_mul(rc->side_y, rc->side_y)));
 
     uint8_t *mm = base + L.mipmem;
     for (uint16_t i = 0; i < s->ntextures; i++) {

@@ -19,16 +19,32 @@ static num plane_dist(int i, vec3 p)
     return num_add(v3_dot(v3(book_planes[i].x, book_planes[i].y, book_planes[i].z), p), book_planes[i].dist);
 }
 
+static num clip_value(const struct ras_ctx *rc, int i, vec3 p);
+
+/* An instance is dropped when its bounding sphere lies wholly outside one
+ * plane. The book path tests the book's planes; the default path the planes
+ * its clipper uses (near z = d, sides at the viewport's edges), whose values
+ * are distances scaled by sqrt(1 + side^2): with d < 1 or a viewport wider
+ * than 90 degrees the book's planes would drop visible instances. The
+ * sphere's radius is widened by two steps (NUM_EPS) so that rounding never drops an
+ * instance that touches the frustum. */
 int ras_instance_visible(const struct ras_ctx *rc, const struct ras_inst *ri,
                          const struct ras_model *m, num scale)
 {
-    (void)rc;
     vec4 c4 = { m->bound_center.x, m->bound_center.y, m->bound_center.z, NUM_ONE };
     c4 = m4_mul_v4(&ri->m, c4);
     vec3 c = v3(c4.x, c4.y, c4.z);
     num r = num_mul(m->bound_radius, scale);
-    for (int i = 0; i < 5; i++)
-        if (plane_dist(i, c) < num_neg(r)) return 0;
+    if (rc->book) {
+        for (int i = 0; i < 5; i++)
+            if (plane_dist(i, c) < num_neg(r)) return 0;
+        return 1;
+    }
+    r = num_add(r, num_add(NUM_EPS, NUM_EPS));
+    for (int i = 0; i < 5; i++) {
+        num k = i == 0 ? NUM_ONE : i < 3 ? rc->side_xk : rc->side_yk;
+        if (clip_value(rc, i, c) < num_neg(num_mul(r, k))) return 0;
+    }
     return 1;
 }
 

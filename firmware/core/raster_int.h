@@ -89,6 +89,7 @@ struct ras_ctx {
     num scale2d;             /* render height / scene canvas height */
     num near_z;              /* near clipping plane (camera space z) */
     num side_x, side_y;      /* default-path side planes: |x| <= side_x*z, |y| <= side_y*z */
+    num side_xk, side_yk;    /* sqrt(1 + side^2): a side plane's value over the distance */
     mat4 cam, cam_rot_t;     /* camera matrix; transposed camera rotation */
     vec3 cam_pos;            /* world-space camera position (the book's view-vector quirk) */
     uint32_t nverts, ntris;

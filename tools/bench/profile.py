@@ -12,7 +12,11 @@ returns on a shadow stack (a recursive function is counted once per
 outermost call).
 
   profile.py [--target m0plus-qemu|m4f-qemu] [--top N] [--json FILE]
-             [--lines N] [--annotate FUNC ...] IMAGE.elf
+             [--lines N] [--annotate FUNC ...] IMAGE.elf [ARG ...]
+
+ARGs are passed to the image as its semihosting command line (argv[1] on),
+e.g. the lab's bench_file.elf with a scene file, size, strip height and
+frame count: profile.py bench_file.elf SCENE 240 240 16 1.
 
 --lines N lists the N source lines whose instructions ran most (code
 inlined from a header counted at the header's line); --annotate FUNC prints FUNC's disassembly (with source lines) and how many
@@ -42,12 +46,13 @@ def target_of(elf):
     return None
 
 
-def profile(elf, target):
+def profile(elf, target, args=()):
     tmp = tempfile.mkdtemp(prefix="qprof")
     fifo = os.path.join(tmp, "trace")
     os.mkfifo(fifo)
     cmd = ["qemu-system-arm", "-M", MACHINES[target], "-nographic", "-monitor", "none",
-           "-serial", "null", "-semihosting-config", "enable=on,target=native",
+           "-serial", "null", "-semihosting-config",
+           "enable=on,target=native" + "".join(",arg=" + x for x in ([elf] + list(args) if args else [])),
            "-d", "in_asm,exec,nochain", "-D", fifo, "-kernel", elf]
     proc = subprocess.Popen(cmd, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
     size = {}                          # block start pc -> instructions
@@ -183,6 +188,7 @@ def annotate(elf, fn, at):
 def main():
     ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     ap.add_argument("image")
+    ap.add_argument("args", nargs="*", help="the image's semihosting arguments")
     ap.add_argument("--target", choices=sorted(MACHINES))
     ap.add_argument("--top", type=int, default=25)
     ap.add_argument("--json")
@@ -196,7 +202,10 @@ def main():
     target = a.target or target_of(a.image)
     if target is None:
         sys.exit(f"profile.py: {a.image}: path names no target; give --target")
-    per, incl, ncalls, at = profile(a.image, target)
+    for x in a.args:
+        if "," in x:
+            sys.exit(f"profile.py: argument {x!r}: a semihosting argument cannot hold a comma")
+    per, incl, ncalls, at = profile(a.image, target, a.args)
     total = sum(per.values())
     if total == 0:
         sys.exit("profile.py: no blocks traced (qemu-system-arm missing or the image did not run)")

@@ -111,6 +111,12 @@ int panel_flush_end(struct panel *p)
     return rc ? rc : (left ? -1 : 0);
 }
 
+int panel_flush_stop(struct panel *p)
+{
+    p->flush_rows = 0;
+    return dcs_write_end(&p->dcs);
+}
+
 int panel_wait(struct panel *p)
 {
     return dcs_wait(&p->dcs);

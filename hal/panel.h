@@ -101,6 +101,10 @@ int panel_flush(struct panel *p, uint16_t x, uint16_t y, uint16_t w, uint16_t h,
 int panel_flush_begin(struct panel *p, uint16_t x, uint16_t y, uint16_t w, uint16_t h);
 int panel_flush_rows(struct panel *p, const uint16_t *px, uint16_t rows, hal_done_fn done, void *arg);
 int panel_flush_end(struct panel *p);
+/* Ends a streaming flush early, like panel_flush_end but without the -1 for
+ * rows left: the rows of the window not sent keep what the glass shows (a
+ * memory write may stop anywhere; the next command ends it). */
+int panel_flush_stop(struct panel *p);
 /* Waits until the bus is idle (pending completions run). */
 int panel_wait(struct panel *p);
 

@@ -23,9 +23,24 @@
  *   error scene=NAME what   (render_strip failed, panel flush failed, ...)
  * The first frame of each scene carries no overlay (no frame was timed yet),
  * so it is exactly the renderer's image; later frames show "X.Y fps" in the
- * top-left corner. */
+ * top-left corner.
+ *
+ * Only what changed goes over the bus (FW_SKIP_UNCHANGED, default on): for
+ * each strip core 0 knows the columns outside of which the glass shows the
+ * scene's background (render_background_565) there, and finds the same for
+ * the new strip (nothing to look for when the renderer wrote no scene pixel
+ * into it and the overlay does not reach it, else the first and last
+ * columns of any row that differ from the background). It sends the columns
+ * between the outermost of both (the strip's rows moved together in its
+ * buffer, one window and one transfer), nothing when both are background
+ * alone, and the whole width where the glass is not known (the first frame,
+ * a preview, another background, a bus error). Strips sent whole follow one
+ * another in one window. The last strip always reaches the last column, so
+ * every frame ends with the panel's last pixel. Exact: the glass at the end
+ * of every frame is what a full flush leaves. */
 #include <stddef.h>
 #include <stdint.h>
+#include <string.h>
 #include "fw_board.h"
 #include "fw_scenes.h"
 #include "font5x7.h"
@@ -61,12 +76,22 @@
 #ifndef FW_RING
 #define FW_RING 4
 #endif
+#ifndef FW_SKIP_UNCHANGED
+#define FW_SKIP_UNCHANGED 1
+#endif
 
 #define NSTRIPS ((FW_HEIGHT + FW_STRIP_ROWS - 1) / FW_STRIP_ROWS)
 #define MSG_FRAME 0x80000000u
 #define MSG_FRAME_DONE 1u
 
-static uint16_t ring[FW_RING][FW_WIDTH * FW_STRIP_ROWS];
+/* read as words too, two pixels at a time (content_cols): a union */
+#if FW_WIDTH % 2
+#error "FW_WIDTH must be even"
+#endif
+static union strip_buf {
+    uint16_t px[FW_WIDTH * FW_STRIP_ROWS];
+    uint32_t w[FW_WIDTH * FW_STRIP_ROWS / 2];
+} ring[FW_RING];
 /* the progressive preview's strips (core 1 may fill the ring meanwhile) */
 static uint16_t preview_buf[2][FW_WIDTH * FW_STRIP_ROWS];
 
@@ -75,7 +100,15 @@ static struct {
     uint32_t claim;             /* next strip to take */
     uint32_t sent;              /* strips whose transfer has finished */
     uint8_t done[NSTRIPS];      /* 0 not yet, 1 rendered, 2 failed */
+    uint8_t empty[NSTRIPS];     /* rendered with no scene content (background only) */
 } sh;
+/* What the glass shows in each strip's rows (core 0 only): when known, the
+ * background colour bg everywhere outside columns x0..x1 (x0 > x1: nowhere). */
+static struct {
+    uint8_t known;
+    uint16_t bg;
+    int16_t x0, x1;
+} glass[NSTRIPS];
 static struct render_ctx ctx[2];
 static struct hal hal;
 static struct panel panel;
@@ -86,12 +119,39 @@ static void strip_rows(unsigned k, uint16_t *y0, uint16_t *y1)
     *y1 = (uint16_t)(*y0 + FW_STRIP_ROWS > FW_HEIGHT ? FW_HEIGHT : *y0 + FW_STRIP_ROWS);
 }
 
-static int render_one(struct render_ctx *c, unsigned k, uint16_t *buf)
+/* Renders strip k into buf; *empty (when not NULL) says whether the scene
+ * wrote none of its pixels (the background alone). */
+static int render_one(struct render_ctx *c, unsigned k, uint16_t *buf, int *empty)
 {
     struct render_target t = { .width = FW_WIDTH, .height = FW_HEIGHT, .rgb565 = buf };
     struct render_stats st = { 0 };
     strip_rows(k, &t.y0, &t.y1);
-    return render_strip(c, &t, &st);
+    int rc = render_strip(c, &t, &st);
+    if (empty) *empty = st.pixels_written == 0;
+    return rc;
+}
+
+/* The columns *x0..*x1 outside of which every pixel of the strip's rows
+ * is bg (*x0 > *x1: all of them). Each row is looked at from both ends only
+ * as far as the columns found so far, two pixels a word while both are
+ * inside that bound. */
+static void content_cols(const union strip_buf *b, unsigned rows, uint16_t bg, int *x0, int *x1)
+{
+    const uint32_t bg2 = (uint32_t)bg << 16 | bg;
+    int lo = FW_WIDTH, hi = -1;
+    for (unsigned r = 0; r < rows; r++) {
+        const size_t o = (size_t)r * FW_WIDTH;           /* even: rows start on a word */
+        int x = 0;
+        while (x + 1 < lo && b->w[(o + (size_t)x) / 2] == bg2) x += 2;
+        while (x < lo && b->px[o + (size_t)x] == bg) x++;
+        lo = x;
+        x = FW_WIDTH - 1;
+        while (x - 1 > hi && b->w[(o + (size_t)x - 1) / 2] == bg2) x -= 2;
+        while (x > hi && b->px[o + (size_t)x] == bg) x--;
+        hi = x;
+    }
+    *x0 = lo;
+    *x1 = hi;
 }
 
 static int scene_init(struct render_ctx *c, unsigned si, unsigned core)
@@ -146,10 +206,11 @@ static int claim_strip(void)
     return r;
 }
 
-static void mark_done(unsigned k, int ok)
+static void mark_done(unsigned k, int ok, int empty)
 {
     fw_board_lock();
     sh.done[k] = ok ? 1u : 2u;
+    sh.empty[k] = (uint8_t)(ok && empty);
     fw_board_unlock();
     fw_board_notify();
 }
@@ -158,6 +219,14 @@ static unsigned strip_state(unsigned k)
 {
     fw_board_lock();
     unsigned v = sh.done[k];
+    fw_board_unlock();
+    return v;
+}
+
+static int strip_empty(unsigned k)
+{
+    fw_board_lock();
+    int v = sh.empty[k];
     fw_board_unlock();
     return v;
 }
@@ -195,7 +264,8 @@ static void core1_main(void)
                 continue;
             }
             /* a failed strip is still marked, so that core 0 never waits for it */
-            mark_done((unsigned)k, ok && render_one(&ctx[1], (unsigned)k, ring[k % FW_RING]) == 0);
+            int empty = 0;
+            mark_done((unsigned)k, ok && render_one(&ctx[1], (unsigned)k, ring[k % FW_RING].px, &empty) == 0, empty);
         }
         fw_board_send(MSG_FRAME_DONE);
     }
@@ -248,10 +318,11 @@ static uint32_t frame(unsigned si, uint16_t f, uint32_t last_us, int dual)
             uint16_t *buf = preview_buf[k & 1u];
             uint16_t y0, y1;
             strip_rows(k, &y0, &y1);
-            if (render_one(&ctx[0], k, buf) != 0) err = 1;
+            if (render_one(&ctx[0], k, buf, NULL) != 0) err = 1;
             if (!bus_err && panel_flush_rows(&panel, buf, (uint16_t)(y1 - y0), NULL, NULL) != 0) bus_err = 1;
         }
         if (panel_flush_end(&panel) != 0) bus_err = 1;
+        for (unsigned k = 0; k < NSTRIPS; k++) glass[k].known = 0;   /* the preview's blocks */
         uint64_t cu = hal.now_us(hal.ctx) - t0;
         p = put_str(put_str(line, "first scene="), name);
         p = put_str(put_u32(put_str(p, " frame="), f), " us=");
@@ -260,21 +331,72 @@ static uint32_t frame(unsigned si, uint16_t f, uint32_t last_us, int dual)
         fw_board_puts(line);
         render_set_pass(&ctx[0], RENDER_PASS_FULL);
     }
-    if (panel_flush_begin(&panel, 0, 0, FW_WIDTH, FW_HEIGHT) != 0) bus_err = 1;
+    const uint16_t bg = render_background_565(&ctx[0]);
+    /* a streaming flush is open: the bus is idle when not; `run` when it is
+     * a window of whole rows to the bottom, continued by whole strips */
+    int open = 0, run = 0;
     for (unsigned next = 0; next < NSTRIPS;) {
         unsigned st = strip_state(next);
         if (st) {
             /* the next strip in order is done: on the bus with it */
-            uint16_t *buf = ring[next % FW_RING];
+            union strip_buf *sb = &ring[next % FW_RING];
+            uint16_t *buf = sb->px;
             uint16_t y0, y1;
             strip_rows(next, &y0, &y1);
+            const unsigned rows = (unsigned)(y1 - y0);
             if (st != 1) err = 1;
             if (overlay)
                 font5x7_draw(buf, FW_WIDTH, y0, y1, 2, 2, 2, text, 0xffffu, 0x0000u);
+            /* the columns to send: x0..x1 */
+            int x0 = 0, x1 = FW_WIDTH - 1, c0 = 0, c1 = FW_WIDTH - 1;
+            int track = FW_SKIP_UNCHANGED && st == 1 && !bus_err;
+            if (track) {
+                if (strip_empty(next) && !(overlay && y0 < 2 + FONT5X7_BOX_H(2))) c0 = FW_WIDTH, c1 = -1;
+                else content_cols(sb, rows, bg, &c0, &c1);
+                if (glass[next].known && glass[next].bg == bg) {
+                    x0 = c0 < glass[next].x0 ? c0 : glass[next].x0;
+                    x1 = c1 > glass[next].x1 ? c1 : glass[next].x1;
+                }
+                if (next + 1 == NSTRIPS) {     /* the frame ends with the last pixel */
+                    x1 = FW_WIDTH - 1;
+                    if (x0 > x1) x0 = x1;
+                }
+            }
+            glass[next].known = (uint8_t)track;
+            glass[next].bg = bg;
+            glass[next].x0 = (int16_t)c0;
+            glass[next].x1 = (int16_t)c1;
+            if (x0 > x1) {
+                /* nothing changed: the strip's buffer is free once the bus
+                 * has finished with the ones before it */
+                if (open && (run ? panel_flush_stop(&panel) : panel_flush_end(&panel)) != 0) bus_err = 1;
+                open = run = 0;
+                if (panel_wait(&panel) != 0) bus_err = 1;
+                strip_sent((void *)(uintptr_t)next);
+                next++;
+                continue;
+            }
+            const uint16_t w = (uint16_t)(x1 - x0 + 1);
+            if (!bus_err) {
+                if (w == FW_WIDTH) {
+                    if (!run) {
+                        if (open && panel_flush_end(&panel) != 0) bus_err = 1;
+                        open = run = 1;
+                        if (panel_flush_begin(&panel, 0, y0, FW_WIDTH, (uint16_t)(FW_HEIGHT - y0)) != 0) bus_err = 1;
+                    }
+                } else {
+                    /* the columns x0..x1 of each row, one after the other */
+                    for (unsigned r = 0; r < rows; r++)
+                        memmove(buf + (size_t)r * w, buf + (size_t)r * FW_WIDTH + (size_t)x0, (size_t)w * 2u);
+                    if (open && (run ? panel_flush_stop(&panel) : panel_flush_end(&panel)) != 0) bus_err = 1;
+                    open = 1;
+                    run = 0;
+                    if (panel_flush_begin(&panel, (uint16_t)x0, y0, w, (uint16_t)rows) != 0) bus_err = 1;
+                }
+            }
             /* after a bus error the strips are only released, so that core 1
              * finishes the frame */
-            if (bus_err || panel_flush_rows(&panel, buf, (uint16_t)(y1 - y0), strip_sent,
-                                            (void *)(uintptr_t)next) != 0) {
+            if (bus_err || panel_flush_rows(&panel, buf, (uint16_t)rows, strip_sent, (void *)(uintptr_t)next) != 0) {
                 bus_err = 1;
                 strip_sent((void *)(uintptr_t)next);
             }
@@ -283,7 +405,9 @@ static uint32_t frame(unsigned si, uint16_t f, uint32_t last_us, int dual)
         }
         int k = claim_strip();
         if (k >= 0 && k < NSTRIPS) {
-            mark_done((unsigned)k, render_one(&ctx[0], (unsigned)k, ring[k % FW_RING]) == 0);
+            int empty = 0;
+            int ok = render_one(&ctx[0], (unsigned)k, ring[k % FW_RING].px, &empty) == 0;
+            mark_done((unsigned)k, ok, empty);
             continue;
         }
         /* the next strip is core 1's and not done yet: let the bus finish
@@ -292,7 +416,9 @@ static uint32_t frame(unsigned si, uint16_t f, uint32_t last_us, int dual)
         if (panel_wait(&panel) != 0) bus_err = 1;
         if (!strip_state(next)) fw_board_wait();
     }
-    if (panel_flush_end(&panel) != 0) bus_err = 1;
+    if (open && panel_flush_end(&panel) != 0) bus_err = 1;
+    if (bus_err)
+        for (unsigned k = 0; k < NSTRIPS; k++) glass[k].known = 0;   /* what arrived is unknown */
     if (dual) (void)fw_board_recv();     /* MSG_FRAME_DONE: core 1 is idle again */
     uint64_t us = hal.now_us(hal.ctx) - t0;
     if (bus_err) {

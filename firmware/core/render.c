@@ -62,3 +62,11 @@ int render_strip(struct render_ctx *ctx, struct render_target *t, struct render_
     if (ctx->scene->kind == SCENE_RASTER) return raster_strip(ctx, t, st);
     return -1;  /* not a kind this core renders */
 }
+
+uint16_t render_background_565(const struct render_ctx *ctx)
+{
+    const struct scene *s = ctx->scene;
+    if (s->kind == SCENE_RASTER && !s->background_set)
+        return rgb_to_565(rgb_make(NUM_C(255.0), NUM_C(255.0), NUM_C(255.0)));
+    return rgb_to_565(s->background);
+}

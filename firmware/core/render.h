@@ -71,6 +71,10 @@ int render_begin_frame(struct render_ctx *ctx, uint16_t frame);
  * be NULL. */
 int render_strip(struct render_ctx *ctx, struct render_target *t, struct render_stats *st);
 
+/* The scene's background in RGB565: what render_strip writes where the
+ * scene covers nothing (white for a rasterized scene without one). */
+uint16_t render_background_565(const struct render_ctx *ctx);
+
 /* How the following strips of the current frame are rendered (progressive
  * display). RENDER_PASS_FULL (the default, reset by render_begin_frame):
  * the frame as the scene asks for it. RENDER_PASS_COARSE: a preview, one

@@ -242,7 +242,9 @@ class EmuPanel {
     } else {
       this.cx = this.xs;
       this.cy = this.cy < this.ye ? this.cy + 1 : this.ys;
-      if (this.cy === this.ys && this.onWrap) this.onWrap();
+      /* the window's last pixel: its end and its size in pixels */
+      if (this.cy === this.ys && this.onWrap)
+        this.onWrap(this.xe, this.ye, (this.xe - this.xs + 1) * (this.ye - this.ys + 1));
     }
   }
 

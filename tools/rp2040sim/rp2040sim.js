@@ -205,7 +205,15 @@ function main() {
       uartLine += ch;
     }
   };
-  panel.onWrap = () => {
+  /* A frame ends with the last pixel of the screen: the write reaching the
+   * end of a window that ends where the largest window so far ends (the
+   * firmware's first frame is one whole-screen window; later frames may send
+   * only the columns that changed, strip by strip, the last one always to
+   * the screen's last pixel). */
+  let endX = -1, endY = -1, endArea = 0;
+  panel.onWrap = (xe, ye, area) => {
+    if (area > endArea) { endArea = area; endX = xe; endY = ye; }
+    if (xe !== endX || ye !== endY) return;
     if (!pending) return;
     const ns = clock.nanos - frameStartNs;
     if (pending.coarse && pending.first_ns === undefined) { pending.first_ns = ns; return; }

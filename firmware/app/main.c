@@ -40,7 +40,6 @@
  * of every frame is what a full flush leaves. */
 #include <stddef.h>
 #include <stdint.h>
-#include <string.h>
 #include "fw_board.h"
 #include "fw_scenes.h"
 #include "font5x7.h"
@@ -361,6 +360,10 @@ static uint32_t frame(unsigned si, uint16_t f, uint32_t last_us, int dual)
                     x1 = FW_WIDTH - 1;
                     if (x0 > x1) x0 = x1;
                 }
+                if (x0 <= x1) {                /* whole words: from an even column, an even width */
+                    x0 &= ~1;
+                    x1 |= 1;
+                }
             }
             glass[next].known = (uint8_t)track;
             glass[next].bg = bg;
@@ -386,8 +389,13 @@ static uint32_t frame(unsigned si, uint16_t f, uint32_t last_us, int dual)
                     }
                 } else {
                     /* the columns x0..x1 of each row, one after the other */
-                    for (unsigned r = 0; r < rows; r++)
-                        memmove(buf + (size_t)r * w, buf + (size_t)r * FW_WIDTH + (size_t)x0, (size_t)w * 2u);
+                    /* x0 even and w even (below): whole words, forward, each
+                     * row's new place at or before its old one */
+                    for (unsigned r = 0; r < rows; r++) {
+                        size_t d = (size_t)r * w / 2u, q = ((size_t)r * FW_WIDTH + (size_t)x0) / 2u, qe = q + w / 2u;
+                        if (d != q)
+                            while (q != qe) sb->w[d++] = sb->w[q++];
+                    }
                     if (open && (run ? panel_flush_stop(&panel) : panel_flush_end(&panel)) != 0) bus_err = 1;
                     open = 1;
                     run = 0;

@@ -53,30 +53,37 @@ FW_CUBE_SCENES ?= bench/cube-textured bench/cube-gouraud bench/cube-flat
 FW_RT_SCENES   ?= book/raytracer-05 bench/raytracer-05-adaptive
 FW_STRIP_ROWS  ?= 8
 fw_scene_id     = $(subst -,_,$(subst /,_,$(1)))
-fw_scene_h      = $(foreach n,$(1),$(FW_OUT)/scenes/$(call fw_scene_id,$(n)).h)
+fw_scene_h      = $(foreach n,$(1),$(FW_OUT)/scenes/$(call fw_scene_id,$(n))$(2).h)
 # once per scene of all the sets (book/raytracer-02 -> book_raytracer_02.c)
 $(foreach n,$(sort $(FW_BOOK_SCENES) $(FW_CUBE_SCENES) $(FW_RT_SCENES)),\
     $(call scenec_rule,$(FW_OUT)/scenes/$(call fw_scene_id,$(n)).c,$(n),240x240,$(FW_STRIP_ROWS),$(call fw_scene_id,$(n)),1))
-# $(1) = SET (variable names), $(2) = set (file names). The list of scenes,
+# The cube scenes again at 320x240, for the ILI9341 module in landscape
+# (files and identifiers <id>_320).
+$(foreach n,$(FW_CUBE_SCENES),\
+    $(call scenec_rule,$(FW_OUT)/scenes/$(call fw_scene_id,$(n))_320.c,$(n),320x240,$(FW_STRIP_ROWS),$(call fw_scene_id,$(n))_320,1))
+FW_CUBE320_SCENES := $(FW_CUBE_SCENES)
+# $(1) = SET (variable names), $(2) = set (file names), $(3) = the suffix of
+# the scenes' files (none: compiled at 240x240). The list of scenes,
 # fw_<set>_scenes.list, is rewritten only when FW_<SET>_SCENES changes, so
 # that the table and the format follow the list.
 define FW_SCENE_SET
 FW_$(1)_LIST   := $(FW_OUT)/scenes/fw_$(2)_scenes.list
 FW_$(1)_FRAC_H := $(FW_OUT)/scenes/fw_$(2)_num_frac.h
-FW_$(1)_SRCS   := $(foreach n,$(FW_$(1)_SCENES),$(FW_OUT)/scenes/$(call fw_scene_id,$(n)).c) \
+FW_$(1)_SRCS   := $(foreach n,$(FW_$(1)_SCENES),$(FW_OUT)/scenes/$(call fw_scene_id,$(n))$(3).c) \
                   $(FW_OUT)/scenes/fw_scenes_$(2).c
 FW_$(1)_FRAC_FLAGS := -include $(FW_OUT)/scenes/fw_$(2)_num_frac.h
 $$(shell mkdir -p $(FW_OUT)/scenes && { echo '$(FW_$(1)_SCENES)' | cmp -s - $(FW_OUT)/scenes/fw_$(2)_scenes.list || \
           echo '$(FW_$(1)_SCENES)' >$(FW_OUT)/scenes/fw_$(2)_scenes.list; })
-$(FW_OUT)/scenes/fw_scenes_$(2).c: $(call fw_scene_h,$(FW_$(1)_SCENES)) firmware/app/scene_table.sh \
+$(FW_OUT)/scenes/fw_scenes_$(2).c: $(call fw_scene_h,$(FW_$(1)_SCENES),$(3)) firmware/app/scene_table.sh \
                                    $(FW_OUT)/scenes/fw_$(2)_scenes.list
-	$(Q)firmware/app/scene_table.sh $$@ $(foreach n,$(FW_$(1)_SCENES),$(n)=$(call fw_scene_h,$(n)))
+	$(Q)firmware/app/scene_table.sh $$@ $(foreach n,$(FW_$(1)_SCENES),$(n)=$(call fw_scene_h,$(n),$(3)))
 endef
-fw_scene_set = $(eval $(call FW_SCENE_SET,$(1),$(2)))$(call scene_frac_rule,$(FW_$(1)_FRAC_H),$(call \
-    fw_scene_h,$(FW_$(1)_SCENES)),$(FW_$(1)_LIST))
+fw_scene_set = $(eval $(call FW_SCENE_SET,$(1),$(2),$(3)))$(call scene_frac_rule,$(FW_$(1)_FRAC_H),$(call \
+    fw_scene_h,$(FW_$(1)_SCENES),$(3)),$(FW_$(1)_LIST))
 $(call fw_scene_set,BOOK,book)
 $(call fw_scene_set,CUBE,cube)
 $(call fw_scene_set,RT,rt)
+$(call fw_scene_set,CUBE320,cube320,_320)
 # fw_frac_objs(OBJ_DIR,SOURCES): the objects of an image that links a scene
 # set; they are compiled after, and again when, the format changes.
 fw_frac_objs = $(patsubst %.c,$(1)/%.o,$(2))
@@ -157,6 +164,10 @@ $(call fw_scene_image,cgfs-book-bench,BOOK,-DFW_FRAMES_PER_SCENE=1)
 FW_CUBE_FRAMES ?= 10
 $(call fw_scene_image,cgfs-cube,CUBE,-DFW_FRAMES_PER_SCENE=$(FW_CUBE_FRAMES))
 $(call fw_scene_image,cgfs-cube-1core,CUBE,$(FW_1CORE_FLAGS) -DFW_FRAMES_PER_SCENE=$(FW_CUBE_FRAMES))
+# The same on the ILI9341 module in landscape, 320x240.
+FW_ILI320 := -DFW_PANEL=panel_ili9341_320x240 -DFW_WIDTH=320 -DFW_HEIGHT=240
+$(call fw_scene_image,cgfs-cube-ili9341,CUBE320,$(FW_ILI320) -DFW_FRAMES_PER_SCENE=$(FW_CUBE_FRAMES))
+$(call fw_scene_image,cgfs-cube-ili9341-1core,CUBE320,$(FW_ILI320) $(FW_1CORE_FLAGS) -DFW_FRAMES_PER_SCENE=$(FW_CUBE_FRAMES))
 # The ray tracer's benchmark: one frame of each, progressive (the preview's
 # time is rp2040sim's first_image_us).
 $(call fw_scene_image,cgfs-rt,RT,-DFW_FRAMES_PER_SCENE=1)
@@ -164,7 +175,8 @@ $(call fw_scene_image,cgfs-rt-1core,RT,$(FW_1CORE_FLAGS) -DFW_FRAMES_PER_SCENE=1
 
 FW_RP_IMAGES := $(FW_OUT)/pico/cgfs.uf2 $(FW_OUT)/pico/cgfs-1core.uf2 $(FW_OUT)/pico/cgfs-ili9341.uf2 \
                 $(FW_OUT)/pico/cgfs-rot2.uf2 \
-                $(foreach i,cgfs-book cgfs-book-1core cgfs-book-bench cgfs-cube cgfs-cube-1core cgfs-rt cgfs-rt-1core,$(FW_OUT)/pico/$(i).uf2)
+                $(foreach i,cgfs-book cgfs-book-1core cgfs-book-bench cgfs-cube cgfs-cube-1core cgfs-cube-ili9341 \
+                  cgfs-cube-ili9341-1core cgfs-rt cgfs-rt-1core,$(FW_OUT)/pico/$(i).uf2)
 
 .PHONY: firmware-pico
 firmware-pico: deps-firmware
@@ -296,6 +308,8 @@ TEST_DEPS += $(FW_OUT)/pico/cgfs-ili9341.elf $(FW_OUT)/pico/cgfs-rot2.elf
 TESTS     += tests/test_rp2040sim_panels.sh:$(BUILD)
 TEST_DEPS += $(FW_OUT)/pico/cgfs-book-1core.elf $(FW_OUT)/pico/cgfs-cube-1core.elf $(BUILD)/host_sim
 TESTS     += tests/test_rp2040sim_book.sh:$(BUILD) tests/test_rp2040sim_cube.sh:$(BUILD):$(FW_CUBE_FRAMES)
+TEST_DEPS += $(FW_OUT)/pico/cgfs-cube-ili9341-1core.elf
+TESTS     += tests/test_rp2040sim_cube.sh:$(BUILD):$(FW_CUBE_FRAMES):cgfs-cube-ili9341-1core:ili9341_320x240:320x240
 # the two-core images on both emulated cores (tools/rp2040sim/dualcore.js)
 TEST_DEPS += $(FW_OUT)/pico/cgfs.elf $(FW_OUT)/pico/cgfs-book.elf
 TESTS     += tests/test_rp2040sim_dual.sh:$(BUILD)
@@ -311,12 +325,14 @@ TESTS     += node:tools/rp2040sim/replay_vectors.js:tests/vectors/panel
 # scene, for each cube scene the mean of its FW_CUBE_FRAMES frames (rp2040sim
 # --average: "frames", "cycles_min", "cycles_max"; frame 0 is drawn without
 # the fps overlay, the others with it, as on the board), and the ray
-# tracer's benchmark scenes with the progressive preview's first_image_us.
+# tracer's benchmark scenes with the progressive preview's first_image_us;
+# the cube scenes again on the ILI9341 in landscape ("width":320).
 RP2040SIM_BENCH_FRAMES ?= 1
 RP2040SIM_TMP := $(BUILD)/bench/rp2040sim.jsonl.tmp
 .PHONY: bench-rp2040
 RP2040SIM_BENCH_IMAGES := cgfs-1core cgfs cgfs-book-1core cgfs-book-bench \
-                          cgfs-cube-1core cgfs-cube cgfs-rt-1core cgfs-rt
+                          cgfs-cube-1core cgfs-cube cgfs-rt-1core cgfs-rt \
+                          cgfs-cube-ili9341-1core cgfs-cube-ili9341
 bench-rp2040: $(RP2040SIM_DEPS) $(foreach i,$(RP2040SIM_BENCH_IMAGES),$(FW_OUT)/pico/$(i).elf)
 	@mkdir -p $(BUILD)/bench
 	@# this step's lines are rewritten, the other steps' kept
@@ -332,6 +348,11 @@ bench-rp2040: $(RP2040SIM_DEPS) $(foreach i,$(RP2040SIM_BENCH_IMAGES),$(FW_OUT)/
 	$(Q)for i in cgfs-cube-1core:single-core cgfs-cube:two-core; do \
 		node tools/rp2040sim/rp2040sim.js --image $(FW_OUT)/pico/$${i%%:*}.elf --variant $${i#*:} \
 			--frames $$(($(words $(FW_CUBE_SCENES)) * $(FW_CUBE_FRAMES))) --json --average >$(RP2040SIM_TMP) || exit 1; \
+		cat $(RP2040SIM_TMP) && cat $(RP2040SIM_TMP) >>$(BUILD)/bench/results.jsonl; done
+	$(Q)for i in cgfs-cube-ili9341-1core:single-core cgfs-cube-ili9341:two-core; do \
+		node tools/rp2040sim/rp2040sim.js --image $(FW_OUT)/pico/$${i%%:*}.elf --variant $${i#*:} \
+			--panel ili9341_320x240 --frames $$(($(words $(FW_CUBE_SCENES)) * $(FW_CUBE_FRAMES))) --json --average \
+			>$(RP2040SIM_TMP) || exit 1; \
 		cat $(RP2040SIM_TMP) && cat $(RP2040SIM_TMP) >>$(BUILD)/bench/results.jsonl; done
 	$(Q)for i in cgfs-rt-1core:single-core cgfs-rt:two-core; do \
 		node tools/rp2040sim/rp2040sim.js --image $(FW_OUT)/pico/$${i%%:*}.elf --variant $${i#*:} \

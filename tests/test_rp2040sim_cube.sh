@@ -12,57 +12,66 @@
 #     8-row strips (the firmware draws "X.Y fps" over rows 2-19 of every frame
 #     after the first);
 #   - the --average line of each scene: N frames, cycles within [min, max].
-# ~10 s of emulation (0.13 G cycles).
-# usage: test_rp2040sim_cube.sh BUILD_DIR [FRAMES_PER_SCENE]
+# ~10 s of emulation (0.13 G cycles). IMAGE, PANEL and SIZE run another
+# image of the cube scenes: cgfs-cube-ili9341-1core ili9341_320x240 320x240,
+# the ILI9341 module in landscape (its scenes compiled at 320x240, format in
+# fw_cube320_num_frac.h); the cases' names then carry "_320x240".
+# usage: test_rp2040sim_cube.sh BUILD_DIR [FRAMES_PER_SCENE [IMAGE PANEL SIZE]]
 set -u
 b=${1:-build}
 n=${2:-10}
+image=${3:-cgfs-cube-1core}
+panel=${4:-st7789_240x240}
+size=${5:-240x240}
+width=${size%x*}
+set=cube tag=
+[ "$size" = 240x240 ] || { set=cube320; tag=_$size; }
 t=$(mktemp -d)
 trap 'rm -rf "$t"' EXIT
-elf=$b/firmware/pico/cgfs-cube-1core.elf
+elf=$b/firmware/pico/$image.elf
 scenes="bench/cube-textured bench/cube-gouraud bench/cube-flat"
 ns=$(echo $scenes | wc -w)
-frac=$(sed -n 's/^#define NUM_FRAC \([0-9][0-9]*\)$/\1/p' "$b/firmware/scenes/fw_cube_num_frac.h" 2>/dev/null)
-[ -n "$frac" ] || { echo "FAIL rp2040sim_cube_format: no NUM_FRAC in $b/firmware/scenes/fw_cube_num_frac.h"; exit 1; }
+frac=$(sed -n 's/^#define NUM_FRAC \([0-9][0-9]*\)$/\1/p' "$b/firmware/scenes/fw_${set}_num_frac.h" 2>/dev/null)
+[ -n "$frac" ] || { echo "FAIL rp2040sim_cube${tag}_format: no NUM_FRAC in $b/firmware/scenes/fw_${set}_num_frac.h"; exit 1; }
 echo "# the cube image's format: NUM_FRAC $frac, $n frames per scene"
-if ! timeout 300 node tools/rp2040sim/rp2040sim.js --image "$elf" --frames $((ns * n)) --out-dir "$t/pico" \
+if ! timeout 300 node tools/rp2040sim/rp2040sim.js --image "$elf" --panel "$panel" --frames $((ns * n)) --out-dir "$t/pico" \
      --json >"$t/json" 2>"$t/err"; then
-  echo "FAIL rp2040sim_cube_runs: $(tail -n 1 "$t/err")"
+  echo "FAIL rp2040sim_cube${tag}_runs: $(tail -n 1 "$t/err")"
   exit 1
 fi
-echo "PASS rp2040sim_cube_runs"
-skip=$((3 * 8 * 240 * 2))
+echo "PASS rp2040sim_cube${tag}_runs"
+skip=$((3 * 8 * width * 2))
 i=0
 for s in $scenes; do
   id=$(basename "$s")
   k=$((i * n))
   last=$((k + n - 1))
   if ! sed -n "$((k + 1))p" "$t/json" | grep "\"what\":\"scene:$s\"" | grep "\"frame\":0," | grep -q "\"cycles\":[1-9]"; then
-    echo "FAIL rp2040sim_cube_equals_host_sim_$id: frame $k is not frame 0 of $s: $(sed -n "$((k + 1))p" "$t/json")"
-  elif ! "$b/host_sim" --scene "firmware/scenes/$s.scene" --size 240x240 --numeric fixed \
+    echo "FAIL rp2040sim_cube${tag}_equals_host_sim_$id: frame $k is not frame 0 of $s: $(sed -n "$((k + 1))p" "$t/json")"
+  elif ! "$b/host_sim" --scene "firmware/scenes/$s.scene" --size "$size" --numeric fixed \
        --num-frac "$frac" --out-raw "$t/host0.raw" >/dev/null 2>"$t/herr"; then
-    echo "FAIL rp2040sim_cube_equals_host_sim_$id: host_sim: $(tail -n 1 "$t/herr")"
+    echo "FAIL rp2040sim_cube${tag}_equals_host_sim_$id: host_sim: $(tail -n 1 "$t/herr")"
   elif cmp -s "$t/host0.raw" "$t/pico/frame-$k.raw"; then
-    echo "PASS rp2040sim_cube_equals_host_sim_$id"
+    echo "PASS rp2040sim_cube${tag}_equals_host_sim_$id"
   else
-    echo "FAIL rp2040sim_cube_equals_host_sim_$id: $(cmp "$t/host0.raw" "$t/pico/frame-$k.raw" 2>&1 | head -n 1)"
+    echo "FAIL rp2040sim_cube${tag}_equals_host_sim_$id: $(cmp "$t/host0.raw" "$t/pico/frame-$k.raw" 2>&1 | head -n 1)"
   fi
   if [ "$n" -gt 1 ]; then
     if ! sed -n "$((last + 1))p" "$t/json" | grep "\"what\":\"scene:$s\"" | grep -q "\"frame\":$((n - 1)),"; then
-      echo "FAIL rp2040sim_cube_last_frame_$id: frame $last is not frame $((n - 1)) of $s"
-    elif ! "$b/host_sim" --scene "firmware/scenes/$s.scene" --size 240x240 --numeric fixed \
+      echo "FAIL rp2040sim_cube${tag}_last_frame_$id: frame $last is not frame $((n - 1)) of $s"
+    elif ! "$b/host_sim" --scene "firmware/scenes/$s.scene" --size "$size" --numeric fixed \
          --num-frac "$frac" --frames "$n" --out-raw "$t/hostn.raw" >/dev/null 2>"$t/herr"; then
-      echo "FAIL rp2040sim_cube_last_frame_$id: host_sim: $(tail -n 1 "$t/herr")"
+      echo "FAIL rp2040sim_cube${tag}_last_frame_$id: host_sim: $(tail -n 1 "$t/herr")"
     elif cmp -s -i "$skip" "$t/hostn.raw" "$t/pico/frame-$last.raw"; then
-      echo "PASS rp2040sim_cube_last_frame_$id"
+      echo "PASS rp2040sim_cube${tag}_last_frame_$id"
     else
-      echo "FAIL rp2040sim_cube_last_frame_$id: $(cmp -i "$skip" "$t/hostn.raw" "$t/pico/frame-$last.raw" 2>&1 | head -n 1)"
+      echo "FAIL rp2040sim_cube${tag}_last_frame_$id: $(cmp -i "$skip" "$t/hostn.raw" "$t/pico/frame-$last.raw" 2>&1 | head -n 1)"
     fi
   fi
   i=$((i + 1))
 done
 # --average: one line per scene, the mean of its frames
-timeout 300 node tools/rp2040sim/rp2040sim.js --image "$elf" --frames $((ns * n)) --json --average \
+timeout 300 node tools/rp2040sim/rp2040sim.js --image "$elf" --panel "$panel" --frames $((ns * n)) --json --average \
   >"$t/avg" 2>"$t/err"
 if [ "$(wc -l <"$t/avg")" -eq "$ns" ] && python3 - "$t/json" "$t/avg" "$n" <<'EOF'
 import json, sys
@@ -76,7 +85,7 @@ for i, a in enumerate(avg):
     assert abs(a["cycles"] - sum(c) / n) <= 1 and a["cycles_min"] == min(c) and a["cycles_max"] == max(c), (a, c)
 EOF
 then
-  echo "PASS rp2040sim_average_is_the_mean_of_each_scene"
+  echo "PASS rp2040sim${tag}_average_is_the_mean_of_each_scene"
 else
-  echo "FAIL rp2040sim_average_is_the_mean_of_each_scene: $(cat "$t/avg") $(tail -n 1 "$t/err")"
+  echo "FAIL rp2040sim${tag}_average_is_the_mean_of_each_scene: $(cat "$t/avg") $(tail -n 1 "$t/err")"
 fi

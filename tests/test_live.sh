@@ -44,7 +44,8 @@ else fail live_still_scene_sends_nothing_after_first "$(cat "$tmp/still.txt")"; 
 # signals end an endless loop after the frame: exit 0, the last frame written
 for sig in INT TERM; do
   rm -f "$tmp/sig.png"
-  "$hs" --scene $anim --loop --out "$tmp/sig.png" >"$tmp/sig.txt" 2>&1 &
+  : >"$tmp/sig.txt"   # exists before the wait below reads it (the shell may open it late)
+  "$hs" --scene $anim --loop --out "$tmp/sig.png" >>"$tmp/sig.txt" 2>&1 &
   pid=$!
   i=0
   # up to 60 s for three frames (a loaded machine starts the ASan build slowly;

@@ -36,7 +36,7 @@ cat >"$tmp/run.sh" <<EOS
 "$hs" --scene $scene --window --window-scale 2 --loop --loop-frames 600 >"$tmp/log" 2>"$tmp/err" &
 pid=\$!
 i=0
-while [ "\$(grep -c '^frame' "$tmp/log")" -lt 2 ] && [ \$i -lt 200 ]; do sleep 0.05; i=\$((i + 1)); done
+while [ "\$(grep -c '^frame' "$tmp/log")" -lt 2 ] && [ \$i -lt 1200 ]; do sleep 0.05; i=\$((i + 1)); done
 xwd -silent -nobdrs -name "host_sim book/raster-11" -out "$tmp/shot.xwd"
 kill -INT \$pid
 wait \$pid

@@ -153,6 +153,60 @@ static void content_cols(const union strip_buf *b, unsigned rows, uint16_t bg, i
     *x1 = hi;
 }
 
+/* The columns *x0..*x1 of strip k to send (*x0 > *x1: none) when the glass
+ * is tracked (track), else the whole width; records what the glass shows
+ * there afterwards. scan: the strip may hold more than the background (the
+ * renderer wrote into it, or the overlay reaches it). Sent windows start
+ * on an even column and have an even width (pack_cols moves words). */
+static void changed_cols(unsigned k, const union strip_buf *sb, unsigned rows, uint16_t bg, int track, int scan,
+                         int *x0, int *x1)
+{
+    int c0 = 0, c1 = FW_WIDTH - 1;
+    *x0 = 0;
+    *x1 = FW_WIDTH - 1;
+    if (track) {
+        if (scan) content_cols(sb, rows, bg, &c0, &c1);
+        else c0 = FW_WIDTH, c1 = -1;
+        if (glass[k].known && glass[k].bg == bg) {
+            *x0 = c0 < glass[k].x0 ? c0 : glass[k].x0;
+            *x1 = c1 > glass[k].x1 ? c1 : glass[k].x1;
+        }
+        if (k + 1 == NSTRIPS) {     /* the frame ends with the last pixel */
+            *x1 = FW_WIDTH - 1;
+            if (*x0 > *x1) *x0 = *x1;
+        }
+        if (*x0 <= *x1) {
+            *x0 &= ~1;
+            *x1 |= 1;
+        }
+    }
+    glass[k].known = (uint8_t)track;
+    glass[k].bg = bg;
+    glass[k].x0 = (int16_t)c0;
+    glass[k].x1 = (int16_t)c1;
+}
+
+/* The columns x0 .. x0 + w - 1 of each row moved together to the front of
+ * the buffer (x0 and w even: whole words; forward, each row's new place is
+ * at or before its old one). */
+static void pack_cols(union strip_buf *sb, unsigned rows, int x0, uint16_t w)
+{
+    for (unsigned r = 0; r < rows; r++) {
+        size_t d = (size_t)r * w / 2u, q = ((size_t)r * FW_WIDTH + (size_t)x0) / 2u, qe = q + w / 2u;
+        if (d != q)
+            while (q != qe) sb->w[d++] = sb->w[q++];
+    }
+}
+
+/* Ends the open streaming flush, if any (*run: a window of whole rows to
+ * the bottom, which may end before its last row). */
+static int flush_close(int *open, int *run)
+{
+    int rc = *open ? (*run ? panel_flush_stop(&panel) : panel_flush_end(&panel)) : 0;
+    *open = *run = 0;
+    return rc;
+}
+
 static int scene_init(struct render_ctx *c, unsigned si, unsigned core)
 {
     const struct fw_scene *fs = &fw_scenes[si];
@@ -346,61 +400,28 @@ static uint32_t frame(unsigned si, uint16_t f, uint32_t last_us, int dual)
             if (st != 1) err = 1;
             if (overlay)
                 font5x7_draw(buf, FW_WIDTH, y0, y1, 2, 2, 2, text, 0xffffu, 0x0000u);
-            /* the columns to send: x0..x1 */
-            int x0 = 0, x1 = FW_WIDTH - 1, c0 = 0, c1 = FW_WIDTH - 1;
-            int track = FW_SKIP_UNCHANGED && st == 1 && !bus_err;
-            if (track) {
-                if (strip_empty(next) && !(overlay && y0 < 2 + FONT5X7_BOX_H(2))) c0 = FW_WIDTH, c1 = -1;
-                else content_cols(sb, rows, bg, &c0, &c1);
-                if (glass[next].known && glass[next].bg == bg) {
-                    x0 = c0 < glass[next].x0 ? c0 : glass[next].x0;
-                    x1 = c1 > glass[next].x1 ? c1 : glass[next].x1;
-                }
-                if (next + 1 == NSTRIPS) {     /* the frame ends with the last pixel */
-                    x1 = FW_WIDTH - 1;
-                    if (x0 > x1) x0 = x1;
-                }
-                if (x0 <= x1) {                /* whole words: from an even column, an even width */
-                    x0 &= ~1;
-                    x1 |= 1;
-                }
-            }
-            glass[next].known = (uint8_t)track;
-            glass[next].bg = bg;
-            glass[next].x0 = (int16_t)c0;
-            glass[next].x1 = (int16_t)c1;
+            int x0, x1, track = FW_SKIP_UNCHANGED && st == 1 && !bus_err;
+            changed_cols(next, sb, rows, bg, track,
+                         track && (!strip_empty(next) || (overlay && y0 < 2 + FONT5X7_BOX_H(2))), &x0, &x1);
             if (x0 > x1) {
                 /* nothing changed: the strip's buffer is free once the bus
                  * has finished with the ones before it */
-                if (open && (run ? panel_flush_stop(&panel) : panel_flush_end(&panel)) != 0) bus_err = 1;
-                open = run = 0;
+                if (flush_close(&open, &run) != 0) bus_err = 1;
                 if (panel_wait(&panel) != 0) bus_err = 1;
                 strip_sent((void *)(uintptr_t)next);
                 next++;
                 continue;
             }
             const uint16_t w = (uint16_t)(x1 - x0 + 1);
-            if (!bus_err) {
-                if (w == FW_WIDTH) {
-                    if (!run) {
-                        if (open && panel_flush_end(&panel) != 0) bus_err = 1;
-                        open = run = 1;
-                        if (panel_flush_begin(&panel, 0, y0, FW_WIDTH, (uint16_t)(FW_HEIGHT - y0)) != 0) bus_err = 1;
-                    }
-                } else {
-                    /* the columns x0..x1 of each row, one after the other */
-                    /* x0 even and w even (below): whole words, forward, each
-                     * row's new place at or before its old one */
-                    for (unsigned r = 0; r < rows; r++) {
-                        size_t d = (size_t)r * w / 2u, q = ((size_t)r * FW_WIDTH + (size_t)x0) / 2u, qe = q + w / 2u;
-                        if (d != q)
-                            while (q != qe) sb->w[d++] = sb->w[q++];
-                    }
-                    if (open && (run ? panel_flush_stop(&panel) : panel_flush_end(&panel)) != 0) bus_err = 1;
-                    open = 1;
-                    run = 0;
-                    if (panel_flush_begin(&panel, (uint16_t)x0, y0, w, (uint16_t)rows) != 0) bus_err = 1;
-                }
+            if (!bus_err && w == FW_WIDTH && !run) {
+                if (flush_close(&open, &run) != 0) bus_err = 1;
+                open = run = 1;
+                if (panel_flush_begin(&panel, 0, y0, FW_WIDTH, (uint16_t)(FW_HEIGHT - y0)) != 0) bus_err = 1;
+            } else if (!bus_err && w != FW_WIDTH) {
+                pack_cols(sb, rows, x0, w);
+                if (flush_close(&open, &run) != 0) bus_err = 1;
+                open = 1;
+                if (panel_flush_begin(&panel, (uint16_t)x0, y0, w, (uint16_t)rows) != 0) bus_err = 1;
             }
             /* after a bus error the strips are only released, so that core 1
              * finishes the frame */

@@ -27,6 +27,27 @@
 #define NUM_ASM_UNIFIED(text) text
 #endif
 
+/* Fragments of the kernels below, on the operands lo, t0, t1, t2, a, b
+ * (NUM_V6M_OPERANDS). NUM_V6M_PIECES(SH): a and b split into 16-bit halves
+ * (the high ones by SH: lsrs unsigned, asrs signed) and the four partial
+ * products: lo = al bl, t0 = al bh, t1 = ah bl, a = ah bh. */
+#define NUM_V6M_PIECES(SH) \
+    "uxth  %[t0], %[a]\n\t" SH "  %[a], %[a], #16\n\t" \
+    "uxth  %[t1], %[b]\n\t" SH "  %[b], %[b], #16\n\t" \
+    "movs  %[lo], %[t0]\n\t" "muls  %[lo], %[t1]\n\t" "muls  %[t0], %[b]\n\t" \
+    "muls  %[t1], %[a]\n\t" "muls  %[a], %[b]\n\t"
+/* NUM_V6M_ADD_MID(T, SH): the middle product T added at 2^16 into a:lo
+ * (its high half extended by SH). */
+#define NUM_V6M_ADD_MID(T, SH) \
+    "lsls  %[t2], %[" T "], #16\n\t" SH "  %[" T "], %[" T "], #16\n\t" \
+    "adds  %[lo], %[lo], %[t2]\n\t" "adcs  %[a], %[" T "]"
+/* NUM_V6M_ROUND_LO: lo = (lo + 2^15) >> 16, al bl rounded to its 2^16 units. */
+#define NUM_V6M_ROUND_LO \
+    "movs  %[t2], #1\n\t" "lsls  %[t2], %[t2], #15\n\t" \
+    "adds  %[lo], %[lo], %[t2]\n\t" "lsrs  %[lo], %[lo], #16\n\t"
+#define NUM_V6M_OPERANDS \
+    [lo] "=&l"(lo), [t0] "=&l"(t0), [t1] "=&l"(t1), [t2] "=&l"(t2), [a] "+l"(a), [b] "+l"(b)
+
 /* 32x32 -> 64 unsigned product. */
 static inline uint64_t num_umul32(uint32_t a, uint32_t b)
 {
@@ -34,24 +55,9 @@ static inline uint64_t num_umul32(uint32_t a, uint32_t b)
     /* four 16x16 partial products; the two middle ones added with carry:
      * 17 instructions */
     uint32_t lo, t0, t1, t2;
-    __asm__(NUM_ASM_UNIFIED("uxth  %[t0], %[a]\n\t"
-            "lsrs  %[a], %[a], #16\n\t"
-            "uxth  %[t1], %[b]\n\t"
-            "lsrs  %[b], %[b], #16\n\t"
-            "movs  %[lo], %[t0]\n\t"
-            "muls  %[lo], %[t1]\n\t"
-            "muls  %[t0], %[b]\n\t"
-            "muls  %[t1], %[a]\n\t"
-            "muls  %[a], %[b]\n\t"
-            "lsls  %[t2], %[t0], #16\n\t"
-            "lsrs  %[t0], %[t0], #16\n\t"
-            "adds  %[lo], %[lo], %[t2]\n\t"
-            "adcs  %[a], %[t0]\n\t"
-            "lsls  %[t2], %[t1], #16\n\t"
-            "lsrs  %[t1], %[t1], #16\n\t"
-            "adds  %[lo], %[lo], %[t2]\n\t"
-            "adcs  %[a], %[t1]")
-            : [lo] "=&l"(lo), [t0] "=&l"(t0), [t1] "=&l"(t1), [t2] "=&l"(t2), [a] "+l"(a), [b] "+l"(b)
+    __asm__(NUM_ASM_UNIFIED(NUM_V6M_PIECES("lsrs") NUM_V6M_ADD_MID("t0", "lsrs") "\n\t"
+                            NUM_V6M_ADD_MID("t1", "lsrs"))
+            : NUM_V6M_OPERANDS
             :
             : "cc");
     return (uint64_t)a << 32 | lo;
@@ -83,24 +89,9 @@ static inline int64_t num_smul32(int32_t a, int32_t b)
      * (|.| <= 2^30) each fit a MULS; the middle two are added at 2^16
      * sign-extended: 17 instructions */
     uint32_t lo, t0, t1, t2;
-    __asm__(NUM_ASM_UNIFIED("uxth  %[t0], %[a]\n\t"
-            "asrs  %[a], %[a], #16\n\t"
-            "uxth  %[t1], %[b]\n\t"
-            "asrs  %[b], %[b], #16\n\t"
-            "movs  %[lo], %[t0]\n\t"
-            "muls  %[lo], %[t1]\n\t"
-            "muls  %[t0], %[b]\n\t"
-            "muls  %[t1], %[a]\n\t"
-            "muls  %[a], %[b]\n\t"
-            "lsls  %[t2], %[t0], #16\n\t"
-            "asrs  %[t0], %[t0], #16\n\t"
-            "adds  %[lo], %[lo], %[t2]\n\t"
-            "adcs  %[a], %[t0]\n\t"
-            "lsls  %[t2], %[t1], #16\n\t"
-            "asrs  %[t1], %[t1], #16\n\t"
-            "adds  %[lo], %[lo], %[t2]\n\t"
-            "adcs  %[a], %[t1]")
-            : [lo] "=&l"(lo), [t0] "=&l"(t0), [t1] "=&l"(t1), [t2] "=&l"(t2), [a] "+l"(a), [b] "+l"(b)
+    __asm__(NUM_ASM_UNIFIED(NUM_V6M_PIECES("asrs") NUM_V6M_ADD_MID("t0", "asrs") "\n\t"
+                            NUM_V6M_ADD_MID("t1", "asrs"))
+            : NUM_V6M_OPERANDS
             :
             : "cc");
     return (int64_t)((uint64_t)(uint32_t)a << 32 | lo);
@@ -198,19 +189,7 @@ static inline int64_t num_mul_round(int32_t a, int32_t b)
      * half of hh 2^16 is zero, so an OR adds them), then the middle
      * products sign-extended: 22 instructions */
     uint32_t lo, t0, t1, t2;
-    __asm__(NUM_ASM_UNIFIED("uxth  %[t0], %[a]\n\t"
-            "asrs  %[a], %[a], #16\n\t"
-            "uxth  %[t1], %[b]\n\t"
-            "asrs  %[b], %[b], #16\n\t"
-            "movs  %[lo], %[t0]\n\t"
-            "muls  %[lo], %[t1]\n\t"
-            "muls  %[t0], %[b]\n\t"
-            "muls  %[t1], %[a]\n\t"
-            "muls  %[a], %[b]\n\t"
-            "movs  %[t2], #1\n\t"
-            "lsls  %[t2], %[t2], #15\n\t"
-            "adds  %[lo], %[lo], %[t2]\n\t"
-            "lsrs  %[lo], %[lo], #16\n\t"
+    __asm__(NUM_ASM_UNIFIED(NUM_V6M_PIECES("asrs") NUM_V6M_ROUND_LO
             "lsls  %[t2], %[a], #16\n\t"
             "asrs  %[a], %[a], #16\n\t"
             "orrs  %[lo], %[t2]\n\t"
@@ -220,7 +199,7 @@ static inline int64_t num_mul_round(int32_t a, int32_t b)
             "asrs  %[t2], %[t1], #31\n\t"
             "adds  %[lo], %[lo], %[t1]\n\t"
             "adcs  %[a], %[t2]")
-            : [lo] "=&l"(lo), [t0] "=&l"(t0), [t1] "=&l"(t1), [t2] "=&l"(t2), [a] "+l"(a), [b] "+l"(b)
+            : NUM_V6M_OPERANDS
             :
             : "cc");
     return (int64_t)((uint64_t)(uint32_t)a << 32 | lo);
@@ -244,24 +223,12 @@ static inline int32_t num_mul_round32(int32_t a, int32_t b)
 #if NUM_V6M_ASM && NUM_FRAC == 16
     /* hh 2^16 + al bh + ah bl + round(al bl / 2^16), mod 2^32: 17 instructions */
     uint32_t lo, t0, t1, t2;
-    __asm__(NUM_ASM_UNIFIED("uxth  %[t0], %[a]\n\t"
-            "asrs  %[a], %[a], #16\n\t"
-            "uxth  %[t1], %[b]\n\t"
-            "asrs  %[b], %[b], #16\n\t"
-            "movs  %[lo], %[t0]\n\t"
-            "muls  %[lo], %[t1]\n\t"
-            "muls  %[t0], %[b]\n\t"
-            "muls  %[t1], %[a]\n\t"
-            "muls  %[a], %[b]\n\t"
-            "movs  %[t2], #1\n\t"
-            "lsls  %[t2], %[t2], #15\n\t"
-            "adds  %[lo], %[lo], %[t2]\n\t"
-            "lsrs  %[lo], %[lo], #16\n\t"
+    __asm__(NUM_ASM_UNIFIED(NUM_V6M_PIECES("asrs") NUM_V6M_ROUND_LO
             "lsls  %[a], %[a], #16\n\t"
             "adds  %[lo], %[lo], %[a]\n\t"
             "adds  %[lo], %[lo], %[t0]\n\t"
             "adds  %[lo], %[lo], %[t1]")
-            : [lo] "=&l"(lo), [t0] "=&l"(t0), [t1] "=&l"(t1), [t2] "=&l"(t2), [a] "+l"(a), [b] "+l"(b)
+            : NUM_V6M_OPERANDS
             :
             : "cc");
     return (int32_t)lo;

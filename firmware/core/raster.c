@@ -994,7 +994,7 @@ int raster_strip(struct render_ctx *ctx, struct render_target *t, struct render_
     if (t->y1 - t->y0 > rc->strip_rows) return -1;
     rc->t = t;
     rc->st = st;
-    rgb bg = s->background_set ? s->background : rgb_make(NUM_C(255.0), NUM_C(255.0), NUM_C(255.0));
+    rgb bg = scene_background(s);
     size_t npx = (size_t)(t->y1 - t->y0) * t->width;
     ras_fill16(t->rgb565, npx, rgb_to_565(bg));
     if (t->rgb888) {

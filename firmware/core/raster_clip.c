@@ -19,7 +19,25 @@ static num plane_dist(int i, vec3 p)
     return num_add(v3_dot(v3(book_planes[i].x, book_planes[i].y, book_planes[i].z), p), book_planes[i].dist);
 }
 
-static num clip_value(const struct ras_ctx *rc, int i, vec3 p);
+int ras_triangle_inside(vec3 a, vec3 b, vec3 c)
+{
+    for (int i = 0; i < 5; i++)
+        if (!(plane_dist(i, a) > 0 && plane_dist(i, b) > 0 && plane_dist(i, c) > 0)) return 0;
+    return 1;
+}
+
+/* Signed distance-like value of p to the default path's plane i
+ * (>= 0 inside): near z >= near_z; |x| <= side_x z; |y| <= side_y z. */
+static num clip_value(const struct ras_ctx *rc, int i, vec3 p)
+{
+    switch (i) {
+    case 0: return num_sub(p.z, rc->near_z);
+    case 1: return num_add(p.x, num_mul(rc->side_x, p.z));
+    case 2: return num_sub(num_mul(rc->side_x, p.z), p.x);
+    case 3: return num_add(p.y, num_mul(rc->side_y, p.z));
+    default: return num_sub(num_mul(rc->side_y, p.z), p.y);
+    }
+}
 
 /* An instance is dropped when its bounding sphere lies wholly outside one
  * plane. The book path tests the book's planes; the default path the planes
@@ -46,26 +64,6 @@ int ras_instance_visible(const struct ras_ctx *rc, const struct ras_inst *ri,
         if (clip_value(rc, i, c) < num_neg(num_mul(r, k))) return 0;
     }
     return 1;
-}
-
-int ras_triangle_inside(vec3 a, vec3 b, vec3 c)
-{
-    for (int i = 0; i < 5; i++)
-        if (!(plane_dist(i, a) > 0 && plane_dist(i, b) > 0 && plane_dist(i, c) > 0)) return 0;
-    return 1;
-}
-
-/* Signed distance-like value of p to the default path's plane i
- * (>= 0 inside): near z >= near_z; |x| <= side_x z; |y| <= side_y z. */
-static num clip_value(const struct ras_ctx *rc, int i, vec3 p)
-{
-    switch (i) {
-    case 0: return num_sub(p.z, rc->near_z);
-    case 1: return num_add(p.x, num_mul(rc->side_x, p.z));
-    case 2: return num_sub(num_mul(rc->side_x, p.z), p.x);
-    case 3: return num_add(p.y, num_mul(rc->side_y, p.z));
-    default: return num_sub(num_mul(rc->side_y, p.z), p.y);
-    }
 }
 
 int ras_point_inside(const struct ras_ctx *rc, vec3 p)

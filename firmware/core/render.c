@@ -65,8 +65,5 @@ int render_strip(struct render_ctx *ctx, struct render_target *t, struct render_
 
 uint16_t render_background_565(const struct render_ctx *ctx)
 {
-    const struct scene *s = ctx->scene;
-    if (s->kind == SCENE_RASTER && !s->background_set)
-        return rgb_to_565(rgb_make(NUM_C(255.0), NUM_C(255.0), NUM_C(255.0)));
-    return rgb_to_565(s->background);
+    return rgb_to_565(scene_background(ctx->scene));
 }

@@ -255,4 +255,12 @@ struct scene {
     struct ras_options ras;
 };
 
+/* The colour of the pixels nothing covers: the scene's background, white
+ * for a rasterized scene without one. */
+static inline rgb scene_background(const struct scene *s)
+{
+    return s->kind == SCENE_RASTER && !s->background_set ? rgb_make(NUM_C(255.0), NUM_C(255.0), NUM_C(255.0))
+                                                         : s->background;
+}
+
 #endif

@@ -154,7 +154,8 @@ def by_line(elf, at, top):
             # the innermost location comes first (function name, file:line)
             if i + 1 < len(res):
                 fn, loc = res[i], res[i + 1].split(" (discriminator")[0]
-                per[f"{os.path.relpath(loc.split(':')[0]) if ':' in loc else loc}:{loc.rsplit(':', 1)[-1]} {fn}"] += at[a]
+                path, _, line_no = loc.rpartition(":")
+                per[f"{os.path.relpath(path)}:{line_no} {fn}" if path else f"{loc} {fn}"] += at[a]
             while i < len(res) and not res[i].startswith("0x"):
                 i += 1
         else:

@@ -111,6 +111,12 @@ $(1): $(2)
 endef
 bundle = $(eval $(call BUNDLE_RULE,$(strip $(1)),$(strip $(2)),$(strip $(3)),$(strip $(4))))
 
+# The renderer core (firmware/core, docs/extending.md has its map): the
+# numeric layer (num/), texture levels (mipmap.c, which scene builders use
+# too), the dispatcher, the ray tracer (rt/) and the rasterizer (raster/).
+CORE_NUM_SRCS := $(sort $(wildcard firmware/core/num/*.c))
+CORE_SRCS     := $(sort $(wildcard firmware/core/*.c firmware/core/*/*.c))
+
 # The display layer every program with a panel links: the DCS layer and the
 # panel drivers (hal/; backends and the emulated panel: mk/hal.mk).
 HAL_SRCS := hal/dcs.c $(sort $(wildcard hal/panel*.c))

@@ -38,7 +38,7 @@ endef
 bench_image = $(eval $(call BENCH_IMAGE,$(1),$(2),$(3),$(4),$(5)))
 
 # Microbenchmarks of the numeric layer: every target x numeric mode.
-BENCH_NUM_SRCS := tools/bench/bench_num.c firmware/core/num.c firmware/core/vec.c
+BENCH_NUM_SRCS := tools/bench/bench_num.c $(CORE_NUM_SRCS)
 $(foreach t,$(BENCH_TARGETS),$(foreach m,$(NUM_MODES),\
   $(call bench_image,num,$(t),$(m),$(BENCH_NUM_SRCS))\
   $(eval BENCH_IMAGES += $(BUILD)/bench/$(t)/$(m)/num.elf)))

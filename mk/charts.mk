@@ -40,7 +40,7 @@ bench: bench-accuracy
 # each run by the hash of the image, the scene text and the arguments.
 # (mk/core.mk's lists are read after this file: spelled out here)
 LAB_MODES := $(foreach f,12 13 14 15 16 17 18 19 20,fixed$(f)) float double
-LAB_SRCS  := tools/bench/bench_file.c $(BENCH_RUNTIME) $(sort $(wildcard firmware/core/*.c)) \
+LAB_SRCS  := tools/bench/bench_file.c $(BENCH_RUNTIME) $(CORE_SRCS) \
              $(sort $(wildcard tools/scene/*.c))
 lab_mode_flags = $(if $(filter fixed%,$(1)),-DNUM_MODE=1 -DNUM_FRAC=$(1:fixed%=%),-DNUM_MODE=$(NUM_MODE_$(1)))
 define LAB_IMAGE

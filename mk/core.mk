@@ -1,12 +1,11 @@
 # SPDX-License-Identifier: MIT
 # Renderer core + scene parser, bundled once per numeric mode.
 #
-# CORE_SRCS run on the microcontroller; SCENE_SRCS are the host-side parser.
+# CORE_SRCS (the Makefile's) run on the microcontroller; SCENE_SRCS are the host-side parser.
 # Each (variant, mode) gets one relocatable object, $(BUILD)/<variant>/core_<mode>.o,
 # in which every global symbol but core_api_<mode> is made local (the
 # Makefile's bundle), so the three modes link into one program without clashes.
 
-CORE_SRCS  := $(sort $(wildcard firmware/core/*.c))
 SCENE_SRCS := $(sort $(wildcard tools/scene/*.c))
 CORE_GLUE  := tools/core_api/core_api.c
 
@@ -42,3 +41,8 @@ $(foreach m,$(NUM_MODES),$(call program,$(BUILD)/asan/test_render_contract_$(m),
     $(call obj,asan,$(m),tests/test_render_contract.c $(CORE_SRCS) $(SCENE_SRCS)),asan))
 TEST_DEPS += $(foreach m,$(NUM_MODES),$(BUILD)/asan/test_render_contract_$(m))
 TESTS     += $(foreach m,$(NUM_MODES),$(BUILD)/asan/test_render_contract_$(m))
+
+# Every external symbol of the core carries its layer's prefix (nm of the
+# objects of each numeric mode).
+TEST_DEPS += $(foreach m,$(NUM_MODES),$(call obj,host,$(m),$(CORE_SRCS)))
+TESTS     += tests/test_symbols.py:$(BUILD)

@@ -30,7 +30,7 @@ FW_SCENE_SRCS ?= firmware/app/scenes_builtin.c
 
 FW_APP_SRCS  := firmware/app/main.c firmware/app/font5x7.c
 FW_HAL_SRCS  := $(HAL_SRCS)
-FW_CORE_SRCS := $(sort $(wildcard firmware/core/*.c))
+FW_CORE_SRCS := $(CORE_SRCS)
 FW_COMMON    := $(FW_APP_SRCS) $(FW_HAL_SRCS) $(FW_CORE_SRCS)
 FW_INC       := -I. -Ifirmware/core -Ifirmware/app -Ihal -I$(FW_OUT)/scenes
 

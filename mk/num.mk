@@ -6,7 +6,7 @@
 # portable integer kernels that ARMv6-M uses, so they are tested on the host).
 #   make num-report     prints the markdown accuracy table of docs/numerics.md
 
-NUM_SRCS       := firmware/core/num.c firmware/core/vec.c
+NUM_SRCS       := $(CORE_NUM_SRCS)
 NUM_TEST_MODES := fixed fixed12 fixed20 float double
 COMPILE_MODES       += fixed12 fixed20 fixed16p
 MODE_FLAGS_fixed12  := -DNUM_MODE=1 -DNUM_FRAC=12 -DNUM_PORTABLE_INT
@@ -55,8 +55,8 @@ TESTS += tests/test_softfloat.sh:$(BUILD)
 # Cortex-M0+ against the compiler's 64-bit arithmetic, at NUM_FRAC 16 (the
 # num_mul_round kernel of its own) and 20; they also print each kernel's
 # instructions per call.
-$(call bench_image,test_num_v6m_q16,m0plus-qemu,fixed,tests/test_num_v6m.c firmware/core/num.c,-Itests -DNUM_FRAC=16)
-$(call bench_image,test_num_v6m_q20,m0plus-qemu,fixed,tests/test_num_v6m.c firmware/core/num.c,-Itests -DNUM_FRAC=20)
+$(call bench_image,test_num_v6m_q16,m0plus-qemu,fixed,tests/test_num_v6m.c $(CORE_NUM_SRCS),-Itests -DNUM_FRAC=16)
+$(call bench_image,test_num_v6m_q20,m0plus-qemu,fixed,tests/test_num_v6m.c $(CORE_NUM_SRCS),-Itests -DNUM_FRAC=20)
 NUM_V6M_IMAGES := $(BUILD)/bench/m0plus-qemu/fixed/test_num_v6m_q16.elf $(BUILD)/bench/m0plus-qemu/fixed/test_num_v6m_q20.elf
 TEST_DEPS += $(NUM_V6M_IMAGES)
 TESTS     += tools/bench/run.py:--smoke:$(subst $(eval) ,:,$(NUM_V6M_IMAGES))

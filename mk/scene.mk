@@ -2,7 +2,7 @@
 # Scene files: the parser's tests (per numeric mode), its fuzz target, and
 # the scene compiler (tools/scenec).
 
-SCENE_PARSER_SRCS := tools/scene/scene_parse.c firmware/core/num.c firmware/core/vec.c firmware/core/mipmap.c
+SCENE_PARSER_SRCS := tools/scene/scene_parse.c $(CORE_NUM_SRCS) firmware/core/mipmap.c
 
 # test_scene_<mode>: the parser built alone in each numeric mode.
 $(foreach m,$(NUM_MODES),$(call program,$(BUILD)/asan/test_scene_$(m),\

@@ -7,7 +7,8 @@
 #include <stdint.h>
 #include <stdlib.h>
 #include <string.h>
-#include "rt_int.h"
+#include "render.h"
+#include "rt/rt_int.h"
 
 struct rt_run {
     uint32_t rays, primary_rays, shadow_rays, tests;
@@ -28,7 +29,7 @@ static int rt_render(const struct scene *s, int w, int h, int strip, uint8_t *rg
     if (render_init(&ctx, s, (uint16_t)w, (uint16_t)h, (uint16_t)strip, work, need) != 0) goto out;
     if (probe) {
         memset(probe, 0, (size_t)w * (size_t)h);
-        rt_set_shadow_probe(&ctx, probe);
+        rt_set_shadow_probe(ctx.work, probe);
     }
     if (render_begin_frame(&ctx, 0) != 0) goto out;
     struct render_stats st = { 0 };
@@ -44,7 +45,7 @@ static int rt_render(const struct scene *s, int w, int h, int strip, uint8_t *rg
         if (render_strip(&ctx, &t, &st) != 0) goto out;
     }
     if (run) {
-        struct rt_state *rt = rt_state_of(&ctx);
+        struct rt_state *rt = rt_state_of(ctx.work);
         run->rays = rt->n.rays;
         run->primary_rays = rt->n.primary_rays;
         run->shadow_rays = rt->n.shadow_rays;

@@ -8,7 +8,7 @@ path from the top of the tree, then any directory with a file of that name;
 names found nowhere are generated files and are skipped) and checked against
 LAYERS: a directory may include only from the directories listed for it.
 
-    firmware/core      the renderer: nothing above it
+    firmware/core      the renderer: nothing above it (inside it, see below)
     hal                the DCS layer and panel descriptors: hal.h only
     hal/<backend>      hal and itself; never firmware/ (the board includes
                        the backend, not the other way round)
@@ -21,11 +21,26 @@ LAYERS: a directory may include only from the directories listed for it.
     tools/bench        the core and the firmware's scene table
     host_sim, tests    anything below them
 
+Inside firmware/core every file belongs to one part (CORE_PARTS, by path),
+and a part includes only from the parts below it (CORE_BELOW):
+
+    render   render.h, render.c: the dispatcher, over both renderers
+    rt       raytracer.h, rt/: the ray tracer
+    raster   raster.h, raster/: the rasterizer
+    strip    strip.h, work.h: what both renderers write and carve
+    scene    scene.h, scene_options.def: the data model
+    mipmap   mipmap.h, mipmap.c: texture levels (scene builders too)
+    num      num.h, num/: the numeric layer
+
+so nothing in the core includes the dispatcher, and the renderers do not
+include each other. A core file in no part fails.
+
 Outside firmware/core (and host_sim, tests), only the core's public headers
-may be included from it: PUBLIC_CORE (render.h the interface, scene.h and
-num.h its data, raytracer.h and raster.h the renderers' contracts,
-mipmap.h the texture levels scene builders make); the rest (rt_int.h,
-raster_int.h, num_rt.h, ...) are internal.
+may be included from it: PUBLIC_CORE (render.h the interface, strip.h its
+target, scene.h and num.h its data, raytracer.h and raster.h the renderers'
+contracts, mipmap.h the texture levels scene builders make, the schema
+table scene_options.def); the rest (rt/rt_int.h, raster/raster_int.h,
+num/num_int.h, ...) are internal.
 
 Usage: test_includes.py [ROOT]   (default: the tree this file is in)
        test_includes.py --self-test
@@ -60,7 +75,38 @@ LAYERS = {
     "tests": ("*",),
 }
 
-PUBLIC_CORE = {"render.h", "scene.h", "num.h", "raytracer.h", "raster.h", "mipmap.h"}
+PUBLIC_CORE = {"render.h", "strip.h", "scene.h", "num.h", "raytracer.h", "raster.h", "mipmap.h",
+               "scene_options.def"}
+
+# The core's parts: (path or folder/ prefix, part); the first match applies.
+CORE_PARTS = (
+    ("render.h", "render"), ("render.c", "render"),
+    ("raytracer.h", "rt"), ("rt/", "rt"),
+    ("raster.h", "raster"), ("raster/", "raster"),
+    ("strip.h", "strip"), ("work.h", "strip"),
+    ("scene.h", "scene"), ("scene_options.def", "scene"),
+    ("mipmap.h", "mipmap"), ("mipmap.c", "mipmap"),
+    ("num.h", "num"), ("num/", "num"),
+)
+# part -> the parts it may include from (besides itself)
+CORE_BELOW = {
+    "render": ("rt", "raster", "strip", "scene", "mipmap", "num"),
+    "rt": ("strip", "scene", "num"),
+    "raster": ("strip", "scene", "mipmap", "num"),
+    "strip": ("scene", "num"),
+    "scene": ("num",),
+    "mipmap": (),
+    "num": (),
+}
+
+
+def core_part(path):
+    """The part of a file of firmware/core, None for a file in no part."""
+    rel = path[len(CORE) + 1:]
+    for key, part in CORE_PARTS:
+        if rel == key or (key.endswith("/") and rel.startswith(key)):
+            return part
+    return None
 
 SKIP_DIRS = {".git", "node_modules", "out"}
 INCLUDE = re.compile(r'^\s*#\s*include\s*"([^"]+)"', re.M)
@@ -116,10 +162,21 @@ def check(root):
                 dirs = [os.path.dirname(name)]
             else:
                 dirs = by_name.get(os.path.basename(name), [])
+            if layer == CORE and dirs:
+                part = core_part(f)
+                targets = [own_path] if own_path in fileset else (
+                    [name] if name in fileset else [d + "/" + os.path.basename(name) for d in dirs])
+                for t in targets:
+                    tp = core_part(t) if t.startswith(CORE + "/") else None
+                    if part is None:
+                        bad.setdefault(layer, []).append("%s belongs to no part of the core" % f)
+                    elif tp is not None and tp != part and tp not in CORE_BELOW[part]:
+                        bad.setdefault(layer, []).append("%s (%s) includes \"%s\" (%s)" % (f, part, name, tp))
             if dirs and not any(allowed(layer, own, d) for d in dirs):
                 bad.setdefault(layer, []).append("%s includes \"%s\" (%s)" % (f, name, ", ".join(dirs)))
-            elif (dirs == [CORE] and layer != CORE and "*" not in LAYERS[layer]
-                  and os.path.basename(name) not in PUBLIC_CORE):
+            elif (layer != CORE and "*" not in LAYERS[layer]
+                  and any(d == CORE or d.startswith(CORE + "/") for d in dirs)
+                  and not (CORE in dirs and os.path.basename(name) in PUBLIC_CORE)):
                 bad.setdefault(layer, []).append("%s includes the core's internal \"%s\"" % (f, name))
     return bad
 
@@ -137,17 +194,20 @@ def report(bad):
 
 def self_test():
     """A planted violation of each kind is found."""
-    cases = {
-        CORE: ("firmware/core/a.c", '#include "panel.h"\n'),
-        "hal/rp2040": ("hal/rp2040/b.c", '#include "board.h"\n'),
-        "firmware/app": ("firmware/app/c.c", '#include "bench.h"\n'),
-        "tools/scenec": ("tools/scenec/d.c", '#include "host_sim/imgio.h"\n'),
-        "tools/bench": ("tools/bench/e.c", '#include "rt_int.h"\n'),
-    }
+    cases = [
+        (CORE, "firmware/core/a.c", '#include "panel.h"\n'),
+        (CORE, "firmware/core/raster/b.c", '#include "render.h"\n'),
+        (CORE, "firmware/core/rt/c.c", '#include "raster/raster_int.h"\n'),
+        ("hal/rp2040", "hal/rp2040/b.c", '#include "board.h"\n'),
+        ("firmware/app", "firmware/app/c.c", '#include "bench.h"\n'),
+        ("tools/scenec", "tools/scenec/d.c", '#include "host_sim/imgio.h"\n'),
+        ("tools/bench", "tools/bench/e.c", '#include "rt/rt_int.h"\n'),
+    ]
     headers = ["hal/panel.h", "firmware/board/rp2040/board.h", "tools/bench/bench.h",
-               "host_sim/imgio.h", "firmware/core/rt_int.h"]
+               "host_sim/imgio.h", "firmware/core/rt/rt_int.h", "firmware/core/render.h",
+               "firmware/core/raster/raster_int.h"]
     failed = 0
-    for layer, (path, text) in cases.items():
+    for layer, path, text in cases:
         with tempfile.TemporaryDirectory() as root:
             for h in headers + [path]:
                 os.makedirs(os.path.join(root, os.path.dirname(h)), exist_ok=True)
@@ -155,10 +215,10 @@ def self_test():
                     fh.write(text if h == path else "")
             bad = check(root)
             if layer in bad and len(bad) == 1:
-                print("PASS includes self-test %s" % layer)
+                print("PASS includes self-test %s" % path)
             else:
                 failed += 1
-                print("FAIL includes self-test %s: found %r" % (layer, bad))
+                print("FAIL includes self-test %s: found %r" % (path, bad))
     return failed
 
 

@@ -203,7 +203,7 @@ static void acc_sincos(void)
 
 static vec3 rnd_vec(int bits)
 {
-    return v3(rnd_raw(bits), rnd_raw(bits), rnd_raw(bits));
+    return v3_make(rnd_raw(bits), rnd_raw(bits), rnd_raw(bits));
 }
 
 static void acc_vec(void)
@@ -226,7 +226,7 @@ static void acc_vec(void)
         }
     }
     for (long i = 0; i < 100000; i++) {
-        vec3 v = v3((num)(rng() >> 33) | (1 << 30), rnd_raw(31), rnd_raw(31));
+        vec3 v = v3_make((num)(rng() >> 33) | (1 << 30), rnd_raw(31), rnd_raw(31));
         double x = D(v.x), y = D(v.y), z = D(v.z), len = sqrt(x * x + y * y + z * z);
         if (in_range(len * ULP + 1)) stat_add(&lh, ferr(v3_len(v), len), 0.5 + 1e-6, len, 0);
     }
@@ -331,15 +331,15 @@ static void edges_fixed(void)
           "wnum_saturates", "");
     check(wnum_sqrt(INT64_MAX / 4) > 0 && wnum_to_num_shr(INT64_MAX, 100) >= 0, "wnum_extremes_defined", "");
     /* tiny vectors keep their direction */
-    vec3 u = v3_normalize(v3(1, 1, 0));
+    vec3 u = v3_normalize(v3_make(1, 1, 0));
     check(u.x == NUM_C(0.70710678118654752) && u.y == u.x && u.z == 0, "v3_normalize_tiny", "%d %d %d", u.x,
           u.y, u.z);
-    u = v3_normalize(v3(0, -1, 0));
+    u = v3_normalize(v3_make(0, -1, 0));
     check(u.x == 0 && u.y == -NUM_ONE && u.z == 0, "v3_normalize_one_raw", "%d %d %d", u.x, u.y, u.z);
-    u = v3_normalize(v3(NUM_MAX, NUM_MIN, INT32_MIN));
+    u = v3_normalize(v3_make(NUM_MAX, NUM_MIN, INT32_MIN));
     check(u.x > 0 && u.y < 0 && u.z < 0, "v3_normalize_extreme", "%d %d %d", u.x, u.y, u.z);
-    check(v3_len(v3(3, 4, 0)) == 5 && v3_len(v3(1, 1, 1)) == 2, "v3_len_tiny_exact_rounding", "%d",
-          v3_len(v3(1, 1, 1)));
+    check(v3_len(v3_make(3, 4, 0)) == 5 && v3_len(v3_make(1, 1, 1)) == 2, "v3_len_tiny_exact_rounding", "%d",
+          v3_len(v3_make(1, 1, 1)));
 }
 #else
 /* --------------------------------------------------------- floating point */
@@ -404,7 +404,7 @@ static void acc_float(void)
 
     struct stat n = { "v3_normalize", "1M vectors, magnitudes 2^-20..2^20 (abs., units 2^-24)", "4", 0, 0, 0, 0, 0, 0 };
     for (long i = 0; i < 1000000; i++) {
-        vec3 v = v3(rnd_f(), rnd_f(), rnd_f());
+        vec3 v = v3_make(rnd_f(), rnd_f(), rnd_f());
         double x = v.x, y = v.y, z = v.z, len = sqrt(x * x + y * y + z * z);
         vec3 u = v3_normalize(v);
         stat_add(&n, aerr(u.x, x / len), 4, x, len);
@@ -468,7 +468,7 @@ static void edges_all(void)
               num_cos_deg(NUM_ZERO) == NUM_ONE && num_sin_deg(NUM_C(-90.0)) == num_neg(NUM_ONE) &&
               num_cos_deg(NUM_C(180.0)) == num_neg(NUM_ONE),
           "num_sincos_exact_angles", "%.9g %.9g", D(num_sin_deg(NUM_C(90.0))), D(num_cos_deg(NUM_C(180.0))));
-    vec3 z = v3_normalize(v3(NUM_ZERO, NUM_ZERO, NUM_ZERO));
+    vec3 z = v3_normalize(v3_make(NUM_ZERO, NUM_ZERO, NUM_ZERO));
     check(z.x == NUM_ZERO && z.y == NUM_ZERO && z.z == NUM_ZERO, "v3_normalize_zero_stays_zero", "");
     check(num_clamp(NUM_C(2.0), NUM_ZERO, NUM_ONE) == NUM_ONE && num_min(NUM_ONE, NUM_ZERO) == NUM_ZERO &&
               num_max(NUM_ONE, NUM_ZERO) == NUM_ONE,

@@ -19,7 +19,7 @@
 #include <stdlib.h>
 
 #include "num.h"
-#include "num_int.h"
+#include "num/num_int.h"
 #include "check.h"
 #define TEST_RNG_SEED 0x9E3779B97F4A7C15ull
 #include "test_rng.h"
@@ -218,12 +218,12 @@ static num ref_sat(int64_t v, int *sat)
 static void test_products(void)
 {
     long bad_mul = 0, bad_wide = 0, bad_dot = 0, bad_cross = 0, bad_sat = 0;
-    vec3 bv = v3(0, 0, 0);
+    vec3 bv = v3_make(0, 0, 0);
     for (long i = 0; i < 4000000; i++) {
         int32_t a = rnd_num(), b = rnd_num();
         if (num_smul32(a, b) != (int64_t)a * b) bad_mul++;
         if (num_mul_wide(a, b) != ref_mul_wide(a, b)) bad_wide++;
-        vec3 u = v3(rnd_num(), rnd_num(), rnd_num()), v = v3(rnd_num(), rnd_num(), rnd_num());
+        vec3 u = v3_make(rnd_num(), rnd_num(), rnd_num()), v = v3_make(rnd_num(), rnd_num(), rnd_num());
         if (i % 4 == 0) { v = u; }                                  /* squares: the largest sums */
         if (i % 8 == 1) { u.x = u.y = u.z = INT32_MIN; v.x = v.y = v.z = (i & 16) ? INT32_MIN : INT32_MAX; }
         int64_t w = ref_dot_wide(u, v);

@@ -15,7 +15,7 @@
 #include <stdlib.h>
 
 #include "num.h"
-#include "num_int.h"
+#include "num/num_int.h"
 #include "check.h"
 #define TEST_RNG_SEED 0x2545F4914F6CDD1Dull
 #include "test_rng.h"
@@ -196,10 +196,10 @@ static void ref_norm(vec3 a, num out[3], num *len)
 static void test_vec(void)
 {
     long bad = 0, badl = 0;
-    vec3 bv = v3(0, 0, 0);
+    vec3 bv = v3_make(0, 0, 0);
     for (long i = 0; i < 2000000; i++) {
         int bits = 1 + (int)(i % 31);
-        vec3 v = v3((num)rnd_bits(bits), (num)rnd_bits(bits), (num)rnd_bits(bits));
+        vec3 v = v3_make((num)rnd_bits(bits), (num)rnd_bits(bits), (num)rnd_bits(bits));
         if (rng() & 1) v.x = -v.x;
         if (rng() & 1) v.y = -v.y;
         if (i % 5 == 0) v.z = 0;

@@ -12,7 +12,7 @@
  * kernel, and the kernels' instructions per call as BENCH lines. */
 #include "bench.h"
 #include "num.h"
-#include "num_int.h"
+#include "num/num_int.h"
 #define TEST_RNG_SEED 0xA0761D6478BD642Full
 #include "test_rng.h"
 

@@ -143,7 +143,7 @@ static void any_camera(void)
     for (size_t k = 0; k < sizeof pos / sizeof pos[0]; k++)
         for (int ang = 0; ang < 360; ang += 45) {
             struct scene *s = default_scene("raster-11");
-            s->camera.position = v3(num_from_double(pos[k][0]), num_from_double(pos[k][1]), num_from_double(pos[k][2]));
+            s->camera.position = v3_make(num_from_double(pos[k][0]), num_from_double(pos[k][1]), num_from_double(pos[k][2]));
             s->camera.rotation = m3_rot_y_deg(num_from_int(ang));
             s->ras.backface_cull = (uint8_t)(ang / 45 % 2);
             struct frame f;
@@ -169,12 +169,12 @@ static void culling_follows_viewport(void)
         static struct ras_instance in;
         struct scene *s = default_scene("raster-11");
         in = s->instances[0];
-        in.position = v3(num_from_double(cases[k].x), NUM_ZERO, num_from_double(cases[k].z));
+        in.position = v3_make(num_from_double(cases[k].x), NUM_ZERO, num_from_double(cases[k].z));
         in.rotation = m3_identity();
         in.scale = num_from_double(cases[k].scale);
         s->instances = &in;
         s->ninstances = 1;
-        s->camera.position = v3(NUM_ZERO, NUM_ZERO, NUM_ZERO);
+        s->camera.position = v3_make(NUM_ZERO, NUM_ZERO, NUM_ZERO);
         s->camera.rotation = m3_identity();
         s->viewport_h = num_from_double(cases[k].vh);
         s->projection_d = num_from_double(cases[k].d);
@@ -201,10 +201,10 @@ static double depth_fail_distance(int bits)
         struct scene *s = default_scene("raster-10");
         double zz[2] = { z + 0.01, z }; /* the far quad (blue) first */
         for (int q = 0; q < 2; q++) {
-            v[q * 4 + 0] = v3(num_from_double(-z), num_from_double(-z), num_from_double(zz[q]));
-            v[q * 4 + 1] = v3(num_from_double(z), num_from_double(-z), num_from_double(zz[q]));
-            v[q * 4 + 2] = v3(num_from_double(z), num_from_double(z), num_from_double(zz[q]));
-            v[q * 4 + 3] = v3(num_from_double(-z), num_from_double(z), num_from_double(zz[q]));
+            v[q * 4 + 0] = v3_make(num_from_double(-z), num_from_double(-z), num_from_double(zz[q]));
+            v[q * 4 + 1] = v3_make(num_from_double(z), num_from_double(-z), num_from_double(zz[q]));
+            v[q * 4 + 2] = v3_make(num_from_double(z), num_from_double(z), num_from_double(zz[q]));
+            v[q * 4 + 3] = v3_make(num_from_double(-z), num_from_double(z), num_from_double(zz[q]));
             static const int ix[2][3] = { { 0, 2, 1 }, { 0, 3, 2 } };
             for (int h = 0; h < 2; h++) {
                 struct ras_triangle *tr = &t[q * 2 + h];
@@ -222,7 +222,7 @@ static double depth_fail_distance(int bits)
         in.rotation = m3_identity();
         in.scale = NUM_ONE;
         s->models = &m; s->nmodels = 1; s->instances = &in; s->ninstances = 1;
-        s->camera.position = v3(NUM_ZERO, NUM_ZERO, NUM_ZERO);
+        s->camera.position = v3_make(NUM_ZERO, NUM_ZERO, NUM_ZERO);
         s->camera.rotation = m3_identity();
         s->ras.backface_cull = 0;
         s->ras.depth_bits = (uint8_t)bits;
@@ -278,10 +278,10 @@ static struct scene *floor_scene(double half, double zfar, struct ras_texture *t
     static struct ras_model m;
     static struct ras_instance in;
     struct scene *s = default_scene("raster-13");
-    v[0] = v3(num_from_double(-half), num_from_double(-1), num_from_double(3));
-    v[1] = v3(num_from_double(half), num_from_double(-1), num_from_double(3));
-    v[2] = v3(num_from_double(half), num_from_double(-1), num_from_double(zfar));
-    v[3] = v3(num_from_double(-half), num_from_double(-1), num_from_double(zfar));
+    v[0] = v3_make(num_from_double(-half), num_from_double(-1), num_from_double(3));
+    v[1] = v3_make(num_from_double(half), num_from_double(-1), num_from_double(3));
+    v[2] = v3_make(num_from_double(half), num_from_double(-1), num_from_double(zfar));
+    v[3] = v3_make(num_from_double(-half), num_from_double(-1), num_from_double(zfar));
     static const int ix[2][3] = { { 0, 2, 1 }, { 0, 3, 2 } };
     static const double uv[4][2] = { { 0, 1 }, { 1, 1 }, { 1, 0 }, { 0, 0 } };
     for (int h = 0; h < 2; h++) {
@@ -295,7 +295,7 @@ static struct scene *floor_scene(double half, double zfar, struct ras_texture *t
     }
     memset(&m, 0, sizeof m);
     m.nverts = 4; m.ntris = 2; m.verts = v; m.tris = t; m.has_uvs = 1;
-    m.bound_center = v3(NUM_ZERO, num_from_int(-1), num_from_double((3 + zfar) / 2));
+    m.bound_center = v3_make(NUM_ZERO, num_from_int(-1), num_from_double((3 + zfar) / 2));
     m.bound_radius = num_from_double((zfar - 3) / 2 + 3);
     memset(&in, 0, sizeof in);
     in.texture = 0;
@@ -305,7 +305,7 @@ static struct scene *floor_scene(double half, double zfar, struct ras_texture *t
     in.specular = num_from_int(-1);
     s->models = &m; s->nmodels = 1; s->instances = &in; s->ninstances = 1;
     s->textures = tex; s->ntextures = 1;
-    s->camera.position = v3(NUM_ZERO, NUM_ZERO, NUM_ZERO);
+    s->camera.position = v3_make(NUM_ZERO, NUM_ZERO, NUM_ZERO);
     s->camera.rotation = m3_identity();
     s->ras.shading = SHADE_NONE;
     s->ras.backface_cull = 0;

@@ -195,7 +195,7 @@ static struct rt_state *open_state(struct probe_ctx *p, const struct scene *s)
     p->work = aligned_alloc(8, (need + 7) / 8 * 8);
     if (render_init(&p->ctx, s, 64, 64, 64, p->work, need) != 0) return NULL;
     render_begin_frame(&p->ctx, 0);
-    return rt_state_of(&p->ctx);
+    return rt_state_of(p->ctx.work);
 }
 
 static double dd(num v) { return num_to_double(v); }
@@ -218,8 +218,8 @@ static void test_ground_sphere(void)
     };
     for (size_t i = 0; i < sizeof rays / sizeof rays[0]; i++) {
         const double *r = rays[i];
-        struct rt_ray ray = rt_make_ray(v3(num_from_double(r[0]), num_from_double(r[1]), num_from_double(r[2])),
-                                        v3(num_from_double(r[3]), num_from_double(r[4]), num_from_double(r[5])), -1, 0);
+        struct rt_ray ray = rt_make_ray(v3_make(num_from_double(r[0]), num_from_double(r[1]), num_from_double(r[2])),
+                                        v3_make(num_from_double(r[3]), num_from_double(r[4]), num_from_double(r[5])), -1, 0);
         /* exact roots in double from the rounded inputs */
         double o[3] = { dd(ray.o.x), dd(ray.o.y) + 5001, dd(ray.o.z) }, d[3] = { dd(ray.d.x), dd(ray.d.y), dd(ray.d.z) };
         long double a = (long double)d[0] * d[0] + (long double)d[1] * d[1] + (long double)d[2] * d[2];
@@ -227,7 +227,7 @@ static void test_ground_sphere(void)
         long double c = (long double)o[0] * o[0] + (long double)o[1] * o[1] + (long double)o[2] * o[2] - 25000000.0L;
         long double disc = b * b - a * c;
         num t1, t2;
-        int hit = intersect_ray_sphere(rt, 3, &ray, &t1, &t2);
+        int hit = rt_intersect_ray_sphere(rt, 3, &ray, &t1, &t2);
         if ((disc >= 0) != (hit != 0)) { misses++; continue; }
         if (!hit) continue;
         long double q = b + (b >= 0 ? sqrtl(disc) : -sqrtl(disc));
@@ -239,9 +239,9 @@ static void test_ground_sphere(void)
     check(misses == 0 && worst < (strcmp(NUM_NAME, "float") == 0 ? 1e-3 : 2e-4), "robust_sphere_ground_radius_5000", "misses %d, worst relative error %g",
           misses, worst);
     /* analytic self-intersection: leaving the ground sphere upward finds nothing */
-    struct rt_ray up = rt_make_ray(v3(NUM_ZERO, NUM_C(-1.0), NUM_ZERO), v3(NUM_C(0.3), NUM_C(1.0), NUM_C(-0.2)), 3, 0);
+    struct rt_ray up = rt_make_ray(v3_make(NUM_ZERO, NUM_C(-1.0), NUM_ZERO), v3_make(NUM_C(0.3), NUM_C(1.0), NUM_C(-0.2)), 3, 0);
     struct rt_hit hit = { 0, -1, -1, 0 };
-    check(!closest_intersection(rt, &up, NUM_ZERO, NUM_MAX, &hit, 0), "robust_self_no_acne_at_epsilon_zero",
+    check(!rt_closest_intersection(rt, &up, NUM_ZERO, NUM_MAX, &hit, 0), "robust_self_no_acne_at_epsilon_zero",
           "upward ray from the ground hit item %d at t=%g", hit.item, dd(hit.t));
     free(p.work);
     s->rt.formulation = saved;
@@ -255,10 +255,10 @@ static void test_csg_planes_triangles(void)
     struct scene save = *s;
     const struct rt_object *so = s->objects;
     o[0] = so[0];
-    o[0].center = v3(NUM_ZERO, NUM_ZERO, NUM_C(5.0));
+    o[0].center = v3_make(NUM_ZERO, NUM_ZERO, NUM_C(5.0));
     o[0].csg_only = 1;
     o[1] = o[0];
-    o[1].center = v3(NUM_ZERO, NUM_ZERO, NUM_C(4.5));
+    o[1].center = v3_make(NUM_ZERO, NUM_ZERO, NUM_C(4.5));
     s->objects = o;
     s->nobjects = 2;
     s->csg = g;
@@ -272,14 +272,14 @@ static void test_csg_planes_triangles(void)
     };
     for (int fm = 1; fm <= 2; fm++) {
         for (size_t i = 0; i < sizeof cases / sizeof cases[0]; i++) {
-            o[1].center = v3(NUM_ZERO, NUM_ZERO, num_from_double(cases[i].bz));
+            o[1].center = v3_make(NUM_ZERO, NUM_ZERO, num_from_double(cases[i].bz));
             g[0] = (struct rt_csg){ cases[i].op, 0, 1 };
             s->rt.formulation = (uint8_t)fm;
             struct probe_ctx p;
             struct rt_state *rt = open_state(&p, s);
-            struct rt_ray ray = rt_make_ray(v3(NUM_ZERO, NUM_ZERO, NUM_ZERO), v3(NUM_ZERO, NUM_ZERO, NUM_ONE), -1, 0);
+            struct rt_ray ray = rt_make_ray(v3_make(NUM_ZERO, NUM_ZERO, NUM_ZERO), v3_make(NUM_ZERO, NUM_ZERO, NUM_ONE), -1, 0);
             struct rt_hit hit;
-            int got = closest_intersection(rt, &ray, NUM_C(1.0), NUM_MAX, &hit, 0);
+            int got = rt_closest_intersection(rt, &ray, NUM_C(1.0), NUM_MAX, &hit, 0);
             char name[64];
             snprintf(name, sizeof name, "csg_%s_%s_bz%.1f", fm == 1 ? "book" : "robust",
                      cases[i].op == CSG_UNION ? "union" : cases[i].op == CSG_INTERSECTION ? "intersection" : "difference",
@@ -287,8 +287,8 @@ static void test_csg_planes_triangles(void)
             if (cases[i].want < 0) {
                 check(!got, name, "unexpected hit at %g", got ? dd(hit.t) : 0.0);
             } else {
-                vec3 pnt = v3(NUM_ZERO, NUM_ZERO, got ? hit.t : NUM_ZERO);
-                vec3 n = got ? rt_hit_normal(rt, &hit, pnt) : v3(NUM_ZERO, NUM_ZERO, NUM_ZERO);
+                vec3 pnt = v3_make(NUM_ZERO, NUM_ZERO, got ? hit.t : NUM_ZERO);
+                vec3 n = got ? rt_hit_normal(rt, &hit, pnt) : v3_make(NUM_ZERO, NUM_ZERO, NUM_ZERO);
                 check(got && fabs(dd(hit.t) - cases[i].want) < 1e-3 && hit.surf == cases[i].surf &&
                           fabs(dd(n.z) - cases[i].nz) < 1e-3,
                       name, "got %d t=%g surf %d nz %g", got, got ? dd(hit.t) : 0.0, hit.surf, dd(n.z));
@@ -299,31 +299,31 @@ static void test_csg_planes_triangles(void)
     /* a plane y = -1 and a triangle */
     o[0] = (struct rt_object){ 0 };
     o[0].shape = RT_PLANE;
-    o[0].normal = v3(NUM_ZERO, NUM_ONE, NUM_ZERO);
+    o[0].normal = v3_make(NUM_ZERO, NUM_ONE, NUM_ZERO);
     o[0].dist = NUM_C(-1.0);
     o[1] = (struct rt_object){ 0 };
     o[1].shape = RT_TRIANGLE;
-    o[1].p[0] = v3(NUM_C(-1.0), NUM_C(-0.5), NUM_C(4.0));
-    o[1].p[1] = v3(NUM_C(1.0), NUM_C(-0.5), NUM_C(4.0));
-    o[1].p[2] = v3(NUM_ZERO, NUM_C(1.0), NUM_C(4.0));
+    o[1].p[0] = v3_make(NUM_C(-1.0), NUM_C(-0.5), NUM_C(4.0));
+    o[1].p[1] = v3_make(NUM_C(1.0), NUM_C(-0.5), NUM_C(4.0));
+    o[1].p[2] = v3_make(NUM_ZERO, NUM_C(1.0), NUM_C(4.0));
     s->nobjects = 2;
     s->ncsg = 0;
     s->rt.formulation = 0;
     struct probe_ctx p;
     struct rt_state *rt = open_state(&p, s);
     struct rt_hit hit;
-    struct rt_ray down = rt_make_ray(v3(NUM_ZERO, NUM_ZERO, NUM_ZERO), v3(NUM_ZERO, NUM_C(-0.5), NUM_ONE), -1, 0);
-    int got = closest_intersection(rt, &down, NUM_C(0.5), NUM_MAX, &hit, 0);
-    vec3 n = rt_hit_normal(rt, &hit, v3(NUM_ZERO, NUM_C(-1.0), NUM_C(2.0)));
+    struct rt_ray down = rt_make_ray(v3_make(NUM_ZERO, NUM_ZERO, NUM_ZERO), v3_make(NUM_ZERO, NUM_C(-0.5), NUM_ONE), -1, 0);
+    int got = rt_closest_intersection(rt, &down, NUM_C(0.5), NUM_MAX, &hit, 0);
+    vec3 n = rt_hit_normal(rt, &hit, v3_make(NUM_ZERO, NUM_C(-1.0), NUM_C(2.0)));
     check(got && hit.item == 0 && fabs(dd(hit.t) - 2.0) < 1e-4 && dd(n.y) > 0.999, "plane_hit_y_minus_1",
           "got %d item %d t=%g", got, hit.item, dd(hit.t));
-    struct rt_ray fwd = rt_make_ray(v3(NUM_ZERO, NUM_ZERO, NUM_ZERO), v3(NUM_C(0.05), NUM_C(0.05), NUM_ONE), -1, 0);
-    got = closest_intersection(rt, &fwd, NUM_C(0.5), NUM_MAX, &hit, 0);
-    n = rt_hit_normal(rt, &hit, v3(NUM_C(0.2), NUM_C(0.2), NUM_C(4.0)));
+    struct rt_ray fwd = rt_make_ray(v3_make(NUM_ZERO, NUM_ZERO, NUM_ZERO), v3_make(NUM_C(0.05), NUM_C(0.05), NUM_ONE), -1, 0);
+    got = rt_closest_intersection(rt, &fwd, NUM_C(0.5), NUM_MAX, &hit, 0);
+    n = rt_hit_normal(rt, &hit, v3_make(NUM_C(0.2), NUM_C(0.2), NUM_C(4.0)));
     check(got && hit.item == 1 && fabs(dd(hit.t) - 4.0) < 1e-4 && dd(n.z) < -0.999, "triangle_hit_facing_viewer",
           "got %d item %d t=%g nz=%g", got, hit.item, dd(hit.t), dd(n.z));
-    struct rt_ray side = rt_make_ray(v3(NUM_ZERO, NUM_ZERO, NUM_ZERO), v3(NUM_C(0.3), NUM_C(0.2), NUM_ONE), -1, 0);
-    got = closest_intersection(rt, &side, NUM_C(0.5), NUM_MAX, &hit, 0);
+    struct rt_ray side = rt_make_ray(v3_make(NUM_ZERO, NUM_ZERO, NUM_ZERO), v3_make(NUM_C(0.3), NUM_C(0.2), NUM_ONE), -1, 0);
+    got = rt_closest_intersection(rt, &side, NUM_C(0.5), NUM_MAX, &hit, 0);
     check(!got, "triangle_miss_outside_edge", "hit item %d", hit.item);
     free(p.work);
     *s = save;
@@ -333,15 +333,15 @@ static void test_refraction(void)
 {
     vec3 out;
     /* entering glass (1.5) at 30 degrees: sin t = 0.5/1.5 */
-    vec3 n = v3(NUM_ZERO, NUM_ONE, NUM_ZERO);
-    vec3 d = v3(num_from_double(0.5), num_from_double(-0.8660254), NUM_ZERO);
+    vec3 n = v3_make(NUM_ZERO, NUM_ONE, NUM_ZERO);
+    vec3 d = v3_make(num_from_double(0.5), num_from_double(-0.8660254), NUM_ZERO);
     int ok = rt_refract(d, n, NUM_C(1.5), &out);
     check(ok && fabs(dd(out.x) - 1.0 / 3.0) < 1e-3 && dd(out.y) < 0, "refraction_snell_entering", "ok %d x %g", ok,
           dd(out.x));
     /* leaving glass at 60 degrees: 1.5 sin 60 > 1, total internal reflection */
-    vec3 d2 = v3(num_from_double(0.8660254), num_from_double(0.5), NUM_ZERO);
+    vec3 d2 = v3_make(num_from_double(0.8660254), num_from_double(0.5), NUM_ZERO);
     check(!rt_refract(d2, n, NUM_C(1.5), &out), "refraction_total_internal_reflection", "refracted");
-    vec3 d3 = v3(num_from_double(0.5), num_from_double(0.8660254), NUM_ZERO);
+    vec3 d3 = v3_make(num_from_double(0.5), num_from_double(0.8660254), NUM_ZERO);
     ok = rt_refract(d3, n, NUM_C(1.5), &out);
     check(ok && fabs(dd(out.x) - 0.75) < 1e-3 && dd(out.y) > 0, "refraction_snell_leaving", "ok %d x %g", ok, dd(out.x));
 }
@@ -469,7 +469,7 @@ static void test_coarse_rejection(void)
         for (int i = 0; i < 3; i++) c[i] = (urand(&st) - 0.5) * 40;
         memset(o, 0, sizeof o);
         o[0].shape = RT_SPHERE;
-        o[0].center = v3(num_from_double(c[0]), num_from_double(c[1]), num_from_double(c[2]));
+        o[0].center = v3_make(num_from_double(c[0]), num_from_double(c[1]), num_from_double(c[2]));
         o[0].radius = num_from_double(r);
         o[1] = o[0];
         struct rt_state *rt = open_state(&p, s);
@@ -489,26 +489,26 @@ static void test_coarse_rejection(void)
                 tgt[i] = c[i] + side[i] / sl * r * (1 + delta);
             }
             double scale = exp((urand(&st) - 0.5) * 8);    /* |D| from 0.02 to 50 */
-            vec3 O = v3(num_from_double(org[0]), num_from_double(org[1]), num_from_double(org[2]));
-            vec3 D = v3(num_from_double((tgt[0] - org[0]) * scale / dist), num_from_double((tgt[1] - org[1]) * scale / dist),
-                        num_from_double((tgt[2] - org[2]) * scale / dist));
+            vec3 O = v3_make(num_from_double(org[0]), num_from_double(org[1]), num_from_double(org[2]));
+            vec3 D = v3_make(num_from_double((tgt[0] - org[0]) * scale / dist), num_from_double((tgt[1] - org[1]) * scale / dist),
+                             num_from_double((tgt[2] - org[2]) * scale / dist));
             if (k % 5 == 4) D = v3_neg(D);                   /* away from the sphere */
             struct rt_ray ray = rt_make_ray(O, D, -1, 0);
             struct rt_csphere cs = rt_csphere_make(o[0].center, o[0].radius);
             int claim = rt_coarse_sphere_miss(&ray.cd, &cs);
             rt->shortcuts = 0;
             num t1, t2;
-            int hit = intersect_ray_sphere(rt, 0, &ray, &t1, &t2);
+            int hit = rt_intersect_ray_sphere(rt, 0, &ray, &t1, &t2);
             total++;
             if (claim) { rejected++; if (hit) wrong++; }
             /* a ray leaving the sphere's surface point nearest O: b < 0 claimed */
             double pt[3];
             for (int i = 0; i < 3; i++) pt[i] = c[i] + u[i] / len * r;
-            vec3 P = v3(num_from_double(pt[0]), num_from_double(pt[1]), num_from_double(pt[2]));
+            vec3 P = v3_make(num_from_double(pt[0]), num_from_double(pt[1]), num_from_double(pt[2]));
             struct rt_ray leave = rt_make_ray(P, D, 1, 0);
             if (rt_coarse_dot_negative(&leave.cd, &cs.c)) {
                 negclaims++;
-                intersect_ray_sphere(rt, 1, &leave, &t1, &t2);
+                rt_intersect_ray_sphere(rt, 1, &leave, &t1, &t2);
                 if (t1 > 0 || t2 > 0) negwrong++;
             }
         }

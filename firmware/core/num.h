@@ -179,7 +179,7 @@ typedef struct { num m[3][3]; } mat3;     /* row-major, acts on column vectors *
 typedef struct { num m[4][4]; } mat4;     /* row-major, acts on column vectors */
 typedef struct { num r, g, b; } rgb;      /* channels 0..255, unclamped */
 
-vec3 v3(num x, num y, num z);
+vec3 v3_make(num x, num y, num z);
 vec3 v3_add(vec3 a, vec3 b);
 vec3 v3_sub(vec3 a, vec3 b);
 vec3 v3_neg(vec3 a);
@@ -214,7 +214,7 @@ void     rgb_to_888(rgb c, uint8_t out[3]);
 
 /* Fixed point: the hottest operations inline (same bits; num_inline.h). */
 #if NUM_MODE == NUM_MODE_FIXED && !defined(NUM_NO_INLINE)
-#include "num_inline.h"
+#include "num/num_inline.h"
 #endif
 
 #endif

@@ -40,15 +40,29 @@
  * once per frame), light vectors, and one strip's depth buffer.
  * Not thread-safe per context.
  *
- * This header is the rasterizer's contract (conventions); the entry points
- * are render.h's, the internals raster_int.h's.
+ * This header is the rasterizer's contract (conventions) and its entry
+ * points, which the dispatcher (render.c) calls: use render.h's. The
+ * internals are raster/raster_int.h's.
  */
 #ifndef RASTER_H
 #define RASTER_H
 
 #include <stddef.h>
-#include "render.h"
+#include "strip.h"
 
 #define RAS_SUBPIXEL_BITS 4   /* default vertex precision: 1/16 pixel */
+
+/* ---- the entry points behind render.h -------------------------------- */
+
+/* Work memory for this scene at this size with strips of strip_rows rows;
+ * 0 for a scene it cannot lay out (an instance of a missing model). */
+size_t raster_work_size(const struct scene *s, uint16_t width, uint16_t height, uint16_t strip_rows);
+/* Lays out the state in work (any alignment, work_size bytes). 0, or -1. */
+int raster_init(void *work, size_t work_size, const struct scene *s, uint16_t width, uint16_t height,
+                uint16_t strip_rows);
+/* Per frame: transforms, binning of primitives to strips, lights. */
+int raster_begin_frame(void *work, uint16_t frame);
+/* Rows [t->y0, t->y1) of the current frame (at most strip_rows). */
+int raster_strip(void *work, struct render_target *t, struct render_stats *st);
 
 #endif

@@ -34,13 +34,14 @@
  * Not thread-safe per state; two states may render different strips of the
  * same scene.
  *
- * This header is the ray tracer's contract (conventions and limits); the
- * entry points are render.h's, the internals rt_int.h's.
+ * This header is the ray tracer's contract (conventions and limits) and its
+ * entry points, which the dispatcher (render.c) calls: use render.h's. The
+ * internals are rt/rt_int.h's.
  */
 #ifndef RAYTRACER_H
 #define RAYTRACER_H
 
-#include "render.h"
+#include "strip.h"
 
 /* Deepest reflection/refraction recursion honoured (rt_options.recursion_depth
  * is clamped to it; the book's control allows 0..5). */
@@ -49,5 +50,20 @@
 #define RT_MAX_ADAPT 8
 /* Rays per pixel side for supersampling (4 -> 16 rays). */
 #define RT_MAX_SS 4
+
+/* ---- the entry points behind render.h -------------------------------- */
+
+/* Work memory for this scene at this size (scene-dependent tables and one
+ * row of per-pixel notes for subsampling and adaptive supersampling). */
+size_t rt_work_size(const struct scene *s, uint16_t width, uint16_t height);
+/* Builds the state in work (8-byte aligned, work_size bytes): tables, the
+ * bounding-sphere hierarchy. 0, or -1 for a scene it cannot render. */
+int rt_init(void *work, size_t work_size, const struct scene *s, uint16_t width, uint16_t height);
+/* Per-frame constants: camera (with animation), per-object constants. */
+int rt_begin_frame(void *work, uint16_t frame);
+/* enum render_pass of the following strips. */
+void rt_set_pass(void *work, uint8_t pass);
+/* Rows [t->y0, t->y1) of the current frame. */
+int rt_render_strip(void *work, struct render_target *t, struct render_stats *st);
 
 #endif

@@ -1,13 +1,13 @@
 /* SPDX-License-Identifier: MIT */
-/* render.c — dispatch to the scene's renderer, and the shared pixel write. */
+/* render.c — the dispatcher: render.h's entry points, each handed to the
+ * scene's renderer (raytracer.h, raster.h). */
 #include <string.h>
 #include "render.h"
-#include "rt_int.h"
-#include "raster_int.h"
+#include "raytracer.h"
+#include "raster.h"
 
 size_t render_work_size(const struct scene *s, uint16_t width, uint16_t height, uint16_t strip_rows)
 {
-    (void)strip_rows;
     if (s->kind == SCENE_RAYTRACE) return rt_work_size(s, width, height);
     if (s->kind == SCENE_RASTER) return raster_work_size(s, width, height, strip_rows);
     return 0;
@@ -25,27 +25,27 @@ int render_init(struct render_ctx *ctx, const struct scene *s, uint16_t width, u
     ctx->frame = 0;
     ctx->work = work;
     ctx->work_size = work_size;
-    if (s->kind == SCENE_RAYTRACE) return rt_init(ctx);
-    if (s->kind == SCENE_RASTER) return raster_init(ctx);
+    if (s->kind == SCENE_RAYTRACE) return rt_init(work, work_size, s, width, height);
+    if (s->kind == SCENE_RASTER) return raster_init(work, work_size, s, width, height, strip_rows);
     return -1;
 }
 
 int render_set_pass(struct render_ctx *ctx, uint8_t pass)
 {
     if (pass == RENDER_PASS_FULL) {
-        if (ctx->scene->kind == SCENE_RAYTRACE) rt_state_of(ctx)->pass = RENDER_PASS_FULL;
+        if (ctx->scene->kind == SCENE_RAYTRACE) rt_set_pass(ctx->work, RENDER_PASS_FULL);
         return 0;
     }
     if (pass != RENDER_PASS_COARSE || ctx->scene->kind != SCENE_RAYTRACE) return -1;
-    rt_state_of(ctx)->pass = pass;
+    rt_set_pass(ctx->work, pass);
     return 0;
 }
 
 int render_begin_frame(struct render_ctx *ctx, uint16_t frame)
 {
     ctx->frame = frame;
-    if (ctx->scene->kind == SCENE_RAYTRACE) return rt_begin_frame(ctx, frame);
-    if (ctx->scene->kind == SCENE_RASTER) return raster_begin_frame(ctx, frame);
+    if (ctx->scene->kind == SCENE_RAYTRACE) return rt_begin_frame(ctx->work, frame);
+    if (ctx->scene->kind == SCENE_RASTER) return raster_begin_frame(ctx->work, frame);
     return 0;
 }
 
@@ -54,12 +54,15 @@ int render_strip(struct render_ctx *ctx, struct render_target *t, struct render_
     struct render_stats ignored;
     if (t->y0 >= t->y1 || t->y1 > ctx->height || t->width != ctx->width || t->y1 - t->y0 > ctx->strip_rows)
         return -1;
+#if !RENDER_HOST_OUTPUTS
+    if (t->rgb888 || t->written) return -1;   /* this build has no code for them */
+#endif
     if (!st) {
         memset(&ignored, 0, sizeof ignored);
         st = &ignored;      /* the renderers count into it; the caller asked for nothing */
     }
-    if (ctx->scene->kind == SCENE_RAYTRACE) return rt_render_strip(ctx, t, st);
-    if (ctx->scene->kind == SCENE_RASTER) return raster_strip(ctx, t, st);
+    if (ctx->scene->kind == SCENE_RAYTRACE) return rt_render_strip(ctx->work, t, st);
+    if (ctx->scene->kind == SCENE_RASTER) return raster_strip(ctx->work, t, st);
     return -1;  /* not a kind this core renders */
 }
 

@@ -154,7 +154,7 @@ struct ras_instance {
 enum shading { SHADE_FLAT = 0, SHADE_GOURAUD = 1, SHADE_PHONG = 2, SHADE_NONE = 3 };
 
 /* How the default path lights Phong-shaded pixels: fast Phong (integer
- * vectors, table powers), compute_illumination per pixel, or at the corners
+ * vectors, table powers), ras_compute_illumination per pixel, or at the corners
  * (Gouraud). */
 enum ras_lighting { RAS_LIGHT_FAST = 0, RAS_LIGHT_EXACT = 1, RAS_LIGHT_VERTEX = 2 };
 

@@ -52,10 +52,10 @@ static NOINLINE num w_rsqrt(num a, num b, uint32_t i) { (void)b; (void)i; return
 static NOINLINE num w_powi(num a, num b, uint32_t i) { (void)a; (void)b; return num_powi(U[i], E[i]); }
 static NOINLINE num w_sin(num a, num b, uint32_t i) { (void)a; (void)b; return num_sin_deg(DEG[i]); }
 static NOINLINE num w_cos(num a, num b, uint32_t i) { (void)a; (void)b; return num_cos_deg(DEG[i]); }
-static NOINLINE num w_dot(num a, num b, uint32_t i) { (void)i; return v3_dot(v3(a, b, a), v3(b, a, b)); }
-static NOINLINE num w_len(num a, num b, uint32_t i) { (void)i; return v3_len(v3(a, b, U[i])); }
-static NOINLINE num w_norm(num a, num b, uint32_t i) { (void)i; return v3_normalize(v3(a, b, U[i])).x; }
-static NOINLINE num w_cross(num a, num b, uint32_t i) { (void)i; return v3_cross(v3(a, b, U[i]), v3(b, U[i], a)).x; }
+static NOINLINE num w_dot(num a, num b, uint32_t i) { (void)i; return v3_dot(v3_make(a, b, a), v3_make(b, a, b)); }
+static NOINLINE num w_len(num a, num b, uint32_t i) { (void)i; return v3_len(v3_make(a, b, U[i])); }
+static NOINLINE num w_norm(num a, num b, uint32_t i) { (void)i; return v3_normalize(v3_make(a, b, U[i])).x; }
+static NOINLINE num w_cross(num a, num b, uint32_t i) { (void)i; return v3_cross(v3_make(a, b, U[i]), v3_make(b, U[i], a)).x; }
 static NOINLINE num w_wmul(num a, num b, uint32_t i) { (void)b; wsink = wnum_mul(WA[i], WB[i]); return a; }
 static NOINLINE num w_wsub(num a, num b, uint32_t i) { (void)b; wsink = wnum_sub(WA[i], WB[i]); return a; }
 static NOINLINE num w_wdiv(num a, num b, uint32_t i) { (void)a; (void)b; return wnum_div(WA[i], WB[i]); }

@@ -303,7 +303,7 @@ static void scan(const struct scene *s, struct scene_format *R, int width, int h
                 note(&R->square, diam2, "instance %d (%s): face normal edge x edge", i, m->name);
                 if (s->ras.book_exact) {
                     /* the book path never normalises N: 2 N (N.L) - L of
-                     * compute_illumination is |N|^2 |L| x 2 (N.L and the
+                     * ras_compute_illumination is |N|^2 |L| x 2 (N.L and the
                      * cosines' products are wide) */
                     double lmax = far + cam;
                     for (int k = 0; k < s->nlights; k++)

@@ -496,7 +496,7 @@ static vec3 get_vec3(struct parser *p, const struct node *n, const char *what)
 {
     double d[3];
     get_tuple(p, n, what, 3, d);
-    return v3(to_num(p, n, d[0], what), to_num(p, n, d[1], what), to_num(p, n, d[2], what));
+    return v3_make(to_num(p, n, d[0], what), to_num(p, n, d[1], what), to_num(p, n, d[2], what));
 }
 
 static rgb get_rgb(struct parser *p, const struct node *n, const char *what)
@@ -728,7 +728,7 @@ static void read_object(struct parser *p, struct build *b, const struct node *n,
         get_tuple(p, need(p, n, v[7], what, "normal"), "plane normal", 3, d);
         double len = sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
         if (!(len > 0)) FAIL_N(p, v[7], "plane normal must not be zero");
-        o->normal = v3(num_from_double(d[0] / len), num_from_double(d[1] / len), num_from_double(d[2] / len));
+        o->normal = v3_make(num_from_double(d[0] / len), num_from_double(d[1] / len), num_from_double(d[2] / len));
         o->dist = to_num(p, v[8], get_num(p, need(p, n, v[8], what, "dist"), "plane dist"), "plane dist");
     } else {
         fields(p, n, what, tri_keys, v);
@@ -890,8 +890,8 @@ static void gen_sphere(struct parser *p, const struct node *at, struct ras_model
         for (int i = 0; i < divs; i++) {
             double c = divs == 15 ? sphere15_cos[i] : cos(i * delta);
             double s = divs == 15 ? sphere15_sin[i] : sin(i * delta);
-            verts[divs * d + i] = v3(to_num(p, at, r * c, "sphere vertex"), to_num(p, at, y, "sphere vertex"),
-                                     to_num(p, at, r * s, "sphere vertex"));
+            verts[divs * d + i] = v3_make(to_num(p, at, r * c, "sphere vertex"), to_num(p, at, y, "sphere vertex"),
+                                          to_num(p, at, r * s, "sphere vertex"));
         }
     }
     int t = 0;
@@ -920,7 +920,7 @@ static void gen_sphere(struct parser *p, const struct node *at, struct ras_model
     m->tris = tris;
     m->has_normals = 1;
     m->has_uvs = 0;
-    m->bound_center = v3(NUM_ZERO, NUM_ZERO, NUM_ZERO);
+    m->bound_center = v3_make(NUM_ZERO, NUM_ZERO, NUM_ZERO);
     m->bound_radius = NUM_ONE;
 }
 
@@ -1050,7 +1050,7 @@ static void read_model(struct parser *p, struct build *b, const struct node *n, 
             double d2 = dx * dx + dy * dy + dz * dz;
             if (d2 > r2) r2 = d2;
         }
-        m->bound_center = v3(num_from_double(c[0]), num_from_double(c[1]), num_from_double(c[2]));
+        m->bound_center = v3_make(num_from_double(c[0]), num_from_double(c[1]), num_from_double(c[2]));
         m->bound_radius = to_num(p, vs, sqrt(r2), "bounding radius");
     }
     if (v[7]) {

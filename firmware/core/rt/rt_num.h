@@ -16,7 +16,7 @@
 
 #include "num.h"
 #if NUM_MODE == NUM_MODE_FIXED
-#include "num_int.h"
+#include "num/num_int.h"
 #endif
 
 /* 1 when the mode is the reference (double), 0 otherwise. */

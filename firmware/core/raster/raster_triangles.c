@@ -6,7 +6,7 @@
 
 #define RAS_MAX_STEPS 65536
 
-void book_sort_corners(const num y[3], int idx[3])
+void ras_book_sort_corners(const num y[3], int idx[3])
 {
     idx[0] = 0; idx[1] = 1; idx[2] = 2;
     int t;
@@ -110,16 +110,16 @@ static void book_scan(struct ras_ctx *rc, const num x[3], const num y[3], int nq
     }
 }
 
-void book_scan_triangle(struct ras_ctx *rc, const num x[3], const num y[3], int nq,
-                        const num (*q)[3], ras_book_pixel_fn fn, void *ud)
+void ras_book_scan_triangle(struct ras_ctx *rc, const num x[3], const num y[3], int nq,
+                            const num (*q)[3], ras_book_pixel_fn fn, void *ud)
 {
     book_scan(rc, x, y, nq, q, SPAN_TRUNCATED, fn, ud, rgb_make(NUM_ZERO, NUM_ZERO, NUM_ZERO));
 }
 
-void draw_filled_triangle(struct ras_ctx *rc, const num x[3], const num y[3], rgb c)
+void ras_draw_filled_triangle(struct ras_ctx *rc, const num x[3], const num y[3], rgb c)
 {
     int i[3];
-    book_sort_corners(y, i);
+    ras_book_sort_corners(y, i);
     num xs[3] = { x[i[0]], x[i[1]], x[i[2]] }, ys[3] = { y[i[0]], y[i[1]], y[i[2]] };
     book_scan(rc, xs, ys, 0, NULL, SPAN_REAL, NULL, NULL, c);
 }
@@ -132,10 +132,10 @@ static void shaded_pixel(struct ras_ctx *rc, int32_t x, int32_t y, const num *q,
     ras_put(rc, ras_canvas_col(rc, x), ras_canvas_row(rc, y), rgb_scale(s->c, q[0]));
 }
 
-void draw_shaded_triangle(struct ras_ctx *rc, const num x[3], const num y[3], const num h[3], rgb c)
+void ras_draw_shaded_triangle(struct ras_ctx *rc, const num x[3], const num y[3], const num h[3], rgb c)
 {
     int i[3];
-    book_sort_corners(y, i);
+    ras_book_sort_corners(y, i);
     num xs[3] = { x[i[0]], x[i[1]], x[i[2]] }, ys[3] = { y[i[0]], y[i[1]], y[i[2]] };
     num hs[1][3] = { { h[i[0]], h[i[1]], h[i[2]] } };
     struct shaded_ud ud = { c };

@@ -6,11 +6,11 @@
 #define NUM_NO_INLINE   /* the out-of-line definitions live here */
 #include "num.h"
 
-vec3 v3(num x, num y, num z) { vec3 r = { x, y, z }; return r; }
-vec3 v3_add(vec3 a, vec3 b) { return v3(num_add(a.x, b.x), num_add(a.y, b.y), num_add(a.z, b.z)); }
-vec3 v3_sub(vec3 a, vec3 b) { return v3(num_sub(a.x, b.x), num_sub(a.y, b.y), num_sub(a.z, b.z)); }
-vec3 v3_neg(vec3 a) { return v3(num_neg(a.x), num_neg(a.y), num_neg(a.z)); }
-vec3 v3_scale(vec3 a, num s) { return v3(num_mul(a.x, s), num_mul(a.y, s), num_mul(a.z, s)); }
+vec3 v3_make(num x, num y, num z) { vec3 r = { x, y, z }; return r; }
+vec3 v3_add(vec3 a, vec3 b) { return v3_make(num_add(a.x, b.x), num_add(a.y, b.y), num_add(a.z, b.z)); }
+vec3 v3_sub(vec3 a, vec3 b) { return v3_make(num_sub(a.x, b.x), num_sub(a.y, b.y), num_sub(a.z, b.z)); }
+vec3 v3_neg(vec3 a) { return v3_make(num_neg(a.x), num_neg(a.y), num_neg(a.z)); }
+vec3 v3_scale(vec3 a, num s) { return v3_make(num_mul(a.x, s), num_mul(a.y, s), num_mul(a.z, s)); }
 
 /* v3_dot, v3_dot_wide, v3_cross, v3_len and v3_normalize depend on the
  * mode: see num.c. */

@@ -120,8 +120,8 @@ static wnum sphere_self_b(const struct rt_state *rt, int16_t obj, struct rt_ray 
 
 /* IntersectRaySphere: the two roots, t1 the far one and t2 the near one
  * (the book's order); 0 when the ray misses. */
-int intersect_ray_sphere(const struct rt_state *rt, int16_t obj, struct rt_ray *ray,
-                         num *t1, num *t2)
+int rt_intersect_ray_sphere(const struct rt_state *rt, int16_t obj, struct rt_ray *ray,
+                            num *t1, num *t2)
 {
     const struct rt_object *o = &rt->s->objects[obj];
     const struct rt_obj_cache *oc = &rt->oc[obj];
@@ -160,7 +160,7 @@ int intersect_ray_sphere(const struct rt_state *rt, int16_t obj, struct rt_ray *
     return 1;
 }
 
-/* What rt_item_hit's book-order comparisons pick from intersect_ray_sphere's
+/* What rt_item_hit's book-order comparisons pick from rt_intersect_ray_sphere's
  * roots (the smallest in (t_min, limit)), with less work: 1 and *t when
  * there is one. Leaving the sphere, the roots are 0 and 2b/a, so b <= 0
  * means no hit without dividing. From outside with b^2 > a c the near root
@@ -286,7 +286,7 @@ static int sphere_span(const struct rt_state *rt, int16_t obj, struct rt_ray *ra
                        struct span *sp)
 {
     num t1, t2;
-    if (!intersect_ray_sphere(rt, obj, ray, &t1, &t2)) return 0;
+    if (!rt_intersect_ray_sphere(rt, obj, ray, &t1, &t2)) return 0;
     sp->t0 = t2 < t1 ? t2 : t1;
     sp->t1 = t2 < t1 ? t1 : t2;
     sp->s0 = sp->s1 = obj;
@@ -371,7 +371,7 @@ int rt_item_hit(struct rt_state *rt, int16_t item, struct rt_ray *ray, num t_min
         switch (o->shape) {
         case RT_SPHERE:
             if (rt->shortcuts) return sphere_item_hit(rt, item, ray, t_min, limit, hit, 0);
-            if (!intersect_ray_sphere(rt, item, ray, &t1, &t2)) return 0;
+            if (!rt_intersect_ray_sphere(rt, item, ray, &t1, &t2)) return 0;
             /* book order: t1 first, then t2, strict comparisons */
             if (t_min < t1 && t1 < limit) { limit = t1; got = 1; }
             if (t_min < t2 && t2 < limit) { limit = t2; got = 1; }
@@ -405,8 +405,8 @@ static int bound_hit(struct rt_state *rt, vec3 c, num r, struct rt_ray *ray)
     return wnum_sub(wnum_mul(b, b), wnum_mul(a, cc)) >= 0;
 }
 
-int closest_intersection(struct rt_state *rt, struct rt_ray *ray, num t_min, num t_max,
-                         struct rt_hit *hit, int any_hit)
+int rt_closest_intersection(struct rt_state *rt, struct rt_ray *ray, num t_min, num t_max,
+                            struct rt_hit *hit, int any_hit)
 {
     num limit = t_max;
     int found = 0;
@@ -475,7 +475,7 @@ vec3 rt_hit_normal(const struct rt_state *rt, const struct rt_hit *hit, vec3 p)
         } else {
             /* divide by r: 1/r is too coarse in Q15.16 for r = 5000 */
             const struct num_divisor *r = &rt->oc[hit->surf].rdiv;
-            n = v3(num_div_by(n.x, r), num_div_by(n.y, r), num_div_by(n.z, r));
+            n = v3_make(num_div_by(n.x, r), num_div_by(n.y, r), num_div_by(n.z, r));
         }
     } else if (o->shape == RT_PLANE) {
         n = o->normal;
@@ -514,7 +514,7 @@ void rt_light_constants(struct rt_state *rt)
     const struct scene *s = rt->s;
     for (uint16_t k = 0; k < s->nlights; k++)
         if (s->lights[k].type == LIGHT_DIRECTIONAL) {
-            rt->light_ray[k] = rt_make_ray(v3(NUM_ZERO, NUM_ZERO, NUM_ZERO), s->lights[k].v, -1, 0);
+            rt->light_ray[k] = rt_make_ray(v3_make(NUM_ZERO, NUM_ZERO, NUM_ZERO), s->lights[k].v, -1, 0);
             rt_ray_exact(&rt->light_ray[k]);
             rt->light_len[k] = v3_len(s->lights[k].v);
         }
@@ -551,13 +551,13 @@ static int16_t build_node(struct rt_state *rt, int16_t first, int16_t count)
     struct rt_bvh_node *nd = &rt->bvh[id];
     int16_t *it = rt->bvh_items + first;
     /* centre: mean of item centres; radius: farthest item surface */
-    vec3 lo = v3(NUM_MAX, NUM_MAX, NUM_MAX), hi = v3(NUM_MIN, NUM_MIN, NUM_MIN);
+    vec3 lo = v3_make(NUM_MAX, NUM_MAX, NUM_MAX), hi = v3_make(NUM_MIN, NUM_MIN, NUM_MIN);
     for (int16_t k = 0; k < count; k++) {
         vec3 c;
         num r;
         item_bound(rt, it[k], &c, &r);
-        lo = v3(num_min(lo.x, c.x), num_min(lo.y, c.y), num_min(lo.z, c.z));
-        hi = v3(num_max(hi.x, c.x), num_max(hi.y, c.y), num_max(hi.z, c.z));
+        lo = v3_make(num_min(lo.x, c.x), num_min(lo.y, c.y), num_min(lo.z, c.z));
+        hi = v3_make(num_max(hi.x, c.x), num_max(hi.y, c.y), num_max(hi.z, c.z));
     }
     vec3 mid = v3_scale(v3_add(lo, hi), NUM_HALF);
     num rad = NUM_ZERO;

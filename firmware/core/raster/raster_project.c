@@ -5,7 +5,7 @@
 
 /* ProjectVertex + ViewportToCanvas: ((v.x*d)/v.z)*Cw/Vw (num_ras.h keeps
  * the demos' order in the double build). Canvas units, +y up. */
-void project_vertex(const struct ras_ctx *rc, vec3 v, num *x, num *y)
+void ras_project_vertex(const struct ras_ctx *rc, vec3 v, num *x, num *y)
 {
     /* cw/vw == ch/vh (the viewport width follows the aspect): one scale for
      * both axes, without the rounding of an aspect-derived vw */
@@ -19,8 +19,8 @@ void project_vertex(const struct ras_ctx *rc, vec3 v, num *x, num *y)
 static vec3 anim_pos(vec3 p, const struct scene_anim *a, uint16_t frame)
 {
     if (frame == 0) return p;
-    return v3_add(p, v3(num_mul_int(a->move_per_frame.x, frame), num_mul_int(a->move_per_frame.y, frame),
-                        num_mul_int(a->move_per_frame.z, frame)));
+    return v3_add(p, v3_make(num_mul_int(a->move_per_frame.x, frame), num_mul_int(a->move_per_frame.y, frame),
+                             num_mul_int(a->move_per_frame.z, frame)));
 }
 
 static mat3 anim_rot(const mat3 *r, const struct scene_anim *a, uint16_t frame)
@@ -72,7 +72,7 @@ struct ras_wnormal ras_face_normal_wide(vec3 a, vec3 b, vec3 c)
 
 vec3 ras_wnormal_narrow(struct ras_wnormal n)
 {
-    return v3(wnum_to_num(n.x), wnum_to_num(n.y), wnum_to_num(n.z));
+    return v3_make(wnum_to_num(n.x), wnum_to_num(n.y), wnum_to_num(n.z));
 }
 
 wnum ras_facing_wide(vec3 p, struct ras_wnormal n)

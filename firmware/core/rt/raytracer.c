@@ -3,7 +3,7 @@
  * (chapter 4), the camera (chapter 5), and chapter 5's transparency,
  * supersampling and subsampling; rendering by strips of rows. */
 #include "rt_int.h"
-#include "num_rt.h"
+#include "rt_num.h"
 
 #define ALIGN8(n) (((n) + 7u) & ~(size_t)7u)
 /* Adaptive supersampling refines a pixel whose centre sample differs from
@@ -66,27 +66,27 @@ size_t rt_work_size(const struct scene *s, uint16_t width, uint16_t height)
     return layout_of(s, width, height).total;
 }
 
-void rt_set_shadow_probe(struct render_ctx *ctx, uint8_t *probe)
+void rt_set_shadow_probe(void *work, uint8_t *probe)
 {
-    rt_state_of(ctx)->shadow_probe = probe;
+    rt_state_of(work)->shadow_probe = probe;
 }
 
-int rt_init(struct render_ctx *ctx)
+int rt_init(void *work, size_t work_size, const struct scene *s, uint16_t width, uint16_t height)
 {
-    const struct scene *s = ctx->scene;
-    if (((uintptr_t)ctx->work & 7u) != 0) return -1;
+    if (((uintptr_t)work & 7u) != 0) return -1;
     if ((size_t)s->nobjects + s->ncsg > 16000) return -1;
     for (uint16_t k = 0; k < s->ncsg; k++)
         if (s->csg[k].a >= s->nobjects || s->csg[k].b >= s->nobjects ||
             s->objects[s->csg[k].a].shape != RT_SPHERE || s->objects[s->csg[k].b].shape != RT_SPHERE)
             return -1;
-    struct layout l = layout_of(s, ctx->width, ctx->height);
-    unsigned char *w = ctx->work;
+    struct layout l = layout_of(s, width, height);
+    if (work_size < l.total) return -1;
+    unsigned char *w = work;
     struct rt_state *rt = (struct rt_state *)(w + l.state);
     *rt = (struct rt_state){ 0 };
     rt->s = s;
-    rt->w = ctx->width;
-    rt->h = ctx->height;
+    rt->w = width;
+    rt->h = height;
     rt->oc = (struct rt_obj_cache *)(w + l.oc);
     rt->items = (int16_t *)(w + l.items);
     rt->unbounded = (int16_t *)(w + l.unb);
@@ -129,19 +129,19 @@ int rt_init(struct render_ctx *ctx)
     for (uint16_t k = 0; k < s->ncsg; k++) rt->items[rt->nitems++] = (int16_t)(s->nobjects + k);
     for (uint16_t k = 0; k < s->nlights; k++) rt->occluder[k] = -1;
     /* viewport: height kept, width follows the render size (render.h) */
-    rt->wn = num_from_int(ctx->width);
-    rt->hn = num_from_int(ctx->height);
+    rt->wn = num_from_int(width);
+    rt->hn = num_from_int(height);
     rt->vh = s->viewport_h;
     rt->vw = num_div(num_mul(s->viewport_h, rt->wn), rt->hn);
     rt->d = s->projection_d;
     rt->sx = num_div(rt->vw, rt->wn);
     rt->sy = num_div(rt->vh, rt->hn);
     /* viewport x of every column's centre sample (canvas_to_viewport) */
-    for (uint16_t c = 0; c < ctx->width; c++)
-        rt->col_x[c] = num_div(num_mul(num_from_int(c - ctx->width / 2), rt->vw), rt->wn);
+    for (uint16_t c = 0; c < width; c++)
+        rt->col_x[c] = num_div(num_mul(num_from_int(c - width / 2), rt->vw), rt->wn);
     rt->row_y_row = -1;
     if (rt->row_y_tab)
-        for (int r = 0; r < ctx->height; r++)
+        for (int r = 0; r < height; r++)
             rt->row_y_tab[r] = num_div(num_mul(num_from_int(rt->h / 2 - 1 - r), rt->vh), rt->hn);
     rt->cam_pos = s->camera.position;
     rt->cam_rot = s->camera.rotation;
@@ -163,16 +163,16 @@ static int is_identity(const mat3 *m)
     return 1;
 }
 
-int rt_begin_frame(struct render_ctx *ctx, uint16_t frame)
+int rt_begin_frame(void *work, uint16_t frame)
 {
-    struct rt_state *rt = rt_state_of(ctx);
+    struct rt_state *rt = rt_state_of(work);
     const struct scene *s = rt->s;
     /* animation: the camera moves and turns about y by per-frame increments */
     /* position + move x frame and the angle rot x frame modulo 360, both
      * from exact integer products (a frame index past the format's range
      * neither saturates nor drifts) */
     vec3 mv = s->camera_anim.move_per_frame;
-    rt->cam_pos = v3_add(s->camera.position, v3(num_mul_int(mv.x, frame), num_mul_int(mv.y, frame),
+    rt->cam_pos = v3_add(s->camera.position, v3_make(num_mul_int(mv.x, frame), num_mul_int(mv.y, frame),
                                                  num_mul_int(mv.z, frame)));
     rt->cam_rot = s->camera.rotation;
     if (frame && s->camera_anim.rot_y_per_frame != 0) {
@@ -267,7 +267,7 @@ static rgb trace_ray(struct rt_state *rt, struct rt_ray *ray, num t_min, num t_m
     const struct scene *s = rt->s;
     struct rt_hit hit;
     rt->n.rays++;
-    if (!closest_intersection(rt, ray, t_min, t_max, &hit, 0)) {
+    if (!rt_closest_intersection(rt, ray, t_min, t_max, &hit, 0)) {
         if (prim) prim->item = -1;
         return background(rt);
     }
@@ -277,7 +277,7 @@ static rgb trace_ray(struct rt_state *rt, struct rt_ray *ray, num t_min, num t_m
     /* P = O + D t; D t in 32-bit arithmetic when every hit is proven to lie
      * on a bounded object (SCENE_FITS_HIT) */
     vec3 p = s->fits & SCENE_FITS_HIT
-                 ? v3_add(ray->o, v3(num_mul_fit(ray->d.x, hit.t), num_mul_fit(ray->d.y, hit.t), num_mul_fit(ray->d.z, hit.t)))
+                 ? v3_add(ray->o, v3_make(num_mul_fit(ray->d.x, hit.t), num_mul_fit(ray->d.y, hit.t), num_mul_fit(ray->d.z, hit.t)))
                  : v3_add(ray->o, v3_scale(ray->d, hit.t));
     vec3 n = rt_hit_normal(rt, &hit, p);
     vec3 v = v3_neg(ray->d);
@@ -285,8 +285,8 @@ static rgb trace_ray(struct rt_state *rt, struct rt_ray *ray, num t_min, num t_m
     if (s->rt.unlit) {
         local = m->color;
     } else {
-        num i = compute_lighting(rt, p, n, v, m->specular, rt->oc[mo].spec_zero, hit.surf,
-                                 prim ? &prim->shadow : NULL);
+        num i = rt_compute_lighting(rt, p, n, v, m->specular, rt->oc[mo].spec_zero, hit.surf,
+                                    prim ? &prim->shadow : NULL);
         local = colour_scale(s, m->color, i);
     }
     num r = m->reflective;
@@ -332,18 +332,18 @@ static vec3 canvas_to_viewport(const struct rt_state *rt, num x, num y)
 {
     /* (x*Vw)/W rather than x*(Vw/W): Vw/W = 1/600 in Q15.16 is 0.02% off,
      * a whole pixel at the edge of a 600-pixel canvas */
-    return rotate_direction(rt, v3(num_div(num_mul(x, rt->vw), rt->wn), num_div(num_mul(y, rt->vh), rt->hn), rt->d));
+    return rotate_direction(rt, v3_make(num_div(num_mul(x, rt->vw), rt->wn), num_div(num_mul(y, rt->vh), rt->hn), rt->d));
 }
 
 /* The same for a pixel's centre: x from the column table, y once a row. */
 static vec3 pixel_to_viewport(struct rt_state *rt, int col, int row)
 {
-    if (rt->row_y_tab) return rotate_direction(rt, v3(rt->col_x[col], rt->row_y_tab[row], rt->d));
+    if (rt->row_y_tab) return rotate_direction(rt, v3_make(rt->col_x[col], rt->row_y_tab[row], rt->d));
     if (rt->row_y_row != row) {
         rt->row_y = num_div(num_mul(num_from_int(rt->h / 2 - 1 - row), rt->vh), rt->hn);
         rt->row_y_row = row;
     }
-    return rotate_direction(rt, v3(rt->col_x[col], rt->row_y, rt->d));
+    return rotate_direction(rt, v3_make(rt->col_x[col], rt->row_y, rt->d));
 }
 
 static rgb trace_primary(struct rt_state *rt, vec3 d, struct rt_prim *prim)
@@ -689,9 +689,14 @@ static void full_strip(struct rt_state *rt, struct render_target *t)
     }
 }
 
-int rt_render_strip(struct render_ctx *ctx, struct render_target *t, struct render_stats *st)
+void rt_set_pass(void *work, uint8_t pass)
 {
-    struct rt_state *rt = rt_state_of(ctx);
+    rt_state_of(work)->pass = pass;
+}
+
+int rt_render_strip(void *work, struct render_target *t, struct render_stats *st)
+{
+    struct rt_state *rt = rt_state_of(work);
     uint32_t rays0 = rt->n.rays, covered0 = rt->n.covered;
     if (rt->pass == RENDER_PASS_COARSE) coarse_strip(rt, t);
     else if (rt->adapt) adaptive_strip(rt, t);

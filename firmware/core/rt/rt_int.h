@@ -1,27 +1,14 @@
 /* SPDX-License-Identifier: MIT */
-/* rt_int.h — the ray tracer's internals, shared by raytracer.c,
- * rt_intersect.c, rt_lighting.c and render.c (and the tests that look
- * inside). Not for embedders: render.h is the interface, raytracer.h the
- * contract. */
+/* rt_int.h — the ray tracer's internals, shared by its files (and the
+ * tests that look inside). Not for embedders: render.h is the interface,
+ * raytracer.h the contract. */
 #ifndef RT_INT_H
 #define RT_INT_H
 
 #include <stddef.h>
 #include <stdint.h>
 #include "raytracer.h"
-#include "num_rt.h"
-
-/* ---- the entry points behind render.h (render.c dispatches) ----------- */
-
-/* Work memory the ray tracer needs (scene-dependent tables + one row of
- * per-pixel notes for subsampling/adaptive supersampling). */
-size_t rt_work_size(const struct scene *s, uint16_t width, uint16_t height);
-/* Builds the state in ctx->work (tables, bounding-sphere hierarchy). */
-int rt_init(struct render_ctx *ctx);
-/* Per-frame constants: camera (with animation), per-object constants. */
-int rt_begin_frame(struct render_ctx *ctx, uint16_t frame);
-/* Rows [t->y0, t->y1) of the current frame. */
-int rt_render_strip(struct render_ctx *ctx, struct render_target *t, struct render_stats *st);
+#include "rt_num.h"
 
 /* ---- state, rays, hits ------------------------------------------------ */
 
@@ -40,7 +27,7 @@ struct rt_ray {
     uint8_t exact;        /* a, ds, as, tscale computed */
 };
 
-/* What closest_intersection found. */
+/* What rt_closest_intersection found. */
 struct rt_hit {
     num t;
     int16_t item;         /* drawn item: object index, or nobjects + CSG index */
@@ -123,7 +110,7 @@ struct rt_state {
     num *row_y_tab;            /* adaptive subsampling: viewport y of every row (else NULL) */
     num row_y;                 /* viewport y of row row_y_row */
     int32_t row_y_row;
-    int16_t skip_item;         /* item closest_intersection skips (already tested), -1 none */
+    int16_t skip_item;         /* item rt_closest_intersection skips (already tested), -1 none */
     int32_t last_row;          /* row of the notes in row_c/row_item (-2: none) */
     uint8_t px_covered;        /* the last pixel() shows an object */
     uint8_t *shadow_probe;     /* optional, w*h: shadow bits of primary hits */
@@ -138,24 +125,25 @@ struct rt_state {
     struct rt_counters n;
 };
 
-/* The state inside a context (ctx->work). */
-static inline struct rt_state *rt_state_of(struct render_ctx *ctx) { return (struct rt_state *)ctx->work; }
+/* The state inside the work memory (render_ctx.work). */
+static inline struct rt_state *rt_state_of(void *work) { return (struct rt_state *)work; }
 
 /* Records, for each primary hit, bit k set when light k is shadowed, 0x80 for
  * no hit; probe is w*h bytes, row-major (tests compare shadow decisions). */
-void rt_set_shadow_probe(struct render_ctx *ctx, uint8_t *probe);
+void rt_set_shadow_probe(void *work, uint8_t *probe);
 
 /* rt_intersect.c */
 struct rt_ray rt_make_ray(vec3 o, vec3 d, int16_t origin, uint8_t from_camera);
 void rt_ray_init(struct rt_ray *r, vec3 o, vec3 d, int16_t origin, uint8_t from_camera);
 /* Computes the exact tests' forms of the direction (once per ray). */
 void rt_ray_exact(struct rt_ray *r);
-int intersect_ray_sphere(const struct rt_state *rt, int16_t obj, struct rt_ray *ray,
-                         num *t1, num *t2);
-/* Closest hit with t_min < t < t_max (strict, earlier item wins ties); 0 if none.
+/* The book's IntersectRaySphere: its two roots (the book's order); 0 for a miss. */
+int rt_intersect_ray_sphere(const struct rt_state *rt, int16_t obj, struct rt_ray *ray,
+                            num *t1, num *t2);
+/* The book's ClosestIntersection: closest hit with t_min < t < t_max (strict, earlier item wins ties); 0 if none.
  * any_hit: stop at the first hit found (shadow rays). */
-int closest_intersection(struct rt_state *rt, struct rt_ray *ray, num t_min, num t_max,
-                         struct rt_hit *hit, int any_hit);
+int rt_closest_intersection(struct rt_state *rt, struct rt_ray *ray, num t_min, num t_max,
+                            struct rt_hit *hit, int any_hit);
 /* Whether `item` is hit with t_min < t < t_max. */
 int rt_item_hit(struct rt_state *rt, int16_t item, struct rt_ray *ray, num t_min, num t_max,
                 struct rt_hit *hit);
@@ -171,10 +159,10 @@ void rt_light_constants(struct rt_state *rt);
  * internal reflection. */
 int rt_refract(vec3 d, vec3 n, num ior, vec3 *out);
 
-/* rt_lighting.c: intensity at P (normal N, view V = -D) for specular exponent s
+/* rt_lighting.c, the book's ComputeLighting: intensity at P (normal N, view V = -D) for specular exponent s
  * (s_zero: rt_powi_zero_below of it, or -1).
  * *shadow_bits gets bit k set when light k is shadowed (may be NULL). */
-num compute_lighting(struct rt_state *rt, vec3 p, vec3 n, vec3 v, num s, num s_zero, int16_t origin,
-                     uint8_t *shadow_bits);
+num rt_compute_lighting(struct rt_state *rt, vec3 p, vec3 n, vec3 v, num s, num s_zero, int16_t origin,
+                        uint8_t *shadow_bits);
 
 #endif

@@ -1,20 +1,12 @@
 /* SPDX-License-Identifier: MIT */
-/* raster_int.h — what the rasterizer's files share, and render.c's entry
- * points into it (not a public API: render.h is the interface, raster.h the
- * contract). */
+/* raster_int.h — what the rasterizer's files share (not a public API:
+ * render.h is the interface, raster.h the contract). */
 #ifndef RASTER_INT_H
 #define RASTER_INT_H
 
 #include <stddef.h>
 #include "raster.h"
-#include "num_ras.h"
-
-/* ---- the entry points behind render.h (render.c dispatches) ----------- */
-
-size_t raster_work_size(const struct scene *s, uint16_t width, uint16_t height, uint16_t strip_rows);
-int raster_init(struct render_ctx *ctx);
-int raster_begin_frame(struct render_ctx *ctx, uint16_t frame);
-int raster_strip(struct render_ctx *ctx, struct render_target *t, struct render_stats *st);
+#include "raster_num.h"
 
 /* Code of the fast path's inner loops: placed in SRAM where the board's
  * build asks for it (RAS_RAM_TEXT: the RP2040 runs from flash through a
@@ -151,22 +143,26 @@ int ras_canvas_col(const struct ras_ctx *rc, int32_t x);
 int ras_canvas_row(const struct ras_ctx *rc, int32_t y);
 
 /* ---- chapter 6: lines ---- */
-void draw_line_broken(struct ras_ctx *rc, num x0, num y0, num x1, num y1, rgb c);
-void draw_line(struct ras_ctx *rc, num x0, num y0, num x1, num y1, rgb c);
-void draw_wireframe_triangle(struct ras_ctx *rc, const num x[3], const num y[3], rgb c);
+/* The book's DrawLine of raster-01 (one slope for every line) and DrawLine;
+ * DrawWireframeTriangle. */
+void ras_draw_line_broken(struct ras_ctx *rc, num x0, num y0, num x1, num y1, rgb c);
+void ras_draw_line(struct ras_ctx *rc, num x0, num y0, num x1, num y1, rgb c);
+void ras_draw_wireframe_triangle(struct ras_ctx *rc, const num x[3], const num y[3], rgb c);
 
 /* ---- chapters 7, 8: the book's scan conversion (raster_triangles.c) ---- */
 /* Called per pixel with integer canvas coordinates and the span's attributes. */
 typedef void (*ras_book_pixel_fn)(struct ras_ctx *rc, int32_t x, int32_t y, const num *q, void *ud);
 /* Sort order of the book (docs/book-demos.md, "Filled and shaded
  * triangles", step 1): idx[] receives corner indices. */
-void book_sort_corners(const num y[3], int idx[3]);
+void ras_book_sort_corners(const num y[3], int idx[3]);
 /* Steps 2–5 of the same on corners already sorted by y; nq attributes q[k][corner];
  * truncated spans (raster-04 and every 3D demo). */
-void book_scan_triangle(struct ras_ctx *rc, const num x[3], const num y[3], int nq,
-                        const num (*q)[3], ras_book_pixel_fn fn, void *ud);
-void draw_filled_triangle(struct ras_ctx *rc, const num x[3], const num y[3], rgb c);
-void draw_shaded_triangle(struct ras_ctx *rc, const num x[3], const num y[3], const num h[3], rgb c);
+/* (The book's DrawFilledTriangle / DrawShadedTriangle scan.) */
+void ras_book_scan_triangle(struct ras_ctx *rc, const num x[3], const num y[3], int nq,
+                            const num (*q)[3], ras_book_pixel_fn fn, void *ud);
+/* The book's DrawFilledTriangle and DrawShadedTriangle. */
+void ras_draw_filled_triangle(struct ras_ctx *rc, const num x[3], const num y[3], rgb c);
+void ras_draw_shaded_triangle(struct ras_ctx *rc, const num x[3], const num y[3], const num h[3], rgb c);
 
 /* ---- the default path's triangle (raster_triangles.c) ---- */
 struct ras_sv {
@@ -253,7 +249,8 @@ wnum ras_facing_wide(vec3 p, struct ras_wnormal n);
 num ras_mul_div(num x, num z, num unproj);
 
 /* ---- chapters 9, 10: projection and transforms (raster_project.c) ---- */
-void project_vertex(const struct ras_ctx *rc, vec3 v, num *x, num *y);
+/* The book's ProjectVertex (with ViewportToCanvas). */
+void ras_project_vertex(const struct ras_ctx *rc, vec3 v, num *x, num *y);
 mat4 ras_instance_matrix(const struct ras_instance *in, uint16_t frame);
 mat4 ras_camera_matrix(const struct scene *s, uint16_t frame, mat4 *rot_t, vec3 *pos);
 mat3 ras_instance_rotation(const struct ras_instance *in, uint16_t frame);
@@ -266,17 +263,18 @@ int ras_instance_visible(const struct ras_ctx *rc, const struct ras_inst *ri,
 int ras_triangle_inside(vec3 a, vec3 b, vec3 c);
 /* A clipped polygon corner: camera-space position plus attributes. */
 struct ras_cv { vec3 p; num a[RAS_MAX_ATTR]; };
-/* clip_triangle: Sutherland–Hodgman against the default path's planes;
+/* The book's ClipTriangle: Sutherland–Hodgman against the default path's planes;
  * returns the corner count of out (0, or 3..RAS_CLIP_MAX). */
-int clip_triangle(const struct ras_ctx *rc, const struct ras_cv in[3], int na, struct ras_cv *out);
-/* 1 when p is inside every plane of clip_triangle (a triangle of three such
+int ras_clip_triangle(const struct ras_ctx *rc, const struct ras_cv in[3], int na, struct ras_cv *out);
+/* 1 when p is inside every plane of ras_clip_triangle (a triangle of three such
  * corners comes out of it unchanged). */
 int ras_point_inside(const struct ras_ctx *rc, vec3 p);
 
 /* ---- chapter 13: lighting (raster_shading.c) ---- */
-num compute_illumination(const struct ras_ctx *rc, vec3 p, vec3 n, num specular);
+/* The book's ComputeIllumination (chapter 13). */
+num ras_compute_illumination(const struct ras_ctx *rc, vec3 p, vec3 n, num specular);
 /* The same with light `shadow_k` (or none if < 0) scaled by vis in [0, 1]. */
-num compute_illumination_vis(const struct ras_ctx *rc, vec3 p, vec3 n, num specular, int shadow_k, num vis);
+num ras_compute_illumination_vis(const struct ras_ctx *rc, vec3 p, vec3 n, num specular, int shadow_k, num vis);
 
 /* ---- chapter 15 (raster_ch15.c): default path, Phong shading ---- */
 /* Work memory beyond the chapters 6-14 layout. */

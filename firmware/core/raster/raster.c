@@ -167,27 +167,27 @@ size_t raster_work_size(const struct scene *s, uint16_t width, uint16_t height, 
     return L.total;
 }
 
-static struct ras_ctx *ctx_of(struct render_ctx *ctx)
+static struct ras_ctx *ctx_of(void *work)
 {
-    uintptr_t p = (uintptr_t)ctx->work;
+    uintptr_t p = (uintptr_t)work;
     p = (p + (ALIGN - 1)) & ~(uintptr_t)(ALIGN - 1);
     return (struct ras_ctx *)p;
 }
 
-int raster_init(struct render_ctx *ctx)
+int raster_init(void *work, size_t work_size, const struct scene *s, uint16_t width, uint16_t height,
+                uint16_t strip_rows)
 {
-    const struct scene *s = ctx->scene;
     struct layout L;
-    if (make_layout(s, ctx->width, ctx->strip_rows, &L) || ctx->work_size < L.total) return -1;
+    if (make_layout(s, width, strip_rows, &L) || work_size < L.total) return -1;
     if (s->canvas_h == 0 || s->viewport_h <= 0 || s->projection_d <= 0) return -1;
-    struct ras_ctx *rc = ctx_of(ctx);
+    struct ras_ctx *rc = ctx_of(work);
     uint8_t *base = (uint8_t *)rc;
     memset(rc, 0, sizeof *rc);
     rc->affine_from = -1;
     rc->s = s;
-    rc->w = ctx->width;
-    rc->h = ctx->height;
-    rc->strip_rows = ctx->strip_rows;
+    rc->w = width;
+    rc->h = height;
+    rc->strip_rows = strip_rows;
     rc->book = s->ras.book_exact;
     rc->sub_bits = s->ras.subpixel_bits ? (s->ras.subpixel_bits > 8 ? 8 : s->ras.subpixel_bits) : RAS_SUBPIXEL_BITS;
     rc->depth_bytes = (uint8_t)depth_bytes(s);
@@ -329,7 +329,7 @@ static struct ras_range default_tri_rows(const struct ras_ctx *rc, vec3 a, vec3 
 {
     struct ras_cv in[3], out[RAS_CLIP_MAX];
     in[0].p = a; in[1].p = b; in[2].p = c;
-    int n = clip_triangle(rc, in, 0, out);
+    int n = ras_clip_triangle(rc, in, 0, out);
     if (n < 3) return no_rows();
     int32_t lo = INT32_MAX, hi = INT32_MIN;
     for (int k = 0; k < n; k++) {
@@ -376,16 +376,16 @@ static void prepare_instance(struct ras_ctx *rc, uint16_t i, uint16_t frame, uin
         if (o->instance_transform) {
             vec4 p4 = { p.x, p.y, p.z, NUM_ONE };
             p4 = m4_mul_v4(&ri->m, p4);
-            v->c = v3(p4.x, p4.y, p4.z);
+            v->c = v3_make(p4.x, p4.y, p4.z);
         } else {
             v->c = v3_add(p, in->position);
             if (o->camera_transform) {
                 vec4 p4 = { v->c.x, v->c.y, v->c.z, NUM_ONE };
                 p4 = m4_mul_v4(&rc->cam, p4);
-                v->c = v3(p4.x, p4.y, p4.z);
+                v->c = v3_make(p4.x, p4.y, p4.z);
             }
         }
-        project_vertex(rc, v->c, &v->px, &v->py);
+        ras_project_vertex(rc, v->c, &v->px, &v->py);
         if (o->project_truncate) {
             v->px = num_from_int(num_to_int(v->px));
             v->py = num_from_int(num_to_int(v->py));
@@ -428,15 +428,15 @@ static void prepare_instance(struct ras_ctx *rc, uint16_t i, uint16_t frame, uin
     }
 }
 
-int raster_begin_frame(struct render_ctx *ctx, uint16_t frame)
+int raster_begin_frame(void *work, uint16_t frame)
 {
-    struct ras_ctx *rc = ctx_of(ctx);
+    struct ras_ctx *rc = ctx_of(work);
     const struct scene *s = rc->s;
     const struct ras_options *o = &s->ras;
     mat4 id = m4_identity();
     rc->cam = id;
     rc->cam_rot_t = id;
-    rc->cam_pos = v3(NUM_ZERO, NUM_ZERO, NUM_ZERO);
+    rc->cam_pos = v3_make(NUM_ZERO, NUM_ZERO, NUM_ZERO);
     if (o->camera_transform) rc->cam = ras_camera_matrix(s, frame, &rc->cam_rot_t, &rc->cam_pos);
     else rc->cam_pos = s->camera.position;
 
@@ -447,7 +447,7 @@ int raster_begin_frame(struct render_ctx *ctx, uint16_t frame)
         rl->type = l->type;
         rl->intensity = l->intensity;
         v = m4_mul_v4(l->type == LIGHT_POINT ? &rc->cam : &rc->cam_rot_t, v);
-        rl->v = v3(v.x, v.y, v.z);
+        rl->v = v3_make(v.x, v.y, v.z);
     }
 
     /* 2D primitives and 3D lines: rows they may touch */
@@ -459,8 +459,8 @@ int raster_begin_frame(struct render_ctx *ctx, uint16_t frame)
     }
     for (uint16_t i = 0; i < s->nlines; i++) {
         num ax, ay, bx, by;
-        project_vertex(rc, s->lines[i].a, &ax, &ay);
-        project_vertex(rc, s->lines[i].b, &bx, &by);
+        ras_project_vertex(rc, s->lines[i].a, &ax, &ay);
+        ras_project_vertex(rc, s->lines[i].b, &bx, &by);
         rc->line_rows[i] = rows_of_canvas_y(rc, num_min(ay, by), num_max(ay, by));
     }
 
@@ -510,8 +510,8 @@ static void book_pixel(struct ras_ctx *rc, int32_t x, int32_t y, const num *q, v
     case SHADE_GOURAUD: i = q[k++]; break;
     case SHADE_PHONG: {
         num oz = num_recip(iz);
-        vec3 p = v3(ras_mul_div(num_from_int(x), oz, rc->unproj), ras_mul_div(num_from_int(y), oz, rc->unproj), oz);
-        i = compute_illumination(rc, p, v3(q[k], q[k + 1], q[k + 2]), bt->spec);
+        vec3 p = v3_make(ras_mul_div(num_from_int(x), oz, rc->unproj), ras_mul_div(num_from_int(y), oz, rc->unproj), oz);
+        i = ras_compute_illumination(rc, p, v3_make(q[k], q[k + 1], q[k + 2]), bt->spec);
         k += 3;
         break;
     }
@@ -533,7 +533,7 @@ static vec3 corner_normal(const struct ras_inst *ri, vec3 n)
 {
     vec4 v = { n.x, n.y, n.z, NUM_ONE };
     v = m4_mul_v4(&ri->nmat, v);
-    return v3(v.x, v.y, v.z);
+    return v3_make(v.x, v.y, v.z);
 }
 
 static void book_render_triangle(struct ras_ctx *rc, const struct ras_instance *in, const struct ras_inst *ri,
@@ -543,15 +543,15 @@ static void book_render_triangle(struct ras_ctx *rc, const struct ras_instance *
     const struct ras_vert *cv[3] = { &rc->verts[ri->vbase + t->v[0]], &rc->verts[ri->vbase + t->v[1]],
                                      &rc->verts[ri->vbase + t->v[2]] };
     num px[3] = { cv[0]->px, cv[1]->px, cv[2]->px }, py[3] = { cv[0]->py, cv[1]->py, cv[2]->py };
-    if (o->wireframe) { draw_wireframe_triangle(rc, px, py, t->color); return; }
+    if (o->wireframe) { ras_draw_wireframe_triangle(rc, px, py, t->color); return; }
     /* the face normal stays wide for the culling test; it is narrowed to
      * num only where it serves as the shading normal */
     struct ras_wnormal wf = ras_face_normal_wide(cv[0]->c, cv[1]->c, cv[2]->c);
     if (o->backface_cull && ras_facing_wide(cv[0]->c, wf) <= 0) return;
     int face_n = o->computed_normals || !m->has_normals;
-    vec3 nf = face_n ? ras_wnormal_narrow(wf) : v3(NUM_ZERO, NUM_ZERO, NUM_ZERO);
+    vec3 nf = face_n ? ras_wnormal_narrow(wf) : v3_make(NUM_ZERO, NUM_ZERO, NUM_ZERO);
     int idx[3];
-    book_sort_corners(py, idx);
+    ras_book_sort_corners(py, idx);
     num sx[3], sy[3], q[1 + RAS_MAX_ATTR][3];
     vec3 V[3], N[3];
     struct book_tri bt;
@@ -571,12 +571,12 @@ static void book_render_triangle(struct ras_ctx *rc, const struct ras_instance *
     }
     int nq = 1;
     if (o->shading == SHADE_FLAT) {
-        vec3 centre = v3(num_div_int(num_add(num_add(V[0].x, V[1].x), V[2].x), 3),
-                         num_div_int(num_add(num_add(V[0].y, V[1].y), V[2].y), 3),
+        vec3 centre = v3_make(num_div_int(num_add(num_add(V[0].x, V[1].x), V[2].x), 3),
+                              num_div_int(num_add(num_add(V[0].y, V[1].y), V[2].y), 3),
                          num_div_int(num_add(num_add(V[0].z, V[1].z), V[2].z), 3));
-        bt.flat_i = compute_illumination(rc, centre, N[0], bt.spec);
+        bt.flat_i = ras_compute_illumination(rc, centre, N[0], bt.spec);
     } else if (o->shading == SHADE_GOURAUD) {
-        for (int k = 0; k < 3; k++) q[nq][k] = compute_illumination(rc, V[k], N[k], bt.spec);
+        for (int k = 0; k < 3; k++) q[nq][k] = ras_compute_illumination(rc, V[k], N[k], bt.spec);
         nq++;
     } else if (o->shading == SHADE_PHONG) {
         for (int k = 0; k < 3; k++) { q[nq][k] = N[k].x; q[nq + 1][k] = N[k].y; q[nq + 2][k] = N[k].z; }
@@ -592,13 +592,13 @@ static void book_render_triangle(struct ras_ctx *rc, const struct ras_instance *
         }
         nq += 2;
     }
-    book_scan_triangle(rc, sx, sy, nq, (const num (*)[3])q, book_pixel, &bt);
+    ras_book_scan_triangle(rc, sx, sy, nq, (const num (*)[3])q, book_pixel, &bt);
     if (o->outlines) {
         /* raster-10's outlines: P0P1, P0P2, P2P1 of the sorted corners */
         rgb oc = rgb_scale(t->color, NUM_C(0.75));
-        draw_line(rc, sx[0], sy[0], sx[1], sy[1], oc);
-        draw_line(rc, sx[0], sy[0], sx[2], sy[2], oc);
-        draw_line(rc, sx[2], sy[2], sx[1], sy[1], oc);
+        ras_draw_line(rc, sx[0], sy[0], sx[1], sy[1], oc);
+        ras_draw_line(rc, sx[0], sy[0], sx[2], sy[2], oc);
+        ras_draw_line(rc, sx[2], sy[2], sx[1], sy[1], oc);
     }
 }
 
@@ -629,7 +629,7 @@ static rgb ch15_pixel(struct ras_ctx *rc, const struct def_tri *dt, int col, int
     num vis = NUM_ONE;
     if (rc->sm_on) vis = ras_shadow_map_vis(rc, p, n);
     if (rc->sv_on && rc->stencil[(size_t)(row - rc->t->y0) * rc->w + (size_t)col]) vis = NUM_ZERO;
-    num i = compute_illumination_vis(rc, p, n, dt->spec, rc->sh_light, vis);
+    num i = ras_compute_illumination_vis(rc, p, n, dt->spec, rc->sh_light, vis);
     c = rgb_scale(c, i);
     if (rc->env_on) {
         /* mirror direction of the view ray about n */
@@ -662,13 +662,13 @@ static void default_pixel(struct ras_ctx *rc, int col, int row, const num *a, nu
         /* the pixel centre, unprojected at its depth */
         num cx = num_add(num_from_int(col - rc->w / 2), NUM_HALF);
         num cy = num_sub(num_from_int(rc->h / 2 - row), NUM_HALF);
-        vec3 p = v3(ras_mul_div(cx, z, rc->unproj), ras_mul_div(cy, z, rc->unproj), z);
-        vec3 n = v3(a[dt->ai_n], a[dt->ai_n + 1], a[dt->ai_n + 2]);
+        vec3 p = v3_make(ras_mul_div(cx, z, rc->unproj), ras_mul_div(cy, z, rc->unproj), z);
+        vec3 n = v3_make(a[dt->ai_n], a[dt->ai_n + 1], a[dt->ai_n + 2]);
         if (dt->nmap >= 0 || rc->sm_on || rc->sv_on || rc->env_on) {
             ras_put(rc, col, row, ch15_pixel(rc, dt, col, row, p, n, a, c));
             return;
         }
-        i = compute_illumination(rc, p, n, dt->spec);
+        i = ras_compute_illumination(rc, p, n, dt->spec);
     }
     if (dt->shading != SHADE_NONE) c = rgb_scale(c, i);
     ras_put(rc, col, row, c);
@@ -749,15 +749,15 @@ static int tri_facts(const struct ras_ctx *rc, const struct ras_inst *ri, const 
     *front = facing > 0;
     if (o->backface_cull && !*front) return 0;
     int face_n = o->computed_normals || !m->has_normals;
-    vec3 nf = face_n ? ras_wnormal_narrow(wf) : v3(NUM_ZERO, NUM_ZERO, NUM_ZERO);
+    vec3 nf = face_n ? ras_wnormal_narrow(wf) : v3_make(NUM_ZERO, NUM_ZERO, NUM_ZERO);
     for (int k = 0; k < 3; k++) N[k] = face_n ? nf : corner_normal(ri, t->n[k]);
     return 1;
 }
 
 static vec3 tri_centre(const vec3 V[3])
 {
-    return v3(num_div_int(num_add(num_add(V[0].x, V[1].x), V[2].x), 3),
-              num_div_int(num_add(num_add(V[0].y, V[1].y), V[2].y), 3),
+    return v3_make(num_div_int(num_add(num_add(V[0].x, V[1].x), V[2].x), 3),
+                   num_div_int(num_add(num_add(V[0].y, V[1].y), V[2].y), 3),
               num_div_int(num_add(num_add(V[0].z, V[1].z), V[2].z), 3));
 }
 
@@ -774,9 +774,9 @@ static void tri_cache(struct ras_ctx *rc, const struct ras_instance *in, const s
     if (!rc->tri_shade) return;
     num *sh = rc->tri_shade + 3 * (size_t)gi;
     if (eff_shading(rc->s) == SHADE_GOURAUD)
-        for (int k = 0; k < 3; k++) sh[k] = compute_illumination(rc, V[k], N[k], in->specular);
+        for (int k = 0; k < 3; k++) sh[k] = ras_compute_illumination(rc, V[k], N[k], in->specular);
     else
-        sh[0] = compute_illumination(rc, tri_centre(V), N[0], in->specular);
+        sh[0] = ras_compute_illumination(rc, tri_centre(V), N[0], in->specular);
 }
 
 static void default_render_triangle(struct ras_ctx *rc, const struct ras_instance *in, const struct ras_inst *ri,
@@ -845,7 +845,7 @@ static void default_render_triangle(struct ras_ctx *rc, const struct ras_instanc
     for (int k = 0; k < 3; k++) {
         cin[k].p = V[k];
         if (sh == SHADE_GOURAUD)
-            cin[k].a[dt.ai_i] = shade ? shade[k] : compute_illumination(rc, V[k], N[k], dt.spec);
+            cin[k].a[dt.ai_i] = shade ? shade[k] : ras_compute_illumination(rc, V[k], N[k], dt.spec);
         if (sh == SHADE_PHONG) {
             vec3 n = v3_normalize(N[k]);
             cin[k].a[dt.ai_n] = n.x; cin[k].a[dt.ai_n + 1] = n.y; cin[k].a[dt.ai_n + 2] = n.z;
@@ -853,7 +853,7 @@ static void default_render_triangle(struct ras_ctx *rc, const struct ras_instanc
         }
         if (uv) { cin[k].a[dt.ai_uv] = t->uv[k].u; cin[k].a[dt.ai_uv + 1] = t->uv[k].v; }
     }
-    if (sh == SHADE_FLAT) dt.flat_i = shade ? shade[0] : compute_illumination(rc, tri_centre(V), N[0], dt.spec);
+    if (sh == SHADE_FLAT) dt.flat_i = shade ? shade[0] : ras_compute_illumination(rc, tri_centre(V), N[0], dt.spec);
     struct ras_sv sv[RAS_CLIP_MAX];
     int n;
     const struct ras_pv *pv = rc->pv ? rc->pv + ri->vbase : NULL;
@@ -871,7 +871,7 @@ static void default_render_triangle(struct ras_ctx *rc, const struct ras_instanc
             for (int j = 0; j < na; j++) sv[k].a[j] = cin[c].a[j];
         }
     } else {
-        n = clip_triangle(rc, cin, na, poly);
+        n = ras_clip_triangle(rc, cin, na, poly);
         if (n < 3) return;
         for (int k = 0; k < n; k++) {
             /* back faces (culling off) are drawn with their corners reversed */
@@ -987,9 +987,9 @@ static void render_scene(struct ras_ctx *rc, const struct render_target *t)
     }
 }
 
-int raster_strip(struct render_ctx *ctx, struct render_target *t, struct render_stats *st)
+int raster_strip(void *work, struct render_target *t, struct render_stats *st)
 {
-    struct ras_ctx *rc = ctx_of(ctx);
+    struct ras_ctx *rc = ctx_of(work);
     const struct scene *s = rc->s;
     if (t->y1 - t->y0 > rc->strip_rows) return -1;
     rc->t = t;
@@ -1014,20 +1014,20 @@ int raster_strip(struct render_ctx *ctx, struct render_target *t, struct render_
             y[k] = scale_canvas(rc, p->y[k]);
         }
         switch (p->kind) {
-        case P2D_LINE_BROKEN: draw_line_broken(rc, x[0], y[0], x[1], y[1], p->color); break;
-        case P2D_LINE: draw_line(rc, x[0], y[0], x[1], y[1], p->color); break;
-        case P2D_WIRE_TRI: draw_wireframe_triangle(rc, x, y, p->color); break;
-        case P2D_FILLED_TRI: draw_filled_triangle(rc, x, y, p->color); break;
-        case P2D_SHADED_TRI: draw_shaded_triangle(rc, x, y, p->h, p->color); break;
+        case P2D_LINE_BROKEN: ras_draw_line_broken(rc, x[0], y[0], x[1], y[1], p->color); break;
+        case P2D_LINE: ras_draw_line(rc, x[0], y[0], x[1], y[1], p->color); break;
+        case P2D_WIRE_TRI: ras_draw_wireframe_triangle(rc, x, y, p->color); break;
+        case P2D_FILLED_TRI: ras_draw_filled_triangle(rc, x, y, p->color); break;
+        case P2D_SHADED_TRI: ras_draw_shaded_triangle(rc, x, y, p->h, p->color); break;
         default: break;
         }
     }
     for (uint16_t i = 0; i < s->nlines; i++) {
         if (!rows_hit(rc->line_rows[i], t)) continue;
         num ax, ay, bx, by;
-        project_vertex(rc, s->lines[i].a, &ax, &ay);
-        project_vertex(rc, s->lines[i].b, &bx, &by);
-        draw_line(rc, ax, ay, bx, by, s->lines[i].color);
+        ras_project_vertex(rc, s->lines[i].a, &ax, &ay);
+        ras_project_vertex(rc, s->lines[i].b, &bx, &by);
+        ras_draw_line(rc, ax, ay, bx, by, s->lines[i].color);
     }
     render_scene(rc, t);
     rc->depth_only = 0;

@@ -677,8 +677,8 @@ num v3_dot(vec3 a, vec3 b) { return sat64(v3_dot_wide(a, b)); }
 
 vec3 v3_cross(vec3 a, vec3 b)
 {
-    return v3(sat64(mul_round(a.y, b.z) - mul_round(a.z, b.y)),
-              sat64(mul_round(a.z, b.x) - mul_round(a.x, b.z)),
+    return v3_make(sat64(mul_round(a.y, b.z) - mul_round(a.z, b.y)),
+                   sat64(mul_round(a.z, b.x) - mul_round(a.x, b.z)),
               sat64(mul_round(a.x, b.y) - mul_round(a.y, b.x)));
 }
 
@@ -877,8 +877,8 @@ num v3_dot(vec3 a, vec3 b) { return wnum_to_num(v3_dot_wide(a, b)); }
 
 vec3 v3_cross(vec3 a, vec3 b)
 {
-    return v3(wnum_to_num(wnum_sub(num_mul_wide(a.y, b.z), num_mul_wide(a.z, b.y))),
-              wnum_to_num(wnum_sub(num_mul_wide(a.z, b.x), num_mul_wide(a.x, b.z))),
+    return v3_make(wnum_to_num(wnum_sub(num_mul_wide(a.y, b.z), num_mul_wide(a.z, b.y))),
+                   wnum_to_num(wnum_sub(num_mul_wide(a.z, b.x), num_mul_wide(a.x, b.z))),
               wnum_to_num(wnum_sub(num_mul_wide(a.x, b.y), num_mul_wide(a.y, b.x))));
 }
 
@@ -1017,7 +1017,7 @@ vec3 v3_normalize(vec3 a)
         num m = (num)((q + ((uint64_t)1 << (59 - NUM_FRAC))) >> (60 - NUM_FRAC));
         c[i] = *in[i] < 0 ? -m : m;
     }
-    return v3(c[0], c[1], c[2]);
+    return v3_make(c[0], c[1], c[2]);
 }
 
 #else /* floating point: the book's formulas, unchanged */
@@ -1027,8 +1027,8 @@ num v3_len(vec3 a) { return num_sqrt(v3_dot(a, a)); }
 vec3 v3_normalize(vec3 a)
 {
     num len = v3_len(a);
-    if (len == 0) return v3(NUM_ZERO, NUM_ZERO, NUM_ZERO);
-    return v3(num_div(a.x, len), num_div(a.y, len), num_div(a.z, len));
+    if (len == 0) return v3_make(NUM_ZERO, NUM_ZERO, NUM_ZERO);
+    return v3_make(num_div(a.x, len), num_div(a.y, len), num_div(a.z, len));
 }
 
 #endif

@@ -16,7 +16,7 @@ static const struct { num x, y, z, dist; } book_planes[5] = {
 
 static num plane_dist(int i, vec3 p)
 {
-    return num_add(v3_dot(v3(book_planes[i].x, book_planes[i].y, book_planes[i].z), p), book_planes[i].dist);
+    return num_add(v3_dot(v3_make(book_planes[i].x, book_planes[i].y, book_planes[i].z), p), book_planes[i].dist);
 }
 
 int ras_triangle_inside(vec3 a, vec3 b, vec3 c)
@@ -51,7 +51,7 @@ int ras_instance_visible(const struct ras_ctx *rc, const struct ras_inst *ri,
 {
     vec4 c4 = { m->bound_center.x, m->bound_center.y, m->bound_center.z, NUM_ONE };
     c4 = m4_mul_v4(&ri->m, c4);
-    vec3 c = v3(c4.x, c4.y, c4.z);
+    vec3 c = v3_make(c4.x, c4.y, c4.z);
     num r = num_mul(m->bound_radius, scale);
     if (rc->book) {
         for (int i = 0; i < 5; i++)
@@ -81,7 +81,7 @@ static struct ras_cv lerp_cv(const struct ras_cv *a, const struct ras_cv *b, num
     return r;
 }
 
-int clip_triangle(const struct ras_ctx *rc, const struct ras_cv in[3], int na, struct ras_cv *out)
+int ras_clip_triangle(const struct ras_ctx *rc, const struct ras_cv in[3], int na, struct ras_cv *out)
 {
     struct ras_cv buf[2][RAS_CLIP_MAX];
     int n = 3;

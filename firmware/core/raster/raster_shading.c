@@ -6,12 +6,12 @@
  * world-space camera position (the demos' quirk, wrong when the camera is
  * not at the origin). Default path: N normalised, V = -P. Lights are in
  * camera space (ras_ctx.lights, set per frame). */
-num compute_illumination(const struct ras_ctx *rc, vec3 p, vec3 n, num specular)
+num ras_compute_illumination(const struct ras_ctx *rc, vec3 p, vec3 n, num specular)
 {
-    return compute_illumination_vis(rc, p, n, specular, -1, NUM_ONE);
+    return ras_compute_illumination_vis(rc, p, n, specular, -1, NUM_ONE);
 }
 
-num compute_illumination_vis(const struct ras_ctx *rc, vec3 p, vec3 n, num specular, int shadow_k, num vis)
+num ras_compute_illumination_vis(const struct ras_ctx *rc, vec3 p, vec3 n, num specular, int shadow_k, num vis)
 {
     const struct scene *s = rc->s;
     num i = NUM_ZERO;

@@ -1,8 +1,8 @@
 /* SPDX-License-Identifier: MIT */
 /* num_ras.c — mode-specific rasterizer primitives (see num_ras.h). */
-#include "num_ras.h"
+#include "raster_num.h"
 #if NUM_MODE == NUM_MODE_FIXED
-#include "num_int.h"
+#include "num/num_int.h"
 /* 64/32 divisions through num_udiv64_32 (table + Newton, exact) where the
  * library's 64-bit divide is a bit loop: ARMv6-M has no divide instruction.
  * ARMv7-M's __aeabi_uldivmod uses UDIV and measured faster there (make

@@ -23,7 +23,7 @@
  * Gouraud as colour levels times intensity, textures stored as RGB565 with
  * power-of-two masks (raster_init converts them). */
 #include "raster_int.h"
-#include "num_int.h"
+#include "num/num_int.h"
 
 #define FT_FLAT RAS_FT_FLAT
 #define FT_GOURAUD RAS_FT_GOURAUD
@@ -210,7 +210,7 @@ static inline int32_t spec_pow(const struct ras_fast_tri *ft, int32_t c)
 }
 
 /* Intensity in Q12 at a pixel with normal n (any length, Q14 scale) and
- * camera-space position p (Q(pq)): the default path's compute_illumination
+ * camera-space position p (Q(pq)): the default path's ras_compute_illumination
  * (normal normalised, V = -P) in integers. */
 static uint32_t phong_light(const struct ras_fast_tri *ft, const int32_t *np)
 {

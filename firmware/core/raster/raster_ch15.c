@@ -97,17 +97,17 @@ void ras_ch15_init(struct ras_ctx *rc)
 static void scene_bounds(struct ras_ctx *rc)
 {
     const struct scene *s = rc->s;
-    vec3 c = v3(NUM_ZERO, NUM_ZERO, NUM_ZERO);
+    vec3 c = v3_make(NUM_ZERO, NUM_ZERO, NUM_ZERO);
     int n = 0;
     for (uint16_t i = 0; i < s->ninstances; i++) {
         const struct ras_model *m = &s->models[s->instances[i].model];
         if (!m->nverts) continue;
         vec4 b = { m->bound_center.x, m->bound_center.y, m->bound_center.z, NUM_ONE };
         b = m4_mul_v4(&rc->inst[i].m, b);
-        c = v3_add(c, v3(b.x, b.y, b.z));
+        c = v3_add(c, v3_make(b.x, b.y, b.z));
         n++;
     }
-    if (n) c = v3(num_div_int(c.x, n), num_div_int(c.y, n), num_div_int(c.z, n));
+    if (n) c = v3_make(num_div_int(c.x, n), num_div_int(c.y, n), num_div_int(c.z, n));
     /* radius from the vertices themselves: exact for any instance transform */
     num r = NUM_ZERO;
     for (uint32_t k = 0; k < rc->nverts; k++) r = num_max(r, v3_len(v3_sub(rc->verts[k].c, c)));
@@ -118,7 +118,7 @@ static void scene_bounds(struct ras_ctx *rc)
 /* An orthonormal frame with forward f (unit). */
 static void frame_of(vec3 f, vec3 *r, vec3 *u)
 {
-    vec3 up = num_abs(f.y) < NUM_C(0.9) ? v3(NUM_ZERO, NUM_ONE, NUM_ZERO) : v3(NUM_ONE, NUM_ZERO, NUM_ZERO);
+    vec3 up = num_abs(f.y) < NUM_C(0.9) ? v3_make(NUM_ZERO, NUM_ONE, NUM_ZERO) : v3_make(NUM_ONE, NUM_ZERO, NUM_ZERO);
     *r = v3_normalize(v3_cross(up, f));
     *u = v3_cross(f, *r);
 }
@@ -228,7 +228,7 @@ void ras_ch15_frame(struct ras_ctx *rc)
         rc->sm_ortho = 0;
         vec3 to_c = v3_sub(rc->bound_c, l->v);
         num dist = v3_len(to_c);
-        rc->sm_f = dist > 0 ? v3_normalize(to_c) : v3(NUM_ZERO, NUM_ZERO, NUM_ONE);
+        rc->sm_f = dist > 0 ? v3_normalize(to_c) : v3_make(NUM_ZERO, NUM_ZERO, NUM_ONE);
         rc->sm_o = l->v;
         frame_of(rc->sm_f, &rc->sm_r, &rc->sm_u);
         /* the frustum fitted to the vertices in front of the light: the
@@ -312,7 +312,7 @@ static void volume_triangle(struct ras_ctx *rc, vec3 a, vec3 b, vec3 c)
     int front = ras_facing_wide(a, nf) > 0;
     struct ras_cv in[3], poly[RAS_CLIP_MAX];
     in[0].p = a; in[1].p = b; in[2].p = c;
-    int n = clip_triangle(rc, in, 0, poly);
+    int n = ras_clip_triangle(rc, in, 0, poly);
     if (n < 3) return;
     struct ras_sv sv[RAS_CLIP_MAX];
     for (int k = 0; k < n; k++) {
@@ -387,8 +387,8 @@ rgb ras_env_colour(const struct ras_ctx *rc, vec3 r)
 {
     /* camera -> world: the transpose of the world -> camera rotation */
     const mat4 *m = &rc->cam_rot_t;
-    vec3 w = v3_normalize(v3(num_add(num_add(num_mul(m->m[0][0], r.x), num_mul(m->m[1][0], r.y)), num_mul(m->m[2][0], r.z)),
-                             num_add(num_add(num_mul(m->m[0][1], r.x), num_mul(m->m[1][1], r.y)), num_mul(m->m[2][1], r.z)),
+    vec3 w = v3_normalize(v3_make(num_add(num_add(num_mul(m->m[0][0], r.x), num_mul(m->m[1][0], r.y)), num_mul(m->m[2][0], r.z)),
+                                  num_add(num_add(num_mul(m->m[0][1], r.x), num_mul(m->m[1][1], r.y)), num_mul(m->m[2][1], r.z)),
                              num_add(num_add(num_mul(m->m[0][2], r.x), num_mul(m->m[1][2], r.y)), num_mul(m->m[2][2], r.z))));
     if (w.y >= 0) {
         /* sky: pale at the horizon, deep blue at the zenith */

@@ -33,7 +33,7 @@ void ras_put_canvas(struct ras_ctx *rc, num x, num y, rgb c)
 }
 
 /* raster-01's first attempt: one pixel per column, gaps on steep lines. */
-void draw_line_broken(struct ras_ctx *rc, num x0, num y0, num x1, num y1, rgb c)
+void ras_draw_line_broken(struct ras_ctx *rc, num x0, num y0, num x1, num y1, rgb c)
 {
     struct ras_interp ys;
     ras_interp_init(&ys, x0, y0, x1, y1);
@@ -44,7 +44,7 @@ void draw_line_broken(struct ras_ctx *rc, num x0, num y0, num x1, num y1, rgb c)
     }
 }
 
-/* One axis of draw_line: the counter runs along `a` (the longer axis), the
+/* One axis of ras_draw_line: the counter runs along `a` (the longer axis), the
  * other coordinate comes from Interpolate, indexed by T(a - a0) as the
  * demos do. */
 static void line_along(struct ras_ctx *rc, num a0, num b0, num a1, num b1, int a_is_x, rgb c)
@@ -70,7 +70,7 @@ static void line_along(struct ras_ctx *rc, num a0, num b0, num a1, num b1, int a
     }
 }
 
-void draw_line(struct ras_ctx *rc, num x0, num y0, num x1, num y1, rgb c)
+void ras_draw_line(struct ras_ctx *rc, num x0, num y0, num x1, num y1, rgb c)
 {
     num dx = num_sub(x1, x0), dy = num_sub(y1, y0);
     if (num_abs(dx) > num_abs(dy)) {
@@ -82,9 +82,9 @@ void draw_line(struct ras_ctx *rc, num x0, num y0, num x1, num y1, rgb c)
     }
 }
 
-void draw_wireframe_triangle(struct ras_ctx *rc, const num x[3], const num y[3], rgb c)
+void ras_draw_wireframe_triangle(struct ras_ctx *rc, const num x[3], const num y[3], rgb c)
 {
-    draw_line(rc, x[0], y[0], x[1], y[1], c);
-    draw_line(rc, x[1], y[1], x[2], y[2], c);
-    draw_line(rc, x[0], y[0], x[2], y[2], c);
+    ras_draw_line(rc, x[0], y[0], x[1], y[1], c);
+    ras_draw_line(rc, x[1], y[1], x[2], y[2], c);
+    ras_draw_line(rc, x[0], y[0], x[2], y[2], c);
 }

@@ -24,15 +24,15 @@ static int in_shadow(struct rt_state *rt, struct rt_ray *ray, num t_max, uint16_
     }
     /* only whether something is in the way matters: with the shortcuts on,
      * the first occluder found answers (same image as the closest) */
-    int found = closest_intersection(rt, ray, o->epsilon, t_max, &hit, o->shadow_any_hit || rt->shortcuts);
+    int found = rt_closest_intersection(rt, ray, o->epsilon, t_max, &hit, o->shadow_any_hit || rt->shortcuts);
     rt->skip_item = -1;
     if (!found) return 0;
     if (cache) rt->occluder[light] = hit.item;
     return 1;
 }
 
-num compute_lighting(struct rt_state *rt, vec3 p, vec3 n, vec3 v, num s, num s_zero, int16_t origin,
-                     uint8_t *shadow_bits)
+num rt_compute_lighting(struct rt_state *rt, vec3 p, vec3 n, vec3 v, num s, num s_zero, int16_t origin,
+                        uint8_t *shadow_bits)
 {
     const struct scene *sc = rt->s;
     const struct rt_options *o = &sc->rt;

@@ -61,7 +61,7 @@ static void build_adjacency(struct ras_ctx *rc)
     uint32_t tb = 0;
     for (uint16_t i = 0; i < s->ninstances; i++) {
         const struct ras_model *m = &s->models[s->instances[i].model];
-        uint16_t *adj = rc->adj + (size_t)tb * 3;
+        uint16_t *adj = rc->c15.adj + (size_t)tb * 3;
         for (uint32_t k = 0; k < (uint32_t)m->ntris * 3; k++) adj[k] = RAS_NO_ADJ;
         for (uint16_t a = 0; a < m->ntris; a++)
             for (int e = 0; e < 3; e++) {
@@ -82,14 +82,14 @@ static void build_adjacency(struct ras_ctx *rc)
 void ras_ch15_init(struct ras_ctx *rc)
 {
     const struct scene *s = rc->s;
-    rc->sh_light = (int8_t)shadow_light_index(s);
-    rc->sm_on = (uint8_t)sm_wanted(s);
-    rc->sv_on = (uint8_t)sv_wanted(s);
-    rc->env_on = (uint8_t)(ch15_path(s) && s->ras.env_map);
-    rc->sm_size = sm_side(s);
-    rc->pcf = s->ras.pcf ? (s->ras.pcf > 3 ? 3 : s->ras.pcf) : PCF_DEFAULT;
-    rc->env_k = num_from_ratio(s->ras.env_reflect ? (s->ras.env_reflect > 100 ? 100 : s->ras.env_reflect) : 50, 100);
-    if (rc->sv_on) build_adjacency(rc);
+    rc->c15.sh_light = (int8_t)shadow_light_index(s);
+    rc->c15.sm_on = (uint8_t)sm_wanted(s);
+    rc->c15.sv_on = (uint8_t)sv_wanted(s);
+    rc->c15.env_on = (uint8_t)(ch15_path(s) && s->ras.env_map);
+    rc->c15.sm_size = sm_side(s);
+    rc->c15.pcf = s->ras.pcf ? (s->ras.pcf > 3 ? 3 : s->ras.pcf) : PCF_DEFAULT;
+    rc->c15.env_k = num_from_ratio(s->ras.env_reflect ? (s->ras.env_reflect > 100 ? 100 : s->ras.env_reflect) : 50, 100);
+    if (rc->c15.sv_on) build_adjacency(rc);
 }
 
 /* ---- scene bounds and the light's frame ---------------------------------- */
@@ -111,8 +111,8 @@ static void scene_bounds(struct ras_ctx *rc)
     /* radius from the vertices themselves: exact for any instance transform */
     num r = NUM_ZERO;
     for (uint32_t k = 0; k < rc->nverts; k++) r = num_max(r, v3_len(v3_sub(rc->verts[k].c, c)));
-    rc->bound_c = c;
-    rc->bound_r = num_add(r, NUM_C(0.01));
+    rc->c15.bound_c = c;
+    rc->c15.bound_r = num_add(r, NUM_C(0.01));
 }
 
 /* An orthonormal frame with forward f (unit). */
@@ -126,59 +126,59 @@ static void frame_of(vec3 f, vec3 *r, vec3 *u)
 /* Map position (texels, +y down) and the light-space depth of p. */
 static void sm_project(const struct ras_ctx *rc, vec3 p, num *mx, num *my, num *z)
 {
-    vec3 d = v3_sub(p, rc->sm_o);
-    num x = v3_dot(d, rc->sm_r), y = v3_dot(d, rc->sm_u);
-    *z = v3_dot(d, rc->sm_f);
-    if (!rc->sm_ortho) {
-        num zz = num_max(*z, rc->sm_near);
+    vec3 d = v3_sub(p, rc->c15.sm_o);
+    num x = v3_dot(d, rc->c15.sm_r), y = v3_dot(d, rc->c15.sm_u);
+    *z = v3_dot(d, rc->c15.sm_f);
+    if (!rc->c15.sm_ortho) {
+        num zz = num_max(*z, rc->c15.sm_near);
         x = num_div(x, zz);
         y = num_div(y, zz);
     }
-    num half = num_from_int(rc->sm_size / 2);
-    *mx = num_add(half, num_mul(x, rc->sm_scale));
-    *my = num_sub(half, num_mul(y, rc->sm_scale));
+    num half = num_from_int(rc->c15.sm_size / 2);
+    *mx = num_add(half, num_mul(x, rc->c15.sm_scale));
+    *my = num_sub(half, num_mul(y, rc->c15.sm_scale));
 }
 
 /* Closeness to the light, 32-bit, larger is nearer: affine in map space
  * (near/z for a perspective map, (R - z)/2R for an orthographic one). */
 static uint32_t sm_closeness(const struct ras_ctx *rc, num z)
 {
-    if (rc->sm_ortho) {
-        num two_r = num_mul_int(rc->bound_r, 2);
-        num nz = num_clamp(num_sub(rc->bound_r, z), NUM_C(0.001), num_sub(two_r, NUM_C(0.001)));
+    if (rc->c15.sm_ortho) {
+        num two_r = num_mul_int(rc->c15.bound_r, 2);
+        num nz = num_clamp(num_sub(rc->c15.bound_r, z), NUM_C(0.001), num_sub(two_r, NUM_C(0.001)));
         return ras_depth32(nz, two_r);
     }
-    return ras_depth32(rc->sm_near, z);
+    return ras_depth32(rc->c15.sm_near, z);
 }
 
 /* Texel coordinate in 1/2^sub_bits units, clamped to a band around the map. */
 static int32_t sm_sub(const struct ras_ctx *rc, num m)
 {
-    num lim = num_from_int(rc->sm_size);
+    num lim = num_from_int(rc->c15.sm_size);
     m = num_clamp(m, num_neg(lim), num_mul_int(lim, 2));
-    int sb = rc->sub_bits;
+    int sb = rc->def.sub_bits;
     return (int32_t)((uint32_t)num_floor_int(m) << sb) + num_floor_int(num_add(num_mul_int(num_frac(m), 1 << sb), NUM_HALF));
 }
 
 static void render_shadow_map(struct ras_ctx *rc)
 {
     const struct scene *s = rc->s;
-    size_t n = (size_t)rc->sm_size * rc->sm_size;
-    memset(rc->smap, 0, n * sizeof(uint16_t));
+    size_t n = (size_t)rc->c15.sm_size * rc->c15.sm_size;
+    memset(rc->c15.smap, 0, n * sizeof(uint16_t));
     /* the rasterizer draws into the map as if it were one strip */
     struct render_target mt;
     memset(&mt, 0, sizeof mt);
-    mt.width = mt.height = rc->sm_size;
+    mt.width = mt.height = rc->c15.sm_size;
     mt.y0 = 0;
-    mt.y1 = rc->sm_size;
-    struct render_target *save_t = rc->t;
+    mt.y1 = rc->c15.sm_size;
+    struct render_target *save_t = rc->cur.t;
     uint16_t save_w = rc->w;
-    uint8_t *save_depth = rc->depth, save_bytes = rc->depth_bytes, save_func = rc->depth_func;
-    rc->t = &mt;
-    rc->w = rc->sm_size;
-    rc->depth = (uint8_t *)rc->smap;
+    uint8_t *save_depth = rc->depth, save_bytes = rc->depth_bytes, save_func = rc->cur.depth_func;
+    rc->cur.t = &mt;
+    rc->w = rc->c15.sm_size;
+    rc->depth = (uint8_t *)rc->c15.smap;
     rc->depth_bytes = 2;
-    rc->depth_func = RAS_DEPTH_LESS_WRITE;
+    rc->cur.depth_func = RAS_DEPTH_LESS_WRITE;
     for (uint16_t i = 0; i < s->ninstances; i++) {
         const struct ras_model *m = &s->models[s->instances[i].model];
         const struct ras_inst *ri = &rc->inst[i];
@@ -190,7 +190,7 @@ static void render_shadow_map(struct ras_ctx *rc)
                 if (t->v[j] >= m->nverts) { skip = 1; break; }
                 num mx, my, z;
                 sm_project(rc, rc->verts[ri->vbase + t->v[j]].c, &mx, &my, &z);
-                if (!rc->sm_ortho && z <= rc->sm_near) skip = 1;
+                if (!rc->c15.sm_ortho && z <= rc->c15.sm_near) skip = 1;
                 sv[j].x = sm_sub(rc, mx);
                 sv[j].y = sm_sub(rc, my);
                 sv[j].iz = NUM_ONE;
@@ -204,76 +204,76 @@ static void render_shadow_map(struct ras_ctx *rc)
             else if (area < 0) ras_fill_triangle(rc, &sv[0], &sv[2], &sv[1], 0, NULL, NULL);
         }
     }
-    rc->t = save_t;
+    rc->cur.t = save_t;
     rc->w = save_w;
     rc->depth = save_depth;
     rc->depth_bytes = save_bytes;
-    rc->depth_func = save_func;
+    rc->cur.depth_func = save_func;
 }
 
 void ras_ch15_frame(struct ras_ctx *rc)
 {
-    if (!rc->sm_on && !rc->sv_on) return;
+    if (!rc->c15.sm_on && !rc->c15.sv_on) return;
     scene_bounds(rc);
-    if (!rc->sm_on) return;
-    const struct ras_light *l = &rc->lights[rc->sh_light];
-    num S = num_from_int(rc->sm_size);
+    if (!rc->c15.sm_on) return;
+    const struct ras_light *l = &rc->lights[rc->c15.sh_light];
+    num S = num_from_int(rc->c15.sm_size);
     if (l->type == LIGHT_DIRECTIONAL) {
-        rc->sm_ortho = 1;
-        rc->sm_f = v3_normalize(v3_neg(l->v));
-        rc->sm_o = rc->bound_c;
-        rc->sm_scale = num_div(S, num_mul_int(rc->bound_r, 2));
-        rc->sm_texel = num_recip(rc->sm_scale);
+        rc->c15.sm_ortho = 1;
+        rc->c15.sm_f = v3_normalize(v3_neg(l->v));
+        rc->c15.sm_o = rc->c15.bound_c;
+        rc->c15.sm_scale = num_div(S, num_mul_int(rc->c15.bound_r, 2));
+        rc->c15.sm_texel = num_recip(rc->c15.sm_scale);
     } else {
-        rc->sm_ortho = 0;
-        vec3 to_c = v3_sub(rc->bound_c, l->v);
+        rc->c15.sm_ortho = 0;
+        vec3 to_c = v3_sub(rc->c15.bound_c, l->v);
         num dist = v3_len(to_c);
-        rc->sm_f = dist > 0 ? v3_normalize(to_c) : v3_make(NUM_ZERO, NUM_ZERO, NUM_ONE);
-        rc->sm_o = l->v;
-        frame_of(rc->sm_f, &rc->sm_r, &rc->sm_u);
+        rc->c15.sm_f = dist > 0 ? v3_normalize(to_c) : v3_make(NUM_ZERO, NUM_ZERO, NUM_ONE);
+        rc->c15.sm_o = l->v;
+        frame_of(rc->c15.sm_f, &rc->c15.sm_r, &rc->c15.sm_u);
         /* the frustum fitted to the vertices in front of the light: the
          * nearest one sets the near plane, the widest angle the field;
          * triangles reaching behind the near plane cast nothing */
-        num eps = num_mul(rc->bound_r, NUM_C(0.02)), zmin = NUM_MAX;
+        num eps = num_mul(rc->c15.bound_r, NUM_C(0.02)), zmin = NUM_MAX;
         for (uint32_t k = 0; k < rc->nverts; k++) {
-            num z = v3_dot(v3_sub(rc->verts[k].c, l->v), rc->sm_f);
+            num z = v3_dot(v3_sub(rc->verts[k].c, l->v), rc->c15.sm_f);
             if (z > eps) zmin = num_min(zmin, z);
         }
         num near = zmin == NUM_MAX ? num_max(eps, NUM_C(0.01)) : num_max(num_mul(zmin, NUM_C(0.9)), num_max(eps, NUM_C(0.01)));
         num tan_h = NUM_C(0.01);
         for (uint32_t k = 0; k < rc->nverts; k++) {
             vec3 d = v3_sub(rc->verts[k].c, l->v);
-            num z = v3_dot(d, rc->sm_f);
+            num z = v3_dot(d, rc->c15.sm_f);
             if (z <= near) continue;
-            num ext = num_max(num_abs(v3_dot(d, rc->sm_r)), num_abs(v3_dot(d, rc->sm_u)));
+            num ext = num_max(num_abs(v3_dot(d, rc->c15.sm_r)), num_abs(v3_dot(d, rc->c15.sm_u)));
             if (ext > num_mul(z, NUM_C(2.0))) { tan_h = NUM_C(2.0); continue; }
             tan_h = num_max(tan_h, num_div(ext, z));
         }
         /* at most +-63 degrees: wider fields waste the map's texels;
          * what lies outside is never shadowed */
         tan_h = num_mul(tan_h, NUM_C(1.01));
-        rc->sm_near = near;
-        rc->sm_scale = num_div(num_mul(S, NUM_HALF), tan_h);
-        rc->sm_texel = num_recip(rc->sm_scale);
+        rc->c15.sm_near = near;
+        rc->c15.sm_scale = num_div(num_mul(S, NUM_HALF), tan_h);
+        rc->c15.sm_texel = num_recip(rc->c15.sm_scale);
     }
-    if (rc->sm_ortho) frame_of(rc->sm_f, &rc->sm_r, &rc->sm_u);
+    if (rc->c15.sm_ortho) frame_of(rc->c15.sm_f, &rc->c15.sm_r, &rc->c15.sm_u);
     render_shadow_map(rc);
 }
 
 num ras_shadow_map_vis(const struct ras_ctx *rc, vec3 p, vec3 n)
 {
-    if (!rc->sm_on) return NUM_ONE;
+    if (!rc->c15.sm_on) return NUM_ONE;
     num mx, my, z;
     sm_project(rc, p, &mx, &my, &z);
-    if (!rc->sm_ortho && z <= rc->sm_near) return NUM_ONE;
+    if (!rc->c15.sm_ortho && z <= rc->c15.sm_near) return NUM_ONE;
     /* against self-shadowing: the point moved 1.5 texels along its normal
      * (steep faces), then one texel of depth bias */
-    num texel = rc->sm_ortho ? rc->sm_texel : num_mul(rc->sm_texel, z);
+    num texel = rc->c15.sm_ortho ? rc->c15.sm_texel : num_mul(rc->c15.sm_texel, z);
     sm_project(rc, v3_add(p, v3_scale(n, num_mul(texel, NUM_C(1.5)))), &mx, &my, &z);
     num zb = num_sub(z, texel);
-    if (!rc->sm_ortho) zb = num_max(zb, num_add(rc->sm_near, NUM_C(0.001)));
+    if (!rc->c15.sm_ortho) zb = num_max(zb, num_add(rc->c15.sm_near, NUM_C(0.001)));
     uint32_t c = sm_closeness(rc, zb) >> 16;
-    int k = rc->pcf;
+    int k = rc->c15.pcf;
     int32_t x0 = num_floor_int(mx), y0 = num_floor_int(my);
     if (k == 2) { x0 = num_floor_int(num_sub(mx, NUM_HALF)); y0 = num_floor_int(num_sub(my, NUM_HALF)); }
     else if (k == 3) { x0--; y0--; }
@@ -281,8 +281,8 @@ num ras_shadow_map_vis(const struct ras_ctx *rc, vec3 p, vec3 n)
     for (int dy = 0; dy < k; dy++)
         for (int dx = 0; dx < k; dx++) {
             int32_t x = x0 + dx, y = y0 + dy;
-            if (x < 0 || y < 0 || x >= rc->sm_size || y >= rc->sm_size) { lit++; continue; }
-            if (c >= rc->smap[(size_t)y * rc->sm_size + (size_t)x]) lit++;
+            if (x < 0 || y < 0 || x >= rc->c15.sm_size || y >= rc->c15.sm_size) { lit++; continue; }
+            if (c >= rc->c15.smap[(size_t)y * rc->c15.sm_size + (size_t)x]) lit++;
         }
     return num_from_ratio(lit, k * k);
 }
@@ -296,7 +296,7 @@ static void stencil_pixel(struct ras_ctx *rc, int col, int row, const num *a, nu
     (void)a;
     (void)z;
     const struct sv_ud *u = ud;
-    uint8_t *st = &rc->stencil[(size_t)(row - rc->t->y0) * rc->w + (size_t)col];
+    uint8_t *st = &rc->c15.stencil[(size_t)(row - rc->cur.t->y0) * rc->w + (size_t)col];
     *st = (uint8_t)(*st + u->delta);
 }
 
@@ -320,11 +320,11 @@ static void volume_triangle(struct ras_ctx *rc, vec3 a, vec3 b, vec3 c)
         vec3 p = q->p;
         num X = ras_mul_div(p.x, rc->unproj, p.z), Y = ras_mul_div(p.y, rc->unproj, p.z);
         num fx = num_add(num_from_int(rc->w / 2), X), fy = num_sub(num_from_int(rc->h / 2), Y);
-        int sb = rc->sub_bits;
+        int sb = rc->def.sub_bits;
         sv[k].x = (int32_t)((uint32_t)num_floor_int(fx) << sb) + num_floor_int(num_add(num_mul_int(num_frac(fx), 1 << sb), NUM_HALF));
         sv[k].y = (int32_t)((uint32_t)num_floor_int(fy) << sb) + num_floor_int(num_add(num_mul_int(num_frac(fy), 1 << sb), NUM_HALF));
         sv[k].iz = num_recip(p.z);
-        sv[k].depth = ras_depth32(rc->near_z, p.z);
+        sv[k].depth = ras_depth32(rc->def.near_z, p.z);
     }
     struct sv_ud u = { (int8_t)(front ? -1 : 1) };
     for (int k = 1; k + 1 < n; k++) ras_fill_triangle(rc, &sv[0], &sv[k], &sv[k + 1], -1, stencil_pixel, &u);
@@ -333,20 +333,20 @@ static void volume_triangle(struct ras_ctx *rc, vec3 a, vec3 b, vec3 c)
 void ras_shadow_volumes(struct ras_ctx *rc)
 {
     const struct scene *s = rc->s;
-    const struct ras_light *l = &rc->lights[rc->sh_light];
+    const struct ras_light *l = &rc->lights[rc->c15.sh_light];
     int point = l->type == LIGHT_POINT;
     vec3 ldir = point ? l->v : v3_normalize(l->v);
     /* extrusion length: beyond every receiver (all lie in the bounding sphere) */
-    num ext = point ? num_add(v3_len(v3_sub(rc->bound_c, l->v)), num_mul_int(rc->bound_r, 2))
-                    : num_mul_int(rc->bound_r, 3);
-    memset(rc->stencil, 0, (size_t)rc->w * (size_t)(rc->t->y1 - rc->t->y0));
-    uint8_t save_func = rc->depth_func;
-    rc->depth_func = RAS_DEPTH_BEHIND;
+    num ext = point ? num_add(v3_len(v3_sub(rc->c15.bound_c, l->v)), num_mul_int(rc->c15.bound_r, 2))
+                    : num_mul_int(rc->c15.bound_r, 3);
+    memset(rc->c15.stencil, 0, (size_t)rc->w * (size_t)(rc->cur.t->y1 - rc->cur.t->y0));
+    uint8_t save_func = rc->cur.depth_func;
+    rc->cur.depth_func = RAS_DEPTH_BEHIND;
     uint32_t tb = 0;
     for (uint16_t i = 0; i < s->ninstances; i++) {
         const struct ras_model *m = &s->models[s->instances[i].model];
         const struct ras_inst *ri = &rc->inst[i];
-        const uint16_t *adj = rc->adj + (size_t)tb * 3;
+        const uint16_t *adj = rc->c15.adj + (size_t)tb * 3;
         tb += m->ntris;
         for (uint16_t k = 0; k < m->ntris; k++) {
             const struct ras_triangle *t = &m->tris[k];
@@ -378,7 +378,7 @@ void ras_shadow_volumes(struct ras_ctx *rc)
             }
         }
     }
-    rc->depth_func = save_func;
+    rc->cur.depth_func = save_func;
 }
 
 /* ---- environment ---------------------------------------------------------- */

@@ -31,11 +31,11 @@ int ras_triangle_inside(vec3 a, vec3 b, vec3 c)
 static num clip_value(const struct ras_ctx *rc, int i, vec3 p)
 {
     switch (i) {
-    case 0: return num_sub(p.z, rc->near_z);
-    case 1: return num_add(p.x, num_mul(rc->side_x, p.z));
-    case 2: return num_sub(num_mul(rc->side_x, p.z), p.x);
-    case 3: return num_add(p.y, num_mul(rc->side_y, p.z));
-    default: return num_sub(num_mul(rc->side_y, p.z), p.y);
+    case 0: return num_sub(p.z, rc->def.near_z);
+    case 1: return num_add(p.x, num_mul(rc->def.side_x, p.z));
+    case 2: return num_sub(num_mul(rc->def.side_x, p.z), p.x);
+    case 3: return num_add(p.y, num_mul(rc->def.side_y, p.z));
+    default: return num_sub(num_mul(rc->def.side_y, p.z), p.y);
     }
 }
 
@@ -60,7 +60,7 @@ int ras_instance_visible(const struct ras_ctx *rc, const struct ras_inst *ri,
     }
     r = num_add(r, num_add(NUM_EPS, NUM_EPS));
     for (int i = 0; i < 5; i++) {
-        num k = i == 0 ? NUM_ONE : i < 3 ? rc->side_xk : rc->side_yk;
+        num k = i == 0 ? NUM_ONE : i < 3 ? rc->def.side_xk : rc->def.side_yk;
         if (clip_value(rc, i, c) < num_neg(num_mul(r, k))) return 0;
     }
     return 1;
@@ -98,7 +98,7 @@ int ras_clip_triangle(const struct ras_ctx *rc, const struct ras_cv in[3], int n
             if ((da >= 0) != (db >= 0) && m < RAS_CLIP_MAX) {
                 num t = num_div(da, num_sub(da, db)); /* in [0, 1]: crossing point */
                 struct ras_cv c = lerp_cv(a, b, num_clamp(t, NUM_ZERO, NUM_ONE), na);
-                if (pl == 0) c.p.z = num_max(c.p.z, rc->near_z); /* exactly on the plane */
+                if (pl == 0) c.p.z = num_max(c.p.z, rc->def.near_z); /* exactly on the plane */
                 dst[m++] = c;
             }
         }

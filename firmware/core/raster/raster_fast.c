@@ -259,7 +259,7 @@ void ras_spec_table(uint16_t t[257], uint32_t e, uint32_t step[2])
 
 void ras_fphong_frame(struct ras_ctx *rc)
 {
-    struct ras_fphong *fp = &rc->fp;
+    struct ras_fphong *fp = &rc->fast.fp;
     const struct scene *s = rc->s;
     fp->ok = 0;
     /* the largest camera-space coordinate of the frame's vertices and point lights */
@@ -633,8 +633,8 @@ typedef char ras_fast_state_fits[sizeof(struct fstate) <= sizeof(struct ras_fast
 static int fast_setup(struct ras_ctx *rc, const struct ras_sv *v0, const struct ras_sv *v1, const struct ras_sv *v2,
                       const struct ras_fast_tri *ft, struct fstate *S)
 {
-    const struct render_target *t = rc->t;
-    int sb = rc->sub_bits;
+    const struct render_target *t = rc->cur.t;
+    int sb = rc->def.sub_bits;
     int64_t area64 = ras_edge(v0->x, v0->y, v1->x, v1->y, v2->x, v2->y);
     if (area64 <= 0) return 0;
 
@@ -702,7 +702,7 @@ static int fast_setup(struct ras_ctx *rc, const struct ras_sv *v0, const struct 
     struct fpersp *pp = &Tp->pp;
     int na = 0;
     Tp->ft = ft;
-    Tp->slog = rc->persp_log2;
+    Tp->slog = rc->fast.persp_log2;
     Tp->seg = (int32_t)1 << Tp->slog;
     Tp->a1 = a[1];
     Tp->a2 = a[2];
@@ -794,7 +794,7 @@ static int fast_setup(struct ras_ctx *rc, const struct ras_sv *v0, const struct 
  * drawn (board). */
 static uint32_t fast_run(struct ras_ctx *rc, struct fstate *S)
 {
-    const struct render_target *t = rc->t;
+    const struct render_target *t = rc->cur.t;
     const struct ftri *Tp = &S->T;
     struct fedge *fe = S->fe;
     int32_t *wr = S->wr, *a = S->a, *b = S->b;
@@ -881,7 +881,7 @@ int32_t ras_fast_fill(struct ras_ctx *rc, const struct ras_sv *v0, const struct 
 int ras_fast_resume(struct ras_ctx *rc, struct ras_fast_state *keep, uint32_t *drawn)
 {
     struct fstate *S = (struct fstate *)(void *)keep;
-    if (S->row != (int32_t)rc->t->y0 || S->row > S->last) return 0;
+    if (S->row != (int32_t)rc->cur.t->y0 || S->row > S->last) return 0;
     *drawn = fast_run(rc, S);
     return 1;
 }

@@ -7,6 +7,7 @@
 #include <stddef.h>
 #include "raster.h"
 #include "raster_num.h"
+#include "work.h"
 
 /* Code of the fast path's inner loops: placed in SRAM where the board's
  * build asks for it (RAS_RAM_TEXT: the RP2040 runs from flash through a
@@ -68,51 +69,52 @@ struct ras_fphong {
                              /* li Q14; v: unit direction toward the light in Q14
                                 (directional) or position in Q(pq) (point) */
 };
-struct ras_ctx {
-    const struct scene *s;
-    uint16_t w, h, strip_rows;
-    uint8_t book;            /* ras_options.book_exact */
-    uint8_t sub_bits;        /* sub-pixel bits of the default path */
-    uint8_t depth_bytes;     /* 2, 4 or sizeof(num) (book path) */
-    uint8_t fast;            /* default path with the fast span loops (perspective_step > 1) */
-    uint8_t persp_log2;      /* fast path: a reciprocal every 2^persp_log2 pixels */
-    num cw, vw, vh, d;       /* render width, viewport (aspect-corrected), projection plane */
-    num unproj;              /* cw*d/vw: canvas units per unit of x/z */
-    num scale2d;             /* render height / scene canvas height */
-    num near_z;              /* near clipping plane (camera space z) */
-    num side_x, side_y;      /* default-path side planes: |x| <= side_x*z, |y| <= side_y*z */
-    num side_xk, side_yk;    /* sqrt(1 + side^2): a side plane's value over the distance */
-    mat4 cam, cam_rot_t;     /* camera matrix; transposed camera rotation */
-    vec3 cam_pos;            /* world-space camera position (the book's view-vector quirk) */
-    uint32_t nverts, ntris;
-    uint32_t tris_in, tris_drawn;
-    struct ras_inst *inst;
-    struct ras_vert *verts;
-    struct ras_range *tri_rows, *prim_rows, *line_rows;
-    struct ras_light *lights;
-    struct ras_mips *mips;   /* per texture */
-    struct ras_tex565 *tex565; /* per texture (fast path) */
-    /* default path, per frame: projected vertices, triangle flags and the
-     * lighting of Gouraud corners or flat faces (NULL when not kept) */
-    struct ras_pv *pv;
-    uint8_t *tri_flags;
-    num *tri_shade;          /* 3 a triangle: Gouraud corners, or the flat intensity first */
-    struct ras_fast_state *keep; /* fast path: triangle set-ups kept between strips */
-    uint8_t phong_fast;      /* Phong by fast Phong (lighting = fast) */
-    struct ras_fphong fp;    /* its lights, per frame */
-    uint16_t *spec_tab;      /* its specular tables, 257 entries each */
-    uint32_t *spec_step;     /* per table: index step and end (ras_spec_table) */
-    int16_t *inst_spec;      /* per instance: its table, -1: no highlight */
-    uint16_t nkeep;          /* their number (triangle i in slot i % nkeep) */
-    uint8_t *depth;          /* strip_rows * w entries */
+/* The state of the strip being drawn (raster_strip sets it). */
+struct ras_cur {
+    struct render_target *t;
+    struct render_stats *st;
     /* depth test of ras_fill_triangle: RAS_DEPTH_LESS_WRITE (normal),
      * RAS_DEPTH_EQUAL (shading pass after a depth pass), RAS_DEPTH_BEHIND
      * (shadow-volume fragments behind the surface: depth-fail) */
     uint8_t depth_func;
     uint8_t depth_only;      /* render_triangle writes depth, no colour */
+};
+
+/* The default path's own state (book_exact = 0, not wireframe). */
+struct ras_def {
+    uint8_t sub_bits;        /* sub-pixel bits */
+    uint8_t shading;         /* the shading it draws (Phong lit at the corners is Gouraud) */
     int8_t affine_from;      /* attributes from this index on are interpolated linearly in
                                 screen space (uv = linear), -1: all perspective-correct */
-    /* chapter 15 (raster_ch15.c) */
+    num near_z;              /* near clipping plane (camera space z) */
+    num side_x, side_y;      /* side planes: |x| <= side_x*z, |y| <= side_y*z */
+    num side_xk, side_yk;    /* sqrt(1 + side^2): a side plane's value over the distance */
+    struct ras_mips *mips;   /* per texture */
+    uint8_t *mip_mem;        /* the chains the scene has not: raster_work.c's, texture by texture */
+    /* per frame: projected vertices, triangle flags and the lighting of
+     * Gouraud corners or flat faces (NULL when not kept) */
+    struct ras_pv *pv;
+    uint8_t *tri_flags;
+    num *tri_shade;          /* 3 a triangle: Gouraud corners, or the flat intensity first */
+};
+
+/* The fast span path's own state (the default path with perspective_step > 1). */
+struct ras_fast {
+    uint8_t on;              /* triangles try the fast span loops */
+    uint8_t persp_log2;      /* a reciprocal every 2^persp_log2 pixels */
+    uint8_t phong;           /* Phong by fast Phong (lighting = fast) */
+    uint16_t nkeep;          /* kept set-ups (triangle i in slot i % nkeep) */
+    struct ras_tex565 *tex565;   /* per texture */
+    uint8_t *tex_mem;            /* the RGB565 copies, texture by texture */
+    struct ras_fast_state *keep; /* triangle set-ups kept between strips */
+    uint16_t *spec_tab;      /* fast Phong's specular tables, 257 entries each */
+    uint32_t *spec_step;     /* per table: index step and end (ras_spec_table) */
+    int16_t *inst_spec;      /* per instance: its table, -1: no highlight, -2: none left */
+    struct ras_fphong fp;    /* fast Phong's lights, per frame */
+};
+
+/* Chapter 15's own state (raster_ch15.c; default path, Phong shading). */
+struct ras_c15 {
     int8_t sh_light;         /* light casting shadows, -1: none */
     uint8_t sm_on, sv_on, env_on, pcf;
     uint8_t sm_ortho;        /* directional light: orthographic map */
@@ -126,10 +128,40 @@ struct ras_ctx {
     num env_k;               /* environment fraction */
     uint16_t *adj;           /* per triangle 3 neighbours across its edges (RAS_NO_ADJ: none) */
     uint8_t *stencil;        /* strip_rows * w stencil counts (shadow volumes) */
-    /* current strip */
-    struct render_target *t;
-    struct render_stats *st;
 };
+
+/* The rasterizer's state, in the caller's work memory: what every path
+ * uses, then the state each path owns. */
+struct ras_ctx {
+    const struct scene *s;
+    uint16_t w, h, strip_rows;
+    uint8_t book;            /* ras_options.book_exact */
+    uint8_t depth_bytes;     /* 2, 4 or sizeof(num) (book path); 0: no depth test */
+    struct ras_cur cur;
+    num cw, vw, vh, d;       /* render width, viewport (aspect-corrected), projection plane */
+    num unproj;              /* cw*d/vw: canvas units per unit of x/z */
+    num scale2d;             /* render height / scene canvas height */
+    mat4 cam, cam_rot_t;     /* camera matrix; transposed camera rotation */
+    vec3 cam_pos;            /* world-space camera position (the book's view-vector quirk) */
+    uint32_t nverts, ntris;
+    uint32_t tris_in, tris_drawn;
+    struct ras_inst *inst;
+    struct ras_vert *verts;
+    struct ras_range *tri_rows, *prim_rows, *line_rows;
+    struct ras_light *lights;
+    uint8_t *depth;          /* strip_rows * w entries */
+    struct ras_def def;
+    struct ras_fast fast;
+    struct ras_c15 c15;
+};
+
+/* The state in the caller's work memory, at its first WORK_ALIGN boundary
+ * (raster_work_size counts the slack). */
+static inline struct ras_ctx *ras_ctx_of(void *work)
+{
+    uintptr_t p = (uintptr_t)work;
+    return (struct ras_ctx *)((p + (WORK_ALIGN - 1)) & ~(uintptr_t)(WORK_ALIGN - 1));
+}
 
 enum { RAS_DEPTH_LESS_WRITE = 0, RAS_DEPTH_EQUAL = 1, RAS_DEPTH_BEHIND = 2 };
 #define RAS_NO_ADJ 0xFFFFu
@@ -164,7 +196,19 @@ void ras_book_scan_triangle(struct ras_ctx *rc, const num x[3], const num y[3], 
 void ras_draw_filled_triangle(struct ras_ctx *rc, const num x[3], const num y[3], rgb c);
 void ras_draw_shaded_triangle(struct ras_ctx *rc, const num x[3], const num y[3], const num h[3], rgb c);
 
-/* ---- the default path's triangle (raster_triangles.c) ---- */
+/* ---- RenderTriangle of each path (raster_book.c, raster_default.c) ---- */
+/* The book path's triangle (and every wireframe), into the current strip. */
+void ras_book_render_triangle(struct ras_ctx *rc, const struct ras_instance *in, const struct ras_inst *ri,
+                              const struct ras_model *m, const struct ras_triangle *t);
+/* The default path's triangle gi (its index in the frame's tables). */
+void ras_default_render_triangle(struct ras_ctx *rc, const struct ras_instance *in, const struct ras_inst *ri,
+                                 const struct ras_model *m, const struct ras_triangle *t, uint32_t gi);
+/* Per frame: the facts of the default path's triangle gi kept for every
+ * strip, and the lighting of its Gouraud corners or flat face. */
+void ras_tri_cache(struct ras_ctx *rc, const struct ras_instance *in, const struct ras_inst *ri,
+                   const struct ras_model *m, const struct ras_triangle *t, uint32_t gi);
+
+/* ---- the default path's exact fill (raster_triangles.c) ---- */
 struct ras_sv {
     int32_t x, y;            /* screen position in 1/2^sub_bits pixel, y down */
     num iz;                  /* 1/z */
@@ -176,7 +220,7 @@ struct ras_sv {
 typedef void (*ras_pixel_fn)(struct ras_ctx *rc, int col, int row, const num *a, num z, void *ud);
 /* Fills a triangle whose corners run clockwise on screen (non-positive area
  * draws nothing). Returns the number of pixels that passed the depth test
- * (rc->depth_func). fn == NULL: depth only; na < 0: fn gets no attributes
+ * (rc->cur.depth_func). fn == NULL: depth only; na < 0: fn gets no attributes
  * and z = 0 (stencil updates). */
 uint32_t ras_fill_triangle(struct ras_ctx *rc, const struct ras_sv *v0, const struct ras_sv *v1,
                            const struct ras_sv *v2, int na, ras_pixel_fn fn, void *ud);
@@ -185,6 +229,20 @@ uint32_t ras_fill_triangle(struct ras_ctx *rc, const struct ras_sv *v0, const st
 int64_t ras_edge(int32_t ax, int32_t ay, int32_t bx, int32_t by, int64_t px, int64_t py);
 /* Box of the corners in sub-pixel units: min x, min y, max x, max y. */
 void ras_sub_box(const struct ras_sv *v0, const struct ras_sv *v1, const struct ras_sv *v2, int32_t box[4]);
+
+/* What the default path's exact pixels of a triangle need (ud of
+ * ras_default_pixel). */
+struct ras_def_tri {
+    rgb color;
+    num flat_i, spec;
+    int shading, tex;
+    int ai_i, ai_n, ai_uv, ai_p; /* attribute slots */
+    num lod_base, iz_eff;    /* trilinear: texels^2 per pixel at depth 1/iz_eff */
+    int nmap;                /* normal map texture, -1: none */
+    vec3 tan_u, tan_v;       /* unit tangents along +u and toward the image's top (-v) */
+};
+/* The default path's pixel (raster_pixel.c), a ras_pixel_fn. */
+void ras_default_pixel(struct ras_ctx *rc, int col, int row, const num *a, num z, void *ud);
 
 /* ---- the default path's fast triangle (raster_fast.c) ---- */
 #define RAS_FT_FLAT 0           /* (macros: the span template tests them with #if) */
@@ -195,7 +253,7 @@ void ras_sub_box(const struct ras_sv *v0, const struct ras_sv *v1, const struct 
 #define RAS_FT_PHONG 5            /* fast Phong: normal and position per pixel */
 #define RAS_FT_PHONG_TEX 6        /* the same times a texel */
 #define RAS_FAST_NA 8             /* attributes of the fast path at most */
-/* Lights of the frame into rc->fp (after the camera-space lights and vertices). */
+/* Lights of the frame into rc->fast.fp (after the camera-space lights and vertices). */
 void ras_fphong_frame(struct ras_ctx *rc);
 /* cos^e at 257 points in Q14 (raster_fast.c looks it up); step[0]
  * receives the index step, Q16 index units per Q14 unit of 1 - cos, and
@@ -251,6 +309,13 @@ num ras_mul_div(num x, num z, num unproj);
 /* ---- chapters 9, 10: projection and transforms (raster_project.c) ---- */
 /* The book's ProjectVertex (with ViewportToCanvas). */
 void ras_project_vertex(const struct ras_ctx *rc, vec3 v, num *x, num *y);
+/* The default path's projection: screen position of a camera-space point
+ * inside the clip volume in sub-pixel units (y down). */
+void ras_project_sub(const struct ras_ctx *rc, vec3 p, int32_t *sx, int32_t *sy);
+/* Scene canvas to render canvas (2D primitives): v*h/canvas_h, one rounding. */
+num ras_scale_canvas(const struct ras_ctx *rc, num v);
+/* A model-space corner normal in camera space (the instance's rotations). */
+vec3 ras_corner_normal(const struct ras_inst *ri, vec3 n);
 mat4 ras_instance_matrix(const struct ras_instance *in, uint16_t frame);
 mat4 ras_camera_matrix(const struct scene *s, uint16_t frame, mat4 *rot_t, vec3 *pos);
 mat3 ras_instance_rotation(const struct ras_instance *in, uint16_t frame);
@@ -289,7 +354,7 @@ void ras_ch15_frame(struct ras_ctx *rc);
 /* Visibility of the shadow light at camera-space p with unit normal n, in
  * [0, 1] (shadow map with PCF); 1 when the map is off. */
 num ras_shadow_map_vis(const struct ras_ctx *rc, vec3 p, vec3 n);
-/* Shadow volumes of the current strip into rc->stencil (after a depth pass). */
+/* Shadow volumes of the current strip into rc->c15.stencil (after a depth pass). */
 void ras_shadow_volumes(struct ras_ctx *rc);
 /* Environment colour seen along camera-space direction r (procedural sky
  * and ground in world space). */

@@ -8,11 +8,11 @@
 
 void ras_put(struct ras_ctx *rc, int col, int row, rgb c)
 {
-    struct render_target *t = rc->t;
+    struct render_target *t = rc->cur.t;
     if (col < 0 || col >= (int)rc->w || row < (int)t->y0 || row >= (int)t->y1) return;
     render_put(t, col, row, c);
     if (t->written) t->written[(size_t)(row - t->y0) * t->width + (size_t)col] = 1;
-    rc->st->pixels_written++;
+    rc->cur.st->pixels_written++;
 }
 
 int ras_canvas_col(const struct ras_ctx *rc, int32_t x)

@@ -86,3 +86,32 @@ num ras_mul_div(num x, num z, num unproj)
 {
     return wnum_div(num_mul_wide(x, z), wnum_from_num(unproj));
 }
+
+/* Screen position of a camera-space point inside the clip volume, in
+ * sub-pixel units (y down): the default path's projection. */
+void ras_project_sub(const struct ras_ctx *rc, vec3 p, int32_t *sx, int32_t *sy)
+{
+    num X = ras_mul_div(p.x, rc->unproj, p.z);
+    num Y = ras_mul_div(p.y, rc->unproj, p.z);
+    num fx = num_add(num_from_int(rc->w / 2), X);
+    num fy = num_sub(num_from_int(rc->h / 2), Y);
+    int sb = rc->def.sub_bits;
+    /* integer and fraction apart, so Q15.16 never holds pixels << 8 */
+    *sx = (int32_t)((uint32_t)num_floor_int(fx) << sb) + num_floor_int(num_add(num_mul_int(num_frac(fx), 1 << sb), NUM_HALF));
+    *sy = (int32_t)((uint32_t)num_floor_int(fy) << sb) + num_floor_int(num_add(num_mul_int(num_frac(fy), 1 << sb), NUM_HALF));
+}
+
+/* Scene canvas to render canvas: v*h/canvas_h with one rounding (exact at
+ * the scene's own size). */
+num ras_scale_canvas(const struct ras_ctx *rc, num v)
+{
+    return wnum_div(num_mul_wide(v, num_from_int(rc->h)), wnum_from_num(num_from_int(rc->s->canvas_h)));
+}
+
+/* A model-space corner normal in camera space (the instance's rotations). */
+vec3 ras_corner_normal(const struct ras_inst *ri, vec3 n)
+{
+    vec4 v = { n.x, n.y, n.z, NUM_ONE };
+    v = m4_mul_v4(&ri->nmat, v);
+    return v3_make(v.x, v.y, v.z);
+}

@@ -121,7 +121,7 @@ void ras_mips_build(const struct ras_texture *t, struct ras_mips *m, uint8_t *me
 rgb ras_sample(const struct ras_ctx *rc, int tex, num u, num v, num lod)
 {
     const struct ras_texture *t = &rc->s->textures[tex];
-    const struct ras_mips *m = &rc->mips[tex];
+    const struct ras_mips *m = &rc->def.mips[tex];
     if (t->filter == TEX_NEAREST) return sample_level(t->rgb, t->w, t->h, u, v, 0);
     if (t->filter != TEX_TRILINEAR || m->levels <= 1) return sample_level(t->rgb, t->w, t->h, u, v, 1);
     if (lod <= 0) return sample_level(m->p[0], m->w[0], m->h[0], u, v, 1);

@@ -76,7 +76,7 @@ static void book_scan(struct ras_ctx *rc, const num x[3], const num y[3], int nq
         int32_t yi = num_to_int(yc);
         int row = ras_canvas_row(rc, yi);
         if (row < 0) break; /* rows only go up from here */
-        if (row >= (int)rc->t->y0 && row < (int)rc->t->y1) {
+        if (row >= (int)rc->cur.t->y0 && row < (int)rc->cur.t->y1) {
             if (span_kind == SPAN_REAL) {
                 int n = 0;
                 for (num xs = L[0]; xs <= R[0] && n < RAS_MAX_STEPS; n++, xs = ras_count_next(xs, L[0], n)) {
@@ -173,8 +173,8 @@ static int64_t edge_bias(int32_t ax, int32_t ay, int32_t bx, int32_t by)
 uint32_t ras_fill_triangle(struct ras_ctx *rc, const struct ras_sv *v0, const struct ras_sv *v1,
                            const struct ras_sv *v2, int na, ras_pixel_fn fn, void *ud)
 {
-    const struct render_target *t = rc->t;
-    int sb = rc->sub_bits;
+    const struct render_target *t = rc->cur.t;
+    int sb = rc->def.sub_bits;
     int64_t area = ras_edge(v0->x, v0->y, v1->x, v1->y, v2->x, v2->y);
     if (area <= 0) return 0;
 
@@ -238,8 +238,8 @@ uint32_t ras_fill_triangle(struct ras_ctx *rc, const struct ras_sv *v0, const st
                     } else {
                         cur = ((uint32_t *)(void *)rc->depth)[di];
                     }
-                    if (rc->depth_func == RAS_DEPTH_EQUAL) pass = dv == cur;
-                    else if (rc->depth_func == RAS_DEPTH_BEHIND) pass = dv <= cur; /* not nearer: depth-fail counts the surface's own cap */
+                    if (rc->cur.depth_func == RAS_DEPTH_EQUAL) pass = dv == cur;
+                    else if (rc->cur.depth_func == RAS_DEPTH_BEHIND) pass = dv <= cur; /* not nearer: depth-fail counts the surface's own cap */
                     else if (dv > cur) {
                         if (rc->depth_bytes == 2) ((uint16_t *)(void *)rc->depth)[di] = (uint16_t)dv;
                         else ((uint32_t *)(void *)rc->depth)[di] = dv;
@@ -258,7 +258,7 @@ uint32_t ras_fill_triangle(struct ras_ctx *rc, const struct ras_sv *v0, const st
                     num a[RAS_MAX_ATTR];
                     if (na) {
                         num q1 = num_mul(p1, z), q2 = num_mul(p2, z);
-                        int nf = rc->affine_from >= 0 && rc->affine_from < na ? rc->affine_from : na;
+                        int nf = rc->def.affine_from >= 0 && rc->def.affine_from < na ? rc->def.affine_from : na;
                         for (int j = 0; j < nf; j++)
                             a[j] = num_add(v0->a[j], num_add(num_mul(q1, da1[j]), num_mul(q2, da2[j])));
                         for (int j = nf; j < na; j++) /* screen-linear (the book's linear u, v) */

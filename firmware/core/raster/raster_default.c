@@ -1,0 +1,296 @@
+/* SPDX-License-Identifier: MIT */
+/* raster_default.c — the default path's RenderTriangle (book_exact = 0):
+ * the triangle's facts (kept per frame where the scene allows), its
+ * attributes, clipping at the planes and the sub-pixel projection, then
+ * each triangle of the clipped fan through the fast span loops
+ * (raster_fast.c) or the exact per-pixel fill (ras_fill_triangle with
+ * ras_default_pixel). */
+#include "raster_int.h"
+
+/* Colour levels of RGB565 in Q10, round(c * L * 1024 / 255); 0 when a
+ * channel lies outside 0..255. */
+static int levels_q10(rgb c, struct ras_fast_tri *ft)
+{
+    int32_t r = ras_num_to_fix(c.r, 31 * 1024 * 2), g = ras_num_to_fix(c.g, 63 * 1024 * 2),
+            b = ras_num_to_fix(c.b, 31 * 1024 * 2);
+    ft->kr = r <= 0 ? 0 : (uint32_t)(r + 255) / 510;
+    ft->kg = g <= 0 ? 0 : (uint32_t)(g + 255) / 510;
+    ft->kb = b <= 0 ? 0 : (uint32_t)(b + 255) / 510;
+    return !(ft->kr > 31u * 1024 || ft->kg > 63u * 1024 || ft->kb > 31u * 1024);
+}
+
+/* The fast span loops' description of a triangle; 0 when it needs the
+ * exact per-pixel path (chapter 15 passes and normal maps, Phong without
+ * fast Phong, filtered or non-power-of-two textures, screen-linear uv,
+ * textures under flat shading). */
+static int fast_describe(const struct ras_ctx *rc, const struct ras_def_tri *dt, struct ras_fast_tri *ft, ptrdiff_t inst)
+{
+    const struct ras_options *o = &rc->s->ras;
+    if (!rc->fast.on || rc->cur.depth_only || rc->cur.depth_func != RAS_DEPTH_LESS_WRITE || dt->nmap >= 0) return 0;
+    int gour = dt->shading == SHADE_GOURAUD, phong = dt->shading == SHADE_PHONG;
+    if (phong && (!rc->fast.phong || !rc->fast.fp.ok || rc->fast.inst_spec[inst] == -2)) return 0;
+    ft->ai_i = dt->ai_i;
+    ft->ai_uv = dt->ai_uv;
+    if (phong) {
+        ft->ai_n = dt->ai_n;
+        ft->ai_p = dt->ai_p;
+        ft->fp = &rc->fast.fp;
+        int16_t st = rc->fast.inst_spec[inst];
+        ft->spec = st >= 0 ? rc->fast.spec_tab + 257 * st : NULL;
+        ft->spec_scale = st >= 0 ? rc->fast.spec_step[2 * st] : 0;
+        ft->spec_umax = st >= 0 ? rc->fast.spec_step[2 * st + 1] : 0;
+        if (dt->tex < 0) {
+            ft->kind = RAS_FT_PHONG;
+            return levels_q10(dt->color, ft);
+        }
+    }
+    if (dt->tex >= 0) {
+        const struct ras_tex565 *t5 = &rc->fast.tex565[dt->tex];
+        if (!t5->p || !o->perspective_uv || dt->shading == SHADE_FLAT) return 0;
+        ft->kind = (uint8_t)(phong ? RAS_FT_PHONG_TEX : (gour ? RAS_FT_TEX_GOURAUD : RAS_FT_TEX));
+        ft->tex = t5->p;
+        ft->wlog2 = t5->wlog2;
+        ft->wmask = (1u << t5->wlog2) - 1;
+        ft->hmask = (1u << t5->hlog2) - 1;
+        /* u = 1 maps to the last texel's far edge less 2^-16: nearest with
+         * clamping for u, v in [0, 1], repeating outside */
+        ft->uscale = (int32_t)((1u << t5->wlog2) * 65536u - 1u);
+        ft->vscale = (int32_t)((1u << t5->hlog2) * 65536u - 1u);
+        return 1;
+    }
+    if (gour) {
+        ft->kind = RAS_FT_GOURAUD;
+        return levels_q10(dt->color, ft);
+    }
+    ft->kind = RAS_FT_FLAT;
+    rgb c = dt->shading == SHADE_FLAT ? rgb_scale(dt->color, dt->flat_i) : dt->color;
+    ft->c565 = rgb_to_565(c);
+    rgb_to_888(c, ft->c888);
+    return 1;
+}
+
+/* Camera-space corners, facing and shading normals of a triangle of the
+ * default path; 0 when it draws nothing (degenerate, or a culled back face). */
+static int tri_facts(const struct ras_ctx *rc, const struct ras_inst *ri, const struct ras_model *m,
+                     const struct ras_triangle *t, vec3 V[3], vec3 N[3], int *front)
+{
+    const struct ras_options *o = &rc->s->ras;
+    for (int k = 0; k < 3; k++) V[k] = rc->verts[ri->vbase + t->v[k]].c;
+    struct ras_wnormal wf = ras_face_normal_wide(V[0], V[1], V[2]);
+    wnum facing = ras_facing_wide(V[0], wf);
+    if (facing == 0 && wf.x == 0 && wf.y == 0 && wf.z == 0) return 0; /* degenerate */
+    *front = facing > 0;
+    if (o->backface_cull && !*front) return 0;
+    int face_n = o->computed_normals || !m->has_normals;
+    vec3 nf = face_n ? ras_wnormal_narrow(wf) : v3_make(NUM_ZERO, NUM_ZERO, NUM_ZERO);
+    for (int k = 0; k < 3; k++) N[k] = face_n ? nf : ras_corner_normal(ri, t->n[k]);
+    return 1;
+}
+
+static vec3 tri_centre(const vec3 V[3])
+{
+    return v3_make(num_div_int(num_add(num_add(V[0].x, V[1].x), V[2].x), 3),
+                   num_div_int(num_add(num_add(V[0].y, V[1].y), V[2].y), 3),
+              num_div_int(num_add(num_add(V[0].z, V[1].z), V[2].z), 3));
+}
+
+/* Per frame: the facts of triangle gi kept for every strip, and the
+ * lighting of its Gouraud corners or flat face (the values
+ * default_render_triangle would compute in each strip). */
+void ras_tri_cache(struct ras_ctx *rc, const struct ras_instance *in, const struct ras_inst *ri,
+                      const struct ras_model *m, const struct ras_triangle *t, uint32_t gi)
+{
+    vec3 V[3], N[3];
+    int front = 0;
+    if (!tri_facts(rc, ri, m, t, V, N, &front)) { rc->def.tri_flags[gi] = 0; return; }
+    rc->def.tri_flags[gi] = (uint8_t)(RAS_TRI_LIVE | (front ? RAS_TRI_FRONT : 0));
+    if (!rc->def.tri_shade) return;
+    num *sh = rc->def.tri_shade + 3 * (size_t)gi;
+    if (rc->def.shading == SHADE_GOURAUD)
+        for (int k = 0; k < 3; k++) sh[k] = ras_compute_illumination(rc, V[k], N[k], in->specular);
+    else
+        sh[0] = ras_compute_illumination(rc, tri_centre(V), N[0], in->specular);
+}
+
+/* The rest of triangle gi begun in the strip above, from its kept set-up:
+ * 1 when that drew it; *slot (NULL: none) is its slot either way. */
+static int resume_kept(struct ras_ctx *rc, uint32_t gi, struct ras_fast_state **slot)
+{
+    *slot = NULL;
+    if (!rc->fast.keep || rc->cur.depth_only || rc->cur.depth_func != RAS_DEPTH_LESS_WRITE) return 0;
+    *slot = &rc->fast.keep[gi % rc->fast.nkeep];
+    uint32_t drawn;
+    if ((*slot)->tri == gi && ras_fast_resume(rc, *slot, &drawn)) {
+        rc->cur.st->pixels_written += drawn;
+        return 1;
+    }
+    return 0;
+}
+
+/* Camera-space corners V, facing and normals N of triangle gi, from the
+ * frame's cache where it has them (N then only when not shaded from the
+ * cache); 0 when it draws nothing. */
+static int corners(const struct ras_ctx *rc, const struct ras_inst *ri, const struct ras_model *m,
+                   const struct ras_triangle *t, uint32_t gi, int cached_shade, vec3 V[3], vec3 N[3], int *front)
+{
+    *front = 0;
+    if (!rc->def.tri_flags) return tri_facts(rc, ri, m, t, V, N, front);
+    uint8_t f = rc->def.tri_flags[gi];
+    if (!(f & RAS_TRI_LIVE)) return 0;
+    *front = (f & RAS_TRI_FRONT) != 0;
+    if (!cached_shade) return tri_facts(rc, ri, m, t, V, N, front);
+    for (int k = 0; k < 3; k++) V[k] = rc->verts[ri->vbase + t->v[k]].c;
+    return 1;
+}
+
+/* What the pixels of the triangle need: colour, shading, texture, and for
+ * a normal map the tangents from this triangle's uv derivatives. */
+static void describe(const struct ras_ctx *rc, const struct ras_instance *in, const struct ras_model *m,
+                     const struct ras_triangle *t, const vec3 V[3], struct ras_def_tri *dt)
+{
+    const int sh = rc->def.shading;
+    dt->color = t->color;
+    dt->spec = in->specular;
+    dt->shading = sh;
+    dt->tex = (in->texture >= 0 && in->texture < rc->s->ntextures && m->has_uvs) ? in->texture : -1;
+    dt->flat_i = NUM_ONE;
+    dt->ai_i = dt->ai_n = dt->ai_uv = dt->ai_p = 0;
+    dt->nmap = -1;
+    if (sh == SHADE_PHONG && in->normal_map >= 0 && in->normal_map < rc->s->ntextures && m->has_uvs) {
+        vec3 e1 = v3_sub(V[1], V[0]), e2 = v3_sub(V[2], V[0]);
+        num du1 = num_sub(t->uv[1].u, t->uv[0].u), dv1 = num_sub(t->uv[1].v, t->uv[0].v);
+        num du2 = num_sub(t->uv[2].u, t->uv[0].u), dv2 = num_sub(t->uv[2].v, t->uv[0].v);
+        num det = num_sub(num_mul(du1, dv2), num_mul(du2, dv1));
+        if (det != 0) {
+            dt->nmap = in->normal_map;
+            /* dP/du and dP/dv up to the common factor 1/det (its sign kept) */
+            vec3 pu = v3_sub(v3_scale(e1, dv2), v3_scale(e2, dv1));
+            vec3 pv = v3_sub(v3_scale(e2, du1), v3_scale(e1, du2));
+            if (det < 0) { pu = v3_neg(pu); pv = v3_neg(pv); }
+            dt->tan_u = v3_normalize(pu);
+            dt->tan_v = v3_normalize(v3_neg(pv));
+        }
+    }
+}
+
+/* The corners' attributes in cin (their slots in dt), and the flat
+ * intensity; shade: the frame's lighting of the triangle, or NULL. Returns
+ * the attribute count. */
+static int attributes(const struct ras_ctx *rc, struct ras_def_tri *dt, const struct ras_triangle *t,
+                      const vec3 V[3], const vec3 N[3], const num *shade, struct ras_cv cin[3])
+{
+    const int sh = dt->shading;
+    int na = 0;
+    if (sh == SHADE_GOURAUD) dt->ai_i = na++;
+    if (sh == SHADE_PHONG) { dt->ai_n = na; na += 3; }
+    /* fast Phong also needs the camera-space position at each pixel */
+    if (sh == SHADE_PHONG && rc->fast.phong) { dt->ai_p = na; na += 3; }
+    int uv = dt->tex >= 0 || dt->nmap >= 0;
+    if (uv) { dt->ai_uv = na; na += 2; }
+    for (int k = 0; k < 3; k++) {
+        cin[k].p = V[k];
+        if (sh == SHADE_GOURAUD)
+            cin[k].a[dt->ai_i] = shade ? shade[k] : ras_compute_illumination(rc, V[k], N[k], dt->spec);
+        if (sh == SHADE_PHONG) {
+            vec3 n = v3_normalize(N[k]);
+            cin[k].a[dt->ai_n] = n.x; cin[k].a[dt->ai_n + 1] = n.y; cin[k].a[dt->ai_n + 2] = n.z;
+            if (rc->fast.phong) { cin[k].a[dt->ai_p] = V[k].x; cin[k].a[dt->ai_p + 1] = V[k].y; cin[k].a[dt->ai_p + 2] = V[k].z; }
+        }
+        if (uv) { cin[k].a[dt->ai_uv] = t->uv[k].u; cin[k].a[dt->ai_uv + 1] = t->uv[k].v; }
+    }
+    if (sh == SHADE_FLAT) dt->flat_i = shade ? shade[0] : ras_compute_illumination(rc, tri_centre(V), N[0], dt->spec);
+    return na;
+}
+
+/* The triangle's corners on screen, clockwise, in sv: its three
+ * projections of this frame when they lie inside every plane, else the
+ * clipped polygon projected. Returns the corner count (< 3: nothing). */
+static int screen_corners(const struct ras_ctx *rc, const struct ras_inst *ri, const struct ras_triangle *t,
+                          int front, const struct ras_cv cin[3], int na, struct ras_sv sv[RAS_CLIP_MAX])
+{
+    const struct ras_pv *pv = rc->def.pv ? rc->def.pv + ri->vbase : NULL;
+    if (pv && pv[t->v[0]].inside && pv[t->v[1]].inside && pv[t->v[2]].inside) {
+        /* inside every plane: the clipper would return the corners as they
+         * are; their projections were made once this frame */
+        for (int k = 0; k < 3; k++) {
+            int c = front ? k : 2 - k;
+            const struct ras_pv *q = &pv[t->v[c]];
+            sv[k].x = q->sx;
+            sv[k].y = q->sy;
+            sv[k].iz = q->iz;
+            sv[k].depth = q->depth;
+            for (int j = 0; j < na; j++) sv[k].a[j] = cin[c].a[j];
+        }
+        return 3;
+    }
+    struct ras_cv poly[RAS_CLIP_MAX];
+    int n = ras_clip_triangle(rc, cin, na, poly);
+    if (n < 3) return n;
+    for (int k = 0; k < n; k++) {
+        /* back faces (culling off) are drawn with their corners reversed */
+        const struct ras_cv *c = &poly[front ? k : n - 1 - k];
+        ras_project_sub(rc, c->p, &sv[k].x, &sv[k].y);
+        sv[k].iz = num_recip(c->p.z);
+        sv[k].depth = ras_depth32(rc->def.near_z, c->p.z);
+        for (int j = 0; j < na; j++) sv[k].a[j] = c->a[j];
+    }
+    return n;
+}
+
+/* Trilinear filtering's level of detail for fan triangle a b c: texels^2
+ * per pixel at depth 1/iz_eff. */
+static void trilinear_lod(const struct ras_ctx *rc, const struct ras_texture *tx, struct ras_def_tri *dt,
+                          const struct ras_sv *a, const struct ras_sv *b, const struct ras_sv *c)
+{
+    int64_t area = (int64_t)(b->x - a->x) * (c->y - a->y) - (int64_t)(b->y - a->y) * (c->x - a->x);
+    num du1 = num_sub(b->a[dt->ai_uv], a->a[dt->ai_uv]), dv1 = num_sub(b->a[dt->ai_uv + 1], a->a[dt->ai_uv + 1]);
+    num du2 = num_sub(c->a[dt->ai_uv], a->a[dt->ai_uv]), dv2 = num_sub(c->a[dt->ai_uv + 1], a->a[dt->ai_uv + 1]);
+    num uv2 = num_abs(num_sub(num_mul(du1, dv2), num_mul(du2, dv1)));
+    if (area > 0) {
+        num k2 = ras_ratio(((int64_t)tx->w * tx->h) << (2 * rc->def.sub_bits), area);
+        dt->lod_base = num_mul(uv2, k2);
+    }
+    dt->iz_eff = num_div_int(num_add(num_add(a->iz, b->iz), c->iz), 3);
+}
+
+/* RenderTriangle of the default path: the triangle's corners (the frame's
+ * cache), attributes, clipping and projection, then the fan of its
+ * polygon, each by the fast span loops where they take it (ft) and by the
+ * exact per-pixel path otherwise. */
+void ras_default_render_triangle(struct ras_ctx *rc, const struct ras_instance *in, const struct ras_inst *ri,
+                                 const struct ras_model *m, const struct ras_triangle *t, uint32_t gi)
+{
+    struct ras_fast_state *slot;
+    if (resume_kept(rc, gi, &slot)) return;
+    vec3 V[3], N[3];
+    int front;
+    const num *shade = rc->def.tri_shade ? rc->def.tri_shade + 3 * (size_t)gi : NULL;
+    if (!corners(rc, ri, m, t, gi, shade != NULL, V, N, &front)) return;
+    struct ras_def_tri dt;
+    describe(rc, in, m, t, V, &dt);
+    struct ras_cv cin[3];
+    int na = attributes(rc, &dt, t, V, N, shade, cin);
+    struct ras_sv sv[RAS_CLIP_MAX];
+    int n = screen_corners(rc, ri, t, front, cin, na, sv);
+    if (n < 3) return;
+    const struct ras_texture *tx = dt.tex >= 0 ? &rc->s->textures[dt.tex] : NULL;
+    int uv = dt.tex >= 0 || dt.nmap >= 0;
+    struct ras_fast_tri ft;
+    int fast = fast_describe(rc, &dt, &ft, ri - rc->inst);
+    for (int k = 1; k + 1 < n; k++) {
+        const struct ras_sv *a = &sv[0], *b = &sv[k], *c = &sv[k + 1];
+        if (fast) {
+            /* an unclipped triangle's set-up is kept for the strips below */
+            struct ras_fast_state *k1 = n == 3 ? slot : NULL;
+            if (k1) k1->tri = gi;
+            int32_t drawn = ras_fast_fill(rc, a, b, c, &ft, k1);
+            if (drawn >= 0) { rc->cur.st->pixels_written += (uint32_t)drawn; continue; }
+            if (k1) k1->tri = UINT32_MAX;
+        }
+        dt.lod_base = NUM_ZERO;
+        dt.iz_eff = NUM_ONE;
+        if (tx && tx->filter == TEX_TRILINEAR) trilinear_lod(rc, tx, &dt, a, b, c);
+        rc->def.affine_from = (int8_t)(uv && !rc->s->ras.perspective_uv ? dt.ai_uv : -1);
+        ras_fill_triangle(rc, a, b, c, na, rc->cur.depth_only ? NULL : ras_default_pixel, &dt);
+    }
+}

@@ -1,0 +1,191 @@
+/* SPDX-License-Identifier: MIT */
+/* raster_frame.c — render_begin_frame: the camera and the lights in camera
+ * space, every instance's vertices transformed and projected (the frame
+ * half of the book's RenderInstance), and the binning of every primitive to
+ * the rows it may touch, so each strip visits only its own. */
+#include "raster_int.h"
+
+static struct ras_range rows_of_canvas_y(const struct ras_ctx *rc, num ymin, num ymax)
+{
+    struct ras_range r;
+    int64_t a = (int64_t)(rc->h / 2) - num_to_int(ymax) - 2, b = (int64_t)(rc->h / 2) - num_to_int(ymin) + 1;
+    if (a < 0) a = 0;
+    if (b > (int64_t)rc->h - 1) b = rc->h - 1;
+    if (a > b) { r.r0 = 1; r.r1 = 0; return r; }
+    r.r0 = (int16_t)a;
+    r.r1 = (int16_t)b;
+    return r;
+}
+
+static struct ras_range no_rows(void) { struct ras_range r = { 1, 0 }; return r; }
+
+static void range3(const num v[3], num *lo, num *hi)
+{
+    *lo = num_min(num_min(v[0], v[1]), v[2]);
+    *hi = num_max(num_max(v[0], v[1]), v[2]);
+}
+
+/* Rows of sub-pixel rows lo..hi, one row of margin each side. */
+static struct ras_range sub_rows(const struct ras_ctx *rc, int32_t lo, int32_t hi)
+{
+    struct ras_range r;
+    int32_t r0 = (lo >> rc->def.sub_bits) - 1, r1 = (hi >> rc->def.sub_bits) + 1;
+    if (r0 < 0) r0 = 0;
+    if (r1 > rc->h - 1) r1 = rc->h - 1;
+    if (r0 > r1) return no_rows();
+    r.r0 = (int16_t)r0;
+    r.r1 = (int16_t)r1;
+    return r;
+}
+
+static struct ras_range default_tri_rows(const struct ras_ctx *rc, vec3 a, vec3 b, vec3 c)
+{
+    struct ras_cv in[3], out[RAS_CLIP_MAX];
+    in[0].p = a; in[1].p = b; in[2].p = c;
+    int n = ras_clip_triangle(rc, in, 0, out);
+    if (n < 3) return no_rows();
+    int32_t lo = INT32_MAX, hi = INT32_MIN;
+    for (int k = 0; k < n; k++) {
+        int32_t sx, sy;
+        ras_project_sub(rc, out[k].p, &sx, &sy);
+        if (sy < lo) lo = sy;
+        if (sy > hi) hi = sy;
+    }
+    return sub_rows(rc, lo, hi);
+}
+
+/* RenderInstance, its frame half (the strip half is render_instance):
+ * the instance's vertices to camera space (ApplyTransform), culled against
+ * the viewport's bounding sphere (ClipInstance), projected
+ * (ProjectVertex), and each triangle binned to the rows it may touch.
+ * vb, tb: the instance's first vertex and triangle in the frame tables. */
+static void prepare_instance(struct ras_ctx *rc, uint16_t i, uint16_t frame, uint32_t vb, uint32_t tb)
+{
+    const struct scene *s = rc->s;
+    const struct ras_options *o = &s->ras;
+    const struct ras_instance *in = &s->instances[i];
+    const struct ras_model *m = &s->models[in->model];
+    struct ras_inst *ri = &rc->inst[i];
+    ri->vbase = vb;
+    ri->tbase = tb;
+    mat3 r3 = ras_instance_rotation(in, frame);
+    mat4 r4 = m4_from_m3(&r3);
+    ri->nmat = m4_mul(&rc->cam_rot_t, &r4);
+    if (o->instance_transform) {
+        mat4 mi = ras_instance_matrix(in, frame);
+        ri->m = o->camera_transform ? m4_mul(&rc->cam, &mi) : mi;
+    } else {
+        /* raster-07: vertices simply moved by the position */
+        mat4 t = m4_translation(in->position);
+        ri->m = o->camera_transform ? m4_mul(&rc->cam, &t) : t;
+    }
+    ri->visible = o->clip ? (uint8_t)ras_instance_visible(rc, ri, m, o->instance_transform ? in->scale : NUM_ONE) : 1;
+    for (uint16_t k = 0; k < m->nverts; k++) {
+        struct ras_vert *v = &rc->verts[vb + k];
+        vec3 p = m->verts[k];
+        if (o->instance_transform) {
+            vec4 p4 = { p.x, p.y, p.z, NUM_ONE };
+            p4 = m4_mul_v4(&ri->m, p4);
+            v->c = v3_make(p4.x, p4.y, p4.z);
+        } else {
+            v->c = v3_add(p, in->position);
+            if (o->camera_transform) {
+                vec4 p4 = { v->c.x, v->c.y, v->c.z, NUM_ONE };
+                p4 = m4_mul_v4(&rc->cam, p4);
+                v->c = v3_make(p4.x, p4.y, p4.z);
+            }
+        }
+        ras_project_vertex(rc, v->c, &v->px, &v->py);
+        if (o->project_truncate) {
+            v->px = num_from_int(num_to_int(v->px));
+            v->py = num_from_int(num_to_int(v->py));
+        }
+        if (rc->def.pv) {
+            struct ras_pv *q = &rc->def.pv[vb + k];
+            q->inside = (uint8_t)(ri->visible && ras_point_inside(rc, v->c));
+            if (q->inside) {
+                ras_project_sub(rc, v->c, &q->sx, &q->sy);
+                q->iz = num_recip(v->c.z);
+                q->depth = ras_depth32(rc->def.near_z, v->c.z);
+            }
+        }
+    }
+    for (uint16_t k = 0; k < m->ntris; k++) {
+        const struct ras_triangle *t = &m->tris[k];
+        struct ras_range *rr = &rc->tri_rows[tb + k];
+        rc->tris_in++;
+        *rr = no_rows();
+        if (!ri->visible || t->v[0] >= m->nverts || t->v[1] >= m->nverts || t->v[2] >= m->nverts) continue;
+        const struct ras_vert *a = &rc->verts[vb + t->v[0]], *b = &rc->verts[vb + t->v[1]],
+                              *c = &rc->verts[vb + t->v[2]];
+        if (rc->book || o->wireframe) {
+            if (o->clip && !ras_triangle_inside(a->c, b->c, c->c)) continue;
+            if (!rc->book && !o->clip && (a->c.z <= rc->def.near_z || b->c.z <= rc->def.near_z || c->c.z <= rc->def.near_z))
+                continue; /* default path, clipping off: never project behind the camera */
+            num ys[3] = { a->py, b->py, c->py }, lo, hi;
+            range3(ys, &lo, &hi);
+            *rr = rows_of_canvas_y(rc, lo, hi);
+        } else {
+            const struct ras_pv *pa = &rc->def.pv[vb + t->v[0]], *pb = &rc->def.pv[vb + t->v[1]], *pc = &rc->def.pv[vb + t->v[2]];
+            if (pa->inside && pb->inside && pc->inside)
+                *rr = sub_rows(rc, num_min(num_min(pa->sy, pb->sy), pc->sy), num_max(num_max(pa->sy, pb->sy), pc->sy));
+            else
+                *rr = default_tri_rows(rc, a->c, b->c, c->c);
+            if (rr->r0 <= rr->r1) ras_tri_cache(rc, in, ri, m, t, tb + k);
+            else rc->def.tri_flags[tb + k] = 0;
+        }
+        if (rr->r0 <= rr->r1) rc->tris_drawn++;
+    }
+}
+
+int raster_begin_frame(void *work, uint16_t frame)
+{
+    struct ras_ctx *rc = ras_ctx_of(work);
+    const struct scene *s = rc->s;
+    const struct ras_options *o = &s->ras;
+    mat4 id = m4_identity();
+    rc->cam = id;
+    rc->cam_rot_t = id;
+    rc->cam_pos = v3_make(NUM_ZERO, NUM_ZERO, NUM_ZERO);
+    if (o->camera_transform) rc->cam = ras_camera_matrix(s, frame, &rc->cam_rot_t, &rc->cam_pos);
+    else rc->cam_pos = s->camera.position;
+
+    for (uint16_t k = 0; k < s->nlights; k++) {
+        const struct scene_light *l = &s->lights[k];
+        struct ras_light *rl = &rc->lights[k];
+        vec4 v = { l->v.x, l->v.y, l->v.z, NUM_ONE };
+        rl->type = l->type;
+        rl->intensity = l->intensity;
+        v = m4_mul_v4(l->type == LIGHT_POINT ? &rc->cam : &rc->cam_rot_t, v);
+        rl->v = v3_make(v.x, v.y, v.z);
+    }
+
+    /* 2D primitives and 3D lines: rows they may touch */
+    for (uint16_t i = 0; i < s->nprims; i++) {
+        const struct prim2d *p = &s->prims[i];
+        num ys[3] = { p->y[0], p->y[1], p->npts > 2 ? p->y[2] : p->y[1] }, lo, hi;
+        range3(ys, &lo, &hi);
+        rc->prim_rows[i] = rows_of_canvas_y(rc, ras_scale_canvas(rc, lo), ras_scale_canvas(rc, hi));
+    }
+    for (uint16_t i = 0; i < s->nlines; i++) {
+        num ax, ay, bx, by;
+        ras_project_vertex(rc, s->lines[i].a, &ax, &ay);
+        ras_project_vertex(rc, s->lines[i].b, &bx, &by);
+        rc->line_rows[i] = rows_of_canvas_y(rc, num_min(ay, by), num_max(ay, by));
+    }
+
+    for (uint16_t k = 0; k < rc->fast.nkeep; k++) rc->fast.keep[k].tri = UINT32_MAX;
+
+    /* RenderInstance, its frame half, for every instance */
+    uint32_t vb = 0, tb = 0;
+    rc->tris_in = rc->tris_drawn = 0;
+    for (uint16_t i = 0; i < s->ninstances; i++) {
+        const struct ras_model *m = &s->models[s->instances[i].model];
+        prepare_instance(rc, i, frame, vb, tb);
+        vb += m->nverts;
+        tb += m->ntris;
+    }
+    if (rc->fast.phong) ras_fphong_frame(rc);
+    ras_ch15_frame(rc);
+    return 0;
+}

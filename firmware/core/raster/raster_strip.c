@@ -1,0 +1,131 @@
+/* SPDX-License-Identifier: MIT */
+/* raster_strip.c — render_strip: the background, the 2D primitives and 3D
+ * lines binned to the strip, then RenderScene, each instance's triangles
+ * that touch the strip through the path's RenderTriangle (the strip half of
+ * the book's RenderInstance). */
+#include <string.h>
+#include "raster_int.h"
+
+/* Word stores through an alias-safe type (the strip is uint16_t, the depth
+ * buffer bytes of work memory). */
+#if defined(__GNUC__) || defined(__clang__)
+typedef uint32_t __attribute__((may_alias)) ras_word;
+#define RAS_HAVE_WORD 1
+#endif
+
+/* n RGB565 pixels of value c: 32-bit stores, eight a loop. */
+static void ras_fill16(uint16_t *p, size_t n, uint16_t c)
+{
+#ifdef RAS_HAVE_WORD
+    if (n && ((uintptr_t)p & 2u)) { *p++ = c; n--; }
+    ras_word *w = (ras_word *)(void *)p, v = (uint32_t)c * 0x00010001u;
+    size_t nw = n / 2;
+    for (; nw >= 8; nw -= 8, w += 8) { w[0] = v; w[1] = v; w[2] = v; w[3] = v; w[4] = v; w[5] = v; w[6] = v; w[7] = v; }
+    while (nw--) *w++ = v;
+    if (n & 1u) p[n - 1] = c;
+#else
+    for (size_t k = 0; k < n; k++) p[k] = c;
+#endif
+}
+
+/* n bytes of zeros at p (4-byte aligned, n a multiple of 2). */
+static void ras_fill_zero(uint8_t *p, size_t n)
+{
+#ifdef RAS_HAVE_WORD
+    if (((uintptr_t)p & 3u) == 0) {
+        ras_word *w = (ras_word *)(void *)p;
+        size_t nw = n / 4;
+        for (; nw >= 8; nw -= 8, w += 8) { w[0] = 0; w[1] = 0; w[2] = 0; w[3] = 0; w[4] = 0; w[5] = 0; w[6] = 0; w[7] = 0; }
+        while (nw--) *w++ = 0;
+        p = (uint8_t *)w;
+        n &= 3u;
+    }
+#endif
+    memset(p, 0, n);
+}
+
+static int rows_hit(struct ras_range r, const struct render_target *t)
+{
+    return r.r0 <= r.r1 && r.r1 >= (int)t->y0 && r.r0 < (int)t->y1;
+}
+
+/* RenderInstance, its strip half: the instance's triangles that touch the
+ * strip (binned by prepare_instance), each through RenderTriangle. */
+static void render_instance(struct ras_ctx *rc, uint16_t i, const struct render_target *t)
+{
+    const struct scene *s = rc->s;
+    const struct ras_instance *in = &s->instances[i];
+    const struct ras_inst *ri = &rc->inst[i];
+    const struct ras_model *m = &s->models[in->model];
+    if (!ri->visible) return;
+    for (uint16_t k = 0; k < m->ntris; k++) {
+        if (!rows_hit(rc->tri_rows[ri->tbase + k], t)) continue;
+        if (rc->book || s->ras.wireframe) ras_book_render_triangle(rc, in, ri, m, &m->tris[k]);
+        else ras_default_render_triangle(rc, in, ri, m, &m->tris[k], ri->tbase + k);
+    }
+}
+
+/* RenderScene for one strip: every instance, in the scene's order; with
+ * shadow volumes (chapter 15) three passes: depth only, the volumes into
+ * the stencil, then shading where the depth equals the visible surface's. */
+static void render_scene(struct ras_ctx *rc, const struct render_target *t)
+{
+    for (int pass = rc->c15.sv_on ? 0 : 2; pass < 3; pass++) {
+        if (pass == 1) { ras_shadow_volumes(rc); continue; }
+        rc->cur.depth_only = (uint8_t)(pass == 0);
+        rc->cur.depth_func = (uint8_t)(rc->c15.sv_on && pass == 2 ? RAS_DEPTH_EQUAL : RAS_DEPTH_LESS_WRITE);
+        for (uint16_t i = 0; i < rc->s->ninstances; i++) render_instance(rc, i, t);
+    }
+}
+
+int raster_strip(void *work, struct render_target *t, struct render_stats *st)
+{
+    struct ras_ctx *rc = ras_ctx_of(work);
+    const struct scene *s = rc->s;
+    if (t->y1 - t->y0 > rc->strip_rows) return -1;
+    rc->cur.t = t;
+    rc->cur.st = st;
+    rgb bg = scene_background(s);
+    size_t npx = (size_t)(t->y1 - t->y0) * t->width;
+    ras_fill16(t->rgb565, npx, rgb_to_565(bg));
+    if (t->rgb888) {
+        uint8_t c[3];
+        rgb_to_888(bg, c);
+        for (size_t k = 0; k < npx; k++) memcpy(t->rgb888 + 3 * k, c, 3);
+    }
+    if (t->written) memset(t->written, 0, npx);
+    if (rc->depth_bytes) ras_fill_zero(rc->depth, (size_t)rc->depth_bytes * rc->w * (size_t)(t->y1 - t->y0));
+
+    for (uint16_t i = 0; i < s->nprims; i++) {
+        if (!rows_hit(rc->prim_rows[i], t)) continue;
+        const struct prim2d *p = &s->prims[i];
+        num x[3], y[3];
+        for (int k = 0; k < 3; k++) {
+            x[k] = ras_scale_canvas(rc, p->x[k]);
+            y[k] = ras_scale_canvas(rc, p->y[k]);
+        }
+        switch (p->kind) {
+        case P2D_LINE_BROKEN: ras_draw_line_broken(rc, x[0], y[0], x[1], y[1], p->color); break;
+        case P2D_LINE: ras_draw_line(rc, x[0], y[0], x[1], y[1], p->color); break;
+        case P2D_WIRE_TRI: ras_draw_wireframe_triangle(rc, x, y, p->color); break;
+        case P2D_FILLED_TRI: ras_draw_filled_triangle(rc, x, y, p->color); break;
+        case P2D_SHADED_TRI: ras_draw_shaded_triangle(rc, x, y, p->h, p->color); break;
+        default: break;
+        }
+    }
+    for (uint16_t i = 0; i < s->nlines; i++) {
+        if (!rows_hit(rc->line_rows[i], t)) continue;
+        num ax, ay, bx, by;
+        ras_project_vertex(rc, s->lines[i].a, &ax, &ay);
+        ras_project_vertex(rc, s->lines[i].b, &bx, &by);
+        ras_draw_line(rc, ax, ay, bx, by, s->lines[i].color);
+    }
+    render_scene(rc, t);
+    rc->cur.depth_only = 0;
+    rc->cur.depth_func = RAS_DEPTH_LESS_WRITE;
+    if (t->y0 == 0) {
+        st->triangles_in += rc->tris_in;
+        st->triangles_drawn += rc->tris_drawn;
+    }
+    return 0;
+}

@@ -1,0 +1,255 @@
+/* SPDX-License-Identifier: MIT */
+/* raster_work.c — the rasterizer's work memory and render_init: which
+ * paths a scene takes, the layout of every table (one carve, run to measure
+ * and to place), the render size's viewport and clipping planes, the
+ * textures' mip chains and RGB565 copies. */
+#include <string.h>
+#include "raster_int.h"
+#include "work.h"
+
+/* Bytes of depth a pixel; none unless triangles are depth-tested (2D
+ * primitives and 3D lines never are, so scenes of those need no buffer). */
+static int depth_bytes(const struct scene *s)
+{
+    if (!s->ras.depth_test || s->ninstances == 0) return 0;
+    if (s->ras.book_exact) return (int)sizeof(num);
+    return s->ras.depth_bits == 16 ? 2 : 4;
+}
+
+/* The default path's triangles (not the book's, not wireframes): they keep
+ * per-frame caches (projected vertices, triangle flags, lighting of
+ * Gouraud and flat triangles). */
+static int frame_cache(const struct scene *s)
+{
+    return !s->ras.book_exact && !s->ras.wireframe;
+}
+
+/* The fast path: the default path's triangles unless perspective_step = 1. */
+static int fast_path(const struct scene *s)
+{
+    return frame_cache(s) && s->ras.persp_step != 1;
+}
+
+/* A chapter-15 feature that lights per pixel (always exactly). */
+static int ch15_lit(const struct ras_options *o)
+{
+    return o->shadow_map || o->shadow_volume || o->env_map;
+}
+
+static int log2_exact(uint32_t v)
+{
+    for (int k = 0; k < 16; k++)
+        if (v == (1u << k)) return k;
+    return -1;
+}
+
+/* Bytes of the RGB565 copy of texture t the fast path samples: nearest
+ * filtering, power-of-two sides, at most 2^15 texels (a byte offset of 16
+ * bits); 0 when it does not qualify. */
+static size_t tex565_size(const struct scene *s, const struct ras_texture *t)
+{
+    if (!fast_path(s) || t->filter != TEX_NEAREST || !t->rgb) return 0;
+    if (log2_exact(t->w) < 0 || log2_exact(t->h) < 0 || log2_exact(t->w) + log2_exact(t->h) > 15) return 0;
+    return (size_t)t->w * t->h * 2;
+}
+
+
+/* The default path's shading: Phong lit at the corners (lighting = vertex,
+ * no chapter-15 feature) is Gouraud. */
+static int eff_shading(const struct scene *s)
+{
+    const struct ras_options *o = &s->ras;
+    if (o->shading == SHADE_PHONG && o->lighting == RAS_LIGHT_VERTEX && !o->book_exact && !ch15_lit(o))
+        return SHADE_GOURAUD;
+    return o->shading;
+}
+
+/* Fast Phong: the fast path, Phong shading, lighting = fast, no chapter-15 feature. */
+static int phong_fast(const struct scene *s)
+{
+    const struct ras_options *o = &s->ras;
+    return fast_path(s) && eff_shading(s) == SHADE_PHONG && o->lighting == RAS_LIGHT_FAST && !ch15_lit(o);
+}
+
+/* Distinct specular exponents of fast Phong's instances, one table each
+ * (at most RAS_SPEC_MAX; more take the exact path). idx (if not NULL)
+ * receives each instance's table: -1 no highlight, -2 none left. */
+#define RAS_SPEC_MAX 16
+static uint16_t spec_exponents(const struct scene *s, int16_t *idx, uint32_t exps[RAS_SPEC_MAX])
+{
+    uint32_t seen[RAS_SPEC_MAX];
+    uint16_t n = 0;
+    int fastp = phong_fast(s);
+    for (uint16_t i = 0; i < s->ninstances; i++) {
+        int16_t t = -1;
+        if (fastp && s->instances[i].specular >= 0) {
+            uint32_t e = (uint32_t)num_to_int(s->instances[i].specular);
+            for (uint16_t k = 0; k < n && t < 0; k++)
+                if (seen[k] == e) t = (int16_t)k;
+            if (t < 0 && n < RAS_SPEC_MAX) {
+                seen[n] = e;
+                if (exps) exps[n] = e;
+                t = (int16_t)n++;
+            } else if (t < 0) {
+                t = -2;
+            }
+        }
+        if (idx) idx[i] = t;
+    }
+    return n;
+}
+
+static int shade_cache(const struct scene *s)
+{
+    return frame_cache(s) && (eff_shading(s) == SHADE_GOURAUD || eff_shading(s) == SHADE_FLAT);
+}
+
+/* Triangle set-ups the fast path keeps from one strip to the next: one
+ * slot a triangle up to RAS_KEEP_MAX (triangle i in slot i mod slots). */
+#define RAS_KEEP_MAX 32
+static uint16_t keep_slots(const struct scene *s, uint32_t ntris)
+{
+    if (!fast_path(s)) return 0;
+    return (uint16_t)(ntris < RAS_KEEP_MAX ? ntris : RAS_KEEP_MAX);
+}
+
+/* Every table of the state, in order, from c (c->base NULL: measuring, rc a
+ * scratch context). The instances' models are checked first: -1 when one
+ * is missing. */
+static int carve(const struct scene *s, uint16_t w, uint16_t strip_rows, struct ras_ctx *rc, struct work_carve *c)
+{
+    uint32_t nverts = 0, ntris = 0;
+    for (uint16_t i = 0; i < s->ninstances; i++) {
+        if (s->instances[i].model >= s->nmodels) return -1;
+        const struct ras_model *m = &s->models[s->instances[i].model];
+        nverts += m->nverts;
+        ntris += m->ntris;
+    }
+    rc->nverts = nverts;
+    rc->ntris = ntris;
+    (void)work_take(c, sizeof(struct ras_ctx));   /* the context itself, first */
+    rc->inst = work_take(c, sizeof(struct ras_inst) * s->ninstances);
+    rc->verts = work_take(c, sizeof(struct ras_vert) * nverts);
+    rc->tri_rows = work_take(c, sizeof(struct ras_range) * ntris);
+    rc->prim_rows = work_take(c, sizeof(struct ras_range) * s->nprims);
+    rc->line_rows = work_take(c, sizeof(struct ras_range) * s->nlines);
+    rc->lights = work_take(c, sizeof(struct ras_light) * s->nlights);
+    rc->def.mips = work_take(c, sizeof(struct ras_mips) * s->ntextures);
+    rc->def.mip_mem = c->base ? c->base + c->off : NULL;    /* the chains, texture by texture */
+    if (!s->ras.book_exact)
+        for (uint16_t i = 0; i < s->ntextures; i++) (void)work_take(c, ras_mips_size(&s->textures[i]));
+    rc->fast.tex565 = work_take(c, sizeof(struct ras_tex565) * s->ntextures);
+    rc->fast.tex_mem = c->base ? c->base + c->off : NULL;   /* the RGB565 copies, the same way */
+    for (uint16_t i = 0; i < s->ntextures; i++) (void)work_take(c, tex565_size(s, &s->textures[i]));
+    void *pv = work_take(c, frame_cache(s) ? sizeof(struct ras_pv) * nverts : 0);
+    void *flags = work_take(c, frame_cache(s) ? ntris : 0);
+    void *shade = work_take(c, shade_cache(s) ? sizeof(num) * 3 * ntris : 0);
+    rc->def.pv = frame_cache(s) ? pv : NULL;
+    rc->def.tri_flags = frame_cache(s) ? flags : NULL;
+    rc->def.tri_shade = shade_cache(s) ? shade : NULL;
+    rc->fast.nkeep = keep_slots(s, ntris);
+    void *keep = work_take(c, sizeof(struct ras_fast_state) * rc->fast.nkeep);
+    rc->fast.keep = rc->fast.nkeep ? keep : NULL;
+    uint16_t nspec = spec_exponents(s, NULL, NULL);
+    rc->fast.spec_tab = work_take(c, sizeof(uint16_t) * 257 * nspec);
+    rc->fast.spec_step = work_take(c, sizeof(uint32_t) * 2 * nspec);
+    rc->fast.inst_spec = work_take(c, sizeof(int16_t) * s->ninstances);
+    rc->depth = work_take(c, (size_t)depth_bytes(s) * w * strip_rows);
+    rc->c15.adj = work_take(c, ras_ch15_adj_size(s, ntris));
+    rc->c15.smap = work_take(c, ras_ch15_smap_size(s));
+    rc->c15.stencil = work_take(c, ras_ch15_stencil_size(s, w, strip_rows));
+    return 0;
+}
+
+size_t raster_work_size(const struct scene *s, uint16_t width, uint16_t height, uint16_t strip_rows)
+{
+    struct ras_ctx scratch;
+    struct work_carve c = { NULL, 0 };
+    (void)height;
+    if (carve(s, width, strip_rows, &scratch, &c)) return 0;
+    return c.off + WORK_ALIGN; /* slack to align the caller's pointer */
+}
+
+/* The render size's canvas: viewport height kept, width by aspect; the
+ * default path's clipping planes. */
+static void init_viewport(struct ras_ctx *rc)
+{
+    const struct scene *s = rc->s;
+    rc->cw = num_from_int(rc->w);
+    rc->vh = s->viewport_h;
+    rc->vw = num_div(num_mul_int(s->viewport_h, rc->w), num_from_int(rc->h));
+    rc->d = s->projection_d;
+    rc->unproj = num_div(num_mul(rc->cw, rc->d), rc->vw);
+    rc->scale2d = num_from_ratio(rc->h, s->canvas_h);
+    rc->def.near_z = rc->d;
+    /* side planes two pixels outside the viewport: the guard band keeps
+     * rounded clip points from landing inside the image edge */
+    rc->def.side_x = num_div(num_add(num_mul(rc->vw, NUM_HALF), num_div_int(num_mul_int(rc->vw, 2), rc->w)), rc->d);
+    rc->def.side_y = num_div(num_add(num_mul(rc->vh, NUM_HALF), num_div_int(num_mul_int(rc->vh, 2), rc->h)), rc->d);
+    rc->def.side_xk = num_sqrt(num_add(NUM_ONE, num_mul(rc->def.side_x, rc->def.side_x)));
+    rc->def.side_yk = num_sqrt(num_add(NUM_ONE, num_mul(rc->def.side_y, rc->def.side_y)));
+}
+
+/* Each texture's mip chain (default path) and RGB565 copy (fast path), in
+ * the memory carve() set aside. */
+static void init_textures(struct ras_ctx *rc)
+{
+    const struct scene *s = rc->s;
+    uint8_t *mm = rc->def.mip_mem;
+    for (uint16_t i = 0; i < s->ntextures; i++) {
+        size_t n = rc->book ? 0 : ras_mips_size(&s->textures[i]);
+        ras_mips_build(&s->textures[i], &rc->def.mips[i], n ? mm : NULL);
+        mm += work_round(n);
+    }
+    uint8_t *tm = rc->fast.tex_mem;
+    for (uint16_t i = 0; i < s->ntextures; i++) {
+        const struct ras_texture *tx = &s->textures[i];
+        size_t n = tex565_size(s, tx);
+        rc->fast.tex565[i].p = NULL;
+        if (!n) continue;
+        uint16_t *d = (uint16_t *)(void *)tm;
+        for (size_t k = 0; k < (size_t)tx->w * tx->h; k++) {
+            const uint8_t *c = tx->rgb + 3 * k;
+            /* round(c * L / 255), as rgb_to_565 rounds an integral channel */
+            uint32_t r = ((uint32_t)c[0] * 62 + 255) / 510, g = ((uint32_t)c[1] * 126 + 255) / 510,
+                     b = ((uint32_t)c[2] * 62 + 255) / 510;
+            d[k] = (uint16_t)(r << 11 | g << 5 | b);
+        }
+        rc->fast.tex565[i].p = d;
+        rc->fast.tex565[i].wlog2 = (uint8_t)log2_exact(tx->w);
+        rc->fast.tex565[i].hlog2 = (uint8_t)log2_exact(tx->h);
+        tm += work_round(n);
+    }
+}
+
+int raster_init(void *work, size_t work_size, const struct scene *s, uint16_t width, uint16_t height,
+                uint16_t strip_rows)
+{
+    if (work_size < raster_work_size(s, width, height, strip_rows)) return -1;
+    if (s->canvas_h == 0 || s->viewport_h <= 0 || s->projection_d <= 0) return -1;
+    struct ras_ctx *rc = ras_ctx_of(work);
+    memset(rc, 0, sizeof *rc);
+    struct work_carve c = { (uint8_t *)rc, 0 };
+    if (carve(s, width, strip_rows, rc, &c)) return -1;
+    rc->s = s;
+    rc->w = width;
+    rc->h = height;
+    rc->strip_rows = strip_rows;
+    rc->book = s->ras.book_exact;
+    rc->depth_bytes = (uint8_t)depth_bytes(s);
+    rc->def.affine_from = -1;
+    rc->def.sub_bits = s->ras.subpixel_bits ? (s->ras.subpixel_bits > 8 ? 8 : s->ras.subpixel_bits) : RAS_SUBPIXEL_BITS;
+    rc->def.shading = (uint8_t)eff_shading(s);
+    rc->fast.on = (uint8_t)fast_path(s);
+    rc->fast.persp_log2 = (uint8_t)(s->ras.persp_step == 8 ? 3 : (s->ras.persp_step == 32 ? 5 : 4));
+    rc->fast.phong = (uint8_t)phong_fast(s);
+    /* fast Phong's specular tables, one per exponent, and each instance's */
+    uint32_t exps[RAS_SPEC_MAX];
+    uint16_t nspec = spec_exponents(s, rc->fast.inst_spec, exps);
+    for (uint16_t k = 0; k < nspec; k++)
+        ras_spec_table(rc->fast.spec_tab + 257 * k, exps[k], rc->fast.spec_step + 2 * k);
+    init_viewport(rc);
+    init_textures(rc);
+    ras_ch15_init(rc);
+    return 0;
+}

@@ -94,7 +94,7 @@ RP_SRCS  := $(RP_DIR)/crt0.c $(RP_DIR)/board.c $(RP_DIR)/fw_board_rp2040.c hal/r
             $(FW_COMMON)
 RP_ASM   := $(RP_DIR)/hwdiv.S
 RP_CFLAGS := -mcpu=cortex-m0plus -mthumb -O2 -g -std=c11 $(WARN) -ffunction-sections -fdata-sections \
-             -ffreestanding -fno-common -DNUM_MODE=1 -DRP2040_SYS_MHZ=$(RP2040_SYS_MHZ) -DFW_STRIP_ROWS=$(FW_STRIP_ROWS) \
+             -ffreestanding -fno-common -DRENDER_HOST_OUTPUTS=0 -DNUM_MODE=1 -DRP2040_SYS_MHZ=$(RP2040_SYS_MHZ) -DFW_STRIP_ROWS=$(FW_STRIP_ROWS) \
              $(if $(filter 1,$(RP2040_RAM_TEXT)),-DRAS_RAM_TEXT) \
              $(FW_INC) -I$(RP_DIR) -Ihal/rp2040 $(FW_PINS) $(FW_EXTRA)
 RP_LDFLAGS := -mcpu=cortex-m0plus -mthumb --specs=nano.specs -nostartfiles -T $(RP_DIR)/rp2040.ld \
@@ -195,7 +195,7 @@ ST_SRCS  := $(ST_DIR)/crt0.c $(ST_DIR)/board.c $(ST_DIR)/fw_board_stm32f411.c ha
             $(FW_COMMON) $(FW_BOOK_SRCS)
 ST_CPU   := -mcpu=cortex-m4 -mthumb -mfloat-abi=hard -mfpu=fpv4-sp-d16
 ST_CFLAGS := $(ST_CPU) -O2 -g -std=c11 $(WARN) -ffunction-sections -fdata-sections -ffreestanding \
-             -fno-common -fno-math-errno -ffp-contract=off -DSTM32_HSE_MHZ=$(STM32_HSE_MHZ) \
+             -fno-common -DRENDER_HOST_OUTPUTS=0 -fno-math-errno -ffp-contract=off -DSTM32_HSE_MHZ=$(STM32_HSE_MHZ) \
              -DFW_STRIP_ROWS=$(FW_STRIP_ROWS) -DFW_WORK_CORES=1 \
              $(FW_INC) -I$(ST_DIR) -Ihal/stm32f4 $(STM32_PINS) $(FW_EXTRA)
 ST_LDFLAGS := $(ST_CPU) --specs=nano.specs -nostartfiles -T $(ST_DIR)/stm32f411.ld \

@@ -5,7 +5,7 @@
  * each triangle of the clipped fan through the fast span loops
  * (raster_fast.c) or the exact per-pixel fill (ras_fill_triangle with
  * ras_default_pixel). */
-#include "raster_int.h"
+#include "raster_fast.h"
 
 /* Colour levels of RGB565 in Q10, round(c * L * 1024 / 255); 0 when a
  * channel lies outside 0..255. */
@@ -40,14 +40,16 @@ static int fast_describe(const struct ras_ctx *rc, const struct ras_def_tri *dt,
         ft->spec_scale = st >= 0 ? rc->fast.spec_step[2 * st] : 0;
         ft->spec_umax = st >= 0 ? rc->fast.spec_step[2 * st + 1] : 0;
         if (dt->tex < 0) {
-            ft->kind = RAS_FT_PHONG;
+            ft->shade = SPAN_SHADE_PHONG;
+            ft->src = SPAN_SRC_CONST;
             return levels_q10(dt->color, ft);
         }
     }
     if (dt->tex >= 0) {
         const struct ras_tex565 *t5 = &rc->fast.tex565[dt->tex];
         if (!t5->p || !o->perspective_uv || dt->shading == SHADE_FLAT) return 0;
-        ft->kind = (uint8_t)(phong ? RAS_FT_PHONG_TEX : (gour ? RAS_FT_TEX_GOURAUD : RAS_FT_TEX));
+        ft->shade = (uint8_t)(phong ? SPAN_SHADE_PHONG : (gour ? SPAN_SHADE_LI : SPAN_SHADE_NONE));
+        ft->src = SPAN_SRC_TEX;
         ft->tex = t5->p;
         ft->wlog2 = t5->wlog2;
         ft->wmask = (1u << t5->wlog2) - 1;
@@ -59,10 +61,12 @@ static int fast_describe(const struct ras_ctx *rc, const struct ras_def_tri *dt,
         return 1;
     }
     if (gour) {
-        ft->kind = RAS_FT_GOURAUD;
+        ft->shade = SPAN_SHADE_RGB;   /* (SPAN_SHADE_LI when a level may saturate) */
+        ft->src = SPAN_SRC_CONST;
         return levels_q10(dt->color, ft);
     }
-    ft->kind = RAS_FT_FLAT;
+    ft->shade = SPAN_SHADE_NONE;
+    ft->src = SPAN_SRC_CONST;
     rgb c = dt->shading == SHADE_FLAT ? rgb_scale(dt->color, dt->flat_i) : dt->color;
     ft->c565 = rgb_to_565(c);
     rgb_to_888(c, ft->c888);

@@ -59,7 +59,7 @@ struct ras_mips { uint8_t levels; uint16_t w[RAS_MIP_MAX], h[RAS_MIP_MAX]; const
 
 #define RAS_FP_LIGHTS 8           /* lights of fast Phong at most */
 
-/* Fast Phong's lights of the current frame in integers (raster_fast.c). */
+/* Fast Phong's lights of the current frame in integers (raster_fphong.c). */
 struct ras_fphong {
     uint8_t ok;              /* every position fits Q(pq) below 2^14 this frame */
     int8_t pq;               /* camera-space positions in Q(pq) */
@@ -244,23 +244,17 @@ struct ras_def_tri {
 /* The default path's pixel (raster_pixel.c), a ras_pixel_fn. */
 void ras_default_pixel(struct ras_ctx *rc, int col, int row, const num *a, num z, void *ud);
 
-/* ---- the default path's fast triangle (raster_fast.c) ---- */
-#define RAS_FT_FLAT 0           /* (macros: the span template tests them with #if) */
-#define RAS_FT_GOURAUD 1
-#define RAS_FT_TEX 2
-#define RAS_FT_TEX_GOURAUD 3
-#define RAS_FT_GOURAUD_SAT 4      /* Gouraud whose colour x intensity may pass 255 */
-#define RAS_FT_PHONG 5            /* fast Phong: normal and position per pixel */
-#define RAS_FT_PHONG_TEX 6        /* the same times a texel */
+/* ---- the default path's fast triangle (raster_fast.c; its span loops
+ * raster_spans*.c, their parameters raster_fast.h; fast Phong raster_fphong.c) ---- */
 #define RAS_FAST_NA 8             /* attributes of the fast path at most */
 /* Lights of the frame into rc->fast.fp (after the camera-space lights and vertices). */
 void ras_fphong_frame(struct ras_ctx *rc);
-/* cos^e at 257 points in Q14 (raster_fast.c looks it up); step[0]
+/* cos^e at 257 points in Q14 (fast Phong looks it up); step[0]
  * receives the index step, Q16 index units per Q14 unit of 1 - cos, and
  * step[1] the value of 1 - cos (Q14) from which on the table gives 0. */
 void ras_spec_table(uint16_t t[257], uint32_t e, uint32_t step[2]);
 struct ras_fast_tri {
-    uint8_t kind;            /* RAS_FT_* */
+    uint8_t shade, src;      /* the span loop's SPAN_SHADE_*, SPAN_SRC_* (raster_fast.h) */
     uint16_t c565;           /* flat: the colour */
     uint8_t c888[3];         /* flat: the colour before quantisation (host output) */
     uint32_t kr, kg, kb;     /* Gouraud (saturating): colour in RGB565 levels, Q10 */

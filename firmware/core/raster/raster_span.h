@@ -1,19 +1,41 @@
 /* SPDX-License-Identifier: MIT */
-/* raster_span.h — one span loop of the fast path (raster_fast.c), included
- * once per feature combination with these macros set:
+/* raster_span.h — one span loop of the fast path, included once per
+ * combination of its parameters (raster_fast.h) with these macros set:
  *   SPAN_NAME   function name
+ *   SPAN_SHADE  SPAN_SHADE_NONE, _RGB, _LI, _PHONG
+ *   SPAN_SRC    SPAN_SRC_CONST, SPAN_SRC_TEX
  *   SPAN_DEPTH  0 (no depth test), 2 (16-bit entries), 4 (32-bit entries)
- *   SPAN_KIND   FT_FLAT, FT_GOURAUD, FT_GOURAUD_SAT, FT_TEX, FT_TEX_GOURAUD
- *   SPAN_EXTRA  1: also the host's outputs (rgb888, written map) and the
+ *   SPAN_HOST   1: also the host's outputs (rgb888, written map) and the
  *               count of pixels written
  * Each combination is compiled on its own so the inner loop holds only what
  * it needs; every variant computes the same RGB565 bits for the same inputs.
  * Draws the row span R of triangle T: attributes perspective-correct at the
  * span's first pixel, every T->seg pixels and at its last pixel, linear in
- * between. Returns the pixels written when SPAN_EXTRA, else 0. */
+ * between. Returns the pixels written when SPAN_HOST, else 0. The helpers
+ * it calls are raster_span_lib.h's. */
 
-/* the board's loops in fast memory; the host's variants (SPAN_EXTRA) never run there */
-#if SPAN_EXTRA
+#if SPAN_SHADE == SPAN_SHADE_RGB && SPAN_SRC != SPAN_SRC_CONST
+#error "RGB levels are interpolated for untextured triangles only"
+#endif
+/* attribute slots: Phong's normal and position, u and v, then the intensity or the levels */
+#define SPAN_A_UV (SPAN_SHADE == SPAN_SHADE_PHONG ? 6 : 0)
+#define SPAN_A_SH (SPAN_A_UV + (SPAN_SRC == SPAN_SRC_TEX ? 2 : 0))
+#if SPAN_SHADE == SPAN_SHADE_RGB
+#define SPAN_NA (SPAN_A_SH + 3)
+#elif SPAN_SHADE == SPAN_SHADE_LI
+#define SPAN_NA (SPAN_A_SH + 1)
+#else
+#define SPAN_NA SPAN_A_SH
+#endif
+/* the intensity (Q12) a pixel's colour or texel is scaled by */
+#if SPAN_SHADE == SPAN_SHADE_PHONG
+#define SPAN_LIGHT ras_fphong_light(T->ft, at)
+#else
+#define SPAN_LIGHT (li >> 8)
+#endif
+
+/* the board's loops in fast memory; the host's variants never run there */
+#if SPAN_HOST
 static uint32_t SPAN_NAME(const struct ftri *T, const struct frow *R)
 #else
 RAS_HOT static uint32_t SPAN_NAME(const struct ftri *T, const struct frow *R)
@@ -22,7 +44,7 @@ RAS_HOT static uint32_t SPAN_NAME(const struct ftri *T, const struct frow *R)
     uint16_t *px = R->px;
     int32_t n = R->n;
     uint32_t written = 0;
-#if SPAN_EXTRA
+#if SPAN_HOST
     uint8_t *o888 = R->rgb888, *owr = R->written;
 #endif
 #if SPAN_DEPTH
@@ -34,44 +56,25 @@ RAS_HOT static uint32_t SPAN_NAME(const struct ftri *T, const struct frow *R)
 #elif SPAN_DEPTH == 4
     uint32_t *zp = (uint32_t *)(void *)R->zb;
 #endif
-#if SPAN_KIND == FT_GOURAUD_SAT
-#define SPAN_NA 1
-#elif SPAN_KIND == FT_TEX
-#define SPAN_NA 2
-#elif SPAN_KIND == FT_PHONG
-#define SPAN_NA 6
-#elif SPAN_KIND == FT_PHONG_TEX
-#define SPAN_NA 8
-#else
-#define SPAN_NA 3
-#endif
-#if SPAN_KIND == FT_PHONG || SPAN_KIND == FT_PHONG_TEX
-#define SPAN_PHONG 1
-#else
-#define SPAN_PHONG 0
-#endif
-#if SPAN_KIND == FT_FLAT
+#if SPAN_NA == 0
     const uint16_t col = T->ft->c565;
 #else
     int32_t w1 = R->w1, w2 = R->w2, cur[SPAN_NA], nxt[SPAN_NA];
     persp_at(&T->pp, SPAN_NA, w1, w2, cur);
     const int32_t seg = T->seg;
 #endif
-#if SPAN_KIND == FT_PHONG
+#if SPAN_SRC == SPAN_SRC_CONST && (SPAN_SHADE == SPAN_SHADE_LI || SPAN_SHADE == SPAN_SHADE_PHONG)
     const uint32_t kr = T->ft->kr, kg = T->ft->kg, kb = T->ft->kb;
 #endif
-#if SPAN_KIND == FT_TEX || SPAN_KIND == FT_TEX_GOURAUD || SPAN_KIND == FT_PHONG_TEX
+#if SPAN_SRC == SPAN_SRC_TEX
     /* byte offsets of texels straight from the coordinates: u doubled, v
      * times twice the width, each masked to its integer bits */
     const uint8_t *tex = (const uint8_t *)T->ft->tex;
     const uint32_t um = T->ft->wmask << 1, vm = T->ft->hmask << (T->ft->wlog2 + 1), vs = T->ft->wlog2 + 1;
 #endif
-#if SPAN_KIND == FT_GOURAUD_SAT
-    const uint32_t kr = T->ft->kr, kg = T->ft->kg, kb = T->ft->kb;
-#endif
     while (n > 0) {
         int32_t m = n;
-#if SPAN_KIND != FT_FLAT
+#if SPAN_NA
         int32_t d[SPAN_NA];
         if (n > seg) {          /* a whole segment, to the next one's first pixel */
             m = seg;
@@ -90,29 +93,22 @@ RAS_HOT static uint32_t SPAN_NAME(const struct ftri *T, const struct frow *R)
             for (int j = 0; j < SPAN_NA; j++) { nxt[j] = cur[j]; d[j] = 0; }
         }
 #endif
-#if SPAN_KIND == FT_TEX || SPAN_KIND == FT_TEX_GOURAUD
-        uint32_t u = (uint32_t)cur[0] << 1, v = (uint32_t)cur[1] << vs;
-        const uint32_t du = (uint32_t)d[0] << 1, dv = (uint32_t)d[1] << vs;
-#elif SPAN_KIND == FT_PHONG_TEX
-        uint32_t u = (uint32_t)cur[6] << 1, v = (uint32_t)cur[7] << vs;
-        const uint32_t du = (uint32_t)d[6] << 1, dv = (uint32_t)d[7] << vs;
+#if SPAN_SRC == SPAN_SRC_TEX
+        uint32_t u = (uint32_t)cur[SPAN_A_UV] << 1, v = (uint32_t)cur[SPAN_A_UV + 1] << vs;
+        const uint32_t du = (uint32_t)d[SPAN_A_UV] << 1, dv = (uint32_t)d[SPAN_A_UV + 1] << vs;
 #endif
-#if SPAN_PHONG
+#if SPAN_SHADE == SPAN_SHADE_PHONG
         int32_t at[6];
         for (int j = 0; j < 6; j++) at[j] = cur[j];
-#endif
-#if SPAN_KIND == FT_GOURAUD
-        uint32_t cr = (uint32_t)cur[0], cg = (uint32_t)cur[1], cb = (uint32_t)cur[2];
-        const uint32_t dcr = (uint32_t)d[0], dcg = (uint32_t)d[1], dcb = (uint32_t)d[2];
-#elif SPAN_KIND == FT_GOURAUD_SAT
-        uint32_t li = (uint32_t)cur[0];
-        const uint32_t dli = (uint32_t)d[0];
-#elif SPAN_KIND == FT_TEX_GOURAUD
-        uint32_t li = (uint32_t)cur[2];
-        const uint32_t dli = (uint32_t)d[2];
+#elif SPAN_SHADE == SPAN_SHADE_RGB
+        uint32_t cr = (uint32_t)cur[SPAN_A_SH], cg = (uint32_t)cur[SPAN_A_SH + 1], cb = (uint32_t)cur[SPAN_A_SH + 2];
+        const uint32_t dcr = (uint32_t)d[SPAN_A_SH], dcg = (uint32_t)d[SPAN_A_SH + 1], dcb = (uint32_t)d[SPAN_A_SH + 2];
+#elif SPAN_SHADE == SPAN_SHADE_LI
+        uint32_t li = (uint32_t)cur[SPAN_A_SH];
+        const uint32_t dli = (uint32_t)d[SPAN_A_SH];
 #endif
         uint16_t *pe = px + m;
-#if SPAN_KIND == FT_GOURAUD && SPAN_DEPTH == 2 && !SPAN_EXTRA && defined(__ARM_ARCH_6M__) && defined(__GNUC__)
+#if SPAN_SHADE == SPAN_SHADE_RGB && SPAN_DEPTH == 2 && !SPAN_HOST && defined(__ARM_ARCH_6M__) && defined(__GNUC__)
         {
             /* ARMv6-M: the loop below by hand, every value in a register (the
              * same operations as the C loop, so the same bits) */
@@ -152,29 +148,23 @@ RAS_HOT static uint32_t SPAN_NAME(const struct ftri *T, const struct frow *R)
 #else
             {
 #endif
-#if SPAN_KIND == FT_FLAT
+#if SPAN_SRC == SPAN_SRC_CONST
+#if SPAN_SHADE == SPAN_SHADE_NONE
                 uint16_t c = col;
-#elif SPAN_KIND == FT_GOURAUD
+#elif SPAN_SHADE == SPAN_SHADE_RGB
                 /* channel levels in Q16, half a level added: no channel
                  * passes its top level (the triangle's intensities allow it) */
                 uint16_t c = (uint16_t)((cr >> 16) << 11 | (cg >> 16) << 5 | cb >> 16);
-#elif SPAN_KIND == FT_PHONG
-                uint32_t ii = phong_light(T->ft, at);       /* Q12 */
+#else
+                uint32_t ii = SPAN_LIGHT;                   /* Q12 */
                 uint16_t c = pack565_sat((kr * ii + (1u << 21)) >> 22, (kg * ii + (1u << 21)) >> 22,
                                          (kb * ii + (1u << 21)) >> 22);
-#elif SPAN_KIND == FT_GOURAUD_SAT
-                uint32_t ii = li >> 8;                      /* Q12 */
-                uint16_t c = pack565_sat((kr * ii + (1u << 21)) >> 22, (kg * ii + (1u << 21)) >> 22,
-                                         (kb * ii + (1u << 21)) >> 22);
-#else
-                uint16_t c = *(const uint16_t *)(const void *)(tex + (((v >> 16) & vm) | ((u >> 16) & um)));
-#if SPAN_KIND == FT_TEX_GOURAUD || SPAN_KIND == FT_PHONG_TEX
-                {
-#if SPAN_KIND == FT_PHONG_TEX
-                    uint32_t ii = phong_light(T->ft, at);   /* Q12 */
-#else
-                    uint32_t ii = li >> 8;                  /* Q12 */
 #endif
+#else /* SPAN_SRC_TEX */
+                uint16_t c = *(const uint16_t *)(const void *)(tex + (((v >> 16) & vm) | ((u >> 16) & um)));
+#if SPAN_SHADE != SPAN_SHADE_NONE
+                {
+                    uint32_t ii = SPAN_LIGHT;               /* Q12 */
                     c = pack565_sat(((uint32_t)(c >> 11) * ii + (1u << 11)) >> 12,
                                     ((uint32_t)((c >> 5) & 63) * ii + (1u << 11)) >> 12,
                                     ((uint32_t)(c & 31) * ii + (1u << 11)) >> 12);
@@ -182,21 +172,21 @@ RAS_HOT static uint32_t SPAN_NAME(const struct ftri *T, const struct frow *R)
 #endif
 #endif
                 *px = c;
-#if SPAN_EXTRA
+#if SPAN_HOST
                 written++;
                 if (o888) {
-#if SPAN_KIND == FT_FLAT
+#if SPAN_NA == 0
                     o888[0] = T->ft->c888[0];
                     o888[1] = T->ft->c888[1];
                     o888[2] = T->ft->c888[2];
 #else
-                    ras_565_to_888(c, o888);
+                    span_565_to_888(c, o888);
 #endif
                 }
                 if (owr) *owr = 1;
 #endif
             }
-#if SPAN_EXTRA
+#if SPAN_HOST
             if (o888) o888 += 3;
             if (owr) owr++;
 #endif
@@ -204,24 +194,23 @@ RAS_HOT static uint32_t SPAN_NAME(const struct ftri *T, const struct frow *R)
             zp++;
             z += dz;
 #endif
-#if SPAN_KIND == FT_TEX || SPAN_KIND == FT_TEX_GOURAUD || SPAN_KIND == FT_PHONG_TEX
+#if SPAN_SRC == SPAN_SRC_TEX
             u += du;
             v += dv;
 #endif
-#if SPAN_PHONG
+#if SPAN_SHADE == SPAN_SHADE_PHONG
             for (int j = 0; j < 6; j++) at[j] += d[j];
-#endif
-#if SPAN_KIND == FT_GOURAUD
+#elif SPAN_SHADE == SPAN_SHADE_RGB
             cr += dcr;
             cg += dcg;
             cb += dcb;
-#elif SPAN_KIND == FT_GOURAUD_SAT || SPAN_KIND == FT_TEX_GOURAUD
+#elif SPAN_SHADE == SPAN_SHADE_LI
             li += dli;
 #endif
         }
 #endif
         n -= m;
-#if SPAN_KIND != FT_FLAT
+#if SPAN_NA
         for (int j = 0; j < SPAN_NA; j++) cur[j] = nxt[j];
 #endif
     }
@@ -230,7 +219,7 @@ RAS_HOT static uint32_t SPAN_NAME(const struct ftri *T, const struct frow *R)
 
 #undef SPAN_NAME
 #undef SPAN_DEPTH
-#undef SPAN_KIND
-#undef SPAN_EXTRA
+#undef SPAN_A_UV
+#undef SPAN_A_SH
 #undef SPAN_NA
-#undef SPAN_PHONG
+#undef SPAN_LIGHT

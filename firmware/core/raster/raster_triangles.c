@@ -170,6 +170,50 @@ static int64_t edge_bias(int32_t ax, int32_t ay, int32_t bx, int32_t by)
     return (dy < 0 || (dy == 0 && dx > 0)) ? 0 : -1;
 }
 
+/* The depth test of pixel di at depth d (near/z, before clamping) under
+ * the strip's depth function; a passing RAS_DEPTH_LESS_WRITE pixel stores
+ * its depth. */
+static inline int depth_test(const struct ras_ctx *rc, size_t di, int64_t d)
+{
+    if (d < 0) d = 0;
+    if (d > (int64_t)UINT32_MAX) d = UINT32_MAX;
+    uint32_t cur, dv = (uint32_t)d;
+    if (rc->depth_bytes == 2) {
+        dv >>= 16;
+        cur = ((uint16_t *)(void *)rc->depth)[di];
+    } else {
+        cur = ((uint32_t *)(void *)rc->depth)[di];
+    }
+    if (rc->cur.depth_func == RAS_DEPTH_EQUAL) return dv == cur;
+    if (rc->cur.depth_func == RAS_DEPTH_BEHIND) return dv <= cur; /* not nearer: depth-fail counts the surface's own cap */
+    if (dv <= cur) return 0;
+    if (rc->depth_bytes == 2) ((uint16_t *)(void *)rc->depth)[di] = (uint16_t)dv;
+    else ((uint32_t *)(void *)rc->depth)[di] = dv;
+    return 1;
+}
+
+/* A pixel's z and its na attributes a[] from its screen barycentrics l1,
+ * l2: perspective-correct (weights b_i/z_i), the ones from affine_from on
+ * screen-linear. da1, da2: corner 1's and 2's attributes less corner 0's. */
+static inline num pixel_attrs(const struct ras_ctx *rc, const struct ras_sv *v0, const struct ras_sv *v1,
+                              const struct ras_sv *v2, int na, num l1, num l2, const num *da1, const num *da2,
+                              num *a)
+{
+    num l0 = num_sub(num_sub(NUM_ONE, l1), l2);
+    num p0 = num_mul(l0, v0->iz), p1 = num_mul(l1, v1->iz), p2 = num_mul(l2, v2->iz);
+    num iz = num_add(num_add(p0, p1), p2);
+    num z = num_recip(iz);
+    if (na) {
+        num q1 = num_mul(p1, z), q2 = num_mul(p2, z);
+        int nf = rc->def.affine_from >= 0 && rc->def.affine_from < na ? rc->def.affine_from : na;
+        for (int j = 0; j < nf; j++)
+            a[j] = num_add(v0->a[j], num_add(num_mul(q1, da1[j]), num_mul(q2, da2[j])));
+        for (int j = nf; j < na; j++) /* screen-linear (the book's linear u, v) */
+            a[j] = num_add(v0->a[j], num_add(num_mul(l1, da1[j]), num_mul(l2, da2[j])));
+    }
+    return z;
+}
+
 uint32_t ras_fill_triangle(struct ras_ctx *rc, const struct ras_sv *v0, const struct ras_sv *v1,
                            const struct ras_sv *v2, int na, ras_pixel_fn fn, void *ud)
 {
@@ -225,45 +269,14 @@ uint32_t ras_fill_triangle(struct ras_ctx *rc, const struct ras_sv *v0, const st
         for (int32_t c = c0; c <= c1; c++) {
             if (w0 + b0 >= 0 && w1 + b1 >= 0 && w2 + b2 >= 0) {
                 size_t di = (size_t)(r - t->y0) * rc->w + (size_t)c;
-                int pass = 1;
-                if (depth) {
-                    int64_t dz = zq + (zq < 0 && zr != 0);   /* floor -> toward zero */
-                    int64_t d = (int64_t)v0->depth + dz;
-                    if (d < 0) d = 0;
-                    if (d > (int64_t)UINT32_MAX) d = UINT32_MAX;
-                    uint32_t cur, dv = (uint32_t)d;
-                    if (rc->depth_bytes == 2) {
-                        dv >>= 16;
-                        cur = ((uint16_t *)(void *)rc->depth)[di];
-                    } else {
-                        cur = ((uint32_t *)(void *)rc->depth)[di];
-                    }
-                    if (rc->cur.depth_func == RAS_DEPTH_EQUAL) pass = dv == cur;
-                    else if (rc->cur.depth_func == RAS_DEPTH_BEHIND) pass = dv <= cur; /* not nearer: depth-fail counts the surface's own cap */
-                    else if (dv > cur) {
-                        if (rc->depth_bytes == 2) ((uint16_t *)(void *)rc->depth)[di] = (uint16_t)dv;
-                        else ((uint32_t *)(void *)rc->depth)[di] = dv;
-                    } else pass = 0;
-                }
+                /* (the quotient floor -> toward zero) */
+                int pass = !depth || depth_test(rc, di, (int64_t)v0->depth + zq + (zq < 0 && zr != 0));
                 if (pass && (!fn || na < 0)) {
                     if (fn) fn(rc, c, r, NULL, NUM_ZERO, ud);
                     written++;
                 } else if (pass) {
-                    /* screen barycentrics, then perspective weights b_i/z_i */
-                    num l1 = ras_ratio(w1, area), l2 = ras_ratio(w2, area);
-                    num l0 = num_sub(num_sub(NUM_ONE, l1), l2);
-                    num p0 = num_mul(l0, v0->iz), p1 = num_mul(l1, v1->iz), p2 = num_mul(l2, v2->iz);
-                    num iz = num_add(num_add(p0, p1), p2);
-                    num z = num_recip(iz);
                     num a[RAS_MAX_ATTR];
-                    if (na) {
-                        num q1 = num_mul(p1, z), q2 = num_mul(p2, z);
-                        int nf = rc->def.affine_from >= 0 && rc->def.affine_from < na ? rc->def.affine_from : na;
-                        for (int j = 0; j < nf; j++)
-                            a[j] = num_add(v0->a[j], num_add(num_mul(q1, da1[j]), num_mul(q2, da2[j])));
-                        for (int j = nf; j < na; j++) /* screen-linear (the book's linear u, v) */
-                            a[j] = num_add(v0->a[j], num_add(num_mul(l1, da1[j]), num_mul(l2, da2[j])));
-                    }
+                    num z = pixel_attrs(rc, v0, v1, v2, na, ras_ratio(w1, area), ras_ratio(w2, area), da1, da2, a);
                     fn(rc, c, r, a, z, ud);
                     written++;
                 }

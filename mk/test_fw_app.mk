@@ -39,3 +39,7 @@ TESTS     += tests/test_includes.py
 
 # Every source file carries its licence (SPDX-License-Identifier: MIT).
 TESTS     += tests/test_spdx.py
+
+# The C files of tools/clang-format.files are as clang-format writes them
+# with .clang-format (clang-format from tools/deps.sh test).
+TESTS     += tools/format_check.sh

@@ -17,8 +17,9 @@ examples_pkgs="$firmware_pkgs qemu-system-arm"
 # libFuzzer's runtime is only recommended by clang, and installs skip recommends.
 # python3-pip: pip downloads the gpiod source distribution (libgpiod 2, mk/pi.mk).
 # libsdl2-dev: host_sim --window; xvfb, xauth, x11-apps (xwd): its test on a virtual display.
+# clang-format: tools/format_check.sh, the C style of the files in tools/clang-format.files.
 test_pkgs="$run_pkgs $firmware_pkgs $flash_pkgs $bench_pkgs clang libclang-rt-dev python3 python3-pip \
-  libsdl2-dev xvfb xauth x11-apps"
+  libsdl2-dev xvfb xauth x11-apps clang-format"
 
 case "$group" in
   run) want=$run_pkgs ;;

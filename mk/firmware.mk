@@ -12,10 +12,10 @@
 #
 # Build options (make VAR=value): FW_PINS (extra -D pin options, e.g.
 # "-DRP2040_PIN_DC=8"), RP2040_SYS_MHZ (125 or 133), RP2040_RAM_TEXT (1, the
-# default: the rasterizer's span loops, RAS_HOT in firmware/core/raster_int.h,
-# are copied to SRAM and run from there instead of through the 16 KB XIP
-# cache; 0: from flash), FW_SCENE_SRCS (the scene table; default the built-in
-# placeholder), FW_EXTRA (more -D flags).
+# default: the rasterizer's span loops, RAS_HOT in
+# firmware/core/raster/raster_int.h, are copied to SRAM and run from there
+# instead of through the 16 KB XIP cache; 0: from flash), FW_SCENE_SRCS (the
+# scene table; default the built-in placeholder), FW_EXTRA (more -D flags).
 
 ARM_CC      ?= arm-none-eabi-gcc
 ARM_OBJCOPY ?= arm-none-eabi-objcopy

@@ -167,7 +167,13 @@ BENCH_DEPS :=
 .SECONDARY:
 all: programs
 
-include $(sort $(wildcard mk/*.mk))
+# The fragments in the order of their names, but for the firmware's: the
+# board images (mk/firmware.mk) and the fragments that use their variables
+# when they are read, in this order, where mk/firmware.mk's name puts it.
+FW_FRAGMENTS := mk/firmware.mk mk/flasher.mk mk/rp2040sim.mk mk/bench-rp2040.mk
+MK_FRAGMENTS := $(patsubst mk/firmware.mk,$(FW_FRAGMENTS),$(filter-out $(filter-out mk/firmware.mk,$(FW_FRAGMENTS)),\
+                  $(sort $(wildcard mk/*.mk))))
+include $(MK_FRAGMENTS)
 
 $(foreach v,$(VARIANTS),$(foreach m,$(COMPILE_MODES),$(eval $(call COMPILE_RULES,$(v),$(m)))))
 

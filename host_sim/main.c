@@ -531,23 +531,49 @@ static void out_name(char *buf, size_t len, const char *pattern, unsigned f)
 #endif
 }
 
-static int run(const struct opts *o, struct core *c, struct core *ref, struct panel_out **pp,
-               struct bufs *b)
-{
-    char err[512];
-    char name[256];
-    int rc;
-    const char *panel = o->panel ? o->panel : panel_out_default();
-    const char *backend = o->backend ? o->backend : "sim";
-    const char *numeric = o->numeric ? o->numeric : "fixed";
-    const int none = !strcmp(panel, "none");
+/* What run() works out once, shared by its steps. */
+struct run_state {
+    const struct opts *o;
+    struct core *c, *ref;      /* the renderer; the --compare reference */
+    struct panel_out **pp;
+    struct bufs *b;
+    const char *panel, *backend, *numeric;   /* the options or their defaults */
+    int none;                  /* --panel none */
+    int pattern;               /* --out names a file per frame */
+    const char *outs[3];       /* --out (frame 0's with a pattern), --out-raw, --out-rgb888 */
+    char frame_out[4096];      /* the file of the frame written (pattern) */
+    char name[256];            /* the scene's name (scene_name) */
+    unsigned w, h, rows;       /* render size, rows per strip */
+    size_t npx;
+    unsigned frames;           /* frames rendered (fewer if --loop is stopped) */
+    unsigned anim;             /* the scene's animation's frames (at least 1) */
+    struct live lv;
+    char overlay[32];          /* --fps-overlay: the text drawn */
+    uint64_t total_render_us;
+    struct compare_result cmp; /* --compare, the last frame */
+};
 
-    /* Usage checks that need no scene first, so a bad command fails at once. */
+/* What one frame measured. */
+struct frame_meas {
+    uint64_t render_us, flush_us;
+    uint64_t coarse_us;        /* --progressive: the coarse pass */
+    unsigned long coarse_rays;
+    uint64_t spi0, bus0;       /* the panel's counters before the frame */
+    uint32_t sat0;             /* the core's saturations before it */
+    struct render_stats rs;
+};
+
+/* Usage checks that need no scene first, so a bad command fails at once;
+ * then every output's destination. */
+static int check_usage(struct run_state *r)
+{
+    const struct opts *o = r->o;
+    char err[512];
+    int rc;
     if (o->out && img_format_of(o->out) == IMG_NONE)
         return fail(EXIT_USAGE, "--out %s: the file name must end in .png or .ppm", o->out);
-    const int pattern = o->out ? out_pattern(o->out) : 0;
-    char frame_out[4096];
-    if (pattern < 0)
+    r->pattern = o->out ? out_pattern(o->out) : 0;
+    if (r->pattern < 0)
         return fail(EXIT_USAGE, "--out %s: a per-frame name takes one %%d or %%0Nd (N 1..9), no other %%", o->out);
     if (o->loop && (o->compare || o->frames))
         return fail(EXIT_USAGE, "--loop renders the scene's own frames: not with %s", o->compare ? "--compare" : "--frames");
@@ -559,21 +585,32 @@ static int run(const struct opts *o, struct core *c, struct core *ref, struct pa
         return fail(EXIT_USAGE, "--window-scale needs --window");
     if (o->out_rgb888 && img_format_of(o->out_rgb888) != IMG_PPM)
         return fail(EXIT_USAGE, "--out-rgb888 %s: the file name must end in .ppm", o->out_rgb888);
-    if (o->fault && none)
+    if (o->fault && r->none)
         return fail(EXIT_USAGE, "--inject-fault needs an emulated panel, not --panel none");
-    if (o->compare && !strcmp(backend, "linux"))
+    if (o->compare && !strcmp(r->backend, "linux"))
         return fail(EXIT_USAGE, "--compare needs --backend sim");
-    if (strcmp(backend, "linux") && (o->spi_dev || o->gpio_chip || o->spi_hz || o->spi_mode >= 0 ||
-                                     o->dc != PANEL_OUT_PIN_DEFAULT || o->rst != PANEL_OUT_PIN_DEFAULT ||
-                                     o->bl != PANEL_OUT_PIN_DEFAULT))
+    if (strcmp(r->backend, "linux") && (o->spi_dev || o->gpio_chip || o->spi_hz || o->spi_mode >= 0 ||
+                                        o->dc != PANEL_OUT_PIN_DEFAULT || o->rst != PANEL_OUT_PIN_DEFAULT ||
+                                        o->bl != PANEL_OUT_PIN_DEFAULT))
         return fail(EXIT_USAGE, "--spi-dev, --spi-hz, --spi-mode, --gpio-chip, --dc, --rst and --bl "
                                 "need --backend linux");
-    if (pattern) out_name(frame_out, sizeof frame_out, o->out, 0);
-    const char *outs[3] = { pattern ? frame_out : o->out, o->out_raw, o->out_rgb888 };
+    if (r->pattern) out_name(r->frame_out, sizeof r->frame_out, o->out, 0);
+    r->outs[0] = r->pattern ? r->frame_out : o->out;
+    r->outs[1] = o->out_raw;
+    r->outs[2] = o->out_rgb888;
     for (int i = 0; i < 3; i++)
-        if (outs[i] && (rc = img_check_dest(outs[i], err, sizeof err)))
+        if (r->outs[i] && (rc = img_check_dest(r->outs[i], err, sizeof err)))
             return fail(rc, "%s", err);
+    return EXIT_OK;
+}
 
+/* The scene file: there, not overwritten by an output, read, and parsed by
+ * r->c (the double core for fixed point: core_pick picks the format). */
+static int open_scene(struct run_state *r)
+{
+    const struct opts *o = r->o;
+    char err[512];
+    int rc;
     struct stat st;
     if (stat(o->scene, &st))
         return fail(EXIT_USAGE, "%s: cannot open scene: %s", o->scene, strerror(errno));
@@ -582,12 +619,12 @@ static int run(const struct opts *o, struct core *c, struct core *ref, struct pa
     /* an output must not overwrite the scene, nor two outputs each other */
     for (int i = 0; i < 3; i++) {
         struct stat so;
-        if (!outs[i]) continue;
-        if (!stat(outs[i], &so) && so.st_dev == st.st_dev && so.st_ino == st.st_ino && S_ISREG(st.st_mode))
-            return fail(EXIT_USAGE, "%s: is the scene file; refusing to overwrite it", outs[i]);
+        if (!r->outs[i]) continue;
+        if (!stat(r->outs[i], &so) && so.st_dev == st.st_dev && so.st_ino == st.st_ino && S_ISREG(st.st_mode))
+            return fail(EXIT_USAGE, "%s: is the scene file; refusing to overwrite it", r->outs[i]);
         for (int j = 0; j < i; j++)
-            if (outs[j] && !strcmp(outs[i], outs[j]))
-                return fail(EXIT_USAGE, "%s: given as two outputs", outs[i]);
+            if (r->outs[j] && !strcmp(r->outs[i], r->outs[j]))
+                return fail(EXIT_USAGE, "%s: given as two outputs", r->outs[i]);
     }
     if ((rc = core_api_double.scene_read(o->scene, &scene_text, &scene_len, err, sizeof err))) {
         fprintf(stderr, "%s\n", err);
@@ -595,17 +632,25 @@ static int run(const struct opts *o, struct core *c, struct core *ref, struct pa
     }
     /* The scene's canvas (for --panel none) from the double parse, which holds
      * any scene the format analysis may accept. */
-    if ((rc = core_open(c, !strcmp(numeric, "fixed") ? &core_api_double : core_api_by_name(numeric), o->scene)))
-        return rc;
+    return core_open(r->c, !strcmp(r->numeric, "fixed") ? &core_api_double : core_api_by_name(r->numeric),
+                     o->scene);
+}
 
+/* The render size (--size, the panel's or the scene's canvas), the strip
+ * height, and for fixed point the core of the scene's format. */
+static int pick_core(struct run_state *r)
+{
+    const struct opts *o = r->o;
+    struct core *c = r->c;
+    int rc;
     unsigned w = o->width, h = o->height;
     if (!o->has_size) {
         uint16_t nw, nh;
-        if (none) {
+        if (r->none) {
             nw = c->info.canvas_w;
             nh = c->info.canvas_h;
-        } else if (panel_out_native(panel, &nw, &nh)) {
-            return fail(EXIT_USAGE, "unknown panel '%s'", panel);
+        } else if (panel_out_native(r->panel, &nw, &nh)) {
+            return fail(EXIT_USAGE, "unknown panel '%s'", r->panel);
         }
         w = nw;
         h = nh;
@@ -613,25 +658,38 @@ static int run(const struct opts *o, struct core *c, struct core *ref, struct pa
             return fail(EXIT_USAGE, "%s: canvas size %ux%u is not renderable (1..%d a side)",
                         o->scene, w, h, MAX_SIDE);
     }
-    unsigned rows = o->strip_rows ? o->strip_rows : STRIP_ROWS_DEFAULT;
-    if (rows > h) rows = h;
-    if (!strcmp(numeric, "fixed")) {
+    r->w = w;
+    r->h = h;
+    r->npx = (size_t)w * h;
+    r->rows = o->strip_rows ? o->strip_rows : STRIP_ROWS_DEFAULT;
+    if (r->rows > h) r->rows = h;
+    if (!strcmp(r->numeric, "fixed")) {
         const struct core_api *api;
         unsigned fits;
-        if ((rc = core_pick(o, numeric, w, h, &api, &fits))) return rc;
+        if ((rc = core_pick(o, r->numeric, w, h, &api, &fits))) return rc;
         core_close(c);
         memset(c, 0, sizeof *c);
         if ((rc = core_open(c, api, o->scene))) return rc;
         c->api->set_fits(c->scene, fits);
     }
+    return EXIT_OK;
+}
 
-    struct panel_out_opts po = { .panel = panel, .backend = backend, .fault = o->fault,
-                                 .width = (uint16_t)w, .height = (uint16_t)h,
+/* The panel and the renderer at the render size; warnings about the scene
+ * and the command, once every check has passed. */
+static int open_panel(struct run_state *r)
+{
+    const struct opts *o = r->o;
+    const struct core *c = r->c;
+    char err[512];
+    int rc;
+    struct panel_out_opts po = { .panel = r->panel, .backend = r->backend, .fault = o->fault,
+                                 .width = (uint16_t)r->w, .height = (uint16_t)r->h,
                                  .rotation = (uint8_t)o->rotation, .spi_dev = o->spi_dev,
                                  .gpio_chip = o->gpio_chip, .spi_hz = o->spi_hz, .spi_mode = o->spi_mode,
                                  .dc = o->dc, .rst = o->rst, .bl = o->bl };
-    if ((rc = panel_out_open(pp, &po, err, sizeof err))) return fail(rc, "%s", err);
-    if ((rc = core_init(c, w, h, rows))) return rc;
+    if ((rc = panel_out_open(r->pp, &po, err, sizeof err))) return fail(rc, "%s", err);
+    if ((rc = core_init(r->c, r->w, r->h, r->rows))) return rc;
     /* valid, but almost certainly not what was meant: said (once every check
      * has passed, so an error stays the only line), not refused */
     if (c->info.uses_lights && c->info.nlights == 0 && (c->info.kind == SCENE_RAYTRACE || c->info.ninstances))
@@ -643,174 +701,269 @@ static int run(const struct opts *o, struct core *c, struct core *ref, struct pa
     if (!o->out && !o->out_raw && !o->out_rgb888 && !o->stats && !o->summary && !o->compare && !o->loop)
         fprintf(stderr, "host_sim: warning: no output given (--out, --out-raw, --out-rgb888, --stats, --summary): "
                         "the frame is rendered and discarded\n");
+    return EXIT_OK;
+}
 
-
-    size_t npx = (size_t)w * h;
+/* The frame buffers, the frame count (--loop: its signals) and what --window,
+ * --fps-overlay, --flush dirty and the progress line add to a frame. */
+static int setup_frames(struct run_state *r)
+{
+    const struct opts *o = r->o;
+    struct bufs *b = r->b;
+    char err[512];
+    int rc;
+    size_t npx = r->npx;
     int want_rgb = o->out_rgb888 || o->compare;
-    b->strip = malloc((size_t)rows * w * sizeof *b->strip);
+    b->strip = malloc((size_t)r->rows * r->w * sizeof *b->strip);
     b->fb = malloc(npx * sizeof *b->fb);
     b->rgb = want_rgb ? malloc(npx * 3) : NULL;
     if (!b->strip || !b->fb || (want_rgb && !b->rgb))
-        return fail(EXIT_INTERNAL, "out of memory for a %ux%u image", w, h);
+        return fail(EXIT_INTERNAL, "out of memory for a %ux%u image", r->w, r->h);
     memset(b->fb, 0, npx * sizeof *b->fb);
     if (want_rgb) memset(b->rgb, 0, npx * 3);
 
-    scene_name(o->scene, name, sizeof name);
-    unsigned frames = o->frames ? o->frames : 1;
+    scene_name(o->scene, r->name, sizeof r->name);
+    r->frames = o->frames ? o->frames : 1;
     /* --loop: the scene's animation over and over (frame index f mod its
      * frames), until --loop-frames or a signal */
-    const unsigned anim = c->info.frames ? c->info.frames : 1;
+    r->anim = r->c->info.frames ? r->c->info.frames : 1;
     if (o->loop) {
-        frames = o->loop_frames ? o->loop_frames : UINT32_MAX;
+        r->frames = o->loop_frames ? o->loop_frames : UINT32_MAX;
         loop_stop = 0;
         loop_signals();
     }
-    struct live lv = { 0 };
     if (o->window) {
         char title[300];
-        snprintf(title, sizeof title, "host_sim %s", name);
+        snprintf(title, sizeof title, "host_sim %s", r->name);
         if (!(b->glass = malloc(npx * sizeof *b->glass)))
-            return fail(EXIT_INTERNAL, "out of memory for a %ux%u image", w, h);
-        if ((rc = window_open(&b->win, title, w, h, o->window_scale ? o->window_scale : 2, err, sizeof err)))
+            return fail(EXIT_INTERNAL, "out of memory for a %ux%u image", r->w, r->h);
+        if ((rc = window_open(&b->win, title, r->w, r->h, o->window_scale ? o->window_scale : 2, err, sizeof err)))
             return fail(rc, "%s", err);
-        lv.win = b->win;
-        lv.glass = b->glass;
+        r->lv.win = b->win;
+        r->lv.glass = b->glass;
     }
-    char overlay[32] = "";
-    lv.progress = isatty(STDERR_FILENO);
-    if (o->fps_overlay) lv.overlay = overlay;
+    r->lv.progress = isatty(STDERR_FILENO);
+    if (o->fps_overlay) r->lv.overlay = r->overlay;
     if (o->flush == 2 || (o->loop && o->flush == 0)) {
         /* panel_init cleared the controller's memory to black */
         if (!(b->shown = calloc(npx, sizeof *b->shown)))
-            return fail(EXIT_INTERNAL, "out of memory for a %ux%u image", w, h);
-        lv.shown = b->shown;
+            return fail(EXIT_INTERNAL, "out of memory for a %ux%u image", r->w, r->h);
+        r->lv.shown = b->shown;
     }
-    uint64_t total_render_us = 0;
-    for (unsigned f = 0; f < frames; f++) {
-        const unsigned fi = o->loop ? f % anim : f;
-        lv.frame_t0 = now_us();
-        lv.rects = 0;
-        struct render_stats rs = { 0 };
-        uint32_t sat0 = *c->api->saturations;
-        uint64_t spi0 = panel_out_spi_bytes(*pp), bus0 = panel_out_bus_us(*pp);
-        uint64_t render_us = 0, flush_us = 0, t0 = now_us();
-        if (c->api->begin_frame(&c->ctx, (uint16_t)fi))
-            return fail(EXIT_INTERNAL, "renderer failed to begin frame %u", fi);
-        render_us += now_us() - t0;
-        /* progressive: the coarse pass to the panel first, then the full one */
-        uint64_t coarse_us = 0;
-        unsigned long coarse_rays = 0;
-        if (o->progressive && c->api->set_pass(&c->ctx, RENDER_PASS_COARSE) == 0) {
-            struct render_stats cs = { 0 };
-            uint64_t coarse_flush_us = 0;
-            if ((rc = send_strips(c, *pp, b->strip, NULL, fi, &cs, &coarse_us, &coarse_flush_us, &lv))) return rc;
-            coarse_rays = cs.rays;
-            render_us += coarse_us;
-            c->api->set_pass(&c->ctx, RENDER_PASS_FULL);
-        }
-        if ((rc = send_strips(c, *pp, b->strip, b->rgb, fi, &rs, &render_us, &flush_us, &lv))) return rc;
-        total_render_us += render_us;
-        if (o->stats) {
-            printf("{\"scene\":");
-            json_str(name);
-            printf(",\"file\":");
-            json_str(o->scene);
-            printf(",\"numeric\":\"%s\",", c->api->numeric);
-            if (c->api->num_frac) printf("\"num_frac\":%d,", c->api->num_frac);
-            else printf("\"num_frac\":null,");
-            printf("\"panel\":\"%s\",\"backend\":\"%s\",\"width\":%u,"
-                   "\"height\":%u,\"frame\":%u,\"strip_rows\":%u,\"render_us\":%llu,"
-                   "\"flush_us\":%llu,\"bus_us\":%llu,\"pixels_written\":%lu,\"spi_bytes\":%llu,"
-                   "\"triangles_in\":%lu,\"triangles_drawn\":%lu,\"rays\":%lu,\"saturations\":%lu",
-                   panel, backend, w, h, f, rows, (unsigned long long)render_us,
-                   (unsigned long long)flush_us, (unsigned long long)(panel_out_bus_us(*pp) - bus0),
-                   (unsigned long)rs.pixels_written,
-                   (unsigned long long)(panel_out_spi_bytes(*pp) - spi0),
-                   (unsigned long)rs.triangles_in, (unsigned long)rs.triangles_drawn,
-                   (unsigned long)rs.rays, (unsigned long)(uint32_t)(*c->api->saturations - sat0));
-            if (o->progressive) printf(",\"coarse_us\":%llu,\"coarse_rays\":%lu", (unsigned long long)coarse_us, coarse_rays);
-            if (!(o->compare && f + 1 == frames)) printf("}\n");
-        }
-        uint64_t frame_us = now_us() - lv.frame_t0;
-        double fps = frame_us ? 1e6 / (double)frame_us : 0.0;
-        if (o->fps_overlay) snprintf(overlay, sizeof overlay, "%.1f fps", fps);
-        if (pattern) {
-            /* this frame's glass, as --out does after the last one */
-            out_name(frame_out, sizeof frame_out, o->out, f);
-            if ((rc = panel_out_read(*pp, b->fb, err, sizeof err))) return fail(rc, "%s", err);
-            if ((rc = img_write_565(frame_out, img_format_of(frame_out), b->fb, w, h, w, err, sizeof err)))
-                return fail(rc, "%s", err);
-            if (o->loop) loop_signals();   /* (imgio's own handlers while it writes) */
-        }
-        if (o->loop) {
-            printf("frame %u (%u/%u): %.1f fps, %.2f ms, %llu SPI bytes, %u rects\n", f, fi + 1, anim, fps,
-                   (double)frame_us / 1000.0, (unsigned long long)(panel_out_spi_bytes(*pp) - spi0), lv.rects);
-            if (fflush(stdout)) return fail(EXIT_INTERNAL, "stdout: write failed");
-            if (loop_stop) {
-                frames = f + 1;
-                break;
-            }
-        }
-    }
+    return EXIT_OK;
+}
 
-    if ((rc = panel_out_finish(*pp, err, sizeof err))) return fail(rc, "%s", err);
-    if (b->win && !o->loop) {
+/* Renders frame fi of the scene to the panel: with --progressive the
+ * coarse pass first, then the full one. */
+static int render_frame(struct run_state *r, unsigned fi, struct frame_meas *m)
+{
+    struct core *c = r->c;
+    int rc;
+    r->lv.frame_t0 = now_us();
+    r->lv.rects = 0;
+    m->sat0 = *c->api->saturations;
+    m->spi0 = panel_out_spi_bytes(*r->pp);
+    m->bus0 = panel_out_bus_us(*r->pp);
+    uint64_t t0 = now_us();
+    if (c->api->begin_frame(&c->ctx, (uint16_t)fi))
+        return fail(EXIT_INTERNAL, "renderer failed to begin frame %u", fi);
+    m->render_us += now_us() - t0;
+    if (r->o->progressive && c->api->set_pass(&c->ctx, RENDER_PASS_COARSE) == 0) {
+        struct render_stats cs = { 0 };
+        uint64_t coarse_flush_us = 0;
+        if ((rc = send_strips(c, *r->pp, r->b->strip, NULL, fi, &cs, &m->coarse_us, &coarse_flush_us, &r->lv)))
+            return rc;
+        m->coarse_rays = cs.rays;
+        m->render_us += m->coarse_us;
+        c->api->set_pass(&c->ctx, RENDER_PASS_FULL);
+    }
+    return send_strips(c, *r->pp, r->b->strip, r->b->rgb, fi, &m->rs, &m->render_us, &m->flush_us, &r->lv);
+}
+
+/* --stats: frame f's JSON object; after the last frame, with --compare,
+ * left open for the comparison's fields. */
+static void print_frame_stats(const struct run_state *r, unsigned f, const struct frame_meas *m)
+{
+    const struct core *c = r->c;
+    struct panel_out *po = *r->pp;
+    printf("{\"scene\":");
+    json_str(r->name);
+    printf(",\"file\":");
+    json_str(r->o->scene);
+    printf(",\"numeric\":\"%s\",", c->api->numeric);
+    if (c->api->num_frac) printf("\"num_frac\":%d,", c->api->num_frac);
+    else printf("\"num_frac\":null,");
+    printf("\"panel\":\"%s\",\"backend\":\"%s\",\"width\":%u,"
+           "\"height\":%u,\"frame\":%u,\"strip_rows\":%u,\"render_us\":%llu,"
+           "\"flush_us\":%llu,\"bus_us\":%llu,\"pixels_written\":%lu,\"spi_bytes\":%llu,"
+           "\"triangles_in\":%lu,\"triangles_drawn\":%lu,\"rays\":%lu,\"saturations\":%lu",
+           r->panel, r->backend, r->w, r->h, f, r->rows, (unsigned long long)m->render_us,
+           (unsigned long long)m->flush_us, (unsigned long long)(panel_out_bus_us(po) - m->bus0),
+           (unsigned long)m->rs.pixels_written,
+           (unsigned long long)(panel_out_spi_bytes(po) - m->spi0),
+           (unsigned long)m->rs.triangles_in, (unsigned long)m->rs.triangles_drawn,
+           (unsigned long)m->rs.rays, (unsigned long)(uint32_t)(*c->api->saturations - m->sat0));
+    if (r->o->progressive)
+        printf(",\"coarse_us\":%llu,\"coarse_rays\":%lu", (unsigned long long)m->coarse_us, m->coarse_rays);
+    if (!(r->o->compare && f + 1 == r->frames)) printf("}\n");
+}
+
+/* After frame f (the scene's fi): the overlay's next text, the frame's file
+ * (--out PATTERN) and its --loop line. */
+static int frame_done(struct run_state *r, unsigned f, unsigned fi, const struct frame_meas *m)
+{
+    const struct opts *o = r->o;
+    char err[512];
+    int rc;
+    uint64_t frame_us = now_us() - r->lv.frame_t0;
+    double fps = frame_us ? 1e6 / (double)frame_us : 0.0;
+    if (o->fps_overlay) snprintf(r->overlay, sizeof r->overlay, "%.1f fps", fps);
+    if (r->pattern) {
+        /* this frame's glass, as --out does after the last one */
+        out_name(r->frame_out, sizeof r->frame_out, o->out, f);
+        if ((rc = panel_out_read(*r->pp, r->b->fb, err, sizeof err))) return fail(rc, "%s", err);
+        if ((rc = img_write_565(r->frame_out, img_format_of(r->frame_out), r->b->fb, r->w, r->h, r->w,
+                                err, sizeof err)))
+            return fail(rc, "%s", err);
+        if (o->loop) loop_signals();   /* (imgio's own handlers while it writes) */
+    }
+    if (o->loop) {
+        printf("frame %u (%u/%u): %.1f fps, %.2f ms, %llu SPI bytes, %u rects\n", f, fi + 1, r->anim, fps,
+               (double)frame_us / 1000.0, (unsigned long long)(panel_out_spi_bytes(*r->pp) - m->spi0),
+               r->lv.rects);
+        if (fflush(stdout)) return fail(EXIT_INTERNAL, "stdout: write failed");
+    }
+    return EXIT_OK;
+}
+
+/* Every frame; with --loop, until a signal (the frame in progress ends). */
+static int run_frames(struct run_state *r)
+{
+    const struct opts *o = r->o;
+    int rc;
+    for (unsigned f = 0; f < r->frames; f++) {
+        const unsigned fi = o->loop ? f % r->anim : f;
+        struct frame_meas m = { 0 };
+        if ((rc = render_frame(r, fi, &m))) return rc;
+        r->total_render_us += m.render_us;
+        if (o->stats) print_frame_stats(r, f, &m);
+        if ((rc = frame_done(r, f, fi, &m))) return rc;
+        if (o->loop && loop_stop) {
+            r->frames = f + 1;
+            break;
+        }
+    }
+    return EXIT_OK;
+}
+
+/* The panel's last bytes; without --loop the window shows the last frame
+ * until it is closed. */
+static int finish_panel(struct run_state *r)
+{
+    char err[512];
+    int rc;
+    if ((rc = panel_out_finish(*r->pp, err, sizeof err))) return fail(rc, "%s", err);
+    if (r->b->win && !r->o->loop) {
         /* the last frame stays on view until the window is closed */
         struct timespec ts = { 0, 20000000L };
         loop_stop = 0;
         loop_signals();
-        while (!loop_stop && !window_closed(b->win)) nanosleep(&ts, NULL);
+        while (!loop_stop && !window_closed(r->b->win)) nanosleep(&ts, NULL);
     }
+    return EXIT_OK;
+}
 
-    struct compare_result cmp = { 0 };
-    if (o->compare) {
-        const struct core_api *rapi;
-        unsigned rfits;
-        if ((rc = core_pick(o, o->compare, w, h, &rapi, &rfits))) return rc;
-        if ((rc = core_open(ref, rapi, o->scene))) return rc;
-        ref->api->set_fits(ref->scene, rfits);
-        ref->api->exact_methods(ref->scene);   /* every method is measured against the exact one */
-        if ((rc = core_init(ref, w, h, rows))) return rc;
-        b->ref_fb = malloc(npx * sizeof *b->ref_fb);
-        b->ref_rgb = malloc(npx * 3);
-        if (!b->ref_fb || !b->ref_rgb) return fail(EXIT_INTERNAL, "out of memory");
-        memset(b->ref_rgb, 0, npx * 3);
-        for (unsigned f = 0; f < frames; f++)  /* animation state may carry over */
-            if ((rc = core_render_memory(ref, f, b->ref_fb, b->ref_rgb))) return rc;
-        compare_rgb888(b->rgb, b->ref_rgb, w, h, &cmp);
-        if (o->stats) {
-            printf(",\"compare\":\"%s\",", o->compare);
-            if (isinf(cmp.psnr)) printf("\"psnr\":null"); else printf("\"psnr\":%.2f", cmp.psnr);
-            printf(",\"ssim\":%.5f,\"max_err\":%d,\"pct_diff\":%.3f,\"pct_within2\":%.3f}\n",
-                   cmp.ssim, cmp.max_err, cmp.pct_diff, cmp.pct_within2);
-        }
+/* --compare: the same frames with the reference core in memory, its colours
+ * against the renderer's after the last frame (r->cmp; --stats: the fields
+ * that close the last frame's object). */
+static int compare_ref(struct run_state *r)
+{
+    const struct opts *o = r->o;
+    struct core *ref = r->ref;
+    struct bufs *b = r->b;
+    const struct core_api *rapi;
+    unsigned rfits;
+    int rc;
+    if ((rc = core_pick(o, o->compare, r->w, r->h, &rapi, &rfits))) return rc;
+    if ((rc = core_open(ref, rapi, o->scene))) return rc;
+    ref->api->set_fits(ref->scene, rfits);
+    ref->api->exact_methods(ref->scene);   /* every method is measured against the exact one */
+    if ((rc = core_init(ref, r->w, r->h, r->rows))) return rc;
+    b->ref_fb = malloc(r->npx * sizeof *b->ref_fb);
+    b->ref_rgb = malloc(r->npx * 3);
+    if (!b->ref_fb || !b->ref_rgb) return fail(EXIT_INTERNAL, "out of memory");
+    memset(b->ref_rgb, 0, r->npx * 3);
+    for (unsigned f = 0; f < r->frames; f++)  /* animation state may carry over */
+        if ((rc = core_render_memory(ref, f, b->ref_fb, b->ref_rgb))) return rc;
+    compare_rgb888(b->rgb, b->ref_rgb, r->w, r->h, &r->cmp);
+    if (o->stats) {
+        const struct compare_result *cmp = &r->cmp;
+        printf(",\"compare\":\"%s\",", o->compare);
+        if (isinf(cmp->psnr)) printf("\"psnr\":null"); else printf("\"psnr\":%.2f", cmp->psnr);
+        printf(",\"ssim\":%.5f,\"max_err\":%d,\"pct_diff\":%.3f,\"pct_within2\":%.3f}\n",
+               cmp->ssim, cmp->max_err, cmp->pct_diff, cmp->pct_within2);
     }
-    fflush(stdout);
+    return EXIT_OK;
+}
 
-    /* What the glass shows (or the framebuffer) after the last frame. */
-    if ((o->out && !pattern) || o->out_raw) {
-        if ((rc = panel_out_read(*pp, b->fb, err, sizeof err))) return fail(rc, "%s", err);
-        /* a failed output removes the ones this run wrote before it */
-        if (o->out && !pattern && (rc = img_write_565(o->out, img_format_of(o->out), b->fb, w, h, w, err, sizeof err)))
+/* What the glass shows (or the framebuffer) after the last frame, and the
+ * renderer's colours; a failed output removes the ones this run wrote
+ * before it. */
+static int write_outputs(const struct run_state *r)
+{
+    const struct opts *o = r->o;
+    struct bufs *b = r->b;
+    char err[512];
+    int rc;
+    unsigned w = r->w, h = r->h;
+    if ((o->out && !r->pattern) || o->out_raw) {
+        if ((rc = panel_out_read(*r->pp, b->fb, err, sizeof err))) return fail(rc, "%s", err);
+        if (o->out && !r->pattern &&
+            (rc = img_write_565(o->out, img_format_of(o->out), b->fb, w, h, w, err, sizeof err)))
             return img_remove_written(), fail(rc, "%s", err);
         if (o->out_raw && (rc = img_write_raw565(o->out_raw, b->fb, w, h, w, err, sizeof err)))
             return img_remove_written(), fail(rc, "%s", err);
     }
     if (o->out_rgb888 && (rc = img_write_ppm888(o->out_rgb888, b->rgb, w, h, err, sizeof err)))
         return img_remove_written(), fail(rc, "%s", err);
+    return EXIT_OK;
+}
 
-    if (o->summary) {
-        char fmt[16] = "-";
-        if (c->api->num_frac) snprintf(fmt, sizeof fmt, "Q%d.%d", 31 - c->api->num_frac, c->api->num_frac);
-        printf("%-28s %4ux%-4u %-6s %-6s %-7s %9.1f ms", name, w, h, c->api->numeric, fmt, panel,
-               (double)total_render_us / 1000.0 / frames);
-        if (o->compare) {
-            if (isinf(cmp.psnr)) printf("  exact vs %s", o->compare);
-            else printf("  PSNR %.1f dB, SSIM %.4f, max err %d, %.2f%% within 2 vs %s", cmp.psnr,
-                        cmp.ssim, cmp.max_err, cmp.pct_within2, o->compare);
-        }
-        putchar('\n');
+/* --summary: one line, scene, size, numeric, time a frame, accuracy. */
+static void print_summary(const struct run_state *r)
+{
+    const struct opts *o = r->o;
+    const struct core *c = r->c;
+    const struct compare_result *cmp = &r->cmp;
+    char fmt[16] = "-";
+    if (c->api->num_frac) snprintf(fmt, sizeof fmt, "Q%d.%d", 31 - c->api->num_frac, c->api->num_frac);
+    printf("%-28s %4ux%-4u %-6s %-6s %-7s %9.1f ms", r->name, r->w, r->h, c->api->numeric, fmt, r->panel,
+           (double)r->total_render_us / 1000.0 / r->frames);
+    if (o->compare) {
+        if (isinf(cmp->psnr)) printf("  exact vs %s", o->compare);
+        else printf("  PSNR %.1f dB, SSIM %.4f, max err %d, %.2f%% within 2 vs %s", cmp->psnr,
+                    cmp->ssim, cmp->max_err, cmp->pct_within2, o->compare);
     }
+    putchar('\n');
+}
+
+/* One host_sim run: what main() frees is in *c, *ref, *pp and *b. */
+static int run(const struct opts *o, struct core *c, struct core *ref, struct panel_out **pp,
+               struct bufs *b)
+{
+    struct run_state r = { .o = o, .c = c, .ref = ref, .pp = pp, .b = b };
+    int rc;
+    r.panel = o->panel ? o->panel : panel_out_default();
+    r.backend = o->backend ? o->backend : "sim";
+    r.numeric = o->numeric ? o->numeric : "fixed";
+    r.none = !strcmp(r.panel, "none");
+    if ((rc = check_usage(&r)) || (rc = open_scene(&r)) || (rc = pick_core(&r)) || (rc = open_panel(&r)) ||
+        (rc = setup_frames(&r)) || (rc = run_frames(&r)) || (rc = finish_panel(&r)))
+        return rc;
+    if (o->compare && (rc = compare_ref(&r))) return rc;
+    fflush(stdout);
+    if ((rc = write_outputs(&r))) return rc;
+    if (o->summary) print_summary(&r);
     return fflush(stdout) ? EXIT_INTERNAL : EXIT_OK;
 }
 

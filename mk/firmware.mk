@@ -1,6 +1,9 @@
 # SPDX-License-Identifier: MIT
 # Board images: `make firmware` cross-builds the RP2040 (Pico + ST7789) and
-# STM32F411 images; `make flash` writes the Pico image over USB.
+# STM32F411 images. The fragments read right after this one build on them
+# (the Makefile's FW_FRAGMENTS): mk/flasher.mk (the host flasher, `make
+# flash`), mk/rp2040sim.mk (the images on the rp2040js emulator: tests) and
+# mk/bench-rp2040.mk (`make bench-rp2040`).
 #
 #   build/firmware/pico/cgfs.{elf,bin,uf2,map}         two cores (the board)
 #   build/firmware/pico/cgfs-1core.{elf,bin,uf2,map}   RP2040_SINGLE_CORE=1 (rp2040js)
@@ -9,10 +12,10 @@
 #
 # Build options (make VAR=value): FW_PINS (extra -D pin options, e.g.
 # "-DRP2040_PIN_DC=8"), RP2040_SYS_MHZ (125 or 133), RP2040_RAM_TEXT (1, the
-# default: the rasterizer's span loops, RAS_HOT in firmware/core/raster_int.h,
-# are copied to SRAM and run from there instead of through the 16 KB XIP
-# cache; 0: from flash), FW_SCENE_SRCS (the scene table; default the built-in
-# placeholder), FW_EXTRA (more -D flags).
+# default: the rasterizer's span loops, RAS_HOT in
+# firmware/core/raster/raster_int.h, are copied to SRAM and run from there
+# instead of through the 16 KB XIP cache; 0: from flash), FW_SCENE_SRCS (the
+# scene table; default the built-in placeholder), FW_EXTRA (more -D flags).
 
 ARM_CC      ?= arm-none-eabi-gcc
 ARM_OBJCOPY ?= arm-none-eabi-objcopy
@@ -242,121 +245,3 @@ $(foreach t,m4f-qemu m0plus-qemu,$(call fw_frac_objs,$(BUILD)/bench/$(t)/fixed/f
     $(FW_BOOK_FRAC_H)
 BENCH_IMAGES += $(BUILD)/bench/m4f-qemu/fixed/frame.elf $(BUILD)/bench/m4f-qemu/float/frame.elf \
                 $(BUILD)/bench/m0plus-qemu/fixed/frame.elf
-
-# ---- flasher (host) --------------------------------------------------------------
-# build/flasher links the real libusb transport; tests drive the same sequence
-# through a fake transport (tests/test_flasher.c).
-USB_CFLAGS := $(shell pkg-config --cflags libusb-1.0 2>/dev/null)
-USB_LIBS   := $(shell pkg-config --libs libusb-1.0 2>/dev/null || echo -lusb-1.0)
-FLASHER_CORE := tools/flasher/picoboot.c tools/flasher/image.c
-FLASHER_SRCS := $(FLASHER_CORE) tools/flasher/usb_libusb.c tools/flasher/gpio_reset.c tools/flasher/main.c
-FLASHER_BIN  := $(BUILD)/flasher
-# --gpio-reset (Raspberry Pi host) with libgpiod (the Makefile's WITH_GPIOD);
-# without it the option says so and exits 2.
-$(BUILD)/host/none/tools/flasher/%.o $(BUILD)/asan/none/tools/flasher/%.o: EXTRA_CFLAGS += -Itools/flasher $(USB_CFLAGS)
-$(BUILD)/host/none/tools/flasher/gpio_reset.o $(BUILD)/asan/none/tools/flasher/gpio_reset.o: EXTRA_CFLAGS += $(GPIOD_FLAGS)
-$(BUILD)/host/none/tools/flasher/gpio_reset.o $(BUILD)/asan/none/tools/flasher/gpio_reset.o: $(CONFIG_STAMP)
-$(BUILD)/asan/none/tests/test_flasher.o: EXTRA_CFLAGS += -Itools/flasher -Itests
-
-$(FLASHER_BIN): $(call obj,host,none,$(FLASHER_SRCS))
-	$(Q)$(CC) $(LDFLAGS_host) $^ $(USB_LIBS) $(GPIOD_LIBS) -o $@
-$(BUILD)/asan/tests/test_flasher: $(call obj,asan,none,$(FLASHER_CORE) tests/test_flasher.c)
-	@mkdir -p $(@D)
-	$(Q)$(CC) $(LDFLAGS_asan) $^ -o $@
-
-PROGRAMS  += $(FLASHER_BIN)
-TEST_DEPS += $(FLASHER_BIN) $(BUILD)/asan/tests/test_flasher
-TESTS     += $(BUILD)/asan/tests/test_flasher tests/test_flasher_noboard.sh:$(BUILD)
-
-# The GPIO reset sequence against a fake libgpiod (tests/fake_gpiod.c defines
-# the gpiod functions; needs only the header). The 2.x API: mk/pi.mk.
-ifeq ($(WITH_GPIOD),1)
-$(BUILD)/asan/none/tests/test_gpio_reset.o $(BUILD)/asan/none/tests/fake_gpiod.o: EXTRA_CFLAGS += -Itools/flasher -Itests $(GPIOD_FLAGS)
-$(BUILD)/asan/tests/test_gpio_reset: $(call obj,asan,none,tools/flasher/gpio_reset.c tests/fake_gpiod.c tests/test_gpio_reset.c)
-	@mkdir -p $(@D)
-	$(Q)$(CC) $(LDFLAGS_asan) $^ -o $@
-TEST_DEPS += $(BUILD)/asan/tests/test_gpio_reset
-TESTS     += $(BUILD)/asan/tests/test_gpio_reset
-endif
-
-# `make flash`: the two-core book image (raytracer-02 and raster-11, three
-# frames each, in a loop) through the flasher; FLASH_IMAGE to override (for
-# example build/firmware/pico/cgfs-cube.uf2, the real-time cube scenes).
-FLASH_IMAGE ?= $(FW_OUT)/pico/cgfs-book.uf2
-flash: $(FLASHER_BIN)
-	$(Q)tools/deps.sh flash
-	$(Q)$(MAKE) --no-print-directory $(FLASH_IMAGE)
-	$(Q)$(FLASHER_BIN) $(FLASH_IMAGE)
-
-# ---- rp2040js emulator (tools/rp2040sim) -------------------------------------------
-RP2040SIM_DEPS := tools/rp2040sim/node_modules/.package-lock.json
-$(RP2040SIM_DEPS): tools/rp2040sim/package.json tools/rp2040sim/package-lock.json
-	$(Q)cd tools/rp2040sim && npm ci --ignore-scripts --no-audit --no-fund --loglevel=error >/dev/null
-	@touch $@
-
-# The host reference of the firmware's scene table (fixed point, as on the MCU).
-FW_HOST_REF := $(BUILD)/fw_host_ref
-$(BUILD)/host/fixed/firmware/app/%.o: EXTRA_CFLAGS += -Ifirmware/app
-$(BUILD)/host/none/tests/fw_host_ref.o: EXTRA_CFLAGS += -Ifirmware/app
-$(FW_HOST_REF): $(call obj,host,none,tests/fw_host_ref.c) $(call obj,host,fixed,$(FW_SCENE_SRCS)) \
-                $(BUILD)/host/core_fixed.o
-	$(Q)$(CC) $^ -lm -o $@
-
-TEST_DEPS += $(RP2040SIM_DEPS) $(FW_HOST_REF) $(FW_OUT)/pico/cgfs-1core.elf $(FW_OUT)/pico/cgfs-1core.bin
-TESTS     += tests/test_rp2040sim.sh:$(BUILD)
-TEST_DEPS += $(FW_OUT)/pico/cgfs-ili9341.elf $(FW_OUT)/pico/cgfs-rot2.elf
-TESTS     += tests/test_rp2040sim_panels.sh:$(BUILD)
-TEST_DEPS += $(FW_OUT)/pico/cgfs-book-1core.elf $(FW_OUT)/pico/cgfs-cube-1core.elf $(BUILD)/host_sim
-TESTS     += tests/test_rp2040sim_book.sh:$(BUILD) tests/test_rp2040sim_cube.sh:$(BUILD):$(FW_CUBE_FRAMES)
-TEST_DEPS += $(FW_OUT)/pico/cgfs-cube-ili9341-1core.elf
-TESTS     += tests/test_rp2040sim_cube.sh:$(BUILD):$(FW_CUBE_FRAMES):cgfs-cube-ili9341-1core:ili9341_320x240:320x240
-# the two-core images on both emulated cores (tools/rp2040sim/dualcore.js)
-TEST_DEPS += $(FW_OUT)/pico/cgfs.elf $(FW_OUT)/pico/cgfs-book.elf
-TESTS     += tests/test_rp2040sim_dual.sh:$(BUILD)
-TESTS     += node:tools/rp2040sim/test_models.js
-# The JavaScript panel (emu_panel.js) replays the vectors the C emulator
-# replays (test_panel_vectors), so the two decoders cannot drift apart.
-TESTS     += node:tools/rp2040sim/replay_vectors.js:tests/vectors/panel
-
-# `make bench`: the emulated Pico's frame time per scene, of the single-core
-# images ("cores":1, variant single-core) and of the two-core ones ("cores":2,
-# variant two-core, both emulated cores), cycles at 133 MHz including SPI
-# time, appended to results.jsonl: the placeholder, frame 0 of each book
-# scene, for each cube scene the mean of its FW_CUBE_FRAMES frames (rp2040sim
-# --average: "frames", "cycles_min", "cycles_max"; frame 0 is drawn without
-# the fps overlay, the others with it, as on the board), and the ray
-# tracer's benchmark scenes with the progressive preview's first_image_us;
-# the cube scenes again on the ILI9341 in landscape ("width":320).
-RP2040SIM_BENCH_FRAMES ?= 1
-RP2040SIM_TMP := $(BUILD)/bench/rp2040sim.jsonl.tmp
-.PHONY: bench-rp2040
-RP2040SIM_BENCH_IMAGES := cgfs-1core cgfs cgfs-book-1core cgfs-book-bench \
-                          cgfs-cube-1core cgfs-cube cgfs-rt-1core cgfs-rt \
-                          cgfs-cube-ili9341-1core cgfs-cube-ili9341
-bench-rp2040: $(RP2040SIM_DEPS) $(foreach i,$(RP2040SIM_BENCH_IMAGES),$(FW_OUT)/pico/$(i).elf)
-	@mkdir -p $(BUILD)/bench
-	@# this step's lines are rewritten, the other steps' kept
-	$(Q)grep -v '"target": *"rp2040-sim"' $(BUILD)/bench/results.jsonl >$(BUILD)/bench/results.jsonl.tmp 2>/dev/null; \
-		mv $(BUILD)/bench/results.jsonl.tmp $(BUILD)/bench/results.jsonl
-	$(Q)for i in cgfs-1core:single-core cgfs:two-core; do \
-		node tools/rp2040sim/rp2040sim.js --image $(FW_OUT)/pico/$${i%%:*}.elf --variant $${i#*:} \
-			--frames $(RP2040SIM_BENCH_FRAMES) --json >>$(BUILD)/bench/results.jsonl || exit 1; done
-	$(Q)for i in cgfs-book-1core:single-core cgfs-book-bench:two-core; do \
-		node tools/rp2040sim/rp2040sim.js --image $(FW_OUT)/pico/$${i%%:*}.elf --variant $${i#*:} \
-			--frames $(words $(FW_BOOK_SCENES)) --json >$(RP2040SIM_TMP) || exit 1; \
-		cat $(RP2040SIM_TMP) && cat $(RP2040SIM_TMP) >>$(BUILD)/bench/results.jsonl; done
-	$(Q)for i in cgfs-cube-1core:single-core cgfs-cube:two-core; do \
-		node tools/rp2040sim/rp2040sim.js --image $(FW_OUT)/pico/$${i%%:*}.elf --variant $${i#*:} \
-			--frames $$(($(words $(FW_CUBE_SCENES)) * $(FW_CUBE_FRAMES))) --json --average >$(RP2040SIM_TMP) || exit 1; \
-		cat $(RP2040SIM_TMP) && cat $(RP2040SIM_TMP) >>$(BUILD)/bench/results.jsonl; done
-	$(Q)for i in cgfs-cube-ili9341-1core:single-core cgfs-cube-ili9341:two-core; do \
-		node tools/rp2040sim/rp2040sim.js --image $(FW_OUT)/pico/$${i%%:*}.elf --variant $${i#*:} \
-			--panel ili9341_320x240 --frames $$(($(words $(FW_CUBE_SCENES)) * $(FW_CUBE_FRAMES))) --json --average \
-			>$(RP2040SIM_TMP) || exit 1; \
-		cat $(RP2040SIM_TMP) && cat $(RP2040SIM_TMP) >>$(BUILD)/bench/results.jsonl; done
-	$(Q)for i in cgfs-rt-1core:single-core cgfs-rt:two-core; do \
-		node tools/rp2040sim/rp2040sim.js --image $(FW_OUT)/pico/$${i%%:*}.elf --variant $${i#*:} \
-			--frames $(words $(FW_RT_SCENES)) --json >$(RP2040SIM_TMP) || exit 1; \
-		cat $(RP2040SIM_TMP) && cat $(RP2040SIM_TMP) >>$(BUILD)/bench/results.jsonl; done
-	$(Q)rm -f $(RP2040SIM_TMP)
-bench: bench-rp2040

@@ -3,7 +3,7 @@
 # both libgpiod APIs, and the backend's byte stream through the emulated panel.
 #
 # The distribution's libgpiod (pkg-config; 1.6 on Debian 12) builds `make`'s
-# programs (mk/hal.mk, mk/firmware.mk: GPIOD_API_MAJOR from its version).
+# programs (mk/hal.mk, mk/flasher.mk: GPIOD_API_MAJOR from its version).
 # libgpiod 2 comes from the gpiod package of PyPI, whose source distribution
 # bundles libgpiod's C sources (include/gpiod.h, lib/*.c): fetched with pip,
 # checked against its SHA-256, built into $(BUILD)/gpiod2 as libgpiod.so with

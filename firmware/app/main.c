@@ -198,13 +198,20 @@ static void pack_cols(union strip_buf *sb, unsigned rows, int x0, uint16_t w)
     }
 }
 
-/* Ends the open streaming flush, if any (*run: a window of whole rows to
- * the bottom, which may end before its last row). */
-static int flush_close(int *open, int *run)
+/* The streaming flush of a frame's strips (core 0): open, a flush is open
+ * (the bus is idle when not); run, the open one is a window of whole rows to
+ * the bottom, continued by whole strips; err, a transfer failed (from then
+ * on the strips are only released, so that core 1 finishes the frame). */
+struct bus {
+    int open, run, err;
+};
+
+/* Ends the open streaming flush, if any (a run of whole rows may end before
+ * its last row). */
+static void flush_close(struct bus *b)
 {
-    int rc = *open ? (*run ? panel_flush_stop(&panel) : panel_flush_end(&panel)) : 0;
-    *open = *run = 0;
-    return rc;
+    if (b->open && (b->run ? panel_flush_stop(&panel) : panel_flush_end(&panel)) != 0) b->err = 1;
+    b->open = b->run = 0;
 }
 
 static int scene_init(struct render_ctx *c, unsigned si, unsigned core)
@@ -336,22 +343,16 @@ static void say(const char *a, const char *name, const char *b)
     fw_board_puts(line);
 }
 
-/* Renders and sends frame f of scene si; returns its time in us, 0 on error. */
-static uint32_t frame(unsigned si, uint16_t f, uint32_t last_us, int dual)
+/* Starts the UART line "<what>NAME frame=F" in line; returns its end. */
+static char *put_frame(char *line, const char *what, const char *name, uint16_t f)
 {
-    const char *name = fw_scenes[si].name;
-    char text[16], line[160], *p;
-    int overlay = last_us != 0;
-    if (overlay) *put_str(put_fps(text, last_us), " fps") = 0;
+    return put_u32(put_str(put_str(put_str(line, what), name), " frame="), f);
+}
 
-    p = put_str(put_str(line, "begin scene="), name);
-    p = put_str(p, " frame=");
-    p = put_str(put_u32(p, f), "\r\n");
-    *p = 0;
-    fw_board_puts(line);
-
-    uint64_t t0 = hal.now_us(hal.ctx);
-    if (render_begin_frame(&ctx[0], f) != 0) return 0;
+/* Frame f of scene si begins: no strip taken or sent yet, and core 1 (when
+ * dual) told to start on its strips. */
+static void strips_start(unsigned si, uint16_t f, int dual)
+{
     /* core 1 is idle between frames (it said so with MSG_FRAME_DONE) */
     fw_board_lock();
     sh.claim = 0;
@@ -359,76 +360,90 @@ static uint32_t frame(unsigned si, uint16_t f, uint32_t last_us, int dual)
     for (unsigned k = 0; k < NSTRIPS; k++) sh.done[k] = 0;
     fw_board_unlock();
     if (dual) fw_board_send(MSG_FRAME | ((uint32_t)si << 16) | f);
-    int err = 0, bus_err = 0;
-    if (FW_PROGRESSIVE && render_set_pass(&ctx[0], RENDER_PASS_COARSE) == 0) {
-        /* core 0 draws the preview while core 1 starts on its strips */
-        p = put_str(put_str(line, "coarse scene="), name);
-        p = put_str(put_u32(put_str(p, " frame="), f), "\r\n");
-        *p = 0;
-        fw_board_puts(line);
-        if (panel_flush_begin(&panel, 0, 0, FW_WIDTH, FW_HEIGHT) != 0) bus_err = 1;
-        for (unsigned k = 0; k < NSTRIPS; k++) {
-            uint16_t *buf = preview_buf[k & 1u];
-            uint16_t y0, y1;
-            strip_rows(k, &y0, &y1);
-            if (render_one(&ctx[0], k, buf, NULL) != 0) err = 1;
-            if (!bus_err && panel_flush_rows(&panel, buf, (uint16_t)(y1 - y0), NULL, NULL) != 0) bus_err = 1;
-        }
-        if (panel_flush_end(&panel) != 0) bus_err = 1;
-        for (unsigned k = 0; k < NSTRIPS; k++) glass[k].known = 0;   /* the preview's blocks */
-        uint64_t cu = hal.now_us(hal.ctx) - t0;
-        p = put_str(put_str(line, "first scene="), name);
-        p = put_str(put_u32(put_str(p, " frame="), f), " us=");
-        p = put_str(put_u32(p, cu > 0xffffffffu ? 0xffffffffu : (uint32_t)cu), "\r\n");
-        *p = 0;
-        fw_board_puts(line);
-        render_set_pass(&ctx[0], RENDER_PASS_FULL);
+}
+
+/* The progressive preview of frame f (the coarse pass set): core 0 renders
+ * it and sends it as one window of the whole screen while core 1 starts on
+ * its strips, says "coarse" before and "first" (U after t0) once it is on
+ * the glass, and sets the full pass again. *err: a strip failed to render. */
+static void send_preview(const char *name, uint16_t f, uint64_t t0, int *err, struct bus *b)
+{
+    char line[160];
+    *put_str(put_frame(line, "coarse scene=", name, f), "\r\n") = 0;
+    fw_board_puts(line);
+    if (panel_flush_begin(&panel, 0, 0, FW_WIDTH, FW_HEIGHT) != 0) b->err = 1;
+    for (unsigned k = 0; k < NSTRIPS; k++) {
+        uint16_t *buf = preview_buf[k & 1u];
+        uint16_t y0, y1;
+        strip_rows(k, &y0, &y1);
+        if (render_one(&ctx[0], k, buf, NULL) != 0) *err = 1;
+        if (!b->err && panel_flush_rows(&panel, buf, (uint16_t)(y1 - y0), NULL, NULL) != 0) b->err = 1;
     }
-    const uint16_t bg = render_background_565(&ctx[0]);
-    /* a streaming flush is open: the bus is idle when not; `run` when it is
-     * a window of whole rows to the bottom, continued by whole strips */
-    int open = 0, run = 0;
+    if (panel_flush_end(&panel) != 0) b->err = 1;
+    for (unsigned k = 0; k < NSTRIPS; k++) glass[k].known = 0;   /* the preview's blocks */
+    uint64_t cu = hal.now_us(hal.ctx) - t0;
+    char *p = put_str(put_frame(line, "first scene=", name, f), " us=");
+    *put_str(put_u32(p, cu > 0xffffffffu ? 0xffffffffu : (uint32_t)cu), "\r\n") = 0;
+    fw_board_puts(line);
+    render_set_pass(&ctx[0], RENDER_PASS_FULL);
+}
+
+/* Sends strip k, the next one in order, done (st 1 rendered, 2 failed;
+ * text: the overlay drawn into it, or NULL): the columns changed_cols finds,
+ * moved together unless they are the whole width (those continue one window
+ * of whole rows), or nothing. Its buffer is released once the bus has
+ * finished with it. */
+static void send_strip(unsigned k, unsigned st, uint16_t bg, const char *text, struct bus *b)
+{
+    union strip_buf *sb = &ring[k % FW_RING];
+    uint16_t *buf = sb->px;
+    uint16_t y0, y1;
+    strip_rows(k, &y0, &y1);
+    const unsigned rows = (unsigned)(y1 - y0);
+    if (text)
+        font5x7_draw(buf, FW_WIDTH, y0, y1, 2, 2, 2, text, 0xffffu, 0x0000u);
+    int x0, x1, track = FW_SKIP_UNCHANGED && st == 1 && !b->err;
+    changed_cols(k, sb, rows, bg, track,
+                 track && (!strip_empty(k) || (text && y0 < 2 + FONT5X7_BOX_H(2))), &x0, &x1);
+    if (x0 > x1) {
+        /* nothing changed: the strip's buffer is free once the bus has
+         * finished with the ones before it */
+        flush_close(b);
+        if (panel_wait(&panel) != 0) b->err = 1;
+        strip_sent((void *)(uintptr_t)k);
+        return;
+    }
+    const uint16_t w = (uint16_t)(x1 - x0 + 1);
+    if (!b->err && w == FW_WIDTH && !b->run) {
+        flush_close(b);
+        b->open = b->run = 1;
+        if (panel_flush_begin(&panel, 0, y0, FW_WIDTH, (uint16_t)(FW_HEIGHT - y0)) != 0) b->err = 1;
+    } else if (!b->err && w != FW_WIDTH) {
+        pack_cols(sb, rows, x0, w);
+        flush_close(b);
+        b->open = 1;
+        if (panel_flush_begin(&panel, (uint16_t)x0, y0, w, (uint16_t)rows) != 0) b->err = 1;
+    }
+    /* after a bus error the strips are only released */
+    if (b->err || panel_flush_rows(&panel, buf, (uint16_t)rows, strip_sent, (void *)(uintptr_t)k) != 0) {
+        b->err = 1;
+        strip_sent((void *)(uintptr_t)k);
+    }
+}
+
+/* Core 0's part of the frame's strips: sends them in order as they are done
+ * (send_strip), and renders the next free one when the one to send is not
+ * done yet; then ends the flush (after a bus error the glass is unknown).
+ * bg: the scene's background, text: the overlay or NULL; *err: a strip
+ * failed to render. */
+static void send_strips(uint16_t bg, const char *text, int *err, struct bus *b)
+{
     for (unsigned next = 0; next < NSTRIPS;) {
         unsigned st = strip_state(next);
         if (st) {
             /* the next strip in order is done: on the bus with it */
-            union strip_buf *sb = &ring[next % FW_RING];
-            uint16_t *buf = sb->px;
-            uint16_t y0, y1;
-            strip_rows(next, &y0, &y1);
-            const unsigned rows = (unsigned)(y1 - y0);
-            if (st != 1) err = 1;
-            if (overlay)
-                font5x7_draw(buf, FW_WIDTH, y0, y1, 2, 2, 2, text, 0xffffu, 0x0000u);
-            int x0, x1, track = FW_SKIP_UNCHANGED && st == 1 && !bus_err;
-            changed_cols(next, sb, rows, bg, track,
-                         track && (!strip_empty(next) || (overlay && y0 < 2 + FONT5X7_BOX_H(2))), &x0, &x1);
-            if (x0 > x1) {
-                /* nothing changed: the strip's buffer is free once the bus
-                 * has finished with the ones before it */
-                if (flush_close(&open, &run) != 0) bus_err = 1;
-                if (panel_wait(&panel) != 0) bus_err = 1;
-                strip_sent((void *)(uintptr_t)next);
-                next++;
-                continue;
-            }
-            const uint16_t w = (uint16_t)(x1 - x0 + 1);
-            if (!bus_err && w == FW_WIDTH && !run) {
-                if (flush_close(&open, &run) != 0) bus_err = 1;
-                open = run = 1;
-                if (panel_flush_begin(&panel, 0, y0, FW_WIDTH, (uint16_t)(FW_HEIGHT - y0)) != 0) bus_err = 1;
-            } else if (!bus_err && w != FW_WIDTH) {
-                pack_cols(sb, rows, x0, w);
-                if (flush_close(&open, &run) != 0) bus_err = 1;
-                open = 1;
-                if (panel_flush_begin(&panel, (uint16_t)x0, y0, w, (uint16_t)rows) != 0) bus_err = 1;
-            }
-            /* after a bus error the strips are only released, so that core 1
-             * finishes the frame */
-            if (bus_err || panel_flush_rows(&panel, buf, (uint16_t)rows, strip_sent, (void *)(uintptr_t)next) != 0) {
-                bus_err = 1;
-                strip_sent((void *)(uintptr_t)next);
-            }
+            if (st != 1) *err = 1;
+            send_strip(next, st, bg, text, b);
             next++;
             continue;
         }
@@ -442,14 +457,18 @@ static uint32_t frame(unsigned si, uint16_t f, uint32_t last_us, int dual)
         /* the next strip is core 1's and not done yet: let the bus finish
          * (releasing the buffers core 1 may be waiting for), then sleep until
          * core 1 marks a strip */
-        if (panel_wait(&panel) != 0) bus_err = 1;
+        if (panel_wait(&panel) != 0) b->err = 1;
         if (!strip_state(next)) fw_board_wait();
     }
-    if (open && panel_flush_end(&panel) != 0) bus_err = 1;
-    if (bus_err)
+    if (b->open && panel_flush_end(&panel) != 0) b->err = 1;
+    if (b->err)
         for (unsigned k = 0; k < NSTRIPS; k++) glass[k].known = 0;   /* what arrived is unknown */
-    if (dual) (void)fw_board_recv();     /* MSG_FRAME_DONE: core 1 is idle again */
-    uint64_t us = hal.now_us(hal.ctx) - t0;
+}
+
+/* The frame's line: "fps" with its time us, or an "error" one; returns the
+ * time in us (at least 1), 0 on error. */
+static uint32_t frame_report(const char *name, uint16_t f, uint64_t us, int err, int bus_err)
+{
     if (bus_err) {
         say("error scene=", name, " panel flush failed\r\n");
         return 0;
@@ -459,14 +478,32 @@ static uint32_t frame(unsigned si, uint16_t f, uint32_t last_us, int dual)
         return 0;
     }
     uint32_t u = us > 0xffffffffu ? 0xffffffffu : (us ? (uint32_t)us : 1u);
-    p = put_str(put_str(line, "fps scene="), name);
-    p = put_str(p, " frame=");
-    p = put_str(put_u32(p, f), " us=");
+    char line[160], *p = put_str(put_frame(line, "fps scene=", name, f), " us=");
     p = put_str(put_u32(p, u), " fps=");
-    p = put_str(put_fps(p, u), "\r\n");
-    *p = 0;
+    *put_str(put_fps(p, u), "\r\n") = 0;
     fw_board_puts(line);
     return u;
+}
+
+/* Renders and sends frame f of scene si; returns its time in us, 0 on error.
+ * last_us: the previous frame's time, drawn as "X.Y fps" (0: no overlay). */
+static uint32_t frame(unsigned si, uint16_t f, uint32_t last_us, int dual)
+{
+    const char *name = fw_scenes[si].name;
+    char text[16], line[160];
+    if (last_us) *put_str(put_fps(text, last_us), " fps") = 0;
+    *put_str(put_frame(line, "begin scene=", name, f), "\r\n") = 0;
+    fw_board_puts(line);
+
+    uint64_t t0 = hal.now_us(hal.ctx);
+    if (render_begin_frame(&ctx[0], f) != 0) return 0;
+    strips_start(si, f, dual);
+    int err = 0;
+    struct bus b = { 0, 0, 0 };
+    if (FW_PROGRESSIVE && render_set_pass(&ctx[0], RENDER_PASS_COARSE) == 0) send_preview(name, f, t0, &err, &b);
+    send_strips(render_background_565(&ctx[0]), last_us ? text : NULL, &err, &b);
+    if (dual) (void)fw_board_recv();     /* MSG_FRAME_DONE: core 1 is idle again */
+    return frame_report(name, f, hal.now_us(hal.ctx) - t0, err, b.err);
 }
 
 int main(void)

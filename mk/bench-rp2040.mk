@@ -1,0 +1,48 @@
+# SPDX-License-Identifier: MIT
+# `make bench-rp2040` (part of `make bench`): the emulated Pico's frame time
+# per scene, of the single-core images ("cores":1, variant single-core) and
+# of the two-core ones ("cores":2, variant two-core, both emulated cores),
+# cycles at 133 MHz including SPI time, appended to results.jsonl: the
+# placeholder, frame 0 of each book scene, for each cube scene the mean of
+# its FW_CUBE_FRAMES frames (rp2040sim --average: "frames", "cycles_min",
+# "cycles_max"; frame 0 is drawn without the fps overlay, the others with it,
+# as on the board), and the ray tracer's benchmark scenes with the
+# progressive preview's first_image_us; the cube scenes again on the ILI9341
+# in landscape ("width":320). Read after mk/firmware.mk and mk/rp2040sim.mk,
+# whose images and RP2040SIM_DEPS it runs.
+
+RP2040SIM_BENCH_FRAMES ?= 1
+RP2040SIM_TMP := $(BUILD)/bench/rp2040sim.jsonl.tmp
+# rp2040sim's arguments for the images of each scene set (expanded when the
+# recipe runs)
+RP2040SIM_ARGS_plain   = --frames $(RP2040SIM_BENCH_FRAMES) --json
+RP2040SIM_ARGS_book    = --frames $(words $(FW_BOOK_SCENES)) --json
+RP2040SIM_ARGS_cube    = --frames $$(($(words $(FW_CUBE_SCENES)) * $(FW_CUBE_FRAMES))) --json --average
+RP2040SIM_ARGS_cube320 = --panel ili9341_320x240 $(RP2040SIM_ARGS_cube)
+RP2040SIM_ARGS_rt      = --frames $(words $(FW_RT_SCENES)) --json
+# The runs, IMAGE:VARIANT:SET (SET: RP2040SIM_ARGS_<SET>), in the order of
+# their rows in results.jsonl.
+RP2040SIM_BENCH_RUNS := cgfs-1core:single-core:plain cgfs:two-core:plain \
+                        cgfs-book-1core:single-core:book cgfs-book-bench:two-core:book \
+                        cgfs-cube-1core:single-core:cube cgfs-cube:two-core:cube \
+                        cgfs-cube-ili9341-1core:single-core:cube320 cgfs-cube-ili9341:two-core:cube320 \
+                        cgfs-rt-1core:single-core:rt cgfs-rt:two-core:rt
+# $(call rp2040sim_field,N,RUN): field N of a run (1 image, 2 variant, 3 set)
+rp2040sim_field = $(word $(1),$(subst :, ,$(2)))
+RP2040SIM_BENCH_IMAGES := $(foreach r,$(RP2040SIM_BENCH_RUNS),$(call rp2040sim_field,1,$(r)))
+# One recipe line per run: its rows to the terminal and to results.jsonl.
+define RP2040SIM_BENCH_RUN
+	$(Q)node tools/rp2040sim/rp2040sim.js --image $(FW_OUT)/pico/$(call rp2040sim_field,1,$(1)).elf \
+		--variant $(call rp2040sim_field,2,$(1)) $(RP2040SIM_ARGS_$(call rp2040sim_field,3,$(1))) >$(RP2040SIM_TMP) && \
+		cat $(RP2040SIM_TMP) && cat $(RP2040SIM_TMP) >>$(BUILD)/bench/results.jsonl
+
+endef
+.PHONY: bench-rp2040
+bench-rp2040: $(RP2040SIM_DEPS) $(foreach i,$(RP2040SIM_BENCH_IMAGES),$(FW_OUT)/pico/$(i).elf)
+	@mkdir -p $(BUILD)/bench
+	@# this step's lines are rewritten, the other steps' kept
+	$(Q)grep -v '"target": *"rp2040-sim"' $(BUILD)/bench/results.jsonl >$(BUILD)/bench/results.jsonl.tmp 2>/dev/null; \
+		mv $(BUILD)/bench/results.jsonl.tmp $(BUILD)/bench/results.jsonl
+	$(foreach r,$(RP2040SIM_BENCH_RUNS),$(call RP2040SIM_BENCH_RUN,$(r)))
+	$(Q)rm -f $(RP2040SIM_TMP)
+bench: bench-rp2040

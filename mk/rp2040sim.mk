@@ -1,0 +1,34 @@
+# SPDX-License-Identifier: MIT
+# The board images on the rp2040js emulator (tools/rp2040sim): its npm
+# packages, the host reference of the firmware's scene table, and the tests
+# that run the images of mk/firmware.mk (read before this file: its
+# variables are used here).
+
+RP2040SIM_DEPS := tools/rp2040sim/node_modules/.package-lock.json
+$(RP2040SIM_DEPS): tools/rp2040sim/package.json tools/rp2040sim/package-lock.json
+	$(Q)cd tools/rp2040sim && npm ci --ignore-scripts --no-audit --no-fund --loglevel=error >/dev/null
+	@touch $@
+
+# The host reference of the firmware's scene table (fixed point, as on the MCU).
+FW_HOST_REF := $(BUILD)/fw_host_ref
+$(BUILD)/host/fixed/firmware/app/%.o: EXTRA_CFLAGS += -Ifirmware/app
+$(BUILD)/host/none/tests/fw_host_ref.o: EXTRA_CFLAGS += -Ifirmware/app
+$(FW_HOST_REF): $(call obj,host,none,tests/fw_host_ref.c) $(call obj,host,fixed,$(FW_SCENE_SRCS)) \
+                $(BUILD)/host/core_fixed.o
+	$(Q)$(CC) $^ -lm -o $@
+
+TEST_DEPS += $(RP2040SIM_DEPS) $(FW_HOST_REF) $(FW_OUT)/pico/cgfs-1core.elf $(FW_OUT)/pico/cgfs-1core.bin
+TESTS     += tests/test_rp2040sim.sh:$(BUILD)
+TEST_DEPS += $(FW_OUT)/pico/cgfs-ili9341.elf $(FW_OUT)/pico/cgfs-rot2.elf
+TESTS     += tests/test_rp2040sim_panels.sh:$(BUILD)
+TEST_DEPS += $(FW_OUT)/pico/cgfs-book-1core.elf $(FW_OUT)/pico/cgfs-cube-1core.elf $(BUILD)/host_sim
+TESTS     += tests/test_rp2040sim_book.sh:$(BUILD) tests/test_rp2040sim_cube.sh:$(BUILD):$(FW_CUBE_FRAMES)
+TEST_DEPS += $(FW_OUT)/pico/cgfs-cube-ili9341-1core.elf
+TESTS     += tests/test_rp2040sim_cube.sh:$(BUILD):$(FW_CUBE_FRAMES):cgfs-cube-ili9341-1core:ili9341_320x240:320x240
+# the two-core images on both emulated cores (tools/rp2040sim/dualcore.js)
+TEST_DEPS += $(FW_OUT)/pico/cgfs.elf $(FW_OUT)/pico/cgfs-book.elf
+TESTS     += tests/test_rp2040sim_dual.sh:$(BUILD)
+TESTS     += node:tools/rp2040sim/test_models.js
+# The JavaScript panel (emu_panel.js) replays the vectors the C emulator
+# replays (test_panel_vectors), so the two decoders cannot drift apart.
+TESTS     += node:tools/rp2040sim/replay_vectors.js:tests/vectors/panel

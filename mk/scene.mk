@@ -81,3 +81,8 @@ $(foreach v,$(VARIANTS),$(call obj,$(v),none,tests/test_scene_fracs.c)): EXTRA_C
 .PHONY: scene-fracs-report
 scene-fracs-report: $(BUILD)/host/test_scene_fracs
 	$(Q)$(BUILD)/host/test_scene_fracs --report $(SCENE_FILES)
+
+# ---- the keys' table (firmware/core/scene_options.def) and the doc ---------
+# docs/scene-format.md's option tables are generated from it
+# (tools/scene/options_doc.py --write docs/scene-format.md) and checked here.
+TESTS += tools/scene/options_doc.py:--check:docs/scene-format.md tools/scene/options_doc.py:--self-test

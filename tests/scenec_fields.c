@@ -91,24 +91,8 @@ static void compare(const struct scene *a, const struct scene *b)
         EQ(a->csg[i].b, b->csg[i].b, "csg[].b");
     }
     const struct rt_options *r = &a->rt, *q = &b->rt;
-    EQ(r->recursion_depth, q->recursion_depth, "rt.recursion_depth");
-    EQ(r->diffuse, q->diffuse, "rt.diffuse");
-    EQ(r->specular, q->specular, "rt.specular");
-    EQ(r->shadows, q->shadows, "rt.shadows");
-    EQ(r->supersample, q->supersample, "rt.supersample");
-    EQ(r->adaptive_ss, q->adaptive_ss, "rt.adaptive_ss");
-    EQ(r->subsample, q->subsample, "rt.subsample");
-    EQ(r->bvh, q->bvh, "rt.bvh");
-    EQ(r->shadow_any_hit, q->shadow_any_hit, "rt.shadow_any_hit");
-    EQ(r->shadow_cache, q->shadow_cache, "rt.shadow_cache");
-    EQ(r->t_min_primary, q->t_min_primary, "rt.t_min_primary");
-    EQ(r->epsilon, q->epsilon, "rt.epsilon");
-    EQ(r->unlit, q->unlit, "rt.unlit");
-    EQ(r->formulation, q->formulation, "rt.formulation");
-    EQ(r->no_frame_cache, q->no_frame_cache, "rt.no_frame_cache");
-    EQ(r->no_shortcuts, q->no_shortcuts, "rt.no_shortcuts");
-    EQ(r->adaptive_subsample, q->adaptive_subsample, "rt.adaptive_subsample");
-    EQ(r->adaptive_threshold, q->adaptive_threshold, "rt.adaptive_threshold");
+#define RT_OPTION(key, field, ...) EQ(r->field, q->field, "rt." #field);
+#include "scene_options.def"
 
     EQ(a->nmodels, b->nmodels, "nmodels");
     for (int m = 0; m < a->nmodels && m < b->nmodels; m++) {
@@ -181,29 +165,8 @@ static void compare(const struct scene *a, const struct scene *b)
         eq_rgb(a->lines[i].color, b->lines[i].color, "lines[].color");
     }
     const struct ras_options *o = &a->ras, *p = &b->ras;
-    EQ(o->shading, p->shading, "ras.shading");
-    EQ(o->wireframe, p->wireframe, "ras.wireframe");
-    EQ(o->project_truncate, p->project_truncate, "ras.project_truncate");
-    EQ(o->clip, p->clip, "ras.clip");
-    EQ(o->depth_test, p->depth_test, "ras.depth_test");
-    EQ(o->depth_bits, p->depth_bits, "ras.depth_bits");
-    EQ(o->backface_cull, p->backface_cull, "ras.backface_cull");
-    EQ(o->computed_normals, p->computed_normals, "ras.computed_normals");
-    EQ(o->diffuse, p->diffuse, "ras.diffuse");
-    EQ(o->specular, p->specular, "ras.specular");
-    EQ(o->perspective_uv, p->perspective_uv, "ras.perspective_uv");
-    EQ(o->instance_transform, p->instance_transform, "ras.instance_transform");
-    EQ(o->camera_transform, p->camera_transform, "ras.camera_transform");
-    EQ(o->shadow_map, p->shadow_map, "ras.shadow_map");
-    EQ(o->shadow_volume, p->shadow_volume, "ras.shadow_volume");
-    EQ(o->env_map, p->env_map, "ras.env_map");
-    EQ(o->subpixel_bits, p->subpixel_bits, "ras.subpixel_bits");
-    EQ(o->book_exact, p->book_exact, "ras.book_exact");
-    EQ(o->shadow_light, p->shadow_light, "ras.shadow_light");
-    EQ(o->shadow_map_size, p->shadow_map_size, "ras.shadow_map_size");
-    EQ(o->pcf, p->pcf, "ras.pcf");
-    EQ(o->env_reflect, p->env_reflect, "ras.env_reflect");
-    EQ(o->outlines, p->outlines, "ras.outlines");
+#define RAS_OPTION(key, field, ...) EQ(o->field, p->field, "ras." #field);
+#include "scene_options.def"
 }
 
 int main(void)

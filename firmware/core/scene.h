@@ -78,34 +78,12 @@ struct rt_csg {
     uint16_t a, b;
 };
 
-/* Chapter 5 switches of the ray tracer. */
+/* Chapter 5 switches of the ray tracer: the `raytracer { ... }` options, one
+ * member per row of scene_options.def (key, range, default and meaning
+ * there; the rows' order is this struct's layout). */
 struct rt_options {
-    uint8_t recursion_depth;   /* reflection depth of primary rays (book: 3) */
-    uint8_t diffuse;           /* lighting step 4 on/off */
-    uint8_t specular;          /* lighting step 5 on/off */
-    uint8_t shadows;           /* lighting step 3 on/off */
-    uint8_t supersample;       /* rays per pixel side: 1 (off), 2, 3, 4 (=4/9/16 rays) */
-    uint8_t adaptive_ss;       /* adaptive supersampling */
-    uint8_t subsample;         /* primary-ray subsampling step (1 = off) */
-    uint8_t bvh;               /* bounding-sphere hierarchy */
-    uint8_t shadow_any_hit;    /* any-hit shadow rays */
-    uint8_t shadow_cache;      /* last-occluder cache */
-    num t_min_primary;         /* book: 1 */
-    num epsilon;               /* shadow/reflection ray start, book: 0.001 */
-    uint8_t unlit;             /* 1: no ComputeLighting, a hit shows the object's colour
-                                  as is (raytracer-01); 0 (default): lit */
-    uint8_t formulation;       /* 0 (default): the mode's own (book operation order in double,
-                                  robust intersection elsewhere); 1: book order; 2: robust */
-    uint8_t no_frame_cache;    /* 1: recompute per-frame constants per ray (to measure the cache) */
-    uint8_t no_shortcuts;      /* 1: every intersection test and lighting term in full: the
-                                  coarse rejections and early-outs, which provably change no
-                                  pixel, off (to measure them and to test that claim) */
-    uint8_t adaptive_subsample;  /* 0 off; B = 2..8: every frame by 2-D adaptive subsampling:
-                                    corners of B x B blocks traced, a block whose four corners
-                                    agree (object, shadows, colours within adaptive_threshold)
-                                    interpolated, any other split (approximate) */
-    uint8_t adaptive_threshold;  /* levels a channel may differ between agreeing corners,
-                                    1..64; 0: RT_SUBSAMPLE_DIFF (6) */
+#define RT_OPTION(key, field, type, ...) type field;
+#include "scene_options.def"
 };
 
 /* ---- rasterizer data (part II) ------------------------------------------ */
@@ -177,38 +155,12 @@ struct prim2d {
 /* 3D lines in world space drawn through ProjectVertex (raster-05). */
 struct line3d { vec3 a, b; rgb color; };
 
+/* The `rasterizer { ... }` options, one member per row of scene_options.def
+ * (key, range, default and meaning there; the rows' order is this struct's
+ * layout). */
 struct ras_options {
-    uint8_t shading;          /* enum shading; SHADE_NONE = flat triangle colour */
-    uint8_t wireframe;        /* draw triangles as wireframes (raster-06 … 09) */
-    uint8_t project_truncate; /* T() on projected points (raster-10 +) */
-    uint8_t clip;             /* 0 off, 1 book (cull instances, drop straddling
-                                 triangles), 2 split triangles at the planes */
-    uint8_t depth_test;       /* 1/z depth buffer */
-    uint8_t depth_bits;       /* 16 or 32 */
-    uint8_t backface_cull;
-    uint8_t computed_normals; /* use face normals instead of model normals */
-    uint8_t diffuse, specular;
-    uint8_t perspective_uv;   /* u/z, v/z interpolation (default on) */
-    uint8_t instance_transform; /* 0: raster-07 plain translation of vertices */
-    uint8_t camera_transform;   /* apply the camera matrix */
-    uint8_t shadow_map;         /* chapter 15: 0 off, 1 shadow map + PCF */
-    uint8_t shadow_volume;      /* chapter 15: stencil shadow volumes (depth-fail) */
-    uint8_t env_map;            /* chapter 15: environment mapping */
-    uint8_t subpixel_bits;      /* sub-pixel vertex precision (0 = book's integer) */
-    uint8_t book_exact;         /* reproduce the demos' quirks bit for bit */
-    /* chapter 15 parameters (default path, Phong shading); 0 picks the default */
-    uint8_t shadow_light;       /* 1 + index in lights[] of the light that casts shadows;
-                                   0: the first point or directional light */
-    uint16_t shadow_map_size;   /* shadow map side in texels, 16..1024; 0: 128 */
-    uint8_t pcf;                /* percentage-closer filter: 1 (one tap), 2 (2x2), 3 (3x3); 0: 3 */
-    uint8_t env_reflect;        /* percent of the environment mixed in, 1..100; 0: 50 */
-    uint8_t persp_step;         /* default path: perspective-correct attributes every N pixels
-                                   with the fast span loops, N = 8, 16, 32; 1: the exact
-                                   per-pixel path; 0: 16 */
-    uint8_t lighting;           /* default path, Phong shading: RAS_LIGHT_FAST (0), RAS_LIGHT_EXACT,
-                                   RAS_LIGHT_VERTEX */
-    uint8_t outlines;           /* raster-10's control: after each drawn triangle its edges with
-                                   DrawLine in its colour x 0.75, no depth test (book path) */
+#define RAS_OPTION(key, field, type, ...) type field;
+#include "scene_options.def"
 };
 
 /* ---- the scene ------------------------------------------------------- */

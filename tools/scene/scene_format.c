@@ -142,16 +142,10 @@ static void shadow_volume_ranges(const struct scene *s, struct scene_format *R, 
     note(&R->position, e, "shadow volume: extruded corner from the camera (extrusion %.6g, bound radius %.6g)", ext, r);
 }
 
-/* The quantities the renderers keep in `num` (num.h's kinds), for this scene
- * at width x height, each recorded with the object it comes from. */
-static void scan(const struct scene *s, struct scene_format *R, int width, int height)
+/* The lights, the viewport and the frames, for both renderers; returns the
+ * colour bound (255 x the lights' total, diffuse plus specular). */
+static double scan_lights_view(const struct scene *s, struct scene_format *R, double cam)
 {
-    R->smallest = 1e300;
-    R->smallest_dir = 1e300;
-    R->smallest_radius = 1e300;
-    R->pixel_step = 1e300;
-    double cam = len3(s->camera.position) + anim_reach(&s->camera_anim, s->frames);
-    note(&R->position, cam, "camera position");
     double itot = 0;
     for (int i = 0; i < s->nlights; i++) {
         const struct scene_light *l = &s->lights[i];
@@ -176,176 +170,233 @@ static void scan(const struct scene *s, struct scene_format *R, int width, int h
     if (s->frames > 1) note(&R->other, s->frames - 1, "the last frame's index");
     note(&R->other, len3(s->camera_anim.move_per_frame) * (s->frames > 1 ? s->frames - 1 : 0) + cam,
          "camera: position at the last frame");
-    if (s->kind == SCENE_RAYTRACE) {
-        /* a ray from the viewport runs at most this far across the scene */
-        R->pixel_step = num_to_double(s->viewport_w) / (width > 0 ? width : 1);
-        smallest(R, R->pixel_step, "viewport step per pixel");
-        smallest(R, num_to_double(s->rt.epsilon), "epsilon");
-        note(&R->other, num_to_double(s->rt.t_min_primary), "t_min");
-        note(&R->other, width > height ? width : height, "render size (pixel counts are num)");
-        /* canvas x times viewport size, before the division by the width */
-        note(&R->other, (width > height ? width : height) / 2.0 *
-                            fmax(num_to_double(s->viewport_w), num_to_double(s->viewport_h)),
-             "canvas coordinate x viewport size");
-        /* supersampling sums n^2 colours before dividing */
-        int n = s->rt.supersample > 1 ? s->rt.supersample : 1;
-        if (n > 1) note(&R->colour, colour * n * n, "supersample %d: the sum of %d colours", n, n * n);
-        int book = s->rt.formulation == 1;
-        for (int i = 0; i < s->nobjects; i++) {
-            const struct rt_object *o = &s->objects[i];
-            note(&R->other, num_to_double(o->mat.specular), "object %d: specular exponent", i);
-            if (o->shape == RT_SPHERE) {
-                double r = num_to_double(o->radius), c = len3(o->center);
-                note(&R->position, c + r, "sphere %d: centre + radius", i);
-                note(&R->position, c + cam, "sphere %d: distance from the camera to the centre", i);
-                for (int k = 0; k < s->nlights; k++)
-                    if (s->lights[k].type == LIGHT_POINT)
-                        note(&R->position, c + r + len3(s->lights[k].v), "sphere %d: distance to light %d", i, k);
-                if (book) {
-                    note(&R->square, r * r, "sphere %d: radius %g makes r^2", i, r);
-                    note(&R->square, (c + cam) * (c + cam), "sphere %d: |CO|^2 from the camera", i);
-                }
-                smallest(R, r, "a sphere radius");
-                if (r > 0 && r < R->smallest_radius) R->smallest_radius = r;
-            } else if (o->shape == RT_PLANE) {
-                note(&R->position, num_to_double(o->dist), "plane %d: distance from the origin", i);
-            } else {
-                for (int k = 0; k < 3; k++) note(&R->position, len3(o->p[k]) + cam, "triangle %d: corner %d", i, k);
-                /* Moller-Trumbore keeps two cross products in num: D' x e2
-                 * (|D'| < 2) and (O - p0) x e1 */
-                double e1 = dist3(o->p[1], o->p[0]), e2 = dist3(o->p[2], o->p[0]), o0 = len3(o->p[0]) + cam;
-                note(&R->position, fmax(e1, e2), "triangle %d: an edge", i);
-                note(&R->other, 2 * e2, "triangle %d: direction x edge 2", i);
-                note(&R->other, o0 * e1, "triangle %d: (origin - corner 0) x edge 1", i);
-            }
-        }
-        /* The view direction D = (x vw / W, y vh / H, d) and the light
-         * vectors stay unnormalised (the book's lighting), so two products
-         * are num: the specular term's R.V and |R| |V| (|R| = |L|, |V| = |D|,
-         * reflections keep |D|), and a root t = distance / |direction|
-         * (primary and reflected rays: |D| >= d; shadow rays to a
-         * directional light: its direction's length; point lights: t <= 1). */
-        double vw2 = num_to_double(s->viewport_w) / 2, vh2 = num_to_double(s->viewport_h) / 2,
-               dd = fabs(num_to_double(s->projection_d));
-        double dmax = sqrt(vw2 * vw2 + vh2 * vh2 + dd * dd), dmin = dd, lmax = 0;
-        shortest_dir(R, dd, "the view direction (|D| >= viewport d)");
-        for (int k = 0; k < s->nlights; k++) {
-            const struct scene_light *l = &s->lights[k];
-            if (l->type == LIGHT_POINT && R->position.value > lmax) lmax = R->position.value;
-            if (l->type == LIGHT_DIRECTIONAL) {
-                double ll = len3(l->v);
-                if (ll > lmax) lmax = ll;
-                if (s->rt.shadows && ll < dmin) dmin = ll;
-            }
-        }
-        if (s->rt.specular) note(&R->other, lmax * dmax, "specular: R.V of the longest light vector and view ray");
-        if (dmin > 0) note(&R->other, R->position.value / dmin, "a ray parameter t: distance / |direction| (%.3g)", dmin);
-    } else {
-        double w = width, W = num_to_double(s->viewport_w), d = num_to_double(s->projection_d);
-        smallest(R, 1.0 / 1024, "texture coordinates (1/1024 of a texture)");
-        note(&R->screen, w > height ? w : height, "render size");
-        note(&R->screen, s->canvas_w > s->canvas_h ? s->canvas_w : s->canvas_h, "scene canvas size");
-        /* face normals are shading normals (narrowed to num) only when the
-         * triangles are shaded with computed normals or the model has none */
-        int face_normals = s->ras.shading != SHADE_NONE && !s->ras.wireframe;
-        for (int i = 0; i < s->nprims; i++)
-            for (int k = 0; k < s->prims[i].npts; k++) {
-                note(&R->screen, num_to_double(s->prims[i].x[k]), "2D primitive %d: x", i);
-                note(&R->screen, num_to_double(s->prims[i].y[k]), "2D primitive %d: y", i);
-            }
-        for (int i = 0; i < s->nlines; i++) {
-            const struct line3d *l = &s->lines[i];
-            vec3 e[2] = { l->a, l->b };
-            for (int k = 0; k < 2; k++) {
-                note(&R->position, len3(e[k]) + cam, "line %d: end %d", i, k);
-                double z = num_to_double(e[k].z) - num_to_double(s->camera.position.z);
-                if (z > 0) {
-                    note(&R->screen, num_to_double(e[k].x) * d / z * w / W, "line %d: projected x", i);
-                    note(&R->screen, num_to_double(e[k].y) * d / z * w / W, "line %d: projected y", i);
-                }
-            }
-        }
-        /* every model as written (parsed into num whether instanced or not) */
-        for (int i = 0; i < s->nmodels; i++) {
-            const struct ras_model *m = &s->models[i];
-            for (int k = 0; k < m->nverts; k++)
-                note(&R->position, maxabs3(m->verts[k]), "model %s: vertex %d as written", m->name, k);
-            note(&R->position, len3(m->bound_center) + num_to_double(m->bound_radius), "model %s: bounding sphere",
-                 m->name);
-            for (int k = 0; k < m->ntris && m->has_normals; k++)
-                for (int c = 0; c < 3; c++)
-                    note(&R->other, maxabs3(m->tris[k].n[c]), "model %s: normal of triangle %d as written", m->name, k);
-        }
-        for (int i = 0; i < s->ninstances; i++) {
-            const struct ras_instance *in = &s->instances[i];
-            const struct ras_model *m = &s->models[in->model];
-            double sc = num_to_double(in->scale), t = len3(in->position) + anim_reach(&in->anim, s->frames);
-            double vmax = 0;
-            for (int k = 0; k < m->nverts; k++)
-                if (len3(m->verts[k]) > vmax) vmax = len3(m->verts[k]);
-            note(&R->other, sc, "instance %d (%s): scale", i, m->name);
-            note(&R->other, num_to_double(in->specular), "instance %d (%s): specular exponent", i, m->name);
-            note(&R->position, sc * (len3(m->bound_center) + num_to_double(m->bound_radius)),
-                 "instance %d (%s): scaled bounding sphere", i, m->name);
-            double far = t + sc * vmax;
-            note(&R->position, t + sc * len3(m->bound_center) + cam, "instance %d (%s): bounding-sphere centre", i,
-                 m->name);
-            /* the unprojection x * z / unproj (Phong) and the projection
-             * x * unproj / z keep the product wide (ras_mul_div): only the
-             * result, a position or a screen coordinate, is num */
-            note(&R->position, far + cam, "instance %d (%s): farthest vertex from the camera", i, m->name);
-            /* face normals are edge x edge of camera-space corners, at most
-             * the square of the instance's diameter. The core keeps them wide
-             * (culling and facing tests are wide triple products) and narrows
-             * one to num only where it is the shading normal */
-            double diam2 = (2 * sc * vmax) * (2 * sc * vmax);
-            if (face_normals && (s->ras.computed_normals || !m->has_normals)) {
-                note(&R->square, diam2, "instance %d (%s): face normal edge x edge", i, m->name);
-                if (s->ras.book_exact) {
-                    /* the book path never normalises N: 2 N (N.L) - L of
-                     * ras_compute_illumination is |N|^2 |L| x 2 (N.L and the
-                     * cosines' products are wide) */
-                    double lmax = far + cam;
-                    for (int k = 0; k < s->nlights; k++)
-                        if (s->lights[k].type != LIGHT_AMBIENT && far + len3(s->lights[k].v) > lmax)
-                            lmax = far + len3(s->lights[k].v);
-                    note(&R->square, 2 * diam2 * diam2 * lmax + lmax,
-                         "instance %d (%s): reflected light of the unnormalised face normal", i, m->name);
-                    note(&R->square, 2 * diam2 * lmax, "instance %d (%s): 2 N.L of the unnormalised face normal", i,
-                         m->name);
-                }
-            }
+    return colour;
+}
+
+/* Ray tracer: the objects (spheres, planes, triangles). */
+static void scan_rt_objects(const struct scene *s, struct scene_format *R, double cam)
+{
+    int book = s->rt.formulation == 1;
+    for (int i = 0; i < s->nobjects; i++) {
+        const struct rt_object *o = &s->objects[i];
+        note(&R->other, num_to_double(o->mat.specular), "object %d: specular exponent", i);
+        if (o->shape == RT_SPHERE) {
+            double r = num_to_double(o->radius), c = len3(o->center);
+            note(&R->position, c + r, "sphere %d: centre + radius", i);
+            note(&R->position, c + cam, "sphere %d: distance from the camera to the centre", i);
             for (int k = 0; k < s->nlights; k++)
                 if (s->lights[k].type == LIGHT_POINT)
-                    note(&R->position, far + len3(s->lights[k].v), "instance %d: distance to light %d", i, k);
-            if (!s->ras.clip) {
-                /* no near plane: the projection of each vertex, as placed */
-                for (int k = 0; k < m->nverts; k++) {
-                    vec3 v = m3_mul_v3(&in->rotation, m->verts[k]);
-                    double x = num_to_double(v.x) * sc + num_to_double(in->position.x) - num_to_double(s->camera.position.x);
-                    double y = num_to_double(v.y) * sc + num_to_double(in->position.y) - num_to_double(s->camera.position.y);
-                    double z = num_to_double(v.z) * sc + num_to_double(in->position.z) - num_to_double(s->camera.position.z);
-                    double r = sqrt(x * x + y * y + z * z);
-                    /* after any camera rotation the depth is at least ... the worst case is z = distance-limited */
-                    (void)r;
-                    if (z > 0) {
-                        note(&R->screen, x * d / z * w / W, "instance %d: projected vertex %d", i, k);
-                        note(&R->screen, y * d / z * w / W, "instance %d: projected vertex %d", i, k);
-                        note(&R->screen, 1 / z, "instance %d: 1/z of vertex %d", i, k);
-                    }
-                }
+                    note(&R->position, c + r + len3(s->lights[k].v), "sphere %d: distance to light %d", i, k);
+            if (book) {
+                note(&R->square, r * r, "sphere %d: radius %g makes r^2", i, r);
+                note(&R->square, (c + cam) * (c + cam), "sphere %d: |CO|^2 from the camera", i);
             }
-            /* uv is read only for an instance with a texture or a normal map */
-            int textured = (in->texture >= 0 && in->texture < s->ntextures) ||
-                           (in->normal_map >= 0 && in->normal_map < s->ntextures);
-            for (int k = 0; k < m->ntris && textured; k++)
-                for (int c = 0; c < 3 && m->has_uvs; c++) {
-                    note(&R->screen, num_to_double(m->tris[k].uv[c].u) * 1024, "instance %d: u x texture size", i);
-                    note(&R->screen, num_to_double(m->tris[k].uv[c].v) * 1024, "instance %d: v x texture size", i);
-                }
+            smallest(R, r, "a sphere radius");
+            if (r > 0 && r < R->smallest_radius) R->smallest_radius = r;
+        } else if (o->shape == RT_PLANE) {
+            note(&R->position, num_to_double(o->dist), "plane %d: distance from the origin", i);
+        } else {
+            for (int k = 0; k < 3; k++) note(&R->position, len3(o->p[k]) + cam, "triangle %d: corner %d", i, k);
+            /* Moller-Trumbore keeps two cross products in num: D' x e2
+             * (|D'| < 2) and (O - p0) x e1 */
+            double e1 = dist3(o->p[1], o->p[0]), e2 = dist3(o->p[2], o->p[0]), o0 = len3(o->p[0]) + cam;
+            note(&R->position, fmax(e1, e2), "triangle %d: an edge", i);
+            note(&R->other, 2 * e2, "triangle %d: direction x edge 2", i);
+            note(&R->other, o0 * e1, "triangle %d: (origin - corner 0) x edge 1", i);
         }
-        if (s->ras.shadow_volume) shadow_volume_ranges(s, R, cam);
     }
+}
+
+/* Ray tracer: the view direction D = (x vw / W, y vh / H, d) and the light
+ * vectors stay unnormalised (the book's lighting), so two products are num:
+ * the specular term's R.V and |R| |V| (|R| = |L|, |V| = |D|, reflections
+ * keep |D|), and a root t = distance / |direction| (primary and reflected
+ * rays: |D| >= d; shadow rays to a directional light: its direction's
+ * length; point lights: t <= 1). Read after the objects: the largest
+ * position so far bounds every distance. */
+static void scan_rt_rays(const struct scene *s, struct scene_format *R)
+{
+    double vw2 = num_to_double(s->viewport_w) / 2, vh2 = num_to_double(s->viewport_h) / 2,
+           dd = fabs(num_to_double(s->projection_d));
+    double dmax = sqrt(vw2 * vw2 + vh2 * vh2 + dd * dd), dmin = dd, lmax = 0;
+    shortest_dir(R, dd, "the view direction (|D| >= viewport d)");
+    for (int k = 0; k < s->nlights; k++) {
+        const struct scene_light *l = &s->lights[k];
+        if (l->type == LIGHT_POINT && R->position.value > lmax) lmax = R->position.value;
+        if (l->type == LIGHT_DIRECTIONAL) {
+            double ll = len3(l->v);
+            if (ll > lmax) lmax = ll;
+            if (s->rt.shadows && ll < dmin) dmin = ll;
+        }
+    }
+    if (s->rt.specular) note(&R->other, lmax * dmax, "specular: R.V of the longest light vector and view ray");
+    if (dmin > 0) note(&R->other, R->position.value / dmin, "a ray parameter t: distance / |direction| (%.3g)", dmin);
+}
+
+static void scan_rt(const struct scene *s, struct scene_format *R, int width, int height, double cam, double colour)
+{
+    /* a ray from the viewport runs at most this far across the scene */
+    R->pixel_step = num_to_double(s->viewport_w) / (width > 0 ? width : 1);
+    smallest(R, R->pixel_step, "viewport step per pixel");
+    smallest(R, num_to_double(s->rt.epsilon), "epsilon");
+    note(&R->other, num_to_double(s->rt.t_min_primary), "t_min");
+    note(&R->other, width > height ? width : height, "render size (pixel counts are num)");
+    /* canvas x times viewport size, before the division by the width */
+    note(&R->other, (width > height ? width : height) / 2.0 *
+                        fmax(num_to_double(s->viewport_w), num_to_double(s->viewport_h)),
+         "canvas coordinate x viewport size");
+    /* supersampling sums n^2 colours before dividing */
+    int n = s->rt.supersample > 1 ? s->rt.supersample : 1;
+    if (n > 1) note(&R->colour, colour * n * n, "supersample %d: the sum of %d colours", n, n * n);
+    scan_rt_objects(s, R, cam);
+    scan_rt_rays(s, R);
+}
+
+/* Rasterizer: what the projection to the screen (x d / z x w / W) needs,
+ * and the camera's reach. */
+struct ras_view {
+    double cam, w, W, d;
+    int face_normals;          /* face normals are shading normals (narrowed to num) only when the
+                                  triangles are shaded with computed normals or the model has none */
+};
+
+/* Rasterizer: the 2D primitives, the 3D lines and every model as written. */
+static void scan_ras_prims_models(const struct scene *s, struct scene_format *R, const struct ras_view *v)
+{
+    for (int i = 0; i < s->nprims; i++)
+        for (int k = 0; k < s->prims[i].npts; k++) {
+            note(&R->screen, num_to_double(s->prims[i].x[k]), "2D primitive %d: x", i);
+            note(&R->screen, num_to_double(s->prims[i].y[k]), "2D primitive %d: y", i);
+        }
+    for (int i = 0; i < s->nlines; i++) {
+        const struct line3d *l = &s->lines[i];
+        vec3 e[2] = { l->a, l->b };
+        for (int k = 0; k < 2; k++) {
+            note(&R->position, len3(e[k]) + v->cam, "line %d: end %d", i, k);
+            double z = num_to_double(e[k].z) - num_to_double(s->camera.position.z);
+            if (z > 0) {
+                note(&R->screen, num_to_double(e[k].x) * v->d / z * v->w / v->W, "line %d: projected x", i);
+                note(&R->screen, num_to_double(e[k].y) * v->d / z * v->w / v->W, "line %d: projected y", i);
+            }
+        }
+    }
+    /* every model as written (parsed into num whether instanced or not) */
+    for (int i = 0; i < s->nmodels; i++) {
+        const struct ras_model *m = &s->models[i];
+        for (int k = 0; k < m->nverts; k++)
+            note(&R->position, maxabs3(m->verts[k]), "model %s: vertex %d as written", m->name, k);
+        note(&R->position, len3(m->bound_center) + num_to_double(m->bound_radius), "model %s: bounding sphere",
+             m->name);
+        for (int k = 0; k < m->ntris && m->has_normals; k++)
+            for (int c = 0; c < 3; c++)
+                note(&R->other, maxabs3(m->tris[k].n[c]), "model %s: normal of triangle %d as written", m->name, k);
+    }
+}
+
+/* Rasterizer, instance i: face normals are edge x edge of camera-space
+ * corners, at most the square of the instance's diameter (diam2). The core
+ * keeps them wide (culling and facing tests are wide triple products) and
+ * narrows one to num only where it is the shading normal. */
+static void scan_face_normals(const struct scene *s, struct scene_format *R, int i, double diam2, double far,
+                              double cam)
+{
+    const struct ras_model *m = &s->models[s->instances[i].model];
+    note(&R->square, diam2, "instance %d (%s): face normal edge x edge", i, m->name);
+    if (!s->ras.book_exact) return;
+    /* the book path never normalises N: 2 N (N.L) - L of
+     * ras_compute_illumination is |N|^2 |L| x 2 (N.L and the
+     * cosines' products are wide) */
+    double lmax = far + cam;
+    for (int k = 0; k < s->nlights; k++)
+        if (s->lights[k].type != LIGHT_AMBIENT && far + len3(s->lights[k].v) > lmax)
+            lmax = far + len3(s->lights[k].v);
+    note(&R->square, 2 * diam2 * diam2 * lmax + lmax,
+         "instance %d (%s): reflected light of the unnormalised face normal", i, m->name);
+    note(&R->square, 2 * diam2 * lmax, "instance %d (%s): 2 N.L of the unnormalised face normal", i, m->name);
+}
+
+/* Rasterizer, instance i with clip off: no near plane, the projection of
+ * each vertex, as placed. */
+static void scan_unclipped(const struct scene *s, struct scene_format *R, int i, const struct ras_view *v)
+{
+    const struct ras_instance *in = &s->instances[i];
+    const struct ras_model *m = &s->models[in->model];
+    double sc = num_to_double(in->scale);
+    for (int k = 0; k < m->nverts; k++) {
+        vec3 p = m3_mul_v3(&in->rotation, m->verts[k]);
+        double x = num_to_double(p.x) * sc + num_to_double(in->position.x) - num_to_double(s->camera.position.x);
+        double y = num_to_double(p.y) * sc + num_to_double(in->position.y) - num_to_double(s->camera.position.y);
+        double z = num_to_double(p.z) * sc + num_to_double(in->position.z) - num_to_double(s->camera.position.z);
+        if (z > 0) {
+            note(&R->screen, x * v->d / z * v->w / v->W, "instance %d: projected vertex %d", i, k);
+            note(&R->screen, y * v->d / z * v->w / v->W, "instance %d: projected vertex %d", i, k);
+            note(&R->screen, 1 / z, "instance %d: 1/z of vertex %d", i, k);
+        }
+    }
+}
+
+static void scan_instance(const struct scene *s, struct scene_format *R, int i, const struct ras_view *v)
+{
+    const struct ras_instance *in = &s->instances[i];
+    const struct ras_model *m = &s->models[in->model];
+    double sc = num_to_double(in->scale), t = len3(in->position) + anim_reach(&in->anim, s->frames);
+    double vmax = 0;
+    for (int k = 0; k < m->nverts; k++)
+        if (len3(m->verts[k]) > vmax) vmax = len3(m->verts[k]);
+    note(&R->other, sc, "instance %d (%s): scale", i, m->name);
+    note(&R->other, num_to_double(in->specular), "instance %d (%s): specular exponent", i, m->name);
+    note(&R->position, sc * (len3(m->bound_center) + num_to_double(m->bound_radius)),
+         "instance %d (%s): scaled bounding sphere", i, m->name);
+    double far = t + sc * vmax;
+    note(&R->position, t + sc * len3(m->bound_center) + v->cam, "instance %d (%s): bounding-sphere centre", i,
+         m->name);
+    /* the unprojection x * z / unproj (Phong) and the projection
+     * x * unproj / z keep the product wide (ras_mul_div): only the
+     * result, a position or a screen coordinate, is num */
+    note(&R->position, far + v->cam, "instance %d (%s): farthest vertex from the camera", i, m->name);
+    double diam2 = (2 * sc * vmax) * (2 * sc * vmax);
+    if (v->face_normals && (s->ras.computed_normals || !m->has_normals)) scan_face_normals(s, R, i, diam2, far, v->cam);
+    for (int k = 0; k < s->nlights; k++)
+        if (s->lights[k].type == LIGHT_POINT)
+            note(&R->position, far + len3(s->lights[k].v), "instance %d: distance to light %d", i, k);
+    if (!s->ras.clip) scan_unclipped(s, R, i, v);
+    /* uv is read only for an instance with a texture or a normal map */
+    int textured = (in->texture >= 0 && in->texture < s->ntextures) ||
+                   (in->normal_map >= 0 && in->normal_map < s->ntextures);
+    for (int k = 0; k < m->ntris && textured; k++)
+        for (int c = 0; c < 3 && m->has_uvs; c++) {
+            note(&R->screen, num_to_double(m->tris[k].uv[c].u) * 1024, "instance %d: u x texture size", i);
+            note(&R->screen, num_to_double(m->tris[k].uv[c].v) * 1024, "instance %d: v x texture size", i);
+        }
+}
+
+static void scan_ras(const struct scene *s, struct scene_format *R, int width, int height, double cam)
+{
+    struct ras_view v = { cam, width, num_to_double(s->viewport_w), num_to_double(s->projection_d),
+                          s->ras.shading != SHADE_NONE && !s->ras.wireframe };
+    smallest(R, 1.0 / 1024, "texture coordinates (1/1024 of a texture)");
+    note(&R->screen, v.w > height ? v.w : height, "render size");
+    note(&R->screen, s->canvas_w > s->canvas_h ? s->canvas_w : s->canvas_h, "scene canvas size");
+    scan_ras_prims_models(s, R, &v);
+    for (int i = 0; i < s->ninstances; i++) scan_instance(s, R, i, &v);
+    if (s->ras.shadow_volume) shadow_volume_ranges(s, R, cam);
+}
+
+/* The quantities the renderers keep in `num` (num.h's kinds), for this scene
+ * at width x height, each recorded with the object it comes from. */
+static void scan(const struct scene *s, struct scene_format *R, int width, int height)
+{
+    R->smallest = 1e300;
+    R->smallest_dir = 1e300;
+    R->smallest_radius = 1e300;
+    R->pixel_step = 1e300;
+    double cam = len3(s->camera.position) + anim_reach(&s->camera_anim, s->frames);
+    note(&R->position, cam, "camera position");
+    double colour = scan_lights_view(s, R, cam);
+    if (s->kind == SCENE_RAYTRACE)
+        scan_rt(s, R, width, height, cam, colour);
+    else
+        scan_ras(s, R, width, height, cam);
 }
 
 int scene_format_choose(const struct scene *s, int width, int height, const int *fracs, int nfracs,

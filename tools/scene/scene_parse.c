@@ -17,6 +17,7 @@
 #include <errno.h>
 #include <math.h>
 #include <setjmp.h>
+#include <stddef.h>
 #include <stdarg.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -629,6 +630,7 @@ struct build {
     struct prim2d *prims;
     struct line3d *lines;
     struct named *obj_names, *model_names, *tex_names;
+    int nlights, nobjects, ncsg, nmodels, ninstances, ntextures, nprims, nlines;
 };
 
 static int find_named(const struct named *t, int n, const char *name)
@@ -636,15 +638,6 @@ static int find_named(const struct named *t, int n, const char *name)
     for (int i = 0; i < n; i++)
         if (t[i].name && !strcmp(t[i].name, name)) return i;
     return -1;
-}
-
-/* Counts top-level entries with key k. */
-static int count_key(const struct node *top, const char *k)
-{
-    int n = 0;
-    for (const struct node *e = top->first; e; e = e->next)
-        if (e->key && !strcmp(e->key, k)) n++;
-    return n;
 }
 
 static void read_anim(struct parser *p, const struct node *n, struct scene_anim *a)
@@ -773,88 +766,135 @@ static void read_csg(struct parser *p, struct build *b, const struct node *n, st
     if (c->a == c->b) FAIL_N(p, v[2], "csg: a and b are the same object");
 }
 
-static void read_rt_options(struct parser *p, const struct node *n, struct rt_options *o)
+/* ---- the option blocks: scene_options.def ----------------------------------- */
+
+enum opt_kind { OPT_BOOL, OPT_NOT, OPT_INT, OPT_NUM, OPT_CHOICE, OPT_INDEX };
+
+/* A row of scene_options.def, where its member lives in the options struct. */
+struct option {
+    const char *key;
+    size_t offset, size;
+    int kind;
+    double lo, hi;
+    const char *values, *values_error;
+    double def;
+    int order;
+};
+
+#define OPTION_ROW(st, key, field, type, kind, lo, hi, values, values_error, def, order) \
+    { key, offsetof(struct st, field), sizeof(type), OPT_##kind, lo, hi, values, values_error, def, order },
+static const struct option rt_option_rows[] = {
+#define RT_OPTION(key, field, type, kind, lo, hi, values, values_error, def, def_doc, emit_line, order, doc) \
+    OPTION_ROW(rt_options, key, field, type, kind, lo, hi, values, values_error, def, order)
+#include "scene_options.def"
+};
+static const struct option ras_option_rows[] = {
+#define RAS_OPTION(key, field, type, kind, lo, hi, values, values_error, def, def_doc, emit_line, order, doc) \
+    OPTION_ROW(ras_options, key, field, type, kind, lo, hi, values, values_error, def, order)
+#include "scene_options.def"
+};
+#undef OPTION_ROW
+
+/* Every member is a num (kind NUM) or an unsigned integer of one or two bytes. */
+#define OPTION_TYPE_CHECK(key, field, type, kind, ...) \
+    _Static_assert(OPT_##kind == OPT_NUM ? sizeof(type) == sizeof(num) : sizeof(type) <= 2, "option " key);
+#define RT_OPTION OPTION_TYPE_CHECK
+#define RAS_OPTION OPTION_TYPE_CHECK
+#include "scene_options.def"
+#undef OPTION_TYPE_CHECK
+
+#define MAX_OPTIONS 32
+#define NROWS(t) (sizeof t / sizeof t[0])
+_Static_assert(NROWS(rt_option_rows) <= MAX_OPTIONS && NROWS(ras_option_rows) <= MAX_OPTIONS, "MAX_OPTIONS");
+
+/* One of the '|'-separated names of `list`; returns its index. */
+static int get_choice_list(struct parser *p, const struct node *n, const char *what, const char *list)
 {
-    static const char *const keys[] = { "recursion_depth", "t_min", "epsilon", "lighting", "diffuse", "specular",
-                                        "shadows", "supersample", "adaptive_supersample", "subsample", "bvh",
-                                        "shadow_any_hit", "shadow_cache", "formulation", "frame_cache",
-                                        "adaptive_subsample", "shortcuts", "adaptive_threshold", NULL };
-    static const char *const forms[] = { "default", "book", "robust", NULL };
-    const struct node *v[18];
-    fields(p, n, "raytracer", keys, v);
-    if (v[0]) o->recursion_depth = (uint8_t)get_int(p, v[0], "recursion_depth", 0, 16);
-    if (v[1]) o->t_min_primary = to_num(p, v[1], get_num_range(p, v[1], "t_min", 0, 1e6), "t_min");
-    if (v[2]) o->epsilon = to_num(p, v[2], get_num_range(p, v[2], "epsilon", 0, 1), "epsilon");
-    if (v[3]) o->unlit = (uint8_t)!get_bool(p, v[3], "lighting");
-    if (v[4]) o->diffuse = (uint8_t)get_bool(p, v[4], "diffuse");
-    if (v[5]) o->specular = (uint8_t)get_bool(p, v[5], "specular");
-    if (v[6]) o->shadows = (uint8_t)get_bool(p, v[6], "shadows");
-    if (v[7]) o->supersample = (uint8_t)get_int(p, v[7], "supersample", 1, 4);
-    if (v[8]) o->adaptive_ss = (uint8_t)get_bool(p, v[8], "adaptive_supersample");
-    if (v[9]) o->subsample = (uint8_t)get_int(p, v[9], "subsample", 1, 8);
-    if (v[10]) o->bvh = (uint8_t)get_bool(p, v[10], "bvh");
-    if (v[11]) o->shadow_any_hit = (uint8_t)get_bool(p, v[11], "shadow_any_hit");
-    if (v[12]) o->shadow_cache = (uint8_t)get_bool(p, v[12], "shadow_cache");
-    if (v[13]) o->formulation = (uint8_t)get_choice(p, v[13], "formulation", forms);
-    if (v[14]) o->no_frame_cache = (uint8_t)!get_bool(p, v[14], "frame_cache");
-    if (v[15]) {
-        o->adaptive_subsample = (uint8_t)get_int(p, v[15], "adaptive_subsample", 0, 8);
-        if (o->adaptive_subsample == 1) FAIL_N(p, v[15], "adaptive_subsample: 0 (off) or a block side of 2 .. 8");
+    char buf[256];
+    const char *names[MAX_OPTIONS + 1];
+    int k = 0;
+    snprintf(buf, sizeof buf, "%s", list);
+    for (char *c = buf; k < MAX_OPTIONS; c++) {
+        names[k++] = c;
+        c = strchr(c, '|');
+        if (!c) break;
+        *c = 0;
     }
-    if (v[16]) o->no_shortcuts = (uint8_t)!get_bool(p, v[16], "shortcuts");
-    if (v[17]) o->adaptive_threshold = (uint8_t)get_int(p, v[17], "adaptive_threshold", 1, 64);
+    names[k] = NULL;
+    return get_choice(p, n, what, names);
 }
 
-static void read_ras_options(struct parser *p, const struct node *n, struct ras_options *o)
+/* k is one of the '|'-separated numbers or ranges a..b of `set`. */
+static int in_set(const char *set, long k)
 {
-    static const char *const keys[] = { "shading", "wireframe", "truncate", "clip", "depth", "depth_bits", "cull",
-                                        "normals", "diffuse", "specular", "uv", "transform", "camera_transform",
-                                        "shadows", "shadow_volumes", "env_map", "subpixel_bits", "book_exact",
-                                        "shadow_light", "shadow_map_size", "pcf", "env_reflect", "outlines",
-                                        "perspective_step", "lighting", NULL };
-    static const char *const shadings[] = { "flat", "gouraud", "phong", "none", NULL };
-    static const char *const clips[] = { "off", "book", "split", NULL };
-    static const char *const normals[] = { "model", "computed", NULL };
-    static const char *const uvs[] = { "linear", "perspective", NULL };
-    static const char *const transforms[] = { "translate", "full", NULL };
-    static const char *const shadows[] = { "off", "map", NULL };
-    static const char *const lightings[] = { "fast", "exact", "vertex", NULL };
-    const struct node *v[25];
-    fields(p, n, "rasterizer", keys, v);
-    if (v[0]) o->shading = (uint8_t)get_choice(p, v[0], "shading", shadings);
-    if (v[1]) o->wireframe = (uint8_t)get_bool(p, v[1], "wireframe");
-    if (v[2]) o->project_truncate = (uint8_t)get_bool(p, v[2], "truncate");
-    if (v[3]) o->clip = (uint8_t)get_choice(p, v[3], "clip", clips);
-    if (v[4]) o->depth_test = (uint8_t)get_bool(p, v[4], "depth");
-    if (v[5]) {
-        long d = get_int(p, v[5], "depth_bits", 16, 32);
-        if (d != 16 && d != 32) FAIL_N(p, v[5], "depth_bits must be 16 or 32");
-        o->depth_bits = (uint8_t)d;
+    for (const char *c = set; *c;) {
+        char *e;
+        long lo = strtol(c, &e, 10), hi = lo;
+        if (e[0] == '.' && e[1] == '.') hi = strtol(e + 2, &e, 10);
+        if (k >= lo && k <= hi) return 1;
+        c = *e == '|' ? e + 1 : e;
     }
-    if (v[6]) o->backface_cull = (uint8_t)get_bool(p, v[6], "cull");
-    if (v[7]) o->computed_normals = (uint8_t)get_choice(p, v[7], "normals", normals);
-    if (v[8]) o->diffuse = (uint8_t)get_bool(p, v[8], "diffuse");
-    if (v[9]) o->specular = (uint8_t)get_bool(p, v[9], "specular");
-    if (v[10]) o->perspective_uv = (uint8_t)get_choice(p, v[10], "uv", uvs);
-    if (v[11]) o->instance_transform = (uint8_t)get_choice(p, v[11], "transform", transforms);
-    if (v[12]) o->camera_transform = (uint8_t)get_bool(p, v[12], "camera_transform");
-    if (v[13]) o->shadow_map = (uint8_t)get_choice(p, v[13], "shadows", shadows);
-    if (v[14]) o->shadow_volume = (uint8_t)get_bool(p, v[14], "shadow_volumes");
-    if (v[15]) o->env_map = (uint8_t)get_bool(p, v[15], "env_map");
-    if (v[16]) o->subpixel_bits = (uint8_t)get_int(p, v[16], "subpixel_bits", 0, 8);
-    if (v[17]) o->book_exact = (uint8_t)get_bool(p, v[17], "book_exact");
-    /* chapter 15 parameters; the light index is checked against the lights in parse_scene */
-    if (v[18]) o->shadow_light = (uint8_t)(get_int(p, v[18], "shadow_light", 0, 254) + 1);
-    if (v[19]) o->shadow_map_size = (uint16_t)get_int(p, v[19], "shadow_map_size", 16, 1024);
-    if (v[20]) o->pcf = (uint8_t)get_int(p, v[20], "pcf", 1, 3);
-    if (v[21]) o->env_reflect = (uint8_t)get_int(p, v[21], "env_reflect", 1, 100);
-    if (v[22]) o->outlines = (uint8_t)get_bool(p, v[22], "outlines");
-    if (v[23]) {
-        long k = get_int(p, v[23], "perspective_step", 1, 32);
-        if (k != 1 && k != 8 && k != 16 && k != 32) FAIL_N(p, v[23], "perspective_step must be 1, 8, 16 or 32");
-        o->persp_step = (uint8_t)k;
+    return 0;
+}
+
+static void store_option(void *opts, const struct option *o, long k)
+{
+    unsigned char *at = (unsigned char *)opts + o->offset;
+    if (o->size == 1) {
+        uint8_t u = (uint8_t)k;
+        memcpy(at, &u, 1);
+    } else {
+        uint16_t u = (uint16_t)k;
+        memcpy(at, &u, 2);
     }
-    if (v[24]) o->lighting = (uint8_t)get_choice(p, v[24], "lighting", lightings);
+}
+
+static void set_defaults(void *opts, const struct option *rows, size_t nrows)
+{
+    for (const struct option *o = rows; o < rows + nrows; o++) {
+        if (o->kind == OPT_NUM) {
+            num x = num_from_double(o->def);
+            memcpy((unsigned char *)opts + o->offset, &x, sizeof x);
+        } else {
+            store_option(opts, o, (long)o->def);
+        }
+    }
+}
+
+static void read_option(struct parser *p, const struct node *v, const struct option *o, void *opts)
+{
+    long k;
+    switch (o->kind) {
+    case OPT_NUM: {
+        num x = to_num(p, v, get_num_range(p, v, o->key, o->lo, o->hi), o->key);
+        memcpy((unsigned char *)opts + o->offset, &x, sizeof x);
+        return;
+    }
+    case OPT_BOOL: k = get_bool(p, v, o->key); break;
+    case OPT_NOT: k = !get_bool(p, v, o->key); break;
+    case OPT_CHOICE: k = get_choice_list(p, v, o->key, o->values); break;
+    case OPT_INDEX: k = get_int(p, v, o->key, (long)o->lo, (long)o->hi) + 1; break;
+    default:
+        k = get_int(p, v, o->key, (long)o->lo, (long)o->hi);
+        if (o->values && !in_set(o->values, k)) FAIL_N(p, v, "%s", o->values_error);
+        break;
+    }
+    store_option(opts, o, k);
+}
+
+/* The block `what` of the options in `rows` into opts: unknown and duplicate
+ * keys first, then each value given, in the rows' `order`. */
+static void read_options(struct parser *p, const struct node *n, const char *what, const struct option *rows,
+                         size_t nrows, void *opts)
+{
+    const char *keys[MAX_OPTIONS + 1];
+    const struct node *v[MAX_OPTIONS];
+    for (size_t i = 0; i < nrows; i++) keys[i] = rows[i].key;
+    keys[nrows] = NULL;
+    fields(p, n, what, keys, v);
+    for (int k = 1; k <= (int)nrows; k++)
+        for (size_t i = 0; i < nrows; i++)
+            if (v[i] && rows[i].order == k) read_option(p, v[i], &rows[i], opts);
 }
 
 /* ---- models --------------------------------------------------------------- */
@@ -1310,156 +1350,190 @@ static void read_line3d(struct parser *p, const struct node *n, struct line3d *l
 
 /* ---- the scene -------------------------------------------------------------- */
 
-static const char *const top_keys[] = { "name", "renderer", "canvas", "viewport", "background", "frames", "camera",
-                                        "light", "sphere", "plane", "triangle", "csg", "raytracer", "model",
-                                        "texture", "instance", "rasterizer", "line2d", "triangle2d", "line3d",
-                                        NULL };
-static const int top_repeats[] = { 0, 0, 0, 0, 0, 0, 0, 1, 1, 1, 1, 1, 0, 1, 1, 1, 0, 1, 1, 1 };
+enum top_key {
+#define SCENE_KEY(key, repeatable) TOP_##key,
+#include "scene_options.def"
+    NTOP
+};
 
-static int is_object_key(const char *k)
+static const struct { const char *key; int repeatable; } top_rows[NTOP] = {
+#define SCENE_KEY(key, repeatable) { #key, repeatable },
+#include "scene_options.def"
+};
+
+/* The top level's entries by key: the one entry of each key that may occur
+ * once, and how many of each. */
+struct top {
+    const struct node *single[NTOP];
+    int count[NTOP];
+};
+
+static int top_index(const char *k)
 {
-    return !strcmp(k, "sphere") || !strcmp(k, "plane") || !strcmp(k, "triangle");
+    for (int i = 0; i < NTOP; i++)
+        if (!strcmp(top_rows[i].key, k)) return i;
+    return -1;
 }
 
-static void read_scene(struct parser *p, const struct node *top, struct scene *s, const char *default_name)
+/* Unkeyed values, unknown keys, duplicates and counts, before anything is read. */
+static void check_top(struct parser *p, const struct node *top, struct top *t, struct build *b)
 {
-    const struct node *single[20] = { NULL };
-    struct build b;
-    memset(&b, 0, sizeof b);
-    b.s = s;
-    /* check the top-level keys first: unknown keys and duplicates */
+    memset(t, 0, sizeof *t);
     for (const struct node *e = top->first; e; e = e->next) {
         if (!e->key) FAIL_N(p, e, "expected 'key = value' or 'key { ... }' at the top level, found %s",
                             kind_names[e->kind]);
-        int i;
-        for (i = 0; top_keys[i]; i++)
-            if (!strcmp(top_keys[i], e->key)) break;
-        if (!top_keys[i]) FAIL_K(p, e, "unknown key '%s'", e->key);
-        if (!top_repeats[i]) {
-            if (single[i]) FAIL_K(p, e, "duplicate '%s' (first at %d:%d)", e->key, single[i]->kline, single[i]->kcol);
-            single[i] = e;
+        int i = top_index(e->key);
+        if (i < 0) FAIL_K(p, e, "unknown key '%s'", e->key);
+        if (!top_rows[i].repeatable) {
+            const struct node *f = t->single[i];
+            if (f) FAIL_K(p, e, "duplicate '%s' (first at %d:%d)", e->key, f->kline, f->kcol);
+            t->single[i] = e;
         }
+        t->count[i]++;
     }
-    int nlights = count_key(top, "light");
-    int nobj = count_key(top, "sphere") + count_key(top, "plane") + count_key(top, "triangle");
-    int ncsg = count_key(top, "csg");
-    int nmodels = count_key(top, "model"), ninst = count_key(top, "instance"), ntex = count_key(top, "texture");
-    int nprims = count_key(top, "line2d") + count_key(top, "triangle2d"), nlines = count_key(top, "line3d");
-    if (nlights > MAX_LIGHTS) fail_at(p, 1, 1, "more than %d lights", MAX_LIGHTS);
-    if (nobj > MAX_OBJECTS || ncsg > MAX_OBJECTS) fail_at(p, 1, 1, "more than %d objects", MAX_OBJECTS);
-    if (nmodels > MAX_MODELS) fail_at(p, 1, 1, "more than %d models", MAX_MODELS);
-    if (ninst > MAX_INSTANCES) fail_at(p, 1, 1, "more than %d instances", MAX_INSTANCES);
-    if (ntex > MAX_TEXTURES) fail_at(p, 1, 1, "more than %d textures", MAX_TEXTURES);
-    if (nprims > MAX_PRIMS) fail_at(p, 1, 1, "more than %d 2D primitives", MAX_PRIMS);
-    if (nlines > MAX_LINES) fail_at(p, 1, 1, "more than %d 3D lines", MAX_LINES);
+    b->nlights = t->count[TOP_light];
+    b->nobjects = t->count[TOP_sphere] + t->count[TOP_plane] + t->count[TOP_triangle];
+    b->ncsg = t->count[TOP_csg];
+    b->nmodels = t->count[TOP_model];
+    b->ninstances = t->count[TOP_instance];
+    b->ntextures = t->count[TOP_texture];
+    b->nprims = t->count[TOP_line2d] + t->count[TOP_triangle2d];
+    b->nlines = t->count[TOP_line3d];
+    if (b->nlights > MAX_LIGHTS) fail_at(p, 1, 1, "more than %d lights", MAX_LIGHTS);
+    if (b->nobjects > MAX_OBJECTS || b->ncsg > MAX_OBJECTS) fail_at(p, 1, 1, "more than %d objects", MAX_OBJECTS);
+    if (b->nmodels > MAX_MODELS) fail_at(p, 1, 1, "more than %d models", MAX_MODELS);
+    if (b->ninstances > MAX_INSTANCES) fail_at(p, 1, 1, "more than %d instances", MAX_INSTANCES);
+    if (b->ntextures > MAX_TEXTURES) fail_at(p, 1, 1, "more than %d textures", MAX_TEXTURES);
+    if (b->nprims > MAX_PRIMS) fail_at(p, 1, 1, "more than %d 2D primitives", MAX_PRIMS);
+    if (b->nlines > MAX_LINES) fail_at(p, 1, 1, "more than %d 3D lines", MAX_LINES);
+}
 
-    s->name = single[0] ? get_name(p, single[0], "name") : default_name;
+/* name, canvas, viewport, background, frames, camera */
+static void read_view(struct parser *p, const struct top *t, struct scene *s, const char *default_name)
+{
+    const struct node *e;
+    s->name = t->single[TOP_name] ? get_name(p, t->single[TOP_name], "name") : default_name;
     s->canvas_w = s->canvas_h = 600;
     s->viewport_w = s->viewport_h = s->projection_d = NUM_ONE;
     s->frames = 1;
     s->camera.rotation = m3_identity();
-    if (single[2]) {
+    if ((e = t->single[TOP_canvas])) {
         static const char *const keys[] = { "width", "height", NULL };
         const struct node *v[2];
-        fields(p, single[2], "canvas", keys, v);
+        fields(p, e, "canvas", keys, v);
         if (v[0]) s->canvas_w = (uint16_t)get_int(p, v[0], "canvas width", 1, MAX_CANVAS);
         if (v[1]) s->canvas_h = (uint16_t)get_int(p, v[1], "canvas height", 1, MAX_CANVAS);
     }
-    if (single[3]) {
+    if ((e = t->single[TOP_viewport])) {
         static const char *const keys[] = { "width", "height", "d", NULL };
         const struct node *v[3];
-        fields(p, single[3], "viewport", keys, v);
+        fields(p, e, "viewport", keys, v);
         if (v[0]) s->viewport_w = to_num(p, v[0], get_num_range(p, v[0], "viewport width", 1e-3, 1000), "viewport width");
         if (v[1]) s->viewport_h = to_num(p, v[1], get_num_range(p, v[1], "viewport height", 1e-3, 1000), "viewport height");
         if (v[2]) s->projection_d = to_num(p, v[2], get_num_range(p, v[2], "viewport d", 1e-3, 1000), "viewport d");
     }
-    if (single[4]) {
-        s->background = get_rgb(p, single[4], "background");
+    if ((e = t->single[TOP_background])) {
+        s->background = get_rgb(p, e, "background");
         s->background_set = 1;
     }
-    if (single[5]) s->frames = (uint16_t)get_int(p, single[5], "frames", 1, MAX_FRAMES);
-    if (single[6]) read_camera(p, single[6], s);
+    if ((e = t->single[TOP_frames])) s->frames = (uint16_t)get_int(p, e, "frames", 1, MAX_FRAMES);
+    if ((e = t->single[TOP_camera])) read_camera(p, e, s);
+}
 
-    /* defaults of the options: the book's */
-    s->rt.recursion_depth = 3;
-    s->rt.diffuse = s->rt.specular = s->rt.shadows = 1;
-    s->rt.supersample = 1;
-    s->rt.subsample = 1;
-    s->rt.t_min_primary = NUM_ONE;
-    s->rt.epsilon = num_from_double(0.001);
-    if (single[12]) read_rt_options(p, single[12], &s->rt);
-    s->ras.shading = SHADE_NONE;
-    s->ras.project_truncate = 1;
-    s->ras.clip = 1;
-    s->ras.depth_test = 1;
-    s->ras.depth_bits = 0;   /* chosen from the scene's depth range below, unless given */
-    s->ras.backface_cull = 1;
-    s->ras.diffuse = s->ras.specular = 1;
-    s->ras.perspective_uv = 1;
-    s->ras.instance_transform = 1;
-    s->ras.camera_transform = 1;
-    if (single[16]) read_ras_options(p, single[16], &s->ras);
+static void alloc_build(struct parser *p, struct build *b)
+{
+    b->lights = alloc_array(p, (size_t)b->nlights, sizeof *b->lights);
+    b->objects = alloc_array(p, (size_t)b->nobjects, sizeof *b->objects);
+    b->obj_names = alloc_array(p, (size_t)b->nobjects, sizeof *b->obj_names);
+    b->csg = alloc_array(p, (size_t)b->ncsg, sizeof *b->csg);
+    b->models = alloc_array(p, (size_t)b->nmodels, sizeof *b->models);
+    b->model_names = alloc_array(p, (size_t)b->nmodels, sizeof *b->model_names);
+    b->instances = alloc_array(p, (size_t)b->ninstances, sizeof *b->instances);
+    b->textures = alloc_array(p, (size_t)b->ntextures, sizeof *b->textures);
+    b->tex_names = alloc_array(p, (size_t)b->ntextures, sizeof *b->tex_names);
+    b->prims = alloc_array(p, (size_t)b->nprims, sizeof *b->prims);
+    b->lines = alloc_array(p, (size_t)b->nlines, sizeof *b->lines);
+}
 
-    b.lights = alloc_array(p, (size_t)nlights, sizeof *b.lights);
-    b.objects = alloc_array(p, (size_t)nobj, sizeof *b.objects);
-    b.obj_names = alloc_array(p, (size_t)nobj, sizeof *b.obj_names);
-    b.csg = alloc_array(p, (size_t)ncsg, sizeof *b.csg);
-    b.models = alloc_array(p, (size_t)nmodels, sizeof *b.models);
-    b.model_names = alloc_array(p, (size_t)nmodels, sizeof *b.model_names);
-    b.instances = alloc_array(p, (size_t)ninst, sizeof *b.instances);
-    b.textures = alloc_array(p, (size_t)ntex, sizeof *b.textures);
-    b.tex_names = alloc_array(p, (size_t)ntex, sizeof *b.tex_names);
-    b.prims = alloc_array(p, (size_t)nprims, sizeof *b.prims);
-    b.lines = alloc_array(p, (size_t)nlines, sizeof *b.lines);
-
-    /* in file order; a reference must name something defined above it */
+/* The repeatable entries, in file order: a reference must name something defined above it. */
+static void read_entries(struct parser *p, const struct node *top, struct build *b)
+{
     int il = 0, io = 0, ic = 0, im = 0, ii = 0, it = 0, ip = 0, i3 = 0;
     for (const struct node *e = top->first; e; e = e->next) {
-        const char *k = e->key;
-        if (!strcmp(k, "light")) read_light(p, e, &b.lights[il++]);
-        else if (is_object_key(k)) { read_object(p, &b, e, io); io++; }
-        else if (!strcmp(k, "csg")) read_csg(p, &b, e, &b.csg[ic++], io);
-        else if (!strcmp(k, "model")) { read_model(p, &b, e, im); im++; }
-        else if (!strcmp(k, "texture")) { read_texture(p, &b, e, it); it++; }
-        else if (!strcmp(k, "instance")) read_instance(p, &b, e, &b.instances[ii++], im, it);
-        else if (!strcmp(k, "line2d") || !strcmp(k, "triangle2d")) read_prim(p, e, &b.prims[ip++]);
-        else if (!strcmp(k, "line3d")) read_line3d(p, e, &b.lines[i3++]);
+        switch (top_index(e->key)) {
+        case TOP_light: read_light(p, e, &b->lights[il++]); break;
+        case TOP_sphere: case TOP_plane: case TOP_triangle: read_object(p, b, e, io); io++; break;
+        case TOP_csg: read_csg(p, b, e, &b->csg[ic++], io); break;
+        case TOP_model: read_model(p, b, e, im); im++; break;
+        case TOP_texture: read_texture(p, b, e, it); it++; break;
+        case TOP_instance: read_instance(p, b, e, &b->instances[ii++], im, it); break;
+        case TOP_line2d: case TOP_triangle2d: read_prim(p, e, &b->prims[ip++]); break;
+        case TOP_line3d: read_line3d(p, e, &b->lines[i3++]); break;
+        default: break;
+        }
     }
-    int rt = nobj + ncsg > 0, ras = nmodels + ninst + nprims + nlines > 0;
-    if (single[1]) {
+}
+
+/* The renderer: as the scene says, or from what it contains; each option block only for its renderer. */
+static void read_kind(struct parser *p, const struct top *t, const struct build *b, struct scene *s)
+{
+    int rt = b->nobjects + b->ncsg > 0, ras = b->nmodels + b->ninstances + b->nprims + b->nlines > 0;
+    const struct node *r = t->single[TOP_renderer];
+    const struct node *rto = t->single[TOP_raytracer], *raso = t->single[TOP_rasterizer];
+    if (r) {
         static const char *const kinds[] = { "raytracer", "rasterizer", NULL };
-        int k = get_choice(p, single[1], "renderer", kinds);
-        if (k == 0 && ras) FAIL_N(p, single[1], "renderer is raytracer, but the scene has rasterizer data");
-        if (k == 1 && rt) FAIL_N(p, single[1], "renderer is rasterizer, but the scene has ray tracer objects");
+        int k = get_choice(p, r, "renderer", kinds);
+        if (k == 0 && ras) FAIL_N(p, r, "renderer is raytracer, but the scene has rasterizer data");
+        if (k == 1 && rt) FAIL_N(p, r, "renderer is rasterizer, but the scene has ray tracer objects");
         s->kind = (uint8_t)k;
     } else {
         if (rt && ras) fail_at(p, 1, 1, "the scene mixes ray tracer objects and rasterizer data; say 'renderer = ...'");
         if (!rt && !ras) fail_at(p, 1, 1, "the scene has nothing to draw (no sphere, plane, triangle, instance, line or triangle2d)");
         s->kind = rt ? SCENE_RAYTRACE : SCENE_RASTER;
     }
-    if (s->kind == SCENE_RAYTRACE && single[16]) FAIL_K(p, single[16], "'rasterizer' options in a ray-traced scene");
-    if (s->kind == SCENE_RASTER && single[12]) FAIL_K(p, single[12], "'raytracer' options in a rasterized scene");
-
+    if (s->kind == SCENE_RAYTRACE && raso) FAIL_K(p, raso, "'rasterizer' options in a ray-traced scene");
+    if (s->kind == SCENE_RASTER && rto) FAIL_K(p, rto, "'raytracer' options in a rasterized scene");
     if (s->ras.shadow_light) {
         int k = s->ras.shadow_light - 1;
-        if (k >= nlights || b.lights[k].type == LIGHT_AMBIENT)
-            FAIL_K(p, single[16], "shadow_light = %d: lights are counted from 0 and it must be a point or directional light", k);
+        if (k >= b->nlights || b->lights[k].type == LIGHT_AMBIENT)
+            FAIL_K(p, raso, "shadow_light = %d: lights are counted from 0 and it must be a point or directional light", k);
     }
-    s->nlights = (uint16_t)nlights;
+}
+
+static void read_scene(struct parser *p, const struct node *top, struct scene *s, const char *default_name)
+{
+    struct top t;
+    struct build b;
+    memset(&b, 0, sizeof b);
+    b.s = s;
+    check_top(p, top, &t, &b);
+    read_view(p, &t, s, default_name);
+    /* the options: the book's defaults (scene_options.def); depth_bits 0 is chosen from the scene's
+       depth range after parsing, unless given */
+    set_defaults(&s->rt, rt_option_rows, NROWS(rt_option_rows));
+    if (t.single[TOP_raytracer])
+        read_options(p, t.single[TOP_raytracer], "raytracer", rt_option_rows, NROWS(rt_option_rows), &s->rt);
+    set_defaults(&s->ras, ras_option_rows, NROWS(ras_option_rows));
+    if (t.single[TOP_rasterizer])
+        read_options(p, t.single[TOP_rasterizer], "rasterizer", ras_option_rows, NROWS(ras_option_rows), &s->ras);
+    alloc_build(p, &b);
+    read_entries(p, top, &b);
+    read_kind(p, &t, &b, s);
+    s->nlights = (uint16_t)b.nlights;
     s->lights = b.lights;
-    s->nobjects = (uint16_t)nobj;
+    s->nobjects = (uint16_t)b.nobjects;
     s->objects = b.objects;
-    s->ncsg = (uint16_t)ncsg;
+    s->ncsg = (uint16_t)b.ncsg;
     s->csg = b.csg;
-    s->nmodels = (uint16_t)nmodels;
+    s->nmodels = (uint16_t)b.nmodels;
     s->models = b.models;
-    s->ninstances = (uint16_t)ninst;
+    s->ninstances = (uint16_t)b.ninstances;
     s->instances = b.instances;
-    s->ntextures = (uint16_t)ntex;
+    s->ntextures = (uint16_t)b.ntextures;
     s->textures = b.textures;
-    s->nprims = (uint16_t)nprims;
+    s->nprims = (uint16_t)b.nprims;
     s->prims = b.prims;
-    s->nlines = (uint16_t)nlines;
+    s->nlines = (uint16_t)b.nlines;
     s->lines = b.lines;
 }
 

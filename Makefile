@@ -116,6 +116,9 @@ bundle = $(eval $(call BUNDLE_RULE,$(strip $(1)),$(strip $(2)),$(strip $(3)),$(s
 # too), the dispatcher, the ray tracer (rt/) and the rasterizer (raster/).
 CORE_NUM_SRCS := $(sort $(wildcard firmware/core/num/*.c))
 CORE_SRCS     := $(sort $(wildcard firmware/core/*.c firmware/core/*/*.c))
+# The core of one host variant and compile mode as a static library, which
+# host programs and tests link: $(call core_lib,VARIANT,MODE).
+core_lib = $(BUILD)/$(1)/$(2)/libcore.a
 
 # The display layer every program with a panel links: the DCS layer and the
 # panel drivers (hal/; backends and the emulated panel: mk/hal.mk).
@@ -156,7 +159,7 @@ endef
 scene_frac_rule = $(eval $(call SCENE_FRAC_RULE,$(strip $(1)),$(strip $(2)),$(strip $(3))))
 
 # Programs built by `make`, tests run by `make test` (commands, one per
-# word; each prints PASS/FAIL lines, see tests/run.sh), and bench steps.
+# word; each prints PASS/FAIL lines, see tests/support/run.sh), and bench steps.
 PROGRAMS :=
 TESTS    :=
 TEST_DEPS :=
@@ -176,6 +179,16 @@ MK_FRAGMENTS := $(patsubst mk/firmware.mk,$(FW_FRAGMENTS),$(filter-out $(filter-
 include $(MK_FRAGMENTS)
 
 $(foreach v,$(VARIANTS),$(foreach m,$(COMPILE_MODES),$(eval $(call COMPILE_RULES,$(v),$(m)))))
+# (the rule of $(call core_lib,VARIANT,MODE), for every compile mode)
+define CORE_LIB_RULE
+$(call core_lib,$(1),$(2)): $(call obj,$(1),$(2),$(CORE_SRCS))
+	@mkdir -p $$(@D)
+	$(Q)rm -f $$@ && ar rcs $$@ $$^
+endef
+$(foreach v,$(VARIANTS),$(foreach m,$(filter-out none,$(COMPILE_MODES)),$(eval $(call CORE_LIB_RULE,$(v),$(m)))))
+
+# The tests' C files find their shared headers (tests/support/) by name.
+$(foreach v,$(VARIANTS),$(foreach m,$(COMPILE_MODES),$(eval $(BUILD)/$(v)/$(m)/tests/%.o: EXTRA_CFLAGS += -Itests/support)))
 
 .PHONY: programs
 programs: $(PROGRAMS)
@@ -190,11 +203,11 @@ deps-firmware:
 	$(Q)tools/deps.sh firmware
 
 # What the tests need is built with one job per processor unless make was
-# given -j; the tests then run TEST_JOBS at a time (tests/run.sh).
+# given -j; the tests then run TEST_JOBS at a time (tests/support/run.sh).
 TEST_JOBS ?= $(shell nproc 2>/dev/null || echo 1)
 test: deps-test
 	$(Q)$(MAKE) --no-print-directory $(if $(filter -j%,$(MAKEFLAGS)),,-j$(TEST_JOBS)) $(TEST_DEPS) $(PROGRAMS)
-	$(Q)TEST_JOBS=$(TEST_JOBS) tests/run.sh $(TESTS)
+	$(Q)TEST_JOBS=$(TEST_JOBS) tests/support/run.sh $(TESTS)
 
 clean:
 	rm -rf $(BUILD) $(OUT)

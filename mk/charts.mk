@@ -18,11 +18,13 @@ charts: $(BUILD)/host_sim
 		--scenes firmware/scenes --out $(OUT)/charts --jobs $(CHARTS_JOBS) --only $(CHARTS_ONLY) \
 		--make "$(MAKE)"
 
-# The sweeps' boundaries, pinned (tests/test_stability.py); the span loops'
+# The sweeps' boundaries, pinned (tests/system/test_stability.py); the span loops'
 # range is measured on the emulated M0+ with the lab's images at the formats
 # its scenes take (Q11.20 up to 1000 pixels a side, Q12.19 above).
-TESTS += tests/test_stability.py:$(BUILD)/host_sim:$(BUILD)
-TEST_DEPS += $(BUILD)/charts/bench/m0plus-qemu/fixed20/bench_file.elf $(BUILD)/charts/bench/m0plus-qemu/fixed19/bench_file.elf
+TESTS += tests/system/test_stability.py:$(BUILD)/host_sim:$(BUILD)
+TEST_NEEDS_test_stability := $(BUILD)/charts/bench/m0plus-qemu/fixed20/bench_file.elf \
+                             $(BUILD)/charts/bench/m0plus-qemu/fixed19/bench_file.elf
+TEST_DEPS += $(TEST_NEEDS_test_stability)
 
 # Accuracy fields of the scene measurements (contract: psnr, ssim, max_err,
 # pct_diff against the double build), added once every bench step has run.

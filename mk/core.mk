@@ -37,12 +37,13 @@ core_frac_bundles = $(foreach m,$(CORE_FRAC_MODES),$(BUILD)/$(1)/core_$(m).o) \
 
 # render.h's contract, the same for both renderers (coverage mask and count,
 # NULL stats, strip heights, bad arguments), in every numeric mode.
-$(foreach m,$(NUM_MODES),$(call program,$(BUILD)/asan/test_render_contract_$(m),\
-    $(call obj,asan,$(m),tests/test_render_contract.c $(CORE_SRCS) $(SCENE_SRCS)),asan))
-TEST_DEPS += $(foreach m,$(NUM_MODES),$(BUILD)/asan/test_render_contract_$(m))
-TESTS     += $(foreach m,$(NUM_MODES),$(BUILD)/asan/test_render_contract_$(m))
+$(foreach m,$(NUM_MODES),$(call program,$(BUILD)/asan/tests/test_render_contract_$(m),\
+    $(call obj,asan,$(m),tests/unit/test_render_contract.c $(SCENE_SRCS)) $(call core_lib,asan,$(m)),asan))
+TEST_DEPS += $(foreach m,$(NUM_MODES),$(BUILD)/asan/tests/test_render_contract_$(m))
+TESTS     += $(foreach m,$(NUM_MODES),$(BUILD)/asan/tests/test_render_contract_$(m))
 
 # Every external symbol of the core carries its layer's prefix (nm of the
 # objects of each numeric mode).
-TEST_DEPS += $(foreach m,$(NUM_MODES),$(call obj,host,$(m),$(CORE_SRCS)))
-TESTS     += tests/test_symbols.py:$(BUILD)
+TEST_NEEDS_test_symbols := $(foreach m,$(NUM_MODES),$(call obj,host,$(m),$(CORE_SRCS)))
+TEST_DEPS += $(TEST_NEEDS_test_symbols)
+TESTS     += tests/system/test_symbols.py:$(BUILD)

@@ -6,7 +6,7 @@
 #                                            mps2-an385 board with tools/bench's start-up
 # Each build has its own scenes from tools/scenec (the host's work sizes; the
 # Cortex-M0+'s, measured by the work probe) and compiles everything at the
-# coarsest number format among them (scene_frac_rule). tests/test_examples.sh
+# coarsest number format among them (scene_frac_rule). tests/system/test_examples.sh
 # runs both and checks their output.
 
 EX         := $(BUILD)/examples
@@ -53,5 +53,6 @@ examples:
 	$(Q)tools/deps.sh examples
 	$(Q)$(MAKE) --no-print-directory $(EX_BINS)
 
-TEST_DEPS += $(EX_BINS) $(BUILD)/asan/tests/test_panel_vectors $(BUILD)/host_sim
-TESTS     += tests/test_examples.sh:$(BUILD)
+TEST_NEEDS_test_examples := $(EX_BINS) $(BUILD)/asan/tests/test_panel_vectors $(BUILD)/host_sim
+TEST_DEPS += $(TEST_NEEDS_test_examples)
+TESTS     += tests/system/test_examples.sh:$(BUILD)

@@ -3,7 +3,7 @@
 # `make flash` (an image of mk/firmware.mk, read before this file).
 #
 # build/flasher links the real libusb transport; tests drive the same sequence
-# through a fake transport (tests/test_flasher.c).
+# through a fake transport (tests/unit/test_flasher.c).
 USB_CFLAGS := $(shell pkg-config --cflags libusb-1.0 2>/dev/null)
 USB_LIBS   := $(shell pkg-config --libs libusb-1.0 2>/dev/null || echo -lusb-1.0)
 FLASHER_CORE := tools/flasher/picoboot.c tools/flasher/image.c
@@ -14,23 +14,24 @@ FLASHER_BIN  := $(BUILD)/flasher
 $(BUILD)/host/none/tools/flasher/%.o $(BUILD)/asan/none/tools/flasher/%.o: EXTRA_CFLAGS += -Itools/flasher $(USB_CFLAGS)
 $(BUILD)/host/none/tools/flasher/gpio_reset.o $(BUILD)/asan/none/tools/flasher/gpio_reset.o: EXTRA_CFLAGS += $(GPIOD_FLAGS)
 $(BUILD)/host/none/tools/flasher/gpio_reset.o $(BUILD)/asan/none/tools/flasher/gpio_reset.o: $(CONFIG_STAMP)
-$(BUILD)/asan/none/tests/test_flasher.o: EXTRA_CFLAGS += -Itools/flasher -Itests
+$(BUILD)/asan/none/tests/unit/test_flasher.o: EXTRA_CFLAGS += -Itools/flasher -Itests/support
 
 $(FLASHER_BIN): $(call obj,host,none,$(FLASHER_SRCS))
 	$(Q)$(CC) $(LDFLAGS_host) $^ $(USB_LIBS) $(GPIOD_LIBS) -o $@
-$(BUILD)/asan/tests/test_flasher: $(call obj,asan,none,$(FLASHER_CORE) tests/test_flasher.c)
+$(BUILD)/asan/tests/test_flasher: $(call obj,asan,none,$(FLASHER_CORE) tests/unit/test_flasher.c)
 	@mkdir -p $(@D)
 	$(Q)$(CC) $(LDFLAGS_asan) $^ -o $@
 
 PROGRAMS  += $(FLASHER_BIN)
 TEST_DEPS += $(FLASHER_BIN) $(BUILD)/asan/tests/test_flasher
-TESTS     += $(BUILD)/asan/tests/test_flasher tests/test_flasher_noboard.sh:$(BUILD)
+TESTS     += $(BUILD)/asan/tests/test_flasher tests/system/test_flasher_noboard.sh:$(BUILD)
+TEST_NEEDS_test_flasher_noboard := $(FLASHER_BIN)
 
-# The GPIO reset sequence against a fake libgpiod (tests/fake_gpiod.c defines
+# The GPIO reset sequence against a fake libgpiod (tests/support/fake_gpiod.c defines
 # the gpiod functions; needs only the header). The 2.x API: mk/pi.mk.
 ifeq ($(WITH_GPIOD),1)
-$(BUILD)/asan/none/tests/test_gpio_reset.o $(BUILD)/asan/none/tests/fake_gpiod.o: EXTRA_CFLAGS += -Itools/flasher -Itests $(GPIOD_FLAGS)
-$(BUILD)/asan/tests/test_gpio_reset: $(call obj,asan,none,tools/flasher/gpio_reset.c tests/fake_gpiod.c tests/test_gpio_reset.c)
+$(BUILD)/asan/none/tests/unit/test_gpio_reset.o $(BUILD)/asan/none/tests/support/fake_gpiod.o: EXTRA_CFLAGS += -Itools/flasher -Itests/support $(GPIOD_FLAGS)
+$(BUILD)/asan/tests/test_gpio_reset: $(call obj,asan,none,tools/flasher/gpio_reset.c tests/support/fake_gpiod.c tests/unit/test_gpio_reset.c)
 	@mkdir -p $(@D)
 	$(Q)$(CC) $(LDFLAGS_asan) $^ -o $@
 TEST_DEPS += $(BUILD)/asan/tests/test_gpio_reset

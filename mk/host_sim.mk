@@ -38,23 +38,24 @@ $(foreach v,$(VARIANTS),$(eval $(call HOST_SIM_LINK,$(v))))
 
 PROGRAMS  += $(HOST_SIM_BIN_host)
 TEST_DEPS += $(HOST_SIM_BIN_asan) $(HOST_SIM_BIN_host)
-TESTS     += tests/test_host_sim.sh:$(HOST_SIM_BIN_asan)
+TESTS     += tests/system/test_host_sim.sh:$(HOST_SIM_BIN_asan)
 # --loop, dirty-rectangle flush, per-frame --out, --fps-overlay, progress line
-TESTS     += tests/test_live.sh:$(HOST_SIM_BIN_asan)
+TESTS     += tests/system/test_live.sh:$(HOST_SIM_BIN_asan)
 # --window under Xvfb: a screenshot (xwd) against the PNG
-TESTS     += tests/test_window.sh:$(HOST_SIM_BIN_asan)
+TESTS     += tests/system/test_window.sh:$(HOST_SIM_BIN_asan)
 # input/output faults (FIFOs, devices, ulimit -f, signals) of host_sim and scenec
 TEST_DEPS += $(BUILD)/scenec
-TESTS     += tests/test_io_faults.sh:$(HOST_SIM_BIN_asan):$(BUILD)/scenec
+TESTS     += tests/system/test_io_faults.sh:$(HOST_SIM_BIN_asan):$(BUILD)/scenec
 # the format promise on generated extreme scenes (tools/scene/gen_extreme.py),
 # under the sanitizers: a bounded count here, `make extremes` for more
 EXTREMES_COUNT ?= 300
-TESTS     += tests/test_scene_extremes.sh:$(HOST_SIM_BIN_asan):1:$(EXTREMES_COUNT)
+TESTS     += tests/system/test_scene_extremes.sh:$(HOST_SIM_BIN_asan):1:$(EXTREMES_COUNT)
 EXTREMES_SEEDS ?= 2 3 4 5 6 7 8 9 10 11
 .PHONY: extremes
 extremes: $(HOST_SIM_BIN_asan)
-	$(Q)tests/run.sh $(foreach s,$(EXTREMES_SEEDS),tests/test_scene_extremes.sh:$(HOST_SIM_BIN_asan):$(s):1000)
-TESTS     += tests/test_make_run.sh:$(BUILD)
+	$(Q)tests/support/run.sh $(foreach s,$(EXTREMES_SEEDS),tests/system/test_scene_extremes.sh:$(HOST_SIM_BIN_asan):$(s):1000)
+TESTS     += tests/system/test_make_run.sh:$(BUILD)
+TEST_NEEDS_test_make_run := $(BUILD)/host_sim
 
 # `make run`: every scene in firmware/scenes/ through host_sim (ST7789
 # 240x240, fixed point) into $(OUT)/<scene>.png, one line per scene.

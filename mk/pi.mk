@@ -9,11 +9,11 @@
 # checked against its SHA-256, built into $(BUILD)/gpiod2 as libgpiod.so with
 # a libgpiod.pc, and the same sources compiled against it by what that .pc
 # reports:
-#   $(BUILD)/gpiod2/test_gpio_reset  tests/test_gpio_reset.c, 2.x API (ASan+UBSan)
-#   $(BUILD)/gpiod2/test_hal_linux   tests/test_hal_linux.c, 2.x API (ASan+UBSan)
+#   $(BUILD)/gpiod2/test_gpio_reset  tests/unit/test_gpio_reset.c, 2.x API (ASan+UBSan)
+#   $(BUILD)/gpiod2/test_hal_linux   tests/unit/test_hal_linux.c, 2.x API (ASan+UBSan)
 #   $(BUILD)/gpiod2/host_sim         host_sim with hal/linux in the 2.x API
-# tests/test_linux_backend.sh runs host_sim --backend linux (either API) with
-# tests/shim_linux_panel.c preloaded: spidev and the GPIO lines go into the
+# tests/system/test_linux_backend.sh runs host_sim --backend linux (either API) with
+# tests/support/shim_linux_panel.c preloaded: spidev and the GPIO lines go into the
 # strict emulated controller, whose glass must equal the sim backend's.
 
 GPIOD2_SDIST   := gpiod-2.5.0.tar.gz
@@ -57,7 +57,7 @@ $(GPIOD2_LIB): $(GPIOD2_SRC)/.unpacked
 define GPIOD2_COMPILE
 $(GPIOD2_DIR)/obj/$(1)/%.o: %.c $(GPIOD2_LIB)
 	@mkdir -p $$(@D)
-	$(Q)$$(CC) $(CSTD) $(WARN) $(VFLAGS_$(1)) $(INCLUDES) -Itools/flasher -Itests -DWITH_GPIOD \
+	$(Q)$$(CC) $(CSTD) $(WARN) $(VFLAGS_$(1)) $(INCLUDES) -Itools/flasher -Itests/support -DWITH_GPIOD \
 		-DGPIOD_API_MAJOR=$$(call gpiod_major,$(GPIOD2_PC_DIR)) $$(call gpiod_pc,$(GPIOD2_PC_DIR),--cflags) \
 		-MMD -MP -c $$< -o $$@
 endef
@@ -66,10 +66,12 @@ $(foreach v,$(VARIANTS),$(eval $(call GPIOD2_COMPILE,$(v))))
 
 gpiod2_obj = $(patsubst %.c,$(GPIOD2_DIR)/obj/$(1)/%.o,$(2))
 
-$(GPIOD2_DIR)/test_gpio_reset: $(call gpiod2_obj,asan,tools/flasher/gpio_reset.c tests/fake_gpiod.c tests/test_gpio_reset.c)
+$(GPIOD2_DIR)/tests/test_gpio_reset: $(call gpiod2_obj,asan,tools/flasher/gpio_reset.c tests/support/fake_gpiod.c tests/unit/test_gpio_reset.c)
+	@mkdir -p $(@D)
 	$(Q)$(CC) $(LDFLAGS_asan) -o $@ $^
-$(GPIOD2_DIR)/test_hal_linux: $(call gpiod2_obj,asan,tests/test_hal_linux.c hal/linux/hal_linux.c) \
+$(GPIOD2_DIR)/tests/test_hal_linux: $(call gpiod2_obj,asan,tests/unit/test_hal_linux.c hal/linux/hal_linux.c) \
                               $(call obj,asan,none,$(HAL_SRCS) $(HAL_SIM_SRCS))
+	@mkdir -p $(@D)
 	$(Q)$(CC) $(LDFLAGS_asan) -o $@ $^ $(call gpiod_pc,$(GPIOD2_PC_DIR),--libs)
 
 # host_sim with the Linux backend on libgpiod 2 (the rest as $(BUILD)/host_sim).
@@ -80,14 +82,14 @@ $(GPIOD2_HOST_SIM): $(call obj,host,none,$(HOST_SIM_SRCS)) $(call core_bundles,h
 
 # The LD_PRELOAD shim, once per API: the emulated panel behind spidev and a
 # fake libgpiod (position-independent objects of their own).
-SHIM_SRCS := tests/shim_linux_panel.c tests/fake_gpiod.c hal/sim/emu_panel.c
+SHIM_SRCS := tests/support/shim_linux_panel.c tests/support/fake_gpiod.c hal/sim/emu_panel.c
 $(BUILD)/shim/v1/%.o: %.c
 	@mkdir -p $(@D)
-	$(Q)$(CC) $(CSTD) $(WARN) $(HOST_OPT) -fPIC $(INCLUDES) -Itests \
+	$(Q)$(CC) $(CSTD) $(WARN) $(HOST_OPT) -fPIC $(INCLUDES) -Itests/support \
 		$(GPIOD_FLAGS) -MMD -MP -c $< -o $@
 $(BUILD)/shim/v2/%.o: %.c $(GPIOD2_LIB)
 	@mkdir -p $(@D)
-	$(Q)$(CC) $(CSTD) $(WARN) $(HOST_OPT) -fPIC $(INCLUDES) -Itests \
+	$(Q)$(CC) $(CSTD) $(WARN) $(HOST_OPT) -fPIC $(INCLUDES) -Itests/support \
 		-DGPIOD_API_MAJOR=$(call gpiod_major,$(GPIOD2_PC_DIR)) $(call gpiod_pc,$(GPIOD2_PC_DIR),--cflags) \
 		-MMD -MP -c $< -o $@
 -include $(wildcard $(BUILD)/shim/*/*/*.d $(BUILD)/shim/*/*/*/*.d)
@@ -95,11 +97,12 @@ $(BUILD)/shim/%/shim_linux_panel.so: $(foreach s,$(SHIM_SRCS),$(BUILD)/shim/%/$(
 	$(Q)$(CC) -shared -o $@ $^ -ldl
 
 ifeq ($(WITH_GPIOD),1)
-GPIOD2_TESTS := $(GPIOD2_DIR)/test_gpio_reset $(GPIOD2_DIR)/test_hal_linux
-TEST_DEPS += $(GPIOD2_TESTS) $(GPIOD2_HOST_SIM) $(BUILD)/shim/v1/shim_linux_panel.so \
+GPIOD2_TESTS := $(GPIOD2_DIR)/tests/test_gpio_reset $(GPIOD2_DIR)/tests/test_hal_linux
+TEST_NEEDS_test_linux_backend := $(GPIOD2_HOST_SIM) $(BUILD)/host_sim $(BUILD)/shim/v1/shim_linux_panel.so \
              $(BUILD)/shim/v2/shim_linux_panel.so
-TESTS     += $(GPIOD2_DIR)/test_gpio_reset $(GPIOD2_DIR)/test_hal_linux \
-             tests/test_linux_backend.sh:$(BUILD)
+TEST_DEPS += $(GPIOD2_TESTS) $(TEST_NEEDS_test_linux_backend)
+TESTS     += $(GPIOD2_DIR)/tests/test_gpio_reset $(GPIOD2_DIR)/tests/test_hal_linux \
+             tests/system/test_linux_backend.sh:$(BUILD)
 endif
 .PHONY: gpiod2
 gpiod2: $(GPIOD2_TESTS) $(GPIOD2_HOST_SIM)

@@ -2,7 +2,7 @@
 # Rasterizer (firmware/core/raster*.c, num_ras.c): tests and docs in docs/rasterizer.md.
 #
 # Test programs link the core sources of one numeric mode directly, plus
-# the scene parser: they load the book's scene files (tests/scene_files.h).
+# the scene parser: they load the book's scene files (tests/support/scene_files.h).
 # The cross-mode accuracy test links three per-mode bundles (core + parser
 # + a small API), each keeping only its raster_api_<mode> symbol (the
 # Makefile's bundle).
@@ -10,23 +10,24 @@
 RASTER_TEST_SRCS := tools/scene/scene_parse.c
 
 $(foreach v,$(VARIANTS),$(foreach m,$(NUM_MODES),$(foreach p,test_raster_book test_raster,$(call program,\
-    $(BUILD)/$(v)/tests/$(p)_$(m),$(call obj,$(v),$(m),tests/$(p).c $(RASTER_TEST_SRCS) $(CORE_SRCS)),$(v)))))
+    $(BUILD)/$(v)/tests/$(p)_$(m),$(call obj,$(v),$(m),tests/unit/$(p).c $(RASTER_TEST_SRCS)) $(call core_lib,$(v),$(m)),$(v)))))
 
 $(foreach v,$(VARIANTS),$(foreach m,$(NUM_MODES),$(call bundle,$(BUILD)/$(v)/raster_api_$(m).o,\
-    $(call obj,$(v),$(m),$(CORE_SRCS) $(RASTER_TEST_SRCS) tests/raster_api.c),raster_api_$(m))))
+    $(call obj,$(v),$(m),$(CORE_SRCS) $(RASTER_TEST_SRCS) tests/support/raster_api.c),raster_api_$(m))))
 $(foreach v,$(VARIANTS),$(call program,$(BUILD)/$(v)/tests/test_raster_modes,\
-    $(call obj,$(v),none,tests/test_raster_modes.c) $(foreach m,$(NUM_MODES),$(BUILD)/$(v)/raster_api_$(m).o),$(v)))
+    $(call obj,$(v),none,tests/unit/test_raster_modes.c) $(foreach m,$(NUM_MODES),$(BUILD)/$(v)/raster_api_$(m).o),$(v)))
 
 RASTER_TESTS := $(BUILD)/asan/tests/test_raster_book_double:$(BUILD) \
                 $(BUILD)/asan/tests/test_raster_fixed $(BUILD)/asan/tests/test_raster_float \
                 $(BUILD)/asan/tests/test_raster_double \
                 $(BUILD)/host/tests/test_raster_modes
 TESTS += $(RASTER_TESTS)
+TEST_NEEDS_test_raster_book_double :=   # (its argument is a directory for its files)
 TEST_DEPS += $(foreach t,$(RASTER_TESTS),$(firstword $(subst :, ,$(t))))
 
 # The book's scene files through the parser and core_api (three modes).
 $(foreach v,$(VARIANTS),$(call program,$(BUILD)/$(v)/tests/test_raster_scenes,\
-    $(call obj,$(v),none,tests/test_raster_scenes.c) $(call core_bundles,$(v)),$(v)))
+    $(call obj,$(v),none,tests/unit/test_raster_scenes.c) $(call core_bundles,$(v)),$(v)))
 TESTS += $(BUILD)/host/tests/test_raster_scenes
 TEST_DEPS += $(BUILD)/host/tests/test_raster_scenes
 
@@ -43,7 +44,7 @@ $(foreach t,$(BENCH_TARGETS),$(foreach m,fixed float,\
 # Chapter 15 (normal maps, environment maps, shadow maps, shadow volumes)
 # through the parser and core_api in three modes, and the demo scenes.
 $(foreach v,$(VARIANTS),$(call program,$(BUILD)/$(v)/tests/test_raster_ch15,\
-    $(call obj,$(v),none,tests/test_raster_ch15.c) $(call core_bundles,$(v)),$(v)))
+    $(call obj,$(v),none,tests/unit/test_raster_ch15.c) $(call core_bundles,$(v)),$(v)))
 TESTS += $(BUILD)/host/tests/test_raster_ch15
 TEST_DEPS += $(BUILD)/host/tests/test_raster_ch15
 

@@ -3,38 +3,38 @@
 # See docs/raytracer.md. The renderer itself is part of CORE_SRCS (mk/core.mk).
 
 # The tests load the repository's scene files through the parser
-# (tests/scene_files.h); the reference digests are tests/data/book_digests.txt.
+# (tests/support/scene_files.h); the reference digests are tests/data/book_digests.txt.
 
 # test_raytracer_<mode>: one program per numeric mode (the core's symbols
 # clash between modes), in both variants.
-$(foreach v,$(VARIANTS),$(foreach m,$(NUM_MODES),$(call program,$(BUILD)/$(v)/test_raytracer_$(m),\
-    $(call obj,$(v),$(m),tests/test_raytracer.c $(CORE_SRCS) $(SCENE_SRCS)),$(v))))
+$(foreach v,$(VARIANTS),$(foreach m,$(NUM_MODES),$(call program,$(BUILD)/$(v)/tests/test_raytracer_$(m),\
+    $(call obj,$(v),$(m),tests/unit/test_raytracer.c $(SCENE_SRCS)) $(call core_lib,$(v),$(m)),$(v))))
 
-RT_TEST_BINS := $(foreach m,$(NUM_MODES),$(BUILD)/asan/test_raytracer_$(m)) $(BUILD)/host/test_raytracer_double
+RT_TEST_BINS := $(foreach m,$(NUM_MODES),$(BUILD)/asan/tests/test_raytracer_$(m)) $(BUILD)/host/tests/test_raytracer_double
 TEST_DEPS += $(RT_TEST_BINS)
 # Unit and feature tests under ASan+UBSan in every mode; the 600x600 book
 # digests in the optimised double build (12 full renders).
-TESTS += $(BUILD)/asan/test_raytracer_fixed:quick $(BUILD)/asan/test_raytracer_float:quick \
-         $(BUILD)/asan/test_raytracer_double:quick $(BUILD)/host/test_raytracer_double
+TESTS += $(BUILD)/asan/tests/test_raytracer_fixed:quick $(BUILD)/asan/tests/test_raytracer_float:quick \
+         $(BUILD)/asan/tests/test_raytracer_double:quick $(BUILD)/host/tests/test_raytracer_double
 
 .PHONY: test-raytracer
-test-raytracer: $(RT_TEST_BINS) $(BUILD)/host/test_raytracer_accuracy
-	$(Q)tests/run.sh $(filter %raytracer_fixed:quick %raytracer_float:quick %raytracer_double:quick \
+test-raytracer: $(RT_TEST_BINS) $(BUILD)/host/tests/test_raytracer_accuracy
+	$(Q)tests/support/run.sh $(filter %raytracer_fixed:quick %raytracer_float:quick %raytracer_double:quick \
 	    %test_raytracer_double %test_raytracer_accuracy,$(TESTS))
 
 # Accuracy test: fixed and float against double in one program. Each mode's
 # core + scene parser become one object exporting only rtacc_<mode>.
 $(foreach v,$(VARIANTS),$(foreach m,$(NUM_MODES),$(eval \
-    $(call obj,$(v),$(m),tests/rt_acc_api.c): EXTRA_CFLAGS += -DRTACC_NAME=rtacc_$(m))))
+    $(call obj,$(v),$(m),tests/support/rt_acc_api.c): EXTRA_CFLAGS += -DRTACC_NAME=rtacc_$(m))))
 $(foreach v,$(VARIANTS),$(foreach m,$(NUM_MODES),$(call bundle,$(BUILD)/$(v)/rtacc_$(m).o,\
-    $(call obj,$(v),$(m),tests/rt_acc_api.c $(CORE_SRCS) $(SCENE_SRCS)),rtacc_$(m))))
-$(foreach v,$(VARIANTS),$(call program,$(BUILD)/$(v)/test_raytracer_accuracy,\
-    $(call obj,$(v),none,tests/test_raytracer_accuracy.c) $(foreach m,$(NUM_MODES),$(BUILD)/$(v)/rtacc_$(m).o),$(v)))
-TEST_DEPS += $(BUILD)/host/test_raytracer_accuracy
+    $(call obj,$(v),$(m),tests/support/rt_acc_api.c $(CORE_SRCS) $(SCENE_SRCS)),rtacc_$(m))))
+$(foreach v,$(VARIANTS),$(call program,$(BUILD)/$(v)/tests/test_raytracer_accuracy,\
+    $(call obj,$(v),none,tests/unit/test_raytracer_accuracy.c) $(foreach m,$(NUM_MODES),$(BUILD)/$(v)/rtacc_$(m).o),$(v)))
+TEST_DEPS += $(BUILD)/host/tests/test_raytracer_accuracy
 # The big comparison runs optimised (30 renders, 15 of them 600x600).
-TESTS += $(BUILD)/host/test_raytracer_accuracy
+TESTS += $(BUILD)/host/tests/test_raytracer_accuracy
 # The real-time option's accuracy and ray counts (docs/raytracer.md).
-TESTS += tests/test_rt_realtime.sh:$(BUILD)/host_sim
+TESTS += tests/system/test_rt_realtime.sh:$(BUILD)/host_sim
 
 # `make bench`: raytracer-05 at 240x240 on the emulated Cortex-M0+ and M4F,
 # fixed and float, plus each chapter-5 option (tools/bench/bench_raytracer.c;

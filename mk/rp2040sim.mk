@@ -12,22 +12,25 @@ $(RP2040SIM_DEPS): tools/rp2040sim/package.json tools/rp2040sim/package-lock.jso
 # The host reference of the firmware's scene table (fixed point, as on the MCU).
 FW_HOST_REF := $(BUILD)/fw_host_ref
 $(BUILD)/host/fixed/firmware/app/%.o: EXTRA_CFLAGS += -Ifirmware/app
-$(BUILD)/host/none/tests/fw_host_ref.o: EXTRA_CFLAGS += -Ifirmware/app
-$(FW_HOST_REF): $(call obj,host,none,tests/fw_host_ref.c) $(call obj,host,fixed,$(FW_SCENE_SRCS)) \
+$(BUILD)/host/none/tests/support/fw_host_ref.o: EXTRA_CFLAGS += -Ifirmware/app
+$(FW_HOST_REF): $(call obj,host,none,tests/support/fw_host_ref.c) $(call obj,host,fixed,$(FW_SCENE_SRCS)) \
                 $(BUILD)/host/core_fixed.o
 	$(Q)$(CC) $^ -lm -o $@
 
 TEST_DEPS += $(RP2040SIM_DEPS) $(FW_HOST_REF) $(FW_OUT)/pico/cgfs-1core.elf $(FW_OUT)/pico/cgfs-1core.bin
-TESTS     += tests/test_rp2040sim.sh:$(BUILD)
+TESTS     += tests/system/test_rp2040sim.sh:$(BUILD)
 TEST_DEPS += $(FW_OUT)/pico/cgfs-ili9341.elf $(FW_OUT)/pico/cgfs-rot2.elf
-TESTS     += tests/test_rp2040sim_panels.sh:$(BUILD)
+TESTS     += tests/system/test_rp2040sim_panels.sh:$(BUILD)
 TEST_DEPS += $(FW_OUT)/pico/cgfs-book-1core.elf $(FW_OUT)/pico/cgfs-cube-1core.elf $(BUILD)/host_sim
-TESTS     += tests/test_rp2040sim_book.sh:$(BUILD) tests/test_rp2040sim_cube.sh:$(BUILD):$(FW_CUBE_FRAMES)
+TESTS     += tests/system/test_rp2040sim_book.sh:$(BUILD) tests/system/test_rp2040sim_cube.sh:$(BUILD):$(FW_CUBE_FRAMES)
 TEST_DEPS += $(FW_OUT)/pico/cgfs-cube-ili9341-1core.elf
-TESTS     += tests/test_rp2040sim_cube.sh:$(BUILD):$(FW_CUBE_FRAMES):cgfs-cube-ili9341-1core:ili9341_320x240:320x240
+TESTS     += tests/system/test_rp2040sim_cube.sh:$(BUILD):$(FW_CUBE_FRAMES):cgfs-cube-ili9341-1core:ili9341_320x240:320x240
 # the two-core images on both emulated cores (tools/rp2040sim/dualcore.js)
 TEST_DEPS += $(FW_OUT)/pico/cgfs.elf $(FW_OUT)/pico/cgfs-book.elf
-TESTS     += tests/test_rp2040sim_dual.sh:$(BUILD)
+TESTS     += tests/system/test_rp2040sim_dual.sh:$(BUILD)
+# (make check: each of these tests builds what all of them need)
+RP2040SIM_TEST_NEEDS := $(filter $(RP2040SIM_DEPS) $(FW_HOST_REF) $(FW_OUT)/% $(BUILD)/host_sim,$(TEST_DEPS))
+$(foreach t,test_rp2040sim test_rp2040sim_panels test_rp2040sim_book test_rp2040sim_cube test_rp2040sim_dual,    $(eval TEST_NEEDS_$(t) := $(RP2040SIM_TEST_NEEDS)))
 TESTS     += node:tools/rp2040sim/test_models.js
 # The JavaScript panel (emu_panel.js) replays the vectors the C emulator
 # replays (test_panel_vectors), so the two decoders cannot drift apart.

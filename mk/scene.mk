@@ -5,11 +5,10 @@
 SCENE_PARSER_SRCS := tools/scene/scene_parse.c $(CORE_NUM_SRCS) firmware/core/mipmap.c
 
 # test_scene_<mode>: the parser built alone in each numeric mode.
-$(foreach m,$(NUM_MODES),$(call program,$(BUILD)/asan/test_scene_$(m),\
-    $(call obj,asan,$(m),tests/test_scene.c $(SCENE_PARSER_SRCS)),asan))
-$(BUILD)/asan/%/tests/test_scene.o: EXTRA_CFLAGS += -Itests
+$(foreach m,$(NUM_MODES),$(call program,$(BUILD)/asan/tests/test_scene_$(m),\
+    $(call obj,asan,$(m),tests/unit/test_scene.c $(SCENE_PARSER_SRCS)),asan))
 
-SCENE_TESTS := $(foreach m,$(NUM_MODES),$(BUILD)/asan/test_scene_$(m))
+SCENE_TESTS := $(foreach m,$(NUM_MODES),$(BUILD)/asan/tests/test_scene_$(m))
 TEST_DEPS += $(SCENE_TESTS)
 TESTS += $(SCENE_TESTS)
 
@@ -24,10 +23,10 @@ $(FUZZ_SCENE): tests/fuzz/fuzz_scene.c $(SCENE_PARSER_SRCS) tools/scene/scene_pa
 		-o $@ tests/fuzz/fuzz_scene.c $(SCENE_PARSER_SRCS) -lm
 .PHONY: fuzz-scene
 fuzz-scene: $(FUZZ_SCENE)
-	tests/test_scene_fuzz.sh $(FUZZ_SCENE) $(FUZZ_SECONDS)
+	tests/system/test_scene_fuzz.sh $(FUZZ_SCENE) $(FUZZ_SECONDS)
 
 TEST_DEPS += $(FUZZ_SCENE)
-TESTS += tests/test_scene_fuzz.sh:$(FUZZ_SCENE):$(FUZZ_SECONDS)
+TESTS += tests/system/test_scene_fuzz.sh:$(FUZZ_SCENE):$(FUZZ_SECONDS)
 
 # ---- scenec: scene file -> C source for the firmware -----------------------
 # Built in the double mode (the parser's exact doubles are emitted as NUM_C
@@ -64,10 +63,11 @@ $(SCENE_PROBE): $(SCENE_PROBE_OBJS) tools/bench/mps2.ld
 scenes: $(SCENE_CSRCS)
 # RAM and flash per compiled scene, as the ARM compiler lays them out.
 scenes-report: $(SCENE_CSRCS) $(SCENE_PROBE)
-	$(Q)tests/test_scenec.sh $(SCENEC) $(BUILD) --report
+	$(Q)tests/system/test_scenec.sh $(SCENEC) $(BUILD) --report
 
-TEST_DEPS += $(SCENEC) $(SCENE_PROBE) $(BUILD)/asan/test_scene_fracs
-TESTS += tests/test_scenec.sh:$(SCENEC):$(BUILD)
+TEST_NEEDS_test_scenec := $(SCENEC) $(SCENE_PROBE) $(BUILD)/asan/tests/test_scene_fracs
+TEST_DEPS += $(TEST_NEEDS_test_scenec)
+TESTS += tests/system/test_scenec.sh:$(SCENEC):$(BUILD)
 
 # ---- the renderers at every NUM_FRAC scenec may choose ----------------------
 # The bundles core_fixed12 … core_fixed20 are mk/core.mk's (CORE_FRAC_MODES).
@@ -75,12 +75,12 @@ SCENE_FRACS       := $(CORE_FRACS)
 SCENE_FRAC_MODES  := $(CORE_FRAC_MODES)
 
 # test_scene_fracs: every scene at every format against the double core.
-$(foreach v,$(VARIANTS),$(call program,$(BUILD)/$(v)/test_scene_fracs,$(call obj,$(v),none,tests/test_scene_fracs.c \
+$(foreach v,$(VARIANTS),$(call program,$(BUILD)/$(v)/tests/test_scene_fracs,$(call obj,$(v),none,tests/unit/test_scene_fracs.c \
     host_sim/compare.c) $(foreach m,$(SCENE_FRAC_MODES) fixed double,$(BUILD)/$(v)/core_$(m).o),$(v)))
-$(foreach v,$(VARIANTS),$(call obj,$(v),none,tests/test_scene_fracs.c)): EXTRA_CFLAGS += -Itests -Ihost_sim
+$(foreach v,$(VARIANTS),$(call obj,$(v),none,tests/unit/test_scene_fracs.c)): EXTRA_CFLAGS += -Itests/support -Ihost_sim
 .PHONY: scene-fracs-report
-scene-fracs-report: $(BUILD)/host/test_scene_fracs
-	$(Q)$(BUILD)/host/test_scene_fracs --report $(SCENE_FILES)
+scene-fracs-report: $(BUILD)/host/tests/test_scene_fracs
+	$(Q)$(BUILD)/host/tests/test_scene_fracs --report $(SCENE_FILES)
 
 # ---- the keys' table (firmware/core/scene_options.def) and the doc ---------
 # docs/scene-format.md's option tables are generated from it

@@ -1,5 +1,5 @@
 # SPDX-License-Identifier: MIT
-# The firmware application on a host board (tests/fw_app_host.c): main.c,
+# The firmware application on a host board (tests/support/fw_app_host.c): main.c,
 # the HAL's DCS layer and panel drivers, hal/sim into the emulated ST7789,
 # the core in fixed point; scenes compiled by tools/scenec for this host (its
 # own work sizes) at the coarsest format among them. ASan+UBSan. (This file
@@ -7,11 +7,11 @@
 FWH         := $(BUILD)/fw_app_host
 FWH_SCENES  ?= book/raytracer-02 book/raster-11
 FWH_STRIP   := 8
-FWH_FLAGS   := -DNUM_MODE=1 -include $(FWH)/scenes/num_frac.h -Ifirmware/app -I$(FWH)/scenes -Itests \
+FWH_FLAGS   := -DNUM_MODE=1 -include $(FWH)/scenes/num_frac.h -Ifirmware/app -I$(FWH)/scenes -Itests/support \
                -DFW_STRIP_ROWS=$(FWH_STRIP) -DFW_FRAMES_PER_SCENE=2 -DFW_WORK_CORES=1
 FWH_SCENE_C := $(foreach n,$(FWH_SCENES),$(FWH)/scenes/$(call fw_scene_id,$(n)).c)
 FWH_SRCS    := firmware/app/main.c firmware/app/font5x7.c $(HAL_SRCS) $(HAL_SIM_SRCS) $(CORE_SRCS) \
-               tests/fw_app_host.c
+               tests/support/fw_app_host.c
 FWH_OBJS    := $(patsubst %.c,$(FWH)/obj/%.o,$(FWH_SRCS)) \
                $(patsubst $(FWH)/scenes/%.c,$(FWH)/obj/scenes/%.o,$(FWH_SCENE_C) $(FWH)/scenes/fw_scenes_host.c)
 
@@ -28,18 +28,9 @@ $(FWH)/obj/%.o: %.c $(FWH)/scenes/num_frac.h $(FWH_SCENE_C:.c=.h)
 $(FWH)/obj/scenes/%.o: $(FWH)/scenes/%.c $(FWH)/scenes/num_frac.h
 	@mkdir -p $(@D)
 	$(Q)$(CC) $(CSTD) $(WARN) $(ASAN_OPT) $(INCLUDES) $(FWH_FLAGS) -MMD -MP -c $< -o $@
-$(FWH)/fw_app_host: $(FWH_OBJS)
+$(FWH)/tests/fw_app_host: $(FWH_OBJS)
+	@mkdir -p $(@D)
 	$(Q)$(CC) $(LDFLAGS_asan) -o $@ $^ -lm
 
-TEST_DEPS += $(FWH)/fw_app_host
-TESTS     += $(FWH)/fw_app_host
-
-# The include graph follows the layers (the table is in the script).
-TESTS     += tests/test_includes.py
-
-# Every source file carries its licence (SPDX-License-Identifier: MIT).
-TESTS     += tests/test_spdx.py
-
-# The C files of tools/clang-format.files are as clang-format writes them
-# with .clang-format (clang-format from tools/deps.sh test).
-TESTS     += tools/format_check.sh
+TEST_DEPS += $(FWH)/tests/fw_app_host
+TESTS     += $(FWH)/tests/fw_app_host

@@ -18,7 +18,7 @@
 # CLANG_FORMAT names another binary (clang-format-19, ...). clang-format 14
 # (Debian 12's) and 19 both leave every listed file unchanged.
 #
-# Prints PASS or FAIL lines (tests/run.sh).
+# Prints PASS or FAIL lines (tests/support/run.sh).
 set -u
 cd "$(dirname "$0")/.."
 cf=${CLANG_FORMAT:-clang-format}

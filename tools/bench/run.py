@@ -14,7 +14,7 @@ same (target, what, numeric, variant) already in the file are replaced.
 
   run.py [--out FILE] [--timeout S] IMAGE.elf...   benchmark
   run.py --smoke IMAGE.elf                           boot test: passes the
-      image's PASS/FAIL lines through (tests/run.sh), bounded by --timeout
+      image's PASS/FAIL lines through (tests/support/run.sh), bounded by --timeout
 """
 import argparse
 import json

@@ -9,7 +9,7 @@ point holds when its measure is on the right side of the sweep's threshold;
 the boundary of a series is the first swept value where it fails after
 holding (and, for a series that fails from the start, the first where it
 holds). PINS are the points on either side of each boundary as measured
-today: tests/test_stability_sweeps.py renders exactly those points and
+today: tests/system/test_stability.py renders exactly those points and
 fails when one of them changes side, i.e. when a boundary moves; make
 charts draws the whole sweep and says when a boundary no longer sits between
 its pins. Plain Python and host_sim only (the tests run without matplotlib),

@@ -3,7 +3,7 @@
 /* emu_panel.js — the emulated ST7789 / ILI9341 controller of hal/sim/emu_panel.c,
  * ported line for line so the emulated Pico and host_sim decode the same bus
  * the same way (same rules, same violation lines; tools/rp2040sim/replay_vectors.js
- * and tests/test_panel_vectors.c replay the same vectors through both). Keep the two in step. */
+ * and tests/unit/test_panel_vectors.c replay the same vectors through both). Keep the two in step. */
 
 const fs = require('fs');
 const path = require('path');

@@ -4,7 +4,7 @@
 /* replay_vectors.js — replays the emulated-panel test vectors
  * (tests/vectors/panel/*.txt, format in docs/hal.md) through emu_panel.js,
  * the port of hal/sim/emu_panel.c that the RP2040 emulator uses. The C
- * emulator replays the same files (tests/test_panel_vectors.c), so a change
+ * emulator replays the same files (tests/unit/test_panel_vectors.c), so a change
  * in one decoder that the other lacks fails one of the two runs.
  *
  * usage: node replay_vectors.js DIR|FILE...

@@ -8,7 +8,7 @@
  * xip.js: hits, misses, the two ways and LRU replacement, the uncached and
  * non-allocating aliases, the line-fill cost of the 03h and EBh read modes,
  * and the boot ROM's boot2 CRC.
- * Prints PASS/FAIL lines (tests/run.sh). */
+ * Prints PASS/FAIL lines (tests/support/run.sh). */
 const { RP2040 } = require('rp2040js');
 const { DualCore } = require('./dualcore.js');
 const { XipCache, lineFillCycles, crc32BootRom, boot2Problem } = require('./xip.js');

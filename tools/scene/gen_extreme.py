@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 # SPDX-License-Identifier: MIT
 """gen_extreme.py — valid but extreme scenes, for checking the scene
-compiler's format promise (tests/test_scene_extremes.sh).
+compiler's format promise (tests/system/test_scene_extremes.sh).
 
 usage: gen_extreme.py SEED COUNT DIR
 

@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 # SPDX-License-Identifier: MIT
 """gen_sweep.py — the scenes of the stability sweeps (tools/charts/sweeps.py,
-tests/test_stability.py): one scene per point of a sweep, each built
+tests/system/test_stability.py): one scene per point of a sweep, each built
 so that its exact image is known in advance or changes smoothly with the
 parameter, and the method under test is the only thing that can break it.
 

@@ -27,7 +27,7 @@
 #define SCENE_FORMAT_FITS_COLOUR 1u
 #define SCENE_FORMAT_FITS_HIT    2u
 
-/* The formats the renderers are checked at (tests/test_scene_fracs.c). */
+/* The formats the renderers are checked at (tests/unit/test_scene_fracs.c). */
 #define SCENE_FORMAT_FRAC_MIN 12
 #define SCENE_FORMAT_FRAC_MAX 20
 

@@ -461,7 +461,7 @@ static int parse_fracs(char *p, struct args *a)
 /* 0, or -1 for a command line to answer with the usage */
 static int parse_args(int argc, char **argv, struct args *a)
 {
-    /* every format the renderers are checked at (tests/test_scene_fracs.c) */
+    /* every format the renderers are checked at (tests/unit/test_scene_fracs.c) */
     static const int all_fracs[] = { 20, 19, 18, 17, 16, 15, 14, 13, 12 };
     memset(a, 0, sizeof *a);
     a->width = a->height = 240;

@@ -64,7 +64,7 @@ uint32_t num_rcp16(uint32_t dn)
      * that a slightly negative value near dn = 2^32 stays signed; the bias
      * 2^10 covers the truncation of dn (which can only raise the estimate),
      * so the result is from below. Newton's error (2^-18 relative) plus the
-     * truncations stay below 2^17 units of r: tests/test_num_div.c checks
+     * truncations stay below 2^17 units of r: tests/unit/test_num_div.c checks
      * both bounds on every value of dn >> 9 (the only bits used). */
     uint32_t sd = rcp_seed[(dn >> 23) & 0xFF];
     int32_t e0 = (int32_t)(0u - (dn >> 9) * (0x10000u + sd));
@@ -362,7 +362,7 @@ wnum num_mul_wide(num a, num b) { return mul_round(a, b); }
  * a sum or difference of three stays below 2^56, far inside wnum_add's clamp
  * at +-INT64_MAX/4 = 2^61: the clamps of the generic form (wnum_add after
  * every product) can never act, and plain 64-bit sums give the same bits
- * (tests/test_num_div.c compares both). Only the final conversion to num
+ * (tests/unit/test_num_div.c compares both). Only the final conversion to num
  * saturates. */
 wnum v3_dot_wide(vec3 a, vec3 b)
 {

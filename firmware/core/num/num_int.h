@@ -11,7 +11,7 @@
 
 /* ARMv6-M (Cortex-M0/M0+) kernels in Thumb-1 assembly: MULS is 32x32->32
  * only, and the compiler's 64-bit arithmetic spills registers. Each is the
- * same function as its portable C twin below (tests/test_num_v6m.c checks
+ * same function as its portable C twin below (tests/unit/test_num_v6m.c checks
  * them against it on the emulated Cortex-M0+). NUM_PORTABLE_INT selects
  * the C forms (host tests of the ARMv6-M paths). */
 #if defined(__ARM_ARCH_6M__) && !defined(NUM_PORTABLE_INT) && (defined(__GNUC__) || defined(__clang__))

@@ -16,7 +16,7 @@
  * <= 2^-9), one Newton-Raphson step y' = y (3 - u y^2) / 2 (2^-17.4), a root
  * x * y and one Newton step on the root (within 2 units of sqrt(x)); then an
  * exact integer correction. Only 32x32 products (four MULS on ARMv6-M). The
- * table and the bounds are checked by tests/test_num_kernels.c. */
+ * table and the bounds are checked by tests/unit/test_num_kernels.c. */
 static const uint16_t rsqrt_seed[384] = {
     65408, 65155, 64905, 64658, 64414, 64172, 63933, 63697, 63463, 63232, 63003, 62777,
     62553, 62331, 62112, 61896, 61681, 61469, 61259, 61051, 60845, 60641, 60439, 60239,

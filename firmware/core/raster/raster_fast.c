@@ -7,7 +7,7 @@
  * the columns a row covers form a half-line whose end is a quotient of two
  * integers; it is stepped from row to row by quotient and remainder, so
  * every row's span is exactly the set of pixels the per-pixel test accepts
- * (tests/test_raster.c checks the two against each other).
+ * (tests/unit/test_raster.c checks the two against each other).
  *
  * Depth: near/z at the first pixel of each span as the exact path computes
  * it, then stepped by the triangle's per-column gradient truncated toward

@@ -3,7 +3,7 @@
 # host_sim's command line: exit codes and messages for bad input, output
 # sizes and formats, atomic output, --stats, --frames, and protocol
 # violations injected into the panel driver (exit 3).
-#   tests/test_host_sim.sh HOST_SIM
+#   tests/system/test_host_sim.sh HOST_SIM
 set -u
 hs=${1:?usage: test_host_sim.sh HOST_SIM}
 tmp=$(mktemp -d)
@@ -87,7 +87,7 @@ else
 fi
 
 # --backend linux without an SPI device: a one-line error, exit 2, no file
-# written (tests/test_linux_backend.sh runs it against an emulated device).
+# written (tests/system/test_linux_backend.sh runs it against an emulated device).
 if [ ! -e /dev/spidev0.0 ]; then
   expect_err backend_linux_no_device 2 "backend linux" --scene "$scene" --backend linux --out "$tmp/l.png"
   [ ! -e "$tmp/l.png" ] && pass backend_linux_no_file || fail backend_linux_no_file "l.png was written"

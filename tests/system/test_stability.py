@@ -18,7 +18,7 @@ usage: test_stability.py HOST_SIM BUILD
 import os
 import sys
 
-sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "tools", "charts"))
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "tools", "charts"))
 import lab  # noqa: E402
 import sweeps  # noqa: E402
 

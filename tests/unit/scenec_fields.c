@@ -4,7 +4,7 @@
  * NUM_FRAC scenec chose) against scene_load() of its file in the same build.
  * Numbers are compared as raw fixed-point values, strings and texels as
  * bytes, every array element by element. Built and run by
- * tests/test_scenec.sh with a generated table of (file, scene) pairs:
+ * tests/system/test_scenec.sh with a generated table of (file, scene) pairs:
  *   scenec_fields    (no arguments; prints PASS/FAIL per scene) */
 #include <stdio.h>
 #include <string.h>

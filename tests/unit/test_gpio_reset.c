@@ -1,6 +1,6 @@
 /* SPDX-License-Identifier: MIT */
 /* test_gpio_reset.c — the flasher's RUN/BOOTSEL sequence (tools/flasher/
- * gpio_reset.c) against a fake libgpiod (tests/fake_gpiod.c, in the API
+ * gpio_reset.c) against a fake libgpiod (tests/support/fake_gpiod.c, in the API
  * gpio_reset.c is compiled for: 1.x, or 2.x with GPIOD_API_MAJOR=2) that
  * records each line change with its time, so the order, the levels, the
  * open-drain requests, the hold times and the error paths are checked

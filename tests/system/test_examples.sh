@@ -6,7 +6,7 @@
 # violation, and after each scene the glass is host_sim's render of that
 # scene at the example's number format. The Cortex-M0+ build, run in
 # qemu-system-arm (mps2-an385), writes the same trace byte for byte.
-#   tests/test_examples.sh BUILD
+#   tests/system/test_examples.sh BUILD
 set -u
 b=${1:?usage: test_examples.sh BUILD}
 ex=$b/examples

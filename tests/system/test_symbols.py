@@ -84,7 +84,7 @@ def main():
         return 2
     build = sys.argv[1]
     modes = sys.argv[2:] or ["fixed", "float", "double"]
-    root = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+    root = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
     expect = sum(1 for d, _, fs in os.walk(os.path.join(root, CORE)) for f in fs if f.endswith(".c"))
     failed = self_test()
     for m in modes:

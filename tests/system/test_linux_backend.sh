@@ -1,13 +1,13 @@
 #!/bin/sh
 # SPDX-License-Identifier: MIT
 # host_sim --backend linux, its real byte stream and line changes checked by
-# the strict emulated panel: tests/shim_linux_panel.c is preloaded in place
+# the strict emulated panel: tests/support/shim_linux_panel.c is preloaded in place
 # of spidev and libgpiod, once with the distribution's libgpiod (1.x API,
 # BUILD/host_sim) and once with libgpiod 2 (BUILD/gpiod2/host_sim, mk/pi.mk).
 # The glass behind the Linux backend must equal the sim backend's, with the
 # Raspberry Pi options (pins, SPI mode and clock, device, rotation) reaching
 # the devices; and their errors are one line with exit status 2.
-#   tests/test_linux_backend.sh BUILD
+#   tests/system/test_linux_backend.sh BUILD
 set -u
 build=${1:-build}
 tmp=$(mktemp -d)

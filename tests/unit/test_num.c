@@ -5,7 +5,7 @@
  * For each operation it measures the max and mean error against the double
  * result over an exhaustive or dense sweep plus edge cases, and fails when an
  * error exceeds the bound documented in docs/numerics.md.
- *   test_num            PASS/FAIL lines (tests/run.sh)
+ *   test_num            PASS/FAIL lines (tests/support/run.sh)
  *   test_num --report   one markdown table row per operation
  *
  * Error units: fixed point, 1 ulp = 2^-NUM_FRAC (absolute); float, 1 ulp of

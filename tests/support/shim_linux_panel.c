@@ -4,14 +4,14 @@
  * --backend linux runs unchanged, its spidev device and its GPIO lines are
  * replaced, and every SPI transfer and line change goes into the emulated
  * controller, so the real byte stream of the backend is checked and its
- * glass can be compared with the sim backend's (tests/test_linux_backend.sh).
+ * glass can be compared with the sim backend's (tests/system/test_linux_backend.sh).
  *
  *   spidev    open() of $CGFS_SHIM_SPIDEV returns a descriptor of /dev/null;
  *             ioctl() on it accepts the spidev configuration requests and
  *             SPI_IOC_MESSAGE(1) transfers, each framed by the controller's
  *             CS going low and high again as spidev's hardware CS does.
  *   GPIO      libgpiod's functions (1.x or 2.x API, as built) from
- *             tests/fake_gpiod.c: DC, RESET and BL are the line offsets of
+ *             tests/support/fake_gpiod.c: DC, RESET and BL are the line offsets of
  *             $CGFS_SHIM_PINS ("dc,reset,bl", default "25,27,18").
  *   time      CLOCK_MONOTONIC (the backend really sleeps), never earlier
  *             than the end of the last transfer at the requested clock.

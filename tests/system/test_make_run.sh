@@ -4,7 +4,7 @@
 # temporary OUT directory, one line per scene, each a 240x240 PNG at
 # OUT/<scene>.png (subdirectories created); and the scene loop on a scene
 # tree with subdirectories.
-#   tests/test_make_run.sh BUILD
+#   tests/system/test_make_run.sh BUILD
 set -u
 build=${1:-build}
 tmp=$(mktemp -d)

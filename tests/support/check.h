@@ -1,6 +1,6 @@
 /* SPDX-License-Identifier: MIT */
 /* Minimal test helpers: each case prints "PASS name" or "FAIL name: why";
- * tests/run.sh totals them. A test program returns check_exit(). */
+ * tests/support/run.sh totals them. A test program returns check_exit(). */
 #ifndef TESTS_CHECK_H
 #define TESTS_CHECK_H
 

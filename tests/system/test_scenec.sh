@@ -9,13 +9,13 @@
 # chosen format), and the renderers at the chosen format stay close to the
 # double build (test_scene_fracs). A scene whose numbers cannot fit fails
 # with the object and quantity named.
-#   tests/test_scenec.sh SCENEC BUILD [--report]
+#   tests/system/test_scenec.sh SCENEC BUILD [--report]
 set -u
 scenec=$1
 build=$2
 report=${3:-}
 probe=$build/scenes/work_probe.elf
-fracs=$build/asan/test_scene_fracs
+fracs=$build/asan/tests/test_scene_fracs
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 cc=arm-none-eabi-gcc
@@ -81,8 +81,8 @@ for frac in $(awk '{ print $3 }' "$work/list" | sort -u); do
     echo '    { 0, 0, 0 } };'; } >"$tab"
   srcs=$(awk -v f="$frac" -v d="$work" '$3 == f { print d "/" $2 ".c" }' "$work/list")
   if ! $hostcc -std=c11 -D_POSIX_C_SOURCE=200809L -O1 -g -Wall -Wextra -Werror -fsanitize=address,undefined \
-       -DNUM_MODE=1 -DNUM_FRAC="$frac" -I. -Ifirmware/core -Itools/scene -Itests -I"$work" \
-       -o "$work/fields$frac" tests/scenec_fields.c "$tab" $srcs tools/scene/scene_parse.c firmware/core/num/*.c \
+       -DNUM_MODE=1 -DNUM_FRAC="$frac" -I. -Ifirmware/core -Itools/scene -Itests/support -I"$work" \
+       -o "$work/fields$frac" tests/unit/scenec_fields.c "$tab" $srcs tools/scene/scene_parse.c firmware/core/num/*.c \
        firmware/core/mipmap.c -lm 2>"$work/fields$frac.err"; then
     echo "FAIL scenec_fields_frac$frac: $(head -n 3 "$work/fields$frac.err")"
     continue

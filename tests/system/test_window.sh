@@ -4,7 +4,7 @@
 # xwd, is the glass --out writes, scaled by --window-scale; it is updated
 # while --loop runs and ends cleanly on SIGINT; a build or a machine without
 # SDL2 or a display gets one line and exit status 2.
-#   tests/test_window.sh HOST_SIM
+#   tests/system/test_window.sh HOST_SIM
 set -u
 hs=${1:-build/host_sim}
 tmp=$(mktemp -d)
@@ -46,7 +46,7 @@ xvfb-run -a -s "-screen 0 640x560x24" sh "$tmp/run.sh" >"$tmp/xvfb.log" 2>&1
 rc=$(sed -n 's/^rc //p' "$tmp/rc" 2>/dev/null)
 if [ "$rc" = 0 ] && grep -q '^frame 1 ' "$tmp/log"; then pass window_loop_sigint_exit0
 else fail window_loop_sigint_exit0 "rc ${rc:-none}: $(cat "$tmp/err" "$tmp/xvfb.log" | head -n 3)"; fi
-if [ -s "$tmp/shot.xwd" ] && msg=$(python3 tests/xwd_compare.py "$tmp/shot.xwd" "$tmp/ref.png" 2 8); then
+if [ -s "$tmp/shot.xwd" ] && msg=$(python3 tests/support/xwd_compare.py "$tmp/shot.xwd" "$tmp/ref.png" 2 8); then
   pass window_screenshot_equals_png_scaled
 else
   fail window_screenshot_equals_png_scaled "${msg:-no screenshot}: $(head -n 3 "$tmp/xvfb.log")"

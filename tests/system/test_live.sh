@@ -4,7 +4,7 @@
 # with exit 0), the dirty-rectangle flush against the full one (same glass,
 # fewer SPI bytes), per-frame --out patterns, --fps-overlay and the progress
 # line on a terminal's stderr.
-#   tests/test_live.sh HOST_SIM
+#   tests/system/test_live.sh HOST_SIM
 set -u
 hs=${1:-build/host_sim}
 tmp=$(mktemp -d)

@@ -3,7 +3,7 @@
 # Runs the scene parser's fuzz target for a bounded time over its corpus
 # (tests/fuzz/corpus/scene, plus every scene under firmware/scenes, read
 # only). New inputs go to a temporary directory, not into the tree.
-#   tests/test_scene_fuzz.sh FUZZER SECONDS
+#   tests/system/test_scene_fuzz.sh FUZZER SECONDS
 set -u
 fuzzer=$1
 secs=${2:-20}

@@ -5,7 +5,7 @@
  * (GPIOD_API_MAJOR, as they are compiled), over one chip of
  * fake_gpiod.num_lines lines. Each request, value change and release is
  * passed to fake_gpiod.on_event. Linked into test programs, or into the
- * LD_PRELOAD shim (tests/shim_linux_panel.c), where it takes the place of the
+ * LD_PRELOAD shim (tests/support/shim_linux_panel.c), where it takes the place of the
  * real library's functions. */
 #ifndef TESTS_FAKE_GPIOD_H
 #define TESTS_FAKE_GPIOD_H

@@ -4,7 +4,7 @@
 # and ray counts docs/raytracer.md states: raytracer-05 at 240x240 in fixed
 # point against the double exact render. A change that costs accuracy or
 # traces more rays than stated fails here.
-#   tests/test_rt_realtime.sh HOST_SIM
+#   tests/system/test_rt_realtime.sh HOST_SIM
 set -u
 hs=${1:?usage: test_rt_realtime.sh HOST_SIM}
 tmp=$(mktemp -d)

@@ -1,5 +1,5 @@
 # SPDX-License-Identifier: MIT
-# Rasterizer (firmware/core/raster*.c, num_ras.c): tests and docs in docs/rasterizer.md.
+# Rasterizer (firmware/core/raster/): tests and docs in docs/rasterizer.md.
 #
 # Test programs link the core sources of one numeric mode directly, plus
 # the scene parser: they load the book's scene files (tests/support/scene_files.h).

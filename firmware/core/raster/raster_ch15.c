@@ -2,8 +2,8 @@
 /* raster_ch15.c — chapter 15 on the default path: shadow maps with
  * percentage-closer filtering, stencil shadow volumes (depth-fail), the
  * procedural environment of environment mapping. Normal maps are applied
- * per pixel in raster.c (default_pixel). Everything here works in camera
- * space, on the per-frame transformed vertices of raster.c. */
+ * per pixel in raster_pixel.c (ras_default_pixel). Everything here works in camera
+ * space, on the per-frame transformed vertices of raster_frame.c. */
 #include <string.h>
 #include "raster_int.h"
 

@@ -1,5 +1,5 @@
 /* SPDX-License-Identifier: MIT */
-/* num_ras.c — mode-specific rasterizer primitives (see num_ras.h). */
+/* raster_num.c — mode-specific rasterizer primitives (see raster_num.h). */
 #include "raster_num.h"
 #if NUM_MODE == NUM_MODE_FIXED
 #include "num/num_int.h"

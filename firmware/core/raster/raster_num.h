@@ -1,7 +1,7 @@
 /* SPDX-License-Identifier: MIT */
-/* num_ras.h — the few rasterizer primitives whose best form depends on the
+/* raster_num.h — the few rasterizer primitives whose best form depends on the
  * numeric mode (see num.h). Algorithms in raster_*.c call only these and
- * num.h; only this file and num_ras.c test NUM_MODE.
+ * num.h; only this file and raster_num.c test NUM_MODE.
  */
 #ifndef NUM_RAS_H
 #define NUM_RAS_H

@@ -3,7 +3,7 @@
  * transforms as homogeneous 4x4 matrices (the book's bracketing). */
 #include "raster_int.h"
 
-/* ProjectVertex + ViewportToCanvas: ((v.x*d)/v.z)*Cw/Vw (num_ras.h keeps
+/* ProjectVertex + ViewportToCanvas: ((v.x*d)/v.z)*Cw/Vw (raster_num.h keeps
  * the demos' order in the double build). Canvas units, +y up. */
 void ras_project_vertex(const struct ras_ctx *rc, vec3 v, num *x, num *y)
 {

@@ -136,6 +136,80 @@ static int parse_size(const char *s, unsigned *w, unsigned *h)
     return *w && *h ? 0 : -1;
 }
 
+/* Option NAME (one of parse_args' with_arg) with its value VAL into o:
+ * EXIT_OK, or EXIT_USAGE after the message. */
+static int set_option(struct opts *o, const char *name, const char *val)
+{
+    if (!strcmp(name, "--scene")) o->scene = val;
+    else if (!strcmp(name, "--panel")) {
+        uint16_t pw, ph;
+        char panels[64];
+        if (strcmp(val, "none") && panel_out_native(val, &pw, &ph)) {
+            panel_out_controllers(panels, sizeof panels);
+            return fail(EXIT_USAGE, "unknown panel '%s' (%s|none)", val, panels);
+        }
+        o->panel = val;
+    } else if (!strcmp(name, "--size")) {
+        if (parse_size(val, &o->width, &o->height))
+            return fail(EXIT_USAGE, "bad size '%s' (WxH, each side 1..%d)", val, MAX_SIDE);
+        o->has_size = 1;
+    } else if (!strcmp(name, "--numeric") || !strcmp(name, "--compare")) {
+        if (!core_api_by_name(val))
+            return fail(EXIT_USAGE, "unknown numeric mode '%s' (fixed|float|double)", val);
+        if (!strcmp(name, "--numeric")) o->numeric = val; else o->compare = val;
+    } else if (!strcmp(name, "--out")) o->out = val;
+    else if (!strcmp(name, "--out-raw")) o->out_raw = val;
+    else if (!strcmp(name, "--out-rgb888")) o->out_rgb888 = val;
+    else if (!strcmp(name, "--frames")) {
+        if (!(o->frames = parse_count(val, 65535)))
+            return fail(EXIT_USAGE, "bad frame count '%s' (1..65535)", val);
+    } else if (!strcmp(name, "--strip-rows")) {
+        if (!(o->strip_rows = parse_count(val, MAX_SIDE)))
+            return fail(EXIT_USAGE, "bad strip height '%s' (1..%d)", val, MAX_SIDE);
+    } else if (!strcmp(name, "--backend")) {
+        if (strcmp(val, "sim") && strcmp(val, "linux"))
+            return fail(EXIT_USAGE, "unknown backend '%s' (sim|linux)", val);
+        o->backend = val;
+    } else if (!strcmp(name, "--num-frac")) {
+        unsigned f = parse_count(val, SCENE_FORMAT_FRAC_MAX);
+        if (f < SCENE_FORMAT_FRAC_MIN)
+            return fail(EXIT_USAGE, "bad --num-frac '%s' (%d..%d)", val, SCENE_FORMAT_FRAC_MIN,
+                        SCENE_FORMAT_FRAC_MAX);
+        o->num_frac = (int)f;
+    } else if (!strcmp(name, "--loop-frames")) {
+        if (!(o->loop_frames = parse_count(val, 4000000000u)))
+            return fail(EXIT_USAGE, "bad --loop-frames '%s' (1..4000000000)", val);
+    } else if (!strcmp(name, "--window-scale")) {
+        if (!(o->window_scale = parse_count(val, 8)))
+            return fail(EXIT_USAGE, "bad --window-scale '%s' (1..8)", val);
+    } else if (!strcmp(name, "--flush")) {
+        if (strcmp(val, "full") && strcmp(val, "dirty"))
+            return fail(EXIT_USAGE, "unknown --flush '%s' (dirty|full)", val);
+        o->flush = !strcmp(val, "full") ? 1 : 2;
+    } else if (!strcmp(name, "--spi-dev")) o->spi_dev = val;
+    else if (!strcmp(name, "--gpio-chip")) o->gpio_chip = val;
+    else if (!strcmp(name, "--spi-hz")) {
+        if (!(o->spi_hz = parse_count(val, 125000000)))
+            return fail(EXIT_USAGE, "bad --spi-hz '%s' (1..125000000)", val);
+    } else if (!strcmp(name, "--spi-mode") || !strcmp(name, "--rotation")) {
+        if (val[0] < '0' || val[0] > '3' || val[1])
+            return fail(EXIT_USAGE, "bad %s '%s' (0..3)", name, val);
+        if (!strcmp(name, "--spi-mode")) o->spi_mode = val[0] - '0';
+        else o->rotation = (unsigned)(val[0] - '0');
+    } else if (!strcmp(name, "--dc") || !strcmp(name, "--rst") || !strcmp(name, "--bl")) {
+        int *pin = !strcmp(name, "--dc") ? &o->dc : !strcmp(name, "--rst") ? &o->rst : &o->bl;
+        if (strcmp(name, "--dc") && !strcmp(val, "none")) *pin = -1;
+        else if (!strcmp(val, "0")) *pin = 0;
+        else if (!(*pin = (int)parse_count(val, 1023)))
+            return fail(EXIT_USAGE, "bad %s '%s' (a line number 0..1023%s)", name, val,
+                        strcmp(name, "--dc") ? " or none" : "");
+    } else if (!strcmp(name, "--inject-fault")) {
+        if (!strcmp(val, "signal-in-write")) img_fault_signal_in_write = 1;   /* imgio's, not the panel's */
+        else o->fault = val;
+    }
+    return EXIT_OK;
+}
+
 static int parse_args(int argc, char **argv, struct opts *o)
 {
     static const char *const with_arg[] = {
@@ -175,74 +249,8 @@ static int parse_args(int argc, char **argv, struct opts *o)
         if (eq) val = eq + 1;
         else if (i + 1 < argc) val = argv[++i];
         if (!val || !*val) return fail(EXIT_USAGE, "option %s needs an argument", name);
-
-        if (!strcmp(name, "--scene")) o->scene = val;
-        else if (!strcmp(name, "--panel")) {
-            uint16_t pw, ph;
-            char panels[64];
-            if (strcmp(val, "none") && panel_out_native(val, &pw, &ph)) {
-                panel_out_controllers(panels, sizeof panels);
-                return fail(EXIT_USAGE, "unknown panel '%s' (%s|none)", val, panels);
-            }
-            o->panel = val;
-        } else if (!strcmp(name, "--size")) {
-            if (parse_size(val, &o->width, &o->height))
-                return fail(EXIT_USAGE, "bad size '%s' (WxH, each side 1..%d)", val, MAX_SIDE);
-            o->has_size = 1;
-        } else if (!strcmp(name, "--numeric") || !strcmp(name, "--compare")) {
-            if (!core_api_by_name(val))
-                return fail(EXIT_USAGE, "unknown numeric mode '%s' (fixed|float|double)", val);
-            if (!strcmp(name, "--numeric")) o->numeric = val; else o->compare = val;
-        } else if (!strcmp(name, "--out")) o->out = val;
-        else if (!strcmp(name, "--out-raw")) o->out_raw = val;
-        else if (!strcmp(name, "--out-rgb888")) o->out_rgb888 = val;
-        else if (!strcmp(name, "--frames")) {
-            if (!(o->frames = parse_count(val, 65535)))
-                return fail(EXIT_USAGE, "bad frame count '%s' (1..65535)", val);
-        } else if (!strcmp(name, "--strip-rows")) {
-            if (!(o->strip_rows = parse_count(val, MAX_SIDE)))
-                return fail(EXIT_USAGE, "bad strip height '%s' (1..%d)", val, MAX_SIDE);
-        } else if (!strcmp(name, "--backend")) {
-            if (strcmp(val, "sim") && strcmp(val, "linux"))
-                return fail(EXIT_USAGE, "unknown backend '%s' (sim|linux)", val);
-            o->backend = val;
-        } else if (!strcmp(name, "--num-frac")) {
-            unsigned f = parse_count(val, SCENE_FORMAT_FRAC_MAX);
-            if (f < SCENE_FORMAT_FRAC_MIN)
-                return fail(EXIT_USAGE, "bad --num-frac '%s' (%d..%d)", val, SCENE_FORMAT_FRAC_MIN,
-                            SCENE_FORMAT_FRAC_MAX);
-            o->num_frac = (int)f;
-        } else if (!strcmp(name, "--loop-frames")) {
-            if (!(o->loop_frames = parse_count(val, 4000000000u)))
-                return fail(EXIT_USAGE, "bad --loop-frames '%s' (1..4000000000)", val);
-        } else if (!strcmp(name, "--window-scale")) {
-            if (!(o->window_scale = parse_count(val, 8)))
-                return fail(EXIT_USAGE, "bad --window-scale '%s' (1..8)", val);
-        } else if (!strcmp(name, "--flush")) {
-            if (strcmp(val, "full") && strcmp(val, "dirty"))
-                return fail(EXIT_USAGE, "unknown --flush '%s' (dirty|full)", val);
-            o->flush = !strcmp(val, "full") ? 1 : 2;
-        } else if (!strcmp(name, "--spi-dev")) o->spi_dev = val;
-        else if (!strcmp(name, "--gpio-chip")) o->gpio_chip = val;
-        else if (!strcmp(name, "--spi-hz")) {
-            if (!(o->spi_hz = parse_count(val, 125000000)))
-                return fail(EXIT_USAGE, "bad --spi-hz '%s' (1..125000000)", val);
-        } else if (!strcmp(name, "--spi-mode") || !strcmp(name, "--rotation")) {
-            if (val[0] < '0' || val[0] > '3' || val[1])
-                return fail(EXIT_USAGE, "bad %s '%s' (0..3)", name, val);
-            if (!strcmp(name, "--spi-mode")) o->spi_mode = val[0] - '0';
-            else o->rotation = (unsigned)(val[0] - '0');
-        } else if (!strcmp(name, "--dc") || !strcmp(name, "--rst") || !strcmp(name, "--bl")) {
-            int *pin = !strcmp(name, "--dc") ? &o->dc : !strcmp(name, "--rst") ? &o->rst : &o->bl;
-            if (strcmp(name, "--dc") && !strcmp(val, "none")) *pin = -1;
-            else if (!strcmp(val, "0")) *pin = 0;
-            else if (!(*pin = (int)parse_count(val, 1023)))
-                return fail(EXIT_USAGE, "bad %s '%s' (a line number 0..1023%s)", name, val,
-                            strcmp(name, "--dc") ? " or none" : "");
-        } else if (!strcmp(name, "--inject-fault")) {
-            if (!strcmp(val, "signal-in-write")) img_fault_signal_in_write = 1;   /* imgio's, not the panel's */
-            else o->fault = val;
-        }
+        int rc = set_option(o, name, val);
+        if (rc != EXIT_OK) return rc;
     }
     if (!o->scene) return fail(EXIT_USAGE, "--scene FILE is required (try --help)");
     if (o->num_frac && strcmp(o->numeric ? o->numeric : "fixed", "fixed") &&

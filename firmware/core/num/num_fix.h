@@ -1,6 +1,6 @@
 /* SPDX-License-Identifier: MIT */
 /* num_fix.h — what the fixed-point build's definitions share (num.c,
- * num_sqrt.c, num_trig.c): the saturation counter's hook and two small
+ * num_sqrt.c): the saturation counter's hook and two small
  * helpers. Internal to the numeric layer. */
 #ifndef NUM_FIX_H
 #define NUM_FIX_H

@@ -4,17 +4,11 @@
  * supersampling and subsampling; rendering by strips of rows. */
 #include "rt_int.h"
 #include "rt_num.h"
+#include "work.h"
 
-#define ALIGN8(n) (((n) + 7u) & ~(size_t)7u)
 /* Adaptive supersampling refines a pixel whose centre sample differs from
  * its left or upper neighbour in object or by more than this per channel. */
 #define RT_ADAPTIVE_DIFF NUM_C(12.0)
-
-struct layout {
-    size_t state, oc, items, unb, bvh, bvh_items, occ, lray, llen, row_c, row_item, colx, rowy, ratio;
-    size_t corner[2], corner_have[2], colbuf[2], colbuf_have[2], grid, grid_have;   /* adaptive subsampling */
-    size_t total;
-};
 
 /* Adaptive subsampling's block side: 0 (off) or 2 .. RT_MAX_ADAPT. */
 static unsigned adapt_side(const struct scene *s)
@@ -23,47 +17,52 @@ static unsigned adapt_side(const struct scene *s)
     return v < 2 ? 0u : (v > RT_MAX_ADAPT ? RT_MAX_ADAPT : v);
 }
 
-static struct layout layout_of(const struct scene *s, uint16_t width, uint16_t height)
+/* Every table of the state, in order, from c (c->base NULL: measuring, rt
+ * a scratch state). Tables of objects, items and lights hold at least one
+ * entry. */
+static void carve(const struct scene *s, uint16_t width, uint16_t height, struct rt_state *rt,
+                  struct work_carve *c)
 {
     unsigned ab = adapt_side(s);
-    struct layout l;
     size_t nitems = (size_t)s->nobjects + s->ncsg;
-    size_t off = 0;
-    l.state = off; off += ALIGN8(sizeof(struct rt_state));
-    l.oc = off; off += ALIGN8(sizeof(struct rt_obj_cache) * (s->nobjects ? s->nobjects : 1));
-    l.items = off; off += ALIGN8(sizeof(int16_t) * (nitems ? nitems : 1));
-    l.unb = off; off += ALIGN8(sizeof(int16_t) * (nitems ? nitems : 1));
-    l.bvh = off; off += ALIGN8(sizeof(struct rt_bvh_node) * (2 * nitems + 1));
-    l.bvh_items = off; off += ALIGN8(sizeof(int16_t) * (nitems ? nitems : 1));
-    l.occ = off; off += ALIGN8(sizeof(int16_t) * (s->nlights ? s->nlights : 1));
-    l.lray = off; off += ALIGN8(sizeof(struct rt_ray) * (s->nlights ? s->nlights : 1));
-    l.llen = off; off += ALIGN8(sizeof(num) * (s->nlights ? s->nlights : 1));
-    l.row_c = off; off += ALIGN8(sizeof(rgb) * width);
-    l.row_item = off; off += ALIGN8(sizeof(int16_t) * width);
-    l.colx = off; off += ALIGN8(sizeof(num) * width);
+    size_t nobj1 = s->nobjects ? s->nobjects : 1, nitem1 = nitems ? nitems : 1, nlight1 = s->nlights ? s->nlights : 1;
+    (void)work_take(c, sizeof(struct rt_state));   /* the state itself, first */
+    rt->oc = work_take(c, sizeof(struct rt_obj_cache) * nobj1);
+    rt->items = work_take(c, sizeof(int16_t) * nitem1);
+    rt->unbounded = work_take(c, sizeof(int16_t) * nitem1);
+    rt->bvh = work_take(c, sizeof(struct rt_bvh_node) * (2 * nitems + 1));
+    rt->bvh_items = work_take(c, sizeof(int16_t) * nitem1);
+    rt->occluder = work_take(c, sizeof(int16_t) * nlight1);
+    rt->light_ray = work_take(c, sizeof(struct rt_ray) * nlight1);
+    rt->light_len = work_take(c, sizeof(num) * nlight1);
+    rt->row_c = work_take(c, sizeof(rgb) * width);
+    rt->row_item = work_take(c, sizeof(int16_t) * width);
+    rt->col_x = work_take(c, sizeof(num) * width);
     /* adaptive subsampling visits rows out of order: every row's viewport y */
-    l.rowy = off; off += ALIGN8(sizeof(num) * (ab ? height : 0u));
-    l.ratio = off; off += ALIGN8(sizeof(num) * (ab ? (ab + 1u) * (ab + 1u) : 0u));
+    num *row_y = work_take(c, sizeof(num) * (ab ? height : 0u));
+    rt->row_y_tab = ab ? row_y : NULL;
+    rt->adapt_ratio = work_take(c, sizeof(num) * (ab ? (ab + 1u) * (ab + 1u) : 0u));
     /* adaptive subsampling: two full rows of samples, a block's two columns
      * and its (B + 1)^2 grid, each with its flags (empty when off) */
     size_t nb = ab ? ab + 1u : 0, ng = nb * nb, nw = ab ? width : 0;
     for (int k = 0; k < 2; k++) {
-        l.corner[k] = off; off += ALIGN8(sizeof(struct rt_sample) * nw);
-        l.corner_have[k] = off; off += ALIGN8(nw);
+        rt->corner[k] = work_take(c, sizeof(struct rt_sample) * nw);
+        rt->corner_have[k] = work_take(c, nw);
     }
     for (int k = 0; k < 2; k++) {
-        l.colbuf[k] = off; off += ALIGN8(sizeof(struct rt_sample) * nb);
-        l.colbuf_have[k] = off; off += ALIGN8(nb);
+        rt->colbuf[k] = work_take(c, sizeof(struct rt_sample) * nb);
+        rt->colbuf_have[k] = work_take(c, nb);
     }
-    l.grid = off; off += ALIGN8(sizeof(struct rt_sample) * ng);
-    l.grid_have = off; off += ALIGN8(ng);
-    l.total = off;
-    return l;
+    rt->grid = work_take(c, sizeof(struct rt_sample) * ng);
+    rt->grid_have = work_take(c, ng);
 }
 
 size_t rt_work_size(const struct scene *s, uint16_t width, uint16_t height)
 {
-    return layout_of(s, width, height).total;
+    struct rt_state scratch;
+    struct work_carve c = { NULL, 0 };
+    carve(s, width, height, &scratch, &c);
+    return c.off;   /* rt_init takes memory aligned to WORK_ALIGN: no slack */
 }
 
 void rt_set_shadow_probe(void *work, uint8_t *probe)
@@ -71,50 +70,11 @@ void rt_set_shadow_probe(void *work, uint8_t *probe)
     rt_state_of(work)->shadow_probe = probe;
 }
 
-int rt_init(void *work, size_t work_size, const struct scene *s, uint16_t width, uint16_t height)
+/* The scene's options as the state keeps them (clamped), and adaptive
+ * subsampling's bilinear weights. */
+static void init_options(struct rt_state *rt)
 {
-    if (((uintptr_t)work & 7u) != 0) return -1;
-    if ((size_t)s->nobjects + s->ncsg > 16000) return -1;
-    for (uint16_t k = 0; k < s->ncsg; k++)
-        if (s->csg[k].a >= s->nobjects || s->csg[k].b >= s->nobjects ||
-            s->objects[s->csg[k].a].shape != RT_SPHERE || s->objects[s->csg[k].b].shape != RT_SPHERE)
-            return -1;
-    struct layout l = layout_of(s, width, height);
-    if (work_size < l.total) return -1;
-    unsigned char *w = work;
-    struct rt_state *rt = (struct rt_state *)(w + l.state);
-    *rt = (struct rt_state){ 0 };
-    rt->s = s;
-    rt->w = width;
-    rt->h = height;
-    rt->oc = (struct rt_obj_cache *)(w + l.oc);
-    rt->items = (int16_t *)(w + l.items);
-    rt->unbounded = (int16_t *)(w + l.unb);
-    rt->bvh = (struct rt_bvh_node *)(w + l.bvh);
-    rt->bvh_items = (int16_t *)(w + l.bvh_items);
-    rt->occluder = (int16_t *)(w + l.occ);
-    rt->light_ray = (struct rt_ray *)(w + l.lray);
-    rt->light_len = (num *)(w + l.llen);
-    rt->row_c = (rgb *)(w + l.row_c);
-    rt->row_item = (int16_t *)(w + l.row_item);
-    rt->col_x = (num *)(w + l.colx);
-    rt->row_y_tab = adapt_side(s) ? (num *)(w + l.rowy) : NULL;
-    rt->adapt = (uint8_t)adapt_side(s);
-    rt->adapt_diff = num_from_int(s->rt.adaptive_threshold ? s->rt.adaptive_threshold : RT_SUBSAMPLE_DIFF);
-    /* the bilinear weights i / w of every rectangle side w a block can have */
-    rt->adapt_ratio = (num *)(w + l.ratio);
-    for (int side = 1; side <= rt->adapt; side++)
-        for (int i = 0; i <= side; i++) rt->adapt_ratio[side * (rt->adapt + 1) + i] = num_from_ratio(i, side);
-    for (int k = 0; k < 2; k++) {
-        rt->corner[k] = (struct rt_sample *)(w + l.corner[k]);
-        rt->corner_have[k] = w + l.corner_have[k];
-        rt->colbuf[k] = (struct rt_sample *)(w + l.colbuf[k]);
-        rt->colbuf_have[k] = w + l.colbuf_have[k];
-    }
-    rt->corner_row[0] = rt->corner_row[1] = -1;
-    rt->grid = (struct rt_sample *)(w + l.grid);
-    rt->grid_have = w + l.grid_have;
-    const struct rt_options *o = &s->rt;
+    const struct rt_options *o = &rt->s->rt;
     rt->book = o->formulation == 1 || (o->formulation == 0 && num_rt_reference_mode());
     rt->depth = o->recursion_depth > RT_MAX_DEPTH ? RT_MAX_DEPTH : o->recursion_depth;
     rt->cached = !o->no_frame_cache;
@@ -123,26 +83,59 @@ int rt_init(void *work, size_t work_size, const struct scene *s, uint16_t width,
     rt->ss = o->supersample < 1 ? 1 : (o->supersample > RT_MAX_SS ? RT_MAX_SS : o->supersample);
     rt->ss_adaptive = o->adaptive_ss;
     rt->subsample = o->subsample < 1 ? 1 : o->subsample;
-    /* drawn items in the book's order: objects, then CSG results */
-    for (uint16_t i = 0; i < s->nobjects; i++)
-        if (!s->objects[i].csg_only) rt->items[rt->nitems++] = (int16_t)i;
-    for (uint16_t k = 0; k < s->ncsg; k++) rt->items[rt->nitems++] = (int16_t)(s->nobjects + k);
-    for (uint16_t k = 0; k < s->nlights; k++) rt->occluder[k] = -1;
-    /* viewport: height kept, width follows the render size (render.h) */
-    rt->wn = num_from_int(width);
-    rt->hn = num_from_int(height);
+    rt->adapt = (uint8_t)adapt_side(rt->s);
+    rt->adapt_diff = num_from_int(o->adaptive_threshold ? o->adaptive_threshold : RT_SUBSAMPLE_DIFF);
+    /* the bilinear weights i / w of every rectangle side w a block can have */
+    for (int side = 1; side <= rt->adapt; side++)
+        for (int i = 0; i <= side; i++) rt->adapt_ratio[side * (rt->adapt + 1) + i] = num_from_ratio(i, side);
+    rt->corner_row[0] = rt->corner_row[1] = -1;
+}
+
+/* The render size's viewport: height kept, width follows the render size
+ * (render.h); every column's (and with adaptive subsampling every row's)
+ * viewport coordinate. */
+static void init_viewport(struct rt_state *rt)
+{
+    const struct scene *s = rt->s;
+    rt->wn = num_from_int(rt->w);
+    rt->hn = num_from_int(rt->h);
     rt->vh = s->viewport_h;
     rt->vw = num_div(num_mul(s->viewport_h, rt->wn), rt->hn);
     rt->d = s->projection_d;
     rt->sx = num_div(rt->vw, rt->wn);
     rt->sy = num_div(rt->vh, rt->hn);
     /* viewport x of every column's centre sample (canvas_to_viewport) */
-    for (uint16_t c = 0; c < width; c++)
-        rt->col_x[c] = num_div(num_mul(num_from_int(c - width / 2), rt->vw), rt->wn);
+    for (uint16_t c = 0; c < rt->w; c++)
+        rt->col_x[c] = num_div(num_mul(num_from_int(c - rt->w / 2), rt->vw), rt->wn);
     rt->row_y_row = -1;
     if (rt->row_y_tab)
-        for (int r = 0; r < height; r++)
+        for (int r = 0; r < rt->h; r++)
             rt->row_y_tab[r] = num_div(num_mul(num_from_int(rt->h / 2 - 1 - r), rt->vh), rt->hn);
+}
+
+int rt_init(void *work, size_t work_size, const struct scene *s, uint16_t width, uint16_t height)
+{
+    if (((uintptr_t)work & (WORK_ALIGN - 1)) != 0) return -1;
+    if ((size_t)s->nobjects + s->ncsg > 16000) return -1;
+    for (uint16_t k = 0; k < s->ncsg; k++)
+        if (s->csg[k].a >= s->nobjects || s->csg[k].b >= s->nobjects ||
+            s->objects[s->csg[k].a].shape != RT_SPHERE || s->objects[s->csg[k].b].shape != RT_SPHERE)
+            return -1;
+    if (work_size < rt_work_size(s, width, height)) return -1;
+    struct rt_state *rt = rt_state_of(work);
+    *rt = (struct rt_state){ 0 };
+    struct work_carve c = { (uint8_t *)work, 0 };
+    carve(s, width, height, rt, &c);
+    rt->s = s;
+    rt->w = width;
+    rt->h = height;
+    init_options(rt);
+    /* drawn items in the book's order: objects, then CSG results */
+    for (uint16_t i = 0; i < s->nobjects; i++)
+        if (!s->objects[i].csg_only) rt->items[rt->nitems++] = (int16_t)i;
+    for (uint16_t k = 0; k < s->ncsg; k++) rt->items[rt->nitems++] = (int16_t)(s->nobjects + k);
+    for (uint16_t k = 0; k < s->nlights; k++) rt->occluder[k] = -1;
+    init_viewport(rt);
     rt->cam_pos = s->camera.position;
     rt->cam_rot = s->camera.rotation;
     rt_frame_constants(rt);
@@ -151,7 +144,7 @@ int rt_init(void *work, size_t work_size, const struct scene *s, uint16_t width,
         num e = s->objects[i].mat.specular;
         rt->oc[i].spec_zero = e >= 0 ? rt_powi_zero_below((uint32_t)num_to_int(e)) : NUM_C(-1.0);
     }
-    if (o->bvh) rt_build_bvh(rt);
+    if (s->rt.bvh) rt_build_bvh(rt);
     return 0;
 }
 

@@ -15,7 +15,7 @@
  * every hit distance along a ray (t*|D|) under 16000 in magnitude; sphere
  * radii up to 16000 are fine (radius 5000 is the book's ground).
  *
- * Formulations (rt_options.formulation, num_rt.h):
+ * Formulations (rt_options.formulation, rt/rt_num.h):
  * - book: IntersectRaySphere's quadratic k1 t^2 + k2 t + k3 with the demos'
  *   operation order; normals N = (P - C) * (1/|P - C|); shadow and reflection
  *   rays start at t = epsilon. The double build reproduces the demos exactly.

@@ -448,7 +448,7 @@ static double urand(uint32_t *st)
     return (double)(*st >> 8) / 16777216.0;
 }
 
-/* The coarse sphere rejection (num_rt.h) against the exact robust test on
+/* The coarse sphere rejection (rt_num.h) against the exact robust test on
  * rays aimed just past random spheres of radii 0.01 .. 5000: every claimed
  * miss is a miss of the exact test, and a claimed negative b is one. */
 static void test_coarse_rejection(void)

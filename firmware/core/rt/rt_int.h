@@ -17,7 +17,7 @@
  * (rt_ray_exact): a ray that every coarse test rejects never needs them. */
 struct rt_ray {
     vec3 o, d;
-    struct rt_cdir cd;    /* coarse direction (num_rt.h) */
+    struct rt_cdir cd;    /* coarse direction (rt_num.h) */
     wnum a;               /* D.D, wide (the book's k1) */
     vec3 ds;              /* D / 2^k with ds.ds = as in [0.25, 4) (robust tests) */
     wnum as;
@@ -57,7 +57,7 @@ struct rt_obj_cache {
     vec3 bc;              /* bounding sphere of the item (BVH) */
     num br;
     num spec_zero;        /* rt_powi_zero_below(material's exponent) */
-    struct rt_csphere cs; /* the sphere for the coarse tests (num_rt.h) */
+    struct rt_csphere cs; /* the sphere for the coarse tests (rt_num.h) */
     struct num_divisor rdiv; /* radius, for the normals (P - C) / r */
 };
 
@@ -125,6 +125,9 @@ struct rt_state {
     struct rt_counters n;
 };
 
+/* A CSG item's index into scene.csg (items past the objects are CSGs). */
+#define CSG_ITEM(rt, item) ((item) - (int16_t)(rt)->s->nobjects)
+
 /* The state inside the work memory (render_ctx.work). */
 static inline struct rt_state *rt_state_of(void *work) { return (struct rt_state *)work; }
 
@@ -148,16 +151,48 @@ int rt_closest_intersection(struct rt_state *rt, struct rt_ray *ray, num t_min, 
 int rt_item_hit(struct rt_state *rt, int16_t item, struct rt_ray *ray, num t_min, num t_max,
                 struct rt_hit *hit);
 vec3 rt_hit_normal(const struct rt_state *rt, const struct rt_hit *hit, vec3 p);
+
+/* rt_scene.c: the bounding-sphere hierarchy over rt->items (planes aside,
+ * unbounded); the per-frame object constants (after the camera moved). */
 void rt_build_bvh(struct rt_state *rt);
 void rt_frame_constants(struct rt_state *rt);
 /* Directional lights' shadow-ray forms and |L| (the lights do not move). */
 void rt_light_constants(struct rt_state *rt);
 
-/* raytracer.c: refraction direction (unit) by Snell's law for incoming D
+/* rt_trace.c: refraction direction (unit) by Snell's law for incoming D
  * (any length) at a surface with unit normal N and index of refraction ior
  * (N facing the incoming ray: entering; otherwise leaving); 0 on total
  * internal reflection. */
 int rt_refract(vec3 d, vec3 n, num ior, vec3 *out);
+/* What a primary ray found: the item it hit (-1: none) and the lights it
+ * found shadowed there (bit k: light k). */
+struct rt_prim {
+    int16_t item;
+    uint8_t shadow;
+};
+/* rt_trace.c, TraceRay of one primary ray (from the camera, to the scene's
+ * reflection depth) through canvas point (x, y) (sub-pixel allowed), or
+ * through the centre of pixel (col, row) (its viewport x and y from the
+ * tables): its colour, and *prim. */
+rgb rt_trace_canvas(struct rt_state *rt, num x, num y, struct rt_prim *prim);
+rgb rt_trace_pixel(struct rt_state *rt, int col, int row, struct rt_prim *prim);
+/* The same for pixel (col, row), as a sample. */
+static inline void rt_sample_pixel(struct rt_state *rt, int col, int row, struct rt_sample *s)
+{
+    struct rt_prim pr;
+    s->c = rt_trace_pixel(rt, col, row, &pr);
+    s->item = pr.item;
+    s->shadow = pr.shadow;
+}
+
+/* rt_adaptive.c: the strip by 2-D adaptive subsampling (rt->adapt > 0). */
+void rt_adaptive_strip(struct rt_state *rt, struct render_target *t);
+
+/* rt_pixels.c: writes pixel (x, y) of the strip, with render.h's coverage:
+ * the mask (t->written) and the count of render_stats.pixels_written. */
+void rt_put(struct rt_state *rt, struct render_target *t, int x, int y, rgb c, int covered);
+/* rt_pixels.c: some channel of a and b more than `diff` apart. */
+int rt_colours_differ(rgb a, rgb b, num diff);
 
 /* rt_lighting.c, the book's ComputeLighting: intensity at P (normal N, view V = -D) for specular exponent s
  * (s_zero: rt_powi_zero_below of it, or -1).

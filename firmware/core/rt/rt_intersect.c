@@ -1,7 +1,7 @@
 /* SPDX-License-Identifier: MIT */
 /* rt_intersect.c — rays against objects: IntersectRaySphere (chapter 2),
- * ClosestIntersection, and chapter 5's planes, triangles, CSG of spheres and
- * the bounding-sphere hierarchy.
+ * ClosestIntersection (walking the bounding-sphere hierarchy rt_scene.c
+ * builds), and chapter 5's planes, triangles and CSG of spheres.
  *
  * Two formulations of the sphere test (raytracer.h): the book's, for the
  * reference build, and a robust one for fixed point. Range argument of the
@@ -17,8 +17,6 @@
  *   book's ground seen from the camera c = 5001^2 - 5000^2 = 10001 exactly.
  */
 #include "rt_int.h"
-
-#define CSG_ITEM(rt, item) ((item) - (int16_t)(rt)->s->nobjects)
 
 /* The ray, with a copy of its direction scaled by a power of two for the
  * robust tests: D' = D / 2^k with D'.D' in [0.25, 4), and tscale = 2^-k,
@@ -92,7 +90,7 @@ static int sphere_quad(const struct rt_state *rt, int16_t obj, struct rt_ray *ra
     const struct rt_object *o = &rt->s->objects[obj];
     const struct rt_obj_cache *oc = &rt->oc[obj];
     int cam = ray->from_camera && rt->cached;
-    /* certain misses, decided in 32-bit arithmetic (num_rt.h): the test
+    /* certain misses, decided in 32-bit arithmetic (rt_num.h): the test
      * below would return 0 too (coarse_done: the caller has tried it) */
     if (rt->shortcuts && !coarse_done && rt_coarse_sphere_miss(&ray->cd, &oc->cs)) return 0;
     rt_ray_exact(ray);
@@ -483,138 +481,4 @@ vec3 rt_hit_normal(const struct rt_state *rt, const struct rt_hit *hit, vec3 p)
         n = rt->oc[hit->surf].n;
     }
     return hit->flip ? v3_neg(n) : n;
-}
-
-/* ---- per-frame constants and the bounding-sphere hierarchy ------------ */
-
-static void item_bound(const struct rt_state *rt, int16_t item, vec3 *c, num *r)
-{
-    const struct scene *s = rt->s;
-    if (item >= (int16_t)s->nobjects) {
-        const struct rt_csg *g = &s->csg[CSG_ITEM(rt, item)];
-        const struct rt_object *a = &s->objects[g->a], *b = &s->objects[g->b];
-        if (g->op != CSG_UNION) { *c = a->center; *r = a->radius; return; }
-        /* enclosing sphere of both operands (centred on a, simple and safe) */
-        *c = a->center;
-        *r = num_max(a->radius, num_add(v3_len(v3_sub(b->center, a->center)), b->radius));
-        return;
-    }
-    const struct rt_object *o = &s->objects[item];
-    if (o->shape == RT_SPHERE) { *c = o->center; *r = o->radius; return; }
-    /* triangle: centroid, farthest corner */
-    vec3 m = v3_scale(v3_add(v3_add(o->p[0], o->p[1]), o->p[2]), NUM_C(1.0 / 3.0));
-    num rr = NUM_ZERO;
-    for (int k = 0; k < 3; k++) rr = num_max(rr, v3_len(v3_sub(o->p[k], m)));
-    *c = m;
-    *r = rr;
-}
-
-void rt_light_constants(struct rt_state *rt)
-{
-    const struct scene *s = rt->s;
-    for (uint16_t k = 0; k < s->nlights; k++)
-        if (s->lights[k].type == LIGHT_DIRECTIONAL) {
-            rt->light_ray[k] = rt_make_ray(v3_make(NUM_ZERO, NUM_ZERO, NUM_ZERO), s->lights[k].v, -1, 0);
-            rt_ray_exact(&rt->light_ray[k]);
-            rt->light_len[k] = v3_len(s->lights[k].v);
-        }
-}
-
-void rt_frame_constants(struct rt_state *rt)
-{
-    const struct scene *s = rt->s;
-    for (uint16_t i = 0; i < s->nobjects; i++) {
-        const struct rt_object *o = &s->objects[i];
-        struct rt_obj_cache *oc = &rt->oc[i];
-        oc->r2 = num_mul_wide(o->radius, o->radius);
-        oc->cs = rt_csphere_make(o->center, o->radius);
-        oc->rdiv = num_divisor_make(o->radius);
-        if (o->shape == RT_SPHERE) {
-            oc->co_cam = v3_sub(rt->cam_pos, o->center);
-            if (rt->book)
-                oc->k3_cam = num_sub(v3_dot(oc->co_cam, oc->co_cam), num_mul(o->radius, o->radius));
-            else
-                oc->c_cam = wnum_sub(v3_dot_wide(oc->co_cam, oc->co_cam), oc->r2);
-        } else if (o->shape == RT_TRIANGLE) {
-            oc->e1 = v3_sub(o->p[1], o->p[0]);
-            oc->e2 = v3_sub(o->p[2], o->p[0]);
-            oc->n = v3_normalize(v3_cross(oc->e1, oc->e2));
-        }
-    }
-}
-
-/* Top-down build: split the item range at the median of the longest axis
- * of the centres. Recursion depth is log2(items) + 1. */
-static int16_t build_node(struct rt_state *rt, int16_t first, int16_t count)
-{
-    int16_t id = (int16_t)rt->nbvh++;
-    struct rt_bvh_node *nd = &rt->bvh[id];
-    int16_t *it = rt->bvh_items + first;
-    /* centre: mean of item centres; radius: farthest item surface */
-    vec3 lo = v3_make(NUM_MAX, NUM_MAX, NUM_MAX), hi = v3_make(NUM_MIN, NUM_MIN, NUM_MIN);
-    for (int16_t k = 0; k < count; k++) {
-        vec3 c;
-        num r;
-        item_bound(rt, it[k], &c, &r);
-        lo = v3_make(num_min(lo.x, c.x), num_min(lo.y, c.y), num_min(lo.z, c.z));
-        hi = v3_make(num_max(hi.x, c.x), num_max(hi.y, c.y), num_max(hi.z, c.z));
-    }
-    vec3 mid = v3_scale(v3_add(lo, hi), NUM_HALF);
-    num rad = NUM_ZERO;
-    for (int16_t k = 0; k < count; k++) {
-        vec3 c;
-        num r;
-        item_bound(rt, it[k], &c, &r);
-        rad = num_max(rad, num_add(v3_len(v3_sub(c, mid)), r));
-    }
-    /* a little margin so rounding never culls a real hit */
-    nd->c = mid;
-    nd->r = num_add(num_add(rad, num_mul(rad, NUM_C(1.0 / 256))), NUM_C(0.01));
-    nd->first = first;
-    nd->count = count;
-    nd->left = nd->right = -1;
-    if (count <= 2) return id;
-    vec3 ext = v3_sub(hi, lo);
-    int axis = ext.x >= ext.y && ext.x >= ext.z ? 0 : (ext.y >= ext.z ? 1 : 2);
-    /* insertion sort by centre along the axis */
-    for (int16_t k = 1; k < count; k++) {
-        int16_t v = it[k];
-        vec3 cv;
-        num rv;
-        item_bound(rt, v, &cv, &rv);
-        num kv = axis == 0 ? cv.x : (axis == 1 ? cv.y : cv.z);
-        int16_t j = k;
-        while (j > 0) {
-            vec3 cj;
-            num rj;
-            item_bound(rt, it[j - 1], &cj, &rj);
-            num kj = axis == 0 ? cj.x : (axis == 1 ? cj.y : cj.z);
-            if (kj <= kv) break;
-            it[j] = it[j - 1];
-            j--;
-        }
-        it[j] = v;
-    }
-    int16_t half = (int16_t)(count / 2);
-    int16_t l = build_node(rt, first, half);
-    int16_t r = build_node(rt, (int16_t)(first + half), (int16_t)(count - half));
-    rt->bvh[id].left = l;
-    rt->bvh[id].right = r;
-    return id;
-}
-
-void rt_build_bvh(struct rt_state *rt)
-{
-    const struct scene *s = rt->s;
-    uint16_t nb = 0;
-    rt->nunbounded = 0;
-    rt->nbvh = 0;
-    for (uint16_t i = 0; i < rt->nitems; i++) {
-        int16_t item = rt->items[i];
-        if (item < (int16_t)s->nobjects && s->objects[item].shape == RT_PLANE)
-            rt->unbounded[rt->nunbounded++] = item;
-        else
-            rt->bvh_items[nb++] = item;
-    }
-    if (nb > 0) build_node(rt, 0, (int16_t)nb);
 }

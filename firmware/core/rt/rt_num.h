@@ -1,5 +1,5 @@
 /* SPDX-License-Identifier: MIT */
-/* num_rt.h — what the ray tracer needs to know about the numeric mode.
+/* rt_num.h — what the ray tracer needs to know about the numeric mode.
  *
  * The ray tracer is one source for the three modes (no NUM_MODE tests in
  * it); the one mode-dependent choice it makes is which formulation of the

@@ -21,6 +21,7 @@ struct rt_ray {
     wnum a;               /* D.D, wide (the book's k1) */
     vec3 ds;              /* D / 2^k with ds.ds = as in [0.25, 4) (robust tests) */
     wnum as;
+    wnum aq;              /* rt_quad_a(ds): as the sphere test's quadratic takes it */
     num tscale;           /* 2^-k: t = t' * tscale for a root t' along ds */
     int16_t origin;
     uint8_t from_camera;  /* O is the camera: per-frame sphere constants apply */
@@ -58,6 +59,7 @@ struct rt_obj_cache {
     num br;
     num spec_zero;        /* rt_powi_zero_below(material's exponent) */
     struct rt_csphere cs; /* the sphere for the coarse tests (rt_num.h) */
+    struct rt_qsphere qs; /* the sphere for the robust test's quadratic (rt_num.h) */
     struct num_divisor rdiv; /* radius, for the normals (P - C) / r */
 };
 

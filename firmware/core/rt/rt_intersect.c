@@ -29,7 +29,7 @@ void rt_ray_init(struct rt_ray *r, vec3 o, vec3 d, int16_t origin, uint8_t from_
     r->origin = origin;
     r->from_camera = from_camera;
     r->exact = 0;
-    r->a = r->as = 0;           /* set by rt_ray_exact */
+    r->a = r->as = r->aq = 0;   /* set by rt_ray_exact */
     /* by components: a struct copy here becomes a memcpy call on ARMv6-M */
     r->ds.x = d.x;
     r->ds.y = d.y;
@@ -70,6 +70,7 @@ void rt_ray_exact(struct rt_ray *r)
     }
     r->ds = d;
     r->as = a;
+    r->aq = rt_quad_a(d);
     r->tscale = ts;
 }
 
@@ -82,7 +83,11 @@ static num scale_t(num t, num tscale)
  * up to q = b + sign(b) sqrt(b^2 - a c); 0 when it has no root or both
  * roots are <= 0 with the origin outside (c > 0, b <= 0), which every
  * caller rejects (t_min >= 0). Not for a ray leaving this sphere. */
-struct sphere_quad { wnum a, b, c, disc, q; num ts; };
+struct sphere_quad {
+    wnum a, c;
+    num ts;
+    struct rt_quad k;     /* b, q, disc > 0 (rt_num.h) */
+};
 
 static int sphere_quad(const struct rt_state *rt, int16_t obj, struct rt_ray *ray, struct sphere_quad *k,
                        int coarse_done)
@@ -95,18 +100,17 @@ static int sphere_quad(const struct rt_state *rt, int16_t obj, struct rt_ray *ra
     if (rt->shortcuts && !coarse_done && rt_coarse_sphere_miss(&ray->cd, &oc->cs)) return 0;
     rt_ray_exact(ray);
     vec3 co = cam ? oc->co_cam : v3_sub(ray->o, o->center);
-    k->a = ray->as;
+    k->a = ray->aq;
     k->ts = ray->tscale;
-    k->b = wnum_sub(wnum_from_num(NUM_ZERO), v3_dot_wide(co, ray->ds));
     /* c = CO.CO - r^2 (per frame from the camera: the same value) */
     k->c = cam ? oc->c_cam : wnum_sub(v3_dot_wide(co, co), oc->r2);
-    if (k->c > 0 && k->b <= 0) return 0;
-    k->disc = wnum_sub(wnum_mul(k->b, k->b), wnum_mul(k->a, k->c));
-    if (k->disc < 0) return 0;
-    wnum h = wnum_sqrt(k->disc);
-    k->q = k->b >= 0 ? wnum_add(k->b, h) : wnum_sub(k->b, h);
-    return 1;
+    return rt_quad_solve(co, ray->ds, k->a, k->c, &oc->qs, &k->k);
 }
+
+/* The quadratic's roots (q != 0), t along D: the near one c/q from
+ * outside, and q/a. */
+static num quad_near(const struct sphere_quad *k) { return scale_t(wnum_div(k->c, k->k.q), k->ts); }
+static num quad_far(const struct sphere_quad *k) { return scale_t(rt_quad_far(&k->k, k->a), k->ts); }
 
 /* O on the sphere (the ray leaves it): b, with the roots exactly 0 and 2b/a. */
 static wnum sphere_self_b(const struct rt_state *rt, int16_t obj, struct rt_ray *ray)
@@ -150,9 +154,9 @@ int rt_intersect_ray_sphere(const struct rt_state *rt, int16_t obj, struct rt_ra
     }
     struct sphere_quad k;
     if (!sphere_quad(rt, obj, ray, &k, 0)) return 0;
-    if (k.q == 0) { *t1 = *t2 = NUM_ZERO; return 1; }
-    num ra = scale_t(wnum_div(k.q, k.a), k.ts);
-    num rc = scale_t(wnum_div(k.c, k.q), k.ts);
+    if (k.k.q == 0) { *t1 = *t2 = NUM_ZERO; return 1; }
+    num ra = quad_far(&k);
+    num rc = quad_near(&k);
     if (ra > rc) { *t1 = ra; *t2 = rc; }
     else { *t1 = rc; *t2 = ra; }
     return 1;
@@ -178,16 +182,16 @@ static int sphere_first_hit(const struct rt_state *rt, int16_t obj, struct rt_ra
     }
     struct sphere_quad k;
     if (!sphere_quad(rt, obj, ray, &k, coarse_done)) return 0;
-    if (k.q == 0) {
+    if (k.k.q == 0) {
         t1 = t2 = NUM_ZERO;
-    } else if (k.c > 0 && k.disc > 0) {
-        t2 = scale_t(wnum_div(k.c, k.q), k.ts);
+    } else if (k.c > 0 && k.k.disc_pos) {
+        t2 = quad_near(&k);
         if (t2 >= limit) return 0;
         if (t_min < t2) { *t = t2; return 1; }
-        t1 = scale_t(wnum_div(k.q, k.a), k.ts);
+        t1 = quad_far(&k);
     } else {
-        num ra = scale_t(wnum_div(k.q, k.a), k.ts);
-        num rc = scale_t(wnum_div(k.c, k.q), k.ts);
+        num ra = quad_far(&k);
+        num rc = quad_near(&k);
         t1 = ra > rc ? ra : rc;
         t2 = ra > rc ? rc : ra;
     }

@@ -71,7 +71,7 @@ num rt_compute_lighting(struct rt_state *rt, vec3 p, vec3 n, vec3 v, num s, num 
                 sr.d = lr->d;
                 rt_cdir_copy_dir(&sr.cd, &lr->cd);
                 rt_cpt_set(&sr.cd.o, p);
-                sr.a = lr->a; sr.as = lr->as; sr.tscale = lr->tscale;
+                sr.a = lr->a; sr.as = lr->as; sr.aq = lr->aq; sr.tscale = lr->tscale;
                 sr.ds.x = lr->ds.x; sr.ds.y = lr->ds.y; sr.ds.z = lr->ds.z;   /* no memcpy call */
                 sr.origin = origin;
                 sr.from_camera = 0;

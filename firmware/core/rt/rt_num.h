@@ -408,4 +408,137 @@ static inline wnum wnum_mul4(wnum t)
 #endif
 }
 
+/* ---- the robust sphere test's quadratic --------------------------------
+ *
+ * a t'^2 - 2 b t' + c = 0 along the scaled direction D' (a = D'.D',
+ * b = -CO.D', c = CO.CO - r^2), solved up to q = b + sign(b) sqrt(b^2 - a c).
+ *
+ * Fixed point forms it from the exact products of the stored inputs: every
+ * product of two num is exact at 2F fraction bits in 64 bits, so b is exact,
+ * and the discriminant comes from Lagrange's identity
+ *   b^2 - a c = a r^2 - |CO x D'|^2
+ * whose two terms are built from CO x D' and a (both exact), each brought to
+ * 31 bits by a shift before its 32x32 products: the difference keeps at
+ * least 29 significant bits of the larger term whatever the cancellation
+ * near a silhouette (rounding b and c to the format first, as the floating
+ * modes do in their own precision, loses up to about 6 |CO| ulps there).
+ * Range: |CO| < 2^15 and |D'_i| < 2 give raw |CO_i D'_j| < 2^(32+F) and
+ * sums of three below 2^(34+F), inside int64 for F <= 29; sqrt(disc) <=
+ * sqrt(a) r < 2^(16+2F).
+ * The floating modes: b and c in wnum, disc = b b - a c. */
+
+/* The sphere's own constant (per frame): r^2, exact at 2F bits (fixed). */
+struct rt_qsphere {
+#if NUM_MODE == NUM_MODE_FIXED
+    uint64_t r2x;
+#else
+    uint8_t none;
+#endif
+};
+
+static inline struct rt_qsphere rt_qsphere_make(num r)
+{
+    struct rt_qsphere q;
+#if NUM_MODE == NUM_MODE_FIXED
+    q.r2x = (uint64_t)num_smul32(r, r);
+#else
+    (void)r;
+    q.none = 1;
+#endif
+    return q;
+}
+
+/* One solved quadratic: b and q in wnum, whether disc > 0; fixed point
+ * also keeps q at 2F fraction bits for the far root. */
+struct rt_quad {
+    wnum b, q;
+    int disc_pos;
+#if NUM_MODE == NUM_MODE_FIXED
+    int64_t qx;
+#endif
+};
+
+#if NUM_MODE == NUM_MODE_FIXED
+static inline uint64_t rt_mag64(int64_t v) { return v < 0 ? (uint64_t)0 - (uint64_t)v : (uint64_t)v; }
+static inline int rt_bitlen64(uint64_t v) { return v ? 64 - num_clz64(v) : 0; }
+static inline uint64_t rt_shr64(uint64_t v, int k) { return k >= 64 ? 0 : v >> k; }
+/* v / 2^k rounded to nearest (half away from zero), 0 <= k < 63. */
+static inline int64_t rt_shr_round(int64_t v, int k)
+{
+    if (k == 0) return v;
+    uint64_t m = (rt_mag64(v) + ((uint64_t)1 << (k - 1))) >> k;
+    return v < 0 ? -(int64_t)m : (int64_t)m;
+}
+#endif
+
+/* a = D'.D' as the quadratic takes it (once per ray): exact at 2F
+ * fraction bits in fixed point, wnum otherwise. */
+static inline wnum rt_quad_a(vec3 d)
+{
+#if NUM_MODE == NUM_MODE_FIXED
+    return num_smul32(d.x, d.x) + num_smul32(d.y, d.y) + num_smul32(d.z, d.z);
+#else
+    return v3_dot_wide(d, d);
+#endif
+}
+
+/* Solves the quadratic of CO and D' (aq = rt_quad_a(D'), c in wnum): 0 when
+ * the discriminant is negative or when c > 0 and b <= 0 (both roots at or
+ * behind the origin, outside the sphere). */
+static inline int rt_quad_solve(vec3 co, vec3 d, wnum aq, wnum c, const struct rt_qsphere *sp, struct rt_quad *k)
+{
+#if NUM_MODE == NUM_MODE_FIXED
+    int64_t bx = -(num_smul32(co.x, d.x) + num_smul32(co.y, d.y) + num_smul32(co.z, d.z));
+    if (c > 0 && bx <= 0) return 0;
+    uint64_t ax = (uint64_t)aq;
+    uint64_t x0 = rt_mag64(num_smul32(co.y, d.z) - num_smul32(co.z, d.y));
+    uint64_t x1 = rt_mag64(num_smul32(co.z, d.x) - num_smul32(co.x, d.z));
+    uint64_t x2 = rt_mag64(num_smul32(co.x, d.y) - num_smul32(co.y, d.x));
+    /* |CO x D'|^2 at scale 2^(2 kx), each component >> kx below 2^30 */
+    int lx = rt_bitlen64(x0 | x1 | x2);
+    int kx = lx > 30 ? lx - 30 : 0;
+    uint32_t s0 = (uint32_t)(x0 >> kx), s1 = (uint32_t)(x1 >> kx), s2 = (uint32_t)(x2 >> kx);
+    uint64_t xx = num_umul32(s0, s0) + num_umul32(s1, s1) + num_umul32(s2, s2);
+    /* a r^2 at scale 2^(ka + kr), both factors below 2^31 */
+    int la = rt_bitlen64(ax), lr = rt_bitlen64(sp->r2x);
+    int ka = la > 31 ? la - 31 : 0, kr = lr > 31 ? lr - 31 : 0;
+    uint64_t ar = num_umul32((uint32_t)(ax >> ka), (uint32_t)(sp->r2x >> kr));
+    int e = 2 * kx > ka + kr ? 2 * kx : ka + kr;
+    ar = rt_shr64(ar, e - ka - kr);
+    xx = rt_shr64(xx, e - 2 * kx);
+    if (ar < xx) return 0;
+    uint64_t dd = ar - xx;
+    k->disc_pos = dd > 0;
+    if (e & 1) { dd <<= 1; e--; }            /* dd < 2^62 */
+    int64_t hx = (int64_t)(num_isqrt64(dd, 0) << (e / 2));
+    k->qx = bx >= 0 ? bx + hx : bx - hx;
+    k->b = rt_shr_round(bx, NUM_FRAC);
+    k->q = rt_shr_round(k->qx, NUM_FRAC);
+#else
+    (void)sp;
+    k->b = wnum_sub(wnum_from_num(NUM_ZERO), v3_dot_wide(co, d));
+    if (c > 0 && k->b <= 0) return 0;
+    wnum disc = wnum_sub(wnum_mul(k->b, k->b), wnum_mul(aq, c));
+    if (disc < 0) return 0;
+    k->disc_pos = disc > 0;
+    wnum h = wnum_sqrt(disc);
+    k->q = k->b >= 0 ? wnum_add(k->b, h) : wnum_sub(k->b, h);
+#endif
+    return 1;
+}
+
+/* The far root q/a along D' (q != 0); fixed point divides q and a at 2F
+ * bits, shifted together into the division's 64/32 fast path. */
+static inline num rt_quad_far(const struct rt_quad *k, wnum aq)
+{
+#if NUM_MODE == NUM_MODE_FIXED
+    int lq = rt_bitlen64(rt_mag64(k->qx)), la = rt_bitlen64((uint64_t)aq);
+    int sh = la - 32 > lq - (62 - NUM_FRAC) ? la - 32 : lq - (62 - NUM_FRAC);
+    if (sh < 0) sh = 0;
+    return wnum_div(rt_shr_round(k->qx, sh), (wnum)((uint64_t)aq >> sh));
+#else
+    return wnum_div(k->q, aq);
+#endif
+}
+
 #endif

@@ -47,6 +47,7 @@ void rt_frame_constants(struct rt_state *rt)
         struct rt_obj_cache *oc = &rt->oc[i];
         oc->r2 = num_mul_wide(o->radius, o->radius);
         oc->cs = rt_csphere_make(o->center, o->radius);
+        oc->qs = rt_qsphere_make(o->radius);
         oc->rdiv = num_divisor_make(o->radius);
         if (o->shape == RT_SPHERE) {
             oc->co_cam = v3_sub(rt->cam_pos, o->center);

@@ -54,11 +54,15 @@ $(foreach t,$(BENCH_TARGETS),$(foreach m,fixed float,\
 
 # `make profile-raytracer`: instructions per function of raytracer-05
 # (fixed, M0+, 60x60, one frame) from a qemu block trace (tools/bench/profile.py);
-# `make profile-raytracer-adaptive`: the same at 120x120 with adaptive_subsample = 4.
+# `make profile-raytracer-adaptive`: the same at 120x120 with adaptive_subsample = 4;
+# `make profile-raytracer-02`: raytracer-02 at 120x120.
 $(call bench_rt_image,raytracer-prof,m0plus-qemu,fixed,-DBENCH_RT_QUICK -DBENCH_RT_SIZE=60)
 $(call bench_rt_image,raytracer-prof-adaptive,m0plus-qemu,fixed,-DBENCH_RT_QUICK -DBENCH_RT_SIZE=120 -DBENCH_RT_ADAPT=4)
-.PHONY: profile-raytracer profile-raytracer-adaptive
+$(call bench_rt_image,raytracer-prof-02,m0plus-qemu,fixed,-DBENCH_RT_QUICK -DBENCH_RT_SIZE=120 -DBENCH_RT_PROFILE_02)
+.PHONY: profile-raytracer profile-raytracer-adaptive profile-raytracer-02
 profile-raytracer: $(BUILD)/bench/m0plus-qemu/fixed/raytracer-prof.elf
 	$(Q)$(PYTHON) tools/bench/profile.py --top 30 $<
 profile-raytracer-adaptive: $(BUILD)/bench/m0plus-qemu/fixed/raytracer-prof-adaptive.elf
+	$(Q)$(PYTHON) tools/bench/profile.py --top 30 $<
+profile-raytracer-02: $(BUILD)/bench/m0plus-qemu/fixed/raytracer-prof-02.elf
 	$(Q)$(PYTHON) tools/bench/profile.py --top 30 $<

@@ -14,6 +14,10 @@ struct rt_run {
     uint32_t rays, primary_rays, shadow_rays, tests;
 };
 
+/* Set to 1: rt_render renders without the primary rays' candidate lists
+ * (everything else as the scene says), for tests that compare the two. */
+static int rt_render_no_tiles;
+
 /* Renders frame 0 of s at w x h in strips of `strip` rows into rgb888
  * (3*w*h bytes) and, if probe != NULL, the shadow bits of primary hits
  * (w*h bytes). Returns 0 on success. */
@@ -27,6 +31,7 @@ static int rt_render(const struct scene *s, int w, int h, int strip, uint8_t *rg
     int rc = -1;
     if (!work || !px) goto out;
     if (render_init(&ctx, s, (uint16_t)w, (uint16_t)h, (uint16_t)strip, work, need) != 0) goto out;
+    if (rt_render_no_tiles && s->kind == SCENE_RAYTRACE) rt_state_of(ctx.work)->tiles = 0;
     if (probe) {
         memset(probe, 0, (size_t)w * (size_t)h);
         rt_set_shadow_probe(ctx.work, probe);

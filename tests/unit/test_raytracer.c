@@ -448,6 +448,49 @@ static double urand(uint32_t *st)
     return (double)(*st >> 8) / 16777216.0;
 }
 
+/* The primary rays' candidate lists change no pixel: raytracer-02's four
+ * spheres moved to random places and sizes (0.02 .. 3, and now and then a
+ * ground-sized one), seen from random turned cameras, plain, supersampled
+ * and with adaptive subsampling blocks that straddle the tiles' rows. */
+static void test_tiles_same_image(void)
+{
+    int w = 80, h = 60;
+    size_t n = (size_t)w * h * 3;
+    uint8_t *a = malloc(n), *b = malloc(n);
+    struct scene *s = rt_book(2);
+    struct rt_options keep = s->rt;
+    uint32_t st = 12345;
+    int bad = 0, runs = 0;
+    for (int it = 0; it < 24; it++) {
+        for (uint16_t i = 0; i < s->nobjects; i++) {
+            struct rt_object *o = (struct rt_object *)&s->objects[i];   /* the test's own copy */
+            double r = urand(&st) < 0.15 ? 200.0 + 4000.0 * urand(&st) : 0.02 + 3.0 * urand(&st);
+            double z = 2.0 + 12.0 * urand(&st);
+            o->center = v3_make(num_from_double((urand(&st) - 0.5) * z), num_from_double((urand(&st) - 0.5) * z),
+                                num_from_double(r > 100.0 ? (urand(&st) < 0.5 ? -r - 1.5 : r + z) : z));
+            o->radius = num_from_double(r);
+        }
+        mat3 ry = m3_rot_y_deg(num_from_double(360.0 * urand(&st)));
+        s->camera.rotation = it % 3 == 0 ? m3_identity() : ry;
+        s->camera.position = v3_make(num_from_double(urand(&st) - 0.5), NUM_ZERO, num_from_double(urand(&st) - 0.5));
+        for (int variant = 0; variant < 3; variant++) {
+            s->rt = keep;
+            if (variant == 1) { s->rt.supersample = 2; s->rt.adaptive_ss = 1; }
+            if (variant == 2) s->rt.adaptive_subsample = 3;
+            rt_render_no_tiles = 1;
+            int ra = rt_render(s, w, h, 16, a, NULL, NULL);
+            rt_render_no_tiles = 0;
+            int rb = rt_render(s, w, h, 16, b, NULL, NULL);
+            runs++;
+            if (ra != 0 || rb != 0 || memcmp(a, b, n) != 0) bad++;
+        }
+    }
+    s->rt = keep;
+    check(bad == 0, "tiles_same_image", "%d of %d random scenes differ with the tile lists", bad, runs);
+    free(a);
+    free(b);
+}
+
 /* The coarse sphere rejection (rt_num.h) against the exact robust test on
  * rays aimed just past random spheres of radii 0.01 .. 5000: every claimed
  * miss is a miss of the exact test, and a claimed negative b is one. */
@@ -604,6 +647,7 @@ int main(int argc, char **argv)
     test_refraction();
     test_optimisations();
     test_shortcuts_same_image();
+    test_tiles_same_image();
     test_coarse_rejection();
     test_ch5_scene();
     return check_exit();

@@ -94,7 +94,11 @@ int bench_main(void)
 {
     int bad = 0;
     static struct scene s05;
+#ifdef BENCH_RT_PROFILE_02
+    s05 = scene_book_raytracer_02;               /* make profile-raytracer-02 */
+#else
     s05 = scene_book_raytracer_05;
+#endif
     struct scene *s = &s05;
 #ifdef BENCH_RT_ADAPT
     s->rt.adaptive_subsample = BENCH_RT_ADAPT;   /* the adaptive profile image */

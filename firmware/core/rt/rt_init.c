@@ -51,6 +51,10 @@ static void carve(const struct scene *s, uint16_t width, uint16_t height, struct
     }
     rt->grid = work_take(c, sizeof(struct rt_sample) * ng);
     rt->grid_have = work_take(c, ng);
+    size_t ntc = ((size_t)width + RT_TILE - 1) / RT_TILE;
+    rt->ntc = (uint16_t)ntc;
+    rt->tile_items = work_take(c, sizeof(int16_t) * ntc * nitem1);
+    rt->tile_n = work_take(c, sizeof(uint16_t) * ntc);
 }
 
 size_t rt_work_size(const struct scene *s, uint16_t width, uint16_t height)
@@ -85,6 +89,9 @@ static void init_options(struct rt_state *rt)
     for (int side = 1; side <= rt->adapt; side++)
         for (int i = 0; i <= side; i++) rt->adapt_ratio[side * (rt->adapt + 1) + i] = num_from_ratio(i, side);
     rt->corner_row[0] = rt->corner_row[1] = -1;
+    rt->tiles = rt->shortcuts && !o->bvh;
+    rt->tile_row = -1;
+    rt->prim_items = NULL;
 }
 
 /* The render size's viewport: height kept, width follows the render size
@@ -173,6 +180,7 @@ int rt_begin_frame(void *work, uint16_t frame)
     rt->last_row = -2;
     rt->pass = RENDER_PASS_FULL;
     rt->corner_row[0] = rt->corner_row[1] = -1;
+    rt->tile_row = -1;           /* the camera may have moved */
     rt_frame_constants(rt);
     return 0;
 }

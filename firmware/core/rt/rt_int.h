@@ -124,8 +124,24 @@ struct rt_state {
     int32_t corner_row[2];       /* their image rows (-1: none) */
     struct rt_sample *grid;      /* the block being refined, (B + 1)^2 samples */
     uint8_t *grid_have;          /* which of them are traced */
+    /* primary rays' candidate lists (rt_trace.c): per tile column of the
+     * current tile row, the items a primary ray through the tile can hit,
+     * in book order */
+    int16_t *tile_items;         /* ntc * nitems */
+    uint16_t *tile_n;            /* ntc */
+    uint16_t ntc;
+    uint8_t tiles;               /* lists in use (shortcuts, no hierarchy) */
+    int32_t tile_row;            /* tile row the lists hold (-1: none) */
+    const int16_t *prim_items;   /* the traced primary ray's list (NULL: every item) */
+    uint16_t prim_n;
     struct rt_counters n;
 };
+
+/* Tiles of the primary rays' candidate lists: RT_TILE x RT_TILE pixels. A
+ * tile row's lists hold for its rows, one row above and RT_MAX_ADAPT
+ * below (adaptive subsampling's blocks reach that far past a tile's edge),
+ * and for one column either side (sub-pixel samples). */
+#define RT_TILE 16
 
 /* A CSG item's index into scene.csg (items past the objects are CSGs). */
 #define CSG_ITEM(rt, item) ((item) - (int16_t)(rt)->s->nobjects)

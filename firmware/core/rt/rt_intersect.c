@@ -414,8 +414,12 @@ int rt_closest_intersection(struct rt_state *rt, struct rt_ray *ray, num t_min, 
     int found = 0;
     if (!rt->s->rt.bvh || rt->nbvh == 0) {
         const struct rt_object *objs = rt->s->objects;
-        for (uint16_t i = 0; i < rt->nitems; i++) {
-            int16_t item = rt->items[i];
+        /* a primary ray: its tile's candidates (rt_trace.c), else every item */
+        const int16_t *items = rt->items;
+        uint16_t nitems = rt->nitems;
+        if (ray->from_camera && rt->prim_items) { items = rt->prim_items; nitems = rt->prim_n; }
+        for (uint16_t i = 0; i < nitems; i++) {
+            int16_t item = items[i];
             if (item == rt->skip_item) continue;
             if (rt->shortcuts && item < (int16_t)rt->s->nobjects && objs[item].shape == RT_SPHERE) {
                 /* rt_item_hit's sphere case, without its dispatch */

@@ -408,6 +408,25 @@ static inline wnum wnum_mul4(wnum t)
 #endif
 }
 
+/* ---- primary rays' candidate lists -----------------------------------
+ *
+ * How much farther than r from a sphere's centre a line must pass for the
+ * sphere test of every ray along it to report a miss (rt_trace.c drops the
+ * sphere from a tile's list only then), for a sphere of radius r at
+ * distance colen from the camera: 2^-10 (1 + r + colen) covers the fixed
+ * test (its discriminant is right to 2^-27 of its terms, rt_quad_solve) and
+ * the direction's own rounding when it is scaled (a few ulps, about
+ * colen 2^-F); single precision's b^2 - a c adds 3 2^-24 colen^2 / 2r,
+ * covered by colen^2 2^-20 / r. */
+static inline num rt_tile_eps(num r, num colen)
+{
+    num e = num_mul(num_add(num_add(NUM_ONE, r), colen), NUM_C(1.0 / 1024));
+#if NUM_MODE != NUM_MODE_FIXED
+    e = num_add(e, num_div(num_mul(num_mul(colen, colen), NUM_C(1.0 / 1048576)), r));
+#endif
+    return e;
+}
+
 /* ---- the robust sphere test's quadratic --------------------------------
  *
  * a t'^2 - 2 b t' + c = 0 along the scaled direction D' (a = D'.D',

@@ -141,6 +141,95 @@ static vec3 pixel_to_viewport(struct rt_state *rt, int col, int row)
     return rotate_direction(rt, v3_make(rt->col_x[col], rt->row_y, rt->d));
 }
 
+/* ---- primary rays' candidate lists -------------------------------------
+ *
+ * A tile's primary rays have directions D(x, y) = R (x Vw/W, y Vh/H, d),
+ * affine in the canvas point, so every one lies within H of the centre Dc
+ * of the tile's four corners, H their largest distance from it (plus the
+ * pixels' own rounding). For unit directions |u - uc| <= 2 |D - Dc| / |Dc|,
+ * so a line from the camera along any of them passes at least
+ * |CO x Dc| / |Dc| - 2 |CO| H / |Dc| from a sphere's centre; when that is
+ * more than r + rt_tile_eps the sphere test of each of those rays reports
+ * a miss, and the sphere leaves the tile's list. So it does when the camera
+ * is outside the sphere (c = CO.CO - r^2 > 0, formed as the sphere test
+ * forms it) and CO.D >= CO.Dc - |CO| H stays positive: the whole sphere is
+ * behind every ray (the robust test's early-out, c > 0 and b <= 0). The lists keep the book's
+ * order, so ties go as without them: the image is the same bits. */
+
+/* Viewport direction of integer canvas point (x, y), as the pixels' own. */
+static vec3 canvas_dir(const struct rt_state *rt, int x, int y)
+{
+    return rotate_direction(rt, v3_make(num_div(num_mul(num_from_int(x), rt->vw), rt->wn),
+                                        num_div(num_mul(num_from_int(y), rt->vh), rt->hn), rt->d));
+}
+
+/* 1 when every line from the camera within hh of direction dc (length
+ * dclen) certainly misses sphere o. Saturation only ever lowers |CO x Dc|
+ * (a lower bound stays one); the right side is kept far from it. */
+static int tile_misses(const struct rt_state *rt, const struct rt_object *o, vec3 dc, num dclen, num hh)
+{
+    if (o->radius < NUM_C(1.0 / 64) || o->radius > NUM_MAX / 4) return 0;
+    vec3 co = v3_sub(rt->cam_pos, o->center);
+    num colen = v3_len(co);
+    if (colen > NUM_MAX / 4) return 0;
+    num eps = rt_tile_eps(o->radius, colen);
+    /* the rounding of the lengths and products below: 2^-10 and 16 ulps */
+    wnum ulp16 = wnum_from_num(16 * NUM_EPS), rel = wnum_from_num(NUM_C(1.0 / 1024));
+    wnum sweep = num_mul_wide(colen, hh);
+    sweep = wnum_add(sweep, wnum_add(wnum_mul(sweep, rel), ulp16));
+    wnum c = wnum_sub(v3_dot_wide(co, co), num_mul_wide(o->radius, o->radius));
+    if (c > 0 && v3_dot_wide(co, dc) > sweep) return 1;   /* behind */
+    wnum rhs = wnum_add(num_mul_wide(num_add(o->radius, eps), dclen), wnum_add(sweep, sweep));
+    rhs = wnum_add(rhs, wnum_add(wnum_mul(rhs, rel), ulp16));
+    return wnum_from_num(v3_len(v3_cross(co, dc))) > rhs;
+}
+
+/* The lists of tile row tr: every tile column's items (book order). */
+static void tile_lists(struct rt_state *rt, int32_t tr)
+{
+    const struct scene *s = rt->s;
+    int r0 = tr * RT_TILE - 1, r1 = tr * RT_TILE + RT_TILE + RT_MAX_ADAPT;
+    int y0 = rt->h / 2 - 1 - r0, y1 = rt->h / 2 - 1 - r1;
+    for (uint16_t tc = 0; tc < rt->ntc; tc++) {
+        int x0 = tc * RT_TILE - 1 - rt->w / 2, x1 = tc * RT_TILE + RT_TILE - rt->w / 2;
+        vec3 k[4] = { canvas_dir(rt, x0, y0), canvas_dir(rt, x1, y0), canvas_dir(rt, x0, y1), canvas_dir(rt, x1, y1) };
+        vec3 dc = v3_scale(v3_add(v3_add(k[0], k[1]), v3_add(k[2], k[3])), NUM_C(0.25));
+        num dclen = v3_len(dc), hh = NUM_ZERO;
+        for (int i = 0; i < 4; i++) hh = num_max(hh, v3_len(v3_sub(k[i], dc)));
+        /* each pixel's direction: a few roundings off the affine family */
+        hh = num_add(num_add(hh, 16 * NUM_EPS), num_mul(dclen, NUM_C(1.0 / 4096)));
+        int16_t *list = rt->tile_items + (size_t)tc * (rt->nitems ? rt->nitems : 1);
+        uint16_t n = 0;
+        for (uint16_t i = 0; i < rt->nitems; i++) {
+            int16_t item = rt->items[i];
+            if (item < (int16_t)s->nobjects && s->objects[item].shape == RT_SPHERE &&
+                tile_misses(rt, &s->objects[item], dc, dclen, hh))
+                continue;
+            list[n++] = item;
+        }
+        rt->tile_n[tc] = n;
+    }
+    rt->tile_row = tr;
+}
+
+/* The list of the primary rays through pixel (col, row) (clamped to the
+ * image), built when its tile row's lists are not at hand. */
+static void prim_list(struct rt_state *rt, int col, int row)
+{
+    /* the coarse preview's one ray a block does not repay a tile row's lists */
+    if (!rt->tiles || rt->pass == RENDER_PASS_COARSE) return;
+    if (col < 0) col = 0;
+    if (col >= rt->w) col = rt->w - 1;
+    if (row < 0) row = 0;
+    if (row >= rt->h) row = rt->h - 1;
+    int32_t tr = rt->tile_row;
+    if (tr < 0 || row < tr * RT_TILE - 1 || row > tr * RT_TILE + RT_TILE - 1 + RT_MAX_ADAPT)
+        tile_lists(rt, row / RT_TILE);
+    int tc = col / RT_TILE;
+    rt->prim_items = rt->tile_items + (size_t)tc * (rt->nitems ? rt->nitems : 1);
+    rt->prim_n = rt->tile_n[tc];
+}
+
 /* One primary ray along d (from the camera). */
 static rgb trace_primary(struct rt_state *rt, vec3 d, struct rt_prim *prim)
 {
@@ -149,15 +238,21 @@ static rgb trace_primary(struct rt_state *rt, vec3 d, struct rt_prim *prim)
     prim->shadow = 0;
     rt_ray_init(&ray, rt->cam_pos, d, -1, 1);
     rt->n.primary_rays++;
-    return trace_ray(rt, &ray, rt->s->rt.t_min_primary, NUM_MAX, rt->depth, prim);
+    rgb c = trace_ray(rt, &ray, rt->s->rt.t_min_primary, NUM_MAX, rt->depth, prim);
+    rt->prim_items = NULL;
+    return c;
 }
 
 rgb rt_trace_canvas(struct rt_state *rt, num x, num y, struct rt_prim *prim)
 {
+    /* the pixel nearest to canvas point (x, y): its tile's list covers the
+     * sample (one column and row of margin) */
+    prim_list(rt, num_floor_int(num_add(x, NUM_HALF)) + rt->w / 2, rt->h / 2 - 1 - num_floor_int(num_add(y, NUM_HALF)));
     return trace_primary(rt, canvas_to_viewport(rt, x, y), prim);
 }
 
 rgb rt_trace_pixel(struct rt_state *rt, int col, int row, struct rt_prim *prim)
 {
+    prim_list(rt, col, row);
     return trace_primary(rt, pixel_to_viewport(rt, col, row), prim);
 }

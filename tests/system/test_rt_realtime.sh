@@ -28,7 +28,7 @@ PY
   then echo "PASS $1"; else echo "FAIL $1: want psnr >= $4 dB, rays <= $5"; bad=1; fi
 }
 
-check realtime_b4_t6 4 6 56.3 47100
-check realtime_b4_t7 4 7 55.2 42600
-check realtime_b8_t6 8 6 56.0 45700
+check realtime_b4_t6 4 6 58.5 47100
+check realtime_b4_t7 4 7 56.7 42600
+check realtime_b8_t6 8 6 58.0 45700
 exit $bad

@@ -2,9 +2,11 @@
 /* test_raytracer_accuracy.c — fixed and float against the double build.
  *
  * raytracer-02 … 06 at 240x240 and 600x600: at least 99% of pixels with
- * every channel within 2 levels, PSNR of at least 45 dB, and shadow
- * decisions on primary hits (which lights are shadowed) different on no more
- * than 0.1% of the pixels both builds hit. Also reports the double build's
+ * every channel within 2 levels, PSNR of at least 45 dB (fixed point: at
+ * least its floor below, half a decibel under what the sphere test's exact
+ * quadratic measures), and shadow decisions on primary hits (which lights
+ * are shadowed) different on no more than 0.1% of the pixels both builds
+ * hit. Also reports the double build's
  * robust formulation against its book formulation.
  * Usage: test_raytracer_accuracy [sizes...] (default 240 600). */
 #include <math.h>
@@ -49,6 +51,16 @@ static struct acc compare(const uint8_t *ref, const uint8_t *img, const uint8_t 
     return a;
 }
 
+/* Fixed point's PSNR floor for raytracer-0`sc` at size w (45 dB at other sizes). */
+static double fixed_floor(int sc, int w)
+{
+    static const double f240[7] = { 0, 0, 80.0, 80.0, 65.5, 67.5, 55.5 };
+    static const double f600[7] = { 0, 0, 51.8, 51.8, 52.0, 63.0, 59.7 };
+    if (w == 240) return f240[sc];
+    if (w == 600) return f600[sc];
+    return 45.0;
+}
+
 int main(int argc, char **argv)
 {
     int sizes[4] = { 240, 600 }, nsizes = 2;
@@ -74,8 +86,10 @@ int main(int argc, char **argv)
                 snprintf(name, sizeof name, "accuracy_%s_raytracer-0%d_%dx%d", modes[m]->numeric, sc, w, h);
                 printf("# %-40s within2 %.3f%%  psnr %.2f dB  max_err %d  shadow_diff %.4f%%  saturations %u\n", name,
                        a.within2, a.psnr, a.max_err, a.shadow_diff, *modes[m]->saturations - sat0);
-                check(rc == 0 && a.within2 >= 99.0 && a.psnr >= 45.0 && a.shadow_diff <= 0.1, name,
-                      "within2 %.3f%% psnr %.2f dB shadow_diff %.4f%%", a.within2, a.psnr, a.shadow_diff);
+                double floor_db = m == 0 ? fixed_floor(sc, w) : 45.0;
+                check(rc == 0 && a.within2 >= 99.0 && a.psnr >= floor_db && a.shadow_diff <= 0.1, name,
+                      "within2 %.3f%% psnr %.2f dB (floor %.1f) shadow_diff %.4f%%", a.within2, a.psnr, floor_db,
+                      a.shadow_diff);
             }
             /* the robust formulation in double, against the book's */
             rtacc_double.render_book(sc, w, h, 2, img, pimg);

@@ -14,5 +14,23 @@ static int render_book(int n, int w, int h, int formulation, uint8_t *rgb888, ui
     return rt_render(s, w, h, 16, rgb888, probe, NULL);
 }
 
+static int render_moved(int n, int w, int h, double dx, double dy, double dz, uint8_t *rgb888, uint8_t *probe)
+{
+    if (n < 1 || n > 9) return -1;
+    char name[32];
+    snprintf(name, sizeof name, "raytracer-0%d", n);
+    struct scene *s = book_scene(name);
+    vec3 p = s->camera.position;
+    s->camera.position = v3_make(num_from_double(num_to_double(p.x) + dx), num_from_double(num_to_double(p.y) + dy),
+                                 num_from_double(num_to_double(p.z) + dz));
+    return rt_render(s, w, h, 16, rgb888, probe, NULL);
+}
+
+#if NUM_MODE == NUM_MODE_FIXED
+#define RTACC_RES (1.0 / (double)NUM_ONE_RAW)
+#else
+#define RTACC_RES (1.0 / 2097152.0)
+#endif
+
 /* RTACC_NAME (rtacc_fixed, ...) comes from the build, one per mode. */
-const struct rtacc_api RTACC_NAME = { NUM_NAME, render_book, &num_saturations };
+const struct rtacc_api RTACC_NAME = { NUM_NAME, render_book, render_moved, &num_saturations, RTACC_RES };

@@ -13,7 +13,12 @@ struct rtacc_api {
      * default, 1 book, 2 robust) into rgb888 (3*w*h) and, when probe is not
      * NULL, the primary hits' shadow bits (w*h). 0 on success. */
     int (*render_book)(int n, int w, int h, int formulation, uint8_t *rgb888, uint8_t *probe);
+    /* The same with the camera moved by (dx, dy, dz) scene units. */
+    int (*render_moved)(int n, int w, int h, double dx, double dy, double dz, uint8_t *rgb888, uint8_t *probe);
     uint32_t *saturations;
+    /* The format's resolution in scene units near the book scenes' objects:
+     * fixed 2^-NUM_FRAC; float 2^-21 (24 bits at coordinates up to 8). */
+    double resolution;
 };
 
 extern const struct rtacc_api rtacc_fixed, rtacc_float, rtacc_double;

@@ -4,22 +4,27 @@
 #include "rt_render.h"
 #include "scene_files.h"
 
-static int render_book(int n, int w, int h, int formulation, uint8_t *rgb888, uint8_t *probe)
+/* Book scene raytracer-0n (NULL: no such scene). */
+static struct scene *book_rt(int n)
 {
-    if (n < 1 || n > 9) return -1;
+    if (n < 1 || n > 9) return NULL;
     char name[32];
     snprintf(name, sizeof name, "raytracer-0%d", n);
-    struct scene *s = book_scene(name);
+    return book_scene(name);
+}
+
+static int render_book(int n, int w, int h, int formulation, uint8_t *rgb888, uint8_t *probe)
+{
+    struct scene *s = book_rt(n);
+    if (!s) return -1;
     s->rt.formulation = (uint8_t)formulation;
     return rt_render(s, w, h, 16, rgb888, probe, NULL);
 }
 
 static int render_moved(int n, int w, int h, double dx, double dy, double dz, uint8_t *rgb888, uint8_t *probe)
 {
-    if (n < 1 || n > 9) return -1;
-    char name[32];
-    snprintf(name, sizeof name, "raytracer-0%d", n);
-    struct scene *s = book_scene(name);
+    struct scene *s = book_rt(n);
+    if (!s) return -1;
     vec3 p = s->camera.position;
     s->camera.position = v3_make(num_from_double(num_to_double(p.x) + dx), num_from_double(num_to_double(p.y) + dy),
                                  num_from_double(num_to_double(p.z) + dz));

@@ -68,20 +68,19 @@ static struct decisions count_decisions(const struct rtacc_api *mode, int sc, in
     size_t n = (size_t)w * h;
     for (size_t i = 0; i < n; i++) d.off += pref[i] != pimg[i];
     if (d.off == 0) return d;
-    uint8_t *rgb = malloc(3 * n), *pm = malloc(6 * n), *ok = calloc(n, 1);
+    uint8_t *rgb = malloc(3 * n), *pm = malloc(6 * n);
     for (int k = 0; k < 6; k++) {
         double v = (k & 1) ? -mode->resolution : mode->resolution;
         rtacc_double.render_moved(sc, w, h, k / 2 == 0 ? v : 0, k / 2 == 1 ? v : 0, k / 2 == 2 ? v : 0, rgb, pm + k * n);
     }
     for (size_t i = 0; i < n; i++) {
         if (pref[i] == pimg[i]) continue;
-        for (int k = 0; k < 6; k++)
-            if (pm[k * n + i] == pimg[i]) ok[i] = 1;
-        d.below += ok[i];
+        int below = 0;
+        for (int k = 0; k < 6; k++) below |= pm[k * n + i] == pimg[i];
+        d.below += (size_t)below;
     }
     free(rgb);
     free(pm);
-    free(ok);
     return d;
 }
 

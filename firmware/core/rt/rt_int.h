@@ -138,9 +138,9 @@ struct rt_state {
 };
 
 /* Tiles of the primary rays' candidate lists: RT_TILE x RT_TILE pixels. A
- * tile row's lists hold for its rows, one row above and RT_MAX_ADAPT
- * below (adaptive subsampling's blocks reach that far past a tile's edge),
- * and for one column either side (sub-pixel samples). */
+ * tile row's lists serve its rows and RT_MAX_ADAPT below (adaptive
+ * subsampling's blocks reach that far past a tile's edge), and are proven
+ * for one row and one column more on every side (sub-pixel samples). */
 #define RT_TILE 16
 
 /* A CSG item's index into scene.csg (items past the objects are CSGs). */

@@ -70,7 +70,7 @@ void rt_ray_exact(struct rt_ray *r)
     }
     r->ds = d;
     r->as = a;
-    r->aq = rt_quad_a(d);
+    r->aq = rt_quad_a(d, a);
     r->tscale = ts;
 }
 
@@ -86,7 +86,7 @@ static num scale_t(num t, num tscale)
 struct sphere_quad {
     wnum a, c;
     num ts;
-    struct rt_quad k;     /* b, q, disc > 0 (rt_num.h) */
+    struct rt_quad k;     /* q, disc > 0 (rt_num.h) */
 };
 
 static int sphere_quad(const struct rt_state *rt, int16_t obj, struct rt_ray *ray, struct sphere_quad *k,

@@ -467,10 +467,10 @@ static inline struct rt_qsphere rt_qsphere_make(num r)
     return q;
 }
 
-/* One solved quadratic: b and q in wnum, whether disc > 0; fixed point
- * also keeps q at 2F fraction bits for the far root. */
+/* One solved quadratic: q in wnum, whether disc > 0; fixed point also
+ * keeps q at 2F fraction bits for the far root. */
 struct rt_quad {
-    wnum b, q;
+    wnum q;
     int disc_pos;
 #if NUM_MODE == NUM_MODE_FIXED
     int64_t qx;
@@ -490,14 +490,17 @@ static inline int64_t rt_shr_round(int64_t v, int k)
 }
 #endif
 
-/* a = D'.D' as the quadratic takes it (once per ray): exact at 2F
- * fraction bits in fixed point, wnum otherwise. */
-static inline wnum rt_quad_a(vec3 d)
+/* a = D'.D' as the quadratic takes it (once per ray), from D' and its
+ * wide dot product as: exact at 2F fraction bits in fixed point, as itself
+ * otherwise. */
+static inline wnum rt_quad_a(vec3 d, wnum as)
 {
 #if NUM_MODE == NUM_MODE_FIXED
+    (void)as;
     return num_smul32(d.x, d.x) + num_smul32(d.y, d.y) + num_smul32(d.z, d.z);
 #else
-    return v3_dot_wide(d, d);
+    (void)d;
+    return as;
 #endif
 }
 
@@ -531,17 +534,16 @@ static inline int rt_quad_solve(vec3 co, vec3 d, wnum aq, wnum c, const struct r
     if (e & 1) { dd <<= 1; e--; }            /* dd < 2^62 */
     int64_t hx = (int64_t)(num_isqrt64(dd, 0) << (e / 2));
     k->qx = bx >= 0 ? bx + hx : bx - hx;
-    k->b = rt_shr_round(bx, NUM_FRAC);
     k->q = rt_shr_round(k->qx, NUM_FRAC);
 #else
     (void)sp;
-    k->b = wnum_sub(wnum_from_num(NUM_ZERO), v3_dot_wide(co, d));
-    if (c > 0 && k->b <= 0) return 0;
-    wnum disc = wnum_sub(wnum_mul(k->b, k->b), wnum_mul(aq, c));
+    wnum b = wnum_sub(wnum_from_num(NUM_ZERO), v3_dot_wide(co, d));
+    if (c > 0 && b <= 0) return 0;
+    wnum disc = wnum_sub(wnum_mul(b, b), wnum_mul(aq, c));
     if (disc < 0) return 0;
     k->disc_pos = disc > 0;
     wnum h = wnum_sqrt(disc);
-    k->q = k->b >= 0 ? wnum_add(k->b, h) : wnum_sub(k->b, h);
+    k->q = b >= 0 ? wnum_add(b, h) : wnum_sub(b, h);
 #endif
     return 1;
 }

@@ -164,12 +164,13 @@ static vec3 canvas_dir(const struct rt_state *rt, int x, int y)
 }
 
 /* 1 when every line from the camera within hh of direction dc (length
- * dclen) certainly misses sphere o. Saturation only ever lowers |CO x Dc|
- * (a lower bound stays one); the right side is kept far from it. */
-static int tile_misses(const struct rt_state *rt, const struct rt_object *o, vec3 dc, num dclen, num hh)
+ * dclen) certainly misses sphere o, whose per-frame constants are oc (CO
+ * and c as the sphere test takes them). Saturation only ever lowers
+ * |CO x Dc| (a lower bound stays one); the right side is kept far from it. */
+static int tile_misses(const struct rt_object *o, const struct rt_obj_cache *oc, vec3 dc, num dclen, num hh)
 {
     if (o->radius < NUM_C(1.0 / 64) || o->radius > NUM_MAX / 4) return 0;
-    vec3 co = v3_sub(rt->cam_pos, o->center);
+    vec3 co = oc->co_cam;
     num colen = v3_len(co);
     if (colen > NUM_MAX / 4) return 0;
     num eps = rt_tile_eps(o->radius, colen);
@@ -177,18 +178,28 @@ static int tile_misses(const struct rt_state *rt, const struct rt_object *o, vec
     wnum ulp16 = wnum_from_num(16 * NUM_EPS), rel = wnum_from_num(NUM_C(1.0 / 1024));
     wnum sweep = num_mul_wide(colen, hh);
     sweep = wnum_add(sweep, wnum_add(wnum_mul(sweep, rel), ulp16));
-    wnum c = wnum_sub(v3_dot_wide(co, co), num_mul_wide(o->radius, o->radius));
-    if (c > 0 && v3_dot_wide(co, dc) > sweep) return 1;   /* behind */
+    if (oc->c_cam > 0 && v3_dot_wide(co, dc) > sweep) return 1;   /* behind */
     wnum rhs = wnum_add(num_mul_wide(num_add(o->radius, eps), dclen), wnum_add(sweep, sweep));
     rhs = wnum_add(rhs, wnum_add(wnum_mul(rhs, rel), ulp16));
     return wnum_from_num(v3_len(v3_cross(co, dc))) > rhs;
 }
 
-/* The lists of tile row tr: every tile column's items (book order). */
+/* The rows tile row tr's lists serve (RT_TILE in rt_int.h). */
+static int tile_first_row(int32_t tr) { return tr * RT_TILE; }
+static int tile_last_row(int32_t tr) { return tr * RT_TILE + RT_TILE - 1 + RT_MAX_ADAPT; }
+
+/* Tile column tc's list. */
+static int16_t *tile_list(struct rt_state *rt, int tc)
+{
+    return rt->tile_items + (size_t)tc * (rt->nitems ? rt->nitems : 1);
+}
+
+/* The lists of tile row tr: every tile column's items (book order), for
+ * the rows it serves and one more either side (sub-pixel samples). */
 static void tile_lists(struct rt_state *rt, int32_t tr)
 {
     const struct scene *s = rt->s;
-    int r0 = tr * RT_TILE - 1, r1 = tr * RT_TILE + RT_TILE + RT_MAX_ADAPT;
+    int r0 = tile_first_row(tr) - 1, r1 = tile_last_row(tr) + 1;
     int y0 = rt->h / 2 - 1 - r0, y1 = rt->h / 2 - 1 - r1;
     for (uint16_t tc = 0; tc < rt->ntc; tc++) {
         int x0 = tc * RT_TILE - 1 - rt->w / 2, x1 = tc * RT_TILE + RT_TILE - rt->w / 2;
@@ -198,12 +209,12 @@ static void tile_lists(struct rt_state *rt, int32_t tr)
         for (int i = 0; i < 4; i++) hh = num_max(hh, v3_len(v3_sub(k[i], dc)));
         /* each pixel's direction: a few roundings off the affine family */
         hh = num_add(num_add(hh, 16 * NUM_EPS), num_mul(dclen, NUM_C(1.0 / 4096)));
-        int16_t *list = rt->tile_items + (size_t)tc * (rt->nitems ? rt->nitems : 1);
+        int16_t *list = tile_list(rt, tc);
         uint16_t n = 0;
         for (uint16_t i = 0; i < rt->nitems; i++) {
             int16_t item = rt->items[i];
             if (item < (int16_t)s->nobjects && s->objects[item].shape == RT_SPHERE &&
-                tile_misses(rt, &s->objects[item], dc, dclen, hh))
+                tile_misses(&s->objects[item], &rt->oc[item], dc, dclen, hh))
                 continue;
             list[n++] = item;
         }
@@ -223,10 +234,9 @@ static void prim_list(struct rt_state *rt, int col, int row)
     if (row < 0) row = 0;
     if (row >= rt->h) row = rt->h - 1;
     int32_t tr = rt->tile_row;
-    if (tr < 0 || row < tr * RT_TILE - 1 || row > tr * RT_TILE + RT_TILE - 1 + RT_MAX_ADAPT)
-        tile_lists(rt, row / RT_TILE);
+    if (tr < 0 || row < tile_first_row(tr) || row > tile_last_row(tr)) tile_lists(rt, row / RT_TILE);
     int tc = col / RT_TILE;
-    rt->prim_items = rt->tile_items + (size_t)tc * (rt->nitems ? rt->nitems : 1);
+    rt->prim_items = tile_list(rt, tc);
     rt->prim_n = rt->tile_n[tc];
 }
 

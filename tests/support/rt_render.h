@@ -17,6 +17,9 @@ struct rt_run {
 /* Set to 1: rt_render renders without the primary rays' candidate lists
  * (everything else as the scene says), for tests that compare the two. */
 static int rt_render_no_tiles;
+/* Non-NULL: rt_render records in it each object's hit points
+ * (rt_set_hit_probe; nobjects entries, zeroed by the caller). */
+static num *rt_render_hit_probe;
 
 /* Renders frame 0 of s at w x h in strips of `strip` rows into rgb888
  * (3*w*h bytes) and, if probe != NULL, the shadow bits of primary hits
@@ -32,6 +35,7 @@ static int rt_render(const struct scene *s, int w, int h, int strip, uint8_t *rg
     if (!work || !px) goto out;
     if (render_init(&ctx, s, (uint16_t)w, (uint16_t)h, (uint16_t)strip, work, need) != 0) goto out;
     if (rt_render_no_tiles && s->kind == SCENE_RAYTRACE) rt_state_of(ctx.work)->tiles = 0;
+    if (rt_render_hit_probe && s->kind == SCENE_RAYTRACE) rt_set_hit_probe(ctx.work, rt_render_hit_probe);
     if (probe) {
         memset(probe, 0, (size_t)w * (size_t)h);
         rt_set_shadow_probe(ctx.work, probe);

@@ -15,6 +15,7 @@
 #include "book_digests.h"
 #include "rt_render.h"
 #include "scene_files.h"
+#include "scene_format.h"
 
 static int is_double(void) { return strcmp(NUM_NAME, "double") == 0; }
 
@@ -603,6 +604,102 @@ static void test_coarse_rejection(void)
 }
 
 /* Chapter 5 scene renders in every mode; its glass sphere shows the plane through it. */
+/* The format analysis's bound on where hit points lie
+ * (scene_format_hit_reach) against every hit point the render shades
+ * (rt_set_hit_probe): the repository's ray-traced scenes, and generated
+ * ones of the shape where the bound is the tangent length rather than
+ * |C| + r — a ground sphere under the camera (its horizon hits lie at the
+ * tangent length), small spheres above it or sunk into it, reflections to
+ * depth 0 … 4, shadows, a turned camera. A bound too small by a few
+ * percent fails here. */
+static void test_hit_reach(void)
+{
+    static const char *files[] = {
+        "firmware/scenes/book/raytracer-01.scene", "firmware/scenes/book/raytracer-02.scene",
+        "firmware/scenes/book/raytracer-04.scene", "firmware/scenes/book/raytracer-05.scene",
+        "firmware/scenes/book/raytracer-06.scene", "firmware/scenes/demo/mirror-spheres.scene",
+        "firmware/scenes/demo/raytracer-ch5.scene", "firmware/scenes/bench/grid64.scene",
+    };
+    enum { W = 48, NGEN = 40 };
+    static uint8_t rgb[W * W * 3];
+    int bad = 0, checked = 0, tight = 0;
+    double closest = 0;
+    uint32_t st = 12345;
+    char text[2048], what[200] = "";
+    for (int k = 0; k < (int)(sizeof files / sizeof files[0]) + NGEN; k++) {
+        struct scene *s = NULL;
+        char err[256];
+        if (k < (int)(sizeof files / sizeof files[0])) {
+            s = scene_file(files[k]);
+        } else {
+            double big = 300 + urand(&st) * 20000, h = 0.3 + 2.7 * urand(&st);
+            if (k % 2) {
+                /* the horizon just above the centre column's ray of canvas
+                 * row -j: that ray hits the ground next to its tangent point */
+                int j = 2 + (int)(urand(&st) * (W / 2 - 3));
+                double a = atan((double)j / W) * (1 - pow(10, -6 + 3 * urand(&st)));
+                h = big * (1 / cos(a) - 1);
+            }
+            int n = snprintf(text, sizeof text,
+                             "renderer = raytracer\nviewport { width = 1 height = 1 d = 1 }\n"
+                             "camera { position = (0, 0, 0) rotation { y = %d } }\n"
+                             "raytracer { recursion_depth = %d t_min = %g shadows = %s }\n"
+                             "sphere { center = (0, %.6g, 0) radius = %.6g color = (255, 255, 0) reflective = %.2f }\n"
+                             "light { type = ambient intensity = 0.2 }\n"
+                             "light { type = point intensity = 0.6 position = (2, 1, 0) }\n",
+                             k % 2 ? 0 : (int)(urand(&st) * 60) - 30, (int)(urand(&st) * 5), urand(&st) < 0.5 ? 1.0 : 0.01,
+                             urand(&st) < 0.5 ? "on" : "off", -big - h, big, urand(&st) * 0.6);
+            for (int i = 0, m = 1 + (int)(urand(&st) * 4); i < m; i++) {
+                double rad = 0.3 + 1.2 * urand(&st), sunk = urand(&st) < 0.3;
+                double y = -h + (sunk ? (urand(&st) - 0.5) * rad : rad + 0.01 + 2 * urand(&st));
+                n += snprintf(text + n, sizeof text - (size_t)n,
+                              "sphere { center = (%.4g, %.4g, %.4g) radius = %.4g color = (0, 255, 255) "
+                              "reflective = %.2f }\n",
+                              (urand(&st) - 0.5) * 6, y, 2.5 + 6 * urand(&st), rad, urand(&st) * 0.8);
+            }
+            if (scene_parse_mem("generated", text, strlen(text), &s, err, sizeof err) != 0) {
+                printf("FAIL hit_reach_scene_parses: %s\n", err);
+                bad++;
+                continue;
+            }
+        }
+        double H[64];
+        num probe[64];
+        if (s->nobjects > 64) continue;
+        scene_format_hit_reach(s, W, W, H);
+        memset(probe, 0, sizeof probe);
+        rt_render_hit_probe = probe;
+        int rc = rt_render(s, W, W, 16, rgb, NULL, NULL);
+        rt_render_hit_probe = NULL;
+        for (int i = 0; i < s->nobjects && rc == 0; i++) {
+            double got = num_to_double(probe[i]);
+            if (H[i] < 0) continue;
+            checked++;
+            /* the tangent bounds (below centre + radius) in particular */
+            const struct rt_object *o = &s->objects[i];
+            double full = sqrt(dd(o->center.x) * dd(o->center.x) + dd(o->center.y) * dd(o->center.y) +
+                               dd(o->center.z) * dd(o->center.z)) + dd(o->radius);
+            if (got > 0.5 * H[i]) tight++;
+            if (o->shape == RT_SPHERE && H[i] < 0.999 * full && got / H[i] > closest) closest = got / H[i];
+            if (got > H[i]) {
+                if (!bad) snprintf(what, sizeof what, "%s: object %d hit at |P| = %.6g > bound %.6g",
+                                   k < (int)(sizeof files / sizeof files[0]) ? files[k] : "generated", i, got, H[i]);
+                bad++;
+            }
+        }
+        if (rc != 0) bad++;
+        if (k >= (int)(sizeof files / sizeof files[0])) scene_free(s);
+    }
+    check(bad == 0 && checked > 0, "hit_reach_bounds_every_hit", "%d of %d objects beyond the bound; %s", bad, checked,
+          what);
+    /* the bound is not vacuous: many objects are hit beyond half of it */
+    check(tight * 4 >= checked && closest > 0.99, "hit_reach_bound_is_tight",
+          "%d of %d objects hit beyond half the bound, the closest to a tangent bound at %.4f of it", tight, checked, closest);
+    printf("# hit_reach: %d objects, %d hit beyond half their bound, the closest to a tangent bound at %.6f of it\n",
+           checked, tight,
+           closest);
+}
+
 static void test_ch5_scene(void)
 {
     int w = 80, h = 80;
@@ -650,5 +747,6 @@ int main(int argc, char **argv)
     test_tiles_same_image();
     test_coarse_rejection();
     test_ch5_scene();
+    test_hit_reach();
     return check_exit();
 }

@@ -5,7 +5,9 @@
 
 #include <math.h>
 #include <stdarg.h>
+#include <stdlib.h>
 #include <string.h>
+#include "raytracer.h"
 #include "scene.h"
 
 _Static_assert(SCENE_FORMAT_FITS_COLOUR == SCENE_FITS_COLOUR && SCENE_FORMAT_FITS_HIT == SCENE_FITS_HIT,
@@ -173,20 +175,256 @@ static double scan_lights_view(const struct scene *s, struct scene_format *R, do
     return colour;
 }
 
-/* Ray tracer: the objects (spheres, planes, triangles). */
-static void scan_rt_objects(const struct scene *s, struct scene_format *R, double cam)
+/* ---- where the ray tracer's hit points lie ------------------------------
+ *
+ * A hit point P = O + D t becomes a position in num (and |L| = |light - P|
+ * for the lighting), so the positions' range must hold every P that can be
+ * the closest hit of a ray. A sphere's P is not bounded only by |C| + r:
+ * seen from an origin O outside the sphere, the closest hit is the near
+ * root, the entry point, and t1 t2 = c / a puts it within the tangent
+ * length sqrt(|C - O|^2 - r^2) of O — for the book's ground (r = 5000, one
+ * unit below the camera) 100 units, where |C| + r is 10001. That holds when
+ * the near root is above the ray's t_min, i.e. when every point within
+ * t_min |D| of O along the ray lies outside the sphere; otherwise the far
+ * root may be the hit (the exit point) and only |C| + r bounds P.
+ *
+ * The rays that make hit points: primary rays from the camera (t in
+ * (t_min, ...), directions through the viewport), and, to the scene's
+ * reflection depth, rays leaving the hits of reflective or transparent
+ * objects (t in (epsilon, ...), reflected directions as long as the
+ * incoming one, refracted ones unit). Shadow rays make no position. For
+ * each object the bound H of its hit points' distance from the origin is
+ * found level by level:
+ * - from the camera: the points with t <= t_min of every primary ray lie in
+ *   a ball of radius t_min s sqrt(xm^2 + ym^2 + d^2 / 4) around the camera +
+ *   R (0, 0, d t_min / 2) (xm, ym: the viewport's half-sides plus a pixel;
+ *   s: the camera matrix's largest singular value); a sphere clear of that
+ *   ball by a margin is entered by every primary ray that hits it;
+ * - from the hits of object j (a ball Bj around its points: a sphere
+ *   itself, a triangle's centroid and farthest corner): a sphere i clear of
+ *   Bj by more than epsilon times the longest secondary direction is entered
+ *   by every such ray, within sqrt((|Ci - cj| + rj)^2 - ri^2) of O;
+ * - a reflective sphere's own reflected rays never re-enter it but by the
+ *   rounding of the reflected direction, whose inward part is a few steps
+ *   per component (at most 2^-7 (1 + 1/min(d, 1)) of its length): along a
+ *   chord of at most 2 r times that;
+ * - anything else (overlapping objects, transparency, CSG, origins on a
+ *   plane, the book formulation, a bounding-sphere hierarchy): |C| + r.
+ * A sphere is clear of a ball when the gap exceeds 2^-10 + 2^-18 (r +
+ * the centres' distance) (the stored values' rounding and the near root's).
+ * A bound is |O| + the distance found, grown by 2^-10 and 2^-10 units for
+ * the roots' rounding, and never above |C| + r. Planes' hit points are not
+ * bounded here (rays may graze them: the roots saturate, and are no hit). */
+
+/* The largest singular value of m (power iteration on m^T m, from above:
+ * the Frobenius norm caps it, and the estimate is grown by 1e-6). */
+static double mat3_norm(const mat3 *m)
+{
+    double a[3][3], v[3] = { 1, 0.7, 0.3 }, lam = 0, fro = 0;
+    for (int i = 0; i < 3; i++)
+        for (int j = 0; j < 3; j++) {
+            double x = num_to_double(m->m[i][j]);
+            a[i][j] = x;
+            fro += x * x;
+        }
+    for (int it = 0; it < 200; it++) {
+        double w[3], u[3], n = 0;
+        for (int i = 0; i < 3; i++) w[i] = a[i][0] * v[0] + a[i][1] * v[1] + a[i][2] * v[2];
+        for (int j = 0; j < 3; j++) u[j] = a[0][j] * w[0] + a[1][j] * w[1] + a[2][j] * w[2];
+        for (int j = 0; j < 3; j++) n += u[j] * u[j];
+        n = sqrt(n);
+        if (n == 0) return sqrt(fro);
+        for (int j = 0; j < 3; j++) v[j] = u[j] / n;
+        lam = n;
+    }
+    double s = sqrt(lam) * (1 + 1e-6);
+    return s < sqrt(fro) ? s : sqrt(fro);
+}
+
+/* The ball around the points of object j: centre c, radius rho (0 for a
+ * plane: unbounded). */
+static int object_ball(const struct rt_object *o, double c[3], double *rho)
+{
+    if (o->shape == RT_SPHERE) {
+        c[0] = num_to_double(o->center.x);
+        c[1] = num_to_double(o->center.y);
+        c[2] = num_to_double(o->center.z);
+        *rho = fabs(num_to_double(o->radius));
+        return 1;
+    }
+    if (o->shape != RT_TRIANGLE) return 0;
+    c[0] = (num_to_double(o->p[0].x) + num_to_double(o->p[1].x) + num_to_double(o->p[2].x)) / 3;
+    c[1] = (num_to_double(o->p[0].y) + num_to_double(o->p[1].y) + num_to_double(o->p[2].y)) / 3;
+    c[2] = (num_to_double(o->p[0].z) + num_to_double(o->p[1].z) + num_to_double(o->p[2].z)) / 3;
+    double r = 0;
+    for (int k = 0; k < 3; k++) {
+        double dx = num_to_double(o->p[k].x) - c[0], dy = num_to_double(o->p[k].y) - c[1],
+               dz = num_to_double(o->p[k].z) - c[2];
+        double d = sqrt(dx * dx + dy * dy + dz * dz);
+        if (d > r) r = d;
+    }
+    *rho = r;
+    return 1;
+}
+
+static double dist_pt(const double a[3], const double b[3])
+{
+    double x = a[0] - b[0], y = a[1] - b[1], z = a[2] - b[2];
+    return sqrt(x * x + y * y + z * z);
+}
+
+/* Sphere o's hit points from origins in the ball (c, rho) whose rays have
+ * t_min tmin and directions no longer than dlen: the distance from the
+ * origin, or -1 when the near root is not proven to be the hit. */
+static double entry_reach(const struct rt_object *o, const double c[3], double rho, double tmin, double dlen)
+{
+    double ci[3] = { num_to_double(o->center.x), num_to_double(o->center.y), num_to_double(o->center.z) };
+    double r = fabs(num_to_double(o->radius)), dc = dist_pt(ci, c);
+    /* the format's rounding of the stored centres, radii and origins
+     * (half a step of NUM_FRAC 12 each) and of the near root (29 or more
+     * significant bits, rt_quad_solve) */
+    double margin = ldexp(1, -10) + ldexp(r + dc, -18);
+    if (dc - rho - r <= tmin * dlen * (1 + ldexp(1, -10)) + margin) return -1;
+    double far = dc + rho;
+    return sqrt(far * far - r * r);
+}
+
+/* The longest direction of a ray that makes hit points: primary ones
+ * (through the viewport, a pixel beyond its sides, turned by the camera
+ * matrix), reflected ones as long as the incoming one, refracted ones unit;
+ * grown by 2^-8 for the directions' rounding. */
+static double ray_dir_max(const struct scene *s, int width, int height)
+{
+    double vh = fabs(num_to_double(s->viewport_h)), d = fabs(num_to_double(s->projection_d));
+    double vw = fmax(fabs(num_to_double(s->viewport_w)), vh * width / (height > 0 ? height : 1));
+    double xm = vw / 2 + vw / (width > 0 ? width : 1), ym = vh / 2 + vh / (height > 0 ? height : 1);
+    return fmax(1, mat3_norm(&s->camera.rotation) * sqrt(xm * xm + ym * ym + d * d)) * (1 + ldexp(1, -8));
+}
+
+/* H[i]: the bound on |P| of object i's hit points (-1: never hit; planes:
+ * -1, not bounded here). dsec: the longest secondary direction. */
+static void rt_hit_reach(const struct scene *s, int width, int height, double cam_reach, double dsec, double *H)
+{
+    const struct rt_options *opt = &s->rt;
+    int n = s->nobjects;
+    double cam[3] = { num_to_double(s->camera.position.x), num_to_double(s->camera.position.y),
+                      num_to_double(s->camera.position.z) };
+    double camlen = sqrt(cam[0] * cam[0] + cam[1] * cam[1] + cam[2] * cam[2]);
+    int fallback = opt->formulation == 1 || opt->bvh || s->ncsg > 0;
+    for (int i = 0; i < n; i++) H[i] = -1;
+    /* the camera's near ball (centre m, radius rho) */
+    double vh = fabs(num_to_double(s->viewport_h)), d = fabs(num_to_double(s->projection_d));
+    double vw = fmax(fabs(num_to_double(s->viewport_w)), vh * width / (height > 0 ? height : 1));
+    double xm = vw / 2 + vw / (width > 0 ? width : 1), ym = vh / 2 + vh / (height > 0 ? height : 1);
+    double sn = mat3_norm(&s->camera.rotation), tmin = fabs(num_to_double(opt->t_min_primary));
+    double rho = tmin * sn * sqrt(xm * xm + ym * ym + d * d / 4) + cam_reach, m[3];
+    for (int k = 0; k < 3; k++)
+        m[k] = cam[k] + num_to_double(s->camera.rotation.m[k][2]) * d * tmin / 2;
+    if (s->camera_anim.rot_y_per_frame != 0 && s->frames > 1) {
+        for (int k = 0; k < 3; k++) m[k] = cam[k];
+        rho += sn * d * tmin / 2;
+    }
+    for (int i = 0; i < n; i++) {
+        const struct rt_object *o = &s->objects[i];
+        if (o->shape == RT_PLANE) {   /* hit, not bounded here: a source of any origin */
+            H[i] = INFINITY;
+            continue;
+        }
+        double c[3], r;
+        object_ball(o, c, &r);
+        double full = sqrt(c[0] * c[0] + c[1] * c[1] + c[2] * c[2]) + r;
+        /* (a CSG operand's hits are the CSG's: fallback) */
+        double e = o->shape == RT_SPHERE && !fallback ? entry_reach(o, m, rho, 0, 1) : -1;
+        /* the entry point, from the camera's start and its moves */
+        if (e >= 0) {
+            double far = dist_pt(c, cam) + cam_reach;
+            e = camlen + cam_reach + sqrt(fmax(0, far * far - r * r));
+        }
+        H[i] = e < 0 ? full : e;
+    }
+    int depth = opt->recursion_depth > RT_MAX_DEPTH ? RT_MAX_DEPTH : opt->recursion_depth;
+    /* a reflected direction's inward part, as a fraction of its length: a
+     * few steps (2^-12 at the coarsest format) per component, over the
+     * shortest direction (|D| >= d; refracted ones are unit) */
+    double chord = fmin(1, 32 * ldexp(1, -12) * (1 + 1 / fmin(d > 0 ? d : 1e-300, 1)));
+    double *G = malloc(sizeof(double) * (size_t)(n > 0 ? n : 1));
+    if (!G) depth = 0;
+    for (int i = 0; i < n && !G; i++)   /* no room to follow the rays: |C| + r */
+        if (H[i] >= 0 && s->objects[i].shape != RT_PLANE) {
+            double c[3], r;
+            object_ball(&s->objects[i], c, &r);
+            H[i] = sqrt(c[0] * c[0] + c[1] * c[1] + c[2] * c[2]) + r;
+        }
+    for (int level = 0; level < depth; level++) {
+        for (int i = 0; i < n; i++) G[i] = H[i];
+        for (int j = 0; j < n; j++) {
+            const struct rt_object *oj = &s->objects[j];
+            if (H[j] < 0 || (num_to_double(oj->mat.reflective) <= 0 && num_to_double(oj->mat.transparency) <= 0))
+                continue;
+            double cj[3], rj;
+            int bounded = object_ball(oj, cj, &rj);
+            for (int i = 0; i < n; i++) {
+                const struct rt_object *o = &s->objects[i];
+                if (o->shape == RT_PLANE) continue;
+                double c[3], r;
+                object_ball(o, c, &r);
+                double full = sqrt(c[0] * c[0] + c[1] * c[1] + c[2] * c[2]) + r, e = -1;
+                if (!fallback && bounded && o->shape == RT_SPHERE) {
+                    if (i == j)
+                        e = num_to_double(oj->mat.transparency) > 0 ? -1 : 2 * r * chord;
+                    else
+                        e = entry_reach(o, cj, rj, fabs(num_to_double(opt->epsilon)), dsec);
+                }
+                double cand = e < 0 ? full : H[j] + e;
+                if (cand > G[i]) G[i] = cand;
+            }
+        }
+        for (int i = 0; i < n; i++) H[i] = G[i];
+    }
+    free(G);
+    for (int i = 0; i < n; i++) {
+        const struct rt_object *o = &s->objects[i];
+        if (o->shape == RT_PLANE) H[i] = -1;
+        if (H[i] < 0) continue;
+        double c[3], r;
+        object_ball(o, c, &r);
+        double full = sqrt(c[0] * c[0] + c[1] * c[1] + c[2] * c[2]) + r;
+        H[i] = fmin(full, H[i] * (1 + ldexp(1, -10)) + ldexp(1, -10));
+    }
+}
+
+void scene_format_hit_reach(const struct scene *s, int width, int height, double *H)
+{
+    rt_hit_reach(s, width, height, anim_reach(&s->camera_anim, s->frames), ray_dir_max(s, width, height), H);
+}
+
+/* Ray tracer: the objects (spheres, planes, triangles); *hmax gets the
+ * largest hit-point bound (rt_hit_reach). */
+static void scan_rt_objects(const struct scene *s, struct scene_format *R, int width, int height, double cam,
+                            double *hmax)
 {
     int book = s->rt.formulation == 1;
+    double *H = malloc(sizeof(double) * (size_t)(s->nobjects > 0 ? s->nobjects : 1));
+    if (!H) {   /* no bound found: every object's |C| + r as before */
+        *hmax = R->position.value;
+        return;
+    }
+    rt_hit_reach(s, width, height, anim_reach(&s->camera_anim, s->frames), ray_dir_max(s, width, height), H);
+    *hmax = 0;
     for (int i = 0; i < s->nobjects; i++) {
         const struct rt_object *o = &s->objects[i];
         note(&R->other, num_to_double(o->mat.specular), "object %d: specular exponent", i);
         if (o->shape == RT_SPHERE) {
             double r = num_to_double(o->radius), c = len3(o->center);
-            note(&R->position, c + r, "sphere %d: centre + radius", i);
+            note(&R->position, c, "sphere %d: centre", i);
+            note(&R->position, r, "sphere %d: radius", i);
+            if (H[i] >= 0) note(&R->position, H[i], "sphere %d: hit points (their reach)", i);
+            if (H[i] > *hmax) *hmax = H[i];
+            if (book || s->rt.bvh || s->ncsg > 0) note(&R->position, c + r, "sphere %d: centre + radius", i);
             note(&R->position, c + cam, "sphere %d: distance from the camera to the centre", i);
             for (int k = 0; k < s->nlights; k++)
-                if (s->lights[k].type == LIGHT_POINT)
-                    note(&R->position, c + r + len3(s->lights[k].v), "sphere %d: distance to light %d", i, k);
+                if (s->lights[k].type == LIGHT_POINT && H[i] >= 0)
+                    note(&R->position, H[i] + len3(s->lights[k].v), "sphere %d: distance to light %d", i, k);
             if (book) {
                 note(&R->square, r * r, "sphere %d: radius %g makes r^2", i, r);
                 note(&R->square, (c + cam) * (c + cam), "sphere %d: |CO|^2 from the camera", i);
@@ -203,8 +441,13 @@ static void scan_rt_objects(const struct scene *s, struct scene_format *R, doubl
             note(&R->position, fmax(e1, e2), "triangle %d: an edge", i);
             note(&R->other, 2 * e2, "triangle %d: direction x edge 2", i);
             note(&R->other, o0 * e1, "triangle %d: (origin - corner 0) x edge 1", i);
+            if (H[i] > *hmax) *hmax = H[i];
+            for (int k = 0; k < s->nlights; k++)
+                if (s->lights[k].type == LIGHT_POINT && H[i] >= 0)
+                    note(&R->position, H[i] + len3(s->lights[k].v), "triangle %d: distance to light %d", i, k);
         }
     }
+    free(H);
 }
 
 /* Ray tracer: the view direction D = (x vw / W, y vh / H, d) and the light
@@ -214,15 +457,18 @@ static void scan_rt_objects(const struct scene *s, struct scene_format *R, doubl
  * rays: |D| >= d; shadow rays to a directional light: its direction's
  * length; point lights: t <= 1). Read after the objects: the largest
  * position so far bounds every distance. */
-static void scan_rt_rays(const struct scene *s, struct scene_format *R)
+static void scan_rt_rays(const struct scene *s, struct scene_format *R, double hmax, double dmax)
 {
-    double vw2 = num_to_double(s->viewport_w) / 2, vh2 = num_to_double(s->viewport_h) / 2,
-           dd = fabs(num_to_double(s->projection_d));
-    double dmax = sqrt(vw2 * vw2 + vh2 * vh2 + dd * dd), dmin = dd, lmax = 0;
+    double dd = fabs(num_to_double(s->projection_d)), dmin = dd, lmax = 0;
+    int planes = 0;
+    for (int i = 0; i < s->nobjects; i++) planes |= s->objects[i].shape == RT_PLANE;
     shortest_dir(R, dd, "the view direction (|D| >= viewport d)");
     for (int k = 0; k < s->nlights; k++) {
         const struct scene_light *l = &s->lights[k];
-        if (l->type == LIGHT_POINT && R->position.value > lmax) lmax = R->position.value;
+        /* |L| = |light - P|: P within the hit points' reach (planes' are not
+         * bounded: the largest position then) */
+        double lp = len3(l->v) + (planes ? R->position.value : hmax);
+        if (l->type == LIGHT_POINT && lp > lmax) lmax = lp;
         if (l->type == LIGHT_DIRECTIONAL) {
             double ll = len3(l->v);
             if (ll > lmax) lmax = ll;
@@ -248,8 +494,9 @@ static void scan_rt(const struct scene *s, struct scene_format *R, int width, in
     /* supersampling sums n^2 colours before dividing */
     int n = s->rt.supersample > 1 ? s->rt.supersample : 1;
     if (n > 1) note(&R->colour, colour * n * n, "supersample %d: the sum of %d colours", n, n * n);
-    scan_rt_objects(s, R, cam);
-    scan_rt_rays(s, R);
+    double hmax;
+    scan_rt_objects(s, R, width, height, cam, &hmax);
+    scan_rt_rays(s, R, hmax, ray_dir_max(s, width, height));
 }
 
 /* Rasterizer: what the projection to the screen (x d / z x w / W) needs,

@@ -92,6 +92,12 @@ static inline unsigned scene_format_fits(const struct scene_format *f, int frac)
     return SCENE_FORMAT_FITS_COLOUR | (f->planes ? 0u : SCENE_FORMAT_FITS_HIT);
 }
 
+/* The bound the analysis takes on where the ray tracer's hit points lie
+ * (scene_format.c, "where the ray tracer's hit points lie"): H[k] >= |P|
+ * for every hit point P shaded on object k at WIDTH x HEIGHT, or -1 for a
+ * plane (its hits are not bounded). H has nobjects entries. */
+void scene_format_hit_reach(const struct scene *s, int width, int height, double *H);
+
 /* The ranges found, one per line ("  ranges: ..."), as scenec prints them. */
 void scene_format_print_ranges(FILE *out, const struct scene_format *f);
 

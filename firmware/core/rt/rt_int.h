@@ -116,6 +116,7 @@ struct rt_state {
     int32_t last_row;          /* row of the notes in row_c/row_item (-2: none) */
     uint8_t px_covered;        /* the last pixel() shows an object */
     uint8_t *shadow_probe;     /* optional, w*h: shadow bits of primary hits */
+    num *hit_probe;            /* optional, nobjects: largest |P| of each object's hit points */
     struct rt_sample *corner[2]; /* adaptive subsampling: two rows of samples (width) */
     uint8_t *corner_have[2];     /* which of them are traced */
     struct rt_sample *colbuf[2]; /* a block's left and right columns (B + 1) */
@@ -152,6 +153,10 @@ static inline struct rt_state *rt_state_of(void *work) { return (struct rt_state
 /* Records, for each primary hit, bit k set when light k is shadowed, 0x80 for
  * no hit; probe is w*h bytes, row-major (tests compare shadow decisions). */
 void rt_set_shadow_probe(void *work, uint8_t *probe);
+/* Raises probe[k] (nobjects entries, the caller's) to the largest |P| of
+ * the hit points P the render shades on object k (tests check the format
+ * analysis's bound on where hits lie against it). */
+void rt_set_hit_probe(void *work, num *probe);
 
 /* rt_intersect.c */
 struct rt_ray rt_make_ray(vec3 o, vec3 d, int16_t origin, uint8_t from_camera);

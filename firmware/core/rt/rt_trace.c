@@ -74,6 +74,10 @@ static rgb trace_ray(struct rt_state *rt, struct rt_ray *ray, num t_min, num t_m
     vec3 p = s->fits & SCENE_FITS_HIT
                  ? v3_add(ray->o, v3_make(num_mul_fit(ray->d.x, hit.t), num_mul_fit(ray->d.y, hit.t), num_mul_fit(ray->d.z, hit.t)))
                  : v3_add(ray->o, v3_scale(ray->d, hit.t));
+    if (rt->hit_probe) {
+        num *m = &rt->hit_probe[hit.surf];
+        *m = num_max(*m, v3_len(p));
+    }
     vec3 n = rt_hit_normal(rt, &hit, p);
     vec3 v = v3_neg(ray->d);
     rgb local;

@@ -398,6 +398,8 @@ struct bufs {
     struct window *win;
     uint16_t *strip, *fb, *ref_fb, *shown, *glass;
     uint8_t *rgb, *ref_rgb;
+    uint8_t *probe, *ref_probe;   /* --compare, ray tracer: primary decisions (w*h): shadow bits */
+    int16_t *item, *ref_item;     /* and the item hit */
 };
 
 /* --loop ends after the frame in progress on SIGINT or SIGTERM (or the
@@ -559,6 +561,9 @@ struct run_state {
     char overlay[32];          /* --fps-overlay: the text drawn */
     uint64_t total_render_us;
     struct compare_result cmp; /* --compare, the last frame */
+    long dec_off, dec_below;   /* --compare double, ray tracer: primary decisions that differ, and
+                                  how many of them double takes too with its camera moved by the
+                                  format's resolution (-1: not counted) */
 };
 
 /* What one frame measured. */
@@ -729,6 +734,14 @@ static int setup_frames(struct run_state *r)
         return fail(EXIT_INTERNAL, "out of memory for a %ux%u image", r->w, r->h);
     memset(b->fb, 0, npx * sizeof *b->fb);
     if (want_rgb) memset(b->rgb, 0, npx * 3);
+    r->dec_off = r->dec_below = -1;
+    if (o->compare && !strcmp(o->compare, "double") && r->c->info.kind == SCENE_RAYTRACE) {
+        /* 0xFF: not traced (what is left so stays out of the count) */
+        if (!(b->probe = malloc(npx)) || !(b->item = malloc(npx * sizeof *b->item)))
+            return fail(EXIT_INTERNAL, "out of memory for a %ux%u image", r->w, r->h);
+        memset(b->probe, 0xFF, npx);
+        r->c->api->decision_probe(&r->c->ctx, b->probe, b->item);
+    }
 
     scene_name(o->scene, r->name, sizeof r->name);
     r->frames = o->frames ? o->frames : 1;
@@ -881,6 +894,63 @@ static int finish_panel(struct run_state *r)
     return EXIT_OK;
 }
 
+/* --compare double on a ray-traced scene: the primary decisions (which
+ * item is hit, which lights are shadowed; pixels the render traced one by
+ * one) that differ
+ * from double's, and how many of those double itself takes when its camera
+ * moves by the renderer's resolution (fixed point: 2^-NUM_FRAC; float:
+ * 2^-21, 24 bits at coordinates up to 8) along x, y or z either way: those
+ * are decided below what the format can tell apart. Six more double renders
+ * when any differs. */
+static int count_decisions(struct run_state *r)
+{
+    struct bufs *b = r->b;
+    size_t n = r->npx;
+    long off = 0, below = 0, traced = 0;
+    for (size_t i = 0; i < n; i++) {
+        if (b->probe[i] == 0xFF || b->ref_probe[i] == 0xFF) continue;
+        traced++;
+        off += b->probe[i] != b->ref_probe[i] || b->item[i] != b->ref_item[i];
+    }
+    if (traced == 0) return EXIT_OK;   /* nothing traced pixel by pixel (adaptive subsampling) */
+    double res = r->c->api->num_frac ? ldexp(1.0, -r->c->api->num_frac)
+                                     : strcmp(r->c->api->numeric, "float") ? 0 : ldexp(1.0, -21);
+    uint8_t *ok = off && res > 0 ? calloc(n, 1) : NULL, *pm = ok ? malloc(n) : NULL;
+    int16_t *im = pm ? malloc(n * sizeof *im) : NULL;
+    uint16_t *fb = im ? malloc(n * sizeof *fb) : NULL;
+    uint8_t *rgb = fb ? malloc(n * 3) : NULL;
+    int rc = off && res > 0 && !rgb ? fail(EXIT_INTERNAL, "out of memory") : EXIT_OK;
+    for (int k = 0; k < 6 && rgb && !rc; k++) {
+        struct core m = { 0 };
+        double v = (k & 1) ? -res : res;
+        if (!(rc = core_open(&m, r->ref->api, r->o->scene))) {
+            m.api->set_fits(m.scene, 0);
+            m.api->exact_methods(m.scene);
+            m.api->move_camera(m.scene, k / 2 == 0 ? v : 0, k / 2 == 1 ? v : 0, k / 2 == 2 ? v : 0);
+            if (!(rc = core_init(&m, r->w, r->h, r->rows))) {
+                memset(pm, 0xFF, n);
+                m.api->decision_probe(&m.ctx, pm, im);
+                for (unsigned f = 0; f < r->frames && !rc; f++) rc = core_render_memory(&m, f, fb, rgb);
+                for (size_t i = 0; i < n && !rc; i++)
+                    if (b->probe[i] != 0xFF && b->ref_probe[i] != 0xFF &&
+                        (b->probe[i] != b->ref_probe[i] || b->item[i] != b->ref_item[i]) && pm[i] == b->probe[i] &&
+                        im[i] == b->item[i])
+                        ok[i] = 1;
+            }
+        }
+        core_close(&m);
+    }
+    for (size_t i = 0; ok && i < n; i++) below += ok[i];
+    free(ok);
+    free(pm);
+    free(im);
+    free(fb);
+    free(rgb);
+    r->dec_off = off;
+    r->dec_below = below;
+    return rc;
+}
+
 /* --compare: the same frames with the reference core in memory, its colours
  * against the renderer's after the last frame (r->cmp; --stats: the fields
  * that close the last frame's object). */
@@ -901,15 +971,25 @@ static int compare_ref(struct run_state *r)
     b->ref_rgb = malloc(r->npx * 3);
     if (!b->ref_fb || !b->ref_rgb) return fail(EXIT_INTERNAL, "out of memory");
     memset(b->ref_rgb, 0, r->npx * 3);
+    if (b->probe) {
+        if (!(b->ref_probe = malloc(r->npx)) || !(b->ref_item = malloc(r->npx * sizeof *b->ref_item)))
+            return fail(EXIT_INTERNAL, "out of memory");
+        memset(b->ref_probe, 0xFF, r->npx);
+        ref->api->decision_probe(&ref->ctx, b->ref_probe, b->ref_item);
+    }
     for (unsigned f = 0; f < r->frames; f++)  /* animation state may carry over */
         if ((rc = core_render_memory(ref, f, b->ref_fb, b->ref_rgb))) return rc;
     compare_rgb888(b->rgb, b->ref_rgb, r->w, r->h, &r->cmp);
+    if (b->probe && (rc = count_decisions(r))) return rc;
     if (o->stats) {
         const struct compare_result *cmp = &r->cmp;
         printf(",\"compare\":\"%s\",", o->compare);
         if (isinf(cmp->psnr)) printf("\"psnr\":null"); else printf("\"psnr\":%.2f", cmp->psnr);
-        printf(",\"ssim\":%.5f,\"max_err\":%d,\"pct_diff\":%.3f,\"pct_within2\":%.3f}\n",
+        printf(",\"ssim\":%.5f,\"max_err\":%d,\"pct_diff\":%.3f,\"pct_within2\":%.3f",
                cmp->ssim, cmp->max_err, cmp->pct_diff, cmp->pct_within2);
+        if (r->dec_off >= 0) printf(",\"decisions_off\":%ld,\"decisions_below_resolution\":%ld", r->dec_off,
+                                    r->dec_below);
+        printf("}\n");
     }
     return EXIT_OK;
 }
@@ -951,6 +1031,9 @@ static void print_summary(const struct run_state *r)
         if (isinf(cmp->psnr)) printf("  exact vs %s", o->compare);
         else printf("  PSNR %.1f dB, SSIM %.4f, max err %d, %.2f%% within 2 vs %s", cmp->psnr,
                     cmp->ssim, cmp->max_err, cmp->pct_within2, o->compare);
+        if (r->dec_off > 0)
+            printf("; %ld primary decision%s off, %ld below resolution", r->dec_off, r->dec_off == 1 ? "" : "s",
+                   r->dec_below);
     }
     putchar('\n');
 }
@@ -993,6 +1076,10 @@ int main(int argc, char **argv)
     free(b.rgb);
     free(b.ref_fb);
     free(b.ref_rgb);
+    free(b.probe);
+    free(b.ref_probe);
+    free(b.item);
+    free(b.ref_item);
     free(b.shown);
     free(b.glass);
     window_close(b.win);

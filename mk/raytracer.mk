@@ -24,12 +24,14 @@ test-raytracer: $(RT_TEST_BINS) $(BUILD)/host/tests/test_raytracer_accuracy
 
 # Accuracy test: fixed and float against double in one program. Each mode's
 # core + scene parser become one object exporting only rtacc_<mode>.
-$(foreach v,$(VARIANTS),$(foreach m,$(NUM_MODES),$(eval \
+# Fixed point also at NUM_FRAC 17, the format of raytracer-01 ... 04.
+RTACC_MODES := $(NUM_MODES) fixed17
+$(foreach v,$(VARIANTS),$(foreach m,$(RTACC_MODES),$(eval \
     $(call obj,$(v),$(m),tests/support/rt_acc_api.c): EXTRA_CFLAGS += -DRTACC_NAME=rtacc_$(m))))
-$(foreach v,$(VARIANTS),$(foreach m,$(NUM_MODES),$(call bundle,$(BUILD)/$(v)/rtacc_$(m).o,\
+$(foreach v,$(VARIANTS),$(foreach m,$(RTACC_MODES),$(call bundle,$(BUILD)/$(v)/rtacc_$(m).o,\
     $(call obj,$(v),$(m),tests/support/rt_acc_api.c $(CORE_SRCS) $(SCENE_SRCS)),rtacc_$(m))))
 $(foreach v,$(VARIANTS),$(call program,$(BUILD)/$(v)/tests/test_raytracer_accuracy,\
-    $(call obj,$(v),none,tests/unit/test_raytracer_accuracy.c) $(foreach m,$(NUM_MODES),$(BUILD)/$(v)/rtacc_$(m).o),$(v)))
+    $(call obj,$(v),none,tests/unit/test_raytracer_accuracy.c) $(foreach m,$(RTACC_MODES),$(BUILD)/$(v)/rtacc_$(m).o),$(v)))
 TEST_DEPS += $(BUILD)/host/tests/test_raytracer_accuracy
 # The big comparison runs optimised (30 renders, 15 of them 600x600).
 TESTS += $(BUILD)/host/tests/test_raytracer_accuracy

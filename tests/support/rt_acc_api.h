@@ -15,6 +15,13 @@ struct rtacc_api {
     int (*render_book)(int n, int w, int h, int formulation, uint8_t *rgb888, uint8_t *probe);
     /* The same with the camera moved by (dx, dy, dz) scene units. */
     int (*render_moved)(int n, int w, int h, double dx, double dy, double dz, uint8_t *rgb888, uint8_t *probe);
+    /* When not NULL, the renders above also write the item each pixel's
+     * primary ray hit (-1: none; w*h). */
+    int16_t **item_probe;
+    /* NUM_FRAC the format analysis chooses for raytracer-0n at w x h
+     * (tools/scene/scene_format.c; -1: refused); meaningful on the double
+     * build, whose scene holds the exact values. */
+    int (*scene_frac)(int n, int w, int h);
     uint32_t *saturations;
     /* The format's resolution in scene units near the book scenes' objects:
      * fixed 2^-NUM_FRAC; float 2^-21 (24 bits at coordinates up to 8). */
@@ -22,5 +29,7 @@ struct rtacc_api {
 };
 
 extern const struct rtacc_api rtacc_fixed, rtacc_float, rtacc_double;
+/* Fixed point at NUM_FRAC 17 (the format of raytracer-01 ... 04). */
+extern const struct rtacc_api rtacc_fixed17;
 
 #endif

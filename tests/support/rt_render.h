@@ -20,6 +20,8 @@ static int rt_render_no_tiles;
 /* Non-NULL: rt_render records in it each object's hit points
  * (rt_set_hit_probe; nobjects entries, zeroed by the caller). */
 static num *rt_render_hit_probe;
+/* Non-NULL: rt_render writes the item each primary ray hit (rt_set_item_probe). */
+static int16_t *rt_render_item_probe;
 
 /* Renders frame 0 of s at w x h in strips of `strip` rows into rgb888
  * (3*w*h bytes) and, if probe != NULL, the shadow bits of primary hits
@@ -36,6 +38,7 @@ static int rt_render(const struct scene *s, int w, int h, int strip, uint8_t *rg
     if (render_init(&ctx, s, (uint16_t)w, (uint16_t)h, (uint16_t)strip, work, need) != 0) goto out;
     if (rt_render_no_tiles && s->kind == SCENE_RAYTRACE) rt_state_of(ctx.work)->tiles = 0;
     if (rt_render_hit_probe && s->kind == SCENE_RAYTRACE) rt_set_hit_probe(ctx.work, rt_render_hit_probe);
+    if (rt_render_item_probe && s->kind == SCENE_RAYTRACE) rt_set_item_probe(ctx.work, rt_render_item_probe);
     if (probe) {
         memset(probe, 0, (size_t)w * (size_t)h);
         rt_set_shadow_probe(ctx.work, probe);

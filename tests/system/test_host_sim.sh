@@ -244,6 +244,23 @@ run --scene "$r6" --panel none --size 240x240 --stats --numeric double --compare
 b=$(sed -n 's/.*"psnr":\([0-9.a-z]*\).*/\1/p' "$tmp/o")
 [ "$rc" -eq 0 ] && [ -n "$a" ] && [ "$a" = "$b" ] && pass num_frac_compare_fixed ||
   fail num_frac_compare_fixed "psnr '$a' vs '$b'"
+# --compare double on a ray-traced scene counts the primary decisions (item
+# hit, lights shadowed) that differ from double's, and how many double takes
+# too with its camera moved by the format's resolution: raytracer-02 at
+# 240x240 has none at Q15.16 and two at Q14.17 (rays exactly tangent to the
+# red sphere), both below the resolution; a rasterized scene has no count
+dec_of() { sed -n "s/.*\"decisions_$1\":\([0-9]*\).*/\1/p" "$tmp/o"; }
+r2=firmware/scenes/book/raytracer-02.scene
+run --scene "$r2" --panel none --size 240x240 --stats --compare double --num-frac 16
+d16="$(dec_of off)/$(dec_of below_resolution)"
+run --scene "$r2" --panel none --size 240x240 --stats --compare double --num-frac 17
+d17="$(dec_of off)/$(dec_of below_resolution)"
+run --scene "$r2" --panel none --size 240x240 --summary --compare double --num-frac 17
+[ "$d16" = 0/0 ] && [ "$d17" = 2/2 ] && grep -q "2 primary decisions off, 2 below resolution" "$tmp/o" &&
+  pass compare_decisions || fail compare_decisions "Q15.16 $d16, Q14.17 $d17 (off/below): $(cat "$tmp/o")"
+run --scene "$r6" --panel none --size 240x240 --stats --compare double
+grep -q decisions_off "$tmp/o" && fail compare_decisions_raster "counted on a rasterized scene" ||
+  pass compare_decisions_raster
 expect_err num_frac_bad 2 "bad --num-frac '11' (12..20)" --scene "$scene" --num-frac 11
 expect_err num_frac_not_fixed 2 "--num-frac applies to fixed point" --scene "$scene" --numeric float --num-frac 16
 # A scene no format holds (the book's r^2 and |CO|^2 of a 5000-radius sphere

@@ -6,9 +6,11 @@
  * least its floor below, half a decibel under what the sphere test's exact
  * quadratic measures), and shadow decisions on primary hits (which lights
  * are shadowed) different on no more than 0.1% of the pixels both builds
- * hit. Counts the primary rays' decisions that differ from double's and how
- * many lie below the mode's resolution (count_decisions); fixed point may
- * not add any beyond it. Also reports the double build's
+ * hit. Counts the primary rays' decisions (item hit, lights shadowed) that
+ * differ from double's and how many lie below the mode's resolution
+ * (count_decisions); fixed point may not add any beyond it. Fixed point runs
+ * at Q15.16 and, where the format analysis picks another for the scene
+ * (raytracer-02 … 04: Q14.17), at that one too. Also reports the double build's
  * robust formulation against its book formulation.
  * Usage: test_raytracer_accuracy [sizes...] (default 240 600). */
 #include <math.h>
@@ -53,44 +55,71 @@ static struct acc compare(const uint8_t *ref, const uint8_t *img, const uint8_t 
     return a;
 }
 
-/* Decisions (hit or miss, which lights are shadowed) of the primary rays
- * that differ from double's, and how many of them double itself takes as
- * the mode does when its camera moves by the mode's resolution (±res along
- * x, y or z: six renders): those lie below the format's resolution. */
+/* Decisions (which item is hit, which lights are shadowed) of the primary
+ * rays that differ from double's, and how many of them double itself takes
+ * as the mode does when its camera moves by the mode's resolution (±res
+ * along x, y or z: six renders): those lie below the format's resolution. */
 struct decisions {
     size_t off, below;
 };
 
-static struct decisions count_decisions(const struct rtacc_api *mode, int sc, int w, int h, const uint8_t *pref,
-                                        const uint8_t *pimg)
+/* One render's primary decisions: shadow bits and items, w*h each. */
+struct prims {
+    uint8_t *shadow;
+    int16_t *item;
+};
+
+static int prim_differ(const struct prims *a, const struct prims *b, size_t i)
+{
+    return a->shadow[i] != b->shadow[i] || a->item[i] != b->item[i];
+}
+
+/* Renders raytracer-0sc with api (formulation f; camera moved by d when
+ * not NULL), its primary decisions into *p. */
+static int render_prims(const struct rtacc_api *api, int sc, int w, int h, int f, const double *d, uint8_t *rgb,
+                        struct prims *p)
+{
+    *api->item_probe = p->item;
+    int rc = d ? api->render_moved(sc, w, h, d[0], d[1], d[2], rgb, p->shadow)
+               : api->render_book(sc, w, h, f, rgb, p->shadow);
+    *api->item_probe = NULL;
+    return rc;
+}
+
+static struct decisions count_decisions(const struct rtacc_api *mode, int sc, int w, int h, const struct prims *ref,
+                                        const struct prims *img)
 {
     struct decisions d = { 0, 0 };
     size_t n = (size_t)w * h;
-    for (size_t i = 0; i < n; i++) d.off += pref[i] != pimg[i];
+    for (size_t i = 0; i < n; i++) d.off += (size_t)prim_differ(ref, img, i);
     if (d.off == 0) return d;
-    uint8_t *rgb = malloc(3 * n), *pm = malloc(6 * n);
+    uint8_t *rgb = malloc(3 * n), *ok = calloc(n, 1);
+    struct prims m = { malloc(n), malloc(n * sizeof(int16_t)) };
     for (int k = 0; k < 6; k++) {
         double v = (k & 1) ? -mode->resolution : mode->resolution;
-        rtacc_double.render_moved(sc, w, h, k / 2 == 0 ? v : 0, k / 2 == 1 ? v : 0, k / 2 == 2 ? v : 0, rgb, pm + k * n);
+        double mv[3] = { k / 2 == 0 ? v : 0, k / 2 == 1 ? v : 0, k / 2 == 2 ? v : 0 };
+        render_prims(&rtacc_double, sc, w, h, 0, mv, rgb, &m);
+        for (size_t i = 0; i < n; i++)
+            if (prim_differ(ref, img, i) && !prim_differ(&m, img, i)) ok[i] = 1;
     }
-    for (size_t i = 0; i < n; i++) {
-        if (pref[i] == pimg[i]) continue;
-        int below = 0;
-        for (int k = 0; k < 6; k++) below |= pm[k * n + i] == pimg[i];
-        d.below += (size_t)below;
-    }
+    for (size_t i = 0; i < n; i++) d.below += ok[i];
     free(rgb);
-    free(pm);
+    free(ok);
+    free(m.shadow);
+    free(m.item);
     return d;
 }
 
-/* Fixed point's PSNR floor for raytracer-0`sc` at size w (45 dB at other sizes). */
-static double fixed_floor(int sc, int w)
+/* Fixed point's PSNR floor for raytracer-0`sc` at size w, at NUM_FRAC frac
+ * (45 dB at other sizes): half a decibel under what it measures. */
+static double fixed_floor(int sc, int w, int frac)
 {
     static const double f240[7] = { 0, 0, 80.0, 80.0, 65.5, 67.5, 55.5 };
     static const double f600[7] = { 0, 0, 51.8, 51.8, 52.0, 63.0, 59.7 };
-    if (w == 240) return f240[sc];
-    if (w == 600) return f600[sc];
+    static const double q17_240[7] = { 0, 0, 52.8, 52.8, 56.2, 45, 45 };
+    static const double q17_600[7] = { 0, 0, 57.3, 57.3, 59.9, 45, 45 };
+    if (w == 240) return frac == 17 ? q17_240[sc] : f240[sc];
+    if (w == 600) return frac == 17 ? q17_600[sc] : f600[sc];
     return 45.0;
 }
 
@@ -111,28 +140,35 @@ int main(int argc, char **argv)
         nsizes = 0;
         for (int i = 1; i < argc && nsizes < 4; i++) sizes[nsizes++] = atoi(argv[i]);
     }
-    const struct rtacc_api *modes[2] = { &rtacc_fixed, &rtacc_float };
     for (int si = 0; si < nsizes; si++) {
         int w = sizes[si], h = sizes[si];
         size_t n = (size_t)w * h;
-        uint8_t *ref = malloc(3 * n), *img = malloc(3 * n), *pref = malloc(n), *pimg = malloc(n);
+        uint8_t *ref = malloc(3 * n), *img = malloc(3 * n);
+        struct prims pref = { malloc(n), malloc(n * sizeof(int16_t)) }, pimg = { malloc(n), malloc(n * sizeof(int16_t)) };
         for (int sc = 2; sc <= 6; sc++) {
-            if (rtacc_double.render_book(sc, w, h, 0, ref, pref) != 0) {
+            if (render_prims(&rtacc_double, sc, w, h, 0, NULL, ref, &pref) != 0) {
                 check(0, "render_double", "raytracer-0%d failed", sc);
                 continue;
             }
-            for (int m = 0; m < 2; m++) {
+            /* fixed point at Q15.16 and at the scene's own format, float */
+            int own = rtacc_double.scene_frac(sc, w, h);
+            const struct rtacc_api *modes[3] = { &rtacc_fixed, &rtacc_float, own == 17 ? &rtacc_fixed17 : NULL };
+            const int fracs[3] = { 16, 0, 17 };
+            for (int m = 0; m < 3; m++) {
+                if (!modes[m]) continue;
                 uint32_t sat0 = *modes[m]->saturations;
-                int rc = modes[m]->render_book(sc, w, h, 0, img, pimg);
-                struct acc a = compare(ref, img, pref, pimg, w, h);
-                struct decisions dc = count_decisions(modes[m], sc, w, h, pref, pimg);
+                int rc = render_prims(modes[m], sc, w, h, 0, NULL, img, &pimg);
+                struct acc a = compare(ref, img, pref.shadow, pimg.shadow, w, h);
+                struct decisions dc = count_decisions(modes[m], sc, w, h, &pref, &pimg);
                 char name[96];
-                snprintf(name, sizeof name, "accuracy_%s_raytracer-0%d_%dx%d", modes[m]->numeric, sc, w, h);
+                snprintf(name, sizeof name, "accuracy_%s%s_raytracer-0%d_%dx%d", modes[m]->numeric,
+                         m == 2 ? "17" : "", sc, w, h);
                 printf("# %-40s within2 %.3f%%  psnr %.2f dB  max_err %d  shadow_diff %.4f%%  saturations %u  "
-                       "decisions off %zu (%zu below resolution)\n",
-                       name, a.within2, a.psnr, a.max_err, a.shadow_diff, *modes[m]->saturations - sat0, dc.off, dc.below);
-                double floor_db = m == 0 ? fixed_floor(sc, w) : 45.0;
-                size_t beyond = dc.off - dc.below, beyond_max = m == 0 ? fixed_beyond(sc, w) : (size_t)-1;
+                       "decisions off %zu (%zu below resolution)%s\n",
+                       name, a.within2, a.psnr, a.max_err, a.shadow_diff, *modes[m]->saturations - sat0, dc.off,
+                       dc.below, fracs[m] == own ? "  [the scene's format]" : "");
+                double floor_db = m != 1 ? fixed_floor(sc, w, fracs[m]) : 45.0;
+                size_t beyond = dc.off - dc.below, beyond_max = m != 1 ? fixed_beyond(sc, w) : (size_t)-1;
                 check(beyond <= beyond_max, name, "%zu decisions off beyond the resolution (at most %zu)", beyond,
                       beyond_max);
                 check(rc == 0 && a.within2 >= 99.0 && a.psnr >= floor_db && a.shadow_diff <= 0.1, name,
@@ -140,15 +176,17 @@ int main(int argc, char **argv)
                       a.shadow_diff);
             }
             /* the robust formulation in double, against the book's */
-            rtacc_double.render_book(sc, w, h, 2, img, pimg);
-            struct acc a = compare(ref, img, pref, pimg, w, h);
+            render_prims(&rtacc_double, sc, w, h, 2, NULL, img, &pimg);
+            struct acc a = compare(ref, img, pref.shadow, pimg.shadow, w, h);
             printf("# %-40s within2 %.3f%%  psnr %.2f dB  max_err %d  shadow_diff %.4f%%\n", "robust-double", a.within2,
                    a.psnr, a.max_err, a.shadow_diff);
         }
         free(ref);
         free(img);
-        free(pref);
-        free(pimg);
+        free(pref.shadow);
+        free(pref.item);
+        free(pimg.shadow);
+        free(pimg.item);
     }
     return check_exit();
 }

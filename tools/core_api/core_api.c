@@ -3,6 +3,7 @@
 #include "core_api.h"
 #include "scene_format.h"
 #include "scene_parse.h"
+#include "rt/rt_int.h"
 
 _Static_assert(CORE_SCENE_EINPUT == SCENE_EINPUT && CORE_SCENE_EIO == SCENE_EIO && CORE_SCENE_ENOMEM == SCENE_ENOMEM,
                "core_api.h repeats enum scene_status");
@@ -91,7 +92,22 @@ static void set_fits(void *scene, unsigned fits)
     s->fits = (uint8_t)fits;
 }
 
+static void decision_probe(struct render_ctx *ctx, uint8_t *shadow, int16_t *item)
+{
+    if (ctx->scene->kind != SCENE_RAYTRACE) return;
+    rt_set_shadow_probe(ctx->work, shadow);
+    rt_set_item_probe(ctx->work, item);
+}
+
+static void move_camera(void *scene, double dx, double dy, double dz)
+{
+    struct scene *s = scene;
+    vec3 p = s->camera.position;
+    s->camera.position = v3_make(num_from_double(num_to_double(p.x) + dx), num_from_double(num_to_double(p.y) + dy),
+                                 num_from_double(num_to_double(p.z) + dz));
+}
+
 const struct core_api API = {
     NUM_NAME, load, parse_text, read_text, free_scene, info, work_size, init, render_begin_frame, render_strip,
-    &num_saturations, API_FRAC, format, exact_methods, render_set_pass, set_fits,
+    &num_saturations, API_FRAC, format, exact_methods, render_set_pass, set_fits, decision_probe, move_camera,
 };

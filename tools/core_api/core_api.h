@@ -62,6 +62,15 @@ struct core_api {
      * core's NUM_FRAC) on a loaded scene: the products the analysis proved
      * in range, which the core then takes in 32-bit arithmetic. */
     void (*set_fits)(void *scene, unsigned fits);
+    /* The ray tracer's primary decisions (nothing for a rasterized scene):
+     * once ctx is initialised, each pixel traced one by one afterwards
+     * writes to shadow[y * w + x] (w*h bytes, the caller's) the bits of the
+     * lights its primary hit found shadowed, 0x80 for no hit (0xFF where
+     * the book's subsampling interpolated it), and to item[y * w + x] the
+     * item hit (-1: none); other pixels keep what was there. NULL stops. */
+    void (*decision_probe)(struct render_ctx *ctx, uint8_t *shadow, int16_t *item);
+    /* Moves a loaded scene's camera by (dx, dy, dz) scene units (then init). */
+    void (*move_camera)(void *scene, double dx, double dy, double dz);
 };
 
 extern const struct core_api core_api_fixed, core_api_float, core_api_double;

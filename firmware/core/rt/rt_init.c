@@ -70,6 +70,11 @@ void rt_set_shadow_probe(void *work, uint8_t *probe)
     rt_state_of(work)->shadow_probe = probe;
 }
 
+void rt_set_item_probe(void *work, int16_t *probe)
+{
+    rt_state_of(work)->item_probe = probe;
+}
+
 void rt_set_hit_probe(void *work, num *probe)
 {
     rt_state_of(work)->hit_probe = probe;

@@ -116,6 +116,7 @@ struct rt_state {
     int32_t last_row;          /* row of the notes in row_c/row_item (-2: none) */
     uint8_t px_covered;        /* the last pixel() shows an object */
     uint8_t *shadow_probe;     /* optional, w*h: shadow bits of primary hits */
+    int16_t *item_probe;       /* optional, w*h: the item each traced pixel's primary ray hit (-1: none) */
     num *hit_probe;            /* optional, nobjects: largest |P| of each object's hit points */
     struct rt_sample *corner[2]; /* adaptive subsampling: two rows of samples (width) */
     uint8_t *corner_have[2];     /* which of them are traced */
@@ -153,6 +154,9 @@ static inline struct rt_state *rt_state_of(void *work) { return (struct rt_state
 /* Records, for each primary hit, bit k set when light k is shadowed, 0x80 for
  * no hit; probe is w*h bytes, row-major (tests compare shadow decisions). */
 void rt_set_shadow_probe(void *work, uint8_t *probe);
+/* The same for the item each primary ray hit (-1 for none; w*h entries;
+ * pixels not traced one by one keep what the caller put there). */
+void rt_set_item_probe(void *work, int16_t *probe);
 /* Raises probe[k] (nobjects entries, the caller's) to the largest |P| of
  * the hit points P the render shades on object k (tests check the format
  * analysis's bound on where hits lie against it). */

@@ -66,6 +66,7 @@ static rgb pixel(struct rt_state *rt, int col, int row, int have_left, int have_
     rgb c = rt_trace_pixel(rt, col, row, &pr);
     rt->px_covered = pr.item >= 0;
     if (probe) *probe = pr.item < 0 ? 0x80 : pr.shadow;
+    if (rt->item_probe) rt->item_probe[(size_t)row * rt->w + col] = pr.item;
     if (rt->ss_adaptive) {
         int n = rt->ss > 1 ? rt->ss : 2;
         int edge = 0;

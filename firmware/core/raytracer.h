@@ -66,4 +66,19 @@ void rt_set_pass(void *work, uint8_t pass);
 /* Rows [t->y0, t->y1) of the current frame. */
 int rt_render_strip(void *work, struct render_target *t, struct render_stats *st);
 
+/* ---- probes: what the render decided, for tests and accuracy reports --
+ * (after rt_init; NULL stops; the caller's memory, w*h entries row-major
+ * unless said; pixels not traced one by one, such as those of adaptive
+ * subsampling, supersampling or the book's subsampling, keep what the
+ * caller put there, but for 0xFF written into the shadow probe where the
+ * book's subsampling interpolates) */
+/* Each traced pixel's primary hit: bit k set when light k is shadowed,
+ * 0x80 for no hit. */
+void rt_set_shadow_probe(void *work, uint8_t *probe);
+/* Each traced pixel's primary hit: the item hit (-1: none). */
+void rt_set_item_probe(void *work, int16_t *probe);
+/* Raises probe[k] (nobjects entries) to the largest |P| of the hit points
+ * P the render shades on object k. */
+void rt_set_hit_probe(void *work, num *probe);
+
 #endif

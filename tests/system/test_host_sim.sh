@@ -247,17 +247,18 @@ b=$(sed -n 's/.*"psnr":\([0-9.a-z]*\).*/\1/p' "$tmp/o")
 # --compare double on a ray-traced scene counts the primary decisions (item
 # hit, lights shadowed) that differ from double's, and how many double takes
 # too with its camera moved by the format's resolution: raytracer-02 at
-# 240x240 has none at Q15.16 and two at Q14.17 (rays exactly tangent to the
-# red sphere), both below the resolution; a rasterized scene has no count
+# 240x240 has none in fixed point (exact directions), four in float, none of
+# them below 2^-21; raytracer-06's turned camera five, three below Q15.16's
+# step; a rasterized scene has no count
 dec_of() { sed -n "s/.*\"decisions_$1\":\([0-9]*\).*/\1/p" "$tmp/o"; }
 r2=firmware/scenes/book/raytracer-02.scene
-run --scene "$r2" --panel none --size 240x240 --stats --compare double --num-frac 16
-d16="$(dec_of off)/$(dec_of below_resolution)"
-run --scene "$r2" --panel none --size 240x240 --stats --compare double --num-frac 17
-d17="$(dec_of off)/$(dec_of below_resolution)"
-run --scene "$r2" --panel none --size 240x240 --summary --compare double --num-frac 17
-[ "$d16" = 0/0 ] && [ "$d17" = 2/2 ] && grep -q "2 primary decisions off, 2 below resolution" "$tmp/o" &&
-  pass compare_decisions || fail compare_decisions "Q15.16 $d16, Q14.17 $d17 (off/below): $(cat "$tmp/o")"
+run --scene "$r2" --panel none --size 240x240 --stats --compare double
+dfx="$(dec_of off)/$(dec_of below_resolution)"
+run --scene "$r2" --panel none --size 240x240 --stats --compare double --numeric float
+dfl="$(dec_of off)/$(dec_of below_resolution)"
+run --scene firmware/scenes/book/raytracer-06.scene --panel none --size 240x240 --summary --compare double
+[ "$dfx" = 0/0 ] && [ "$dfl" = 4/0 ] && grep -q "5 primary decisions off, 3 below resolution" "$tmp/o" &&
+  pass compare_decisions || fail compare_decisions "raytracer-02 fixed $dfx, float $dfl (off/below): $(cat "$tmp/o")"
 run --scene "$r6" --panel none --size 240x240 --stats --compare double
 grep -q decisions_off "$tmp/o" && fail compare_decisions_raster "counted on a rasterized scene" ||
   pass compare_decisions_raster

@@ -228,7 +228,7 @@ static void test_ground_sphere(void)
         long double c = (long double)o[0] * o[0] + (long double)o[1] * o[1] + (long double)o[2] * o[2] - 25000000.0L;
         long double disc = b * b - a * c;
         num t1, t2;
-        int hit = rt_intersect_ray_sphere(rt, 3, &ray, &t1, &t2);
+        int hit = rt_intersect_ray_sphere(rt, 3, &ray, &t1, &t2, NULL);
         if ((disc >= 0) != (hit != 0)) { misses++; continue; }
         if (!hit) continue;
         long double q = b + (b >= 0 ? sqrtl(disc) : -sqrtl(disc));
@@ -241,7 +241,7 @@ static void test_ground_sphere(void)
           misses, worst);
     /* analytic self-intersection: leaving the ground sphere upward finds nothing */
     struct rt_ray up = rt_make_ray(v3_make(NUM_ZERO, NUM_C(-1.0), NUM_ZERO), v3_make(NUM_C(0.3), NUM_C(1.0), NUM_C(-0.2)), 3, 0);
-    struct rt_hit hit = { 0, -1, -1, 0 };
+    struct rt_hit hit = { .t = 0, .item = -1, .surf = -1 };
     check(!rt_closest_intersection(rt, &up, NUM_ZERO, NUM_MAX, &hit, 0), "robust_self_no_acne_at_epsilon_zero",
           "upward ray from the ground hit item %d at t=%g", hit.item, dd(hit.t));
     free(p.work);
@@ -542,7 +542,7 @@ static void test_coarse_rejection(void)
             int claim = rt_coarse_sphere_miss(&ray.cd, &cs);
             rt->shortcuts = 0;
             num t1, t2;
-            int hit = rt_intersect_ray_sphere(rt, 0, &ray, &t1, &t2);
+            int hit = rt_intersect_ray_sphere(rt, 0, &ray, &t1, &t2, NULL);
             total++;
             if (claim) { rejected++; if (hit) wrong++; }
             /* a ray leaving the sphere's surface point nearest O: b < 0 claimed */
@@ -552,7 +552,7 @@ static void test_coarse_rejection(void)
             struct rt_ray leave = rt_make_ray(P, D, 1, 0);
             if (rt_coarse_dot_negative(&leave.cd, &cs.c)) {
                 negclaims++;
-                rt_intersect_ray_sphere(rt, 1, &leave, &t1, &t2);
+                rt_intersect_ray_sphere(rt, 1, &leave, &t1, &t2, NULL);
                 if (t1 > 0 || t2 > 0) negwrong++;
             }
         }

@@ -102,7 +102,13 @@ static struct decisions count_decisions(const struct rtacc_api *mode, int sc, in
         for (size_t i = 0; i < n; i++)
             if (prim_differ(ref, img, i) && !prim_differ(&m, img, i)) ok[i] = 1;
     }
-    for (size_t i = 0; i < n; i++) d.below += ok[i];
+    for (size_t i = 0; i < n; i++) {
+        d.below += ok[i];
+        if (prim_differ(ref, img, i) && getenv("RT_ACC_VERBOSE"))
+            printf("#   decision (%zu, %zu): double item %d shadows %#x, %s item %d shadows %#x%s\n", i % (size_t)w,
+                   i / (size_t)w, ref->item[i], ref->shadow[i], mode->numeric, img->item[i], img->shadow[i],
+                   ok[i] ? " (below resolution)" : "");
+    }
     free(rgb);
     free(ok);
     free(m.shadow);
@@ -114,22 +120,25 @@ static struct decisions count_decisions(const struct rtacc_api *mode, int sc, in
  * (45 dB at other sizes): half a decibel under what it measures. */
 static double fixed_floor(int sc, int w, int frac)
 {
-    static const double f240[7] = { 0, 0, 80.0, 80.0, 65.5, 67.5, 55.5 };
-    static const double f600[7] = { 0, 0, 51.8, 51.8, 52.0, 63.0, 59.7 };
-    static const double q17_240[7] = { 0, 0, 52.8, 52.8, 56.2, 45, 45 };
-    static const double q17_600[7] = { 0, 0, 57.3, 57.3, 59.9, 45, 45 };
+    static const double f240[7] = { 0, 0, 82.1, 81.6, 82.3, 68.8, 55.3 };
+    static const double f600[7] = { 0, 0, 81.8, 81.0, 81.1, 70.8, 59.7 };
+    static const double q17_240[7] = { 0, 0, 83.7, 83.3, 65.7, 45, 45 };
+    static const double q17_600[7] = { 0, 0, 82.5, 82.3, 67.4, 45, 45 };
     if (w == 240) return frac == 17 ? q17_240[sc] : f240[sc];
     if (w == 600) return frac == 17 ? q17_600[sc] : f600[sc];
     return 45.0;
 }
 
 /* Fixed point's decisions off beyond its resolution, at most (240x240 and
- * 600x600; what raytracer-04 .. 06's reflections still lose): a change that
- * adds one fails here. */
+ * 600x600): raytracer-04 and 05's are self-shadowing rays at the
+ * terminator whose root 2b/a lies within one step of epsilon (a light at
+ * n.l = -0.003, no visible effect), which moving the camera does not
+ * reproduce; 06's, reflections and its rotation. A change that adds one
+ * fails here. */
 static size_t fixed_beyond(int sc, int w)
 {
-    static const size_t b240[7] = { 0, 0, 0, 0, 0, 0, 2 };
-    static const size_t b600[7] = { 0, 0, 0, 0, 1, 1, 12 };
+    static const size_t b240[7] = { 0, 0, 0, 0, 1, 1, 2 };
+    static const size_t b600[7] = { 0, 0, 0, 0, 2, 2, 12 };
     return w == 240 ? b240[sc] : (w == 600 ? b600[sc] : (size_t)-1);
 }
 

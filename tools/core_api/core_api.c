@@ -3,7 +3,7 @@
 #include "core_api.h"
 #include "scene_format.h"
 #include "scene_parse.h"
-#include "rt/rt_int.h"
+#include "raytracer.h"
 
 _Static_assert(CORE_SCENE_EINPUT == SCENE_EINPUT && CORE_SCENE_EIO == SCENE_EIO && CORE_SCENE_ENOMEM == SCENE_ENOMEM,
                "core_api.h repeats enum scene_status");

@@ -121,6 +121,7 @@ static void init_viewport(struct rt_state *rt)
     for (uint16_t c = 0; c < rt->w; c++)
         rt->col_x[c] = num_div(num_mul(num_from_int(c - rt->w / 2), rt->vw), rt->wn);
     rt->row_y_row = -1;
+    rt->dx_row = -1;
     if (rt->row_y_tab)
         for (int r = 0; r < rt->h; r++)
             rt->row_y_tab[r] = num_div(num_mul(num_from_int(rt->h / 2 - 1 - r), rt->vh), rt->hn);

@@ -23,9 +23,19 @@ struct rt_ray {
     wnum as;
     wnum aq;              /* rt_quad_a(ds): as the sphere test's quadratic takes it */
     num tscale;           /* 2^-k: t = t' * tscale for a root t' along ds */
+    vec3 dx;              /* a primary ray through a pixel centre: D * dxm exactly (rt_exact_comp) */
+    wnum dxa;             /* rt_quad_a(dx) */
+    int32_t dxm;          /* 0: no exact direction */
     int16_t origin;
     uint8_t from_camera;  /* O is the camera: per-frame sphere constants apply */
     uint8_t exact;        /* a, ds, as, tscale computed */
+};
+
+/* A near root as the fraction n / d it was rounded from (an exact primary
+ * direction's, rt_quad_near_m; d = 0: none): hits whose t round equal are
+ * ordered by it (rt_frac_less), as exact arithmetic orders them. */
+struct rt_frac {
+    wnum n, d;
 };
 
 /* What rt_closest_intersection found. */
@@ -34,6 +44,7 @@ struct rt_hit {
     int16_t item;         /* drawn item: object index, or nobjects + CSG index */
     int16_t surf;         /* object whose surface was hit (a CSG operand for CSG) */
     uint8_t flip;         /* 1: the normal is the surface's, negated */
+    struct rt_frac fr;    /* t's fraction, if it has one */
 };
 
 /* One traced primary sample: colour, item hit (-1: none), shadow bits. */
@@ -54,6 +65,7 @@ struct rt_obj_cache {
     vec3 co_cam;          /* camera - centre */
     num k3_cam;           /* book: CO.CO - r*r for rays from the camera */
     wnum c_cam;           /* robust: the same, wide */
+    wnum cm_cam;          /* c_cam times the render height (rt_quad_near_num) */
     vec3 e1, e2, n;       /* triangle: p1 - p0, p2 - p0, unit normal */
     vec3 bc;              /* bounding sphere of the item (BVH) */
     num br;
@@ -112,6 +124,12 @@ struct rt_state {
     num *row_y_tab;            /* adaptive subsampling: viewport y of every row (else NULL) */
     num row_y;                 /* viewport y of row row_y_row */
     int32_t row_y_row;
+    /* exact primary directions (rt_exact_comp): row dx_row's y vh, d h and
+     * their squares' sum at 2F bits; dx_ok 0 when they do not fit */
+    int32_t dx_row;
+    num dx_y, dx_z;
+    wnum dx_yz;
+    uint8_t dx_ok;
     int16_t skip_item;         /* item rt_closest_intersection skips (already tested), -1 none */
     int32_t last_row;          /* row of the notes in row_c/row_item (-2: none) */
     uint8_t px_covered;        /* the last pixel() shows an object */
@@ -151,25 +169,18 @@ struct rt_state {
 /* The state inside the work memory (render_ctx.work). */
 static inline struct rt_state *rt_state_of(void *work) { return (struct rt_state *)work; }
 
-/* Records, for each primary hit, bit k set when light k is shadowed, 0x80 for
- * no hit; probe is w*h bytes, row-major (tests compare shadow decisions). */
-void rt_set_shadow_probe(void *work, uint8_t *probe);
-/* The same for the item each primary ray hit (-1 for none; w*h entries;
- * pixels not traced one by one keep what the caller put there). */
-void rt_set_item_probe(void *work, int16_t *probe);
-/* Raises probe[k] (nobjects entries, the caller's) to the largest |P| of
- * the hit points P the render shades on object k (tests check the format
- * analysis's bound on where hits lie against it). */
-void rt_set_hit_probe(void *work, num *probe);
+/* The probes (rt_set_shadow_probe, ...) are declared in raytracer.h. */
 
 /* rt_intersect.c */
 struct rt_ray rt_make_ray(vec3 o, vec3 d, int16_t origin, uint8_t from_camera);
 void rt_ray_init(struct rt_ray *r, vec3 o, vec3 d, int16_t origin, uint8_t from_camera);
 /* Computes the exact tests' forms of the direction (once per ray). */
 void rt_ray_exact(struct rt_ray *r);
-/* The book's IntersectRaySphere: its two roots (the book's order); 0 for a miss. */
+/* The book's IntersectRaySphere: its two roots (the book's order); 0 for a
+ * miss. *nf (may be NULL) gets t2's fraction when it is an exact primary
+ * direction's near root (else d = 0). */
 int rt_intersect_ray_sphere(const struct rt_state *rt, int16_t obj, struct rt_ray *ray,
-                            num *t1, num *t2);
+                            num *t1, num *t2, struct rt_frac *nf);
 /* The book's ClosestIntersection: closest hit with t_min < t < t_max (strict, earlier item wins ties); 0 if none.
  * any_hit: stop at the first hit found (shadow rays). */
 int rt_closest_intersection(struct rt_state *rt, struct rt_ray *ray, num t_min, num t_max,

@@ -35,6 +35,7 @@ void rt_ray_init(struct rt_ray *r, vec3 o, vec3 d, int16_t origin, uint8_t from_
     r->ds.y = d.y;
     r->ds.z = d.z;
     r->tscale = NUM_ONE;
+    r->dxm = 0;
 }
 
 struct rt_ray rt_make_ray(vec3 o, vec3 d, int16_t origin, uint8_t from_camera)
@@ -86,6 +87,8 @@ static num scale_t(num t, num tscale)
 struct sphere_quad {
     wnum a, c;
     num ts;
+    int32_t m;            /* solved along the exact direction D m (ray->dx): roots t' m */
+    wnum cm;              /* c m */
     struct rt_quad k;     /* q, disc > 0 (rt_num.h) */
 };
 
@@ -98,19 +101,71 @@ static int sphere_quad(const struct rt_state *rt, int16_t obj, struct rt_ray *ra
     /* certain misses, decided in 32-bit arithmetic (rt_num.h): the test
      * below would return 0 too (coarse_done: the caller has tried it) */
     if (rt->shortcuts && !coarse_done && rt_coarse_sphere_miss(&ray->cd, &oc->cs)) return 0;
-    rt_ray_exact(ray);
-    vec3 co = cam ? oc->co_cam : v3_sub(ray->o, o->center);
-    k->a = ray->aq;
-    k->ts = ray->tscale;
+    vec3 co;
+    if (cam) {   /* by components: a struct copy here becomes a memcpy call on ARMv6-M */
+        co.x = oc->co_cam.x;
+        co.y = oc->co_cam.y;
+        co.z = oc->co_cam.z;
+    } else {
+        co = v3_sub(ray->o, o->center);
+    }
     /* c = CO.CO - r^2 (per frame from the camera: the same value) */
     k->c = cam ? oc->c_cam : wnum_sub(v3_dot_wide(co, co), oc->r2);
-    return rt_quad_solve(co, ray->ds, k->a, k->c, &oc->qs, &k->k);
+    const vec3 *dir;
+    if (ray->dxm) {
+        /* a pixel's primary ray along its exact direction (rt_exact_comp) */
+        k->a = ray->dxa;
+        k->m = ray->dxm;
+        k->cm = cam && ray->dxm == rt->h ? oc->cm_cam : rt_quad_near_num(k->c, ray->dxm);
+        k->ts = NUM_ONE;
+        dir = &ray->dx;
+    } else {
+        rt_ray_exact(ray);
+        k->a = ray->aq;
+        k->ts = ray->tscale;
+        k->m = 0;
+        dir = &ray->ds;
+    }
+    return rt_quad_solve(co, *dir, k->a, k->c, &oc->qs, &k->k);
 }
 
 /* The quadratic's roots (q != 0), t along D: the near one c/q from
- * outside, and q/a. */
-static num quad_near(const struct sphere_quad *k) { return scale_t(wnum_div(k->c, k->k.q), k->ts); }
-static num quad_far(const struct sphere_quad *k) { return scale_t(rt_quad_far(&k->k, k->a), k->ts); }
+ * outside, and q/a. Along an exact direction D m the near root is c m / q;
+ * the far one, needed only when the near one is not the hit (the camera
+ * inside, or the near root at or before t_min: rare for primary rays), is
+ * solved along D' (where that quadratic has no root, the near one), and
+ * never below the near one. */
+static num quad_near(const struct sphere_quad *k)
+{
+    if (k->m) return rt_quad_near_m(k->cm, &k->k);
+    return scale_t(wnum_div(k->c, k->k.q), k->ts);
+}
+
+/* The near root's fraction (rt_frac): c m / q along an exact direction. */
+static void quad_near_frac(const struct sphere_quad *k, struct rt_frac *f)
+{
+    f->n = k->m ? k->cm : 0;
+    f->d = k->m ? k->k.q : 0;
+}
+
+/* Whether a near root t equal to limit comes before the hit that set it
+ * (best, whose t is limit): only when both have fractions and t's is less. */
+static int tie_first(const struct rt_frac *f, const struct rt_hit *best, num limit)
+{
+    return f->d > 0 && best && best->fr.d > 0 && best->t == limit && rt_frac_less(f->n, f->d, best->fr.n, best->fr.d);
+}
+
+static num quad_far(const struct rt_state *rt, int16_t obj, struct rt_ray *ray, const struct sphere_quad *k)
+{
+    if (!k->m) return scale_t(rt_quad_far(&k->k, k->a), k->ts);
+    num near = quad_near(k);
+    struct rt_quad k2;
+    rt_ray_exact(ray);
+    vec3 co = ray->from_camera && rt->cached ? rt->oc[obj].co_cam : v3_sub(ray->o, rt->s->objects[obj].center);
+    if (!rt_quad_solve(co, ray->ds, ray->aq, k->c, &rt->oc[obj].qs, &k2) || k2.q == 0) return near;
+    num far = scale_t(rt_quad_far(&k2, ray->aq), ray->tscale);
+    return far > near ? far : near;
+}
 
 /* O on the sphere (the ray leaves it): b, with the roots exactly 0 and 2b/a. */
 static wnum sphere_self_b(const struct rt_state *rt, int16_t obj, struct rt_ray *ray)
@@ -123,10 +178,11 @@ static wnum sphere_self_b(const struct rt_state *rt, int16_t obj, struct rt_ray 
 /* IntersectRaySphere: the two roots, t1 the far one and t2 the near one
  * (the book's order); 0 when the ray misses. */
 int rt_intersect_ray_sphere(const struct rt_state *rt, int16_t obj, struct rt_ray *ray,
-                            num *t1, num *t2)
+                            num *t1, num *t2, struct rt_frac *nf)
 {
     const struct rt_object *o = &rt->s->objects[obj];
     const struct rt_obj_cache *oc = &rt->oc[obj];
+    if (nf) nf->d = 0;
 
     if (rt->book) {
         /* The demos' operation order, literally. */
@@ -155,10 +211,11 @@ int rt_intersect_ray_sphere(const struct rt_state *rt, int16_t obj, struct rt_ra
     struct sphere_quad k;
     if (!sphere_quad(rt, obj, ray, &k, 0)) return 0;
     if (k.k.q == 0) { *t1 = *t2 = NUM_ZERO; return 1; }
-    num ra = quad_far(&k);
+    num ra = quad_far(rt, obj, ray, &k);
     num rc = quad_near(&k);
     if (ra > rc) { *t1 = ra; *t2 = rc; }
     else { *t1 = rc; *t2 = ra; }
+    if (nf && k.c > 0 && k.k.disc_pos) quad_near_frac(&k, nf);
     return 1;
 }
 
@@ -169,9 +226,10 @@ int rt_intersect_ray_sphere(const struct rt_state *rt, int16_t obj, struct rt_ra
  * c/q is the smaller (q^2 - a c >= disc - 1 ulp + 2 b h >= 0, and rounding
  * keeps the order), so the far root q/a is only needed when c/q <= t_min. */
 static int sphere_first_hit(const struct rt_state *rt, int16_t obj, struct rt_ray *ray, num t_min, num limit,
-                            num *t, int coarse_done)
+                            const struct rt_hit *best, num *t, struct rt_frac *fr, int coarse_done)
 {
     num t1, t2;
+    fr->d = 0;
     if (ray->origin == obj) {
         if (rt_coarse_dot_negative(&ray->cd, &rt->oc[obj].cs.c)) return 0;
         wnum b = sphere_self_b(rt, obj, ray);
@@ -186,11 +244,13 @@ static int sphere_first_hit(const struct rt_state *rt, int16_t obj, struct rt_ra
         t1 = t2 = NUM_ZERO;
     } else if (k.c > 0 && k.k.disc_pos) {
         t2 = quad_near(&k);
-        if (t2 >= limit) return 0;
+        quad_near_frac(&k, fr);
+        if (t2 > limit || (t2 == limit && !tie_first(fr, best, limit))) return 0;
         if (t_min < t2) { *t = t2; return 1; }
-        t1 = quad_far(&k);
+        fr->d = 0;
+        t1 = quad_far(rt, obj, ray, &k);
     } else {
-        num ra = quad_far(&k);
+        num ra = quad_far(rt, obj, ray, &k);
         num rc = quad_near(&k);
         t1 = ra > rc ? ra : rc;
         t2 = ra > rc ? rc : ra;
@@ -208,8 +268,11 @@ static int sphere_item_hit(const struct rt_state *rt, int16_t item, struct rt_ra
                            struct rt_hit *hit, int coarse_done)
 {
     num t;
-    if (!sphere_first_hit(rt, item, ray, t_min, limit, &t, coarse_done)) return 0;
+    struct rt_frac fr;
+    if (!sphere_first_hit(rt, item, ray, t_min, limit, hit, &t, &fr, coarse_done)) return 0;
     hit->t = t;
+    hit->fr.n = fr.n;   /* by fields: a struct copy is a memcpy call on ARMv6-M */
+    hit->fr.d = fr.d;
     hit->item = hit->surf = item;
     hit->flip = 0;
     return 1;
@@ -288,7 +351,7 @@ static int sphere_span(const struct rt_state *rt, int16_t obj, struct rt_ray *ra
                        struct span *sp)
 {
     num t1, t2;
-    if (!rt_intersect_ray_sphere(rt, obj, ray, &t1, &t2)) return 0;
+    if (!rt_intersect_ray_sphere(rt, obj, ray, &t1, &t2, NULL)) return 0;
     sp->t0 = t2 < t1 ? t2 : t1;
     sp->t1 = t2 < t1 ? t1 : t2;
     sp->s0 = sp->s1 = obj;
@@ -371,13 +434,21 @@ int rt_item_hit(struct rt_state *rt, int16_t item, struct rt_ray *ray, num t_min
         num t1, t2, t;
         uint8_t flip = 0;
         switch (o->shape) {
-        case RT_SPHERE:
+        case RT_SPHERE: {
             if (rt->shortcuts) return sphere_item_hit(rt, item, ray, t_min, limit, hit, 0);
-            if (!rt_intersect_ray_sphere(rt, item, ray, &t1, &t2)) return 0;
-            /* book order: t1 first, then t2, strict comparisons */
+            struct rt_frac nf;
+            if (!rt_intersect_ray_sphere(rt, item, ray, &t1, &t2, &nf)) return 0;
+            /* book order: t1 first, then t2, strict comparisons (a near
+             * root equal to the best hit's goes by their fractions) */
             if (t_min < t1 && t1 < limit) { limit = t1; got = 1; }
-            if (t_min < t2 && t2 < limit) { limit = t2; got = 1; }
+            if (t_min < t2 && (t2 < limit || (t2 == limit && tie_first(&nf, hit, limit)))) {
+                limit = t2;
+                got = 2;
+                hit->fr.n = nf.n;
+                hit->fr.d = nf.d;
+            }
             break;
+        }
         case RT_PLANE:
             if (intersect_ray_plane(rt, item, ray, &t, &flip) && t_min < t && t < limit) { limit = t; got = 1; }
             break;
@@ -387,8 +458,12 @@ int rt_item_hit(struct rt_state *rt, int16_t item, struct rt_ray *ray, num t_min
         }
         if (got) { hit->surf = item; hit->flip = flip; }
     }
-    if (got) { hit->t = limit; hit->item = item; }
-    return got;
+    if (got) {
+        hit->t = limit;
+        hit->item = item;
+        if (got != 2) hit->fr.d = 0;
+    }
+    return got != 0;
 }
 
 /* Conservative ray / bounding-sphere test (robust form, both formulations):
@@ -412,6 +487,7 @@ int rt_closest_intersection(struct rt_state *rt, struct rt_ray *ray, num t_min, 
 {
     num limit = t_max;
     int found = 0;
+    hit->fr.d = 0;   /* no best hit yet (rt_frac) */
     if (!rt->s->rt.bvh || rt->nbvh == 0) {
         const struct rt_object *objs = rt->s->objects;
         /* a primary ray: its tile's candidates (rt_trace.c), else every item */

@@ -16,6 +16,7 @@ static int in_shadow(struct rt_state *rt, struct rt_ray *ray, num t_max, uint16_
 {
     const struct rt_options *o = &rt->s->rt;
     struct rt_hit hit;
+    hit.fr.d = 0;   /* no best hit yet (rt_frac); the rest is written by a hit */
     rt->n.shadow_rays++;
     int cache = o->shadow_cache || rt->shortcuts;   /* same image either way */
     if (cache && rt->occluder[light] >= 0) {
@@ -76,6 +77,7 @@ num rt_compute_lighting(struct rt_state *rt, vec3 p, vec3 n, vec3 v, num s, num 
                 sr.origin = origin;
                 sr.from_camera = 0;
                 sr.exact = 1;
+                sr.dxm = 0;
             } else {
                 rt_ray_init(&sr, p, l, origin, 0);
             }

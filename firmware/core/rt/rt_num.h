@@ -507,7 +507,7 @@ static inline wnum rt_quad_a(vec3 d, wnum as)
 /* Solves the quadratic of CO and D' (aq = rt_quad_a(D'), c in wnum): 0 when
  * the discriminant is negative or when c > 0 and b <= 0 (both roots at or
  * behind the origin, outside the sphere). */
-static inline int rt_quad_solve(vec3 co, vec3 d, wnum aq, wnum c, const struct rt_qsphere *sp, struct rt_quad *k)
+RT_ALWAYS_INLINE int rt_quad_solve(vec3 co, vec3 d, wnum aq, wnum c, const struct rt_qsphere *sp, struct rt_quad *k)
 {
 #if NUM_MODE == NUM_MODE_FIXED
     int64_t bx = -(num_smul32(co.x, d.x) + num_smul32(co.y, d.y) + num_smul32(co.z, d.z));
@@ -546,6 +546,92 @@ static inline int rt_quad_solve(vec3 co, vec3 d, wnum aq, wnum c, const struct r
     k->q = b >= 0 ? wnum_add(b, h) : wnum_sub(b, h);
 #endif
     return 1;
+}
+
+/* ---- primary rays along their exact directions ---------------------------
+ *
+ * A pixel's primary direction is D = (x Vw / W, y Vh / H, d) with
+ * Vw = Vh W / H, i.e. (x Vh, y Vh, d H) / H for the integer canvas point
+ * (x, y): a direction the format cannot hold exactly (x / 240 is rounded)
+ * but whose multiple by H it can, when Vh and d are in the format and the
+ * products fit. The sphere test's decision and its near root depend only
+ * on the line, so fixed point solves the quadratic along Dm = D H from the
+ * exact products of its inputs (rt_quad_solve) and takes t = c H / q:
+ * hits and misses as exact arithmetic decides them (up to the
+ * discriminant's 29 significant bits), not as the rounded D would — a ray
+ * exactly tangent to a sphere, or missing it by less than the direction's
+ * rounding, no longer turns on that rounding. Range: |Dm_i| < 2^10 keeps
+ * the products of rt_quad_solve within int64 (|CO_i Dm_j| < 2^(41+F), sums
+ * of three and a = Dm.Dm below 2^(63)) and c H below 2^61 raw (H <= 1024).
+ * The floating modes keep D (rt_exact_comp says 0). */
+
+/* v k for |k| <= 1024 exactly into *out, 1 when it fits the exact
+ * directions' range (|v k| < 2^(F+10)); 0 otherwise and in floating modes. */
+static inline int rt_exact_comp(num v, int32_t k, num *out)
+{
+#if NUM_MODE == NUM_MODE_FIXED
+    /* |v| < 2^20 and |k| <= 1024: the product fits 31 bits (one MULS) */
+    int32_t lim = (int32_t)1 << (NUM_FRAC + 10 < 30 ? NUM_FRAC + 10 : 30);
+    if (k < -1024 || k > 1024 || v <= -(1 << 20) || v >= (1 << 20)) return 0;
+    int32_t p = v * k;
+    if (p <= -lim || p >= lim) return 0;
+    *out = p;
+    return 1;
+#else
+    (void)v; (void)k; (void)out;
+    return 0;
+#endif
+}
+
+/* One component's square at 2F fraction bits (a part of rt_quad_a). */
+static inline wnum rt_exact_sq(num v)
+{
+#if NUM_MODE == NUM_MODE_FIXED
+    return num_smul32(v, v);
+#else
+    return wnum_mul(wnum_from_num(v), wnum_from_num(v));
+#endif
+}
+
+/* c m, the numerator of the near root c m / q along D of a quadratic
+ * solved along D m (|c m| < 2^61 raw: m <= 1024 and |CO| in the format). */
+static inline wnum rt_quad_near_num(wnum c, int32_t m)
+{
+#if NUM_MODE == NUM_MODE_FIXED
+    return c * m;
+#else
+    return wnum_mul(c, num_from_int(m));
+#endif
+}
+
+/* The near root n / q along D (q != 0, n = rt_quad_near_num(c, m)): fixed
+ * point shifts both to the division's 64/32 fast path (q along D m is m
+ * times larger than along D). */
+static inline num rt_quad_near_m(wnum n, const struct rt_quad *k)
+{
+#if NUM_MODE == NUM_MODE_FIXED
+    /* q to 32 bits (n then stays within the fast path: n / q = t < 2^(31-F)) */
+    int sh = rt_bitlen64(rt_mag64(k->q)) - 32;
+    if (sh <= 0) return wnum_div(n, k->q);
+    return wnum_div(rt_shr_round(n, sh), rt_shr_round(k->q, sh));
+#else
+    return wnum_div(n, k->q);
+#endif
+}
+
+/* n1/d1 < n2/d2 for positive fractions (rt_frac), decided on 31
+ * significant bits of the numerators and of the denominators (each pair
+ * shifted alike): ties at that precision, about 2^-30, are not less. */
+static inline int rt_frac_less(wnum n1, wnum d1, wnum n2, wnum d2)
+{
+#if NUM_MODE == NUM_MODE_FIXED
+    uint64_t a = (uint64_t)n1, b = (uint64_t)d2, c = (uint64_t)n2, d = (uint64_t)d1;
+    int ln = rt_bitlen64(a | c), ld = rt_bitlen64(b | d);
+    int kn = ln > 31 ? ln - 31 : 0, kd = ld > 31 ? ld - 31 : 0;
+    return num_umul32((uint32_t)(a >> kn), (uint32_t)(b >> kd)) < num_umul32((uint32_t)(c >> kn), (uint32_t)(d >> kd));
+#else
+    return n1 * d2 < n2 * d1;
+#endif
 }
 
 /* The far root q/a along D' (q != 0); fixed point divides q and a at 2F

@@ -244,13 +244,30 @@ static void prim_list(struct rt_state *rt, int col, int row)
     rt->prim_n = rt->tile_n[tc];
 }
 
-/* One primary ray along d (from the camera). */
-static rgb trace_primary(struct rt_state *rt, vec3 d, struct rt_prim *prim)
+/* One primary ray along d (from the camera); through pixel (col, row)
+ * (col < 0: a sub-pixel sample) the sphere tests take its exact direction
+ * (rt_exact_comp in rt_num.h) where the camera is not turned. */
+static rgb trace_primary(struct rt_state *rt, vec3 d, int col, int row, struct rt_prim *prim)
 {
     struct rt_ray ray;
     prim->item = -1;
     prim->shadow = 0;
     rt_ray_init(&ray, rt->cam_pos, d, -1, 1);
+    if (col >= 0 && !rt->cam_rotated && !rt->book) {
+        /* (x vh, y vh, d h) for canvas point (x, y): the row's part once */
+        if (rt->dx_row != row) {
+            rt->dx_row = row;
+            rt->dx_ok = (uint8_t)(rt->h <= 1024 && rt_exact_comp(rt->vh, rt->h / 2 - 1 - row, &rt->dx_y) &&
+                                  rt_exact_comp(rt->d, rt->h, &rt->dx_z));
+            if (rt->dx_ok) rt->dx_yz = rt_exact_sq(rt->dx_y) + rt_exact_sq(rt->dx_z);
+        }
+        if (rt->dx_ok && rt_exact_comp(rt->vh, col - rt->w / 2, &ray.dx.x)) {
+            ray.dx.y = rt->dx_y;
+            ray.dx.z = rt->dx_z;
+            ray.dxa = rt->dx_yz + rt_exact_sq(ray.dx.x);
+            ray.dxm = rt->h;
+        }
+    }
     rt->n.primary_rays++;
     rgb c = trace_ray(rt, &ray, rt->s->rt.t_min_primary, NUM_MAX, rt->depth, prim);
     rt->prim_items = NULL;
@@ -262,11 +279,11 @@ rgb rt_trace_canvas(struct rt_state *rt, num x, num y, struct rt_prim *prim)
     /* the pixel nearest to canvas point (x, y): its tile's list covers the
      * sample (one column and row of margin) */
     prim_list(rt, num_floor_int(num_add(x, NUM_HALF)) + rt->w / 2, rt->h / 2 - 1 - num_floor_int(num_add(y, NUM_HALF)));
-    return trace_primary(rt, canvas_to_viewport(rt, x, y), prim);
+    return trace_primary(rt, canvas_to_viewport(rt, x, y), -1, -1, prim);
 }
 
 rgb rt_trace_pixel(struct rt_state *rt, int col, int row, struct rt_prim *prim)
 {
     prim_list(rt, col, row);
-    return trace_primary(rt, pixel_to_viewport(rt, col, row), prim);
+    return trace_primary(rt, pixel_to_viewport(rt, col, row), col, row, prim);
 }

@@ -36,6 +36,9 @@ struct scene_camera {
     vec3 position;
     mat3 rotation;        /* applied to primary directions (ray tracer) / inverse applied
                              to the world (rasterizer), as the book does */
+    int32_t rot_q29[3][3]; /* the same at 29 fraction bits, as the scene file states it (every
+                              entry below 4 in magnitude; all 0: not given): the ray tracer's
+                              exact primary directions (rt_num.h) turn by it in fixed point */
 };
 
 /* Animation: per-frame increments applied before frame f (f = 0 is the

@@ -120,8 +120,8 @@ static struct decisions count_decisions(const struct rtacc_api *mode, int sc, in
  * (45 dB at other sizes): half a decibel under what it measures. */
 static double fixed_floor(int sc, int w, int frac)
 {
-    static const double f240[7] = { 0, 0, 82.1, 81.6, 82.3, 68.8, 55.3 };
-    static const double f600[7] = { 0, 0, 81.8, 81.0, 81.1, 70.8, 59.7 };
+    static const double f240[7] = { 0, 0, 82.1, 81.6, 82.3, 68.8, 56.9 };
+    static const double f600[7] = { 0, 0, 81.8, 81.0, 81.1, 70.8, 63.6 };
     static const double q17_240[7] = { 0, 0, 83.7, 83.3, 65.7, 45, 45 };
     static const double q17_600[7] = { 0, 0, 82.5, 82.3, 67.4, 45, 45 };
     if (w == 240) return frac == 17 ? q17_240[sc] : f240[sc];
@@ -133,12 +133,11 @@ static double fixed_floor(int sc, int w, int frac)
  * 600x600): raytracer-04 and 05's are self-shadowing rays at the
  * terminator whose root 2b/a lies within one step of epsilon (a light at
  * n.l = -0.003, no visible effect), which moving the camera does not
- * reproduce; 06's, reflections and its rotation. A change that adds one
- * fails here. */
+ * reproduce; 06's, reflections. A change that adds one fails here. */
 static size_t fixed_beyond(int sc, int w)
 {
-    static const size_t b240[7] = { 0, 0, 0, 0, 1, 1, 2 };
-    static const size_t b600[7] = { 0, 0, 0, 0, 2, 2, 12 };
+    static const size_t b240[7] = { 0, 0, 0, 0, 1, 1, 1 };
+    static const size_t b600[7] = { 0, 0, 0, 0, 2, 2, 4 };
     return w == 240 ? b240[sc] : (w == 600 ? b600[sc] : (size_t)-1);
 }
 

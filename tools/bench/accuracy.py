@@ -11,7 +11,9 @@ mode against the double build of the same scene at the same size:
 options), stated in `accuracy_of`; a variant named KEY=VALUE (a rasterizer
 method, e.g. perspective_step=32 or lighting=vertex) is measured on the scene
 with that option set (in the scene's rasterizer or raytracer block; several
-options joined by commas, KEY=VALUE,KEY=VALUE, are all set). A
+options joined by commas, KEY=VALUE,KEY=VALUE, are all set). A line that
+names its image's `num_frac` (bench_raytracer's) is measured at that
+format, so the accuracy is that of the image whose cost it states. A
 variant named *_pass measures one pass of the progressive display, not an
 image: it gets no accuracy. The reference is always the double build's
 exact method (host_sim --compare). The file is rewritten atomically.
@@ -39,12 +41,14 @@ def set_option(text, opt):
     return text + "\n%s { %s = %s }\n" % (block, k, v)
 
 
-def compare_variant(host_sim, path, numeric, w, h, opt):
+def compare_variant(host_sim, path, numeric, w, h, opt, num_frac=None):
     """host_sim --compare double of the scene, with `KEY = VALUE` added to
-    its rasterizer (or raytracer) block when opt is given."""
+    its rasterizer (or raytracer) block when opt is given; fixed point at
+    num_frac when given (the format the measured image was built at), else
+    at the scene's own."""
     size = "%dx%d" % (w, h)
     if not opt:
-        return host_sim_compare(host_sim, path, numeric, size)
+        return host_sim_compare(host_sim, path, numeric, size, num_frac)
     with open(path) as f:
         text = f.read()
     for one in opt.split(","):
@@ -53,7 +57,7 @@ def compare_variant(host_sim, path, numeric, w, h, opt):
     try:
         with os.fdopen(fd, "w") as f:
             f.write(text)
-        return host_sim_compare(host_sim, tmp, numeric, size)
+        return host_sim_compare(host_sim, tmp, numeric, size, num_frac)
     finally:
         os.unlink(tmp)
 
@@ -82,10 +86,11 @@ def main():
         if variant.endswith("_pass"):
             continue
         opt = variant if re.match(r"^[a-z_]+=[a-z0-9_]+(,[a-z_]+=[a-z0-9_]+)*$", variant) else None
-        key = (path, numeric, l["width"], l["height"], opt)
+        frac = l.get("num_frac") if numeric == "fixed" else None
+        key = (path, numeric, l["width"], l["height"], opt, frac)
         if key not in cache:
             try:
-                cache[key] = compare_variant(host_sim, path, numeric, l["width"], l["height"], opt)
+                cache[key] = compare_variant(host_sim, path, numeric, l["width"], l["height"], opt, frac)
             except RuntimeError as e:
                 print("accuracy: %s: %s" % (path, e), file=sys.stderr)
                 cache[key] = None

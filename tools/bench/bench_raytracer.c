@@ -75,6 +75,11 @@ static int report(const char *what, const char *variant, uint64_t instr)
     bench_report(what, NUM_NAME, variant, instr * 1000, "frame");
     bench_puts("BENCHX checksum=");
     bench_put_u64(frame_sum);
+#if NUM_MODE == NUM_MODE_FIXED
+    /* the image's format: its accuracy is measured at it (accuracy.py) */
+    bench_puts(" num_frac=");
+    bench_put_u64(NUM_FRAC);
+#endif
     bench_puts("\n");
     return 0;
 }

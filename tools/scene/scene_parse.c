@@ -574,12 +574,13 @@ static void mat_mul3(double r[3][3], double a[3][3], double b[3][3])
 /* rotation { y = DEG }, { x = .. y = .. z = .. } (applied x, then y, then z:
  * R = Rz·Ry·Rx) or { rows = ((..), (..), (..)) }. RotY is the book's
  * MakeOYRotationMatrix: rows [c, 0, -s], [0, 1, 0], [s, 0, c]. */
-static mat3 get_rotation(struct parser *p, const struct node *n, const char *what)
+static mat3 get_rotation(struct parser *p, const struct node *n, const char *what, int32_t q29[3][3])
 {
     static const char *const keys[] = { "x", "y", "z", "rows", NULL };
     const struct node *v[4];
     double m[3][3] = { { 1, 0, 0 }, { 0, 1, 0 }, { 0, 0, 1 } };
     mat3 r;
+    if (q29) memset(q29, 0, sizeof(int32_t[3][3]));
     if (n->kind == N_NAME && !strcmp(n->text, "identity")) return m3_identity();
     fields(p, n, what, keys, v);
     if (v[3]) {
@@ -612,6 +613,12 @@ static mat3 get_rotation(struct parser *p, const struct node *n, const char *wha
     }
     for (int i = 0; i < 3; i++)
         for (int j = 0; j < 3; j++) r.m[i][j] = to_num(p, n, m[i][j], what);
+    /* the precise copy, when every entry fits Q2.29 */
+    int fits = 1;
+    for (int i = 0; i < 3; i++)
+        for (int j = 0; j < 3; j++) fits &= fabs(m[i][j]) < 3.999;
+    for (int i = 0; i < 3 && q29 && fits; i++)
+        for (int j = 0; j < 3; j++) q29[i][j] = (int32_t)lround(ldexp(m[i][j], 29));
     return r;
 }
 
@@ -655,7 +662,7 @@ static void read_camera(struct parser *p, const struct node *n, struct scene *s)
     const struct node *v[3];
     fields(p, n, "camera", keys, v);
     if (v[0]) s->camera.position = get_vec3(p, v[0], "camera position");
-    if (v[1]) s->camera.rotation = get_rotation(p, v[1], "camera rotation");
+    if (v[1]) s->camera.rotation = get_rotation(p, v[1], "camera rotation", s->camera.rot_q29);
     if (v[2]) read_anim(p, v[2], &s->camera_anim);
 }
 
@@ -1291,7 +1298,7 @@ static void read_instance(struct parser *p, struct build *b, const struct node *
             if (!(s > 0)) FAIL_N(p, t[0], "scale must be > 0, found %.17g", s);
             in->scale = to_num(p, t[0], s, "scale");
         }
-        if (t[1]) in->rotation = get_rotation(p, t[1], "instance rotation");
+        if (t[1]) in->rotation = get_rotation(p, t[1], "instance rotation", NULL);
         if (t[2]) in->position = get_vec3(p, t[2], "translation");
     }
     if (v[5]) read_anim(p, v[5], &in->anim);

@@ -388,7 +388,11 @@ static void emit_scene_struct(const struct scene *s, const char *id, unsigned fi
     emit_vec3(s->camera.position);
     emit(", .rotation = ");
     emit_mat3(&s->camera.rotation);
-    emit(" },\n    .camera_anim = ");
+    emit(",\n      .rot_q29 = { ");
+    for (int i = 0; i < 3; i++)
+        emit("{ %ld, %ld, %ld }%s", (long)s->camera.rot_q29[i][0], (long)s->camera.rot_q29[i][1],
+             (long)s->camera.rot_q29[i][2], i < 2 ? ", " : "");
+    emit(" } },\n    .camera_anim = ");
     emit_anim(&s->camera_anim);
     emit(", .frames = %d,\n", s->frames);
     emit("    .nlights = %d, .lights = %s,\n", s->nlights, s->nlights ? "lights" : "0");

@@ -187,6 +187,13 @@ int rt_begin_frame(void *work, uint16_t frame)
         rt->cam_rot = m3_mul(&ry, &s->camera.rotation);
     }
     rt->cam_rotated = !is_identity(&rt->cam_rot);
+    /* the exact primary directions turn by the precise rotation while it is
+     * the scene's own (not the animation's) */
+    rt->cam_q29 = NULL;
+    if (rt->cam_rotated && !(frame && s->camera_anim.rot_y_per_frame != 0))
+        for (int i = 0; i < 9; i++)
+            if (s->camera.rot_q29[i / 3][i % 3]) rt->cam_q29 = s->camera.rot_q29;
+    rt->dx_row = -1;
     for (uint16_t k = 0; k < s->nlights; k++) rt->occluder[k] = -1;
     rt->last_row = -2;
     rt->pass = RENDER_PASS_FULL;

@@ -130,6 +130,11 @@ struct rt_state {
     num dx_y, dx_z;
     wnum dx_yz;
     uint8_t dx_ok;
+    /* a turned camera: its rotation at 29 fraction bits (scene_camera.rot_q29;
+     * NULL: none, or the animation turned it), and row dx_row's part of the
+     * turned direction (rt_exact_turn_row) */
+    const int32_t (*cam_q29)[3];
+    int64_t dx_turn[3];
     int16_t skip_item;         /* item rt_closest_intersection skips (already tested), -1 none */
     int32_t last_row;          /* row of the notes in row_c/row_item (-2: none) */
     uint8_t px_covered;        /* the last pixel() shows an object */

@@ -173,10 +173,11 @@ static vec3 canvas_dir(const struct rt_state *rt, int x, int y)
  * |CO x Dc| (a lower bound stays one); the right side is kept far from it. */
 static int tile_misses(const struct rt_object *o, const struct rt_obj_cache *oc, vec3 dc, num dclen, num hh)
 {
-    if (o->radius < NUM_C(1.0 / 64) || o->radius > NUM_MAX / 4) return 0;
+    /* r + |CO| + 1 below NUM_MAX: rt_tile_eps's sum and r + eps hold */
+    if (o->radius < NUM_C(1.0 / 64) || o->radius >= NUM_MAX / 2) return 0;
     vec3 co = oc->co_cam;
     num colen = v3_len(co);
-    if (colen > NUM_MAX / 4) return 0;
+    if (colen >= NUM_MAX / 2 || num_add(o->radius, colen) >= num_sub(NUM_MAX, NUM_ONE)) return 0;
     num eps = rt_tile_eps(o->radius, colen);
     /* the rounding of the lengths and products below: 2^-10 and 16 ulps */
     wnum ulp16 = wnum_from_num(16 * NUM_EPS), rel = wnum_from_num(NUM_C(1.0 / 1024));
@@ -246,26 +247,35 @@ static void prim_list(struct rt_state *rt, int col, int row)
 
 /* One primary ray along d (from the camera); through pixel (col, row)
  * (col < 0: a sub-pixel sample) the sphere tests take its exact direction
- * (rt_exact_comp in rt_num.h) where the camera is not turned. */
+ * (rt_exact_comp in rt_num.h), turned by the scene's precise rotation
+ * (rt_exact_turn) where the camera is turned. */
 static rgb trace_primary(struct rt_state *rt, vec3 d, int col, int row, struct rt_prim *prim)
 {
     struct rt_ray ray;
     prim->item = -1;
     prim->shadow = 0;
     rt_ray_init(&ray, rt->cam_pos, d, -1, 1);
-    if (col >= 0 && !rt->cam_rotated && !rt->book) {
+    if (col >= 0 && !rt->book && (!rt->cam_rotated || rt->cam_q29)) {
         /* (x vh, y vh, d h) for canvas point (x, y): the row's part once */
         if (rt->dx_row != row) {
             rt->dx_row = row;
             rt->dx_ok = (uint8_t)(rt->h <= 1024 && rt_exact_comp(rt->vh, rt->h / 2 - 1 - row, &rt->dx_y) &&
                                   rt_exact_comp(rt->d, rt->h, &rt->dx_z));
-            if (rt->dx_ok) rt->dx_yz = rt_exact_sq(rt->dx_y) + rt_exact_sq(rt->dx_z);
+            if (rt->dx_ok && rt->cam_rotated) rt_exact_turn_row(rt->cam_q29, rt->dx_y, rt->dx_z, rt->dx_turn);
+            else if (rt->dx_ok) rt->dx_yz = rt_exact_sq(rt->dx_y) + rt_exact_sq(rt->dx_z);
         }
-        if (rt->dx_ok && rt_exact_comp(rt->vh, col - rt->w / 2, &ray.dx.x)) {
-            ray.dx.y = rt->dx_y;
-            ray.dx.z = rt->dx_z;
-            ray.dxa = rt->dx_yz + rt_exact_sq(ray.dx.x);
-            ray.dxm = rt->h;
+        num vx;
+        if (rt->dx_ok && rt_exact_comp(rt->vh, col - rt->w / 2, &vx)) {
+            if (!rt->cam_rotated) {
+                ray.dx.x = vx;
+                ray.dx.y = rt->dx_y;
+                ray.dx.z = rt->dx_z;
+                ray.dxa = rt->dx_yz + rt_exact_sq(vx);
+                ray.dxm = rt->h;
+            } else if (rt_exact_turn(rt->cam_q29, rt->dx_turn, vx, &ray.dx)) {
+                ray.dxa = rt_exact_sq(ray.dx.x) + rt_exact_sq(ray.dx.y) + rt_exact_sq(ray.dx.z);
+                ray.dxm = rt->h;
+            }
         }
     }
     rt->n.primary_rays++;

@@ -2,7 +2,8 @@
 # `make bench-rp2040` (part of `make bench`): the emulated Pico's frame time
 # per scene, of the single-core images ("cores":1, variant single-core) and
 # of the two-core ones ("cores":2, variant two-core, both emulated cores),
-# cycles at 133 MHz including SPI time, appended to results.jsonl: the
+# cycles at 133 MHz including SPI time, with the image's num_frac,
+# appended to results.jsonl: the
 # placeholder, frame 0 of each book scene, for each cube scene the mean of
 # its FW_CUBE_FRAMES frames (rp2040sim --average: "frames", "cycles_min",
 # "cycles_max"; frame 0 is drawn without the fps overlay, the others with it,
@@ -30,10 +31,15 @@ RP2040SIM_BENCH_RUNS := cgfs-1core:single-core:plain cgfs:two-core:plain \
 # $(call rp2040sim_field,N,RUN): field N of a run (1 image, 2 variant, 3 set)
 rp2040sim_field = $(word $(1),$(subst :, ,$(2)))
 RP2040SIM_BENCH_IMAGES := $(foreach r,$(RP2040SIM_BENCH_RUNS),$(call rp2040sim_field,1,$(r)))
+# The generated header that states a scene set's format (tools/bench/tag_frac.py
+# adds it to the rows, "num_frac", so their accuracy is the image's): "-" for
+# the placeholder, which has no scene.
+rp2040sim_frac_h = $(if $(filter plain,$(1)),-,$(FW_OUT)/scenes/fw_$(1)_num_frac.h)
 # One recipe line per run: its rows to the terminal and to results.jsonl.
 define RP2040SIM_BENCH_RUN
 	$(Q)node tools/rp2040sim/rp2040sim.js --image $(FW_OUT)/pico/$(call rp2040sim_field,1,$(1)).elf \
 		--variant $(call rp2040sim_field,2,$(1)) $(RP2040SIM_ARGS_$(call rp2040sim_field,3,$(1))) >$(RP2040SIM_TMP) && \
+		$(PYTHON) tools/bench/tag_frac.py $(RP2040SIM_TMP) $(call rp2040sim_frac_h,$(call rp2040sim_field,3,$(1))) && \
 		cat $(RP2040SIM_TMP) && cat $(RP2040SIM_TMP) >>$(BUILD)/bench/results.jsonl
 
 endef

@@ -182,7 +182,7 @@ int rt_intersect_ray_sphere(const struct rt_state *rt, int16_t obj, struct rt_ra
 {
     const struct rt_object *o = &rt->s->objects[obj];
     const struct rt_obj_cache *oc = &rt->oc[obj];
-    if (nf) nf->d = 0;
+    if (nf) nf->n = nf->d = 0;
 
     if (rt->book) {
         /* The demos' operation order, literally. */
@@ -229,7 +229,7 @@ static int sphere_first_hit(const struct rt_state *rt, int16_t obj, struct rt_ra
                             const struct rt_hit *best, num *t, struct rt_frac *fr, int coarse_done)
 {
     num t1, t2;
-    fr->d = 0;
+    fr->n = fr->d = 0;
     if (ray->origin == obj) {
         if (rt_coarse_dot_negative(&ray->cd, &rt->oc[obj].cs.c)) return 0;
         wnum b = sphere_self_b(rt, obj, ray);

@@ -26,6 +26,8 @@ struct rt_ray {
     vec3 dx;              /* a primary ray through a pixel centre: D * dxm exactly (rt_exact_comp) */
     wnum dxa;             /* rt_quad_a(dx) */
     int32_t dxm;          /* 0: no exact direction */
+    int32_t dxrow;        /* the pixel's row when dx.y, dx.z are its row's unturned (the row
+                             parts of rt_obj_cache apply); -1 otherwise */
     int16_t origin;
     uint8_t from_camera;  /* O is the camera: per-frame sphere constants apply */
     uint8_t exact;        /* a, ds, as, tscale computed */
@@ -73,6 +75,12 @@ struct rt_obj_cache {
     struct rt_csphere cs; /* the sphere for the coarse tests (rt_num.h) */
     struct rt_qsphere qs; /* the sphere for the robust test's quadratic (rt_num.h) */
     struct num_divisor rdiv; /* radius, for the normals (P - C) / r */
+    /* exact primary directions (x vh, y vh, d h) from the camera: CO x D
+     * and -CO.D at 2F fraction bits are linear in x, so a row's part is
+     * kept (row px_row; -1: none): -CO.D = px_b + -co.x (x vh), (CO x D).x
+     * = px_x0, .y = co.z (x vh) - px_cxd, .z = px_x2 - co.y (x vh) */
+    int32_t px_row;
+    int64_t px_b, px_x0, px_x2, px_cxd;
 };
 
 /* Bounding-sphere hierarchy node: a leaf holds items [first, first+count). */

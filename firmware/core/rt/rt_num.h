@@ -507,15 +507,14 @@ static inline wnum rt_quad_a(vec3 d, wnum as)
 /* Solves the quadratic of CO and D' (aq = rt_quad_a(D'), c in wnum): 0 when
  * the discriminant is negative or when c > 0 and b <= 0 (both roots at or
  * behind the origin, outside the sphere). */
-RT_ALWAYS_INLINE int rt_quad_solve(vec3 co, vec3 d, wnum aq, wnum c, const struct rt_qsphere *sp, struct rt_quad *k)
-{
 #if NUM_MODE == NUM_MODE_FIXED
-    int64_t bx = -(num_smul32(co.x, d.x) + num_smul32(co.y, d.y) + num_smul32(co.z, d.z));
+/* The rest of rt_quad_solve from b and CO x D' at 2F fraction bits (bx,
+ * x0, x1, x2 exact, x's as magnitudes). */
+RT_ALWAYS_INLINE int rt_quad_solve_x(int64_t bx, uint64_t x0, uint64_t x1, uint64_t x2, wnum aq, wnum c,
+                                     const struct rt_qsphere *sp, struct rt_quad *k)
+{
     if (c > 0 && bx <= 0) return 0;
     uint64_t ax = (uint64_t)aq;
-    uint64_t x0 = rt_mag64(num_smul32(co.y, d.z) - num_smul32(co.z, d.y));
-    uint64_t x1 = rt_mag64(num_smul32(co.z, d.x) - num_smul32(co.x, d.z));
-    uint64_t x2 = rt_mag64(num_smul32(co.x, d.y) - num_smul32(co.y, d.x));
     /* |CO x D'|^2 at scale 2^(2 kx), each component >> kx below 2^30 */
     int lx = rt_bitlen64(x0 | x1 | x2);
     int kx = lx > 30 ? lx - 30 : 0;
@@ -535,6 +534,18 @@ RT_ALWAYS_INLINE int rt_quad_solve(vec3 co, vec3 d, wnum aq, wnum c, const struc
     int64_t hx = (int64_t)(num_isqrt64(dd, 0) << (e / 2));
     k->qx = bx >= 0 ? bx + hx : bx - hx;
     k->q = rt_shr_round(k->qx, NUM_FRAC);
+    return 1;
+}
+#endif
+
+RT_ALWAYS_INLINE int rt_quad_solve(vec3 co, vec3 d, wnum aq, wnum c, const struct rt_qsphere *sp, struct rt_quad *k)
+{
+#if NUM_MODE == NUM_MODE_FIXED
+    int64_t bx = -(num_smul32(co.x, d.x) + num_smul32(co.y, d.y) + num_smul32(co.z, d.z));
+    if (c > 0 && bx <= 0) return 0;
+    return rt_quad_solve_x(bx, rt_mag64(num_smul32(co.y, d.z) - num_smul32(co.z, d.y)),
+                           rt_mag64(num_smul32(co.z, d.x) - num_smul32(co.x, d.z)),
+                           rt_mag64(num_smul32(co.x, d.y) - num_smul32(co.y, d.x)), aq, c, sp, k);
 #else
     (void)sp;
     wnum b = wnum_sub(wnum_from_num(NUM_ZERO), v3_dot_wide(co, d));

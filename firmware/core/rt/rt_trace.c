@@ -272,6 +272,7 @@ static rgb trace_primary(struct rt_state *rt, vec3 d, int col, int row, struct r
                 ray.dx.z = rt->dx_z;
                 ray.dxa = rt->dx_yz + rt_exact_sq(vx);
                 ray.dxm = rt->h;
+                ray.dxrow = row;
             } else if (rt_exact_turn(rt->cam_q29, rt->dx_turn, vx, &ray.dx)) {
                 ray.dxa = rt_exact_sq(ray.dx.x) + rt_exact_sq(ray.dx.y) + rt_exact_sq(ray.dx.z);
                 ray.dxm = rt->h;

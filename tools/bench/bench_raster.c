@@ -47,6 +47,17 @@ static uint64_t frame(const struct scene *s, uint32_t *pixels)
     return bench_now() - t0;
 }
 
+/* The image's format after each fixed-point line (accuracy.py measures the
+ * row's accuracy at it). */
+static void frac_line(void)
+{
+#if NUM_MODE == NUM_MODE_FIXED
+    bench_puts("BENCHX num_frac=");
+    bench_put_u64(NUM_FRAC);
+    bench_puts("\n");
+#endif
+}
+
 static int measure(const char *what, const char *variant, const struct scene *s)
 {
     uint32_t px = 0;
@@ -60,7 +71,9 @@ static int measure(const char *what, const char *variant, const struct scene *s)
         return 1;
     }
     bench_report(what, NUM_NAME, variant, instr * 1000, "frame");
+    frac_line();
     bench_report(what, NUM_NAME, variant, instr * 1000 / px, "pixel");
+    frac_line();
     return 0;
 }
 

@@ -902,52 +902,65 @@ static int finish_panel(struct run_state *r)
  * 2^-21, 24 bits at coordinates up to 8) along x, y or z either way: those
  * are decided below what the format can tell apart. Six more double renders
  * when any differs. */
+/* Pixel i traced one by one in both renders, with another decision. */
+static int decision_off(const struct bufs *b, size_t i)
+{
+    return b->probe[i] != 0xFF && b->ref_probe[i] != 0xFF &&
+           (b->probe[i] != b->ref_probe[i] || b->item[i] != b->ref_item[i]);
+}
+
+/* The reference render with the camera moved by (dx, dy, dz): its
+ * decisions into pm and im (fb and rgb: its frame). */
+static int moved_decisions(struct run_state *r, double dx, double dy, double dz, uint8_t *pm, int16_t *im,
+                           uint16_t *fb, uint8_t *rgb)
+{
+    struct core m = { 0 };
+    int rc = core_open(&m, r->ref->api, r->o->scene);
+    if (!rc) {
+        m.api->set_fits(m.scene, 0);
+        m.api->exact_methods(m.scene);
+        m.api->move_camera(m.scene, dx, dy, dz);
+        rc = core_init(&m, r->w, r->h, r->rows);
+    }
+    if (!rc) {
+        memset(pm, 0xFF, r->npx);
+        m.api->decision_probe(&m.ctx, pm, im);
+        for (unsigned f = 0; f < r->frames && !rc; f++) rc = core_render_memory(&m, f, fb, rgb);
+    }
+    core_close(&m);
+    return rc;
+}
+
 static int count_decisions(struct run_state *r)
 {
     struct bufs *b = r->b;
     size_t n = r->npx;
-    long off = 0, below = 0, traced = 0;
+    long off = 0, traced = 0;
     for (size_t i = 0; i < n; i++) {
-        if (b->probe[i] == 0xFF || b->ref_probe[i] == 0xFF) continue;
-        traced++;
-        off += b->probe[i] != b->ref_probe[i] || b->item[i] != b->ref_item[i];
+        traced += b->probe[i] != 0xFF && b->ref_probe[i] != 0xFF;
+        off += decision_off(b, i);
     }
     if (traced == 0) return EXIT_OK;   /* nothing traced pixel by pixel (adaptive subsampling) */
+    r->dec_off = off;
+    r->dec_below = 0;
     double res = r->c->api->num_frac ? ldexp(1.0, -r->c->api->num_frac)
                                      : strcmp(r->c->api->numeric, "float") ? 0 : ldexp(1.0, -21);
-    uint8_t *ok = off && res > 0 ? calloc(n, 1) : NULL, *pm = ok ? malloc(n) : NULL;
-    int16_t *im = pm ? malloc(n * sizeof *im) : NULL;
-    uint16_t *fb = im ? malloc(n * sizeof *fb) : NULL;
-    uint8_t *rgb = fb ? malloc(n * 3) : NULL;
-    int rc = off && res > 0 && !rgb ? fail(EXIT_INTERNAL, "out of memory") : EXIT_OK;
-    for (int k = 0; k < 6 && rgb && !rc; k++) {
-        struct core m = { 0 };
+    if (!off || res <= 0) return EXIT_OK;
+    uint8_t *ok = calloc(n, 1), *pm = malloc(n), *rgb = malloc(n * 3);
+    int16_t *im = malloc(n * sizeof *im);
+    uint16_t *fb = malloc(n * sizeof *fb);
+    int rc = ok && pm && rgb && im && fb ? EXIT_OK : fail(EXIT_INTERNAL, "out of memory");
+    for (int k = 0; k < 6 && !rc; k++) {
         double v = (k & 1) ? -res : res;
-        if (!(rc = core_open(&m, r->ref->api, r->o->scene))) {
-            m.api->set_fits(m.scene, 0);
-            m.api->exact_methods(m.scene);
-            m.api->move_camera(m.scene, k / 2 == 0 ? v : 0, k / 2 == 1 ? v : 0, k / 2 == 2 ? v : 0);
-            if (!(rc = core_init(&m, r->w, r->h, r->rows))) {
-                memset(pm, 0xFF, n);
-                m.api->decision_probe(&m.ctx, pm, im);
-                for (unsigned f = 0; f < r->frames && !rc; f++) rc = core_render_memory(&m, f, fb, rgb);
-                for (size_t i = 0; i < n && !rc; i++)
-                    if (b->probe[i] != 0xFF && b->ref_probe[i] != 0xFF &&
-                        (b->probe[i] != b->ref_probe[i] || b->item[i] != b->ref_item[i]) && pm[i] == b->probe[i] &&
-                        im[i] == b->item[i])
-                        ok[i] = 1;
-            }
-        }
-        core_close(&m);
+        rc = moved_decisions(r, k / 2 == 0 ? v : 0, k / 2 == 1 ? v : 0, k / 2 == 2 ? v : 0, pm, im, fb, rgb);
+        for (size_t i = 0; i < n && !rc; i++) ok[i] |= decision_off(b, i) && pm[i] == b->probe[i] && im[i] == b->item[i];
     }
-    for (size_t i = 0; ok && i < n; i++) below += ok[i];
+    for (size_t i = 0; i < n && !rc; i++) r->dec_below += ok[i];
     free(ok);
     free(pm);
     free(im);
     free(fb);
     free(rgb);
-    r->dec_off = off;
-    r->dec_below = below;
     return rc;
 }
 

@@ -241,30 +241,37 @@ static double mat3_norm(const mat3 *m)
     return s < sqrt(fro) ? s : sqrt(fro);
 }
 
-/* The ball around the points of object j: centre c, radius rho (0 for a
- * plane: unbounded). */
-static int object_ball(const struct rt_object *o, double c[3], double *rho)
+/* The ball around an object's points: centre c, radius r, and far =
+ * |c| + r, the farthest any of them lies from the origin (bounded 0 for a
+ * plane). */
+struct ball {
+    double c[3], r, far;
+    int bounded;
+};
+
+static struct ball object_ball(const struct rt_object *o)
 {
+    struct ball b = { { 0, 0, 0 }, 0, 0, 0 };
     if (o->shape == RT_SPHERE) {
-        c[0] = num_to_double(o->center.x);
-        c[1] = num_to_double(o->center.y);
-        c[2] = num_to_double(o->center.z);
-        *rho = fabs(num_to_double(o->radius));
-        return 1;
+        b.c[0] = num_to_double(o->center.x);
+        b.c[1] = num_to_double(o->center.y);
+        b.c[2] = num_to_double(o->center.z);
+        b.r = fabs(num_to_double(o->radius));
+    } else if (o->shape == RT_TRIANGLE) {
+        b.c[0] = (num_to_double(o->p[0].x) + num_to_double(o->p[1].x) + num_to_double(o->p[2].x)) / 3;
+        b.c[1] = (num_to_double(o->p[0].y) + num_to_double(o->p[1].y) + num_to_double(o->p[2].y)) / 3;
+        b.c[2] = (num_to_double(o->p[0].z) + num_to_double(o->p[1].z) + num_to_double(o->p[2].z)) / 3;
+        for (int k = 0; k < 3; k++) {
+            double dx = num_to_double(o->p[k].x) - b.c[0], dy = num_to_double(o->p[k].y) - b.c[1],
+                   dz = num_to_double(o->p[k].z) - b.c[2];
+            b.r = fmax(b.r, sqrt(dx * dx + dy * dy + dz * dz));
+        }
+    } else {
+        return b;
     }
-    if (o->shape != RT_TRIANGLE) return 0;
-    c[0] = (num_to_double(o->p[0].x) + num_to_double(o->p[1].x) + num_to_double(o->p[2].x)) / 3;
-    c[1] = (num_to_double(o->p[0].y) + num_to_double(o->p[1].y) + num_to_double(o->p[2].y)) / 3;
-    c[2] = (num_to_double(o->p[0].z) + num_to_double(o->p[1].z) + num_to_double(o->p[2].z)) / 3;
-    double r = 0;
-    for (int k = 0; k < 3; k++) {
-        double dx = num_to_double(o->p[k].x) - c[0], dy = num_to_double(o->p[k].y) - c[1],
-               dz = num_to_double(o->p[k].z) - c[2];
-        double d = sqrt(dx * dx + dy * dy + dz * dz);
-        if (d > r) r = d;
-    }
-    *rho = r;
-    return 1;
+    b.far = sqrt(b.c[0] * b.c[0] + b.c[1] * b.c[1] + b.c[2] * b.c[2]) + b.r;
+    b.bounded = 1;
+    return b;
 }
 
 static double dist_pt(const double a[3], const double b[3])
@@ -273,13 +280,13 @@ static double dist_pt(const double a[3], const double b[3])
     return sqrt(x * x + y * y + z * z);
 }
 
-/* Sphere o's hit points from origins in the ball (c, rho) whose rays have
- * t_min tmin and directions no longer than dlen: the distance from the
- * origin, or -1 when the near root is not proven to be the hit. */
-static double entry_reach(const struct rt_object *o, const double c[3], double rho, double tmin, double dlen)
+/* Sphere i (ball bi) entered by rays from origins in the ball (c, rho) with
+ * t_min tmin and directions no longer than dlen: the distance of its hit
+ * points from the origin, or -1 when the near root is not proven to be the
+ * hit. */
+static double entry_reach(const struct ball *bi, const double c[3], double rho, double tmin, double dlen)
 {
-    double ci[3] = { num_to_double(o->center.x), num_to_double(o->center.y), num_to_double(o->center.z) };
-    double r = fabs(num_to_double(o->radius)), dc = dist_pt(ci, c);
+    double r = bi->r, dc = dist_pt(bi->c, c);
     /* the format's rounding of the stored centres, radii and origins
      * (half a step of NUM_FRAC 12 each) and of the near root (29 or more
      * significant bits, rt_quad_solve) */
@@ -289,113 +296,106 @@ static double entry_reach(const struct rt_object *o, const double c[3], double r
     return sqrt(far * far - r * r);
 }
 
-/* The longest direction of a ray that makes hit points: primary ones
- * (through the viewport, a pixel beyond its sides, turned by the camera
- * matrix), reflected ones as long as the incoming one, refracted ones unit;
- * grown by 2^-8 for the directions' rounding. */
-static double ray_dir_max(const struct scene *s, int width, int height)
+/* The primary directions' extent: the viewport's half-sides plus a pixel
+ * (its width follows the render size, Vw = Vh W / H), d, and the camera
+ * matrix's largest singular value. */
+struct view_ext {
+    double xm, ym, d, sn;
+};
+
+static struct view_ext view_extent(const struct scene *s, int width, int height)
 {
-    double vh = fabs(num_to_double(s->viewport_h)), d = fabs(num_to_double(s->projection_d));
+    struct view_ext v;
+    double vh = fabs(num_to_double(s->viewport_h));
     double vw = fmax(fabs(num_to_double(s->viewport_w)), vh * width / (height > 0 ? height : 1));
-    double xm = vw / 2 + vw / (width > 0 ? width : 1), ym = vh / 2 + vh / (height > 0 ? height : 1);
-    return fmax(1, mat3_norm(&s->camera.rotation) * sqrt(xm * xm + ym * ym + d * d)) * (1 + ldexp(1, -8));
+    v.xm = vw / 2 + vw / (width > 0 ? width : 1);
+    v.ym = vh / 2 + vh / (height > 0 ? height : 1);
+    v.d = fabs(num_to_double(s->projection_d));
+    v.sn = mat3_norm(&s->camera.rotation);
+    return v;
 }
 
-/* H[i]: the bound on |P| of object i's hit points (-1: never hit; planes:
- * -1, not bounded here). dsec: the longest secondary direction. */
-static void rt_hit_reach(const struct scene *s, int width, int height, double cam_reach, double dsec, double *H)
+/* The longest direction of a ray that makes hit points: primary ones
+ * (through the viewport, turned by the camera matrix), reflected ones as
+ * long as the incoming one, refracted ones unit; grown by 2^-8 for the
+ * directions' rounding. */
+static double ray_dir_max(const struct view_ext *v)
+{
+    return fmax(1, v->sn * sqrt(v->xm * v->xm + v->ym * v->ym + v->d * v->d)) * (1 + ldexp(1, -8));
+}
+
+/* H[i]: the bound on |P| of object i's hit points (-1 for planes: not
+ * bounded here). The levels update H in place: a level that reads a bound
+ * already grown in the same level only finds larger ones, still bounds. */
+static void rt_hit_reach(const struct scene *s, int width, int height, double *H)
 {
     const struct rt_options *opt = &s->rt;
     int n = s->nobjects;
+    struct view_ext v = view_extent(s, width, height);
+    double dsec = ray_dir_max(&v), cam_reach = anim_reach(&s->camera_anim, s->frames);
     double cam[3] = { num_to_double(s->camera.position.x), num_to_double(s->camera.position.y),
                       num_to_double(s->camera.position.z) };
     double camlen = sqrt(cam[0] * cam[0] + cam[1] * cam[1] + cam[2] * cam[2]);
     int fallback = opt->formulation == 1 || opt->bvh || s->ncsg > 0;
-    for (int i = 0; i < n; i++) H[i] = -1;
     /* the camera's near ball (centre m, radius rho) */
-    double vh = fabs(num_to_double(s->viewport_h)), d = fabs(num_to_double(s->projection_d));
-    double vw = fmax(fabs(num_to_double(s->viewport_w)), vh * width / (height > 0 ? height : 1));
-    double xm = vw / 2 + vw / (width > 0 ? width : 1), ym = vh / 2 + vh / (height > 0 ? height : 1);
-    double sn = mat3_norm(&s->camera.rotation), tmin = fabs(num_to_double(opt->t_min_primary));
-    double rho = tmin * sn * sqrt(xm * xm + ym * ym + d * d / 4) + cam_reach, m[3];
+    double tmin = fabs(num_to_double(opt->t_min_primary)), m[3];
+    double rho = tmin * v.sn * sqrt(v.xm * v.xm + v.ym * v.ym + v.d * v.d / 4) + cam_reach;
     for (int k = 0; k < 3; k++)
-        m[k] = cam[k] + num_to_double(s->camera.rotation.m[k][2]) * d * tmin / 2;
+        m[k] = cam[k] + num_to_double(s->camera.rotation.m[k][2]) * v.d * tmin / 2;
     if (s->camera_anim.rot_y_per_frame != 0 && s->frames > 1) {
         for (int k = 0; k < 3; k++) m[k] = cam[k];
-        rho += sn * d * tmin / 2;
+        rho += v.sn * v.d * tmin / 2;
     }
     for (int i = 0; i < n; i++) {
         const struct rt_object *o = &s->objects[i];
-        if (o->shape == RT_PLANE) {   /* hit, not bounded here: a source of any origin */
+        struct ball b = object_ball(o);
+        if (!b.bounded) {   /* a plane: hit, not bounded here, a source of any origin */
             H[i] = INFINITY;
             continue;
         }
-        double c[3], r;
-        object_ball(o, c, &r);
-        double full = sqrt(c[0] * c[0] + c[1] * c[1] + c[2] * c[2]) + r;
-        /* (a CSG operand's hits are the CSG's: fallback) */
-        double e = o->shape == RT_SPHERE && !fallback ? entry_reach(o, m, rho, 0, 1) : -1;
-        /* the entry point, from the camera's start and its moves */
+        /* the entry point, from the camera's start and its moves (a CSG
+         * operand's hits are the CSG's: fallback) */
+        double e = o->shape == RT_SPHERE && !fallback ? entry_reach(&b, m, rho, 0, 1) : -1;
         if (e >= 0) {
-            double far = dist_pt(c, cam) + cam_reach;
-            e = camlen + cam_reach + sqrt(fmax(0, far * far - r * r));
+            double far = dist_pt(b.c, cam) + cam_reach;
+            e = camlen + cam_reach + sqrt(fmax(0, far * far - b.r * b.r));
         }
-        H[i] = e < 0 ? full : e;
+        H[i] = e < 0 ? b.far : e;
     }
     int depth = opt->recursion_depth > RT_MAX_DEPTH ? RT_MAX_DEPTH : opt->recursion_depth;
     /* a reflected direction's inward part, as a fraction of its length: a
      * few steps (2^-12 at the coarsest format) per component, over the
      * shortest direction (|D| >= d; refracted ones are unit) */
-    double chord = fmin(1, 32 * ldexp(1, -12) * (1 + 1 / fmin(d > 0 ? d : 1e-300, 1)));
-    double *G = malloc(sizeof(double) * (size_t)(n > 0 ? n : 1));
-    if (!G) depth = 0;
-    for (int i = 0; i < n && !G; i++)   /* no room to follow the rays: |C| + r */
-        if (H[i] >= 0 && s->objects[i].shape != RT_PLANE) {
-            double c[3], r;
-            object_ball(&s->objects[i], c, &r);
-            H[i] = sqrt(c[0] * c[0] + c[1] * c[1] + c[2] * c[2]) + r;
-        }
-    for (int level = 0; level < depth; level++) {
-        for (int i = 0; i < n; i++) G[i] = H[i];
+    double chord = fmin(1, 32 * ldexp(1, -12) * (1 + 1 / fmin(v.d > 0 ? v.d : 1e-300, 1)));
+    double eps = fabs(num_to_double(opt->epsilon));
+    for (int level = 0; level < depth; level++)
         for (int j = 0; j < n; j++) {
             const struct rt_object *oj = &s->objects[j];
-            if (H[j] < 0 || (num_to_double(oj->mat.reflective) <= 0 && num_to_double(oj->mat.transparency) <= 0))
-                continue;
-            double cj[3], rj;
-            int bounded = object_ball(oj, cj, &rj);
+            if (num_to_double(oj->mat.reflective) <= 0 && num_to_double(oj->mat.transparency) <= 0) continue;
+            struct ball bj = object_ball(oj);
             for (int i = 0; i < n; i++) {
                 const struct rt_object *o = &s->objects[i];
                 if (o->shape == RT_PLANE) continue;
-                double c[3], r;
-                object_ball(o, c, &r);
-                double full = sqrt(c[0] * c[0] + c[1] * c[1] + c[2] * c[2]) + r, e = -1;
-                if (!fallback && bounded && o->shape == RT_SPHERE) {
+                struct ball bi = object_ball(o);
+                double e = -1;
+                if (!fallback && bj.bounded && o->shape == RT_SPHERE) {
                     if (i == j)
-                        e = num_to_double(oj->mat.transparency) > 0 ? -1 : 2 * r * chord;
+                        e = num_to_double(oj->mat.transparency) > 0 ? -1 : 2 * bi.r * chord;
                     else
-                        e = entry_reach(o, cj, rj, fabs(num_to_double(opt->epsilon)), dsec);
+                        e = entry_reach(&bi, bj.c, bj.r, eps, dsec);
                 }
-                double cand = e < 0 ? full : H[j] + e;
-                if (cand > G[i]) G[i] = cand;
+                H[i] = fmax(H[i], e < 0 ? bi.far : H[j] + e);
             }
         }
-        for (int i = 0; i < n; i++) H[i] = G[i];
-    }
-    free(G);
     for (int i = 0; i < n; i++) {
-        const struct rt_object *o = &s->objects[i];
-        if (o->shape == RT_PLANE) H[i] = -1;
-        if (H[i] < 0) continue;
-        double c[3], r;
-        object_ball(o, c, &r);
-        double full = sqrt(c[0] * c[0] + c[1] * c[1] + c[2] * c[2]) + r;
-        H[i] = fmin(full, H[i] * (1 + ldexp(1, -10)) + ldexp(1, -10));
+        struct ball b = object_ball(&s->objects[i]);
+        H[i] = b.bounded ? fmin(b.far, H[i] * (1 + ldexp(1, -10)) + ldexp(1, -10)) : -1;
     }
 }
 
 void scene_format_hit_reach(const struct scene *s, int width, int height, double *H)
 {
-    rt_hit_reach(s, width, height, anim_reach(&s->camera_anim, s->frames), ray_dir_max(s, width, height), H);
+    rt_hit_reach(s, width, height, H);
 }
 
 /* Ray tracer: the objects (spheres, planes, triangles); *hmax gets the
@@ -404,27 +404,25 @@ static void scan_rt_objects(const struct scene *s, struct scene_format *R, int w
                             double *hmax)
 {
     int book = s->rt.formulation == 1;
+    /* no memory for the bounds: each object's |C| + r */
     double *H = malloc(sizeof(double) * (size_t)(s->nobjects > 0 ? s->nobjects : 1));
-    if (!H) {   /* no bound found: every object's |C| + r as before */
-        *hmax = R->position.value;
-        return;
-    }
-    rt_hit_reach(s, width, height, anim_reach(&s->camera_anim, s->frames), ray_dir_max(s, width, height), H);
+    if (H) rt_hit_reach(s, width, height, H);
     *hmax = 0;
     for (int i = 0; i < s->nobjects; i++) {
         const struct rt_object *o = &s->objects[i];
+        double h = H ? H[i] : object_ball(o).far;   /* the hit points' bound */
         note(&R->other, num_to_double(o->mat.specular), "object %d: specular exponent", i);
         if (o->shape == RT_SPHERE) {
             double r = num_to_double(o->radius), c = len3(o->center);
             note(&R->position, c, "sphere %d: centre", i);
             note(&R->position, r, "sphere %d: radius", i);
-            if (H[i] >= 0) note(&R->position, H[i], "sphere %d: hit points (their reach)", i);
-            if (H[i] > *hmax) *hmax = H[i];
+            note(&R->position, h, "sphere %d: hit points (their reach)", i);
+            if (h > *hmax) *hmax = h;
             if (book || s->rt.bvh || s->ncsg > 0) note(&R->position, c + r, "sphere %d: centre + radius", i);
             note(&R->position, c + cam, "sphere %d: distance from the camera to the centre", i);
             for (int k = 0; k < s->nlights; k++)
-                if (s->lights[k].type == LIGHT_POINT && H[i] >= 0)
-                    note(&R->position, H[i] + len3(s->lights[k].v), "sphere %d: distance to light %d", i, k);
+                if (s->lights[k].type == LIGHT_POINT)
+                    note(&R->position, h + len3(s->lights[k].v), "sphere %d: distance to light %d", i, k);
             if (book) {
                 note(&R->square, r * r, "sphere %d: radius %g makes r^2", i, r);
                 note(&R->square, (c + cam) * (c + cam), "sphere %d: |CO|^2 from the camera", i);
@@ -441,10 +439,10 @@ static void scan_rt_objects(const struct scene *s, struct scene_format *R, int w
             note(&R->position, fmax(e1, e2), "triangle %d: an edge", i);
             note(&R->other, 2 * e2, "triangle %d: direction x edge 2", i);
             note(&R->other, o0 * e1, "triangle %d: (origin - corner 0) x edge 1", i);
-            if (H[i] > *hmax) *hmax = H[i];
+            if (h > *hmax) *hmax = h;
             for (int k = 0; k < s->nlights; k++)
-                if (s->lights[k].type == LIGHT_POINT && H[i] >= 0)
-                    note(&R->position, H[i] + len3(s->lights[k].v), "triangle %d: distance to light %d", i, k);
+                if (s->lights[k].type == LIGHT_POINT)
+                    note(&R->position, h + len3(s->lights[k].v), "triangle %d: distance to light %d", i, k);
         }
     }
     free(H);
@@ -496,7 +494,8 @@ static void scan_rt(const struct scene *s, struct scene_format *R, int width, in
     if (n > 1) note(&R->colour, colour * n * n, "supersample %d: the sum of %d colours", n, n * n);
     double hmax;
     scan_rt_objects(s, R, width, height, cam, &hmax);
-    scan_rt_rays(s, R, hmax, ray_dir_max(s, width, height));
+    struct view_ext v = view_extent(s, width, height);
+    scan_rt_rays(s, R, hmax, ray_dir_max(&v));
 }
 
 /* Rasterizer: what the projection to the screen (x d / z x w / W) needs,

@@ -111,7 +111,7 @@ static int sphere_quad_row(struct rt_obj_cache *oc, const struct rt_ray *ray, st
     int64_t bx = oc->px_b - num_smul32(co.x, ray->dx.x);
     if (k->c > 0 && bx <= 0) return 0;
     return rt_quad_solve_x(bx, rt_mag64(oc->px_x0), rt_mag64(num_smul32(co.z, ray->dx.x) - oc->px_cxd),
-                           rt_mag64(oc->px_x2 - num_smul32(co.y, ray->dx.x)), k->a, k->c, &oc->qs, &k->k);
+                           rt_mag64(oc->px_x2 - num_smul32(co.y, ray->dx.x)), k->a, &oc->qs, &k->k);
 #else
     (void)oc; (void)ray; (void)k;
     return 0;
@@ -142,7 +142,7 @@ static int sphere_quad(const struct rt_state *rt, int16_t obj, struct rt_ray *ra
         /* a pixel's primary ray along its exact direction (rt_exact_comp) */
         k->a = ray->dxa;
         k->m = ray->dxm;
-        k->cm = cam && ray->dxm == rt->h ? oc->cm_cam : rt_quad_near_num(k->c, ray->dxm);
+        k->cm = cam ? oc->cm_cam : rt_quad_near_num(k->c, ray->dxm);   /* dxm is the height */
         k->ts = NUM_ONE;
         /* the row parts are a cache in the work memory, which is never const */
         if (cam && ray->dxrow >= 0) return sphere_quad_row((struct rt_obj_cache *)oc, ray, k);
@@ -180,7 +180,7 @@ static void quad_near_frac(const struct sphere_quad *k, struct rt_frac *f)
  * (best, whose t is limit): only when both have fractions and t's is less. */
 static int tie_first(const struct rt_frac *f, const struct rt_hit *best, num limit)
 {
-    return f->d > 0 && best && best->fr.d > 0 && best->t == limit && rt_frac_less(f->n, f->d, best->fr.n, best->fr.d);
+    return f->d > 0 && best->fr.d > 0 && best->t == limit && rt_frac_less(f->n, f->d, best->fr.n, best->fr.d);
 }
 
 static num quad_far(const struct rt_state *rt, int16_t obj, struct rt_ray *ray, const struct sphere_quad *k)

@@ -509,11 +509,11 @@ static inline wnum rt_quad_a(vec3 d, wnum as)
  * behind the origin, outside the sphere). */
 #if NUM_MODE == NUM_MODE_FIXED
 /* The rest of rt_quad_solve from b and CO x D' at 2F fraction bits (bx,
- * x0, x1, x2 exact, x's as magnitudes). */
-RT_ALWAYS_INLINE int rt_quad_solve_x(int64_t bx, uint64_t x0, uint64_t x1, uint64_t x2, wnum aq, wnum c,
+ * x0, x1, x2 exact, x's as magnitudes), once the caller has rejected
+ * c > 0 with bx <= 0 (before forming the cross product). */
+RT_ALWAYS_INLINE int rt_quad_solve_x(int64_t bx, uint64_t x0, uint64_t x1, uint64_t x2, wnum aq,
                                      const struct rt_qsphere *sp, struct rt_quad *k)
 {
-    if (c > 0 && bx <= 0) return 0;
     uint64_t ax = (uint64_t)aq;
     /* |CO x D'|^2 at scale 2^(2 kx), each component >> kx below 2^30 */
     int lx = rt_bitlen64(x0 | x1 | x2);
@@ -545,7 +545,7 @@ RT_ALWAYS_INLINE int rt_quad_solve(vec3 co, vec3 d, wnum aq, wnum c, const struc
     if (c > 0 && bx <= 0) return 0;
     return rt_quad_solve_x(bx, rt_mag64(num_smul32(co.y, d.z) - num_smul32(co.z, d.y)),
                            rt_mag64(num_smul32(co.z, d.x) - num_smul32(co.x, d.z)),
-                           rt_mag64(num_smul32(co.x, d.y) - num_smul32(co.y, d.x)), aq, c, sp, k);
+                           rt_mag64(num_smul32(co.x, d.y) - num_smul32(co.y, d.x)), aq, sp, k);
 #else
     (void)sp;
     wnum b = wnum_sub(wnum_from_num(NUM_ZERO), v3_dot_wide(co, d));

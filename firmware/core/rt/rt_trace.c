@@ -245,40 +245,45 @@ static void prim_list(struct rt_state *rt, int col, int row)
     rt->prim_n = rt->tile_n[tc];
 }
 
+/* A primary ray through pixel (col, row) with the camera not turned, or
+ * turned by the scene's own rotation: its exact direction (x vh, y vh, d h)
+ * (rt_exact_comp in rt_num.h), the row's part once a row; turned by the
+ * precise rotation (rt_exact_turn). Nothing where it does not fit. */
+static void exact_dir(struct rt_state *rt, struct rt_ray *ray, int col, int row)
+{
+    if (rt->dx_row != row) {
+        rt->dx_row = row;
+        rt->dx_ok = (uint8_t)(rt->h <= 1024 && rt_exact_comp(rt->vh, rt->h / 2 - 1 - row, &rt->dx_y) &&
+                              rt_exact_comp(rt->d, rt->h, &rt->dx_z));
+        if (rt->dx_ok && rt->cam_rotated) rt_exact_turn_row(rt->cam_q29, rt->dx_y, rt->dx_z, rt->dx_turn);
+        else if (rt->dx_ok) rt->dx_yz = rt_exact_sq(rt->dx_y) + rt_exact_sq(rt->dx_z);
+    }
+    num vx;
+    if (!rt->dx_ok || !rt_exact_comp(rt->vh, col - rt->w / 2, &vx)) return;
+    if (!rt->cam_rotated) {
+        ray->dx.x = vx;
+        ray->dx.y = rt->dx_y;
+        ray->dx.z = rt->dx_z;
+        ray->dxa = rt->dx_yz + rt_exact_sq(vx);
+        ray->dxrow = row;
+    } else if (rt_exact_turn(rt->cam_q29, rt->dx_turn, vx, &ray->dx)) {
+        ray->dxa = rt_exact_sq(ray->dx.x) + rt_exact_sq(ray->dx.y) + rt_exact_sq(ray->dx.z);
+    } else {
+        return;
+    }
+    ray->dxm = rt->h;
+}
+
 /* One primary ray along d (from the camera); through pixel (col, row)
  * (col < 0: a sub-pixel sample) the sphere tests take its exact direction
- * (rt_exact_comp in rt_num.h), turned by the scene's precise rotation
- * (rt_exact_turn) where the camera is turned. */
+ * where it has one (exact_dir). */
 static rgb trace_primary(struct rt_state *rt, vec3 d, int col, int row, struct rt_prim *prim)
 {
     struct rt_ray ray;
     prim->item = -1;
     prim->shadow = 0;
     rt_ray_init(&ray, rt->cam_pos, d, -1, 1);
-    if (col >= 0 && !rt->book && (!rt->cam_rotated || rt->cam_q29)) {
-        /* (x vh, y vh, d h) for canvas point (x, y): the row's part once */
-        if (rt->dx_row != row) {
-            rt->dx_row = row;
-            rt->dx_ok = (uint8_t)(rt->h <= 1024 && rt_exact_comp(rt->vh, rt->h / 2 - 1 - row, &rt->dx_y) &&
-                                  rt_exact_comp(rt->d, rt->h, &rt->dx_z));
-            if (rt->dx_ok && rt->cam_rotated) rt_exact_turn_row(rt->cam_q29, rt->dx_y, rt->dx_z, rt->dx_turn);
-            else if (rt->dx_ok) rt->dx_yz = rt_exact_sq(rt->dx_y) + rt_exact_sq(rt->dx_z);
-        }
-        num vx;
-        if (rt->dx_ok && rt_exact_comp(rt->vh, col - rt->w / 2, &vx)) {
-            if (!rt->cam_rotated) {
-                ray.dx.x = vx;
-                ray.dx.y = rt->dx_y;
-                ray.dx.z = rt->dx_z;
-                ray.dxa = rt->dx_yz + rt_exact_sq(vx);
-                ray.dxm = rt->h;
-                ray.dxrow = row;
-            } else if (rt_exact_turn(rt->cam_q29, rt->dx_turn, vx, &ray.dx)) {
-                ray.dxa = rt_exact_sq(ray.dx.x) + rt_exact_sq(ray.dx.y) + rt_exact_sq(ray.dx.z);
-                ray.dxm = rt->h;
-            }
-        }
-    }
+    if (col >= 0 && !rt->book && (!rt->cam_rotated || rt->cam_q29)) exact_dir(rt, &ray, col, row);
     rt->n.primary_rays++;
     rgb c = trace_ray(rt, &ray, rt->s->rt.t_min_primary, NUM_MAX, rt->depth, prim);
     rt->prim_items = NULL;

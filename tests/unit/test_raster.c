@@ -40,6 +40,61 @@ static void strips_identical(void)
         }
 }
 
+/* The default path's triangles are binned to strips once a frame and each
+ * context keeps the list of the strip it drew last (raster_strip.c): strips
+ * in any order, as two cores take them (every other one each), backwards,
+ * of any height up to the context's and at any row, give the image of one
+ * strip the whole frame high. */
+static void strip_order_free(void)
+{
+    static const char *const names[] = { "raster-11", "raster-rt-scene", "raster-13" };
+    enum { W = 320, H = 240, R = 16 };
+    for (size_t n = 0; n < sizeof names / sizeof names[0]; n++) {
+        struct scene *s = default_scene(names[n]);
+        struct frame whole;
+        int bad = render_frame(s, W, H, H, 1, &whole) ? -1 : 0;
+        size_t ws = render_work_size(s, W, H, R);
+        void *work = malloc(ws);
+        static uint16_t px[W * R], img[W * H];
+        static uint8_t c888[W * R * 3], img888[W * H * 3];
+        struct render_ctx ctx;
+        if (!work || render_init(&ctx, s, W, H, R, work, ws)) bad = -1;
+        for (int order = 0; order < 5 && bad == 0; order++) {
+            /* 0: top down, 1: bottom up, 2: even strips then odd (two cores),
+             * 3: rows of 5 at odd offsets, 4: 16-row strips from row 3 then rows 0..2 */
+            int y0s[64], y1s[64], ns = 0;
+            if (order <= 2) {
+                int nst = (H + R - 1) / R;
+                for (int k = 0; k < nst; k++) {
+                    int i = order == 0 ? k : order == 1 ? nst - 1 - k : (k < (nst + 1) / 2 ? 2 * k : 2 * (k - (nst + 1) / 2) + 1);
+                    y0s[ns] = i * R;
+                    y1s[ns++] = i * R + R < H ? i * R + R : H;
+                }
+            } else if (order == 3) {
+                for (int y = 0; y < H; y += 5) { y0s[ns] = y; y1s[ns++] = y + 5 < H ? y + 5 : H; }
+            } else {
+                for (int y = 3; y < H; y += R) { y0s[ns] = y; y1s[ns++] = y + R < H ? y + R : H; }
+                y0s[ns] = 0;
+                y1s[ns++] = 3;
+            }
+            memset(img, 0, sizeof img);
+            if (render_begin_frame(&ctx, 1)) { bad = -1; break; }
+            for (int k = 0; k < ns; k++) {
+                struct render_target t = { W, H, (uint16_t)y0s[k], (uint16_t)y1s[k], px, c888, NULL };
+                if (render_strip(&ctx, &t, NULL)) { bad = -1; break; }
+                memcpy(img + (size_t)y0s[k] * W, px, (size_t)(y1s[k] - y0s[k]) * W * 2);
+                memcpy(img888 + (size_t)y0s[k] * W * 3, c888, (size_t)(y1s[k] - y0s[k]) * W * 3);
+            }
+            if (memcmp(img, whole.rgb565, sizeof img) || memcmp(img888, whole.rgb888, sizeof img888)) bad = order + 1;
+        }
+        char name[96];
+        snprintf(name, sizeof name, "strips_in_any_order_identical_%s", names[n]);
+        check(bad == 0, name, bad < 0 ? "render failed" : "strip order %d gives another image", bad - 1);
+        free(work);
+        frame_free(&whole);
+    }
+}
+
 /* Closed meshes drawn with additive colour: each covered pixel must get
  * exactly one triangle. A counting render: every triangle writes colour 1
  * in red; the rgb888 red channel after rendering with depth off would only
@@ -407,6 +462,7 @@ static void trilinear_levels(void)
 int main(void)
 {
     strips_identical();
+    strip_order_free();
     fill_rule_closed_mesh();
     fast_coverage_exact();
     any_camera();

@@ -59,7 +59,8 @@ void ras_book_render_triangle(struct ras_ctx *rc, const struct ras_instance *in,
     const struct ras_options *o = &rc->s->ras;
     const struct ras_vert *cv[3] = { &rc->verts[ri->vbase + t->v[0]], &rc->verts[ri->vbase + t->v[1]],
                                      &rc->verts[ri->vbase + t->v[2]] };
-    num px[3] = { cv[0]->px, cv[1]->px, cv[2]->px }, py[3] = { cv[0]->py, cv[1]->py, cv[2]->py };
+    const struct ras_proj *pr = rc->proj + ri->vbase;
+    num px[3] = { pr[t->v[0]].px, pr[t->v[1]].px, pr[t->v[2]].px }, py[3] = { pr[t->v[0]].py, pr[t->v[1]].py, pr[t->v[2]].py };
     if (o->wireframe) { ras_draw_wireframe_triangle(rc, px, py, t->color); return; }
     /* the face normal stays wide for the culling test; it is narrowed to
      * num only where it serves as the shading normal */

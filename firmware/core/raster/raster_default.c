@@ -142,7 +142,8 @@ static int corners(const struct ras_ctx *rc, const struct ras_inst *ri, const st
     uint8_t f = rc->def.tri_flags[gi];
     if (!(f & RAS_TRI_LIVE)) return 0;
     *front = (f & RAS_TRI_FRONT) != 0;
-    if (!cached_shade) return tri_facts(rc, ri, m, t, V, N, front);
+    /* unshaded triangles need no normals: the corners are all they take */
+    if (!cached_shade && rc->def.shading != SHADE_NONE) return tri_facts(rc, ri, m, t, V, N, front);
     for (int k = 0; k < 3; k++) V[k] = rc->verts[ri->vbase + t->v[k]].c;
     return 1;
 }

@@ -38,6 +38,24 @@ static struct ras_range sub_rows(const struct ras_ctx *rc, int32_t lo, int32_t h
     return r;
 }
 
+static int32_t min3(int32_t a, int32_t b, int32_t c) { int32_t m = a < b ? a : b; return m < c ? m : c; }
+static int32_t max3(int32_t a, int32_t b, int32_t c) { int32_t m = a > b ? a : b; return m > c ? m : c; }
+
+/* The rows whose pixel centres lie within sub-pixel rows lo..hi (the
+ * only rows a triangle of that vertical extent can cover); none when no
+ * centre does. */
+static struct ras_range centre_rows(const struct ras_ctx *rc, int32_t lo, int32_t hi)
+{
+    const int sb = rc->def.sub_bits;
+    const int32_t half = (int32_t)1 << (sb - 1), one = (int32_t)1 << sb;
+    int32_t r0 = (lo - half + one - 1) >> sb, r1 = (hi - half) >> sb;   /* ceil, floor */
+    if (r0 < 0) r0 = 0;
+    if (r1 > rc->h - 1) r1 = rc->h - 1;
+    if (r0 > r1) return no_rows();
+    struct ras_range r = { (int16_t)r0, (int16_t)r1 };
+    return r;
+}
+
 static struct ras_range default_tri_rows(const struct ras_ctx *rc, vec3 a, vec3 b, vec3 c)
 {
     struct ras_cv in[3], out[RAS_CLIP_MAX];
@@ -95,10 +113,13 @@ static void prepare_instance(struct ras_ctx *rc, uint16_t i, uint16_t frame, uin
                 v->c = v3_make(p4.x, p4.y, p4.z);
             }
         }
-        ras_project_vertex(rc, v->c, &v->px, &v->py);
-        if (o->project_truncate) {
-            v->px = num_from_int(num_to_int(v->px));
-            v->py = num_from_int(num_to_int(v->py));
+        if (rc->proj) {
+            struct ras_proj *q = &rc->proj[vb + k];
+            ras_project_vertex(rc, v->c, &q->px, &q->py);
+            if (o->project_truncate) {
+                q->px = num_from_int(num_to_int(q->px));
+                q->py = num_from_int(num_to_int(q->py));
+            }
         }
         if (rc->def.pv) {
             struct ras_pv *q = &rc->def.pv[vb + k];
@@ -122,7 +143,7 @@ static void prepare_instance(struct ras_ctx *rc, uint16_t i, uint16_t frame, uin
             if (o->clip && !ras_triangle_inside(a->c, b->c, c->c)) continue;
             if (!rc->book && !o->clip && (a->c.z <= rc->def.near_z || b->c.z <= rc->def.near_z || c->c.z <= rc->def.near_z))
                 continue; /* default path, clipping off: never project behind the camera */
-            num ys[3] = { a->py, b->py, c->py }, lo, hi;
+            num ys[3] = { rc->proj[vb + t->v[0]].py, rc->proj[vb + t->v[1]].py, rc->proj[vb + t->v[2]].py }, lo, hi;
             range3(ys, &lo, &hi);
             *rr = rows_of_canvas_y(rc, lo, hi);
         } else {
@@ -135,7 +156,41 @@ static void prepare_instance(struct ras_ctx *rc, uint16_t i, uint16_t frame, uin
             else rc->def.tri_flags[tb + k] = 0;
         }
         if (rr->r0 <= rr->r1) rc->tris_drawn++;
+        if (rc->bins.on && rr->r0 <= rr->r1) {
+            /* what the strips visit: live triangles only, and those of three
+             * projected corners only on the rows of the pixel centres they span */
+            const struct ras_pv *pa = &rc->def.pv[vb + t->v[0]], *pb = &rc->def.pv[vb + t->v[1]], *pc = &rc->def.pv[vb + t->v[2]];
+            if (!(rc->def.tri_flags[tb + k] & RAS_TRI_LIVE)) *rr = no_rows();
+            else if (pa->inside && pb->inside && pc->inside)
+                *rr = centre_rows(rc, min3(pa->sy, pb->sy, pc->sy), max3(pa->sy, pb->sy, pc->sy));
+        }
     }
+}
+
+/* The live triangles of the frame sorted by the bucket of their first row
+ * (struct ras_bins), stable; the active list emptied. */
+static void bin_triangles(struct ras_ctx *rc)
+{
+    struct ras_bins *B = &rc->bins;
+    uint16_t *start = B->start;
+    const uint32_t nb = B->nbuckets;
+    for (uint32_t b = 0; b <= nb; b++) start[b] = 0;
+    for (uint32_t gi = 0; gi < rc->ntris; gi++) {
+        struct ras_range r = rc->tri_rows[gi];
+        if (r.r0 <= r.r1) start[(uint32_t)r.r0 / rc->strip_rows + 1]++;
+    }
+    for (uint32_t b = 1; b <= nb; b++) start[b] = (uint16_t)(start[b] + start[b - 1]);
+    /* start[b] walks bucket b's run; afterwards it holds the run's end,
+     * which is bucket b + 1's start */
+    for (uint32_t gi = 0; gi < rc->ntris; gi++) {
+        struct ras_range r = rc->tri_rows[gi];
+        if (r.r0 <= r.r1) B->order[start[(uint32_t)r.r0 / rc->strip_rows]++] = (uint16_t)gi;
+    }
+    for (uint32_t b = nb; b > 0; b--) start[b] = start[b - 1];
+    start[0] = 0;
+    B->nactive = 0;
+    B->next_bucket = 0;
+    B->last_y0 = -1;
 }
 
 int raster_begin_frame(void *work, uint16_t frame)
@@ -185,6 +240,7 @@ int raster_begin_frame(void *work, uint16_t frame)
         vb += m->nverts;
         tb += m->ntris;
     }
+    if (rc->bins.on) bin_triangles(rc);
     if (rc->fast.phong) ras_fphong_frame(rc);
     ras_ch15_frame(rc);
     return 0;

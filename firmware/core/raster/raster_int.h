@@ -34,8 +34,10 @@ struct ras_inst {
     uint8_t visible; /* survived bounding-sphere culling */
 };
 
-/* A transformed vertex: camera space and the book's projection. */
-struct ras_vert { vec3 c; num px, py; };
+/* A transformed vertex: camera space. */
+struct ras_vert { vec3 c; };
+/* The book's projection of a vertex (the book path and wireframes only). */
+struct ras_proj { num px, py; };
 
 /* A vertex of the default path, projected once per frame: sub-pixel
  * screen position, 1/z and near/z, valid when `inside` (within every
@@ -130,6 +132,28 @@ struct ras_c15 {
     uint8_t *stencil;        /* strip_rows * w stencil counts (shadow volumes) */
 };
 
+/* The default path's triangles binned to strips (raster_frame.c sorts
+ * them, raster_strip.c walks them): each frame, the live triangles
+ * (neither culled nor degenerate, with a pixel centre on screen) in order
+ * of the bucket of strip_rows rows their first row falls in, stable, so
+ * each bucket's run is in the scene's drawing order; per strip, the active
+ * list holds, in drawing order, every triangle begun in a bucket up to the
+ * strip's last row that has not ended above the strip. Strips taken in
+ * increasing order (all of them, or every other one per core) update it;
+ * a strip above the last starts it again. off: every triangle of every
+ * instance is tested against every strip (the book path, wireframes, more
+ * than 65535 triangles). */
+struct ras_bins {
+    uint8_t on;
+    uint16_t nbuckets;
+    uint16_t *order;         /* live triangles by bucket of their first row (ntris) */
+    uint16_t *start;         /* nbuckets + 1: bucket b is order[start[b] .. start[b + 1]) */
+    uint16_t *active;        /* ntris: the strip's triangles, in drawing order */
+    uint32_t nactive;
+    uint32_t next_bucket;    /* buckets [0, next_bucket) are merged into active */
+    int32_t last_y0;         /* the strip the active list was made for; -1: none */
+};
+
 /* The rasterizer's state, in the caller's work memory: what every path
  * uses, then the state each path owns. */
 struct ras_ctx {
@@ -147,10 +171,12 @@ struct ras_ctx {
     uint32_t tris_in, tris_drawn;
     struct ras_inst *inst;
     struct ras_vert *verts;
+    struct ras_proj *proj;   /* per vertex; NULL on the default path, which projects in ras_pv */
     struct ras_range *tri_rows, *prim_rows, *line_rows;
     struct ras_light *lights;
     uint8_t *depth;          /* strip_rows * w entries */
     struct ras_def def;
+    struct ras_bins bins;
     struct ras_fast fast;
     struct ras_c15 c15;
 };

@@ -116,7 +116,15 @@ static uint16_t keep_slots(const struct scene *s, uint32_t ntris)
 /* Every table of the state, in order, from c (c->base NULL: measuring, rc a
  * scratch context). The instances' models are checked first: -1 when one
  * is missing. */
-static int carve(const struct scene *s, uint16_t w, uint16_t strip_rows, struct ras_ctx *rc, struct work_carve *c)
+/* The binning of the default path's triangles to strips (struct ras_bins):
+ * for scenes of at most 65535 triangles (16-bit indices). */
+static int bins_on(const struct scene *s, uint32_t ntris)
+{
+    return frame_cache(s) && ntris > 0 && ntris <= 0xFFFFu;
+}
+
+static int carve(const struct scene *s, uint16_t w, uint16_t h, uint16_t strip_rows, struct ras_ctx *rc,
+                 struct work_carve *c)
 {
     uint32_t nverts = 0, ntris = 0;
     for (uint16_t i = 0; i < s->ninstances; i++) {
@@ -130,6 +138,8 @@ static int carve(const struct scene *s, uint16_t w, uint16_t strip_rows, struct 
     (void)work_take(c, sizeof(struct ras_ctx));   /* the context itself, first */
     rc->inst = work_take(c, sizeof(struct ras_inst) * s->ninstances);
     rc->verts = work_take(c, sizeof(struct ras_vert) * nverts);
+    void *proj = work_take(c, frame_cache(s) ? 0 : sizeof(struct ras_proj) * nverts);
+    rc->proj = frame_cache(s) ? NULL : proj;
     rc->tri_rows = work_take(c, sizeof(struct ras_range) * ntris);
     rc->prim_rows = work_take(c, sizeof(struct ras_range) * s->nprims);
     rc->line_rows = work_take(c, sizeof(struct ras_range) * s->nlines);
@@ -147,6 +157,12 @@ static int carve(const struct scene *s, uint16_t w, uint16_t strip_rows, struct 
     rc->def.pv = frame_cache(s) ? pv : NULL;
     rc->def.tri_flags = frame_cache(s) ? flags : NULL;
     rc->def.tri_shade = shade_cache(s) ? shade : NULL;
+    int bins = bins_on(s, ntris);
+    rc->bins.on = (uint8_t)bins;
+    rc->bins.nbuckets = (uint16_t)(bins && strip_rows ? (h + strip_rows - 1) / strip_rows : 0);
+    rc->bins.order = work_take(c, bins ? sizeof(uint16_t) * ntris : 0);
+    rc->bins.start = work_take(c, bins ? sizeof(uint16_t) * ((size_t)rc->bins.nbuckets + 1) : 0);
+    rc->bins.active = work_take(c, bins ? sizeof(uint16_t) * ntris : 0);
     rc->fast.nkeep = keep_slots(s, ntris);
     void *keep = work_take(c, sizeof(struct ras_fast_state) * rc->fast.nkeep);
     rc->fast.keep = rc->fast.nkeep ? keep : NULL;
@@ -165,8 +181,7 @@ size_t raster_work_size(const struct scene *s, uint16_t width, uint16_t height, 
 {
     struct ras_ctx scratch;
     struct work_carve c = { NULL, 0 };
-    (void)height;
-    if (carve(s, width, strip_rows, &scratch, &c)) return 0;
+    if (carve(s, width, height, strip_rows, &scratch, &c)) return 0;
     return c.off + WORK_ALIGN; /* slack to align the caller's pointer */
 }
 
@@ -230,7 +245,8 @@ int raster_init(void *work, size_t work_size, const struct scene *s, uint16_t wi
     struct ras_ctx *rc = ras_ctx_of(work);
     memset(rc, 0, sizeof *rc);
     struct work_carve c = { (uint8_t *)rc, 0 };
-    if (carve(s, width, strip_rows, rc, &c)) return -1;
+    if (carve(s, width, height, strip_rows, rc, &c)) return -1;
+    rc->bins.last_y0 = -1;
     rc->s = s;
     rc->w = width;
     rc->h = height;

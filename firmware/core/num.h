@@ -197,6 +197,9 @@ mat3 m3_transpose(const mat3 *a);
 mat3 m3_identity(void);
 mat3 m3_rot_y_deg(num deg);               /* the book's MakeOYRotationMatrix */
 vec4 m4_mul_v4(const mat4 *m, vec4 v);
+/* x, y, z of m4_mul_v4(m, (p, 1)), the same bits, without the fourth row
+ * and the products by 1 (a point through an affine matrix). */
+vec3 m4_mul_point(const mat4 *m, vec3 p);
 mat4 m4_mul(const mat4 *a, const mat4 *b);
 mat4 m4_transpose(const mat4 *a);
 mat4 m4_identity(void);

@@ -70,6 +70,17 @@ vec4 m4_mul_v4(const mat4 *m, vec4 v)
     return r;
 }
 
+vec3 m4_mul_point(const mat4 *m, vec3 p)
+{
+    num in[3] = { p.x, p.y, p.z }, out[3];
+    for (int i = 0; i < 3; i++) {
+        num s = NUM_ZERO;
+        for (int k = 0; k < 3; k++) s = num_add(s, num_mul(m->m[i][k], in[k]));
+        out[i] = num_add(s, m->m[i][3]);   /* num_mul(m, NUM_ONE) is m: no rounding */
+    }
+    return v3_make(out[0], out[1], out[2]);
+}
+
 mat4 m4_mul(const mat4 *a, const mat4 *b)
 {
     mat4 r;

@@ -6,6 +6,7 @@
  * (raster_fast.c) or the exact per-pixel fill (ras_fill_triangle with
  * ras_default_pixel). */
 #include "raster_fast.h"
+#include "num/num_int.h"
 
 /* Colour levels of RGB565 in Q10, round(c * L * 1024 / 255); 0 when a
  * channel lies outside 0..255. */
@@ -106,6 +107,19 @@ void ras_tri_cache(struct ras_ctx *rc, const struct ras_instance *in, const stru
 {
     vec3 V[3], N[3];
     int front = 0;
+    if (rc->s->ras.backface_cull) {
+        /* three projected corners whose area on screen, in the order a front
+         * face is drawn, is not positive: whichever way the triangle faces,
+         * it draws nothing (a back face is culled, a front face covers no
+         * pixel), so its facing need not be computed */
+        const struct ras_pv *pv = rc->def.pv + ri->vbase;
+        const struct ras_pv *a = &pv[t->v[0]], *b = &pv[t->v[1]], *c = &pv[t->v[2]];
+        if (a->inside && b->inside && c->inside &&
+            num_smul32(b->sx - a->sx, c->sy - a->sy) - num_smul32(b->sy - a->sy, c->sx - a->sx) <= 0) {
+            rc->def.tri_flags[gi] = 0;
+            return;
+        }
+    }
     if (!tri_facts(rc, ri, m, t, V, N, &front)) { rc->def.tri_flags[gi] = 0; return; }
     rc->def.tri_flags[gi] = (uint8_t)(RAS_TRI_LIVE | (front ? RAS_TRI_FRONT : 0));
     if (!rc->def.tri_shade) return;

@@ -128,8 +128,11 @@ static int fast_edges(const struct ras_ctx *rc, const struct ras_sv *v0, const s
     /* 32-bit edge arithmetic: corners within 2^14 sub-pixel units of each
      * other (1024 pixels at 4 sub-pixel bits); larger ones take the exact path */
     if ((int64_t)maxx - minx > (1 << 14) || (int64_t)maxy - miny > (1 << 14)) return -1;
-    int32_t c0 = minx >> sb, c1 = (maxx >> sb) + 1, r0 = miny >> sb, r1 = (maxy >> sb) + 1;
-    *rtop = r0;
+    int32_t half = (int32_t)1 << (sb - 1), one = (int32_t)1 << sb;
+    /* the box's columns; its rows those of the pixel centres within it (the
+     * depth plane is taken at the row above, rtop, in every case) */
+    int32_t c0 = minx >> sb, c1 = (maxx >> sb) + 1, r0 = (miny - half + one - 1) >> sb, r1 = (maxy - half) >> sb;
+    *rtop = miny >> sb;
     if (c0 < 0) c0 = 0;
     if (r0 < (int32_t)t->y0) r0 = t->y0;
     if (c1 > (int32_t)rc->w - 1) c1 = rc->w - 1;
@@ -138,13 +141,14 @@ static int fast_edges(const struct ras_ctx *rc, const struct ras_sv *v0, const s
 
     /* the exact path's edge functions at (c0, r0) and their steps; every
      * value inside the box is below 2^29 in magnitude */
-    int32_t half = (int32_t)1 << (sb - 1), one = (int32_t)1 << sb;
-    int64_t px = ((int64_t)c0 << sb) + half, py = ((int64_t)r0 << sb) + half;
+    int32_t px = (c0 << sb) + half, py = (r0 << sb) + half;
     const struct ras_sv *ea[3] = { v1, v2, v0 }, *eb[3] = { v2, v0, v1 };
     for (int i = 0; i < 3; i++) {
         int32_t dx = eb[i]->x - ea[i]->x, dy = eb[i]->y - ea[i]->y;
         int32_t bias = (dy < 0 || (dy == 0 && dx > 0)) ? 0 : -1;
-        S->wr[i] = (int32_t)ras_edge(ea[i]->x, ea[i]->y, eb[i]->x, eb[i]->y, px, py);
+        /* ras_edge's value, its two products in 32 x 32 -> 64 bits (the
+         * pixel lies in the box: every difference below 2^15) */
+        S->wr[i] = (int32_t)(num_smul32(dx, py - ea[i]->y) - num_smul32(dy, px - ea[i]->x));
         S->a[i] = -dy * one;
         S->b[i] = dx * one;
         fedge_init(&S->fe[i], S->a[i], S->b[i], S->wr[i], bias);

@@ -102,16 +102,10 @@ static void prepare_instance(struct ras_ctx *rc, uint16_t i, uint16_t frame, uin
         struct ras_vert *v = &rc->verts[vb + k];
         vec3 p = m->verts[k];
         if (o->instance_transform) {
-            vec4 p4 = { p.x, p.y, p.z, NUM_ONE };
-            p4 = m4_mul_v4(&ri->m, p4);
-            v->c = v3_make(p4.x, p4.y, p4.z);
+            v->c = m4_mul_point(&ri->m, p);
         } else {
             v->c = v3_add(p, in->position);
-            if (o->camera_transform) {
-                vec4 p4 = { v->c.x, v->c.y, v->c.z, NUM_ONE };
-                p4 = m4_mul_v4(&rc->cam, p4);
-                v->c = v3_make(p4.x, p4.y, p4.z);
-            }
+            if (o->camera_transform) v->c = m4_mul_point(&rc->cam, v->c);
         }
         if (rc->proj) {
             struct ras_proj *q = &rc->proj[vb + k];

@@ -17,6 +17,17 @@
 
 int64_t ras_floordiv(int64_t n, int64_t d, int64_t *rem)
 {
+    if (d > 0 && d <= (int64_t)UINT32_MAX) {
+        /* |n| below 2^32 (small triangles' set-up): one 32-bit division */
+        uint64_t un = n < 0 ? (uint64_t)0 - (uint64_t)n : (uint64_t)n;
+        if (un <= UINT32_MAX) {
+            uint32_t q = (uint32_t)un / (uint32_t)d, r = (uint32_t)un - q * (uint32_t)d;
+            if (n >= 0) { *rem = r; return q; }
+            if (r == 0) { *rem = 0; return -(int64_t)q; }
+            *rem = d - r;
+            return -(int64_t)q - 1;
+        }
+    }
 #if NUM_MODE == NUM_MODE_FIXED && RAS_DIV64_32
     if (d <= (int64_t)UINT32_MAX) {
         uint64_t un = n < 0 ? (uint64_t)0 - (uint64_t)n : (uint64_t)n;

@@ -111,7 +111,5 @@ num ras_scale_canvas(const struct ras_ctx *rc, num v)
 /* A model-space corner normal in camera space (the instance's rotations). */
 vec3 ras_corner_normal(const struct ras_inst *ri, vec3 n)
 {
-    vec4 v = { n.x, n.y, n.z, NUM_ONE };
-    v = m4_mul_v4(&ri->nmat, v);
-    return v3_make(v.x, v.y, v.z);
+    return m4_mul_point(&ri->nmat, n);
 }

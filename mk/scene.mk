@@ -31,10 +31,11 @@ TESTS += tests/system/test_scene_fuzz.sh:$(FUZZ_SCENE):$(FUZZ_SECONDS)
 # ---- scenec: scene file -> C source for the firmware -----------------------
 # Built in the double mode (the parser's exact doubles are emitted as NUM_C
 # literals) and linked with the NUM_FRAC 12 core bundle for render_work_size
-# (its fallback when the target's is not given).
+# (its fallback when the target's is not given). fopen is wrapped: scenec
+# --deps names every file the scene made it read (tools/scenec/scenec.c).
 $(SCENEC): $(call obj,host,double,tools/scenec/scenec.c tools/scene/scene_format.c $(SCENE_PARSER_SRCS)) $(BUILD)/host/core_fixed12.o
 	@mkdir -p $(@D)
-	$(Q)$(CC) -o $@ $^ -lm
+	$(Q)$(CC) -Wl,--wrap=fopen -o $@ $^ -lm
 PROGRAMS += $(SCENEC)
 
 # Every scene compiled for the default panel (ST7789 240x240, 16-row strips).

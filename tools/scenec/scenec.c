@@ -2,7 +2,7 @@
 /* scenec — compiles a scene file into C source for the firmware.
  *
  *   scenec [--size WxH] [--strip-rows N] [--fracs 20,...,12] [--id NAME]
- *          [--allow-wide] [--target-work BYTES] -o OUT.c SCENE
+ *          [--allow-wide] [--target-work BYTES] [--deps OUT.d] -o OUT.c SCENE
  *
  * Writes OUT.c (the scene as const data: models, textures, lights in flash;
  * one static work buffer of exactly render_work_size() bytes) and OUT.h (its
@@ -21,6 +21,10 @@
  * core of this 64-bit host (core_api_fixed12), an upper bound: the work
  * structures hold pointers and sizes, 8 bytes here and 4 on the target, and
  * every other member has the same size and alignment on both.
+ * --deps OUT.d writes a make rule: OUT.c and OUT.h depend on the scene and on
+ * every file it made scenec read (images, model and material files), each of
+ * those also a target of its own, so that a file that is gone later asks for
+ * a new run instead of stopping make (as cc -MMD -MP).
  */
 #include <math.h>
 #include <signal.h>
@@ -432,10 +436,69 @@ static void emit_scene(const struct scene *s, const char *id, const char *src, i
 }
 
 
+/* ---- the files read (--deps) -------------------------------------------------- */
+
+/* The parser opens every file it reads with fopen, which the link wraps
+ * (mk/scene.mk: -Wl,--wrap=fopen): each path opened for reading is kept. */
+FILE *__real_fopen(const char *path, const char *mode);
+FILE *__wrap_fopen(const char *path, const char *mode);
+
+static char *read_paths[64];
+static size_t nread_paths, dropped_paths;
+
+FILE *__wrap_fopen(const char *path, const char *mode)
+{
+    FILE *f = __real_fopen(path, mode);
+    if (!f || mode[0] != 'r' || strchr(mode, '+')) return f;
+    for (size_t i = 0; i < nread_paths; i++)
+        if (!strcmp(read_paths[i], path)) return f;
+    char *copy = nread_paths < sizeof read_paths / sizeof read_paths[0] ? malloc(strlen(path) + 1) : NULL;
+    if (!copy) {
+        dropped_paths++;
+        return f;
+    }
+    read_paths[nread_paths++] = strcpy(copy, path);
+    return f;
+}
+
+/* A path as a make word: 0, or -1 when make could not read it back. */
+static int make_word(FILE *f, const char *path)
+{
+    if (strpbrk(path, " \t\n:#%$\\")) return -1;
+    return fputs(path, f) < 0 ? -1 : 0;
+}
+
+/* OUT.d (written whole, then renamed into place): 0, or 1. */
+static int write_deps(const char *dpath, const char *outc, const char *scene)
+{
+    char tmp[1100], outh[1100];
+    size_t n = strlen(outc);
+    if (n < 3 || strcmp(outc + n - 2, ".c")) return 0;   /* write_outputs says why */
+    int ok = dropped_paths == 0 && snprintf(tmp, sizeof tmp, "%s.tmp", dpath) < (int)sizeof tmp &&
+             snprintf(outh, sizeof outh, "%s", outc) < (int)sizeof outh;
+    if (ok) outh[n - 1] = 'h';
+    FILE *f = ok ? fopen(tmp, "w") : NULL;
+    if (!f) {
+        fprintf(stderr, "scenec: cannot write %s\n", dpath);
+        return 1;
+    }
+    ok = make_word(f, outc) == 0 && fputc(' ', f) != EOF && make_word(f, outh) == 0 && fputs(":", f) >= 0;
+    for (size_t i = 0; ok && i < nread_paths; i++) ok = fputc(' ', f) != EOF && make_word(f, read_paths[i]) == 0;
+    ok = ok && fputc('\n', f) != EOF;
+    for (size_t i = 0; ok && i < nread_paths; i++)
+        if (strcmp(read_paths[i], scene)) ok = make_word(f, read_paths[i]) == 0 && fputs(":\n", f) >= 0;
+    if (fclose(f) || !ok || rename(tmp, dpath)) {
+        unlink(tmp);
+        fprintf(stderr, "scenec: cannot write %s (a path make cannot read, or a write error)\n", dpath);
+        return 1;
+    }
+    return 0;
+}
+
 static int usage(void)
 {
     fprintf(stderr, "usage: scenec [--size WxH] [--strip-rows N] [--fracs 20,...,12] [--id NAME] [--allow-wide] "
-                    "[--target-work BYTES] -o OUT.c SCENE\n");
+                    "[--target-work BYTES] [--deps OUT.d] -o OUT.c SCENE\n");
     return 2;
 }
 
@@ -445,7 +508,7 @@ struct args {
     int width, height, strip, allow_wide;
     long target_work;             /* -1: not given */
     int fracs[16], nfracs;
-    const char *outc, *path, *idarg;
+    const char *outc, *path, *idarg, *deps;
 };
 
 /* --fracs 20,...,12 into a->fracs; 0, or -1 for a malformed list */
@@ -491,6 +554,8 @@ static int parse_args(int argc, char **argv, struct args *a)
             if (*e || a->target_work < 0 || a->target_work > 0x7fffffffL) return -1;
         } else if (!strcmp(argv[i], "--allow-wide")) {
             a->allow_wide = 1;
+        } else if (!strcmp(argv[i], "--deps") && i + 1 < argc) {
+            a->deps = argv[++i];
         } else if (!strcmp(argv[i], "-o") && i + 1 < argc) {
             a->outc = argv[++i];
         } else if (argv[i][0] == '-' || a->path) {
@@ -662,6 +727,7 @@ int main(int argc, char **argv)
     rc = analyse(&a, s, &F);
     if (!rc) rc = work_sizes(&a, text, text_len, &work, &host_work);
     free(text);
+    if (!rc && a.deps) rc = write_deps(a.deps, a.outc, a.path);
     if (!rc) rc = write_outputs(&a, s, id, F.num_frac, scene_format_fits(&F, F.num_frac), work);
     if (rc) {
         scene_free(s);

@@ -55,6 +55,8 @@
 #ifndef FW_STRIP_ROWS
 #define FW_STRIP_ROWS 8
 #endif
+/* Frames of each scene before the next; 0: the scene's own (its `frames`,
+ * the length of its animation; make image, mk/image.mk). */
 #ifndef FW_FRAMES_PER_SCENE
 #define FW_FRAMES_PER_SCENE 3
 #endif
@@ -539,7 +541,8 @@ int main(void)
                 continue;
             }
             uint32_t last = 0;
-            for (uint16_t f = 0; f < FW_FRAMES_PER_SCENE; f++) last = frame(si, f, last, dual);
+            const uint16_t frames = FW_FRAMES_PER_SCENE ? (uint16_t)FW_FRAMES_PER_SCENE : fw_scenes[si].scene->frames;
+            for (uint16_t f = 0; f < frames; f++) last = frame(si, f, last, dual);
         }
     } while (fw_board_again());
     return 0;

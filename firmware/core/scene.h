@@ -107,6 +107,8 @@ struct ras_model {
     const struct ras_triangle *tris;
     uint8_t has_normals;
     uint8_t has_uvs;
+    uint8_t vertex_normals; /* 1: every corner of a vertex has the same normal (the
+                               renderer may light the vertex once, not each corner) */
     vec3 bound_center;
     num bound_radius;
 };

@@ -95,6 +95,36 @@ static void strip_order_free(void)
     }
 }
 
+/* Gouraud lighting once per vertex (models whose corners of a vertex all
+ * carry its normal, struct ras_model.vertex_normals, found by the parser)
+ * gives the image of lighting every corner: raster-11's sphere qualifies,
+ * its cubes (a normal per face at each corner) do not. */
+static void vertex_lighting_same(void)
+{
+    struct scene *s = default_scene("raster-11");
+    s->ras.shading = SHADE_GOURAUD;
+    s->ras.lighting = RAS_LIGHT_EXACT;
+    int sphere = -1, cubes_vn = 0;
+    for (uint16_t m = 0; m < s->nmodels; m++) {
+        if (s->models[m].ntris > 12) sphere = s->models[m].vertex_normals;
+        else cubes_vn |= s->models[m].vertex_normals;
+    }
+    check(sphere == 1 && cubes_vn == 0, "vertex_normals_found_by_parser",
+          "sphere %d (want 1), cubes %d (want 0)", sphere, cubes_vn);
+    struct frame a, b;
+    int rc = render_frame(s, 320, 240, 16, 0, &a);
+    /* the same scene with every model lit per corner */
+    struct ras_model *models = (struct ras_model *)(void *)s->models;
+    uint8_t keep[64];
+    for (uint16_t m = 0; m < s->nmodels && m < 64; m++) { keep[m] = models[m].vertex_normals; models[m].vertex_normals = 0; }
+    rc |= render_frame(s, 320, 240, 16, 0, &b);
+    for (uint16_t m = 0; m < s->nmodels && m < 64; m++) models[m].vertex_normals = keep[m];
+    check(!rc && !memcmp(a.rgb888, b.rgb888, 320 * 240 * 3) && frame_written(&a) > 5000, "vertex_lighting_same_image",
+          "per-vertex and per-corner Gouraud lighting differ (or nothing drawn)");
+    frame_free(&a);
+    frame_free(&b);
+}
+
 /* Closed meshes drawn with additive colour: each covered pixel must get
  * exactly one triangle. A counting render: every triangle writes colour 1
  * in red; the rgb888 red channel after rendering with depth off would only
@@ -463,6 +493,7 @@ int main(void)
 {
     strips_identical();
     strip_order_free();
+    vertex_lighting_same();
     fill_rule_closed_mesh();
     fast_coverage_exact();
     any_camera();

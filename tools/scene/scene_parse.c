@@ -1415,6 +1415,29 @@ static void check_top(struct parser *p, const struct node *top, struct top *t, s
     if (b->nlines > MAX_LINES) fail_at(p, 1, 1, "more than %d 3D lines", MAX_LINES);
 }
 
+/* struct ras_model.vertex_normals: 1 when the corners of each vertex all
+ * carry the same normal (bit for bit), so the renderer may light a vertex
+ * once for all its corners. 0 when it cannot tell (no memory to look). */
+static void mark_vertex_normals(struct ras_model *m)
+{
+    m->vertex_normals = 0;
+    if (!m->has_normals || m->nverts == 0) return;
+    uint32_t *first = malloc(sizeof *first * m->nverts);
+    if (!first) return;
+    for (uint32_t v = 0; v < m->nverts; v++) first[v] = UINT32_MAX;
+    int same = 1;
+    for (uint32_t t = 0; t < m->ntris && same; t++)
+        for (int k = 0; k < 3 && same; k++) {
+            uint16_t v = m->tris[t].v[k];
+            if (v >= m->nverts) continue;
+            if (first[v] == UINT32_MAX) { first[v] = 3 * t + (uint32_t)k; continue; }
+            const vec3 *a = &m->tris[first[v] / 3].n[first[v] % 3], *b = &m->tris[t].n[k];
+            same = !memcmp(a, b, sizeof *a);
+        }
+    m->vertex_normals = (uint8_t)same;
+    free(first);
+}
+
 /* name, canvas, viewport, background, frames, camera */
 static void read_view(struct parser *p, const struct top *t, struct scene *s, const char *default_name)
 {
@@ -1533,6 +1556,7 @@ static void read_scene(struct parser *p, const struct node *top, struct scene *s
     s->ncsg = (uint16_t)b.ncsg;
     s->csg = b.csg;
     s->nmodels = (uint16_t)b.nmodels;
+    for (int i = 0; i < b.nmodels; i++) mark_vertex_normals(&b.models[i]);
     s->models = b.models;
     s->ninstances = (uint16_t)b.ninstances;
     s->instances = b.instances;

@@ -321,8 +321,8 @@ static void emit_models(const struct scene *s)
         for (int m = 0; m < s->nmodels; m++) {
             const struct ras_model *md = &s->models[m];
             emit("    { .name = \"%s\", .nverts = %d, .ntris = %d, .verts = model%d_verts, .tris = model%d_tris,\n"
-                 "      .has_normals = %d, .has_uvs = %d, .bound_center = ",
-                 md->name, md->nverts, md->ntris, m, m, md->has_normals, md->has_uvs);
+                 "      .has_normals = %d, .has_uvs = %d, .vertex_normals = %d, .bound_center = ",
+                 md->name, md->nverts, md->ntris, m, m, md->has_normals, md->has_uvs, md->vertex_normals);
             emit_vec3(md->bound_center);
             emit(", .bound_radius = %s },\n", lit(md->bound_radius));
         }

@@ -74,10 +74,11 @@ static int fast_describe(const struct ras_ctx *rc, const struct ras_def_tri *dt,
     return 1;
 }
 
-/* Camera-space corners, facing and shading normals of a triangle of the
- * default path; 0 when it draws nothing (degenerate, or a culled back face). */
-static int tri_facts(const struct ras_ctx *rc, const struct ras_inst *ri, const struct ras_model *m,
-                     const struct ras_triangle *t, vec3 V[3], vec3 N[3], int *front)
+/* Camera-space corners, facing and (want_n) shading normals of a triangle
+ * of the default path; 0 when it draws nothing (degenerate, or a culled
+ * back face). */
+static int tri_facts_n(const struct ras_ctx *rc, const struct ras_inst *ri, const struct ras_model *m,
+                       const struct ras_triangle *t, vec3 V[3], vec3 N[3], int *front, int want_n)
 {
     const struct ras_options *o = &rc->s->ras;
     for (int k = 0; k < 3; k++) V[k] = rc->verts[ri->vbase + t->v[k]].c;
@@ -86,10 +87,18 @@ static int tri_facts(const struct ras_ctx *rc, const struct ras_inst *ri, const 
     if (facing == 0 && wf.x == 0 && wf.y == 0 && wf.z == 0) return 0; /* degenerate */
     *front = facing > 0;
     if (o->backface_cull && !*front) return 0;
+    if (!want_n) return 1;
     int face_n = o->computed_normals || !m->has_normals;
     vec3 nf = face_n ? ras_wnormal_narrow(wf) : v3_make(NUM_ZERO, NUM_ZERO, NUM_ZERO);
     for (int k = 0; k < 3; k++) N[k] = face_n ? nf : ras_corner_normal(ri, t->n[k]);
     return 1;
+}
+
+/* tri_facts_n with the normals. */
+static int tri_facts(const struct ras_ctx *rc, const struct ras_inst *ri, const struct ras_model *m,
+                     const struct ras_triangle *t, vec3 V[3], vec3 N[3], int *front)
+{
+    return tri_facts_n(rc, ri, m, t, V, N, front, 1);
 }
 
 static vec3 tri_centre(const vec3 V[3])
@@ -120,8 +129,20 @@ void ras_tri_cache(struct ras_ctx *rc, const struct ras_instance *in, const stru
             return;
         }
     }
-    if (!tri_facts(rc, ri, m, t, V, N, &front)) { rc->def.tri_flags[gi] = 0; return; }
+    if (!tri_facts_n(rc, ri, m, t, V, N, &front, !ri->vlit)) { rc->def.tri_flags[gi] = 0; return; }
     rc->def.tri_flags[gi] = (uint8_t)(RAS_TRI_LIVE | (front ? RAS_TRI_FRONT : 0));
+    if (ri->vlit) {
+        /* each vertex lit once, by the first live triangle that uses it:
+         * its corners' normals are all the same, so is their lighting */
+        for (int k = 0; k < 3; k++) {
+            uint32_t v = ri->vbase + t->v[k];
+            uint8_t bit = (uint8_t)(1u << (v & 7));
+            if (rc->def.vert_lit[v >> 3] & bit) continue;
+            rc->def.vert_lit[v >> 3] |= bit;
+            rc->def.vert_shade[v] = ras_compute_illumination(rc, V[k], ras_corner_normal(ri, t->n[k]), in->specular);
+        }
+        return;
+    }
     if (!rc->def.tri_shade) return;
     num *sh = rc->def.tri_shade + 3 * (size_t)gi;
     if (rc->def.shading == SHADE_GOURAUD)
@@ -283,7 +304,12 @@ void ras_default_render_triangle(struct ras_ctx *rc, const struct ras_instance *
     if (resume_kept(rc, gi, &slot)) return;
     vec3 V[3], N[3];
     int front;
+    num vsh[3];
     const num *shade = rc->def.tri_shade ? rc->def.tri_shade + 3 * (size_t)gi : NULL;
+    if (ri->vlit) {
+        for (int k = 0; k < 3; k++) vsh[k] = rc->def.vert_shade[ri->vbase + t->v[k]];
+        shade = vsh;
+    }
     if (!corners(rc, ri, m, t, gi, shade != NULL, V, N, &front)) return;
     struct ras_def_tri dt;
     describe(rc, in, m, t, V, &dt);

@@ -98,6 +98,9 @@ static void prepare_instance(struct ras_ctx *rc, uint16_t i, uint16_t frame, uin
         ri->m = o->camera_transform ? m4_mul(&rc->cam, &t) : t;
     }
     ri->visible = o->clip ? (uint8_t)ras_instance_visible(rc, ri, m, o->instance_transform ? in->scale : NUM_ONE) : 1;
+    ri->vlit = (uint8_t)(rc->def.vert_shade && ras_vertex_lit(s, in));
+    if (ri->vlit)   /* no vertex lit yet this frame */
+        for (uint32_t k = vb; k < vb + m->nverts; k++) rc->def.vert_lit[k >> 3] &= (uint8_t)~(1u << (k & 7));
     for (uint16_t k = 0; k < m->nverts; k++) {
         struct ras_vert *v = &rc->verts[vb + k];
         vec3 p = m->verts[k];

@@ -32,6 +32,7 @@ struct ras_inst {
     uint32_t vbase;  /* first of its vertices in ras_ctx.verts */
     uint32_t tbase;  /* first of its triangles in ras_ctx.tri_rows */
     uint8_t visible; /* survived bounding-sphere culling */
+    uint8_t vlit;    /* Gouraud lit per vertex (ras_def.vert_shade), not per corner */
 };
 
 /* A transformed vertex: camera space. */
@@ -98,6 +99,9 @@ struct ras_def {
     struct ras_pv *pv;
     uint8_t *tri_flags;
     num *tri_shade;          /* 3 a triangle: Gouraud corners, or the flat intensity first */
+    num *vert_shade;         /* Gouraud lighting of each vertex of vertex-lit instances
+                                (ras_inst.vlit), made when a live triangle first uses it */
+    uint8_t *vert_lit;       /* one bit a vertex: vert_shade made this frame */
 };
 
 /* The fast span path's own state (the default path with perspective_step > 1). */
@@ -229,6 +233,8 @@ void ras_book_render_triangle(struct ras_ctx *rc, const struct ras_instance *in,
 /* The default path's triangle gi (its index in the frame's tables). */
 void ras_default_render_triangle(struct ras_ctx *rc, const struct ras_instance *in, const struct ras_inst *ri,
                                  const struct ras_model *m, const struct ras_triangle *t, uint32_t gi);
+/* 1 when instance in's Gouraud corners are lit per vertex (raster_work.c). */
+int ras_vertex_lit(const struct scene *s, const struct ras_instance *in);
 /* Per frame: the facts of the default path's triangle gi kept for every
  * strip, and the lighting of its Gouraud corners or flat face. */
 void ras_tri_cache(struct ras_ctx *rc, const struct ras_instance *in, const struct ras_inst *ri,

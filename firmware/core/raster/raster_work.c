@@ -104,6 +104,26 @@ static int shade_cache(const struct scene *s)
     return frame_cache(s) && (eff_shading(s) == SHADE_GOURAUD || eff_shading(s) == SHADE_FLAT);
 }
 
+/* An instance whose Gouraud corners are lit once per vertex: its model's
+ * normals are the vertices' own (struct ras_model.vertex_normals), so a
+ * vertex's corners would all get the same lighting. */
+int ras_vertex_lit(const struct scene *s, const struct ras_instance *in)
+{
+    const struct ras_model *m = &s->models[in->model];
+    return shade_cache(s) && eff_shading(s) == SHADE_GOURAUD && !s->ras.computed_normals && m->has_normals &&
+           m->vertex_normals;
+}
+
+/* Which lighting caches the scene's instances need: bit 0 per corner (a
+ * triangle's three values), bit 1 per vertex. */
+static int shade_caches(const struct scene *s)
+{
+    int need = 0;
+    if (!shade_cache(s)) return 0;
+    for (uint16_t i = 0; i < s->ninstances; i++) need |= ras_vertex_lit(s, &s->instances[i]) ? 2 : 1;
+    return need;
+}
+
 /* Triangle set-ups the fast path keeps from one strip to the next: one
  * slot a triangle up to RAS_KEEP_MAX (triangle i in slot i mod slots). */
 #define RAS_KEEP_MAX 32
@@ -153,10 +173,15 @@ static int carve(const struct scene *s, uint16_t w, uint16_t h, uint16_t strip_r
     for (uint16_t i = 0; i < s->ntextures; i++) (void)work_take(c, tex565_size(s, &s->textures[i]));
     void *pv = work_take(c, frame_cache(s) ? sizeof(struct ras_pv) * nverts : 0);
     void *flags = work_take(c, frame_cache(s) ? ntris : 0);
-    void *shade = work_take(c, shade_cache(s) ? sizeof(num) * 3 * ntris : 0);
+    int caches = shade_caches(s);
+    void *shade = work_take(c, (caches & 1) ? sizeof(num) * 3 * ntris : 0);
+    void *vshade = work_take(c, (caches & 2) ? sizeof(num) * nverts : 0);
+    void *vlit = work_take(c, (caches & 2) ? (nverts + 7) / 8 : 0);
     rc->def.pv = frame_cache(s) ? pv : NULL;
     rc->def.tri_flags = frame_cache(s) ? flags : NULL;
-    rc->def.tri_shade = shade_cache(s) ? shade : NULL;
+    rc->def.tri_shade = (caches & 1) ? shade : NULL;
+    rc->def.vert_shade = (caches & 2) ? vshade : NULL;
+    rc->def.vert_lit = (caches & 2) ? vlit : NULL;
     int bins = bins_on(s, ntris);
     rc->bins.on = (uint8_t)bins;
     rc->bins.nbuckets = (uint16_t)(bins && strip_rows ? (h + strip_rows - 1) / strip_rows : 0);

@@ -1,0 +1,32 @@
+#!/bin/sh
+# SPDX-License-Identifier: MIT
+# image_scene.sh — one scene of `make image` (mk/image.mk): its work memory
+# measured on the target (tools/scenec/target_work.sh), then the scene
+# compiled by tools/scenec into OUT.c and OUT.h, with OUT.log (scenec's
+# report, ending in its scenec-summary line) and OUT.d (the files the scene
+# made scenec read, as a make rule).
+#   firmware/app/image_scene.sh IMAGE SCENEC PROBE SCENE WxH STRIP_ROWS ID OUT.c
+# Exit 0; or 2 with one line "image IMAGE: MESSAGE" on stderr, for a scene
+# scenec refuses in scenec's words (FILE:LINE:COLUMN: error: ...), else the
+# work probe's. OUT.c and OUT.h are replaced only when scenec succeeds.
+set -u
+[ $# -eq 8 ] || { echo "usage: image_scene.sh IMAGE SCENEC PROBE SCENE WxH STRIP_ROWS ID OUT.c" >&2; exit 2; }
+image=$1 scenec=$2 probe=$3 scene=$4 size=$5 strip=$6 id=$7 out=$8
+base=${out%.c}
+fail() {
+  echo "image $image: ${1:-$2}" >&2
+  rm -f "$base.err" "$base.log.tmp" "$base.check.c" "$base.check.h"
+  exit 2
+}
+if ! tw=$(tools/scenec/target_work.sh "$probe" "$scene" "${size%x*}" "${size#*x}" "$strip" 2>"$base.err"); then
+  probe_err=$(head -n 1 "$base.err")
+  if "$scenec" --size "$size" --strip-rows "$strip" --id "$id" -o "$base.check.c" "$scene" \
+     >/dev/null 2>"$base.err"; then
+    fail "$probe_err" "the work probe failed on $scene"
+  fi
+  fail "$(head -n 1 "$base.err")" "scenec refused $scene"
+fi
+"$scenec" --size "$size" --strip-rows "$strip" --id "$id" --target-work "$tw" --deps "$base.d" -o "$out" "$scene" \
+  >"$base.log.tmp" 2>"$base.err" || fail "$(head -n 1 "$base.err")" "scenec refused $scene"
+mv "$base.log.tmp" "$base.log"
+rm -f "$base.err"

@@ -64,5 +64,11 @@ int raster_init(void *work, size_t work_size, const struct scene *s, uint16_t wi
 int raster_begin_frame(void *work, uint16_t frame);
 /* Rows [t->y0, t->y1) of the current frame (at most strip_rows). */
 int raster_strip(void *work, struct render_target *t, struct render_stats *st);
+/* A sibling context (render.h's render_init_sibling): its work memory holds
+ * only what strips write; raster_sibling_frame takes the owner's current
+ * frame (after the owner's raster_begin_frame). */
+size_t raster_sibling_work_size(const struct scene *s, uint16_t width, uint16_t height, uint16_t strip_rows);
+int raster_init_sibling(void *work, size_t work_size, const void *owner_work);
+int raster_sibling_frame(void *work);
 
 #endif

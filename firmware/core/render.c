@@ -25,9 +25,29 @@ int render_init(struct render_ctx *ctx, const struct scene *s, uint16_t width, u
     ctx->frame = 0;
     ctx->work = work;
     ctx->work_size = work_size;
+    ctx->owner = NULL;
     if (s->kind == SCENE_RAYTRACE) return rt_init(work, work_size, s, width, height);
     if (s->kind == SCENE_RASTER) return raster_init(work, work_size, s, width, height, strip_rows);
     return -1;
+}
+
+size_t render_sibling_work_size(const struct scene *s, uint16_t width, uint16_t height, uint16_t strip_rows)
+{
+    if (s->kind == SCENE_RASTER) return raster_sibling_work_size(s, width, height, strip_rows);
+    return render_work_size(s, width, height, strip_rows);
+}
+
+int render_init_sibling(struct render_ctx *ctx, const struct render_ctx *owner, void *work, size_t work_size)
+{
+    const struct scene *s = owner->scene;
+    if (owner->owner) return -1;
+    if (s->kind != SCENE_RASTER) return render_init(ctx, s, owner->width, owner->height, owner->strip_rows, work, work_size);
+    if (work_size < raster_sibling_work_size(s, owner->width, owner->height, owner->strip_rows)) return -1;
+    *ctx = *owner;
+    ctx->work = work;
+    ctx->work_size = work_size;
+    ctx->owner = owner;
+    return raster_init_sibling(work, work_size, owner->work);
 }
 
 int render_set_pass(struct render_ctx *ctx, uint8_t pass)
@@ -43,6 +63,11 @@ int render_set_pass(struct render_ctx *ctx, uint8_t pass)
 
 int render_begin_frame(struct render_ctx *ctx, uint16_t frame)
 {
+    if (ctx->owner) {
+        if (ctx->owner->frame != frame) return -1;
+        ctx->frame = frame;
+        return raster_sibling_frame(ctx->work);
+    }
     ctx->frame = frame;
     if (ctx->scene->kind == SCENE_RAYTRACE) return rt_begin_frame(ctx->work, frame);
     if (ctx->scene->kind == SCENE_RASTER) return raster_begin_frame(ctx->work, frame);

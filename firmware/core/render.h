@@ -30,6 +30,7 @@ struct render_ctx {
     uint16_t frame;
     void *work;              /* renderer state, in caller memory */
     size_t work_size;
+    const struct render_ctx *owner;  /* a sibling's owner (render_init_sibling), NULL: none */
 };
 
 /* Bytes of work memory the renderer needs for this scene at this size with
@@ -40,7 +41,25 @@ size_t render_work_size(const struct scene *s, uint16_t width, uint16_t height, 
 int render_init(struct render_ctx *ctx, const struct scene *s, uint16_t width, uint16_t height,
                 uint16_t strip_rows, void *work, size_t work_size);
 
-/* Prepares frame `frame` (animation, per-frame constants, binning). */
+/* A sibling context: another core rendering other strips of the frames
+ * `owner` (an initialised context, not itself a sibling) prepares. For a
+ * rasterized scene its work memory holds only what a strip writes (a depth
+ * buffer, the list of the strip's triangles, set-ups kept between strips,
+ * the stencil: render_sibling_work_size bytes, a fraction of the owner's
+ * for a mesh) and it reads everything else from the owner's: the frame's
+ * transformed vertices, binning and lighting are made once, by the owner.
+ * render_begin_frame(ctx, f) on it takes the owner's frame f: call it after
+ * the owner's render_begin_frame(owner, f) has returned, and call the
+ * owner's next one only once the sibling's strips of frame f are done. For
+ * a ray-traced scene a sibling is an independent context (the size is
+ * render_work_size's, and it prepares its own frames). 0, or -1 (work_size
+ * too small, owner a sibling). */
+size_t render_sibling_work_size(const struct scene *s, uint16_t width, uint16_t height, uint16_t strip_rows);
+int render_init_sibling(struct render_ctx *ctx, const struct render_ctx *owner, void *work, size_t work_size);
+
+/* Prepares frame `frame` (animation, per-frame constants, binning); on a
+ * sibling, takes the owner's frame `frame` (-1 when the owner's current
+ * frame is another). */
 int render_begin_frame(struct render_ctx *ctx, uint16_t frame);
 
 /* Renders rows [t->y0, t->y1) of the current frame into t (at most

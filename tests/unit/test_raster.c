@@ -125,6 +125,52 @@ static void vertex_lighting_same(void)
     frame_free(&b);
 }
 
+/* Two cores' contexts: an owner that prepares each frame and a sibling
+ * (render_init_sibling) that shares it, taking strips in turn as the board
+ * does (claiming the next free one), give every frame of one context, with
+ * a fraction of its memory for the sibling. */
+static void sibling_shares_frame(void)
+{
+    static const char *const names[] = { "raster-11", "raster-13", "raster-rt-scene", "raster-08" };
+    enum { W = 320, H = 240, R = 16 };
+    for (size_t n = 0; n < sizeof names / sizeof names[0]; n++)
+        for (int book = 0; book < 2; book++) {
+            struct scene *s = book ? book_scene(names[n]) : default_scene(names[n]);
+            size_t ws = render_work_size(s, W, H, R), ss = render_sibling_work_size(s, W, H, R);
+            void *w0 = malloc(ws), *w1 = malloc(ss);
+            static uint16_t px[W * R], img[W * H];
+            static uint8_t c888[W * R * 3], img888[W * H * 3];
+            struct render_ctx c0, c1;
+            int bad = !w0 || !w1 || render_init(&c0, s, W, H, R, w0, ws) || render_init_sibling(&c1, &c0, w1, ss);
+            if (!bad && render_init_sibling(&c1, &c1, w1, ss) == 0) bad = 2;   /* a sibling's sibling */
+            if (!bad && render_init_sibling(&c1, &c0, w1, ss - 1) == 0) bad = 3;
+            if (!bad) bad = render_init_sibling(&c1, &c0, w1, ss);
+            for (uint16_t f = 0; f < 3 && !bad; f++) {
+                struct frame whole;
+                if (render_frame(s, W, H, R, f, &whole)) { bad = 4; break; }
+                if (render_begin_frame(&c0, f) || render_begin_frame(&c1, (uint16_t)(f + 1)) == 0 ||
+                    render_begin_frame(&c1, f)) { bad = 5; frame_free(&whole); break; }
+                /* strips in turn: 0, 1 on the owner, 2 on the sibling, ... in
+                 * a pattern that changes with the frame */
+                for (int k = 0; k * R < H && !bad; k++) {
+                    int y0 = k * R, y1 = y0 + R < H ? y0 + R : H;
+                    struct render_ctx *c = ((k * (f + 1)) / 2) % 2 ? &c1 : &c0;
+                    struct render_target t = { W, H, (uint16_t)y0, (uint16_t)y1, px, c888, NULL };
+                    if (render_strip(c, &t, NULL)) bad = 6;
+                    memcpy(img + (size_t)y0 * W, px, (size_t)(y1 - y0) * W * 2);
+                    memcpy(img888 + (size_t)y0 * W * 3, c888, (size_t)(y1 - y0) * W * 3);
+                }
+                if (!bad && (memcmp(img, whole.rgb565, sizeof img) || memcmp(img888, whole.rgb888, sizeof img888))) bad = 7;
+                frame_free(&whole);
+            }
+            char name[96];
+            snprintf(name, sizeof name, "sibling_context_same_frames_%s_%s", names[n], book ? "book" : "default");
+            check(bad == 0 && ss < ws, name, "failure %d (sibling %zu bytes, owner %zu)", bad, ss, ws);
+            free(w0);
+            free(w1);
+        }
+}
+
 /* Closed meshes drawn with additive colour: each covered pixel must get
  * exactly one triangle. A counting render: every triangle writes colour 1
  * in red; the rgb888 red channel after rendering with depth off would only
@@ -494,6 +540,7 @@ int main(void)
     strips_identical();
     strip_order_free();
     vertex_lighting_same();
+    sibling_shares_frame();
     fill_rule_closed_mesh();
     fast_coverage_exact();
     any_camera();

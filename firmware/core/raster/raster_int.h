@@ -158,6 +158,15 @@ struct ras_bins {
     int32_t last_y0;         /* the strip the active list was made for; -1: none */
 };
 
+/* A sibling context's own tables (raster_init_sibling): what its strips
+ * write; everything else is its owner's, copied at each frame. */
+struct ras_own {
+    uint8_t *depth;
+    uint16_t *active;
+    struct ras_fast_state *keep;
+    uint8_t *stencil;
+};
+
 /* The rasterizer's state, in the caller's work memory: what every path
  * uses, then the state each path owns. */
 struct ras_ctx {
@@ -183,6 +192,8 @@ struct ras_ctx {
     struct ras_bins bins;
     struct ras_fast fast;
     struct ras_c15 c15;
+    const struct ras_ctx *owner;   /* a sibling's owner (raster_init_sibling), NULL: none */
+    struct ras_own own;            /* a sibling's own tables */
 };
 
 /* The state in the caller's work memory, at its first WORK_ALIGN boundary

@@ -133,6 +133,20 @@ static uint16_t keep_slots(const struct scene *s, uint32_t ntris)
     return (uint16_t)(ntris < RAS_KEEP_MAX ? ntris : RAS_KEEP_MAX);
 }
 
+/* The tables a strip writes (its depth buffer, the active triangle list,
+ * the set-ups kept between strips, the stencil): the whole of a sibling
+ * context's own memory (struct ras_own), the last of an owner's. */
+static void carve_strip_tables(const struct scene *s, uint16_t w, uint16_t strip_rows, uint32_t ntris,
+                               struct ras_ctx *rc, struct work_carve *c)
+{
+    rc->bins.active = work_take(c, rc->bins.on ? sizeof(uint16_t) * ntris : 0);
+    rc->fast.nkeep = keep_slots(s, ntris);
+    void *keep = work_take(c, sizeof(struct ras_fast_state) * rc->fast.nkeep);
+    rc->fast.keep = rc->fast.nkeep ? keep : NULL;
+    rc->depth = work_take(c, (size_t)depth_bytes(s) * w * strip_rows);
+    rc->c15.stencil = work_take(c, ras_ch15_stencil_size(s, w, strip_rows));
+}
+
 /* Every table of the state, in order, from c (c->base NULL: measuring, rc a
  * scratch context). The instances' models are checked first: -1 when one
  * is missing. */
@@ -187,18 +201,13 @@ static int carve(const struct scene *s, uint16_t w, uint16_t h, uint16_t strip_r
     rc->bins.nbuckets = (uint16_t)(bins && strip_rows ? (h + strip_rows - 1) / strip_rows : 0);
     rc->bins.order = work_take(c, bins ? sizeof(uint16_t) * ntris : 0);
     rc->bins.start = work_take(c, bins ? sizeof(uint16_t) * ((size_t)rc->bins.nbuckets + 1) : 0);
-    rc->bins.active = work_take(c, bins ? sizeof(uint16_t) * ntris : 0);
-    rc->fast.nkeep = keep_slots(s, ntris);
-    void *keep = work_take(c, sizeof(struct ras_fast_state) * rc->fast.nkeep);
-    rc->fast.keep = rc->fast.nkeep ? keep : NULL;
     uint16_t nspec = spec_exponents(s, NULL, NULL);
     rc->fast.spec_tab = work_take(c, sizeof(uint16_t) * 257 * nspec);
     rc->fast.spec_step = work_take(c, sizeof(uint32_t) * 2 * nspec);
     rc->fast.inst_spec = work_take(c, sizeof(int16_t) * s->ninstances);
-    rc->depth = work_take(c, (size_t)depth_bytes(s) * w * strip_rows);
     rc->c15.adj = work_take(c, ras_ch15_adj_size(s, ntris));
     rc->c15.smap = work_take(c, ras_ch15_smap_size(s));
-    rc->c15.stencil = work_take(c, ras_ch15_stencil_size(s, w, strip_rows));
+    carve_strip_tables(s, w, strip_rows, ntris, rc, c);
     return 0;
 }
 
@@ -292,5 +301,70 @@ int raster_init(void *work, size_t work_size, const struct scene *s, uint16_t wi
     init_viewport(rc);
     init_textures(rc);
     ras_ch15_init(rc);
+    return 0;
+}
+
+/* ---- a sibling context: another core's strips of the owner's frames ---- */
+
+/* The scene's triangles in every instance (carve's count, without its checks). */
+static uint32_t scene_tris(const struct scene *s)
+{
+    uint32_t n = 0;
+    for (uint16_t i = 0; i < s->ninstances; i++)
+        if (s->instances[i].model < s->nmodels) n += s->models[s->instances[i].model].ntris;
+    return n;
+}
+
+size_t raster_sibling_work_size(const struct scene *s, uint16_t width, uint16_t height, uint16_t strip_rows)
+{
+    struct ras_ctx scratch;
+    struct work_carve c = { NULL, 0 };
+    (void)height;
+    memset(&scratch, 0, sizeof scratch);
+    uint32_t ntris = scene_tris(s);
+    scratch.bins.on = (uint8_t)bins_on(s, ntris);
+    (void)work_take(&c, sizeof(struct ras_ctx));
+    carve_strip_tables(s, width, strip_rows, ntris, &scratch, &c);
+    return c.off + WORK_ALIGN;
+}
+
+/* The per-strip state of a sibling made new: its own tables, nothing kept. */
+static void sibling_reset(struct ras_ctx *rc, const struct ras_ctx *ow, const struct ras_own *own)
+{
+    rc->owner = ow;
+    rc->own = *own;
+    rc->depth = own->depth;
+    rc->bins.active = own->active;
+    rc->fast.keep = own->keep;
+    rc->c15.stencil = own->stencil;
+    for (uint16_t k = 0; k < rc->fast.nkeep; k++) rc->fast.keep[k].tri = UINT32_MAX;
+    rc->bins.nactive = 0;
+    rc->bins.next_bucket = 0;
+    rc->bins.last_y0 = -1;
+}
+
+int raster_init_sibling(void *work, size_t work_size, const void *owner_work)
+{
+    const struct ras_ctx *ow = ras_ctx_of((void *)(uintptr_t)owner_work);
+    if (ow->owner) return -1;   /* a sibling's sibling: take the owner's */
+    if (work_size < raster_sibling_work_size(ow->s, ow->w, ow->h, ow->strip_rows)) return -1;
+    struct ras_ctx *rc = ras_ctx_of(work);
+    *rc = *ow;
+    struct work_carve c = { (uint8_t *)rc, 0 };
+    (void)work_take(&c, sizeof(struct ras_ctx));
+    carve_strip_tables(ow->s, ow->w, ow->strip_rows, ow->ntris, rc, &c);
+    struct ras_own own = { rc->depth, rc->bins.active, rc->fast.keep, rc->c15.stencil };
+    sibling_reset(rc, ow, &own);
+    return 0;
+}
+
+int raster_sibling_frame(void *work)
+{
+    struct ras_ctx *rc = ras_ctx_of(work);
+    const struct ras_ctx *ow = rc->owner;
+    if (!ow) return -1;
+    struct ras_own own = rc->own;
+    *rc = *ow;   /* the frame: camera, lights, fast Phong's lights, counts, every table's address */
+    sibling_reset(rc, ow, &own);
     return 0;
 }

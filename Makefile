@@ -89,12 +89,19 @@ $(BUILD)/$(1)/$(2)/%.o: %.c
 	$(Q)$$(CC) $(CSTD) $(WARN) $(VFLAGS_$(1)) $(MODE_FLAGS_$(2)) $(INCLUDES) $$(EXTRA_CFLAGS) -MMD -MP -c $$< -o $$@
 endef
 
+# libpng through pkg-config (host_sim's PNG output, the scene parser's PNG
+# textures); recursive (=) so that it is asked only when a recipe runs, after
+# tools/deps.sh may have installed it.
+PNG_CFLAGS = $(shell pkg-config --cflags libpng 2>/dev/null)
+PNG_LIBS   = $(or $(shell pkg-config --libs libpng 2>/dev/null),-lpng)
+
 # $(call program,OUT,OBJECTS,VARIANT[,LIBS]): links OBJECTS into the host
-# program OUT with VARIANT's link flags.
+# program OUT with VARIANT's link flags (and libpng, which the scene parser
+# needs wherever it is linked in).
 define PROGRAM_RULE
 $(1): $(2)
 	@mkdir -p $$(@D)
-	$(Q)$$(CC) $(LDFLAGS_$(3)) -o $$@ $$^ $(4) -lm
+	$(Q)$$(CC) $(LDFLAGS_$(3)) -o $$@ $$^ $(4) $$(PNG_LIBS) -lm
 endef
 program = $(eval $(call PROGRAM_RULE,$(strip $(1)),$(strip $(2)),$(strip $(3)),$(strip $(4))))
 

@@ -16,11 +16,7 @@ HOST_SIM_SRCS += host_sim/window.c
 $(foreach v,$(VARIANTS),$(call obj,$(v),none,host_sim/window.c)): EXTRA_CFLAGS += $(SDL2_FLAGS)
 $(foreach v,$(VARIANTS),$(call obj,$(v),none,host_sim/window.c)): $(CONFIG_STAMP)
 
-# libpng through pkg-config; recursive (=) so that it is asked only when a
-# recipe runs, after tools/deps.sh may have installed it.
-PNG_CFLAGS = $(shell pkg-config --cflags libpng 2>/dev/null)
-PNG_LIBS   = $(or $(shell pkg-config --libs libpng 2>/dev/null),-lpng)
-
+# libpng: PNG_CFLAGS and PNG_LIBS are the Makefile's.
 $(foreach v,$(VARIANTS),$(call obj,$(v),none,host_sim/imgio.c)): EXTRA_CFLAGS += $(PNG_CFLAGS)
 # libpng is a distribution package: install it first if it is missing.
 $(foreach v,$(VARIANTS),$(call obj,$(v),none,host_sim/imgio.c)): | deps

@@ -15,7 +15,7 @@ $(BUILD)/host/fixed/firmware/app/%.o: EXTRA_CFLAGS += -Ifirmware/app
 $(BUILD)/host/none/tests/support/fw_host_ref.o: EXTRA_CFLAGS += -Ifirmware/app
 $(FW_HOST_REF): $(call obj,host,none,tests/support/fw_host_ref.c) $(call obj,host,fixed,$(FW_SCENE_SRCS)) \
                 $(BUILD)/host/core_fixed.o
-	$(Q)$(CC) $^ -lm -o $@
+	$(Q)$(CC) $^ $(PNG_LIBS) -lm -o $@
 
 TEST_DEPS += $(RP2040SIM_DEPS) $(FW_HOST_REF) $(FW_OUT)/pico/cgfs-1core.elf $(FW_OUT)/pico/cgfs-1core.bin
 TESTS     += tests/system/test_rp2040sim.sh:$(BUILD)

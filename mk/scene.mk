@@ -4,6 +4,12 @@
 
 SCENE_PARSER_SRCS := tools/scene/scene_parse.c $(CORE_NUM_SRCS) firmware/core/mipmap.c
 
+# PNG textures (libpng, WITH_PNG) in every host build of the parser; the
+# images that parse scenes on an emulated MCU (the work probe, bench_file)
+# build it without, and read binary PPM only.
+$(foreach v,$(VARIANTS),$(BUILD)/$(v)/%/tools/scene/scene_parse.o): EXTRA_CFLAGS += -DWITH_PNG $(PNG_CFLAGS)
+$(foreach v,$(VARIANTS),$(foreach m,$(COMPILE_MODES),$(call obj,$(v),$(m),tools/scene/scene_parse.c))): | deps
+
 # test_scene_<mode>: the parser built alone in each numeric mode.
 $(foreach m,$(NUM_MODES),$(call program,$(BUILD)/asan/tests/test_scene_$(m),\
     $(call obj,asan,$(m),tests/unit/test_scene.c $(SCENE_PARSER_SRCS)),asan))
@@ -35,7 +41,7 @@ TESTS += tests/system/test_scene_fuzz.sh:$(FUZZ_SCENE):$(FUZZ_SECONDS)
 # --deps names every file the scene made it read (tools/scenec/scenec.c).
 $(SCENEC): $(call obj,host,double,tools/scenec/scenec.c tools/scene/scene_format.c $(SCENE_PARSER_SRCS)) $(BUILD)/host/core_fixed12.o
 	@mkdir -p $(@D)
-	$(Q)$(CC) -Wl,--wrap=fopen -o $@ $^ -lm
+	$(Q)$(CC) -Wl,--wrap=fopen -o $@ $^ $(PNG_LIBS) -lm
 PROGRAMS += $(SCENEC)
 
 # Every scene compiled for the default panel (ST7789 240x240, 16-row strips).

@@ -24,6 +24,9 @@
 #include <string.h>
 #include "scene_parse.h"
 #include "mipmap.h"
+#ifdef WITH_PNG
+#include <png.h>
+#endif
 
 #define MAX_DEPTH      32
 #define ARENA_LIMIT    ((size_t)256 << 20)   /* total bytes a scene may allocate */
@@ -89,22 +92,49 @@ struct parser {
     char *err;
     size_t errlen;
     int oom;                /* the failure was an allocation */
+    FILE *files[3];         /* files being read (open_file), closed when the parse fails */
 };
+
+static void set_error(struct parser *p, const char *file, int line, int col, const char *fmt, va_list ap)
+{
+    char msg[400];
+    vsnprintf(msg, sizeof msg, fmt, ap);
+    if (p->err && p->errlen)
+        snprintf(p->err, p->errlen, "%s:%d:%d: error: %s", file, line, col, msg);
+}
 
 static void fail_at(struct parser *p, int line, int col, const char *fmt, ...)
 {
-    char msg[400];
     va_list ap;
     va_start(ap, fmt);
-    vsnprintf(msg, sizeof msg, fmt, ap);
+    set_error(p, p->file, line, col, fmt, ap);
     va_end(ap);
-    if (p->err && p->errlen)
-        snprintf(p->err, p->errlen, "%s:%d:%d: error: %s", p->file, line, col, msg);
+    longjmp(p->fail, 1);
+}
+
+/* An error in another file than the scene (a model, material or image file). */
+static void fail_in(struct parser *p, const char *file, int line, int col, const char *fmt, ...)
+{
+    va_list ap;
+    va_start(ap, fmt);
+    set_error(p, file, line, col, fmt, ap);
+    va_end(ap);
     longjmp(p->fail, 1);
 }
 
 #define FAIL_N(p, nd, ...) fail_at((p), (nd)->line, (nd)->col, __VA_ARGS__)
 #define FAIL_K(p, nd, ...) fail_at((p), (nd)->kline, (nd)->kcol, __VA_ARGS__)
+
+/* A place in the scene file or in a file it reads. */
+struct where { const char *file; int line, col; };
+
+#define FAIL_W(p, w, ...) fail_in((p), (w)->file, (w)->line, (w)->col, __VA_ARGS__)
+
+static struct where node_where(const struct parser *p, const struct node *n)
+{
+    struct where w = { p->file, n->line, n->col };
+    return w;
+}
 
 static void *alloc(struct parser *p, size_t n)
 {
@@ -146,6 +176,15 @@ static char *dup_str(struct parser *p, const char *s, size_t n)
     memcpy(d, s, n);
     d[n] = 0;
     return d;
+}
+
+/* Closes the files a failed parse left open. */
+static void release_files(struct parser *p)
+{
+    for (size_t i = 0; i < sizeof p->files / sizeof p->files[0]; i++) {
+        if (p->files[i]) fclose(p->files[i]);
+        p->files[i] = NULL;
+    }
 }
 
 /* ---- lexer ------------------------------------------------------------ */
@@ -419,12 +458,18 @@ static void want_kind(struct parser *p, const struct node *n, int kind, const ch
 }
 
 /* The range the build can hold (fixed point: |x| < 2^(31-NUM_FRAC)). */
-static num to_num(struct parser *p, const struct node *n, double d, const char *what)
+static num to_num_at(struct parser *p, const struct where *at, double d, const char *what)
 {
     double hi = num_to_double(NUM_MAX), lo = num_to_double(NUM_MIN);
     if (!(d <= hi && d >= lo))
-        FAIL_N(p, n, "%s: %.17g is out of range for %s numbers (%.6g .. %.6g)", what, d, NUM_NAME, lo, hi);
+        FAIL_W(p, at, "%s: %.17g is out of range for %s numbers (%.6g .. %.6g)", what, d, NUM_NAME, lo, hi);
     return num_from_double(d);
+}
+
+static num to_num(struct parser *p, const struct node *n, double d, const char *what)
+{
+    struct where at = node_where(p, n);
+    return to_num_at(p, &at, d, what);
 }
 
 static double get_num(struct parser *p, const struct node *n, const char *what)
@@ -1165,30 +1210,97 @@ static void gen_crate(uint8_t *px, int w, int h)
         }
 }
 
-/* Binary PPM (P6, maxval 255) next to the scene file. */
-static uint8_t *load_ppm(struct parser *p, const struct node *at, const char *name, int *w, int *h)
+/* dir + name into path[FILE_PATH_MAX]: the name of a file the scene reads (`what` says which
+ * kind in messages) is a relative path inside the scene's directory, of letters, digits, '_',
+ * '-', '.' and '/'. */
+#define FILE_PATH_MAX 1400
+
+static void file_path(struct parser *p, const struct where *at, const char *what, const char *dir, const char *name,
+                      char *path)
 {
-    char path[1400];
-    if (!p->has_dir) FAIL_N(p, at, "image files need a scene file (no directory to look in)");
-    if (!*name || name[0] == '/' || strstr(name, "..")) FAIL_N(p, at, "image file '%s' must be a relative path inside the scene's directory", name);
+    if (!*name || name[0] == '/' || strstr(name, ".."))
+        FAIL_W(p, at, "%s '%s' must be a relative path inside the scene's directory", what, name);
     for (const char *c = name; *c; c++)
         if (!(is_alpha(*c) || is_digit(*c) || *c == '.' || *c == '/' || *c == '-'))
-            FAIL_N(p, at, "image file name '%s' has a character other than letters, digits, '_', '-', '.', '/'", name);
-    snprintf(path, sizeof path, "%s%s", p->dir, name);
-    FILE *f = fopen(path, "rb");
-    if (!f) FAIL_N(p, at, "cannot open image file '%s'", path);
+            FAIL_W(p, at, "%s name '%s' has a character other than letters, digits, '_', '-', '.', '/'", what, name);
+    size_t nd = strlen(dir), nn = strlen(name);
+    if (nd + nn >= FILE_PATH_MAX) FAIL_W(p, at, "%s path '%s%s' is too long", what, dir, name);
+    memcpy(path, dir, nd);
+    memcpy(path + nd, name, nn + 1);
+}
+
+/* Opens path into slot k of p->files, which a failed parse closes. */
+static FILE *open_file(struct parser *p, int k, const char *path)
+{
+    p->files[k] = fopen(path, "rb");
+    return p->files[k];
+}
+
+static void close_file(struct parser *p, int k)
+{
+    if (p->files[k]) fclose(p->files[k]);
+    p->files[k] = NULL;
+}
+
+/* Binary PPM (P6, maxval 255). */
+static uint8_t *read_ppm(struct parser *p, const struct where *at, FILE *f, const char *path, int *w, int *h)
+{
     int maxv = 0;
     char magic[3] = { 0 };
     if (fscanf(f, "%2s %d %d %d", magic, w, h, &maxv) != 4 || strcmp(magic, "P6") || maxv != 255 ||
-        fgetc(f) < 0 || *w < 1 || *h < 1 || *w > MAX_TEX_SIDE || *h > MAX_TEX_SIDE) {
-        fclose(f);
-        FAIL_N(p, at, "'%s' is not a binary PPM (P6, maxval 255) of at most %dx%d", path, MAX_TEX_SIDE, MAX_TEX_SIDE);
-    }
+        fgetc(f) < 0 || *w < 1 || *h < 1 || *w > MAX_TEX_SIDE || *h > MAX_TEX_SIDE)
+        FAIL_W(p, at, "'%s' is not a binary PPM (P6, maxval 255) or a PNG of at most %dx%d", path, MAX_TEX_SIDE,
+               MAX_TEX_SIDE);
     size_t n = (size_t)*w * (size_t)*h * 3;
     uint8_t *px = alloc(p, n);
     size_t got = fread(px, 1, n, f);
-    fclose(f);
-    if (got != n) FAIL_N(p, at, "'%s' is truncated (%zu of %zu pixel bytes)", path, got, n);
+    if (got != n) FAIL_W(p, at, "'%s' is truncated (%zu of %zu pixel bytes)", path, got, n);
+    return px;
+}
+
+/* PNG through libpng, which host builds link (WITH_PNG); the benchmark
+ * images that parse scenes on an emulated MCU have no libpng. Any PNG
+ * colour type and depth comes out as 8-bit RGB; alpha is composited onto
+ * black. */
+static uint8_t *read_png(struct parser *p, const struct where *at, FILE *f, const char *path, int *w, int *h)
+{
+#ifdef WITH_PNG
+    png_image im;
+    memset(&im, 0, sizeof im);
+    im.version = PNG_IMAGE_VERSION;
+    if (!png_image_begin_read_from_stdio(&im, f)) FAIL_W(p, at, "'%s' is not a valid PNG: %s", path, im.message);
+    if (im.width < 1 || im.height < 1 || im.width > MAX_TEX_SIDE || im.height > MAX_TEX_SIDE) {
+        png_image_free(&im);
+        FAIL_W(p, at, "'%s' is %ux%u: images are at most %dx%d", path, (unsigned)im.width, (unsigned)im.height,
+               MAX_TEX_SIDE, MAX_TEX_SIDE);
+    }
+    *w = (int)im.width;
+    *h = (int)im.height;
+    im.format = PNG_FORMAT_RGB;
+    uint8_t *px = alloc(p, (size_t)*w * (size_t)*h * 3);   /* zeroed: the black that alpha is composited onto */
+    if (!png_image_finish_read(&im, NULL, px, 0, NULL)) FAIL_W(p, at, "'%s': %s", path, im.message);
+    return px;
+#else
+    (void)f;
+    (void)w;
+    (void)h;
+    FAIL_W(p, at, "'%s': PNG textures need the host build (libpng); this build reads binary PPM (P6) only", path);
+    return NULL;
+#endif
+}
+
+/* An image file at path, binary PPM or PNG (by its first bytes). */
+static uint8_t *load_image(struct parser *p, const struct where *at, const char *path, int *w, int *h)
+{
+    static const unsigned char png_sig[8] = { 0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n' };
+    unsigned char sig[8];
+    FILE *f = open_file(p, 2, path);
+    if (!f) FAIL_W(p, at, "cannot open image file '%s'", path);
+    size_t n = fread(sig, 1, sizeof sig, f);
+    rewind(f);
+    uint8_t *px = n == sizeof sig && !memcmp(sig, png_sig, sizeof sig) ? read_png(p, at, f, path, w, h)
+                                                                      : read_ppm(p, at, f, path, w, h);
+    close_file(p, 2);
     return px;
 }
 
@@ -1243,8 +1355,12 @@ static void read_texture(struct parser *p, struct build *b, const struct node *n
         }
     } else if (v[2]) {
         if (v[3] || v[4] || v[5]) FAIL_K(p, v[3] ? v[3] : v[4] ? v[4] : v[5], "an image file has its own size");
-        if (v[2]->kind != N_STR) FAIL_N(p, v[2], "file must be a string \"name.ppm\"");
-        px = load_ppm(p, v[2], v[2]->text, &w, &h);
+        if (v[2]->kind != N_STR) FAIL_N(p, v[2], "file must be a string \"name.ppm\" or \"name.png\"");
+        if (!p->has_dir) FAIL_N(p, v[2], "image files need a scene file (no directory to look in)");
+        struct where at = node_where(p, v[2]);
+        char path[FILE_PATH_MAX];
+        file_path(p, &at, "image file", p->dir, v[2]->text, path);
+        px = load_image(p, &at, path, &w, &h);
     } else {
         need(p, n, NULL, "texture", "generate' or 'file");
         return;
@@ -1596,6 +1712,7 @@ static int parse(const char *file, const char *dir, const char *text, size_t len
     }
     if (setjmp(p->fail)) {
         int rc = p->oom ? SCENE_ENOMEM : SCENE_EINPUT;
+        release_files(p);
         arena_free(&p->arena);
         free(p);
         return rc;

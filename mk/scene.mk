@@ -14,9 +14,22 @@ $(foreach v,$(VARIANTS),$(foreach m,$(COMPILE_MODES),$(call obj,$(v),$(m),tools/
 $(foreach m,$(NUM_MODES),$(call program,$(BUILD)/asan/tests/test_scene_$(m),\
     $(call obj,asan,$(m),tests/unit/test_scene.c $(SCENE_PARSER_SRCS)),asan))
 
-SCENE_TESTS := $(foreach m,$(NUM_MODES),$(BUILD)/asan/tests/test_scene_$(m))
+# test_scene_obj_<mode>: models from OBJ files (tests/data/obj/).
+$(foreach m,$(NUM_MODES),$(call program,$(BUILD)/asan/tests/test_scene_obj_$(m),\
+    $(call obj,asan,$(m),tests/unit/test_scene_obj.c $(SCENE_PARSER_SRCS)),asan))
+
+SCENE_TESTS := $(foreach m,$(NUM_MODES),$(BUILD)/asan/tests/test_scene_$(m) $(BUILD)/asan/tests/test_scene_obj_$(m))
 TEST_DEPS += $(SCENE_TESTS)
 TESTS += $(SCENE_TESTS)
+
+# Models from OBJ files end to end: host_sim and scenec on tests/data/obj/,
+# and a model of 16384 triangles parsed on the emulated Cortex-M0+ by the
+# benchmark image (mk/charts.mk's, fixed point and double).
+TEST_DEPS += $(HOST_SIM_BIN_asan) $(SCENEC)
+TESTS     += tests/system/test_obj.sh:$(HOST_SIM_BIN_asan):$(SCENEC)
+OBJ_MCU_IMAGES := $(foreach m,fixed20 double,$(BUILD)/charts/bench/m0plus-qemu/$(m)/bench_file.elf)
+TEST_DEPS += $(OBJ_MCU_IMAGES)
+TESTS     += tests/system/test_obj_mcu.sh:$(subst $(eval) ,:,$(OBJ_MCU_IMAGES))
 
 # Fuzz target: libFuzzer (clang), fixed point (the strictest ranges).
 FUZZ_CC      ?= clang

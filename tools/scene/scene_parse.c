@@ -93,6 +93,7 @@ struct parser {
     size_t errlen;
     int oom;                /* the failure was an allocation */
     FILE *files[3];         /* files being read (open_file), closed when the parse fails */
+    void *scratch[8];       /* a model file's temporary buffers (malloc) */
 };
 
 static void set_error(struct parser *p, const char *file, int line, int col, const char *fmt, va_list ap)
@@ -178,12 +179,40 @@ static char *dup_str(struct parser *p, const char *s, size_t n)
     return d;
 }
 
-/* Closes the files a failed parse left open. */
+/* Temporary buffers of a model file (malloc'ed, not in the arena): freed as
+ * soon as the file has been read, or when the parse fails. */
+#define NSCRATCH (sizeof ((struct parser *)0)->scratch / sizeof(void *))
+
+static void *scratch_alloc(struct parser *p, size_t n, size_t size)
+{
+    size_t i = 0;
+    while (i < NSCRATCH && p->scratch[i]) i++;
+    void *m = i < NSCRATCH && (!size || n <= ARENA_LIMIT / size) ? malloc(n * size + 1) : NULL;
+    if (!m) {
+        p->oom = 1;
+        fail_at(p, p->line, p->col, "out of memory");
+    }
+    p->scratch[i] = m;
+    return m;
+}
+
+static void scratch_free(struct parser *p, void *m)
+{
+    for (size_t i = 0; i < NSCRATCH; i++)
+        if (p->scratch[i] == m) p->scratch[i] = NULL;
+    free(m);
+}
+
+/* Closes the files a failed parse left open and frees its temporary buffers. */
 static void release_files(struct parser *p)
 {
     for (size_t i = 0; i < sizeof p->files / sizeof p->files[0]; i++) {
         if (p->files[i]) fclose(p->files[i]);
         p->files[i] = NULL;
+    }
+    for (size_t i = 0; i < NSCRATCH; i++) {
+        free(p->scratch[i]);
+        p->scratch[i] = NULL;
     }
 }
 
@@ -669,7 +698,10 @@ static mat3 get_rotation(struct parser *p, const struct node *n, const char *wha
 
 /* ---- scene building state ------------------------------------------------ */
 
-struct named { const char *name; const struct node *at; };
+/* A name defined in the scene (NULL: a model's part or a material's texture, which no entry can
+ * name). A model read from an OBJ file is `parts` models in a row, one per texture of its
+ * materials; tex is each part's texture (-1: none). */
+struct named { const char *name; const struct node *at; int parts, tex; };
 
 struct build {
     struct scene *s;
@@ -683,7 +715,42 @@ struct build {
     struct line3d *lines;
     struct named *obj_names, *model_names, *tex_names;
     int nlights, nobjects, ncsg, nmodels, ninstances, ntextures, nprims, nlines;
+    /* models, textures and instances grow past their entries' count: an OBJ file's parts and
+       textures, and the instances of each part */
+    int cap_models, cap_textures, cap_instances;
 };
+
+/* arr with room for `need` elements (*cap grows to at least that), the first n kept. */
+static void *grow_array(struct parser *p, void *arr, int n, int *cap, int need, size_t size)
+{
+    if (need <= *cap) return arr;
+    int nc = *cap * 2 > need ? *cap * 2 : need;
+    void *na = alloc_array(p, (size_t)nc, size);
+    if (n) memcpy(na, arr, (size_t)n * size);
+    *cap = nc;
+    return na;
+}
+
+#define GROW(p, arr, n, cap, need) ((arr) = grow_array((p), (arr), (n), &(cap), (need), sizeof *(arr)))
+
+/* Room for `more` models, textures or instances; the scene's limits. */
+static void more_models(struct parser *p, struct build *b, const struct node *at, int more)
+{
+    if (b->nmodels + more > MAX_MODELS)
+        FAIL_N(p, at, "more than %d models (the parts of a model file count as models)", MAX_MODELS);
+    int cap = b->cap_models;
+    GROW(p, b->models, b->nmodels, cap, b->nmodels + more);
+    GROW(p, b->model_names, b->nmodels, b->cap_models, b->nmodels + more);
+}
+
+static void more_textures(struct parser *p, struct build *b, const struct where *at, int more)
+{
+    if (b->ntextures + more > MAX_TEXTURES)
+        FAIL_W(p, at, "more than %d textures (with the textures of model files' materials)", MAX_TEXTURES);
+    int cap = b->cap_textures;
+    GROW(p, b->textures, b->ntextures, cap, b->ntextures + more);
+    GROW(p, b->tex_names, b->ntextures, b->cap_textures, b->ntextures + more);
+}
 
 static int find_named(const struct named *t, int n, const char *name)
 {
@@ -1071,20 +1138,87 @@ static void read_triangle(struct parser *p, const struct node *e, struct ras_tri
     (void)has_col;
 }
 
-static void read_model(struct parser *p, struct build *b, const struct node *n, int idx)
+/* The default bounding sphere of n points (get(pts, i, q) gives point i):
+ * the centre of their bounding box, the radius to the farthest point; the
+ * square of the radius in *r2. */
+static void box_sphere(const void *pts, int n, void (*get)(const void *, int, double *), double c[3], double *r2)
+{
+    double lo[3], hi[3], q[3];
+    for (int k = 0; k < 3; k++) { lo[k] = 1e300; hi[k] = -1e300; }
+    for (int i = 0; i < n; i++) {
+        get(pts, i, q);
+        for (int k = 0; k < 3; k++) {
+            if (q[k] < lo[k]) lo[k] = q[k];
+            if (q[k] > hi[k]) hi[k] = q[k];
+        }
+    }
+    for (int k = 0; k < 3; k++) c[k] = (lo[k] + hi[k]) / 2;
+    *r2 = 0;
+    for (int i = 0; i < n; i++) {
+        get(pts, i, q);
+        double dx = q[0] - c[0], dy = q[1] - c[1], dz = q[2] - c[2];
+        double d2 = dx * dx + dy * dy + dz * dz;
+        if (d2 > *r2) *r2 = d2;
+    }
+}
+
+static void vec3_point(const void *pts, int i, double *q)
+{
+    const vec3 *v = (const vec3 *)pts + i;
+    q[0] = num_to_double(v->x);
+    q[1] = num_to_double(v->y);
+    q[2] = num_to_double(v->z);
+}
+
+/* A model's default bound: box_sphere of its vertices. */
+static void default_bound(struct parser *p, const struct node *at, struct ras_model *m)
+{
+    double c[3], r2;
+    box_sphere(m->verts, m->nverts, vec3_point, c, &r2);
+    m->bound_center = v3_make(num_from_double(c[0]), num_from_double(c[1]), num_from_double(c[2]));
+    m->bound_radius = to_num(p, at, sqrt(r2), "bounding radius");
+}
+
+static void read_bound(struct parser *p, const struct node *n, struct ras_model *m)
+{
+    static const char *const bkeys[] = { "center", "radius", NULL };
+    const struct node *bv[2];
+    fields(p, n, "bound", bkeys, bv);
+    m->bound_center = get_vec3(p, need(p, n, bv[0], "bound", "center"), "bound center");
+    double r = get_num(p, need(p, n, bv[1], "bound", "radius"), "bound radius");
+    if (!(r >= 0)) FAIL_N(p, bv[1], "bound radius must be >= 0");
+    m->bound_radius = to_num(p, bv[1], r, "bound radius");
+}
+
+static void read_obj_model(struct parser *p, struct build *b, const struct node *n, const struct node *file,
+                           const struct node *fit, const struct node *color, const struct node *bound);
+
+static void read_model(struct parser *p, struct build *b, const struct node *n)
 {
     static const char *const keys[] = { "name", "vertices", "triangles", "generate", "divs", "variant", "color",
-                                        "bound", NULL };
+                                        "bound", "file", "fit", NULL };
     static const char *const gens[] = { "sphere", NULL };
     static const char *const variants[] = { "s450", "s420", NULL };
-    const struct node *v[8];
+    const struct node *v[10];
+    more_models(p, b, n, 1);
+    int idx = b->nmodels;
     struct ras_model *m = &b->models[idx];
     fields(p, n, "model", keys, v);
     const char *nm = get_name(p, need(p, n, v[0], "model", "name"), "model name");
     if (find_named(b->model_names, idx, nm) >= 0) FAIL_N(p, v[0], "model '%s' is already defined", nm);
     b->model_names[idx].name = nm;
     b->model_names[idx].at = v[0];
+    b->model_names[idx].parts = 1;
+    b->model_names[idx].tex = -1;
     m->name = nm;
+    if (v[8]) {
+        for (int k = 1; k <= 5; k++)
+            if (v[k]) FAIL_K(p, v[k], "a model read from a file has no '%s'", keys[k]);
+        read_obj_model(p, b, n, v[8], v[9], v[6], v[7]);
+        return;
+    }
+    if (v[9]) FAIL_K(p, v[9], "'fit' is for models read from a file");
+    b->nmodels++;
     rgb col = rgb_make(NUM_ZERO, NUM_ZERO, NUM_ZERO);
     if (v[6]) col = get_rgb(p, v[6], "model color");
     if (v[3]) {
@@ -1126,34 +1260,9 @@ static void read_model(struct parser *p, struct build *b, const struct node *n, 
         m->has_normals = (uint8_t)has_n;
         m->has_uvs = (uint8_t)has_uv;
         /* Default bound: centre of the bounding box, radius to the farthest vertex. */
-        double lo[3], hi[3];
-        for (int k = 0; k < 3; k++) { lo[k] = 1e300; hi[k] = -1e300; }
-        for (i = 0; i < vs->n; i++) {
-            double q[3] = { num_to_double(verts[i].x), num_to_double(verts[i].y), num_to_double(verts[i].z) };
-            for (int k = 0; k < 3; k++) {
-                if (q[k] < lo[k]) lo[k] = q[k];
-                if (q[k] > hi[k]) hi[k] = q[k];
-            }
-        }
-        double c[3] = { (lo[0] + hi[0]) / 2, (lo[1] + hi[1]) / 2, (lo[2] + hi[2]) / 2 }, r2 = 0;
-        for (i = 0; i < vs->n; i++) {
-            double dx = num_to_double(verts[i].x) - c[0], dy = num_to_double(verts[i].y) - c[1],
-                   dz = num_to_double(verts[i].z) - c[2];
-            double d2 = dx * dx + dy * dy + dz * dz;
-            if (d2 > r2) r2 = d2;
-        }
-        m->bound_center = v3_make(num_from_double(c[0]), num_from_double(c[1]), num_from_double(c[2]));
-        m->bound_radius = to_num(p, vs, sqrt(r2), "bounding radius");
+        default_bound(p, vs, m);
     }
-    if (v[7]) {
-        static const char *const bkeys[] = { "center", "radius", NULL };
-        const struct node *bv[2];
-        fields(p, v[7], "bound", bkeys, bv);
-        m->bound_center = get_vec3(p, need(p, v[7], bv[0], "bound", "center"), "bound center");
-        double r = get_num(p, need(p, v[7], bv[1], "bound", "radius"), "bound radius");
-        if (!(r >= 0)) FAIL_N(p, bv[1], "bound radius must be >= 0");
-        m->bound_radius = to_num(p, bv[1], r, "bound radius");
-    }
+    if (v[7]) read_bound(p, v[7], m);
 }
 
 /* ---- textures ---------------------------------------------------------------- */
@@ -1321,13 +1430,16 @@ static void make_mips(struct parser *p, struct ras_texture *t, const uint8_t *ba
     t->mip = mip;
 }
 
-static void read_texture(struct parser *p, struct build *b, const struct node *n, int idx)
+static void read_texture(struct parser *p, struct build *b, const struct node *n)
 {
     static const char *const keys[] = { "name", "generate", "file", "width", "height", "square", "filter", "mipmaps",
                                         NULL };
     static const char *const gens[] = { "checkerboard", "crate", "bumps", NULL };
     static const char *const filters[] = { "nearest", "bilinear", "trilinear", "book_bilinear", NULL };
     const struct node *v[8];
+    struct where at = node_where(p, n);
+    more_textures(p, b, &at, 1);
+    int idx = b->ntextures;
     struct ras_texture *t = &b->textures[idx];
     fields(p, n, "texture", keys, v);
     const char *nm = get_name(p, need(p, n, v[0], "texture", "name"), "texture name");
@@ -1371,6 +1483,637 @@ static void read_texture(struct parser *p, struct build *b, const struct node *n
     t->filter = v[6] ? (uint8_t)get_choice(p, v[6], "filter", filters) : TEX_NEAREST;
     t->mip_levels = 1;
     if ((v[7] && get_bool(p, v[7], "mipmaps")) || t->filter == TEX_TRILINEAR) make_mips(p, t, px);
+    b->ntextures++;
+}
+
+/* ---- models from Wavefront OBJ files --------------------------------------------- */
+
+/* `model { name = knot file = "knot.obj" }` (docs/scene-format.md,
+ * "model"). The file is read through stdio twice, a statement at a time: the
+ * first pass counts vertices, texture coordinates, normals and triangles
+ * (each face fan-triangulated) per part and reads the material files; the
+ * second stores them, positions as doubles until `fit` has scaled them.
+ * A part is the faces of one texture (map_Kd, or none): each part is a
+ * model of its own, the first under the model's name, and an instance of
+ * the model is one instance per part (read_instance). */
+
+#define OBJ_LINE_MAX   8192            /* bytes of a statement, continuation lines joined */
+#define OBJ_SEGS       64              /* physical lines of one statement */
+#define MAX_TEX_VERTS  (3 * MAX_TRIS)  /* vt and vn of a file: every corner its own */
+#define MAX_MATERIALS  256
+#define MAX_PARTS      (MAX_TEXTURES + 1)
+
+/* The statements of an OBJ or MTL file, read in blocks. */
+struct obj_reader {
+    struct parser *p;
+    FILE *f;
+    const char *path;                  /* for messages */
+    int line;                          /* physical lines read */
+    int eof;
+    size_t in_len, in_pos, len, pos, tok_off;
+    int nseg, seg_line[OBJ_SEGS];      /* where each physical line of the statement begins */
+    size_t seg_off[OBJ_SEGS];
+    unsigned char in[4096];
+    char buf[OBJ_LINE_MAX + 1];        /* the statement; tokens are NUL-terminated in place */
+};
+
+static struct where obj_where(const struct obj_reader *r, size_t off)
+{
+    int k = 0;
+    while (k + 1 < r->nseg && r->seg_off[k + 1] <= off) k++;
+    struct where w = { r->path, r->seg_line[k], (int)(off - r->seg_off[k]) + 1 };
+    return w;
+}
+
+/* An error at byte `off` of the statement. */
+static void obj_fail(struct obj_reader *r, size_t off, const char *fmt, ...)
+{
+    struct where w = obj_where(r, off);
+    va_list ap;
+    va_start(ap, fmt);
+    set_error(r->p, w.file, w.line, w.col, fmt, ap);
+    va_end(ap);
+    longjmp(r->p->fail, 1);
+}
+
+static void obj_open(struct obj_reader *r, struct parser *p, FILE *f, const char *path)
+{
+    r->p = p;
+    r->f = f;
+    r->path = path;
+    r->line = 0;
+    r->eof = 0;
+    r->in_len = r->in_pos = 0;
+}
+
+static int obj_byte(struct obj_reader *r)
+{
+    if (r->in_pos == r->in_len) {
+        if (r->eof) return -1;
+        r->in_len = fread(r->in, 1, sizeof r->in, r->f);
+        r->in_pos = 0;
+        if (r->in_len == 0) {
+            if (ferror(r->f)) fail_in(r->p, r->path, r->line, 1, "read error");
+            r->eof = 1;
+            return -1;
+        }
+    }
+    return r->in[r->in_pos++];
+}
+
+/* Blanks separate tokens; NUL ends a token cut from the statement. */
+static int obj_blank(int c) { return c == ' ' || c == '\t' || c == '\r' || c == 0; }
+
+/* The next statement that is not blank into r->buf: comments ('#' at the
+ * start of a line or after a blank) removed, a line ending in '\' joined
+ * with the next, CR and a UTF-8 byte order mark dropped. 0 at the end. */
+static int obj_statement(struct obj_reader *r)
+{
+    for (;;) {
+        size_t len = 0;
+        int c = 0, more;
+        r->nseg = 0;
+        do {
+            if (r->nseg == OBJ_SEGS) fail_in(r->p, r->path, r->line, 1, "more than %d continued lines", OBJ_SEGS);
+            size_t start = len;
+            r->seg_off[r->nseg] = len;
+            r->seg_line[r->nseg++] = ++r->line;
+            while ((c = obj_byte(r)) >= 0 && c != '\n') {
+                if (len == OBJ_LINE_MAX)
+                    fail_in(r->p, r->path, r->line, 1, "statement longer than %d bytes", OBJ_LINE_MAX);
+                if (c < 32 && c != '\t' && c != '\r')
+                    fail_in(r->p, r->path, r->line, (int)(len - start) + 1, "unexpected byte 0x%02x", c);
+                r->buf[len++] = (char)c;
+            }
+            if (r->line == 1 && len >= 3 && !memcmp(r->buf, "\xEF\xBB\xBF", 3)) {
+                memmove(r->buf, r->buf + 3, len - 3);
+                len -= 3;
+            }
+            for (size_t i = start; i < len; i++)
+                if (r->buf[i] == '#' && (i == start || obj_blank(r->buf[i - 1]))) {
+                    len = i;
+                    break;
+                }
+            while (len > start && r->buf[len - 1] == '\r') len--;
+            more = c >= 0 && len > start && r->buf[len - 1] == '\\';
+            if (more) r->buf[len - 1] = ' ';
+        } while (more);
+        r->buf[len] = 0;
+        r->len = len;
+        r->pos = 0;
+        for (size_t i = 0; i < len; i++)
+            if (!obj_blank(r->buf[i])) return 1;
+        if (c < 0) return 0;
+    }
+}
+
+/* The next token of the statement (NULL: none left); its offset in r->tok_off. */
+static char *obj_tok(struct obj_reader *r)
+{
+    char *s = r->buf;
+    while (r->pos < r->len && obj_blank(s[r->pos])) r->pos++;
+    if (r->pos >= r->len) return NULL;
+    r->tok_off = r->pos;
+    while (r->pos < r->len && !obj_blank(s[r->pos])) r->pos++;
+    if (r->pos < r->len) s[r->pos++] = 0;
+    return s + r->tok_off;
+}
+
+/* The rest of the statement, blanks around it removed (names may hold spaces). */
+static char *obj_rest(struct obj_reader *r)
+{
+    char *s = r->buf;
+    while (r->pos < r->len && obj_blank(s[r->pos])) r->pos++;
+    size_t end = r->len;
+    while (end > r->pos && obj_blank(s[end - 1])) end--;
+    s[end] = 0;
+    r->tok_off = r->pos;
+    r->pos = r->len;
+    return s + r->tok_off;
+}
+
+/* A number of the file: the scene's notation ([+-] digits [. digits] [e [+-] digits]). */
+static double obj_num(struct obj_reader *r, const char *t, const char *what)
+{
+    const char *c = t;
+    int digits = 0;
+    if (*c == '+' || *c == '-') c++;
+    while (is_digit(*c)) { c++; digits++; }
+    if (*c == '.') {
+        c++;
+        while (is_digit(*c)) { c++; digits++; }
+    }
+    if (digits && (*c == 'e' || *c == 'E')) {
+        c++;
+        if (*c == '+' || *c == '-') c++;
+        if (!is_digit(*c)) digits = 0;
+        while (is_digit(*c)) c++;
+    }
+    size_t off = (size_t)(t - r->buf);
+    if (!digits || *c) obj_fail(r, off, "%s: '%s' is not a number", what, t);
+    double d = strtod(t, NULL);
+    if (!isfinite(d)) obj_fail(r, off, "%s: number %s is too large", what, t);
+    return d;
+}
+
+/* Up to max numbers of the statement into d, their offsets into off; how many there were. */
+static int obj_nums(struct obj_reader *r, const char *what, double *d, size_t *off, int max)
+{
+    int n = 0;
+    for (char *t; (t = obj_tok(r)); n++) {
+        if (n == max) obj_fail(r, r->tok_off, "%s has at most %d numbers", what, max);
+        off[n] = r->tok_off;
+        d[n] = obj_num(r, t, what);
+    }
+    return n;
+}
+
+static num obj_to_num(struct obj_reader *r, size_t off, double d, const char *what)
+{
+    struct where w = obj_where(r, off);
+    return to_num_at(r->p, &w, d, what);
+}
+
+struct obj_mtl {
+    const char *name;
+    int has_kd;
+    double kd[3];
+    const char *map;                   /* map_Kd: the image's path; NULL: none */
+    struct where map_at;               /* where the material file names it */
+    int part;                          /* the part of its faces; -1: no face uses it yet */
+};
+
+struct obj_part {
+    int mtl;                           /* the material whose map_Kd is the part's texture; -1: none */
+    int ntris, first, next;            /* its triangles: tris[first .. first + ntris) */
+    int has_uv, has_n, line;           /* -1 until its first face (at line) */
+};
+
+struct obj_model {
+    struct obj_mtl *mtl;
+    int nmtl, cur;                     /* cur: the material of the faces (usemtl); -1: none */
+    struct obj_part part[MAX_PARTS];
+    int nparts, ntex, nopart;          /* nopart: the part of faces without a material (-1: none yet) */
+    int nv, nvt, nvn, ntris;           /* totals of the file (pass 1, within the limits) */
+    int sv, svt, svn;                  /* counts so far (pass 2) */
+    double *pos;                       /* pass 2: x, y, z of each vertex */
+    struct tri_uv *uv;
+    vec3 *nrm;
+    struct ras_triangle *tris;
+    int has_col;                       /* the model's `color`, for faces without Kd */
+    rgb col;
+    int check_range;                   /* no `fit`: positions must be numbers of the build as written */
+};
+
+/* The directory part of path (up to its last '/'), into dir[FILE_PATH_MAX]. */
+static void dir_of(const char *path, char *dir)
+{
+    const char *slash = strrchr(path, '/');
+    size_t n = slash ? (size_t)(slash - path) + 1 : 0;
+    memcpy(dir, path, n);
+    dir[n] = 0;
+}
+
+static const char *const mtl_skipped[] = {
+    "Ka", "Ks", "Ke", "Ns", "Ni", "d", "Tr", "Tf", "illum", "sharpness", "map_Ka", "map_Ks", "map_Ke", "map_Ns",
+    "map_d", "map_bump", "map_Bump", "bump", "disp", "decal", "refl", "norm", "Pr", "Pm", "Ps", "Pc", "Pcr",
+    "aniso", "anisor", "map_Pr", "map_Pm", "map_Ps", NULL,
+};
+
+static int in_list(const char *const *list, const char *s)
+{
+    for (int i = 0; list[i]; i++)
+        if (!strcmp(list[i], s)) return 1;
+    return 0;
+}
+
+/* A material file: newmtl, Kd (the colour), map_Kd (the texture); the
+ * statements of mtl_skipped are read past. */
+static void read_mtl(struct obj_model *om, struct obj_reader *r)
+{
+    struct parser *p = r->p;
+    struct obj_mtl *cur = NULL;
+    char dir[FILE_PATH_MAX];
+    dir_of(r->path, dir);
+    while (obj_statement(r)) {
+        char *k = obj_tok(r);
+        size_t ko = r->tok_off;
+        if (!strcmp(k, "newmtl")) {
+            char *nm = obj_rest(r);
+            if (!*nm) obj_fail(r, ko, "newmtl needs a name");
+            for (int i = 0; i < om->nmtl; i++)
+                if (!strcmp(om->mtl[i].name, nm)) obj_fail(r, r->tok_off, "material '%s' is already defined", nm);
+            if (om->nmtl == MAX_MATERIALS) obj_fail(r, ko, "more than %d materials", MAX_MATERIALS);
+            cur = &om->mtl[om->nmtl++];
+            memset(cur, 0, sizeof *cur);
+            cur->name = dup_str(p, nm, strlen(nm));
+            cur->part = -1;
+        } else if (in_list(mtl_skipped, k)) {
+            continue;
+        } else if (!cur) {
+            obj_fail(r, ko, "'%s' before the first newmtl", k);
+        } else if (!strcmp(k, "Kd")) {
+            double d[3];
+            size_t off[3];
+            size_t at = r->pos;
+            char *t = obj_tok(r);
+            if (t && (!strcmp(t, "spectral") || !strcmp(t, "xyz")))
+                obj_fail(r, r->tok_off, "Kd %s is not supported (Kd r g b, each 0 .. 1)", t);
+            r->pos = at;
+            int n = obj_nums(r, "Kd", d, off, 3);
+            if (n != 1 && n != 3) obj_fail(r, ko, "Kd needs r g b (or one value for all three), found %d numbers", n);
+            if (n == 1) {
+                d[1] = d[2] = d[0];
+                off[1] = off[2] = off[0];
+            }
+            for (int i = 0; i < 3; i++)
+                if (!(d[i] >= 0 && d[i] <= 1)) obj_fail(r, off[i], "Kd: %.17g is outside 0 .. 1", d[i]);
+            memcpy(cur->kd, d, sizeof d);
+            cur->has_kd = 1;
+        } else if (!strcmp(k, "map_Kd")) {
+            char *t = obj_tok(r);
+            if (!t) obj_fail(r, ko, "map_Kd needs an image file name");
+            if (t[0] == '-') obj_fail(r, r->tok_off, "map_Kd options ('%s') are not supported", t);
+            size_t to = r->tok_off;
+            if (obj_tok(r)) obj_fail(r, r->tok_off, "map_Kd takes one file name (without spaces)");
+            char path[FILE_PATH_MAX];
+            cur->map_at = obj_where(r, to);
+            file_path(p, &cur->map_at, "image file", dir, t, path);
+            cur->map = dup_str(p, path, strlen(path));
+        } else {
+            obj_fail(r, ko, "unknown material statement '%s'", k);
+        }
+    }
+}
+
+/* mtllib NAME...: each material file, relative to the model file. */
+static void obj_mtllib(struct obj_model *om, struct obj_reader *r, struct obj_reader *mr)
+{
+    struct parser *p = r->p;
+    char dir[FILE_PATH_MAX];
+    dir_of(r->path, dir);
+    size_t ko = r->tok_off;
+    int n = 0;
+    for (char *t; (t = obj_tok(r)); n++) {
+        char path[FILE_PATH_MAX];
+        struct where at = obj_where(r, r->tok_off);
+        file_path(p, &at, "material file", dir, t, path);
+        const char *kept = dup_str(p, path, strlen(path));   /* messages name it after the file is read */
+        FILE *f = open_file(p, 1, kept);
+        if (!f) FAIL_W(p, &at, "cannot open material file '%s'", kept);
+        obj_open(mr, p, f, kept);
+        read_mtl(om, mr);
+        close_file(p, 1);
+    }
+    if (!n) obj_fail(r, ko, "mtllib needs a file name");
+}
+
+/* usemtl NAME: the material of the faces below. */
+static void obj_usemtl(struct obj_model *om, struct obj_reader *r)
+{
+    size_t ko = r->tok_off;
+    char *nm = obj_rest(r);
+    if (!*nm) obj_fail(r, ko, "usemtl needs a material name");
+    for (om->cur = 0; om->cur < om->nmtl; om->cur++)
+        if (!strcmp(om->mtl[om->cur].name, nm)) return;
+    obj_fail(r, r->tok_off, "no material named '%s' (in the material files of the mtllib statements above)", nm);
+}
+
+/* The part of the current material's faces: one per texture. */
+static int obj_part_of(struct obj_model *om, struct obj_reader *r, size_t off, int ntex_scene)
+{
+    int *slot = om->cur >= 0 ? &om->mtl[om->cur].part : &om->nopart;
+    if (*slot >= 0) return *slot;
+    const char *map = om->cur >= 0 ? om->mtl[om->cur].map : NULL;
+    for (int k = 0; k < om->nparts; k++) {
+        const char *pm = om->part[k].mtl >= 0 ? om->mtl[om->part[k].mtl].map : NULL;
+        if ((!pm && !map) || (pm && map && !strcmp(pm, map))) return *slot = k;
+    }
+    if (map && ntex_scene + om->ntex + 1 > MAX_TEXTURES)
+        obj_fail(r, off, "material '%s' needs a texture more than the %d a scene may have", om->mtl[om->cur].name,
+                 MAX_TEXTURES);
+    struct obj_part *pt = &om->part[om->nparts];
+    memset(pt, 0, sizeof *pt);
+    pt->mtl = map ? om->cur : -1;
+    pt->has_uv = pt->has_n = -1;
+    om->ntex += map != NULL;
+    return *slot = om->nparts++;
+}
+
+static const char *const obj_skipped[] = { "o", "g", "s", "mg", "l", "p", "vp", NULL };
+static const char *const obj_freeform[] = { "cstype", "deg", "bmat", "step", "curv", "curv2", "surf", "parm",
+                                            "trim", "hole", "scrv", "sp", "end", "con", NULL };
+
+/* One index of a face corner: 1 … total from the start of the file, -1 … -sofar back from the
+ * statement; 0-based. */
+static int obj_ref(struct obj_reader *r, char *s, int sofar, int total, const char *what)
+{
+    size_t off = (size_t)(s - r->buf);
+    const char *c = s + (*s == '-');
+    int32_t i = 0;
+    int digits = 0;
+    for (; is_digit(*c); c++, digits++)
+        if (digits < 9) i = i * 10 + (*c - '0');
+    if (!digits || *c) obj_fail(r, off, "%s index '%s' is not a whole number", what, s);
+    if (digits > 9) obj_fail(r, off, "%s index %s is out of range (the file has %d)", what, s, total);
+    if (*s == '-') i = -i;
+    if (i == 0) obj_fail(r, off, "%s index 0: indices count from 1 (negative ones back from the last)", what);
+    if (i > total) obj_fail(r, off, "%s index %ld is out of range (the file has %d)", what, (long)i, total);
+    if (i < 0 && -i > sofar) obj_fail(r, off, "%s index %ld is out of range (%d above it)", what, (long)i, sofar);
+    return (int)(i > 0 ? i - 1 : sofar + i);
+}
+
+/* Pass 1: counts, material files, the parts of the faces. */
+static void obj_count(struct obj_model *om, struct obj_reader *r, struct obj_reader *mr, int ntex_scene)
+{
+    int vline = 0, tline = 0;
+    int64_t nv = 0, ntris = 0;
+    while (obj_statement(r)) {
+        char *k = obj_tok(r);
+        size_t ko = r->tok_off;
+        if (!strcmp(k, "v")) {
+            if (++nv == MAX_VERTS + 1) vline = r->line;
+        } else if (!strcmp(k, "vt")) {
+            if (++om->nvt > MAX_TEX_VERTS) obj_fail(r, ko, "more than %d texture coordinates (vt)", MAX_TEX_VERTS);
+        } else if (!strcmp(k, "vn")) {
+            if (++om->nvn > MAX_TEX_VERTS) obj_fail(r, ko, "more than %d normals (vn)", MAX_TEX_VERTS);
+        } else if (!strcmp(k, "f")) {
+            int n = 0;
+            while (obj_tok(r)) n++;
+            if (n < 3) obj_fail(r, ko, "a face needs at least 3 corners, found %d", n);
+            int pt = obj_part_of(om, r, ko, ntex_scene);
+            ntris += n - 2;
+            if (ntris > MAX_TRIS && !tline) tline = r->line;
+            if (!tline) om->part[pt].ntris += n - 2;
+        } else if (!strcmp(k, "mtllib")) {
+            obj_mtllib(om, r, mr);
+        } else if (!strcmp(k, "usemtl")) {
+            obj_usemtl(om, r);
+        } else if (in_list(obj_freeform, k)) {
+            obj_fail(r, ko, "free-form geometry ('%s') is not supported", k);
+        } else if (!in_list(obj_skipped, k)) {
+            obj_fail(r, ko, "unknown statement '%s'", k);
+        }
+    }
+    if (vline)
+        fail_in(r->p, r->path, vline, 1, "%.0f vertices: a model has at most %d", (double)nv, MAX_VERTS);
+    if (tline)
+        fail_in(r->p, r->path, tline, 1, "%.0f triangles: a model has at most %d", (double)ntris, MAX_TRIS);
+    om->nv = (int)nv;
+    om->ntris = (int)ntris;
+}
+
+/* f: the face's triangles (a fan around its first corner) into its part. */
+static void obj_face(struct obj_model *om, struct obj_reader *r)
+{
+    size_t ko = r->tok_off;
+    struct obj_part *pt = &om->part[om->cur >= 0 ? om->mtl[om->cur].part : om->nopart];
+    const struct obj_mtl *mt = om->cur >= 0 ? &om->mtl[om->cur] : NULL;
+    rgb col = om->col;
+    if (mt && mt->has_kd)
+        col = rgb_make(num_from_double(mt->kd[0] * 255), num_from_double(mt->kd[1] * 255),
+                       num_from_double(mt->kd[2] * 255));
+    else if (!om->has_col)
+        obj_fail(r, ko, mt ? "face without a colour: material '%s' has no Kd and the model no 'color'"
+                           : "face without a colour: no material (usemtl) and the model has no 'color'",
+                 mt ? mt->name : "");
+    int v[3] = { 0, 0, 0 }, t[3] = { 0, 0, 0 }, n[3] = { 0, 0, 0 }, form = -1, k = 0;
+    for (char *c; (c = obj_tok(r)); k++) {
+        char *s2 = strchr(c, '/'), *s3 = s2 ? strchr(s2 + 1, '/') : NULL;
+        if (s2) *s2++ = 0;
+        if (s3) *s3++ = 0;
+        int f = (s2 && *s2 ? 1 : 0) | (s3 ? 2 : 0);
+        if ((s2 && !*s2 && !s3) || (s3 && !*s3)) obj_fail(r, r->tok_off, "corner %d ends in '/'", k + 1);
+        if (form < 0) form = f;
+        else if (f != form)
+            obj_fail(r, r->tok_off, "corner %d has another form (v, v/vt, v//vn, v/vt/vn) than the first", k + 1);
+        int at = k < 2 ? k : 2;
+        v[at] = obj_ref(r, c, om->sv, om->nv, "vertex");
+        if (f & 1) t[at] = obj_ref(r, s2, om->svt, om->nvt, "texture coordinate (vt)");
+        if (f & 2) n[at] = obj_ref(r, s3, om->svn, om->nvn, "normal (vn)");
+        if (k < 2) continue;
+        struct ras_triangle *tri = &om->tris[pt->next++];
+        for (int i = 0; i < 3; i++) {
+            tri->v[i] = (uint16_t)v[i];
+            if (f & 1) tri->uv[i] = om->uv[t[i]];
+            if (f & 2) tri->n[i] = om->nrm[n[i]];
+        }
+        tri->color = col;
+        v[1] = v[2];
+        t[1] = t[2];
+        n[1] = n[2];
+    }
+    int uv = form & 1, nrm = form >> 1;
+    if (pt->has_uv < 0) {
+        pt->has_uv = uv;
+        pt->has_n = nrm;
+        pt->line = r->line;
+    }
+    if (pt->has_uv != uv || pt->has_n != nrm)
+        obj_fail(r, ko, "face %s %s, unlike the face at line %d: the faces of one texture all have them or none do",
+                 (pt->has_uv != uv ? uv : nrm) ? "with" : "without",
+                 pt->has_uv != uv ? "texture coordinates (vt)" : "normals (vn)", pt->line);
+    if (pt->mtl >= 0 && !uv)
+        obj_fail(r, ko, "material '%s' has a texture (map_Kd) but this face no texture coordinates (vt)", mt->name);
+}
+
+/* Pass 2: the vertices, texture coordinates, normals and triangles. */
+static void obj_store(struct obj_model *om, struct obj_reader *r)
+{
+    while (obj_statement(r)) {
+        char *k = obj_tok(r);
+        size_t ko = r->tok_off;
+        double d[4];
+        size_t off[4];
+        if (!strcmp(k, "v")) {
+            int n = obj_nums(r, "v", d, off, 4);
+            if (n < 3) obj_fail(r, ko, "v needs x y z, found %d numbers", n);
+            double *q = om->pos + 3 * (size_t)om->sv++;
+            for (int i = 0; i < 3; i++) {
+                q[i] = d[i];
+                if (om->check_range) obj_to_num(r, off[i], d[i], "vertex");
+            }
+        } else if (!strcmp(k, "vt")) {
+            int n = obj_nums(r, "vt", d, off, 3);
+            if (n < 1) obj_fail(r, ko, "vt needs u [v]");
+            struct tri_uv *t = &om->uv[om->svt++];
+            t->u = obj_to_num(r, off[0], d[0], "u");
+            t->v = obj_to_num(r, n > 1 ? off[1] : ko, 1 - (n > 1 ? d[1] : 0), "1 - v");
+        } else if (!strcmp(k, "vn")) {
+            if (obj_nums(r, "vn", d, off, 3) != 3) obj_fail(r, ko, "vn needs x y z");
+            om->nrm[om->svn++] = v3_make(obj_to_num(r, off[0], d[0], "normal"),
+                                         obj_to_num(r, off[1], d[1], "normal"),
+                                         obj_to_num(r, off[2], d[2], "normal"));
+        } else if (!strcmp(k, "f")) {
+            obj_face(om, r);
+        } else if (!strcmp(k, "usemtl")) {
+            obj_usemtl(om, r);
+        }
+    }
+}
+
+static void double_point(const void *pts, int i, double *q)
+{
+    memcpy(q, (const double *)pts + 3 * (size_t)i, 3 * sizeof *q);
+}
+
+static void read_obj_model(struct parser *p, struct build *b, const struct node *n, const struct node *file,
+                           const struct node *fit, const struct node *color, const struct node *bound)
+{
+    const char *nm = b->model_names[b->nmodels].name;
+    struct where at = node_where(p, file);
+    if (file->kind != N_STR) FAIL_N(p, file, "file must be a string \"name.obj\"");
+    if (!p->has_dir) FAIL_N(p, file, "model files need a scene file (no directory to look in)");
+    char path[FILE_PATH_MAX];
+    file_path(p, &at, "model file", p->dir, file->text, path);
+    const char *opath = dup_str(p, path, strlen(path));
+    double radius = fit ? get_num(p, fit, "fit") : 0;
+    if (fit && !(radius > 0)) FAIL_N(p, fit, "fit must be > 0, found %.17g", radius);
+    if (fit) to_num(p, fit, radius, "fit");
+
+    struct obj_model om;
+    memset(&om, 0, sizeof om);
+    om.cur = om.nopart = -1;
+    om.has_col = color != NULL;
+    if (color) om.col = get_rgb(p, color, "model color");
+    om.check_range = fit == NULL;
+    om.mtl = scratch_alloc(p, MAX_MATERIALS, sizeof *om.mtl);
+    struct obj_reader *r = scratch_alloc(p, 2, sizeof *r);
+    FILE *f = open_file(p, 0, opath);
+    if (!f) FAIL_N(p, file, "cannot open model file '%s'", opath);
+    obj_open(r, p, f, opath);
+    obj_count(&om, r, r + 1, b->ntextures);
+
+    rewind(f);
+    obj_open(r, p, f, opath);
+    om.pos = scratch_alloc(p, 3 * (size_t)om.nv, sizeof *om.pos);
+    om.uv = scratch_alloc(p, (size_t)om.nvt, sizeof *om.uv);
+    om.nrm = scratch_alloc(p, (size_t)om.nvn, sizeof *om.nrm);
+    om.tris = alloc_array(p, (size_t)om.ntris, sizeof *om.tris);
+    for (int k = 0, first = 0; k < om.nparts; first += om.part[k++].ntris)
+        om.part[k].first = om.part[k].next = first;
+    om.cur = -1;
+    obj_store(&om, r);
+    if (om.ntris == 0) FAIL_N(p, file, "model file '%s' has no faces", opath);
+    close_file(p, 0);
+    scratch_free(p, r);
+    scratch_free(p, om.uv);
+    scratch_free(p, om.nrm);
+
+    /* fit: the centre of the vertices' bounding box to the origin, the farthest vertex at radius */
+    if (fit) {
+        double c[3], r2;
+        box_sphere(om.pos, om.nv, double_point, c, &r2);
+        if (!(r2 > 0)) FAIL_N(p, fit, "fit: the vertices of '%s' are all at one point", opath);
+        if (!(r2 < 1e300)) FAIL_N(p, fit, "fit: the vertices of '%s' lie too far apart", opath);
+        double s = radius / sqrt(r2);
+        for (size_t i = 0; i < 3 * (size_t)om.nv; i++) om.pos[i] = (om.pos[i] - c[i % 3]) * s;
+    }
+
+    /* one model per part, with the vertices its triangles use (in the file's order) */
+    more_models(p, b, n, om.nparts);
+    int idx = b->nmodels;
+    int32_t *map = scratch_alloc(p, (size_t)om.nv, sizeof *map);
+    for (int k = 0; k < om.nparts; k++) {
+        const struct obj_part *pt = &om.part[k];
+        struct ras_model *m = &b->models[idx + k];
+        struct named *name = &b->model_names[idx + k];
+        struct ras_triangle *tris = om.tris + pt->first;
+        for (int i = 0; i < om.nv; i++) map[i] = -1;
+        for (int i = 0; i < pt->ntris; i++)
+            for (int c = 0; c < 3; c++) map[tris[i].v[c]] = 0;
+        int nverts = 0;
+        for (int i = 0; i < om.nv; i++)
+            if (map[i] == 0) map[i] = nverts++;
+        vec3 *verts = alloc_array(p, (size_t)nverts, sizeof *verts);
+        for (int i = 0; i < om.nv; i++)
+            if (map[i] >= 0) {
+                const double *q = om.pos + 3 * (size_t)i;
+                verts[map[i]] = v3_make(to_num(p, fit ? fit : file, q[0], "vertex"),
+                                        to_num(p, fit ? fit : file, q[1], "vertex"),
+                                        to_num(p, fit ? fit : file, q[2], "vertex"));
+            }
+        for (int i = 0; i < pt->ntris; i++)
+            for (int c = 0; c < 3; c++) tris[i].v[c] = (uint16_t)map[tris[i].v[c]];
+        if (k) {
+            char pn[80];
+            snprintf(pn, sizeof pn, "%s:%d", nm, k);
+            m->name = dup_str(p, pn, strlen(pn));
+        } else {
+            m->name = nm;
+        }
+        m->nverts = (uint16_t)nverts;
+        m->ntris = (uint16_t)pt->ntris;
+        m->verts = verts;
+        m->tris = tris;
+        m->has_normals = (uint8_t)pt->has_n;
+        m->has_uvs = (uint8_t)pt->has_uv;
+        if (bound) read_bound(p, bound, m);
+        else default_bound(p, file, m);
+        name->name = k ? NULL : nm;
+        name->at = n;
+        name->parts = k ? 1 : om.nparts;
+        name->tex = -1;
+        if (pt->mtl >= 0) {
+            const struct obj_mtl *mt = &om.mtl[pt->mtl];
+            int w, h;
+            uint8_t *px = load_image(p, &mt->map_at, mt->map, &w, &h);
+            more_textures(p, b, &mt->map_at, 1);
+            struct ras_texture *t = &b->textures[b->ntextures];
+            t->w = (uint16_t)w;
+            t->h = (uint16_t)h;
+            t->rgb = px;
+            t->filter = TEX_NEAREST;
+            t->mip_levels = 1;
+            b->tex_names[b->ntextures].name = NULL;
+            b->tex_names[b->ntextures].at = n;
+            name->tex = b->ntextures++;
+        }
+    }
+    b->nmodels += om.nparts;
+    scratch_free(p, map);
+    scratch_free(p, om.pos);
+    scratch_free(p, om.mtl);
 }
 
 static int tex_ref(struct parser *p, struct build *b, const struct node *n, int ntex, const char *what)
@@ -1381,30 +2124,39 @@ static int tex_ref(struct parser *p, struct build *b, const struct node *n, int 
     return i;
 }
 
-static void read_instance(struct parser *p, struct build *b, const struct node *n, struct ras_instance *in,
-                          int nmodels, int ntex)
+/* An instance of a model read from an OBJ file is one instance per part:
+ * a part with a material texture (map_Kd) takes it; the instance's own
+ * `texture` goes to the parts without one that have uv, `normal_map` to
+ * every part with uv. */
+static void read_instance(struct parser *p, struct build *b, const struct node *n)
 {
     static const char *const keys[] = { "model", "texture", "normal_map", "specular", "transform", "animate", NULL };
     const struct node *v[6];
+    struct ras_instance in;
+    memset(&in, 0, sizeof in);
     fields(p, n, "instance", keys, v);
     const char *mn = get_name(p, need(p, n, v[0], "instance", "model"), "instance model");
-    int mi = find_named(b->model_names, nmodels, mn);
+    int mi = find_named(b->model_names, b->nmodels, mn);
     if (mi < 0) FAIL_N(p, v[0], "instance: no model named '%s' (models are defined before their instances)", mn);
-    in->model = (uint16_t)mi;
-    in->texture = -1;
-    in->normal_map = -1;
+    int parts = b->model_names[mi].parts, any_uv = 0, bare_uv = 0;
+    for (int k = mi; k < mi + parts; k++) {
+        any_uv |= b->models[k].has_uvs;
+        bare_uv |= b->models[k].has_uvs && b->model_names[k].tex < 0;
+    }
+    int tex = -1, nmap = -1;
     if (v[1]) {
-        in->texture = (int16_t)tex_ref(p, b, v[1], ntex, "instance texture");
-        if (!b->models[mi].has_uvs) FAIL_N(p, v[1], "instance: model '%s' has no uv to map texture with", mn);
+        tex = tex_ref(p, b, v[1], b->ntextures, "instance texture");
+        if (!any_uv) FAIL_N(p, v[1], "instance: model '%s' has no uv to map texture with", mn);
+        if (!bare_uv) FAIL_N(p, v[1], "instance: every part of model '%s' with uv has its material's texture", mn);
     }
     if (v[2]) {
-        in->normal_map = (int16_t)tex_ref(p, b, v[2], ntex, "instance normal_map");
-        if (!b->models[mi].has_uvs) FAIL_N(p, v[2], "instance: model '%s' has no uv to map a normal map with", mn);
+        nmap = tex_ref(p, b, v[2], b->ntextures, "instance normal_map");
+        if (!any_uv) FAIL_N(p, v[2], "instance: model '%s' has no uv to map a normal map with", mn);
     }
-    in->specular = num_from_int(50);
-    if (v[3]) in->specular = to_num(p, v[3], (double)get_int(p, v[3], "specular", -1, 10000), "specular");
-    in->rotation = m3_identity();
-    in->scale = NUM_ONE;
+    in.specular = num_from_int(50);
+    if (v[3]) in.specular = to_num(p, v[3], (double)get_int(p, v[3], "specular", -1, 10000), "specular");
+    in.rotation = m3_identity();
+    in.scale = NUM_ONE;
     if (v[4]) {
         static const char *const tkeys[] = { "scale", "rotation", "translation", NULL };
         const struct node *t[3];
@@ -1412,12 +2164,23 @@ static void read_instance(struct parser *p, struct build *b, const struct node *
         if (t[0]) {
             double s = get_num(p, t[0], "scale");
             if (!(s > 0)) FAIL_N(p, t[0], "scale must be > 0, found %.17g", s);
-            in->scale = to_num(p, t[0], s, "scale");
+            in.scale = to_num(p, t[0], s, "scale");
         }
-        if (t[1]) in->rotation = get_rotation(p, t[1], "instance rotation", NULL);
-        if (t[2]) in->position = get_vec3(p, t[2], "translation");
+        if (t[1]) in.rotation = get_rotation(p, t[1], "instance rotation", NULL);
+        if (t[2]) in.position = get_vec3(p, t[2], "translation");
     }
-    if (v[5]) read_anim(p, v[5], &in->anim);
+    if (v[5]) read_anim(p, v[5], &in.anim);
+    if (b->ninstances + parts > MAX_INSTANCES)
+        FAIL_K(p, n, "more than %d instances (an instance of a model file has one per part)", MAX_INSTANCES);
+    GROW(p, b->instances, b->ninstances, b->cap_instances, b->ninstances + parts);
+    for (int k = mi; k < mi + parts; k++) {
+        struct ras_instance *o = &b->instances[b->ninstances++];
+        int uv = b->models[k].has_uvs;
+        *o = in;
+        o->model = (uint16_t)k;
+        o->texture = (int16_t)(b->model_names[k].tex >= 0 ? b->model_names[k].tex : uv ? tex : -1);
+        o->normal_map = (int16_t)(uv ? nmap : -1);
+    }
 }
 
 static void read_prim(struct parser *p, const struct node *n, struct prim2d *q)
@@ -1517,16 +2280,16 @@ static void check_top(struct parser *p, const struct node *top, struct top *t, s
     b->nlights = t->count[TOP_light];
     b->nobjects = t->count[TOP_sphere] + t->count[TOP_plane] + t->count[TOP_triangle];
     b->ncsg = t->count[TOP_csg];
-    b->nmodels = t->count[TOP_model];
-    b->ninstances = t->count[TOP_instance];
-    b->ntextures = t->count[TOP_texture];
+    b->cap_models = t->count[TOP_model];
+    b->cap_instances = t->count[TOP_instance];
+    b->cap_textures = t->count[TOP_texture];
     b->nprims = t->count[TOP_line2d] + t->count[TOP_triangle2d];
     b->nlines = t->count[TOP_line3d];
     if (b->nlights > MAX_LIGHTS) fail_at(p, 1, 1, "more than %d lights", MAX_LIGHTS);
     if (b->nobjects > MAX_OBJECTS || b->ncsg > MAX_OBJECTS) fail_at(p, 1, 1, "more than %d objects", MAX_OBJECTS);
-    if (b->nmodels > MAX_MODELS) fail_at(p, 1, 1, "more than %d models", MAX_MODELS);
-    if (b->ninstances > MAX_INSTANCES) fail_at(p, 1, 1, "more than %d instances", MAX_INSTANCES);
-    if (b->ntextures > MAX_TEXTURES) fail_at(p, 1, 1, "more than %d textures", MAX_TEXTURES);
+    if (b->cap_models > MAX_MODELS) fail_at(p, 1, 1, "more than %d models", MAX_MODELS);
+    if (b->cap_instances > MAX_INSTANCES) fail_at(p, 1, 1, "more than %d instances", MAX_INSTANCES);
+    if (b->cap_textures > MAX_TEXTURES) fail_at(p, 1, 1, "more than %d textures", MAX_TEXTURES);
     if (b->nprims > MAX_PRIMS) fail_at(p, 1, 1, "more than %d 2D primitives", MAX_PRIMS);
     if (b->nlines > MAX_LINES) fail_at(p, 1, 1, "more than %d 3D lines", MAX_LINES);
 }
@@ -1592,11 +2355,11 @@ static void alloc_build(struct parser *p, struct build *b)
     b->objects = alloc_array(p, (size_t)b->nobjects, sizeof *b->objects);
     b->obj_names = alloc_array(p, (size_t)b->nobjects, sizeof *b->obj_names);
     b->csg = alloc_array(p, (size_t)b->ncsg, sizeof *b->csg);
-    b->models = alloc_array(p, (size_t)b->nmodels, sizeof *b->models);
-    b->model_names = alloc_array(p, (size_t)b->nmodels, sizeof *b->model_names);
-    b->instances = alloc_array(p, (size_t)b->ninstances, sizeof *b->instances);
-    b->textures = alloc_array(p, (size_t)b->ntextures, sizeof *b->textures);
-    b->tex_names = alloc_array(p, (size_t)b->ntextures, sizeof *b->tex_names);
+    b->models = alloc_array(p, (size_t)b->cap_models, sizeof *b->models);
+    b->model_names = alloc_array(p, (size_t)b->cap_models, sizeof *b->model_names);
+    b->instances = alloc_array(p, (size_t)b->cap_instances, sizeof *b->instances);
+    b->textures = alloc_array(p, (size_t)b->cap_textures, sizeof *b->textures);
+    b->tex_names = alloc_array(p, (size_t)b->cap_textures, sizeof *b->tex_names);
     b->prims = alloc_array(p, (size_t)b->nprims, sizeof *b->prims);
     b->lines = alloc_array(p, (size_t)b->nlines, sizeof *b->lines);
 }
@@ -1604,15 +2367,15 @@ static void alloc_build(struct parser *p, struct build *b)
 /* The repeatable entries, in file order: a reference must name something defined above it. */
 static void read_entries(struct parser *p, const struct node *top, struct build *b)
 {
-    int il = 0, io = 0, ic = 0, im = 0, ii = 0, it = 0, ip = 0, i3 = 0;
+    int il = 0, io = 0, ic = 0, ip = 0, i3 = 0;
     for (const struct node *e = top->first; e; e = e->next) {
         switch (top_index(e->key)) {
         case TOP_light: read_light(p, e, &b->lights[il++]); break;
         case TOP_sphere: case TOP_plane: case TOP_triangle: read_object(p, b, e, io); io++; break;
         case TOP_csg: read_csg(p, b, e, &b->csg[ic++], io); break;
-        case TOP_model: read_model(p, b, e, im); im++; break;
-        case TOP_texture: read_texture(p, b, e, it); it++; break;
-        case TOP_instance: read_instance(p, b, e, &b->instances[ii++], im, it); break;
+        case TOP_model: read_model(p, b, e); break;
+        case TOP_texture: read_texture(p, b, e); break;
+        case TOP_instance: read_instance(p, b, e); break;
         case TOP_line2d: case TOP_triangle2d: read_prim(p, e, &b->prims[ip++]); break;
         case TOP_line3d: read_line3d(p, e, &b->lines[i3++]); break;
         default: break;

@@ -23,9 +23,10 @@
 #   3. the check, before the scenes are compiled for the board and before the
 #      image is linked: budget.elf is the image with the built-in
 #      placeholder table instead of the scenes (the same objects otherwise),
-#      and firmware/app/image_fits.sh takes the work memory per core the
-#      image has from it and the linker script, and refuses, one line per
-#      scene, a scene whose work (its scenec-summary line) does not fit;
+#      and firmware/app/image_fits.sh takes the work memory the image has
+#      (core 0's context and core 1's sibling of it) from it and the linker
+#      script, and refuses, one line per scene, a scene whose work (its
+#      scenec-summary line) does not fit;
 #   4. the image itself.
 # A wrong NAME, no SCENES, a scene file that is not there, a scene scenec
 # refuses or one that does not fit: one line "image NAME: ..." and a non-zero

@@ -216,11 +216,15 @@ static void flush_close(struct bus *b)
     b->open = b->run = 0;
 }
 
+/* Core 0's context of scene si (render_init), or core 1's: a sibling of
+ * core 0's (render_init_sibling), which takes each frame core 0 prepared
+ * (core 0 has begun the frame before it tells core 1 to start). */
 static int scene_init(struct render_ctx *c, unsigned si, unsigned core)
 {
     const struct fw_scene *fs = &fw_scenes[si];
-    return render_init(c, fs->scene, FW_WIDTH, FW_HEIGHT, FW_STRIP_ROWS, fs->work[core],
-                       fs->work_size);
+    if (core == 0)
+        return render_init(c, fs->scene, FW_WIDTH, FW_HEIGHT, FW_STRIP_ROWS, fs->work[0], fs->work_size[0]);
+    return render_init_sibling(c, &ctx[0], fs->work[1], fs->work_size[1]);
 }
 
 /* ---- text helpers (no printf: it would cost more flash than the app) ---- */

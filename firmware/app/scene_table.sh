@@ -5,9 +5,12 @@
 # usage: scene_table.sh OUT.c NAME=HEADER...
 #   NAME    the scene's name on the UART ("book/raytracer-02")
 #   HEADER  the .h scenec wrote next to its .c (scene_<id>,
-#           SCENE_<ID>_WORK_SIZE); its basename is included.
+#           SCENE_<ID>_WORK_SIZE, SCENE_<ID>_SIBLING_WORK_SIZE); its
+#           basename is included.
 # The scenes are rendered one at a time, so they share the work memory: one
-# buffer per core (FW_WORK_CORES, default 2) of the largest scene's size.
+# buffer for core 0 of the largest scene's work size, and with two cores
+# (FW_WORK_CORES, default 2) one for core 1 of the largest sibling size
+# (core 1's context is a sibling of core 0's: render_init_sibling).
 # scenec's own per-scene buffers are not referenced and the linker drops them.
 set -eu
 out=$1
@@ -27,16 +30,25 @@ upper() { printf '%s' "$1" | tr 'a-z' 'A-Z'; }
   echo '#ifndef FW_WORK_CORES'
   echo '#define FW_WORK_CORES 2'
   echo '#endif'
-  # FW_WORK_k: the largest work size of the first k scenes
+  # FW_WORK_k, FW_SIB_k: the largest work and sibling sizes of the first k scenes
   k=0
   echo '#define FW_WORK_0 1'
+  echo '#define FW_SIB_0 1'
   for id in $ids; do
-    s="SCENE_$(upper "$id")_WORK_SIZE"
+    s="SCENE_$(upper "$id")_WORK_SIZE" b="SCENE_$(upper "$id")_SIBLING_WORK_SIZE"
     echo "#define FW_WORK_$((k + 1)) ($s > FW_WORK_$k ? $s : FW_WORK_$k)"
+    echo "#define FW_SIB_$((k + 1)) ($b > FW_SIB_$k ? $b : FW_SIB_$k)"
     k=$((k + 1))
   done
   echo "#define FW_WORK_MAX FW_WORK_$k"
-  echo 'static _Alignas(8) uint8_t fw_work[FW_WORK_CORES][FW_WORK_MAX];'
+  echo "#define FW_SIB_MAX FW_SIB_$k"
+  echo 'static _Alignas(8) uint8_t fw_work0[FW_WORK_MAX];'
+  echo '#if FW_WORK_CORES > 1'
+  echo 'static _Alignas(8) uint8_t fw_work1[FW_SIB_MAX];'
+  echo '#define FW_WORK1 fw_work1'
+  echo '#else'
+  echo '#define FW_WORK1 NULL'
+  echo '#endif'
   echo
   echo 'const struct fw_scene fw_scenes[] = {'
   i=0
@@ -44,7 +56,7 @@ upper() { printf '%s' "$1" | tr 'a-z' 'A-Z'; }
     set -- $ids
     shift $i
     id=$1
-    echo "    { \"${a%%=*}\", &scene_$id, { fw_work[0], FW_WORK_CORES > 1 ? fw_work[FW_WORK_CORES - 1] : NULL }, SCENE_$(upper "$id")_WORK_SIZE },"
+    echo "    { \"${a%%=*}\", &scene_$id, { fw_work0, FW_WORK1 }, { SCENE_$(upper "$id")_WORK_SIZE, SCENE_$(upper "$id")_SIBLING_WORK_SIZE } },"
     i=$((i + 1))
   done
   echo '};'

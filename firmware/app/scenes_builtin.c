@@ -25,6 +25,6 @@ static const struct scene builtin_pattern = {
 static uint64_t work0[FW_BUILTIN_WORK / 8], work1[FW_BUILTIN_WORK / 8];
 
 const struct fw_scene fw_scenes[] = {
-    { "builtin/pattern", &builtin_pattern, { work0, work1 }, sizeof work0 },
+    { "builtin/pattern", &builtin_pattern, { work0, work1 }, { sizeof work0, sizeof work1 } },
 };
 const unsigned fw_scene_count = sizeof fw_scenes / sizeof fw_scenes[0];

@@ -52,9 +52,9 @@ static int reference(const char *name)
         const struct fw_scene *fs = &fw_scenes[i];
         if (strcmp(fs->name, name) != 0)
             continue;
-        void *work = fs->work_size ? malloc(fs->work_size) : NULL;
+        void *work = fs->work_size[0] ? malloc(fs->work_size[0]) : NULL;
         struct render_ctx ctx;
-        int rc = render_init(&ctx, fs->scene, W, H, FW_STRIP_ROWS, work, fs->work_size);
+        int rc = render_init(&ctx, fs->scene, W, H, FW_STRIP_ROWS, work, fs->work_size[0]);
         if (rc == 0)
             rc = render_begin_frame(&ctx, 0);
         for (uint16_t y = 0; rc == 0 && y < H; y += FW_STRIP_ROWS) {

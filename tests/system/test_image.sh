@@ -65,15 +65,18 @@ else
   fail image_generates_under_build_only "files next to the scenes: '$extra'; $set_dir: $(ls "$set_dir" 2>&1)"
 fi
 # the check's "N of them for code, data, strips and stacks" is what the image
-# has besides its work buffers: __bss_end - RAM origin - sizeof fw_work
+# has besides its work buffers: __bss_end - RAM origin - sizeof fw_work0 -
+# sizeof fw_work1 (core 0's context and core 1's sibling of it)
 other=$(sed -n 's/.* bytes of RAM, \([0-9]*\) of them for code.*/\1/p' "$t/out")
 syms=$(arm-none-eabi-nm -S "$img.elf")
 end=$(printf '%s\n' "$syms" | awk '$NF == "__bss_end" { print $1 }')
-work=$(printf '%s\n' "$syms" | awk '$NF == "fw_work" && NF == 4 { print $2 }')
-if [ -n "$other" ] && [ -n "$end" ] && [ -n "$work" ] && [ $((0x$end - 0x20000000 - 0x$work)) -eq "$other" ]; then
-  pass image_check_budget_equals_the_linked_image
+w0=$(printf '%s\n' "$syms" | awk '$NF == "fw_work0" && NF == 4 { print $2 }')
+w1=$(printf '%s\n' "$syms" | awk '$NF == "fw_work1" && NF == 4 { print $2 }')
+if [ -n "$other" ] && [ -n "$end" ] && [ -n "$w0" ] && [ -n "$w1" ] && \
+   [ $((0x$end - 0x20000000 - 0x$w0 - 0x$w1)) -eq "$other" ] && [ $((0x$w1)) -lt $((0x$w0)) ]; then
+  pass "image_check_budget_equals_the_linked_image (core 0 $((0x$w0)) bytes of work, core 1 $((0x$w1)))"
 else
-  fail image_check_budget_equals_the_linked_image "check: '$other', image: ${end:-?} - 0x20000000 - ${work:-?}"
+  fail image_check_budget_equals_the_linked_image "check: '$other', image: ${end:-?} - 0x20000000 - ${w0:-?} - ${w1:-?}"
 fi
 
 # ---- on the emulated board ----------------------------------------------------
@@ -167,12 +170,12 @@ model { name = m generate = sphere divs = 64 color = (0, 255, 0) }
 instance { model = m transform { translation = (0, 0, 3) } }
 EOF
 refused image_refuses_a_scene_that_does_not_fit \
-  "^image $name: scene big.scene needs [0-9]* bytes of work per core, the RP2040 two-core image has [0-9]*\$" \
+  "^image $name: scene big.scene needs [0-9]* bytes of work on core 0 and [0-9]* on core 1, the RP2040 two-core image has [0-9]*\$" \
   NAME="$name" SCENES="$t/my/flat.scene $t/big/big.scene"
-need=$(sed -n 's/.* needs \([0-9]*\) bytes.*has \([0-9]*\)$/\1 \2/p' "$t/r")
-set -- $need 0 0
-if [ "$1" -gt "$2" ] && [ "$2" -gt 0 ] && [ ! -e "$b/firmware/pico/obj-$name/$set_dir/s2_big.o" ]; then
-  pass "image_does_not_fit_before_compiling_the_scene_for_the_board (needs $1, has $2)"
+need=$(sed -n 's/.* needs \([0-9]*\) bytes of work on core 0 and \([0-9]*\) on core 1.*has \([0-9]*\)$/\1 \2 \3/p' "$t/r")
+set -- $need 0 0 0
+if [ $(($1 + $2)) -gt "$3" ] && [ "$3" -gt 0 ] && [ ! -e "$b/firmware/pico/obj-$name/$set_dir/s2_big.o" ]; then
+  pass "image_does_not_fit_before_compiling_the_scene_for_the_board (needs $1 + $2, has $3)"
 else
   fail image_does_not_fit_before_compiling_the_scene_for_the_board \
     "'$need'; $(ls "$b/firmware/pico/obj-$name/$set_dir" 2>&1)"

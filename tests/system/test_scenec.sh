@@ -26,16 +26,26 @@ for f in $(find firmware/scenes -name '*.scene' | sort); do
   name=${f#firmware/scenes/}; name=${name%.scene}
   id=$(printf '%s' "$name" | tr -c 'A-Za-z0-9\n' '_')
   out="$work/$id.c"
-  # the exact need: render_work_size on the target, measured here (not taken from scenec)
-  if ! target=$(tools/scenec/target_work.sh "$probe" "$f" 240 240 16 2>"$work/$id.perr"); then
+  # the exact need: render_work_size on the target, measured here (not taken
+  # from scenec), with the second core's (render_sibling_work_size): WORK:SIBLING
+  if ! tw=$(tools/scenec/target_work.sh "$probe" "$f" 240 240 16 2>"$work/$id.perr"); then
     echo "FAIL scenec_target_work_$id: $(cat "$work/$id.perr")"
     continue
   fi
-  if ! "$scenec" --size 240x240 --strip-rows 16 --target-work "$target" -o "$out" "$f" >"$work/$id.log" 2>&1; then
+  target=${tw%%:*} sibling=${tw#*:}
+  if ! "$scenec" --size 240x240 --strip-rows 16 --target-work "$tw" -o "$out" "$f" >"$work/$id.log" 2>&1; then
     echo "FAIL scenec_$id: $(tail -n 3 "$work/$id.log")"
     continue
   fi
   [ -z "$report" ] && echo "PASS scenec_$id"
+  if [ -z "$report" ]; then
+    hs=$(sed -n 's/^#define SCENE_[A-Z0-9_]*_SIBLING_WORK_SIZE \([0-9]*\)$/\1/p' "${out%.c}.h")
+    if [ "$hs" = "$sibling" ] && [ "$sibling" -le "$target" ]; then
+      echo "PASS scenec_sibling_work_$id ($sibling of $target bytes)"
+    else
+      echo "FAIL scenec_sibling_work_$id: header '$hs', probe $sibling, work $target"
+    fi
+  fi
   frac=$(sed -n 's/.*num_frac=\([0-9]*\).*/\1/p' "$work/$id.log")
   host=$(sed -n 's/.*host_work=\([0-9]*\).*/\1/p' "$work/$id.log")
   pairs="$pairs $f=$frac"

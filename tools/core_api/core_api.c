@@ -63,6 +63,11 @@ static size_t work_size(const void *scene, uint16_t w, uint16_t h, uint16_t stri
     return render_work_size(scene, w, h, strip_rows);
 }
 
+static size_t sibling_work_size(const void *scene, uint16_t w, uint16_t h, uint16_t strip_rows)
+{
+    return render_sibling_work_size(scene, w, h, strip_rows);
+}
+
 static int init(struct render_ctx *ctx, const void *scene, uint16_t w, uint16_t h,
                 uint16_t strip_rows, void *work, size_t work_size)
 {
@@ -110,4 +115,5 @@ static void move_camera(void *scene, double dx, double dy, double dz)
 const struct core_api API = {
     NUM_NAME, load, parse_text, read_text, free_scene, info, work_size, init, render_begin_frame, render_strip,
     &num_saturations, API_FRAC, format, exact_methods, render_set_pass, set_fits, decision_probe, move_camera,
+    sibling_work_size,
 };

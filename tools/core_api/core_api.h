@@ -71,6 +71,8 @@ struct core_api {
     void (*decision_probe)(struct render_ctx *ctx, uint8_t *shadow, int16_t *item);
     /* Moves a loaded scene's camera by (dx, dy, dz) scene units (then init). */
     void (*move_camera)(void *scene, double dx, double dy, double dz);
+    /* render_sibling_work_size (render.h): a second core's context */
+    size_t (*sibling_work_size)(const void *scene, uint16_t w, uint16_t h, uint16_t strip_rows);
 };
 
 extern const struct core_api core_api_fixed, core_api_float, core_api_double;

@@ -2,7 +2,7 @@
 /* scenec — compiles a scene file into C source for the firmware.
  *
  *   scenec [--size WxH] [--strip-rows N] [--fracs 20,...,12] [--id NAME]
- *          [--allow-wide] [--target-work BYTES] [--deps OUT.d] -o OUT.c SCENE
+ *          [--allow-wide] [--target-work BYTES[:SIBLING]] [--deps OUT.d] -o OUT.c SCENE
  *
  * Writes OUT.c (the scene as const data: models, textures, lights in flash;
  * one static work buffer of exactly render_work_size() bytes) and OUT.h (its
@@ -15,9 +15,10 @@
  * doubles, written as NUM_C(literal), so the same file compiles to the exact
  * doubles in the double build and to the nearest fixed-point values in a
  * fixed build of any NUM_FRAC (NUM_C rounds exactly as num_from_double).
- * The work size is the target's: --target-work BYTES, measured by running
- * render_work_size() on the emulated Cortex-M0+ (tools/scenec/target_work.sh,
- * as `make scenes` does). Without it scenec falls back to the fixed-point
+ * The work size is the target's: --target-work BYTES[:SIBLING], measured by
+ * running render_work_size() (and render_sibling_work_size(), the second
+ * core's context, SCENE_<ID>_SIBLING_WORK_SIZE) on the emulated Cortex-M0+
+ * (tools/scenec/target_work.sh, as `make scenes` does). Without it scenec falls back to the fixed-point
  * core of this 64-bit host (core_api_fixed12), an upper bound: the work
  * structures hold pointers and sizes, 8 bytes here and 4 on the target, and
  * every other member has the same size and alignment on both.
@@ -498,7 +499,7 @@ static int write_deps(const char *dpath, const char *outc, const char *scene)
 static int usage(void)
 {
     fprintf(stderr, "usage: scenec [--size WxH] [--strip-rows N] [--fracs 20,...,12] [--id NAME] [--allow-wide] "
-                    "[--target-work BYTES] [--deps OUT.d] -o OUT.c SCENE\n");
+                    "[--target-work BYTES[:SIBLING]] [--deps OUT.d] -o OUT.c SCENE\n");
     return 2;
 }
 
@@ -507,6 +508,7 @@ static int usage(void)
 struct args {
     int width, height, strip, allow_wide;
     long target_work;             /* -1: not given */
+    long target_sibling;          /* -1: not given (then this host's) */
     int fracs[16], nfracs;
     const char *outc, *path, *idarg, *deps;
 };
@@ -534,6 +536,7 @@ static int parse_args(int argc, char **argv, struct args *a)
     a->width = a->height = 240;
     a->strip = 16;
     a->target_work = -1;
+    a->target_sibling = -1;
     memcpy(a->fracs, all_fracs, sizeof all_fracs);
     a->nfracs = 9;
     for (int i = 1; i < argc; i++) {
@@ -551,6 +554,12 @@ static int parse_args(int argc, char **argv, struct args *a)
         } else if (!strcmp(argv[i], "--target-work") && i + 1 < argc) {
             char *e;
             a->target_work = strtol(argv[++i], &e, 10);
+            if (*e == ':') {
+                char *f;
+                a->target_sibling = strtol(e + 1, &f, 10);
+                if (f == e + 1 || *f || a->target_sibling < 0 || a->target_sibling > 0x7fffffffL) return -1;
+                e = f;
+            }
             if (*e || a->target_work < 0 || a->target_work > 0x7fffffffL) return -1;
         } else if (!strcmp(argv[i], "--allow-wide")) {
             a->allow_wide = 1;
@@ -616,8 +625,10 @@ static int analyse(const struct args *a, const struct scene *s, struct scene_for
 }
 
 /* The renderer's work memory: *work the target's (--target-work) or else the
- * fixed-point core's on this host, *host_work the latter. 0, or 2. */
-static int work_sizes(const struct args *a, const char *text, size_t len, size_t *work, size_t *host_work)
+ * fixed-point core's on this host, *host_work the latter; *sibling the same
+ * of the second core's context. 0, or 2. */
+static int work_sizes(const struct args *a, const char *text, size_t len, size_t *work, size_t *host_work,
+                      size_t *sibling)
 {
     char err[600];
     void *fs = NULL;
@@ -626,7 +637,15 @@ static int work_sizes(const struct args *a, const char *text, size_t len, size_t
         return 2;
     }
     *host_work = core_api_fixed12.work_size(fs, (uint16_t)a->width, (uint16_t)a->height, (uint16_t)a->strip);
+    size_t host_sibling = core_api_fixed12.sibling_work_size(fs, (uint16_t)a->width, (uint16_t)a->height,
+                                                             (uint16_t)a->strip);
     core_api_fixed12.scene_free(fs);
+    *sibling = a->target_sibling >= 0 ? (size_t)a->target_sibling : host_sibling;
+    if (a->target_sibling > (long)host_sibling) {
+        fprintf(stderr, "%s:1:1: error: --target-work sibling size %ld exceeds this host's %zu; the probe image is "
+                        "stale or for another scene\n", a->path, a->target_sibling, host_sibling);
+        return 2;
+    }
     *work = a->target_work >= 0 ? (size_t)a->target_work : *host_work;
     if (a->target_work > (long)*host_work) {
         /* the target's structures are never larger than the host's */
@@ -637,7 +656,7 @@ static int work_sizes(const struct args *a, const char *text, size_t len, size_t
     return 0;
 }
 
-static void write_header(FILE *h, const struct args *a, const char *id, int frac, size_t work)
+static void write_header(FILE *h, const struct args *a, const char *id, int frac, size_t work, size_t sibling)
 {
     char ID[256];
     upper(ID, id);
@@ -645,19 +664,21 @@ static void write_header(FILE *h, const struct args *a, const char *id, int frac
     fprintf(h, "/* scene_%s.h — generated by tools/scenec from %s; do not edit.\n *\n"
                " * Checked for the fixed-point core at NUM_FRAC <= %d, a %dx%d frame in strips of %d rows.\n"
                " * RAM: scene_%s_work (SCENE_%s_WORK_SIZE bytes, for render_init) plus the caller's\n"
-               " * strip buffer (SCENE_%s_STRIP_BYTES = width x strip rows x 2 bytes of RGB565).\n */\n",
-            id, a->path, frac, a->width, a->height, a->strip, id, ID, ID);
+               " * strip buffer (SCENE_%s_STRIP_BYTES = width x strip rows x 2 bytes of RGB565); a\n"
+               " * second core's context (render_init_sibling) SCENE_%s_SIBLING_WORK_SIZE bytes.\n */\n",
+            id, a->path, frac, a->width, a->height, a->strip, id, ID, ID, ID);
     fprintf(h, "#ifndef SCENE_%s_H\n#define SCENE_%s_H\n\n#include <stdint.h>\n#include \"scene.h\"\n\n", ID, ID);
     fprintf(h, "#define SCENE_%s_NUM_FRAC   %d\n#define SCENE_%s_WIDTH      %d\n#define SCENE_%s_HEIGHT     %d\n"
-               "#define SCENE_%s_STRIP_ROWS %d\n#define SCENE_%s_WORK_SIZE  %zu\n#define SCENE_%s_STRIP_BYTES %zu\n\n",
-            ID, frac, ID, a->width, ID, a->height, ID, a->strip, ID, work, ID, strip_bytes);
+               "#define SCENE_%s_STRIP_ROWS %d\n#define SCENE_%s_WORK_SIZE  %zu\n#define SCENE_%s_STRIP_BYTES %zu\n"
+               "#define SCENE_%s_SIBLING_WORK_SIZE %zu\n\n",
+            ID, frac, ID, a->width, ID, a->height, ID, a->strip, ID, work, ID, strip_bytes, ID, sibling);
     fprintf(h, "extern const struct scene scene_%s;\nextern uint8_t scene_%s_work[];\n\n#endif\n", id, id);
 }
 
 /* OUT.h, then OUT.c, each complete before either replaces the old one: 0,
  * 1 (an output cannot be written) or 2 (OUT does not end in .c). */
 static int write_outputs(const struct args *a, const struct scene *s, const char *id, int frac, unsigned fits,
-                         size_t work)
+                         size_t work, size_t sibling)
 {
     static char outh[1024];
     snprintf(outh, sizeof outh, "%s", a->outc);
@@ -673,7 +694,7 @@ static int write_outputs(const struct args *a, const struct scene *s, const char
         fprintf(stderr, "scenec: cannot write %s\n", outh);
         return 1;
     }
-    write_header(h, a, id, frac, work);
+    write_header(h, a, id, frac, work, sibling);
     int herr = ferror(h);
     if (fclose(h) || herr) {
         fprintf(stderr, "scenec: error writing %s\n", outh);
@@ -723,12 +744,12 @@ int main(int argc, char **argv)
 
     /* ranges, and the number format (tools/scene/scene_format.c) */
     struct scene_format F;
-    size_t work = 0, host_work = 0;
+    size_t work = 0, host_work = 0, sibling = 0;
     rc = analyse(&a, s, &F);
-    if (!rc) rc = work_sizes(&a, text, text_len, &work, &host_work);
+    if (!rc) rc = work_sizes(&a, text, text_len, &work, &host_work, &sibling);
     free(text);
     if (!rc && a.deps) rc = write_deps(a.deps, a.outc, a.path);
-    if (!rc) rc = write_outputs(&a, s, id, F.num_frac, scene_format_fits(&F, F.num_frac), work);
+    if (!rc) rc = write_outputs(&a, s, id, F.num_frac, scene_format_fits(&F, F.num_frac), work, sibling);
     if (rc) {
         scene_free(s);
         return rc;
@@ -736,11 +757,12 @@ int main(int argc, char **argv)
     int frac = F.num_frac;
     size_t strip_bytes = (size_t)a.width * a.strip * 2;
     printf("  memory: RAM %zu bytes of work (%s; this host's core: %zu) + %zu bytes of strip (%dx%d, %d rows);\n"
+           "    a second core's context (render_init_sibling) %zu bytes more;\n"
            "    flash: the const data of %s\n",
            work, a.target_work >= 0 ? "the target's render_work_size" : "this host's render_work_size, an upper bound",
-           host_work, strip_bytes, a.width, a.height, a.strip, a.outc);
-    printf("scenec-summary id=%s num_frac=%d work=%zu host_work=%zu target=%d strip=%zu\n", id, frac, work, host_work,
-           a.target_work >= 0, strip_bytes);
+           host_work, strip_bytes, a.width, a.height, a.strip, sibling, a.outc);
+    printf("scenec-summary id=%s num_frac=%d work=%zu host_work=%zu target=%d strip=%zu sibling=%zu\n", id, frac, work,
+           host_work, a.target_work >= 0, strip_bytes, sibling);
     scene_free(s);
     return 0;
 }

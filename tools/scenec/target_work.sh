@@ -2,9 +2,11 @@
 # SPDX-License-Identifier: MIT
 # The renderer's work memory for a scene on the target: runs the work probe
 # image (tools/scenec/work_probe.c) on the emulated Cortex-M0+ and prints
-# render_work_size() as the 32-bit firmware computes it.
+# render_work_size() and render_sibling_work_size() (a second core's
+# context) as the 32-bit firmware computes them.
 #   tools/scenec/target_work.sh PROBE.elf SCENE W H STRIP_ROWS
-# Exit 0 with the byte count on stdout; 2 with a one-line error on stderr.
+# Exit 0 with "WORK:SIBLING" (two byte counts, scenec's --target-work) on
+# stdout; 2 with a one-line error on stderr.
 # SCENE must not contain spaces or commas (qemu's argument syntax).
 set -u
 [ $# -eq 5 ] || { echo "usage: target_work.sh PROBE.elf SCENE W H STRIP_ROWS" >&2; exit 2; }
@@ -13,8 +15,9 @@ command -v qemu-system-arm >/dev/null 2>&1 || { echo "target_work.sh: qemu-syste
 out=$(timeout 60 qemu-system-arm -M mps2-an385 -nographic -monitor none -serial null \
   -semihosting-config "enable=on,target=native,arg=probe,arg=$2,arg=$3,arg=$4,arg=$5" -kernel "$1" 2>&1)
 n=$(printf '%s\n' "$out" | sed -n 's/^WORK \([0-9][0-9]*\)$/\1/p')
-if [ -z "$n" ]; then
+m=$(printf '%s\n' "$out" | sed -n 's/^SIBLING \([0-9][0-9]*\)$/\1/p')
+if [ -z "$n" ] || [ -z "$m" ]; then
   echo "target_work.sh: $2: $(printf '%s' "$out" | head -n 2 | tr '\n' ' ')" >&2
   exit 2
 fi
-echo "$n"
+echo "$n:$m"

@@ -6,7 +6,8 @@
  *
  *   qemu-system-arm -M mps2-an385 ... -semihosting-config \
  *       enable=on,target=native,arg=probe,arg=SCENE,arg=W,arg=H,arg=STRIP -kernel work_probe.elf
- *   -> "WORK <bytes>" (exit 0), or "ERROR <message>" (exit 1)
+ *   -> "WORK <bytes>" and "SIBLING <bytes>" (render_sibling_work_size: the
+ *      second core's context) (exit 0), or "ERROR <message>" (exit 1)
  *
  * The file is read through semihosting (newlib's rdimon). The work layout
  * depends on the scene's counts and options, not on its numbers, and the
@@ -35,9 +36,12 @@ int bench_main(void)
     struct scene *s = NULL;
     if (scene_load(argv[1], &s, err, sizeof err)) return bench_fail(err);
     size_t n = render_work_size(s, (uint16_t)w, (uint16_t)h, (uint16_t)(strip > h ? h : strip));
+    size_t m = render_sibling_work_size(s, (uint16_t)w, (uint16_t)h, (uint16_t)(strip > h ? h : strip));
     scene_free(s);
     bench_puts("WORK ");
     bench_put_u64(n);
+    bench_puts("\nSIBLING ");
+    bench_put_u64(m);
     bench_puts("\n");
     return 0;
 }

@@ -48,11 +48,16 @@ $(foreach v,$(VARIANTS),$(call program,$(BUILD)/$(v)/tests/test_raster_ch15,\
 TESTS += $(BUILD)/host/tests/test_raster_ch15
 TEST_DEPS += $(BUILD)/host/tests/test_raster_ch15
 
+# The benchmark meshes (firmware/scenes/bench/knot-*.obj) are what
+# tools/bench/gen_mesh.py makes.
+TESTS += tests/system/test_meshes.sh
+
 # `make bench`: the benchmark scenes of firmware/scenes/bench/ (the
-# small3dlib cube workload: textured, Gouraud, flat; an empty frame), each
-# image built at the scene's own number format (tools/scenec's NUM_FRAC) for
-# the emulated Cortex-M0+ and M4F, fixed and float; rows per frame, per
-# drawn pixel and for render_init (tools/bench/bench_scene.c).
+# small3dlib cube workload: textured, Gouraud, flat; an empty frame; the
+# trefoil-knot meshes of 4,096 and 16,384 triangles), each image built at the
+# scene's own number format (tools/scenec's NUM_FRAC) for the emulated
+# Cortex-M0+ and M4F, fixed and float; rows per frame, per drawn pixel, per
+# triangle (the meshes) and for render_init (tools/bench/bench_scene.c).
 BENCH_SCENE_NAMES := $(patsubst firmware/scenes/bench/%.scene,%,$(sort $(wildcard firmware/scenes/bench/*.scene)))
 bench_scene_frac = $(shell sed -n 's/^scenec-summary .* num_frac=\([0-9]*\) .*/\1/p' $(BUILD)/scenes/bench/$(1).log 2>/dev/null)
 define BENCH_SCENE_IMAGE

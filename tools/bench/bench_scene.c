@@ -14,6 +14,8 @@
  *   per "frame"  average over the scene's frames
  *   per "pixel"  that average / the average drawn pixels of a frame
  *   per "init"   render_init once
+ *   per "triangle" the frame average / the scene's triangles (scenes of
+ *                at least 1,000 triangles: the meshes)
  * with pixels=P (average drawn pixels a frame) and frames=F, for the scene
  * as written (variant "default") and for each other method of the
  * rasterizer's default path: "perspective_step=1" (the exact per-pixel
@@ -27,7 +29,7 @@
 #define H 240
 #define STRIP 16
 
-static uint64_t work[64 * 1024 / 8 * 4];   /* 256 KiB */
+static uint64_t work[64 * 1024 / 8 * 16];  /* 1 MiB (the meshes' scenes) */
 static uint16_t strip_px[W * STRIP];
 static uint8_t strip_written[W * STRIP];
 
@@ -81,6 +83,10 @@ static int measure(const struct scene *s, const char *variant)
     report(variant, "frame", total * 1000 / frames, avg_px, frames);
     report(variant, "pixel", avg_px ? total * 1000 / frames / avg_px : 0, avg_px, frames);
     report(variant, "init", init * 1000, avg_px, frames);
+    uint32_t tris = 0;
+    for (uint16_t i = 0; s->kind == SCENE_RASTER && i < s->ninstances; i++)
+        if (s->instances[i].model < s->nmodels) tris += s->models[s->instances[i].model].ntris;
+    if (tris >= 1000) report(variant, "triangle", total * 1000 / frames / tris, avg_px, frames);
     return 0;
 }
 

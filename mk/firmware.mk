@@ -12,10 +12,12 @@
 #
 # Build options (make VAR=value): FW_PINS (extra -D pin options, e.g.
 # "-DRP2040_PIN_DC=8"), RP2040_SYS_MHZ (125 or 133), RP2040_RAM_TEXT (1, the
-# default: the rasterizer's span loops, RAS_HOT in
-# firmware/core/raster/raster_int.h, are copied to SRAM and run from there
-# instead of through the 16 KB XIP cache; 0: from flash), FW_SCENE_SRCS (the
-# scene table; default the built-in placeholder), FW_EXTRA (more -D flags).
+# default: the renderer core, with the rasterizer's span loops (RAS_HOT in
+# firmware/core/raster/raster_int.h), is copied to SRAM and runs from there
+# instead of through the 16 KB XIP cache, about 156 KB; raster: only the
+# rasterizer's default path and the numeric layer, about 64 KB, which leaves
+# a mesh room for its work memory; 0: everything from flash), FW_SCENE_SRCS
+# (the scene table; default the built-in placeholder), FW_EXTRA (more -D flags).
 
 ARM_CC      ?= arm-none-eabi-gcc
 ARM_OBJCOPY ?= arm-none-eabi-objcopy
@@ -93,15 +95,23 @@ fw_frac_objs = $(patsubst %.c,$(1)/%.o,$(2))
 
 # ---- RP2040 ------------------------------------------------------------------
 RP_DIR   := firmware/board/rp2040
+# RP2040_RAM_TEXT: 1 the whole core in SRAM, raster the rasterizer's default
+# path only (firmware/board/rp2040/ram_text/raster: room for a mesh's work
+# memory), 0 nothing (code from flash through the XIP cache)
+ifeq ($(filter 0 1 raster,$(RP2040_RAM_TEXT)),)
+$(error RP2040_RAM_TEXT=$(RP2040_RAM_TEXT): 1, raster or 0)
+endif
+RP_RAM_TEXT_DIR := $(if $(filter 1,$(RP2040_RAM_TEXT)),on,$(if $(filter raster,$(RP2040_RAM_TEXT)),raster,off))
 RP_SRCS  := $(RP_DIR)/crt0.c $(RP_DIR)/board.c $(RP_DIR)/fw_board_rp2040.c hal/rp2040/hal_rp2040.c \
             $(FW_COMMON)
 RP_ASM   := $(RP_DIR)/hwdiv.S
 RP_CFLAGS := -mcpu=cortex-m0plus -mthumb -O2 -g -std=c11 $(WARN) -ffunction-sections -fdata-sections \
              -ffreestanding -fno-common -DRENDER_HOST_OUTPUTS=0 -DNUM_MODE=1 -DRP2040_SYS_MHZ=$(RP2040_SYS_MHZ) -DFW_STRIP_ROWS=$(FW_STRIP_ROWS) \
-             $(if $(filter 1,$(RP2040_RAM_TEXT)),-DRAS_RAM_TEXT) \
+             $(if $(filter 1 raster,$(RP2040_RAM_TEXT)),-DRAS_RAM_TEXT) \
+             $(if $(filter raster,$(RP2040_RAM_TEXT)),-DRP2040_RAM_TEXT_RASTER) \
              $(FW_INC) -I$(RP_DIR) -Ihal/rp2040 $(FW_PINS) $(FW_EXTRA)
 RP_LDFLAGS := -mcpu=cortex-m0plus -mthumb --specs=nano.specs -nostartfiles -T $(RP_DIR)/rp2040.ld \
-              -L$(RP_DIR)/ram_text/$(if $(filter 1,$(RP2040_RAM_TEXT)),on,off) \
+              -L$(RP_DIR)/ram_text/$(RP_RAM_TEXT_DIR) \
               -Wl,--gc-sections -Wl,--no-warn-rwx-segments
 
 # boot2: assembled, linked at its SRAM address, CRC appended, re-emitted as .S.
@@ -137,7 +147,7 @@ $(FW_OUT)/pico/obj-$(1)/boot2_crc.o: $(FW_OUT)/pico/boot2_crc.S
 $(FW_OUT)/pico/$(1).elf: $(patsubst %.c,$(FW_OUT)/pico/obj-$(1)/%.o,$(RP_SRCS) $(3)) \
                          $(patsubst %.S,$(FW_OUT)/pico/obj-$(1)/%.o,$(RP_ASM)) \
                          $(FW_OUT)/pico/obj-$(1)/boot2_crc.o $(RP_DIR)/rp2040.ld \
-                         $(RP_DIR)/ram_text/$(if $(filter 1,$(RP2040_RAM_TEXT)),on,off)/ram_text.ld
+                         $(RP_DIR)/ram_text/$(RP_RAM_TEXT_DIR)/ram_text.ld
 	$$(Q)$$(ARM_CC) $$(RP_LDFLAGS) -Wl,-Map=$(FW_OUT)/pico/$(1).map \
 		$$(filter %.o,$$^) -lc -lgcc -o $$@
 $(FW_OUT)/pico/$(1).bin: $(FW_OUT)/pico/$(1).elf

@@ -19,7 +19,12 @@
 #     and a scene whose work memory does not fit (a sphere of 64 divisions),
 #     with the bytes it needs and the bytes the image has, before the scene
 #     is compiled for the board and the image linked.
-# ~15 s (two cores). usage: test_image.sh BUILD_DIR
+#   - a mesh (the 4,096-triangle knot of firmware/scenes/bench/, its OBJ
+#     next to it): refused with the whole core in SRAM (the default), built
+#     with RP2040_RAM_TEXT=raster (the rasterizer's default path in SRAM),
+#     core 1 a sibling of core 0's context; its frame 0 on both emulated
+#     cores equals host_sim's.
+# ~60 s (two cores). usage: test_image.sh BUILD_DIR
 set -u
 b=${1:-build}
 name=test-image
@@ -179,5 +184,29 @@ if [ $(($1 + $2)) -gt "$3" ] && [ "$3" -gt 0 ] && [ ! -e "$b/firmware/pico/obj-$
 else
   fail image_does_not_fit_before_compiling_the_scene_for_the_board \
     "'$need'; $(ls "$b/firmware/pico/obj-$name/$set_dir" 2>&1)"
+fi
+# ---- a mesh ---------------------------------------------------------------------
+mkdir -p "$t/mesh"
+cp firmware/scenes/bench/knot-4k-gouraud.scene firmware/scenes/bench/knot-4k.obj "$t/mesh/"
+if mk SCENES="$t/mesh/knot-4k-gouraud.scene" >"$t/r" 2>&1; then
+  fail image_mesh_refused_with_the_whole_core_in_sram "built: $(tail -n 1 "$t/r")"
+elif grep -q "^image $name: scene knot-4k-gouraud.scene needs [0-9]* bytes of work on core 0 and [0-9]* on core 1" "$t/r"; then
+  pass image_mesh_refused_with_the_whole_core_in_sram
+else
+  fail image_mesh_refused_with_the_whole_core_in_sram "$(grep "^image" "$t/r" | head -n 1)"
+fi
+if ! mk SCENES="$t/mesh/knot-4k-gouraud.scene" RP2040_RAM_TEXT=raster >"$t/r" 2>&1; then
+  fail image_mesh_builds_with_ram_text_raster "$(grep "^image" "$t/r" | head -n 1)"
+else
+  pass image_mesh_builds_with_ram_text_raster
+  frac=$(sed -n 's/^#define NUM_FRAC \([0-9][0-9]*\)$/\1/p' "$set_dir/num_frac.h")
+  e=$(sim 1 "$t/knot")
+  "$b/host_sim" --scene "$t/mesh/knot-4k-gouraud.scene" --size 240x240 --numeric fixed --num-frac "$frac" \
+    --out-raw "$t/knot0.raw" >/dev/null 2>"$t/herr" || e="$e host_sim: $(tail -n 1 "$t/herr")"
+  if [ -z "$e" ] && grep -q '"cores":2' "$t/knot.json" && cmp -s "$t/knot0.raw" "$t/knot/frame-0.raw"; then
+    pass "image_mesh_frame_0_as_host_sim ($(sed -n 's/.*"fps":\([0-9.]*\).*/\1/p' "$t/knot.json" | head -n 1) fps)"
+  else
+    fail image_mesh_frame_0_as_host_sim "${e:-frames differ}"
+  fi
 fi
 exit 0

@@ -36,7 +36,7 @@ int bench_main(void)
         uint32_t sum = 0;
         uint64_t n = 0;
         if (render_init(&ctx, fs->scene, FW_WIDTH, FW_HEIGHT, FW_STRIP_ROWS, fs->work[0],
-                        fs->work_size) != 0 ||
+                        fs->work_size[0]) != 0 ||
             render_begin_frame(&ctx, 0) != 0) {
             bench_puts("FAIL bench_frame: render_init\n");
             rc = 1;

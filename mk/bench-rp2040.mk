@@ -9,7 +9,8 @@
 # "cycles_max"; frame 0 is drawn without the fps overlay, the others with it,
 # as on the board), and the ray tracer's benchmark scenes with the
 # progressive preview's first_image_us; the cube scenes again on the ILI9341
-# in landscape ("width":320). Read after mk/firmware.mk and mk/rp2040sim.mk,
+# in landscape ("width":320); the 4,096-triangle meshes on two cores (the
+# mean of FW_MESH_FRAMES frames each, RP2040_RAM_TEXT=raster). Read after mk/firmware.mk and mk/rp2040sim.mk,
 # whose images and RP2040SIM_DEPS it runs.
 
 RP2040SIM_BENCH_FRAMES ?= 1
@@ -21,13 +22,15 @@ RP2040SIM_ARGS_book    = --frames $(words $(FW_BOOK_SCENES)) --json
 RP2040SIM_ARGS_cube    = --frames $$(($(words $(FW_CUBE_SCENES)) * $(FW_CUBE_FRAMES))) --json --average
 RP2040SIM_ARGS_cube320 = --panel ili9341_320x240 $(RP2040SIM_ARGS_cube)
 RP2040SIM_ARGS_rt      = --frames $(words $(FW_RT_SCENES)) --json
+RP2040SIM_ARGS_mesh    = --frames $$(($(words $(FW_MESH_SCENES)) * $(FW_MESH_FRAMES))) --json --average
 # The runs, IMAGE:VARIANT:SET (SET: RP2040SIM_ARGS_<SET>), in the order of
 # their rows in results.jsonl.
 RP2040SIM_BENCH_RUNS := cgfs-1core:single-core:plain cgfs:two-core:plain \
                         cgfs-book-1core:single-core:book cgfs-book-bench:two-core:book \
                         cgfs-cube-1core:single-core:cube cgfs-cube:two-core:cube \
                         cgfs-cube-ili9341-1core:single-core:cube320 cgfs-cube-ili9341:two-core:cube320 \
-                        cgfs-rt-1core:single-core:rt cgfs-rt:two-core:rt
+                        cgfs-rt-1core:single-core:rt cgfs-rt:two-core:rt \
+                        cgfs-mesh:two-core:mesh
 # $(call rp2040sim_field,N,RUN): field N of a run (1 image, 2 variant, 3 set)
 rp2040sim_field = $(word $(1),$(subst :, ,$(2)))
 RP2040SIM_BENCH_IMAGES := $(foreach r,$(RP2040SIM_BENCH_RUNS),$(call rp2040sim_field,1,$(r)))

@@ -56,11 +56,12 @@ FW_INC       := -I. -Ifirmware/core -Ifirmware/app -Ihal -I$(FW_OUT)/scenes
 FW_BOOK_SCENES ?= book/raytracer-02 book/raster-11
 FW_CUBE_SCENES ?= bench/cube-textured bench/cube-gouraud bench/cube-flat
 FW_RT_SCENES   ?= book/raytracer-05 bench/raytracer-05-adaptive
+FW_MESH_SCENES ?= bench/knot-4k-gouraud bench/knot-4k-flat
 FW_STRIP_ROWS  ?= 8
 fw_scene_id     = $(subst -,_,$(subst /,_,$(1)))
 fw_scene_h      = $(foreach n,$(1),$(FW_OUT)/scenes/$(call fw_scene_id,$(n))$(2).h)
 # once per scene of all the sets (book/raytracer-02 -> book_raytracer_02.c)
-$(foreach n,$(sort $(FW_BOOK_SCENES) $(FW_CUBE_SCENES) $(FW_RT_SCENES)),\
+$(foreach n,$(sort $(FW_BOOK_SCENES) $(FW_CUBE_SCENES) $(FW_RT_SCENES) $(FW_MESH_SCENES)),\
     $(call scenec_rule,$(FW_OUT)/scenes/$(call fw_scene_id,$(n)).c,$(n),240x240,$(FW_STRIP_ROWS),$(call fw_scene_id,$(n)),1))
 # The cube scenes again at 320x240, for the ILI9341 module in landscape
 # (files and identifiers <id>_320).
@@ -88,6 +89,7 @@ fw_scene_set = $(eval $(call FW_SCENE_SET,$(1),$(2),$(3)))$(call scene_frac_rule
 $(call fw_scene_set,BOOK,book)
 $(call fw_scene_set,CUBE,cube)
 $(call fw_scene_set,RT,rt)
+$(call fw_scene_set,MESH,mesh)
 $(call fw_scene_set,CUBE320,cube320,_320)
 # fw_frac_objs(OBJ_DIR,SOURCES): the objects of an image that links a scene
 # set; they are compiled after, and again when, the format changes.
@@ -110,9 +112,9 @@ RP_CFLAGS := -mcpu=cortex-m0plus -mthumb -O2 -g -std=c11 $(WARN) -ffunction-sect
              $(if $(filter 1 raster,$(RP2040_RAM_TEXT)),-DRAS_RAM_TEXT) \
              $(if $(filter raster,$(RP2040_RAM_TEXT)),-DRP2040_RAM_TEXT_RASTER) \
              $(FW_INC) -I$(RP_DIR) -Ihal/rp2040 $(FW_PINS) $(FW_EXTRA)
-RP_LDFLAGS := -mcpu=cortex-m0plus -mthumb --specs=nano.specs -nostartfiles -T $(RP_DIR)/rp2040.ld \
-              -L$(RP_DIR)/ram_text/$(RP_RAM_TEXT_DIR) \
-              -Wl,--gc-sections -Wl,--no-warn-rwx-segments
+RP_LDFLAGS_BASE := -mcpu=cortex-m0plus -mthumb --specs=nano.specs -nostartfiles -T $(RP_DIR)/rp2040.ld \
+                   -Wl,--gc-sections -Wl,--no-warn-rwx-segments
+RP_LDFLAGS := $(RP_LDFLAGS_BASE) -L$(RP_DIR)/ram_text/$(RP_RAM_TEXT_DIR)
 
 # boot2: assembled, linked at its SRAM address, CRC appended, re-emitted as .S.
 # RP2040_BOOT2: w25q16jv (the Pico's flash, quad EBh continuous read at
@@ -129,7 +131,8 @@ $(FW_OUT)/pico/boot2.bin: $(FW_OUT)/pico/boot2.elf
 $(FW_OUT)/pico/boot2_crc.S: $(FW_OUT)/pico/boot2.bin tools/uf2/boot2crc.py
 	$(Q)$(PYTHON) tools/uf2/boot2crc.py $< $@
 
-# $(1) = image name, $(2) = extra flags, $(3) = scene table sources.
+# $(1) = image name, $(2) = extra flags, $(3) = scene table sources, $(4) =
+# the image's ram_text directory (on, raster, off; default RP2040_RAM_TEXT's).
 # obj-<image>/cflags holds the image's compile flags, rewritten only when they
 # change (RP2040_RAM_TEXT=0, RP2040_SYS_MHZ=125, ...), so that its objects follow.
 define RP_IMAGE
@@ -147,8 +150,8 @@ $(FW_OUT)/pico/obj-$(1)/boot2_crc.o: $(FW_OUT)/pico/boot2_crc.S
 $(FW_OUT)/pico/$(1).elf: $(patsubst %.c,$(FW_OUT)/pico/obj-$(1)/%.o,$(RP_SRCS) $(3)) \
                          $(patsubst %.S,$(FW_OUT)/pico/obj-$(1)/%.o,$(RP_ASM)) \
                          $(FW_OUT)/pico/obj-$(1)/boot2_crc.o $(RP_DIR)/rp2040.ld \
-                         $(RP_DIR)/ram_text/$(RP_RAM_TEXT_DIR)/ram_text.ld
-	$$(Q)$$(ARM_CC) $$(RP_LDFLAGS) -Wl,-Map=$(FW_OUT)/pico/$(1).map \
+                         $(RP_DIR)/ram_text/$(or $(4),$(RP_RAM_TEXT_DIR))/ram_text.ld
+	$$(Q)$$(ARM_CC) $$(RP_LDFLAGS_BASE) -L$(RP_DIR)/ram_text/$(or $(4),$(RP_RAM_TEXT_DIR)) -Wl,-Map=$(FW_OUT)/pico/$(1).map \
 		$$(filter %.o,$$^) -lc -lgcc -o $$@
 $(FW_OUT)/pico/$(1).bin: $(FW_OUT)/pico/$(1).elf
 	$$(Q)$$(ARM_OBJCOPY) -O binary $$< $$@
@@ -161,9 +164,9 @@ $(eval $(call RP_IMAGE,cgfs-1core,-DRP2040_SINGLE_CORE=1,$(FW_SCENE_SRCS)))
 $(eval $(call RP_IMAGE,cgfs-ili9341,-DFW_PANEL=panel_ili9341_320x240 -DFW_WIDTH=320 -DFW_HEIGHT=240,$(FW_SCENE_SRCS)))
 # The ST7789 upside down (FW_ROTATION=2: the module mounted the other way).
 $(eval $(call RP_IMAGE,cgfs-rot2,-DFW_ROTATION=2,$(FW_SCENE_SRCS)))
-# fw_scene_image(IMAGE,SET,FLAGS): an image of the scene set SET (its table,
-# its format), built with FLAGS.
-fw_scene_image = $(eval $(call RP_IMAGE,$(1),$(3) $(FW_$(2)_FRAC_FLAGS),$(FW_$(2)_SRCS)))\
+# fw_scene_image(IMAGE,SET,FLAGS[,RAM_TEXT_DIR]): an image of the scene set
+# SET (its table, its format), built with FLAGS.
+fw_scene_image = $(eval $(call RP_IMAGE,$(1),$(3) $(FW_$(2)_FRAC_FLAGS),$(FW_$(2)_SRCS),$(4)))\
     $(eval $(call fw_frac_objs,$(FW_OUT)/pico/obj-$(1),$(RP_SRCS) $(FW_$(2)_SRCS)): $(FW_$(2)_FRAC_H))
 FW_1CORE_FLAGS := -DRP2040_SINGLE_CORE=1 -DFW_WORK_CORES=1
 # The book scenes: for the board, and for the emulator (one core, one frame
@@ -185,11 +188,16 @@ $(call fw_scene_image,cgfs-cube-ili9341-1core,CUBE320,$(FW_ILI320) $(FW_1CORE_FL
 # time is rp2040sim's first_image_us).
 $(call fw_scene_image,cgfs-rt,RT,-DFW_FRAMES_PER_SCENE=1)
 $(call fw_scene_image,cgfs-rt-1core,RT,$(FW_1CORE_FLAGS) -DFW_FRAMES_PER_SCENE=1)
+# The 4,096-triangle meshes (Gouraud, flat), FW_MESH_FRAMES frames of each,
+# two cores, with only the rasterizer's default path in SRAM (the whole core
+# there leaves too little work memory for a mesh: RP2040_RAM_TEXT=raster).
+FW_MESH_FRAMES ?= 10
+$(call fw_scene_image,cgfs-mesh,MESH,-DFW_FRAMES_PER_SCENE=$(FW_MESH_FRAMES) -DRAS_RAM_TEXT -DRP2040_RAM_TEXT_RASTER,raster)
 
 FW_RP_IMAGES := $(FW_OUT)/pico/cgfs.uf2 $(FW_OUT)/pico/cgfs-1core.uf2 $(FW_OUT)/pico/cgfs-ili9341.uf2 \
                 $(FW_OUT)/pico/cgfs-rot2.uf2 \
                 $(foreach i,cgfs-book cgfs-book-1core cgfs-book-bench cgfs-cube cgfs-cube-1core cgfs-cube-ili9341 \
-                  cgfs-cube-ili9341-1core cgfs-rt cgfs-rt-1core,$(FW_OUT)/pico/$(i).uf2)
+                  cgfs-cube-ili9341-1core cgfs-rt cgfs-rt-1core cgfs-mesh,$(FW_OUT)/pico/$(i).uf2)
 
 .PHONY: firmware-pico
 firmware-pico: deps-firmware

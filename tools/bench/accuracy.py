@@ -53,7 +53,8 @@ def compare_variant(host_sim, path, numeric, w, h, opt, num_frac=None):
         text = f.read()
     for one in opt.split(","):
         text = set_option(text, one)
-    fd, tmp = tempfile.mkstemp(suffix=".scene")
+    # next to the scene: the files it names (textures, meshes) are relative to it
+    fd, tmp = tempfile.mkstemp(prefix=".accuracy-", suffix=".scene", dir=os.path.dirname(os.path.abspath(path)))
     try:
         with os.fdopen(fd, "w") as f:
             f.write(text)

@@ -5,6 +5,7 @@
  * each triangle of the clipped fan through the fast span loops
  * (raster_fast.c) or the exact per-pixel fill (ras_fill_triangle with
  * ras_default_pixel). */
+#include <string.h>
 #include "raster_fast.h"
 #include "num/num_int.h"
 
@@ -20,11 +21,32 @@ static int levels_q10(rgb c, struct ras_fast_tri *ft)
     return !(ft->kr > 31u * 1024 || ft->kg > 63u * 1024 || ft->kb > 31u * 1024);
 }
 
+static int rgb_same(rgb a, rgb b) { return a.r == b.r && a.g == b.g && a.b == b.b; }
+
+/* levels_q10 of c, remembered for the next triangle of the same colour. */
+static int levels_memo(struct ras_ctx *rc, rgb c, struct ras_fast_tri *ft)
+{
+    struct ras_colour_memo *m = &rc->fast.memo;
+    if (!m->kvalid || !rgb_same(m->ck, c)) {
+        m->kok = (uint8_t)levels_q10(c, ft);
+        m->kr = ft->kr;
+        m->kg = ft->kg;
+        m->kb = ft->kb;
+        m->ck = c;
+        m->kvalid = 1;
+        return m->kok;
+    }
+    ft->kr = m->kr;
+    ft->kg = m->kg;
+    ft->kb = m->kb;
+    return m->kok;
+}
+
 /* The fast span loops' description of a triangle; 0 when it needs the
  * exact per-pixel path (chapter 15 passes and normal maps, Phong without
  * fast Phong, filtered or non-power-of-two textures, screen-linear uv,
  * textures under flat shading). */
-static int fast_describe(const struct ras_ctx *rc, const struct ras_def_tri *dt, struct ras_fast_tri *ft, ptrdiff_t inst)
+static int fast_describe(struct ras_ctx *rc, const struct ras_def_tri *dt, struct ras_fast_tri *ft, ptrdiff_t inst)
 {
     const struct ras_options *o = &rc->s->ras;
     if (!rc->fast.on || rc->cur.depth_only || rc->cur.depth_func != RAS_DEPTH_LESS_WRITE || dt->nmap >= 0) return 0;
@@ -43,7 +65,7 @@ static int fast_describe(const struct ras_ctx *rc, const struct ras_def_tri *dt,
         if (dt->tex < 0) {
             ft->shade = SPAN_SHADE_PHONG;
             ft->src = SPAN_SRC_CONST;
-            return levels_q10(dt->color, ft);
+            return levels_memo(rc, dt->color, ft);
         }
     }
     if (dt->tex >= 0) {
@@ -64,13 +86,20 @@ static int fast_describe(const struct ras_ctx *rc, const struct ras_def_tri *dt,
     if (gour) {
         ft->shade = SPAN_SHADE_RGB;   /* (SPAN_SHADE_LI when a level may saturate) */
         ft->src = SPAN_SRC_CONST;
-        return levels_q10(dt->color, ft);
+        return levels_memo(rc, dt->color, ft);
     }
     ft->shade = SPAN_SHADE_NONE;
     ft->src = SPAN_SRC_CONST;
     rgb c = dt->shading == SHADE_FLAT ? rgb_scale(dt->color, dt->flat_i) : dt->color;
-    ft->c565 = rgb_to_565(c);
-    rgb_to_888(c, ft->c888);
+    struct ras_colour_memo *m = &rc->fast.memo;
+    if (!m->valid || !rgb_same(m->c, c)) {
+        m->c = c;
+        m->c565 = rgb_to_565(c);
+        rgb_to_888(c, m->c888);
+        m->valid = 1;
+    }
+    ft->c565 = m->c565;
+    memcpy(ft->c888, m->c888, 3);
     return 1;
 }
 
@@ -157,7 +186,7 @@ static int resume_kept(struct ras_ctx *rc, uint32_t gi, struct ras_fast_state **
 {
     *slot = NULL;
     if (!rc->fast.keep || rc->cur.depth_only || rc->cur.depth_func != RAS_DEPTH_LESS_WRITE) return 0;
-    *slot = &rc->fast.keep[gi % rc->fast.nkeep];
+    *slot = &rc->fast.keep[gi & (rc->fast.nkeep - 1u)];
     uint32_t drawn;
     if ((*slot)->tri == gi && ras_fast_resume(rc, *slot, &drawn)) {
         rc->cur.st->pixels_written += drawn;

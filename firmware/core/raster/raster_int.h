@@ -109,7 +109,7 @@ struct ras_fast {
     uint8_t on;              /* triangles try the fast span loops */
     uint8_t persp_log2;      /* a reciprocal every 2^persp_log2 pixels */
     uint8_t phong;           /* Phong by fast Phong (lighting = fast) */
-    uint16_t nkeep;          /* kept set-ups (triangle i in slot i % nkeep) */
+    uint16_t nkeep;          /* kept set-ups, a power of two (triangle i in slot i % nkeep) */
     struct ras_tex565 *tex565;   /* per texture */
     uint8_t *tex_mem;            /* the RGB565 copies, texture by texture */
     struct ras_fast_state *keep; /* triangle set-ups kept between strips */
@@ -117,6 +117,15 @@ struct ras_fast {
     uint32_t *spec_step;     /* per table: index step and end (ras_spec_table) */
     int16_t *inst_spec;      /* per instance: its table, -1: no highlight, -2: none left */
     struct ras_fphong fp;    /* fast Phong's lights, per frame */
+    struct ras_colour_memo {  /* the last colour fast_describe converted (a mesh's
+                                 triangles mostly share one): its RGB565 and bytes,
+                                 its Gouraud levels */
+        rgb c, ck;
+        uint16_t c565;
+        uint8_t c888[3];
+        uint8_t valid, kvalid, kok;
+        uint32_t kr, kg, kb;
+    } memo;
 };
 
 /* Chapter 15's own state (raster_ch15.c; default path, Phong shading). */

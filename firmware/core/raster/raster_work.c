@@ -124,13 +124,16 @@ static int shade_caches(const struct scene *s)
     return need;
 }
 
-/* Triangle set-ups the fast path keeps from one strip to the next: one
- * slot a triangle up to RAS_KEEP_MAX (triangle i in slot i mod slots). */
+/* Triangle set-ups the fast path keeps from one strip to the next: a
+ * power of two of slots, one a triangle up to RAS_KEEP_MAX (triangle i in
+ * slot i mod slots, a mask). */
 #define RAS_KEEP_MAX 32
 static uint16_t keep_slots(const struct scene *s, uint32_t ntris)
 {
-    if (!fast_path(s)) return 0;
-    return (uint16_t)(ntris < RAS_KEEP_MAX ? ntris : RAS_KEEP_MAX);
+    if (!fast_path(s) || ntris == 0) return 0;
+    uint16_t n = 1;
+    while (n < ntris && n < RAS_KEEP_MAX) n = (uint16_t)(n * 2);
+    return n;
 }
 
 /* The tables a strip writes (its depth buffer, the active triangle list,

@@ -164,6 +164,16 @@ static int fast_edges(const struct ras_ctx *rc, const struct ras_sv *v0, const s
  * gradients to 2^-16, stepped row by row from there whatever the strips),
  * stepped per pixel by the column gradient truncated toward zero. Returns
  * 1, or -1 when a gradient does not fit. */
+/* dd * w, a depth difference (|dd| < 2^32) times an edge value or step
+ * (|w| < 2^31): one 32 x 32 -> 64 product when dd fits 32 bits, as it does
+ * across a small triangle (the same value either way). */
+static int64_t mul_dw(int64_t dd, int64_t w)
+{
+    if (dd >= -INT32_MAX && dd <= INT32_MAX && w >= -INT32_MAX && w <= INT32_MAX)
+        return num_smul32((int32_t)dd, (int32_t)w);
+    return dd * w;
+}
+
 static int fast_depth(const struct ras_sv *v0, const struct ras_sv *v1, const struct ras_sv *v2,
                       int32_t area, int32_t rtop, struct fstate *S)
 {
@@ -171,15 +181,15 @@ static int fast_depth(const struct ras_sv *v0, const struct ras_sv *v1, const st
     const int32_t r0 = S->row;
     int64_t dd1 = (int64_t)v1->depth - v0->depth, dd2 = (int64_t)v2->depth - v0->depth, rem, f;
     /* edge values at (c0, the box's top row): linear in the row */
-    int64_t w1t = wr[1] - (int64_t)(r0 - rtop) * b[1], w2t = wr[2] - (int64_t)(r0 - rtop) * b[2];
-    int64_t q = ras_floordiv(dd1 * w1t + dd2 * w2t, area, &rem);
+    int64_t w1t = wr[1] - num_smul32(r0 - rtop, b[1]), w2t = wr[2] - num_smul32(r0 - rtop, b[2]);
+    int64_t q = ras_floordiv(mul_dw(dd1, w1t) + mul_dw(dd2, w2t), area, &rem);
     int64_t zrow = ((int64_t)v0->depth + q) * 65536 + ras_floordiv(rem << 16, area, &f);
-    q = ras_floordiv(dd1 * a[1] + dd2 * a[2], area, &rem);
+    q = ras_floordiv(mul_dw(dd1, a[1]) + mul_dw(dd2, a[2]), area, &rem);
     if (q > INT32_MAX || q < -INT32_MAX) return -1;
     S->gxq = (int32_t)q;
     S->gxf = (uint32_t)ras_floordiv(rem << 16, area, &f);
     S->dz = (uint32_t)(int32_t)(q + (q < 0 && rem != 0));      /* toward zero */
-    q = ras_floordiv(dd1 * b[1] + dd2 * b[2], area, &rem);
+    q = ras_floordiv(mul_dw(dd1, b[1]) + mul_dw(dd2, b[2]), area, &rem);
     if (q > INT32_MAX || q < -INT32_MAX) return -1;
     S->gy16 = q * 65536 + ras_floordiv(rem << 16, area, &f);
     S->zrow = zrow + S->gy16 * (r0 - rtop);

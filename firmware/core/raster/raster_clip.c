@@ -68,9 +68,12 @@ int ras_instance_visible(const struct ras_ctx *rc, const struct ras_inst *ri,
 
 int ras_point_inside(const struct ras_ctx *rc, vec3 p)
 {
-    for (int i = 0; i < 5; i++)
-        if (clip_value(rc, i, p) < 0) return 0;
-    return 1;
+    /* clip_value of the five planes, each side product formed once */
+    if (num_sub(p.z, rc->def.near_z) < 0) return 0;
+    num sx = num_mul(rc->def.side_x, p.z);
+    if (num_add(p.x, sx) < 0 || num_sub(sx, p.x) < 0) return 0;
+    num sy = num_mul(rc->def.side_y, p.z);
+    return !(num_add(p.y, sy) < 0 || num_sub(sy, p.y) < 0);
 }
 
 static struct ras_cv lerp_cv(const struct ras_cv *a, const struct ras_cv *b, num t, int na)

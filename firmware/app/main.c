@@ -84,6 +84,12 @@
 #define NSTRIPS ((FW_HEIGHT + FW_STRIP_ROWS - 1) / FW_STRIP_ROWS)
 #define MSG_FRAME 0x80000000u
 #define MSG_FRAME_DONE 1u
+/* core 0 -> core 1: your share of the frame's vertices (rasterized scene si
+ * in the low 15 bits); core 1 -> core 0: done (MSG_VERTS_FAILED: it could
+ * not, core 0 does that share itself) */
+#define MSG_VERTS 0x40000000u
+#define MSG_VERTS_DONE 2u
+#define MSG_VERTS_FAILED 3u
 
 /* read as words too, two pixels at a time (content_cols): a union */
 #if FW_WIDTH % 2
@@ -314,6 +320,18 @@ static void core1_main(void)
     int cur = -1;
     for (;;) {
         uint32_t m = fw_board_recv();
+        if (!(m & MSG_FRAME) && (m & MSG_VERTS)) {
+            /* the second half of the frame's vertices, while core 0 does the first */
+            unsigned si = m & 0x7fffu;
+            int ok = 1;
+            if ((int)si != cur) {
+                ok = scene_init(&ctx[1], si, 1) == 0;
+                cur = ok ? (int)si : -1;
+            }
+            ok = ok && render_frame_vertices(&ctx[1], 1, 2) == 0;
+            fw_board_send(ok ? MSG_VERTS_DONE : MSG_VERTS_FAILED);
+            continue;
+        }
         if (!(m & MSG_FRAME)) continue;
         unsigned si = (m >> 16) & 0x7fffu;
         int ok = 1;
@@ -502,7 +520,14 @@ static uint32_t frame(unsigned si, uint16_t f, uint32_t last_us, int dual)
     fw_board_puts(line);
 
     uint64_t t0 = hal.now_us(hal.ctx);
-    if (render_begin_frame(&ctx[0], f) != 0) return 0;
+    /* a rasterized frame's vertices are transformed by both cores (core 1 is
+     * idle between frames), its triangles then by core 0 */
+    int split = dual && fw_scenes[si].scene->kind == SCENE_RASTER;
+    if (render_frame_start(&ctx[0], f) != 0) return 0;
+    if (split) fw_board_send(MSG_VERTS | si);
+    int ok = render_frame_vertices(&ctx[0], 0, split ? 2 : 1) == 0;
+    if (split && fw_board_recv() != MSG_VERTS_DONE) ok = ok && render_frame_vertices(&ctx[0], 1, 2) == 0;
+    if (!ok || render_frame_finish(&ctx[0]) != 0) return 0;
     strips_start(si, f, dual);
     int err = 0;
     struct bus b = { 0, 0, 0 };

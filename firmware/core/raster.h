@@ -60,8 +60,15 @@ size_t raster_work_size(const struct scene *s, uint16_t width, uint16_t height, 
 /* Lays out the state in work (any alignment, work_size bytes). 0, or -1. */
 int raster_init(void *work, size_t work_size, const struct scene *s, uint16_t width, uint16_t height,
                 uint16_t strip_rows);
-/* Per frame: transforms, binning of primitives to strips, lights. */
+/* Per frame: transforms, binning of primitives to strips, lights. It is
+ * raster_frame_start (camera, lights, every instance's matrices), then
+ * raster_frame_vertices(work, 0, 1) (every vertex to camera space and the
+ * screen), then raster_frame_finish (every triangle culled, lit and binned);
+ * render.h's render_frame_* split the vertices between two cores. */
 int raster_begin_frame(void *work, uint16_t frame);
+int raster_frame_start(void *work, uint16_t frame);
+int raster_frame_vertices(const void *work, unsigned part, unsigned parts);
+int raster_frame_finish(void *work);
 /* Rows [t->y0, t->y1) of the current frame (at most strip_rows). */
 int raster_strip(void *work, struct render_target *t, struct render_stats *st);
 /* A sibling context (render.h's render_init_sibling): its work memory holds

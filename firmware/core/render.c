@@ -74,6 +74,28 @@ int render_begin_frame(struct render_ctx *ctx, uint16_t frame)
     return 0;
 }
 
+int render_frame_start(struct render_ctx *ctx, uint16_t frame)
+{
+    if (ctx->owner) return -1;
+    if (ctx->scene->kind != SCENE_RASTER) return render_begin_frame(ctx, frame);
+    ctx->frame = frame;
+    return raster_frame_start(ctx->work, frame);
+}
+
+int render_frame_vertices(const struct render_ctx *ctx, unsigned part, unsigned parts)
+{
+    if (parts == 0 || part >= parts) return -1;
+    if (ctx->scene->kind != SCENE_RASTER) return 0;
+    return raster_frame_vertices(ctx->work, part, parts);
+}
+
+int render_frame_finish(struct render_ctx *ctx)
+{
+    if (ctx->owner) return -1;
+    if (ctx->scene->kind != SCENE_RASTER) return 0;
+    return raster_frame_finish(ctx->work);
+}
+
 int render_strip(struct render_ctx *ctx, struct render_target *t, struct render_stats *st)
 {
     struct render_stats ignored;

@@ -171,6 +171,50 @@ static void sibling_shares_frame(void)
         }
 }
 
+/* The frame's preparation split (render_frame_start, _vertices, _finish):
+ * the vertices in 2 or 3 parts, taken by the owner and its sibling in
+ * either order, give the frames of render_begin_frame. */
+static void split_preparation_same_frames(void)
+{
+    static const char *const names[] = { "raster-11", "raster-rt-scene", "raster-08" };
+    enum { W = 320, H = 240, R = 16 };
+    for (size_t n = 0; n < sizeof names / sizeof names[0]; n++)
+        for (int book = 0; book < 2; book++) {
+            struct scene *s = book ? book_scene(names[n]) : default_scene(names[n]);
+            size_t ws = render_work_size(s, W, H, R), ss = render_sibling_work_size(s, W, H, R);
+            void *w0 = malloc(ws), *w1 = malloc(ss);
+            static uint16_t px[W * R], img[W * H];
+            struct render_ctx c0, c1;
+            int bad = !w0 || !w1 || render_init(&c0, s, W, H, R, w0, ws) || render_init_sibling(&c1, &c0, w1, ss);
+            if (!bad && (render_frame_start(&c1, 0) == 0 || render_frame_finish(&c1) == 0 ||
+                         render_frame_vertices(&c0, 2, 2) == 0))
+                bad = 2;   /* start and finish are the owner's; parts in range */
+            for (uint16_t f = 0; f < 3 && !bad; f++) {
+                struct frame whole;
+                if (render_frame(s, W, H, R, f, &whole)) { bad = 3; break; }
+                unsigned parts = f == 1 ? 3 : 2;
+                bad = render_frame_start(&c0, f) ? 4 : 0;
+                /* the sibling's parts first, the owner's last */
+                for (unsigned p = parts; p-- > 0 && !bad;)
+                    if (render_frame_vertices(p % 2 ? &c1 : &c0, p, parts)) bad = 5;
+                if (!bad && (render_frame_finish(&c0) || render_begin_frame(&c1, f))) bad = 6;
+                for (int k = 0; k * R < H && !bad; k++) {
+                    int y0 = k * R, y1 = y0 + R < H ? y0 + R : H;
+                    struct render_target t = { W, H, (uint16_t)y0, (uint16_t)y1, px, NULL, NULL };
+                    if (render_strip(k % 2 ? &c1 : &c0, &t, NULL)) bad = 7;
+                    memcpy(img + (size_t)y0 * W, px, (size_t)(y1 - y0) * W * 2);
+                }
+                if (!bad && memcmp(img, whole.rgb565, sizeof img)) bad = 8;
+                frame_free(&whole);
+            }
+            char name[96];
+            snprintf(name, sizeof name, "split_preparation_same_frames_%s_%s", names[n], book ? "book" : "default");
+            check(bad == 0, name, "failure %d", bad);
+            free(w0);
+            free(w1);
+        }
+}
+
 /* Closed meshes drawn with additive colour: each covered pixel must get
  * exactly one triangle. A counting render: every triangle writes colour 1
  * in red; the rgb888 red channel after rendering with depth off would only
@@ -541,6 +585,7 @@ int main(void)
     strip_order_free();
     vertex_lighting_same();
     sibling_shares_frame();
+    split_preparation_same_frames();
     fill_rule_closed_mesh();
     fast_coverage_exact();
     any_camera();

@@ -72,12 +72,13 @@ static struct ras_range default_tri_rows(const struct ras_ctx *rc, vec3 a, vec3 
     return sub_rows(rc, lo, hi);
 }
 
-/* RenderInstance, its frame half (the strip half is render_instance):
- * the instance's vertices to camera space (ApplyTransform), culled against
- * the viewport's bounding sphere (ClipInstance), projected
- * (ProjectVertex), and each triangle binned to the rows it may touch.
+/* RenderInstance, its frame half (the strip half is render_instance), in
+ * three steps: instance_head (its matrices, culled against the viewport's
+ * bounding sphere: ClipInstance), instance_vertices (to camera space,
+ * ApplyTransform, and projected, ProjectVertex) and instance_triangles
+ * (each triangle culled, lit and binned to the rows it may touch).
  * vb, tb: the instance's first vertex and triangle in the frame tables. */
-static void prepare_instance(struct ras_ctx *rc, uint16_t i, uint16_t frame, uint32_t vb, uint32_t tb)
+static void instance_head(struct ras_ctx *rc, uint16_t i, uint16_t frame, uint32_t vb, uint32_t tb)
 {
     const struct scene *s = rc->s;
     const struct ras_options *o = &s->ras;
@@ -101,7 +102,19 @@ static void prepare_instance(struct ras_ctx *rc, uint16_t i, uint16_t frame, uin
     ri->vlit = (uint8_t)(rc->def.vert_shade && ras_vertex_lit(s, in));
     if (ri->vlit)   /* no vertex lit yet this frame */
         for (uint32_t k = vb; k < vb + m->nverts; k++) rc->def.vert_lit[k >> 3] &= (uint8_t)~(1u << (k & 7));
-    for (uint16_t k = 0; k < m->nverts; k++) {
+}
+
+/* Vertices k0 .. k1 - 1 of instance i (after its instance_head); each
+ * vertex writes only its own entries of the frame tables. */
+static void instance_vertices(const struct ras_ctx *rc, uint16_t i, uint32_t k0, uint32_t k1)
+{
+    const struct scene *s = rc->s;
+    const struct ras_options *o = &s->ras;
+    const struct ras_instance *in = &s->instances[i];
+    const struct ras_model *m = &s->models[in->model];
+    const struct ras_inst *ri = &rc->inst[i];
+    const uint32_t vb = ri->vbase;
+    for (uint32_t k = k0; k < k1; k++) {
         struct ras_vert *v = &rc->verts[vb + k];
         vec3 p = m->verts[k];
         if (o->instance_transform) {
@@ -128,6 +141,16 @@ static void prepare_instance(struct ras_ctx *rc, uint16_t i, uint16_t frame, uin
             }
         }
     }
+}
+
+static void instance_triangles(struct ras_ctx *rc, uint16_t i)
+{
+    const struct scene *s = rc->s;
+    const struct ras_options *o = &s->ras;
+    const struct ras_instance *in = &s->instances[i];
+    const struct ras_model *m = &s->models[in->model];
+    struct ras_inst *ri = &rc->inst[i];
+    const uint32_t vb = ri->vbase, tb = ri->tbase;
     for (uint16_t k = 0; k < m->ntris; k++) {
         const struct ras_triangle *t = &m->tris[k];
         struct ras_range *rr = &rc->tri_rows[tb + k];
@@ -190,9 +213,10 @@ static void bin_triangles(struct ras_ctx *rc)
     B->last_y0 = -1;
 }
 
-int raster_begin_frame(void *work, uint16_t frame)
+int raster_frame_start(void *work, uint16_t frame)
 {
     struct ras_ctx *rc = ras_ctx_of(work);
+    if (rc->owner) return -1;
     const struct scene *s = rc->s;
     const struct ras_options *o = &s->ras;
     mat4 id = m4_identity();
@@ -228,17 +252,51 @@ int raster_begin_frame(void *work, uint16_t frame)
 
     for (uint16_t k = 0; k < rc->fast.nkeep; k++) rc->fast.keep[k].tri = UINT32_MAX;
 
-    /* RenderInstance, its frame half, for every instance */
+    /* RenderInstance, its frame half: every instance's matrices here, its
+     * vertices in raster_frame_vertices, its triangles in raster_frame_finish */
     uint32_t vb = 0, tb = 0;
-    rc->tris_in = rc->tris_drawn = 0;
     for (uint16_t i = 0; i < s->ninstances; i++) {
         const struct ras_model *m = &s->models[s->instances[i].model];
-        prepare_instance(rc, i, frame, vb, tb);
+        instance_head(rc, i, frame, vb, tb);
         vb += m->nverts;
         tb += m->ntris;
     }
+    return 0;
+}
+
+int raster_frame_vertices(const void *work, unsigned part, unsigned parts)
+{
+    const struct ras_ctx *rc = ras_ctx_of((void *)(uintptr_t)work);
+    if (rc->owner) rc = rc->owner;   /* a sibling works on its owner's frame */
+    if (parts == 0 || part >= parts) return -1;
+    /* the part-th of parts equal ranges of the frame's vertices, instance by instance */
+    const uint32_t n = rc->nverts, v0 = (uint32_t)((uint64_t)n * part / parts),
+                   v1 = (uint32_t)((uint64_t)n * (part + 1) / parts);
+    const struct scene *s = rc->s;
+    for (uint16_t i = 0; i < s->ninstances; i++) {
+        const uint32_t vb = rc->inst[i].vbase, nv = s->models[s->instances[i].model].nverts;
+        uint32_t k0 = v0 > vb ? v0 - vb : 0, k1 = v1 < vb + nv ? v1 - vb : nv;
+        if (v1 <= vb || v0 >= vb + nv || k0 >= k1) continue;
+        instance_vertices(rc, i, k0, k1);
+    }
+    return 0;
+}
+
+int raster_frame_finish(void *work)
+{
+    struct ras_ctx *rc = ras_ctx_of(work);
+    if (rc->owner) return -1;
+    rc->tris_in = rc->tris_drawn = 0;
+    for (uint16_t i = 0; i < rc->s->ninstances; i++) instance_triangles(rc, i);
     if (rc->bins.on) bin_triangles(rc);
     if (rc->fast.phong) ras_fphong_frame(rc);
     ras_ch15_frame(rc);
     return 0;
+}
+
+int raster_begin_frame(void *work, uint16_t frame)
+{
+    if (raster_frame_start(work, frame) != 0) return -1;
+    (void)raster_frame_vertices(work, 0, 1);
+    return raster_frame_finish(work);
 }

@@ -85,11 +85,14 @@
 #define MSG_FRAME 0x80000000u
 #define MSG_FRAME_DONE 1u
 /* core 0 -> core 1: your share of the frame's vertices (rasterized scene si
- * in the low 15 bits); core 1 -> core 0: done (MSG_VERTS_FAILED: it could
- * not, core 0 does that share itself) */
+ * in the low 15 bits), then of its triangles; core 1 -> core 0: done
+ * (MSG_VERTS_FAILED: it could not, core 0 does that share itself, and all
+ * the triangles) */
 #define MSG_VERTS 0x40000000u
+#define MSG_TRIS 0x20000000u
 #define MSG_VERTS_DONE 2u
 #define MSG_VERTS_FAILED 3u
+#define MSG_TRIS_DONE 4u
 
 /* read as words too, two pixels at a time (content_cols): a union */
 #if FW_WIDTH % 2
@@ -320,6 +323,11 @@ static void core1_main(void)
     int cur = -1;
     for (;;) {
         uint32_t m = fw_board_recv();
+        if (!(m & MSG_FRAME) && (m & MSG_TRIS)) {
+            /* the second half of the frame's triangles (after the vertices) */
+            fw_board_send(render_frame_triangles(&ctx[1], 1, 2) == 0 ? MSG_TRIS_DONE : MSG_VERTS_FAILED);
+            continue;
+        }
         if (!(m & MSG_FRAME) && (m & MSG_VERTS)) {
             /* the second half of the frame's vertices, while core 0 does the first */
             unsigned si = m & 0x7fffu;
@@ -526,7 +534,14 @@ static uint32_t frame(unsigned si, uint16_t f, uint32_t last_us, int dual)
     if (render_frame_start(&ctx[0], f) != 0) return 0;
     if (split) fw_board_send(MSG_VERTS | si);
     int ok = render_frame_vertices(&ctx[0], 0, split ? 2 : 1) == 0;
-    if (split && fw_board_recv() != MSG_VERTS_DONE) ok = ok && render_frame_vertices(&ctx[0], 1, 2) == 0;
+    if (split && fw_board_recv() != MSG_VERTS_DONE) {
+        ok = ok && render_frame_vertices(&ctx[0], 1, 2) == 0;
+        split = 0;        /* core 1 has no context: the triangles are core 0's */
+    }
+    if (split) fw_board_send(MSG_TRIS);
+    ok = ok && render_frame_triangles(&ctx[0], 0, split ? 2 : 1) == 0;
+    if (split && fw_board_recv() != MSG_TRIS_DONE)
+        ok = ok && render_frame_triangles(&ctx[0], 0, 1) == 0;   /* all of them here, again */
     if (!ok || render_frame_finish(&ctx[0]) != 0) return 0;
     strips_start(si, f, dual);
     int err = 0;

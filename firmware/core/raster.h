@@ -63,11 +63,13 @@ int raster_init(void *work, size_t work_size, const struct scene *s, uint16_t wi
 /* Per frame: transforms, binning of primitives to strips, lights. It is
  * raster_frame_start (camera, lights, every instance's matrices), then
  * raster_frame_vertices(work, 0, 1) (every vertex to camera space and the
- * screen), then raster_frame_finish (every triangle culled, lit and binned);
- * render.h's render_frame_* split the vertices between two cores. */
+ * screen), raster_frame_triangles(work, 0, 1) (every triangle culled and
+ * lit), then raster_frame_finish (binning); render.h's render_frame_* split
+ * the vertices and the triangles between two cores. */
 int raster_begin_frame(void *work, uint16_t frame);
 int raster_frame_start(void *work, uint16_t frame);
 int raster_frame_vertices(const void *work, unsigned part, unsigned parts);
+int raster_frame_triangles(void *work, unsigned part, unsigned parts);
 int raster_frame_finish(void *work);
 /* Rows [t->y0, t->y1) of the current frame (at most strip_rows). */
 int raster_strip(void *work, struct render_target *t, struct render_stats *st);

@@ -89,6 +89,13 @@ int render_frame_vertices(const struct render_ctx *ctx, unsigned part, unsigned 
     return raster_frame_vertices(ctx->work, part, parts);
 }
 
+int render_frame_triangles(struct render_ctx *ctx, unsigned part, unsigned parts)
+{
+    if (parts == 0 || parts > 2 || part >= parts) return -1;
+    if (ctx->scene->kind != SCENE_RASTER) return 0;
+    return raster_frame_triangles(ctx->work, part, parts);
+}
+
 int render_frame_finish(struct render_ctx *ctx)
 {
     if (ctx->owner) return -1;

@@ -62,18 +62,23 @@ int render_init_sibling(struct render_ctx *ctx, const struct render_ctx *owner, 
  * frame is another). */
 int render_begin_frame(struct render_ctx *ctx, uint16_t frame);
 
-/* The same preparation in three steps, so that two cores share its middle:
+/* The same preparation in four steps, so that two cores share its middle:
  * render_frame_start(owner, f) (camera, lights, every instance's
- * matrices), then render_frame_vertices(c, part, parts) for each part
+ * matrices); render_frame_vertices(c, part, parts) for each part
  * 0 .. parts-1, by the owner or its siblings, in any order or at once on
  * different cores (each transforms and projects its share of the frame's
- * vertices and writes only theirs), then, once every part has returned,
- * render_frame_finish(owner) (triangles culled, lit and binned). The same
- * frame as render_begin_frame(owner, f). A ray-traced frame is prepared
- * whole by render_frame_start; the other two do nothing for it. 0, or -1
- * (start or finish on a sibling, a part out of range). */
+ * vertices and writes only theirs); once every part has returned,
+ * render_frame_triangles(c, part, parts) the same way for the triangles
+ * (culled and lit), with parts 1 or 2, part 1 by the owner's sibling (the
+ * lighting it makes lives in the sibling's memory); once both have
+ * returned, render_frame_finish(owner) (the binning). The same frame as
+ * render_begin_frame(owner, f). A ray-traced frame is prepared whole by
+ * render_frame_start; the other steps do nothing for it. 0, or -1 (start or
+ * finish on a sibling, a part out of range, part 1 of the triangles
+ * without a sibling where the scene lights vertices). */
 int render_frame_start(struct render_ctx *ctx, uint16_t frame);
 int render_frame_vertices(const struct render_ctx *ctx, unsigned part, unsigned parts);
+int render_frame_triangles(struct render_ctx *ctx, unsigned part, unsigned parts);
 int render_frame_finish(struct render_ctx *ctx);
 
 /* Renders rows [t->y0, t->y1) of the current frame into t (at most

@@ -171,21 +171,30 @@ static void sibling_shares_frame(void)
         }
 }
 
-/* The frame's preparation split (render_frame_start, _vertices, _finish):
- * the vertices in 2 or 3 parts, taken by the owner and its sibling in
- * either order, give the frames of render_begin_frame. */
+/* The frame's preparation split (render_frame_start, _vertices,
+ * _triangles, _finish): the vertices in 2 or 3 parts and the triangles in
+ * 2, taken by the owner and its sibling in either order, give the frames
+ * of render_begin_frame. */
 static void split_preparation_same_frames(void)
 {
-    static const char *const names[] = { "raster-11", "raster-rt-scene", "raster-08" };
+    /* raster-11 also in Gouraud, where its sphere is lit per vertex (the
+     * sibling's part of the triangles lights into its own table) */
+    static const char *const names[] = { "raster-11", "raster-rt-scene", "raster-08", "raster-11" };
     enum { W = 320, H = 240, R = 16 };
     for (size_t n = 0; n < sizeof names / sizeof names[0]; n++)
         for (int book = 0; book < 2; book++) {
+            int gouraud = n == 3;
+            if (gouraud && book) continue;
             struct scene *s = book ? book_scene(names[n]) : default_scene(names[n]);
+            if (gouraud) s->ras.shading = SHADE_GOURAUD;
             size_t ws = render_work_size(s, W, H, R), ss = render_sibling_work_size(s, W, H, R);
             void *w0 = malloc(ws), *w1 = malloc(ss);
             static uint16_t px[W * R], img[W * H];
             struct render_ctx c0, c1;
-            int bad = !w0 || !w1 || render_init(&c0, s, W, H, R, w0, ws) || render_init_sibling(&c1, &c0, w1, ss);
+            int bad = !w0 || !w1 || render_init(&c0, s, W, H, R, w0, ws);
+            /* part 1 of the triangles needs the sibling's table where vertices are lit */
+            if (!bad && gouraud && (render_frame_start(&c0, 0) || render_frame_triangles(&c0, 1, 2) == 0)) bad = 10;
+            bad = bad || render_init_sibling(&c1, &c0, w1, ss);
             if (!bad && (render_frame_start(&c1, 0) == 0 || render_frame_finish(&c1) == 0 ||
                          render_frame_vertices(&c0, 2, 2) == 0))
                 bad = 2;   /* start and finish are the owner's; parts in range */
@@ -197,6 +206,8 @@ static void split_preparation_same_frames(void)
                 /* the sibling's parts first, the owner's last */
                 for (unsigned p = parts; p-- > 0 && !bad;)
                     if (render_frame_vertices(p % 2 ? &c1 : &c0, p, parts)) bad = 5;
+                /* the triangles in two parts, the sibling's first */
+                if (!bad && (render_frame_triangles(&c1, 1, 2) || render_frame_triangles(&c0, 0, 2))) bad = 9;
                 if (!bad && (render_frame_finish(&c0) || render_begin_frame(&c1, f))) bad = 6;
                 for (int k = 0; k * R < H && !bad; k++) {
                     int y0 = k * R, y1 = y0 + R < H ? y0 + R : H;
@@ -208,7 +219,8 @@ static void split_preparation_same_frames(void)
                 frame_free(&whole);
             }
             char name[96];
-            snprintf(name, sizeof name, "split_preparation_same_frames_%s_%s", names[n], book ? "book" : "default");
+            snprintf(name, sizeof name, "split_preparation_same_frames_%s_%s", names[n],
+                     gouraud ? "gouraud" : book ? "book" : "default");
             check(bad == 0, name, "failure %d", bad);
             free(w0);
             free(w1);

@@ -141,7 +141,7 @@ static vec3 tri_centre(const vec3 V[3])
  * lighting of its Gouraud corners or flat face (the values
  * default_render_triangle would compute in each strip). */
 void ras_tri_cache(struct ras_ctx *rc, const struct ras_instance *in, const struct ras_inst *ri,
-                      const struct ras_model *m, const struct ras_triangle *t, uint32_t gi)
+                      const struct ras_model *m, const struct ras_triangle *t, uint32_t gi, int part)
 {
     vec3 V[3], N[3];
     int front = 0;
@@ -159,16 +159,18 @@ void ras_tri_cache(struct ras_ctx *rc, const struct ras_instance *in, const stru
         }
     }
     if (!tri_facts_n(rc, ri, m, t, V, N, &front, !ri->vlit)) { rc->def.tri_flags[gi] = 0; return; }
-    rc->def.tri_flags[gi] = (uint8_t)(RAS_TRI_LIVE | (front ? RAS_TRI_FRONT : 0));
+    rc->def.tri_flags[gi] = (uint8_t)(RAS_TRI_LIVE | (front ? RAS_TRI_FRONT : 0) | (part ? RAS_TRI_PART1 : 0));
     if (ri->vlit) {
-        /* each vertex lit once, by the first live triangle that uses it:
-         * its corners' normals are all the same, so is their lighting */
+        /* each vertex lit once (per part), by the first live triangle that
+         * uses it: its corners' normals are all the same, so is their lighting */
+        uint8_t *lit = part ? rc->def.vert_lit1 : rc->def.vert_lit;
+        num *shade = part ? rc->def.vert_shade1 : rc->def.vert_shade;
         for (int k = 0; k < 3; k++) {
             uint32_t v = ri->vbase + t->v[k];
             uint8_t bit = (uint8_t)(1u << (v & 7));
-            if (rc->def.vert_lit[v >> 3] & bit) continue;
-            rc->def.vert_lit[v >> 3] |= bit;
-            rc->def.vert_shade[v] = ras_compute_illumination(rc, V[k], ras_corner_normal(ri, t->n[k]), in->specular);
+            if (lit[v >> 3] & bit) continue;
+            lit[v >> 3] |= bit;
+            shade[v] = ras_compute_illumination(rc, V[k], ras_corner_normal(ri, t->n[k]), in->specular);
         }
         return;
     }
@@ -336,7 +338,8 @@ void ras_default_render_triangle(struct ras_ctx *rc, const struct ras_instance *
     num vsh[3];
     const num *shade = rc->def.tri_shade ? rc->def.tri_shade + 3 * (size_t)gi : NULL;
     if (ri->vlit) {
-        for (int k = 0; k < 3; k++) vsh[k] = rc->def.vert_shade[ri->vbase + t->v[k]];
+        const num *vs = (rc->def.tri_flags[gi] & RAS_TRI_PART1) ? rc->def.vert_shade1 : rc->def.vert_shade;
+        for (int k = 0; k < 3; k++) vsh[k] = vs[ri->vbase + t->v[k]];
         shade = vsh;
     }
     if (!corners(rc, ri, m, t, gi, shade != NULL, V, N, &front)) return;

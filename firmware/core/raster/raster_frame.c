@@ -100,8 +100,11 @@ static void instance_head(struct ras_ctx *rc, uint16_t i, uint16_t frame, uint32
     }
     ri->visible = o->clip ? (uint8_t)ras_instance_visible(rc, ri, m, o->instance_transform ? in->scale : NUM_ONE) : 1;
     ri->vlit = (uint8_t)(rc->def.vert_shade && ras_vertex_lit(s, in));
-    if (ri->vlit)   /* no vertex lit yet this frame */
-        for (uint32_t k = vb; k < vb + m->nverts; k++) rc->def.vert_lit[k >> 3] &= (uint8_t)~(1u << (k & 7));
+    if (ri->vlit)   /* no vertex lit yet this frame (by either part of the triangles) */
+        for (uint32_t k = vb; k < vb + m->nverts; k++) {
+            rc->def.vert_lit[k >> 3] &= (uint8_t)~(1u << (k & 7));
+            if (rc->def.vert_lit1) rc->def.vert_lit1[k >> 3] &= (uint8_t)~(1u << (k & 7));
+        }
 }
 
 /* Vertices k0 .. k1 - 1 of instance i (after its instance_head); each
@@ -143,7 +146,10 @@ static void instance_vertices(const struct ras_ctx *rc, uint16_t i, uint32_t k0,
     }
 }
 
-static void instance_triangles(struct ras_ctx *rc, uint16_t i)
+/* Triangles k0 .. k1 - 1 of instance i, as part `part` of the frame's
+ * triangles: each writes only its own entries, its counts in part_in and
+ * part_drawn, and the lighting of its vertices in its part's table. */
+static void instance_triangles(struct ras_ctx *rc, uint16_t i, uint32_t k0, uint32_t k1, int part)
 {
     const struct scene *s = rc->s;
     const struct ras_options *o = &s->ras;
@@ -151,10 +157,10 @@ static void instance_triangles(struct ras_ctx *rc, uint16_t i)
     const struct ras_model *m = &s->models[in->model];
     struct ras_inst *ri = &rc->inst[i];
     const uint32_t vb = ri->vbase, tb = ri->tbase;
-    for (uint16_t k = 0; k < m->ntris; k++) {
+    for (uint32_t k = k0; k < k1; k++) {
         const struct ras_triangle *t = &m->tris[k];
         struct ras_range *rr = &rc->tri_rows[tb + k];
-        rc->tris_in++;
+        rc->part_in[part]++;
         *rr = no_rows();
         if (!ri->visible || t->v[0] >= m->nverts || t->v[1] >= m->nverts || t->v[2] >= m->nverts) continue;
         const struct ras_vert *a = &rc->verts[vb + t->v[0]], *b = &rc->verts[vb + t->v[1]],
@@ -172,10 +178,10 @@ static void instance_triangles(struct ras_ctx *rc, uint16_t i)
                 *rr = sub_rows(rc, num_min(num_min(pa->sy, pb->sy), pc->sy), num_max(num_max(pa->sy, pb->sy), pc->sy));
             else
                 *rr = default_tri_rows(rc, a->c, b->c, c->c);
-            if (rr->r0 <= rr->r1) ras_tri_cache(rc, in, ri, m, t, tb + k);
+            if (rr->r0 <= rr->r1) ras_tri_cache(rc, in, ri, m, t, tb + k, part);
             else rc->def.tri_flags[tb + k] = 0;
         }
-        if (rr->r0 <= rr->r1) rc->tris_drawn++;
+        if (rr->r0 <= rr->r1) rc->part_drawn[part]++;
         if (rc->bins.on && rr->r0 <= rr->r1) {
             /* what the strips visit: live triangles only, and those of three
              * projected corners only on the rows of the pixel centres they span */
@@ -261,6 +267,7 @@ int raster_frame_start(void *work, uint16_t frame)
         vb += m->nverts;
         tb += m->ntris;
     }
+    rc->part_in[0] = rc->part_in[1] = rc->part_drawn[0] = rc->part_drawn[1] = 0;
     return 0;
 }
 
@@ -282,12 +289,33 @@ int raster_frame_vertices(const void *work, unsigned part, unsigned parts)
     return 0;
 }
 
+int raster_frame_triangles(void *work, unsigned part, unsigned parts)
+{
+    struct ras_ctx *rc = ras_ctx_of(work);
+    if (rc->owner) rc = (struct ras_ctx *)(uintptr_t)rc->owner;   /* the owner's frame */
+    if (parts == 0 || parts > 2 || part >= parts) return -1;
+    /* part 1 lights vertices into the sibling's table: one must be there */
+    if (part == 1 && rc->def.vert_shade && !rc->def.vert_shade1) return -1;
+    const uint32_t n = rc->ntris, t0 = (uint32_t)((uint64_t)n * part / parts),
+                   t1 = (uint32_t)((uint64_t)n * (part + 1) / parts);
+    const struct scene *s = rc->s;
+    rc->part_in[part] = rc->part_drawn[part] = 0;
+    if (parts == 1) rc->part_in[1] = rc->part_drawn[1] = 0;
+    for (uint16_t i = 0; i < s->ninstances; i++) {
+        const uint32_t tb = rc->inst[i].tbase, nt = s->models[s->instances[i].model].ntris;
+        uint32_t k0 = t0 > tb ? t0 - tb : 0, k1 = t1 < tb + nt ? t1 - tb : nt;
+        if (t1 <= tb || t0 >= tb + nt || k0 >= k1) continue;
+        instance_triangles(rc, i, k0, k1, (int)part);
+    }
+    return 0;
+}
+
 int raster_frame_finish(void *work)
 {
     struct ras_ctx *rc = ras_ctx_of(work);
     if (rc->owner) return -1;
-    rc->tris_in = rc->tris_drawn = 0;
-    for (uint16_t i = 0; i < rc->s->ninstances; i++) instance_triangles(rc, i);
+    rc->tris_in = rc->part_in[0] + rc->part_in[1];
+    rc->tris_drawn = rc->part_drawn[0] + rc->part_drawn[1];
     if (rc->bins.on) bin_triangles(rc);
     if (rc->fast.phong) ras_fphong_frame(rc);
     ras_ch15_frame(rc);
@@ -298,5 +326,6 @@ int raster_begin_frame(void *work, uint16_t frame)
 {
     if (raster_frame_start(work, frame) != 0) return -1;
     (void)raster_frame_vertices(work, 0, 1);
+    (void)raster_frame_triangles(work, 0, 1);
     return raster_frame_finish(work);
 }

@@ -45,8 +45,9 @@ struct ras_proj { num px, py; };
  * clipping plane; triangles of three such corners skip the clipper). */
 struct ras_pv { int32_t sx, sy; num iz; uint32_t depth; uint8_t inside; };
 
-/* Per-frame facts of a triangle of the default path. */
-enum { RAS_TRI_FRONT = 1, RAS_TRI_LIVE = 2 };
+/* Per-frame facts of a triangle of the default path (PART1: culled and lit
+ * by part 1 of a split preparation, its vertices' lighting in vert_shade1). */
+enum { RAS_TRI_FRONT = 1, RAS_TRI_LIVE = 2, RAS_TRI_PART1 = 4 };
 
 /* Screen rows a primitive may touch (inclusive); r0 > r1: none. This is the
  * binning of primitives to strips, computed once per frame. */
@@ -102,6 +103,10 @@ struct ras_def {
     num *vert_shade;         /* Gouraud lighting of each vertex of vertex-lit instances
                                 (ras_inst.vlit), made when a live triangle first uses it */
     uint8_t *vert_lit;       /* one bit a vertex: vert_shade made this frame */
+    num *vert_shade1;        /* the same made by the triangles of part 1 of a split
+                                preparation (raster_frame_triangles), in the sibling's
+                                work memory; NULL: no sibling */
+    uint8_t *vert_lit1;
 };
 
 /* The fast span path's own state (the default path with perspective_step > 1). */
@@ -191,6 +196,7 @@ struct ras_ctx {
     vec3 cam_pos;            /* world-space camera position (the book's view-vector quirk) */
     uint32_t nverts, ntris;
     uint32_t tris_in, tris_drawn;
+    uint32_t part_in[2], part_drawn[2];  /* the same counted by the parts of the triangles */
     struct ras_inst *inst;
     struct ras_vert *verts;
     struct ras_proj *proj;   /* per vertex; NULL on the default path, which projects in ras_pv */
@@ -203,6 +209,8 @@ struct ras_ctx {
     struct ras_c15 c15;
     const struct ras_ctx *owner;   /* a sibling's owner (raster_init_sibling), NULL: none */
     struct ras_own own;            /* a sibling's own tables */
+    num *own_vshade;               /* a sibling's part-1 vertex lighting (its work memory) */
+    uint8_t *own_vlit;
 };
 
 /* The state in the caller's work memory, at its first WORK_ALIGN boundary
@@ -258,7 +266,7 @@ int ras_vertex_lit(const struct scene *s, const struct ras_instance *in);
 /* Per frame: the facts of the default path's triangle gi kept for every
  * strip, and the lighting of its Gouraud corners or flat face. */
 void ras_tri_cache(struct ras_ctx *rc, const struct ras_instance *in, const struct ras_inst *ri,
-                   const struct ras_model *m, const struct ras_triangle *t, uint32_t gi);
+                   const struct ras_model *m, const struct ras_triangle *t, uint32_t gi, int part);
 
 /* ---- the default path's exact fill (raster_triangles.c) ---- */
 struct ras_sv {

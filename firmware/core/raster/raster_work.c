@@ -127,7 +127,7 @@ static int shade_caches(const struct scene *s)
 /* Triangle set-ups the fast path keeps from one strip to the next: a
  * power of two of slots, one a triangle up to RAS_KEEP_MAX (triangle i in
  * slot i mod slots, a mask). */
-#define RAS_KEEP_MAX 32
+#define RAS_KEEP_MAX 16
 static uint16_t keep_slots(const struct scene *s, uint32_t ntris)
 {
     if (!fast_path(s) || ntris == 0) return 0;
@@ -309,13 +309,32 @@ int raster_init(void *work, size_t work_size, const struct scene *s, uint16_t wi
 
 /* ---- a sibling context: another core's strips of the owner's frames ---- */
 
-/* The scene's triangles in every instance (carve's count, without its checks). */
-static uint32_t scene_tris(const struct scene *s)
+/* The scene's triangles (vertices) in every instance (carve's counts, without its checks). */
+static uint32_t scene_count(const struct scene *s, int verts)
 {
     uint32_t n = 0;
     for (uint16_t i = 0; i < s->ninstances; i++)
-        if (s->instances[i].model < s->nmodels) n += s->models[s->instances[i].model].ntris;
+        if (s->instances[i].model < s->nmodels) {
+            const struct ras_model *m = &s->models[s->instances[i].model];
+            n += verts ? m->nverts : m->ntris;
+        }
     return n;
+}
+
+/* A sibling's own tables: carve_strip_tables', then the part-1 vertex
+ * lighting of a split preparation (raster_frame_triangles) where the
+ * scene lights vertices. */
+static void carve_sibling(const struct scene *s, uint16_t w, uint16_t strip_rows, struct ras_ctx *rc,
+                          struct work_carve *c)
+{
+    uint32_t ntris = scene_count(s, 0), nverts = scene_count(s, 1);
+    (void)work_take(c, sizeof(struct ras_ctx));
+    carve_strip_tables(s, w, strip_rows, ntris, rc, c);
+    int vl = (shade_caches(s) & 2) != 0;
+    void *vs = work_take(c, vl ? sizeof(num) * nverts : 0);
+    void *vb = work_take(c, vl ? (nverts + 7) / 8 : 0);
+    rc->own_vshade = vl ? vs : NULL;
+    rc->own_vlit = vl ? vb : NULL;
 }
 
 size_t raster_sibling_work_size(const struct scene *s, uint16_t width, uint16_t height, uint16_t strip_rows)
@@ -324,10 +343,8 @@ size_t raster_sibling_work_size(const struct scene *s, uint16_t width, uint16_t 
     struct work_carve c = { NULL, 0 };
     (void)height;
     memset(&scratch, 0, sizeof scratch);
-    uint32_t ntris = scene_tris(s);
-    scratch.bins.on = (uint8_t)bins_on(s, ntris);
-    (void)work_take(&c, sizeof(struct ras_ctx));
-    carve_strip_tables(s, width, strip_rows, ntris, &scratch, &c);
+    scratch.bins.on = (uint8_t)bins_on(s, scene_count(s, 0));
+    carve_sibling(s, width, strip_rows, &scratch, &c);
     return c.off + WORK_ALIGN;
 }
 
@@ -354,9 +371,14 @@ int raster_init_sibling(void *work, size_t work_size, const void *owner_work)
     struct ras_ctx *rc = ras_ctx_of(work);
     *rc = *ow;
     struct work_carve c = { (uint8_t *)rc, 0 };
-    (void)work_take(&c, sizeof(struct ras_ctx));
-    carve_strip_tables(ow->s, ow->w, ow->strip_rows, ow->ntris, rc, &c);
+    carve_sibling(ow->s, ow->w, ow->strip_rows, rc, &c);
     struct ras_own own = { rc->depth, rc->bins.active, rc->fast.keep, rc->c15.stencil };
+    /* the owner's part-1 vertex lighting lives here: registered with it,
+     * nothing lit yet */
+    struct ras_ctx *owm = (struct ras_ctx *)(uintptr_t)ow;
+    owm->def.vert_shade1 = rc->own_vshade;
+    owm->def.vert_lit1 = rc->own_vlit;
+    if (rc->own_vlit) memset(rc->own_vlit, 0, (ow->nverts + 7) / 8);
     sibling_reset(rc, ow, &own);
     return 0;
 }

@@ -528,8 +528,9 @@ static uint32_t frame(unsigned si, uint16_t f, uint32_t last_us, int dual)
     fw_board_puts(line);
 
     uint64_t t0 = hal.now_us(hal.ctx);
-    /* a rasterized frame's vertices are transformed by both cores (core 1 is
-     * idle between frames), its triangles then by core 0 */
+    /* a rasterized frame is prepared by both cores (core 1 is idle between
+     * frames): each takes half of its vertices, then half of its triangles;
+     * core 0 bins them */
     int split = dual && fw_scenes[si].scene->kind == SCENE_RASTER;
     if (render_frame_start(&ctx[0], f) != 0) return 0;
     if (split) fw_board_send(MSG_VERTS | si);

@@ -106,7 +106,7 @@ static int fast_describe(struct ras_ctx *rc, const struct ras_def_tri *dt, struc
 /* Camera-space corners, facing and (want_n) shading normals of a triangle
  * of the default path; 0 when it draws nothing (degenerate, or a culled
  * back face). */
-static int tri_facts_n(const struct ras_ctx *rc, const struct ras_inst *ri, const struct ras_model *m,
+static int tri_facts(const struct ras_ctx *rc, const struct ras_inst *ri, const struct ras_model *m,
                        const struct ras_triangle *t, vec3 V[3], vec3 N[3], int *front, int want_n)
 {
     const struct ras_options *o = &rc->s->ras;
@@ -121,13 +121,6 @@ static int tri_facts_n(const struct ras_ctx *rc, const struct ras_inst *ri, cons
     vec3 nf = face_n ? ras_wnormal_narrow(wf) : v3_make(NUM_ZERO, NUM_ZERO, NUM_ZERO);
     for (int k = 0; k < 3; k++) N[k] = face_n ? nf : ras_corner_normal(ri, t->n[k]);
     return 1;
-}
-
-/* tri_facts_n with the normals. */
-static int tri_facts(const struct ras_ctx *rc, const struct ras_inst *ri, const struct ras_model *m,
-                     const struct ras_triangle *t, vec3 V[3], vec3 N[3], int *front)
-{
-    return tri_facts_n(rc, ri, m, t, V, N, front, 1);
 }
 
 static vec3 tri_centre(const vec3 V[3])
@@ -158,7 +151,7 @@ void ras_tri_cache(struct ras_ctx *rc, const struct ras_instance *in, const stru
             return;
         }
     }
-    if (!tri_facts_n(rc, ri, m, t, V, N, &front, !ri->vlit)) { rc->def.tri_flags[gi] = 0; return; }
+    if (!tri_facts(rc, ri, m, t, V, N, &front, !ri->vlit)) { rc->def.tri_flags[gi] = 0; return; }
     rc->def.tri_flags[gi] = (uint8_t)(RAS_TRI_LIVE | (front ? RAS_TRI_FRONT : 0) | (part ? RAS_TRI_PART1 : 0));
     if (ri->vlit) {
         /* each vertex lit once (per part), by the first live triangle that
@@ -204,12 +197,12 @@ static int corners(const struct ras_ctx *rc, const struct ras_inst *ri, const st
                    const struct ras_triangle *t, uint32_t gi, int cached_shade, vec3 V[3], vec3 N[3], int *front)
 {
     *front = 0;
-    if (!rc->def.tri_flags) return tri_facts(rc, ri, m, t, V, N, front);
+    if (!rc->def.tri_flags) return tri_facts(rc, ri, m, t, V, N, front, 1);
     uint8_t f = rc->def.tri_flags[gi];
     if (!(f & RAS_TRI_LIVE)) return 0;
     *front = (f & RAS_TRI_FRONT) != 0;
     /* unshaded triangles need no normals: the corners are all they take */
-    if (!cached_shade && rc->def.shading != SHADE_NONE) return tri_facts(rc, ri, m, t, V, N, front);
+    if (!cached_shade && rc->def.shading != SHADE_NONE) return tri_facts(rc, ri, m, t, V, N, front, 1);
     for (int k = 0; k < 3; k++) V[k] = rc->verts[ri->vbase + t->v[k]].c;
     return 1;
 }

@@ -172,23 +172,20 @@ static void instance_triangles(struct ras_ctx *rc, uint16_t i, uint32_t k0, uint
             num ys[3] = { rc->proj[vb + t->v[0]].py, rc->proj[vb + t->v[1]].py, rc->proj[vb + t->v[2]].py }, lo, hi;
             range3(ys, &lo, &hi);
             *rr = rows_of_canvas_y(rc, lo, hi);
+            if (rr->r0 <= rr->r1) rc->part_drawn[part]++;
         } else {
             const struct ras_pv *pa = &rc->def.pv[vb + t->v[0]], *pb = &rc->def.pv[vb + t->v[1]], *pc = &rc->def.pv[vb + t->v[2]];
-            if (pa->inside && pb->inside && pc->inside)
-                *rr = sub_rows(rc, num_min(num_min(pa->sy, pb->sy), pc->sy), num_max(num_max(pa->sy, pb->sy), pc->sy));
-            else
-                *rr = default_tri_rows(rc, a->c, b->c, c->c);
-            if (rr->r0 <= rr->r1) ras_tri_cache(rc, in, ri, m, t, tb + k, part);
-            else rc->def.tri_flags[tb + k] = 0;
-        }
-        if (rr->r0 <= rr->r1) rc->part_drawn[part]++;
-        if (rc->bins.on && rr->r0 <= rr->r1) {
+            const int inside = pa->inside && pb->inside && pc->inside;
+            const int32_t lo = inside ? min3(pa->sy, pb->sy, pc->sy) : 0, hi = inside ? max3(pa->sy, pb->sy, pc->sy) : 0;
+            *rr = inside ? sub_rows(rc, lo, hi) : default_tri_rows(rc, a->c, b->c, c->c);
+            if (rr->r0 > rr->r1) { rc->def.tri_flags[tb + k] = 0; continue; }
+            ras_tri_cache(rc, in, ri, m, t, tb + k, part);
+            rc->part_drawn[part]++;
             /* what the strips visit: live triangles only, and those of three
              * projected corners only on the rows of the pixel centres they span */
-            const struct ras_pv *pa = &rc->def.pv[vb + t->v[0]], *pb = &rc->def.pv[vb + t->v[1]], *pc = &rc->def.pv[vb + t->v[2]];
+            if (!rc->bins.on) continue;
             if (!(rc->def.tri_flags[tb + k] & RAS_TRI_LIVE)) *rr = no_rows();
-            else if (pa->inside && pb->inside && pc->inside)
-                *rr = centre_rows(rc, min3(pa->sy, pb->sy, pc->sy), max3(pa->sy, pb->sy, pc->sy));
+            else if (inside) *rr = centre_rows(rc, lo, hi);
         }
     }
 }
@@ -259,7 +256,7 @@ int raster_frame_start(void *work, uint16_t frame)
     for (uint16_t k = 0; k < rc->fast.nkeep; k++) rc->fast.keep[k].tri = UINT32_MAX;
 
     /* RenderInstance, its frame half: every instance's matrices here, its
-     * vertices in raster_frame_vertices, its triangles in raster_frame_finish */
+     * vertices in raster_frame_vertices, its triangles in raster_frame_triangles */
     uint32_t vb = 0, tb = 0;
     for (uint16_t i = 0; i < s->ninstances; i++) {
         const struct ras_model *m = &s->models[s->instances[i].model];
@@ -271,21 +268,29 @@ int raster_frame_start(void *work, uint16_t frame)
     return 0;
 }
 
+/* Part `part` of `parts` equal ranges of n items numbered across the
+ * instances (vertices or triangles): instance i's share, items k0 .. k1 - 1
+ * of it (base, count: its first item and how many); 0 when it has none. */
+static int part_slice(uint32_t n, unsigned part, unsigned parts, uint32_t base, uint32_t count, uint32_t *k0,
+                      uint32_t *k1)
+{
+    const uint32_t lo = (uint32_t)((uint64_t)n * part / parts), hi = (uint32_t)((uint64_t)n * (part + 1) / parts);
+    if (hi <= base || lo >= base + count) return 0;
+    *k0 = lo > base ? lo - base : 0;
+    *k1 = hi < base + count ? hi - base : count;
+    return *k0 < *k1;
+}
+
 int raster_frame_vertices(const void *work, unsigned part, unsigned parts)
 {
     const struct ras_ctx *rc = ras_ctx_of((void *)(uintptr_t)work);
     if (rc->owner) rc = rc->owner;   /* a sibling works on its owner's frame */
     if (parts == 0 || part >= parts) return -1;
-    /* the part-th of parts equal ranges of the frame's vertices, instance by instance */
-    const uint32_t n = rc->nverts, v0 = (uint32_t)((uint64_t)n * part / parts),
-                   v1 = (uint32_t)((uint64_t)n * (part + 1) / parts);
     const struct scene *s = rc->s;
-    for (uint16_t i = 0; i < s->ninstances; i++) {
-        const uint32_t vb = rc->inst[i].vbase, nv = s->models[s->instances[i].model].nverts;
-        uint32_t k0 = v0 > vb ? v0 - vb : 0, k1 = v1 < vb + nv ? v1 - vb : nv;
-        if (v1 <= vb || v0 >= vb + nv || k0 >= k1) continue;
-        instance_vertices(rc, i, k0, k1);
-    }
+    uint32_t k0, k1;
+    for (uint16_t i = 0; i < s->ninstances; i++)
+        if (part_slice(rc->nverts, part, parts, rc->inst[i].vbase, s->models[s->instances[i].model].nverts, &k0, &k1))
+            instance_vertices(rc, i, k0, k1);
     return 0;
 }
 
@@ -296,17 +301,13 @@ int raster_frame_triangles(void *work, unsigned part, unsigned parts)
     if (parts == 0 || parts > 2 || part >= parts) return -1;
     /* part 1 lights vertices into the sibling's table: one must be there */
     if (part == 1 && rc->def.vert_shade && !rc->def.vert_shade1) return -1;
-    const uint32_t n = rc->ntris, t0 = (uint32_t)((uint64_t)n * part / parts),
-                   t1 = (uint32_t)((uint64_t)n * (part + 1) / parts);
     const struct scene *s = rc->s;
     rc->part_in[part] = rc->part_drawn[part] = 0;
     if (parts == 1) rc->part_in[1] = rc->part_drawn[1] = 0;
-    for (uint16_t i = 0; i < s->ninstances; i++) {
-        const uint32_t tb = rc->inst[i].tbase, nt = s->models[s->instances[i].model].ntris;
-        uint32_t k0 = t0 > tb ? t0 - tb : 0, k1 = t1 < tb + nt ? t1 - tb : nt;
-        if (t1 <= tb || t0 >= tb + nt || k0 >= k1) continue;
-        instance_triangles(rc, i, k0, k1, (int)part);
-    }
+    uint32_t k0, k1;
+    for (uint16_t i = 0; i < s->ninstances; i++)
+        if (part_slice(rc->ntris, part, parts, rc->inst[i].tbase, s->models[s->instances[i].model].ntris, &k0, &k1))
+            instance_triangles(rc, i, k0, k1, (int)part);
     return 0;
 }
 

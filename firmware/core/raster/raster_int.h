@@ -179,6 +179,8 @@ struct ras_own {
     uint16_t *active;
     struct ras_fast_state *keep;
     uint8_t *stencil;
+    num *vshade;             /* the owner's part-1 vertex lighting (ras_def.vert_shade1) */
+    uint8_t *vlit;
 };
 
 /* The rasterizer's state, in the caller's work memory: what every path
@@ -209,8 +211,6 @@ struct ras_ctx {
     struct ras_c15 c15;
     const struct ras_ctx *owner;   /* a sibling's owner (raster_init_sibling), NULL: none */
     struct ras_own own;            /* a sibling's own tables */
-    num *own_vshade;               /* a sibling's part-1 vertex lighting (its work memory) */
-    uint8_t *own_vlit;
 };
 
 /* The state in the caller's work memory, at its first WORK_ALIGN boundary

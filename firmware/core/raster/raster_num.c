@@ -15,36 +15,39 @@
 #endif
 #endif
 
-int64_t ras_floordiv(int64_t n, int64_t d, int64_t *rem)
+/* un / d without the library's 64-bit division where it can (d < 2^32):
+ * 1 with *q and *r, or 0. */
+static int udiv_fast(uint64_t un, uint32_t d, uint64_t *q, uint32_t *r)
 {
-    if (d > 0 && d <= (int64_t)UINT32_MAX) {
-        /* |n| below 2^32 (small triangles' set-up): one 32-bit division */
-        uint64_t un = n < 0 ? (uint64_t)0 - (uint64_t)n : (uint64_t)n;
-        if (un <= UINT32_MAX) {
-            uint32_t q = (uint32_t)un / (uint32_t)d, r = (uint32_t)un - q * (uint32_t)d;
-            if (n >= 0) { *rem = r; return q; }
-            if (r == 0) { *rem = 0; return -(int64_t)q; }
-            *rem = d - r;
-            return -(int64_t)q - 1;
-        }
+    if (un <= UINT32_MAX) {   /* small triangles' set-up: one 32-bit division */
+        *q = (uint32_t)un / d;
+        *r = (uint32_t)un - (uint32_t)*q * d;
+        return 1;
     }
 #if NUM_MODE == NUM_MODE_FIXED && RAS_DIV64_32
-    if (d <= (int64_t)UINT32_MAX) {
-        uint64_t un = n < 0 ? (uint64_t)0 - (uint64_t)n : (uint64_t)n;
-        if ((un >> 32) < (uint64_t)d) {
-            uint32_t r;
-            int64_t q = num_udiv64_32(un, (uint32_t)d, &r);
-            if (n >= 0) { *rem = r; return q; }
-            if (r == 0) { *rem = 0; return -q; }
-            *rem = d - r;
-            return -q - 1;
-        }
+    if ((un >> 32) < d) {
+        *q = num_udiv64_32(un, d, r);
+        return 1;
     }
 #endif
-    int64_t q = n / d, r = n % d;
-    if (r < 0) { q--; r += d; }
-    *rem = r;
-    return q;
+    return 0;
+}
+
+int64_t ras_floordiv(int64_t n, int64_t d, int64_t *rem)
+{
+    uint64_t un = n < 0 ? (uint64_t)0 - (uint64_t)n : (uint64_t)n, q;
+    uint32_t r;
+    if (d > 0 && d <= (int64_t)UINT32_MAX && udiv_fast(un, (uint32_t)d, &q, &r)) {
+        /* |n| = q d + r: the floor of n / d and its remainder in [0, d) */
+        if (n >= 0) { *rem = r; return (int64_t)q; }
+        if (r == 0) { *rem = 0; return -(int64_t)q; }
+        *rem = d - r;
+        return -(int64_t)q - 1;
+    }
+    int64_t qs = n / d, rs = n % d;
+    if (rs < 0) { qs--; rs += d; }
+    *rem = rs;
+    return qs;
 }
 
 #if NUM_MODE == NUM_MODE_FIXED

@@ -150,9 +150,6 @@ static void carve_strip_tables(const struct scene *s, uint16_t w, uint16_t strip
     rc->c15.stencil = work_take(c, ras_ch15_stencil_size(s, w, strip_rows));
 }
 
-/* Every table of the state, in order, from c (c->base NULL: measuring, rc a
- * scratch context). The instances' models are checked first: -1 when one
- * is missing. */
 /* The binning of the default path's triangles to strips (struct ras_bins):
  * for scenes of at most 65535 triangles (16-bit indices). */
 static int bins_on(const struct scene *s, uint32_t ntris)
@@ -160,6 +157,9 @@ static int bins_on(const struct scene *s, uint32_t ntris)
     return frame_cache(s) && ntris > 0 && ntris <= 0xFFFFu;
 }
 
+/* Every table of the state, in order, from c (c->base NULL: measuring, rc a
+ * scratch context). The instances' models are checked first: -1 when one
+ * is missing. */
 static int carve(const struct scene *s, uint16_t w, uint16_t h, uint16_t strip_rows, struct ras_ctx *rc,
                  struct work_carve *c)
 {
@@ -333,8 +333,12 @@ static void carve_sibling(const struct scene *s, uint16_t w, uint16_t strip_rows
     int vl = (shade_caches(s) & 2) != 0;
     void *vs = work_take(c, vl ? sizeof(num) * nverts : 0);
     void *vb = work_take(c, vl ? (nverts + 7) / 8 : 0);
-    rc->own_vshade = vl ? vs : NULL;
-    rc->own_vlit = vl ? vb : NULL;
+    rc->own.depth = rc->depth;
+    rc->own.active = rc->bins.active;
+    rc->own.keep = rc->fast.keep;
+    rc->own.stencil = rc->c15.stencil;
+    rc->own.vshade = vl ? vs : NULL;
+    rc->own.vlit = vl ? vb : NULL;
 }
 
 size_t raster_sibling_work_size(const struct scene *s, uint16_t width, uint16_t height, uint16_t strip_rows)
@@ -372,13 +376,13 @@ int raster_init_sibling(void *work, size_t work_size, const void *owner_work)
     *rc = *ow;
     struct work_carve c = { (uint8_t *)rc, 0 };
     carve_sibling(ow->s, ow->w, ow->strip_rows, rc, &c);
-    struct ras_own own = { rc->depth, rc->bins.active, rc->fast.keep, rc->c15.stencil };
+    struct ras_own own = rc->own;
     /* the owner's part-1 vertex lighting lives here: registered with it,
      * nothing lit yet */
     struct ras_ctx *owm = (struct ras_ctx *)(uintptr_t)ow;
-    owm->def.vert_shade1 = rc->own_vshade;
-    owm->def.vert_lit1 = rc->own_vlit;
-    if (rc->own_vlit) memset(rc->own_vlit, 0, (ow->nverts + 7) / 8);
+    owm->def.vert_shade1 = own.vshade;
+    owm->def.vert_lit1 = own.vlit;
+    if (own.vlit) memset(own.vlit, 0, (ow->nverts + 7) / 8);
     sibling_reset(rc, ow, &own);
     return 0;
 }

@@ -188,6 +188,12 @@ num  v3_dot(vec3 a, vec3 b);              /* summed wide, rounded once */
 wnum v3_dot_wide(vec3 a, vec3 b);
 vec3 v3_cross(vec3 a, vec3 b);
 num  v3_len(vec3 a);                      /* correctly rounded (exact sum of squares) */
+/* x / |v|, |v| from the exact sum of squares (never rounded to the format
+ * on its own): fixed point multiplies by a reciprocal square root refined
+ * to about 2^-27, so the result is within half an ulp plus 2^-26 of itself
+ * (saturating; v = 0 as a division by zero); the floating modes divide by
+ * v3_len(v). */
+num  v3_div_len(num x, vec3 v);
 vec3 v3_normalize(vec3 a);                /* <= 0.51 ulp per component for any non-zero
                                            * input, tiny ones included (pre-scaled);
                                            * zero vector stays zero */

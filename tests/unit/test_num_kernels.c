@@ -214,8 +214,39 @@ static void test_vec(void)
     check(badl == 0, "v3_len_matches_definition", "%ld mismatches", badl);
 }
 
+/* v3_div_len against x 2^F / sqrt(sum of squares) in long double: within
+ * half an ulp plus 2^-26 of the quotient, saturating beyond the format. */
+static void test_div_len(void)
+{
+    long bad = 0, n = 0;
+    double worst = 0;
+    for (long i = 0; i < 1000000; i++) {
+        int bits = 1 + (int)(i % 31);
+        vec3 v = v3_make((num)rnd_bits(bits), (num)rnd_bits(bits), (num)rnd_bits(bits));
+        if (rng() & 1) v.x = -v.x;
+        if (i % 7 == 0) v.z = 0;
+        num x = (num)rnd_bits(1 + (int)(rng() % 31));
+        if (rng() & 1) x = -x;
+        if (v.x == 0 && v.y == 0 && v.z == 0) continue;
+        long double ss = (long double)v.x * v.x + (long double)v.y * v.y + (long double)v.z * v.z;
+        long double q = (long double)x * (long double)NUM_ONE / sqrtl(ss);
+        num got = v3_div_len(x, v);
+        if (fabsl(q) >= (long double)INT32_MAX) {
+            if (got != (q > 0 ? NUM_MAX : NUM_MIN)) bad++;
+            continue;
+        }
+        double err = (double)fabsl((long double)got - q);
+        double lim = 0.5 + fabs((double)q) * ldexp(1.0, -26) + 1e-9;
+        if (err > lim) bad++;
+        if (err - 0.5 > worst) worst = err - 0.5;
+        n++;
+    }
+    check(bad == 0 && n > 900000, "v3_div_len_bounded", "%ld of %ld beyond the bound", bad, n);
+}
+
 int main(void)
 {
+    test_div_len();
     test_rsqrt_q30();
     test_sqrt_est();
     test_isqrt64();

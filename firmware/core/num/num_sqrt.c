@@ -269,6 +269,29 @@ num v3_len(vec3 a)
     return (num)l;
 }
 
+num v3_div_len(num x, vec3 v)
+{
+    uint32_t u[3];
+    int sh = prescale(v, u);
+    if (u[0] == 0 && u[1] == 0 && u[2] == 0) return num_div(x, NUM_ZERO);
+    if (x == 0) return 0;
+    uint64_t s = sumsq(u);                       /* in [2^58, 3 * 2^60) */
+    /* t = s 4^z in [2^62, 2^64); y = num_rsqrt_q30(t / 2^32) ~ 2^46 / sqrt(t / 2^32)
+     * (2^-17.4), one more Newton step as num_rsqrt takes it (2^-27 with the
+     * truncations). 1 / sqrt(s) = y 2^(z - 62), so x / |v| in raw units is
+     * x 2^(F + sh) / sqrt(s) = x y 2^(F + sh + z - 62); the shift is >= 11. */
+    int z = num_clz64(s) >> 1;
+    uint32_t xh = (uint32_t)((s << (2 * z)) >> 32);
+    uint32_t y = num_rsqrt_q30(xh);
+    uint32_t w = num_mulhi32(xh, num_mulhi32(y, y));
+    if (w <= (1u << 28)) y += num_mulhi32(y, ((1u << 28) - w) << 3);
+    else y -= num_mulhi32(y, (w - (1u << 28)) << 3);
+    int r = 62 - NUM_FRAC - sh - z;              /* in [11, 54] */
+    uint64_t p = num_umul32(uabs32(x), y);
+    uint64_t q = ((p >> (r - 1)) + 1) >> 1;
+    return sat_signed(q, x < 0);
+}
+
 vec3 v3_normalize(vec3 a)
 {
     uint32_t u[3];

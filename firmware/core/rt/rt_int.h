@@ -126,6 +126,7 @@ struct rt_state {
     int16_t *occluder;         /* per light: last occluder (-1: none) */
     struct rt_ray *light_ray;  /* per light: directional lights' shadow-ray direction (rt_light_constants) */
     num *light_len;            /* per light: |L| of directional lights */
+    struct num_divisor *light_div; /* per light: the same, as a divisor */
     rgb *row_c;                /* one row of colours (subsampling/adaptive) */
     int16_t *row_item;
     num *col_x;                /* viewport x of each column's centre */
@@ -246,9 +247,10 @@ void rt_put(struct rt_state *rt, struct render_target *t, int x, int y, rgb c, i
 int rt_colours_differ(rgb a, rgb b, num diff);
 
 /* rt_lighting.c, the book's ComputeLighting: intensity at P (normal N, view V = -D) for specular exponent s
+ * (unit_normal: N is a sphere's (P - C) / r, of length 1 up to rounding)
  * (s_zero: rt_powi_zero_below of it, or -1).
  * *shadow_bits gets bit k set when light k is shadowed (may be NULL). */
-num rt_compute_lighting(struct rt_state *rt, vec3 p, vec3 n, vec3 v, num s, num s_zero, int16_t origin,
-                        uint8_t *shadow_bits);
+num rt_compute_lighting(struct rt_state *rt, vec3 p, vec3 n, int unit_normal, vec3 v, num s, num s_zero,
+                        int16_t origin, uint8_t *shadow_bits);
 
 #endif

@@ -6,6 +6,11 @@
  * nearly), L and V unnormalised, i += (I*(n.l))/(|N|*|L|) and
  * i += I*pow((r.v)/(|R|*|V|), s). In Q15.16 they hold for |L| up to 16000:
  * n.l and r.v are wide dot products rounded once, |L| comes from a wide sum.
+ * Fixed point, a sphere's normal (P - C) / r: |N| differs from 1 by the
+ * roundings of P and N alone, so (I n.l) / |N| is taken to first order in
+ * N.N - 1 (exact products; rt_div_near_unit) instead of rounding |N| to
+ * the format, and / |L| from L.L without rounding |L| on its own
+ * (v3_div_len), or by a directional light's reciprocal made once.
  */
 #include "rt_int.h"
 
@@ -32,8 +37,8 @@ static int in_shadow(struct rt_state *rt, struct rt_ray *ray, num t_max, uint16_
     return 1;
 }
 
-num rt_compute_lighting(struct rt_state *rt, vec3 p, vec3 n, vec3 v, num s, num s_zero, int16_t origin,
-                        uint8_t *shadow_bits)
+num rt_compute_lighting(struct rt_state *rt, vec3 p, vec3 n, int unit_normal, vec3 v, num s, num s_zero,
+                        int16_t origin, uint8_t *shadow_bits)
 {
     const struct scene *sc = rt->s;
     const struct rt_options *o = &sc->rt;
@@ -41,7 +46,7 @@ num rt_compute_lighting(struct rt_state *rt, vec3 p, vec3 n, vec3 v, num s, num 
     /* |N| and |V| as the demos compute them, each once and only if a term
      * needs it */
     num len_n = NUM_ZERO, len_v = NUM_ZERO;
-    int have_n = 0, have_v = 0;
+    int have_n = 0, have_v = 0, unit_n = unit_normal;
     if (!rt->shortcuts) {
         len_n = v3_len(n);
         len_v = v3_len(v);
@@ -88,9 +93,17 @@ num rt_compute_lighting(struct rt_state *rt, vec3 p, vec3 n, vec3 v, num s, num 
         }
         num n_dot_l = v3_dot(n, l);
         if (o->diffuse && n_dot_l > 0) {
-            num len_l = directional && rt->shortcuts ? rt->light_len[k] : v3_len(l);
-            if (!have_n) { len_n = v3_len(n); have_n = 1; }
-            i = num_add(i, num_div(num_mul(lt->intensity, n_dot_l), num_mul(len_n, len_l)));
+            num in = num_mul(lt->intensity, n_dot_l), q;
+            if (unit_n && rt_div_near_unit(in, n, &q)) {
+                /* (I n.l) / |N| to first order in |N|^2 - 1, then / |L|: a
+                 * directional light's by its reciprocal made once (num_div_by:
+                 * the same bits as num_div), a point light's from L.L exactly */
+                i = num_add(i, directional ? num_div_by(q, &rt->light_div[k]) : v3_div_len(q, l));
+            } else {
+                num len_l = directional && rt->shortcuts ? rt->light_len[k] : v3_len(l);
+                if (!have_n) { len_n = v3_len(n); have_n = 1; }
+                i = num_add(i, num_div(in, num_mul(len_n, len_l)));
+            }
         }
         /* The demos run this step even when n.l <= 0; only shadows stop it. */
         if (o->specular && s >= 0) {

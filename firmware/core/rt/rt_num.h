@@ -559,6 +559,29 @@ RT_ALWAYS_INLINE int rt_quad_solve(vec3 co, vec3 d, wnum aq, wnum c, const struc
     return 1;
 }
 
+/* x / |N| for a vector of length 1 up to rounding (a sphere's (P - C) / r),
+ * fixed point: with e = N.N - 1 from exact products, 1 / |N| = 1 - e/2 +
+ * 3 e^2 / 8 - ..., so x (1 - e/2) is within 2^-25 |x| of x / |N| when
+ * |e| < 2^-12; 1 and the result then, else 0 (and 0 in floating modes,
+ * whose callers divide by |N|). */
+static inline int rt_div_near_unit(num x, vec3 n, num *out)
+{
+#if NUM_MODE == NUM_MODE_FIXED
+    int64_t e = num_smul32(n.x, n.x) + num_smul32(n.y, n.y) + num_smul32(n.z, n.z) - ((int64_t)1 << (2 * NUM_FRAC));
+    int64_t lim = (int64_t)1 << (2 * NUM_FRAC - 12);
+    if (e <= -lim || e >= lim) return 0;
+    /* |x e| < 2^31 2^(2F-12) <= 2^59; x - x e / 2^(2F+1), rounded */
+    int64_t d = rt_shr_round(num_smul32(x, (int32_t)e), 2 * NUM_FRAC + 1);
+    int64_t r = (int64_t)x - d;
+    if (r > INT32_MAX || r < INT32_MIN) return 0;
+    *out = (num)r;
+    return 1;
+#else
+    (void)x; (void)n; (void)out;
+    return 0;
+#endif
+}
+
 /* ---- primary rays along their exact directions ---------------------------
  *
  * A pixel's primary direction is D = (x Vw / W, y Vh / H, d) with

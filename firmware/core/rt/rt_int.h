@@ -73,6 +73,7 @@ struct rt_obj_cache {
     num br;
     num spec_zero;        /* rt_powi_zero_below(material's exponent) */
     struct rt_csphere cs; /* the sphere for the coarse tests (rt_num.h) */
+    struct rt_ccam ccam;  /* ... for the camera's rays (rt_num.h) */
     struct rt_qsphere qs; /* the sphere for the robust test's quadratic (rt_num.h) */
     struct num_divisor rdiv; /* radius, for the normals (P - C) / r */
     /* exact primary directions (x vh, y vh, d h) from the camera: CO x D

@@ -522,6 +522,7 @@ int rt_closest_intersection(struct rt_state *rt, struct rt_ray *ray, num t_min, 
         const int16_t *items = rt->items;
         uint16_t nitems = rt->nitems;
         if (ray->from_camera && rt->prim_items) { items = rt->prim_items; nitems = rt->prim_n; }
+        int cam = ray->from_camera && rt->cached;   /* the camera's coarse forms (rt_ccam) */
         for (uint16_t i = 0; i < nitems; i++) {
             int16_t item = items[i];
             if (item == rt->skip_item) continue;
@@ -531,7 +532,9 @@ int rt_closest_intersection(struct rt_state *rt, struct rt_ray *ray, num t_min, 
                 /* the common outcome first, without the calls: a certain
                  * miss (the ray's own sphere takes sphere_first_hit's path) */
                 int other = item != ray->origin;
-                if (other && rt_coarse_sphere_miss(&ray->cd, &rt->oc[item].cs)) continue;
+                if (other && (cam ? rt_coarse_cam_miss(&ray->cd, &rt->oc[item].ccam)
+                                  : rt_coarse_sphere_miss(&ray->cd, &rt->oc[item].cs)))
+                    continue;
                 if (!sphere_item_hit(rt, item, ray, t_min, limit, hit, other)) continue;
                 limit = hit->t;
                 found = 1;

@@ -288,6 +288,81 @@ static inline int rt_coarse_sphere_miss(const struct rt_cdir *cd, const struct r
 #endif
 }
 
+/* rt_coarse_sphere_miss for rays from one origin (the camera's primary
+ * rays): everything but the direction made once a frame. The units, co,
+ * |co|_1 and the margin are the ones rt_coarse_sphere_miss picks; of its
+ * two margins the smaller is kept (a smaller R only proves more misses, and
+ * each is a proof on its own), so a ray it rejects is rejected here too. */
+struct rt_ccam {
+#if NUM_MODE == NUM_MODE_FIXED
+    int32_t co[3];
+    uint32_t n1, R, rc;
+    uint8_t ok;           /* 0: no coarse tests from this origin */
+#else
+    uint8_t none;
+#endif
+};
+
+static inline struct rt_ccam rt_ccam_make(const struct rt_csphere *sp, const struct rt_cpt *o)
+{
+    struct rt_ccam cc;
+#if NUM_MODE == NUM_MODE_FIXED
+    cc.ok = 0;
+    cc.co[0] = cc.co[1] = cc.co[2] = 0;
+    cc.n1 = cc.R = cc.rc = 0;
+    if (!sp->ok) return cc;
+    int32_t co[3] = { sp->c.fx - o->fx, sp->c.fy - o->fy, sp->c.fz - o->fz };
+    uint32_t n1 = rt_uabs(co[0]) + rt_uabs(co[1]) + rt_uabs(co[2]);
+    int fine = 0;
+    if (n1 < (1u << 19)) {
+        uint32_t m = ((5u * (n1 + 2) + (1u << (NUM_FRAC / 2)) - 1) >> (NUM_FRAC / 2)) +
+                     ((9u << 10) >> (NUM_FRAC / 2)) + 1;
+        if (sp->rcf + m + 3 < (1u << 19) + (1u << 17)) {
+            if (sp->inv2r && n1 < (1u << 15)) {
+                uint32_t a = (n1 + 2) * (n1 + 2);
+                uint32_t num = (((a >> 4) + 1) * 25 >> 8) + 1 + 25 * (n1 + 2) + 43008u;
+                uint32_t m2 = (uint32_t)(num_umul32(num, sp->inv2r) >> 32) + 1;
+                if (m2 < m) m = m2;
+            }
+            cc.R = sp->rcf + m + 3;
+            cc.rc = sp->rcf;
+            fine = 1;
+        }
+    }
+    if (!fine) {
+        co[0] = sp->c.x - o->x;
+        co[1] = sp->c.y - o->y;
+        co[2] = sp->c.z - o->z;
+        n1 = rt_uabs(co[0]) + rt_uabs(co[1]) + rt_uabs(co[2]);
+        if (n1 >= (1u << 19)) return cc;
+        cc.R = sp->rc + ((5u * n1 + (1u << (NUM_FRAC / 2)) - 1) >> (NUM_FRAC / 2)) + 3;
+        cc.rc = sp->rc;
+    }
+    cc.co[0] = co[0];
+    cc.co[1] = co[1];
+    cc.co[2] = co[2];
+    cc.n1 = n1;
+    cc.ok = 1;
+#else
+    (void)sp; (void)o;
+    cc.none = 1;
+#endif
+    return cc;
+}
+
+/* 1 only when rt_coarse_sphere_miss would be 1 or the robust test misses
+ * (cd's origin the one cc was made for). */
+RT_ALWAYS_INLINE int rt_coarse_cam_miss(const struct rt_cdir *cd, const struct rt_ccam *cc)
+{
+#if NUM_MODE == NUM_MODE_FIXED
+    if (cd->len == 0 || !cc->ok) return 0;
+    return rt_coarse_units_miss(cd, cc->co, cc->n1, cc->R, cc->rc);
+#else
+    (void)cd; (void)cc;
+    return 0;
+#endif
+}
+
 /* 1 only when (C - O).D is certainly negative by more than 2^12 raw times
  * |D|, so that the robust test's b = -(O - C).D' (rounded, error <= 1.5
  * ulp) is negative: with the coarse forms' errors, |co.d - exact| <=

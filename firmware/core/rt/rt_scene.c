@@ -48,6 +48,8 @@ void rt_frame_constants(struct rt_state *rt)
         struct rt_obj_cache *oc = &rt->oc[i];
         oc->r2 = num_mul_wide(o->radius, o->radius);
         oc->cs = rt_csphere_make(o->center, o->radius);
+        struct rt_cpt cam = rt_cpt_make(rt->cam_pos);
+        oc->ccam = rt_ccam_make(&oc->cs, &cam);
         oc->qs = rt_qsphere_make(o->radius);
         oc->rdiv = num_divisor_make(o->radius);
         if (o->shape == RT_SPHERE) {

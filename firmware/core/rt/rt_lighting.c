@@ -46,7 +46,9 @@ num rt_compute_lighting(struct rt_state *rt, vec3 p, vec3 n, int unit_normal, ve
     /* |N| and |V| as the demos compute them, each once and only if a term
      * needs it */
     num len_n = NUM_ZERO, len_v = NUM_ZERO;
-    int have_n = 0, have_v = 0, unit_n = unit_normal;
+    int have_n = 0, have_v = 0;
+    int unit_n = unit_normal ? -1 : 0;   /* -1: N.N - 1 not yet formed (rt_near_unit_err) */
+    int32_t unit_e = 0;
     if (!rt->shortcuts) {
         len_n = v3_len(n);
         len_v = v3_len(v);
@@ -94,7 +96,8 @@ num rt_compute_lighting(struct rt_state *rt, vec3 p, vec3 n, int unit_normal, ve
         num n_dot_l = v3_dot(n, l);
         if (o->diffuse && n_dot_l > 0) {
             num in = num_mul(lt->intensity, n_dot_l), q;
-            if (unit_n && rt_div_near_unit(in, n, &q)) {
+            if (unit_n < 0) unit_n = rt_near_unit_err(n, &unit_e);
+            if (unit_n && rt_div_near_unit(in, unit_e, &q)) {
                 /* (I n.l) / |N| to first order in |N|^2 - 1, then / |L|: a
                  * directional light's by its reciprocal made once (num_div_by:
                  * the same bits as num_div), a point light's from L.L exactly */

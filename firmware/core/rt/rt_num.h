@@ -637,22 +637,34 @@ RT_ALWAYS_INLINE int rt_quad_solve(vec3 co, vec3 d, wnum aq, wnum c, const struc
 /* x / |N| for a vector of length 1 up to rounding (a sphere's (P - C) / r),
  * fixed point: with e = N.N - 1 from exact products, 1 / |N| = 1 - e/2 +
  * 3 e^2 / 8 - ..., so x (1 - e/2) is within 2^-25 |x| of x / |N| when
- * |e| < 2^-12; 1 and the result then, else 0 (and 0 in floating modes,
- * whose callers divide by |N|). */
-static inline int rt_div_near_unit(num x, vec3 n, num *out)
+ * |e| < 2^-12. rt_near_unit_err: 1 and e at 2F fraction bits in that case
+ * (once per normal), else 0 (and 0 in floating modes, whose callers divide
+ * by |N|); rt_div_near_unit: 1 and x (1 - e/2) rounded, 0 if it leaves the
+ * format. */
+static inline int rt_near_unit_err(vec3 n, int32_t *e)
 {
 #if NUM_MODE == NUM_MODE_FIXED
-    int64_t e = num_smul32(n.x, n.x) + num_smul32(n.y, n.y) + num_smul32(n.z, n.z) - ((int64_t)1 << (2 * NUM_FRAC));
+    int64_t d = num_smul32(n.x, n.x) + num_smul32(n.y, n.y) + num_smul32(n.z, n.z) - ((int64_t)1 << (2 * NUM_FRAC));
     int64_t lim = (int64_t)1 << (2 * NUM_FRAC - 12);
-    if (e <= -lim || e >= lim) return 0;
+    if (d <= -lim || d >= lim) return 0;
+    *e = (int32_t)d;
+    return 1;
+#else
+    (void)n; (void)e;
+    return 0;
+#endif
+}
+
+static inline int rt_div_near_unit(num x, int32_t e, num *out)
+{
+#if NUM_MODE == NUM_MODE_FIXED
     /* |x e| < 2^31 2^(2F-12) <= 2^59; x - x e / 2^(2F+1), rounded */
-    int64_t d = rt_shr_round(num_smul32(x, (int32_t)e), 2 * NUM_FRAC + 1);
-    int64_t r = (int64_t)x - d;
+    int64_t r = (int64_t)x - rt_shr_round(num_smul32(x, e), 2 * NUM_FRAC + 1);
     if (r > INT32_MAX || r < INT32_MIN) return 0;
     *out = (num)r;
     return 1;
 #else
-    (void)x; (void)n; (void)out;
+    (void)x; (void)e; (void)out;
     return 0;
 #endif
 }

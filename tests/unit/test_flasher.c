@@ -2,8 +2,11 @@
 /* test_flasher.c — PICOBOOT command encoding, UF2 loading, and the whole
  * flashing sequence against a fake USB device, with a failure injected at
  * every step. */
+#define _POSIX_C_SOURCE 200809L
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
+#include <unistd.h>
 #include "check.h"
 #include "image.h"
 #include "picoboot.h"
@@ -179,6 +182,7 @@ static void make_image(struct pb_image *img, uint32_t addr, uint32_t len)
     img->addr = addr;
     img->len = len;
     img->data = malloc(len);
+    img->used = NULL;
     uint32_t s = 12345;
     for (uint32_t i = 0; i < len; i++) {
         s = s * 1103515245u + 12345u;
@@ -401,10 +405,158 @@ static void test_uf2(void)
     image_free(&src);
 }
 
+/* A name ending in .uf2 must hold a UF2: never flashed as a raw binary. */
+static void test_uf2_name(void)
+{
+    struct pb_image src, img;
+    char err[256];
+    size_t n;
+    size_t cap = 2 * PB_FLASH_SIZE + 1;
+    check(image_name_is_uf2("a.uf2") && image_name_is_uf2("dir/X.UF2") && image_name_is_uf2(".Uf2") &&
+          !image_name_is_uf2("a.bin") && !image_name_is_uf2("uf2") && !image_name_is_uf2("a.uf2.bin"),
+          "uf2_name_any_case", "wrong");
+    make_image(&src, 0x10000000u, 4 * 256);
+    uint8_t *u = make_uf2(src.data, src.addr, src.len, UF2_FAMILY_RP2040, &n);
+
+    u[0] ^= 1;   /* the first magic word damaged */
+    int rc = image_load(u, n, cap, "fw.uf2", PB_FLASH_BASE, PB_FLASH_LIMIT, &img, err, sizeof err);
+    check(rc == -1 && one_line(err) && strcmp(err, "not a UF2 file: block 0 has bad magic") == 0,
+          "uf2_name_damaged_magic_refused", "rc %d: %s", rc, err);
+    if (rc == 0) image_free(&img);
+    /* the same bytes under another name are a flat binary, as before */
+    rc = image_load(u, n, cap, "fw.bin", PB_FLASH_BASE, PB_FLASH_LIMIT, &img, err, sizeof err);
+    check(rc == 0 && img.len == n && img.used == NULL, "bin_name_damaged_uf2_is_a_binary", "rc %d: %s", rc, err);
+    if (rc == 0) image_free(&img);
+    u[0] ^= 1;
+    rc = image_load(u, n, cap, "fw.bin", PB_FLASH_BASE, PB_FLASH_LIMIT, &img, err, sizeof err);
+    check(rc == 0 && img.len == src.len && memcmp(img.data, src.data, src.len) == 0, "bin_name_uf2_content_is_uf2",
+          "rc %d: %s", rc, err);
+    if (rc == 0) image_free(&img);
+    rc = image_load(u, n, cap, "FW.UF2", PB_FLASH_BASE, PB_FLASH_LIMIT, &img, err, sizeof err);
+    check(rc == 0 && img.len == src.len, "uf2_name_upper_case_valid_accepted", "rc %d: %s", rc, err);
+    if (rc == 0) image_free(&img);
+
+    static const char text[] = "hello, this is not an image\n";
+    rc = image_load((const uint8_t *)text, sizeof text - 1, cap, "t.uf2", PB_FLASH_BASE, PB_FLASH_LIMIT, &img,
+                    err, sizeof err);
+    check(rc == -1 && one_line(err) && strstr(err, "not a UF2 file"), "uf2_name_text_refused", "rc %d: %s", rc,
+          err);
+    if (rc == 0) image_free(&img);
+    uint8_t zero[512] = { 0 };
+    rc = image_load(zero, sizeof zero, cap, "z.Uf2", PB_FLASH_BASE, PB_FLASH_LIMIT, &img, err, sizeof err);
+    check(rc == -1 && strcmp(err, "not a UF2 file: block 0 has bad magic") == 0, "uf2_name_zero_block_refused",
+          "rc %d: %s", rc, err);
+    if (rc == 0) image_free(&img);
+    rc = image_load(zero, 3, cap, "short.uf2", PB_FLASH_BASE, PB_FLASH_LIMIT, &img, err, sizeof err);
+    check(rc == -1 && strstr(err, "not a UF2 file"), "uf2_name_short_file_refused", "rc %d: %s", rc, err);
+    if (rc == 0) image_free(&img);
+    free(u);
+    image_free(&src);
+}
+
+/* Block numbers: each once, so two images in one file are not one. */
+static void test_uf2_block_numbers(void)
+{
+    struct pb_image src, img;
+    char err[256];
+    size_t n;
+    make_image(&src, 0x10000000u, 4 * 256);
+    uint8_t *u = make_uf2(src.data, src.addr, src.len, UF2_FAMILY_RP2040, &n);
+    put32(u + 512 * 3 + 20, 0);   /* blocks 0 1 2 0, four pages, "4 blocks" */
+    int rc = image_from_uf2(u, n, PB_FLASH_LIMIT, &img, err, sizeof err);
+    check(rc == -1 && one_line(err) && strstr(err, "block number 0 of 4 appears twice") && strstr(err, "block 3"),
+          "uf2_duplicate_block_number_rejected", "rc %d: %s", rc, err);
+    if (rc == 0) image_free(&img);
+    free(u);
+
+    /* two whole images of 2 blocks each, at different addresses, one after the other */
+    uint8_t *a = make_uf2(src.data, src.addr, 512, UF2_FAMILY_RP2040, &n);
+    uint8_t *b = make_uf2(src.data, src.addr + 8192, 512, UF2_FAMILY_RP2040, &n);
+    uint8_t *ab = malloc(2 * n);
+    memcpy(ab, a, n);
+    memcpy(ab + n, b, n);
+    rc = image_from_uf2(ab, 2 * n, PB_FLASH_LIMIT, &img, err, sizeof err);
+    check(rc == -1 && strstr(err, "appears twice"), "uf2_two_images_concatenated_rejected", "rc %d: %s", rc, err);
+    if (rc == 0) image_free(&img);
+    free(a);
+    free(b);
+    free(ab);
+    image_free(&src);
+}
+
+/* ---- reading the file ---------------------------------------------------- */
+
+static char hook_path[256];
+static void grow_file(const char *path)
+{
+    FILE *f = fopen(path, "ab");
+    if (f) {
+        fputs("more", f);
+        fclose(f);
+    }
+    strncpy(hook_path, path, sizeof hook_path - 1);
+}
+
+static void test_read_file(void)
+{
+    char dir[] = "/tmp/test_flasher_XXXXXX", p[300], err[256];
+    static uint8_t buf[8192];
+    size_t len = 99;
+    if (!mkdtemp(dir)) {
+        check(0, "read_file_tmpdir", "mkdtemp failed");
+        return;
+    }
+    snprintf(p, sizeof p, "%s/ok.bin", dir);
+    FILE *f = fopen(p, "wb");
+    fputs("0123456789", f);
+    fclose(f);
+    int rc = image_read_file(p, buf, sizeof buf, &len, err, sizeof err);
+    check(rc == 0 && len == 10 && memcmp(buf, "0123456789", 10) == 0, "read_file_regular", "rc %d: %s", rc, err);
+
+    image_read_hook = grow_file;
+    rc = image_read_file(p, buf, sizeof buf, &len, err, sizeof err);
+    image_read_hook = NULL;
+    check(rc == -1 && one_line(err) && strstr(err, "changed while it was read") && hook_path[0],
+          "read_file_changed_while_read_refused", "rc %d: %s", rc, err);
+
+    snprintf(p, sizeof p, "%s/missing.uf2", dir);
+    rc = image_read_file(p, buf, sizeof buf, &len, err, sizeof err);
+    check(rc == -1 && strcmp(err, "cannot open: No such file or directory") == 0, "read_file_missing_says_why",
+          "rc %d: %s", rc, err);
+
+    rc = image_read_file(dir, buf, sizeof buf, &len, err, sizeof err);
+    check(rc == -1 && one_line(err) && strstr(err, "Is a directory"), "read_file_directory_refused", "rc %d: %s",
+          rc, err);
+
+    snprintf(p, sizeof p, "%s/empty.uf2", dir);
+    fclose(fopen(p, "wb"));
+    rc = image_read_file(p, buf, sizeof buf, &len, err, sizeof err);
+    check(rc == -1 && strstr(err, "empty file (0 bytes)"), "read_file_empty_refused", "rc %d: %s", rc, err);
+    unlink(p);
+
+    /* a FIFO with no writer: refused at once, never a hang */
+    snprintf(p, sizeof p, "%s/fifo.uf2", dir);
+    if (mkfifo(p, 0600) == 0) {
+        rc = image_read_file(p, buf, sizeof buf, &len, err, sizeof err);
+        check(rc == -1 && strcmp(err, "not a regular file (a FIFO)") == 0, "read_file_fifo_refused", "rc %d: %s",
+              rc, err);
+        unlink(p);
+    }
+    rc = image_read_file("/dev/null", buf, sizeof buf, &len, err, sizeof err);
+    check(rc == -1 && strstr(err, "a character device"), "read_file_device_refused", "rc %d: %s", rc, err);
+
+    snprintf(p, sizeof p, "%s/ok.bin", dir);
+    unlink(p);
+    rmdir(dir);
+}
+
 int main(void)
 {
     test_encoding();
     test_success();
     test_uf2();
+    test_uf2_name();
+    test_uf2_block_numbers();
+    test_read_file();
     return check_exit();
 }

@@ -5,8 +5,9 @@
  * usage: flasher [--no-reboot] [--base ADDR] [--flash-size BYTES]
  *                [--gpio-reset [--gpio-chip CHIP] [--run-pin N] [--bootsel-pin N]]
  *                FILE.uf2|FILE.bin
- * A file is a UF2 when its content is (whatever its name), else a flat
- * binary placed at --base (default 0x10000000). --flash-size (default 2 MiB,
+ * A file named *.uf2 (any case) must be a valid UF2; any other name is a
+ * UF2 when its content is one, else a flat binary placed at --base
+ * (default 0x10000000). Only a regular file is read (image_read_file). --flash-size (default 2 MiB,
  * the Pico's) bounds where an image may go; everything about the image is
  * checked before the board is touched.
  * --gpio-reset first puts the Pico into its boot ROM through a Raspberry Pi's
@@ -130,34 +131,14 @@ int main(int argc, char **argv)
     }
     if (!file) return die(USAGE);
 
-    FILE *f = fopen(file, "rb");
-    if (!f) {
-        char m[512];
-        snprintf(m, sizeof m, "%s: cannot open", file);
-        return die(m);
-    }
     /* a UF2 block carries 256 of its 512 bytes: twice the flash and one more
      * byte tells a file that is too large for any image */
     static uint8_t buf[2 * PB_FLASH_SIZE + 1];
-    size_t len = fread(buf, 1, sizeof buf, f);
-    int rerr = ferror(f);
-    fclose(f);
-    char m[700];
-    if (rerr) {
-        snprintf(m, sizeof m, "%s: read error", file);
-        return die(m);
-    }
-
+    size_t len;
+    char m[700], err[512];
     struct pb_image img;
-    char err[512];
-    int is_uf2 = image_is_uf2(buf, len);
-    if (len > (is_uf2 ? 2 * (size_t)flash_size : (size_t)flash_size)) {
-        snprintf(m, sizeof m, "%s: %s%zu bytes, more than %u KB of flash can hold (--flash-size)", file,
-                 len == sizeof buf ? "over " : "", len, (unsigned)(flash_size / 1024));
-        return die(m);
-    }
-    if ((is_uf2 ? image_from_uf2(buf, len, flash_size, &img, err, sizeof err)
-                : image_from_bin(buf, len, base, flash_size, &img, err, sizeof err)) != 0) {
+    if (image_read_file(file, buf, sizeof buf, &len, err, sizeof err) != 0 ||
+        image_load(buf, len, sizeof buf, file, base, flash_size, &img, err, sizeof err) != 0) {
         snprintf(m, sizeof m, "%s: %s", file, err);
         return die(m);
     }

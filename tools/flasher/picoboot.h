@@ -104,11 +104,15 @@ size_t pb_encode_read(uint8_t out[PB_CMD_LEN], uint32_t token, uint32_t addr, ui
 size_t pb_encode_reboot(uint8_t out[PB_CMD_LEN], uint32_t token, uint32_t pc, uint32_t sp, uint32_t delay_ms);
 
 /* An image to flash: `len` bytes at flash address `addr` (both multiples of
- * PB_PAGE once loaded; the loader pads with 0xFF). */
+ * PB_PAGE once loaded; the loader pads with 0xFF). `used` (may be NULL:
+ * every page) holds one byte per page, nonzero for a page the image gives;
+ * the others (a sparse UF2's gaps) are neither written nor erased unless
+ * they share a 4 KB sector with a page that is. */
 struct pb_image {
     uint32_t addr;
     uint32_t len;
     uint8_t *data;
+    uint8_t *used;
 };
 
 /* The whole sequence: open, reset the interface (a previous run may have

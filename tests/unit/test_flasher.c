@@ -24,12 +24,16 @@ struct fake {
     long calls;
     enum phase ph;
     uint32_t token, addr, len;
-    int last_erase;
     int exclusive, xip_exited, rebooted, protocol_error, closed;
     int resets, reset_before_cmd;   /* interface resets; 1 if the first came before any command */
     long cmds;
     uint32_t status_code;           /* what GET_COMMAND_STATUS reports after a failure */
-    unsigned erase_ack_timeout, other_timeout_max;
+    /* timeouts seen: largest of command blocks, of data phases, of the
+     * acknowledgements after a data phase; smallest of those without one */
+    unsigned cmd_timeout_max, data_timeout_max, data_ack_timeout_max, nodata_ack_timeout_min;
+    int had_data;
+    long nlog;                      /* every command, in order */
+    struct { uint8_t id; uint32_t addr; } log[4096];
     uint8_t flash[FAKE_FLASH];
 };
 
@@ -57,7 +61,9 @@ static int bad(struct fake *f)
 static int f_out(void *ctx, const uint8_t *d, size_t n, unsigned ms)
 {
     struct fake *f = ctx;
-    if (f->ph != ACK_OUT && ms > f->other_timeout_max) f->other_timeout_max = ms;
+    unsigned *max = f->ph == CMD ? &f->cmd_timeout_max : f->ph == DATA_OUT ? &f->data_timeout_max
+                  : &f->data_ack_timeout_max;
+    if (ms > *max) *max = ms;
     if (f->fail_at && ++f->calls >= f->fail_at) return -1;
     if (!f->fail_at) f->calls++;
     switch (f->ph) {
@@ -66,10 +72,15 @@ static int f_out(void *ctx, const uint8_t *d, size_t n, unsigned ms)
         f->cmds++;
         f->token = g32(d + 4);
         uint8_t id = d[8], sz = d[9];
-        f->last_erase = id == PB_FLASH_ERASE;
         uint32_t tl = g32(d + 12);
+        f->had_data = tl != 0;
         f->addr = g32(d + 16);
         f->len = g32(d + 20);
+        if (f->nlog < (long)(sizeof f->log / sizeof f->log[0])) {
+            f->log[f->nlog].id = id;
+            f->log[f->nlog].addr = f->addr;
+            f->nlog++;
+        }
         switch (id) {
         case PB_EXCLUSIVE_ACCESS:
             if (sz != 1 || tl) return bad(f);
@@ -123,8 +134,12 @@ static int f_out(void *ctx, const uint8_t *d, size_t n, unsigned ms)
 static int f_in(void *ctx, uint8_t *d, size_t n, unsigned ms)
 {
     struct fake *f = ctx;
-    if (f->ph == ACK_IN && f->last_erase) f->erase_ack_timeout = ms;
-    else if (ms > f->other_timeout_max) f->other_timeout_max = ms;
+    if (f->ph == ACK_IN && !f->had_data) {
+        if (!f->nodata_ack_timeout_min || ms < f->nodata_ack_timeout_min) f->nodata_ack_timeout_min = ms;
+    } else {
+        unsigned *max = f->ph == DATA_IN ? &f->data_timeout_max : &f->data_ack_timeout_max;
+        if (ms > *max) *max = ms;
+    }
     if (f->fail_at && ++f->calls >= f->fail_at) return -1;
     if (!f->fail_at) f->calls++;
     switch (f->ph) {
@@ -258,9 +273,10 @@ static void test_success(void)
     long total = f->calls;
     check(f->resets == 1 && f->reset_before_cmd, "flash_resets_the_interface_before_the_first_command",
           "%d resets, before: %d", f->resets, f->reset_before_cmd);
-    check(f->erase_ack_timeout == PB_ERASE_TIMEOUT_MS && f->other_timeout_max == PB_TIMEOUT_MS,
-          "flash_transfer_timeouts", "erase ack %u ms, others up to %u ms", f->erase_ack_timeout,
-          f->other_timeout_max);
+    check(f->cmd_timeout_max == 3000 && f->data_timeout_max == 10000 && f->data_ack_timeout_max == 3000 &&
+          f->nodata_ack_timeout_min == 10000, "flash_transfer_timeouts",
+          "command %u ms, data %u ms, ack after data %u ms, ack without data (erase) %u ms", f->cmd_timeout_max,
+          f->data_timeout_max, f->data_ack_timeout_max, f->nodata_ack_timeout_min);
     free(f);
 
     /* without the reboot, exclusive access is given back at the end */
@@ -402,6 +418,125 @@ static void test_uf2(void)
     if (rc == 0) image_free(&img);
     rc = image_from_bin(src.data, 300, PB_FLASH_BASE + PB_FLASH_LIMIT - 256, PB_FLASH_LIMIT, &img, err, sizeof err);
     check(rc == -1 && strstr(err, "does not fit"), "bin_past_flash_limit_rejected", "%s", err);
+    image_free(&src);
+}
+
+static int all_bytes(const uint8_t *p, size_t n, uint8_t v)
+{
+    for (size_t i = 0; i < n; i++)
+        if (p[i] != v) return 0;
+    return 1;
+}
+
+/* Page 0 (boot2) is written last, after everything else is written and
+ * verified: an interruption anywhere before leaves it erased (or, before
+ * the first erase, the old flash untouched). */
+static void test_page0_last(void)
+{
+    struct fake *f = fake_new();
+    struct pb_transport t = fake_transport(f);
+    struct pb_image img;
+    char err[512];
+    make_image(&img, 0x10000000u, 2 * 4096 + 768);
+    int rc = pb_flash(&t, &img, 1, err, sizeof err, NULL);
+    long w0 = -1, last_other_write = -1, last_other_read = -1, first_erase = -1, reads_of_0 = 0;
+    for (long i = 0; i < f->nlog; i++) {
+        uint8_t id = f->log[i].id;
+        uint32_t a = f->log[i].addr;
+        if (id == PB_FLASH_ERASE && first_erase < 0) first_erase = i;
+        if (id == PB_FLASH_ERASE && first_erase == i && a != 0x10000000u) first_erase = -2;
+        if (id == PB_WRITE && a == 0x10000000u) w0 = i;
+        else if (id == PB_WRITE) last_other_write = i;
+        else if (id == PB_READ && a == 0x10000000u) reads_of_0++;
+        else if (id == PB_READ) last_other_read = i;
+    }
+    int ordered = rc == 0 && first_erase >= 0 && w0 > last_other_write && w0 > last_other_read &&
+                  last_other_read > last_other_write && f->log[w0 + 1].id == PB_READ &&
+                  f->log[w0 + 1].addr == 0x10000000u && reads_of_0 == 1 && f->log[w0 + 2].id == PB_REBOOT &&
+                  memcmp(f->flash, img.data, img.len) == 0;
+    check(ordered, "flash_writes_page0_last_after_verify",
+          "rc %d: erase of sector 0 at %ld, page 0 written at command %ld, last other write %ld, last other "
+          "read %ld, page 0 read %ld times: %s", rc, first_erase, w0, last_other_write, last_other_read,
+          reads_of_0, err);
+    long total = f->calls;
+    free(f);
+
+    /* cut at every transfer: page 0 is the old one (nothing erased yet) or
+     * erased, unless the rest of the image is already in flash */
+    int all_ok = 1;
+    long bad_at = -1;
+    for (long k = 1; k <= total; k++) {
+        f = fake_new();
+        f->fail_at = k;
+        t = fake_transport(f);
+        rc = pb_flash(&t, &img, 1, err, sizeof err, NULL);
+        int old = all_bytes(f->flash, 256, 0x5A), erased = all_bytes(f->flash, 256, 0xFF);
+        int rest = memcmp(f->flash + 256, img.data + 256, img.len - 256) == 0;
+        if (rc != -1 || !(old || erased || rest)) {
+            all_ok = 0;
+            bad_at = k;
+            free(f);
+            break;
+        }
+        free(f);
+    }
+    check(all_ok, "flash_interrupted_leaves_page0_erased", "cut at transfer %ld of %ld", bad_at, total);
+
+    /* an image that does not start at page 0 keeps its order */
+    f = fake_new();
+    t = fake_transport(f);
+    image_free(&img);
+    make_image(&img, 0x10002000u, 1024);
+    rc = pb_flash(&t, &img, 1, err, sizeof err, NULL);
+    check(rc == 0 && f->log[3].id == PB_WRITE && f->log[3].addr == 0x10002000u &&
+          all_bytes(f->flash, 0x2000, 0x5A), "flash_image_past_page0_in_address_order", "rc %d: %s", rc, err);
+    free(f);
+    image_free(&img);
+}
+
+/* A sparse UF2: only the sectors holding its pages are erased. */
+static void test_sparse_erase(void)
+{
+    struct pb_image src, img;
+    char err[512];
+    size_t n;
+    make_image(&src, 0x10000000u, 4 * 256);
+    uint8_t *u = make_uf2(src.data, src.addr, src.len, UF2_FAMILY_RP2040, &n);
+    /* pages at 0, 0x100 (sector 0), 0x10000 (sector 16), 0x1FF00 (sector 31) */
+    put32(u + 512 * 2 + 12, 0x10010000u);
+    put32(u + 512 * 3 + 12, 0x1001FF00u);
+    int rc = image_from_uf2(u, n, PB_FLASH_LIMIT, &img, err, sizeof err);
+    check(rc == 0 && img.len == 0x20000 && img.used && img.used[0] && img.used[1] && !img.used[2] &&
+          img.used[0x100] && img.used[0x1FF], "uf2_sparse_marks_used_pages", "rc %d: %s", rc, err);
+    if (rc != 0) {
+        free(u);
+        image_free(&src);
+        return;
+    }
+    struct fake *f = fake_new();
+    struct pb_transport t = fake_transport(f);
+    rc = pb_flash(&t, &img, 1, err, sizeof err, NULL);
+    int erases = 0, writes = 0, erased_ok = 1;
+    for (long i = 0; i < f->nlog; i++) {
+        if (f->log[i].id == PB_FLASH_ERASE) {
+            erases++;
+            uint32_t a = f->log[i].addr;
+            if (a != 0x10000000u && a != 0x10010000u && a != 0x1001F000u) erased_ok = 0;
+        }
+        writes += f->log[i].id == PB_WRITE;
+    }
+    uint8_t *fl = f->flash;
+    int gaps_kept = all_bytes(fl + 0x1000, 0x10000 - 0x1000, 0x5A) && all_bytes(fl + 0x11000, 0x1F000 - 0x11000, 0x5A);
+    int pages = memcmp(fl, src.data, 512) == 0 && memcmp(fl + 0x10000, src.data + 512, 256) == 0 &&
+                memcmp(fl + 0x1FF00, src.data + 768, 256) == 0;
+    int sectors_erased = all_bytes(fl + 512, 4096 - 512, 0xFF) && all_bytes(fl + 0x10100, 0xF00, 0xFF) &&
+                         all_bytes(fl + 0x1F000, 0xF00, 0xFF) && all_bytes(fl + 0x20000, 0x1000, 0x5A);
+    check(rc == 0 && erases == 3 && erased_ok && writes == 4 && gaps_kept && pages && sectors_erased,
+          "sparse_uf2_erases_only_its_sectors", "rc %d, %d erases (ok %d), %d writes, gaps kept %d, pages %d, "
+          "sectors erased %d: %s", rc, erases, erased_ok, writes, gaps_kept, pages, sectors_erased, err);
+    free(f);
+    image_free(&img);
+    free(u);
     image_free(&src);
 }
 
@@ -557,6 +692,8 @@ int main(void)
     test_uf2();
     test_uf2_name();
     test_uf2_block_numbers();
+    test_page0_last();
+    test_sparse_erase();
     test_read_file();
     return check_exit();
 }

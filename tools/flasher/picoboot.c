@@ -165,7 +165,7 @@ int pb_flash(const struct pb_transport *t, const struct pb_image *img, int reboo
 {
     struct session s = { t, 1, err, err_len };
     uint8_t cmd[PB_CMD_LEN];
-    char detail[160] = "";
+    char detail[400] = "";
     err[0] = 0;
 
     if (img->len == 0 || img->addr % PB_PAGE || img->len % PB_PAGE || img->addr < PB_FLASH_BASE ||
@@ -186,6 +186,10 @@ int pb_flash(const struct pb_transport *t, const struct pb_image *img, int reboo
         snprintf(err, err_len, "permission denied opening the RP2040 boot ROM (USB %04x:%04x): install "
                  "tools/flasher/60-picoboot.rules in /etc/udev/rules.d (docs/firmware.md)", PB_VID,
                  PB_PID_RP2040_BOOT);
+        return -1;
+    case PB_OPEN_MANY:
+        snprintf(err, err_len, "several RP2040 boot ROMs attached (%s): choose one with --bus and --address, "
+                 "or --serial", detail);
         return -1;
     case PB_OPEN_WRONG:
         snprintf(err, err_len, "wrong device: %s", detail[0] ? detail : "no PICOBOOT interface");

@@ -71,6 +71,7 @@ enum pb_open {
     PB_OPEN_ACCESS = -2,      /* found, but no permission to open it */
     PB_OPEN_WRONG = -3,       /* an RP2040 is there, but not in the boot ROM (or no PICOBOOT interface) */
     PB_OPEN_ERROR = -4,       /* anything else (libusb failure) */
+    PB_OPEN_MANY = -5,        /* several boot ROMs match: the detail lists them */
 };
 
 struct pb_transport {

@@ -9,9 +9,15 @@ struct fake_libusb fake_libusb;
 
 void fake_libusb_reset(void) { memset(&fake_libusb, 0, sizeof fake_libusb); }
 
-struct libusb_context { int live; };
-struct libusb_device { int idx; };
-struct libusb_device_handle { int idx, claimed; };
+struct libusb_context {
+    int live;
+};
+struct libusb_device {
+    int idx;
+};
+struct libusb_device_handle {
+    int idx, claimed;
+};
 
 static struct libusb_context the_ctx;
 static struct libusb_device the_devs[FAKE_LIBUSB_DEVS];
@@ -103,7 +109,7 @@ int libusb_get_active_config_descriptor(libusb_device *dev, struct libusb_config
 void libusb_free_config_descriptor(struct libusb_config_descriptor *config)
 {
     fake_libusb.config_frees++;
-    free(config);   /* cfg is the first member */
+    free(config); /* cfg is the first member */
 }
 
 int libusb_open(libusb_device *dev, libusb_device_handle **h)
@@ -153,21 +159,30 @@ int libusb_release_interface(libusb_device_handle *h, int iface)
 int libusb_bulk_transfer(libusb_device_handle *h, unsigned char ep, unsigned char *data, int length,
                          int *actual, unsigned int timeout)
 {
-    (void)h; (void)ep; (void)data; (void)length; (void)timeout;
+    (void)h;
+    (void)ep;
+    (void)data;
+    (void)length;
+    (void)timeout;
     *actual = 0;
     return LIBUSB_ERROR_PIPE;
 }
 
 int libusb_clear_halt(libusb_device_handle *h, unsigned char ep)
 {
-    (void)h; (void)ep;
+    (void)h;
+    (void)ep;
     return 0;
 }
 
 int libusb_control_transfer(libusb_device_handle *h, uint8_t type, uint8_t req, uint16_t value, uint16_t index,
                             unsigned char *data, uint16_t len, unsigned int timeout)
 {
-    (void)h; (void)type; (void)value; (void)index; (void)timeout;
+    (void)h;
+    (void)type;
+    (void)value;
+    (void)index;
+    (void)timeout;
     if (req == 0x42 && len == 16) {
         memset(data, 0, 16);
         return 16;

@@ -10,15 +10,15 @@
 
 struct fake_usb_dev {
     unsigned vid, pid, bus, address;
-    const char *serial;    /* NULL: no serial number string */
-    int open_err;          /* libusb_open's result (0, or a LIBUSB_ERROR_*) */
-    int no_iface;          /* no vendor interface with two bulk endpoints */
+    const char *serial; /* NULL: no serial number string */
+    int open_err;       /* libusb_open's result (0, or a LIBUSB_ERROR_*) */
+    int no_iface;       /* no vendor interface with two bulk endpoints */
 };
 
 struct fake_libusb {
     struct fake_usb_dev devs[FAKE_LIBUSB_DEVS];
     int ndevs;
-    int init_err;                        /* libusb_init's result */
+    int init_err; /* libusb_init's result */
     int inits, exits, opens, closes, claims, releases;
     int lists, list_frees, configs, config_frees;
 };

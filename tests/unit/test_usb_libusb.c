@@ -64,11 +64,14 @@ int main(void)
     add(0x0003, 2, 9, "E66141040396512A");
     rc = open_with(&any, detail, sizeof detail, &t);
     check(rc == PB_OPEN_MANY && strcmp(detail, "bus 1 address 5 serial E6614103E7452D2F; bus 2 address 9 serial "
-          "E66141040396512A") == 0 && fake_libusb.claims == 0 && balanced(), "usb_several_boot_roms_listed",
+                                               "E66141040396512A") == 0 &&
+              fake_libusb.claims == 0 && balanced(),
+          "usb_several_boot_roms_listed",
           "rc %d: '%s'", rc, detail);
     rc = pb_flash(&t, &(struct pb_image){ 0x10000000u, 256, (uint8_t[256]){ 0 }, NULL }, 1, err, sizeof err, NULL);
     check(rc == -1 && !strchr(err, '\n') && strstr(err, "several RP2040 boot ROMs attached (bus 1 address 5") &&
-          strstr(err, "--serial") && balanced(), "usb_several_boot_roms_error_line", "rc %d: %s", rc, err);
+              strstr(err, "--serial") && balanced(),
+          "usb_several_boot_roms_error_line", "rc %d: %s", rc, err);
 
     /* chosen by serial number, by bus, by bus and address */
     struct usb_choice by_serial = { 0, 0, "E66141040396512A" };

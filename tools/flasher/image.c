@@ -100,7 +100,8 @@ int image_from_uf2(const uint8_t *buf, size_t len, uint32_t flash_size, struct p
         }
         if (seen_no[bno / 8] & (1u << (bno % 8))) {
             snprintf(err, err_len, "UF2 block %zu: block number %u of %u appears twice (two images in one "
-                     "file?)", b, (unsigned)bno, (unsigned)total);
+                                   "file?)",
+                     b, (unsigned)bno, (unsigned)total);
             free(seen);
             free(seen_no);
             return -1;
@@ -194,8 +195,10 @@ void (*image_read_hook)(const char *path);
 
 static const char *file_kind(mode_t m)
 {
-    return S_ISFIFO(m) ? "a FIFO" : S_ISCHR(m) ? "a character device" : S_ISBLK(m) ? "a block device"
-         : S_ISSOCK(m) ? "a socket" : "not a file";
+    return S_ISFIFO(m) ? "a FIFO" : S_ISCHR(m) ? "a character device"
+                                : S_ISBLK(m)   ? "a block device"
+                                : S_ISSOCK(m)  ? "a socket"
+                                               : "not a file";
 }
 
 static int same_file_state(const struct stat *a, const struct stat *b)

@@ -22,9 +22,16 @@ $(BUILD)/asan/tests/test_flasher: $(call obj,asan,none,$(FLASHER_CORE) tests/uni
 	@mkdir -p $(@D)
 	$(Q)$(CC) $(LDFLAGS_asan) $^ -o $@
 
+# The libusb transport against a fake libusb (tests/support/fake_libusb.c
+# defines the libusb functions; needs only the header).
+$(BUILD)/asan/none/tests/unit/test_usb_libusb.o $(BUILD)/asan/none/tests/support/fake_libusb.o: EXTRA_CFLAGS += -Itools/flasher -Itests/support $(USB_CFLAGS)
+$(BUILD)/asan/tests/test_usb_libusb: $(call obj,asan,none,tools/flasher/picoboot.c tools/flasher/usb_libusb.c tests/support/fake_libusb.c tests/unit/test_usb_libusb.c)
+	@mkdir -p $(@D)
+	$(Q)$(CC) $(LDFLAGS_asan) $^ -o $@
+
 PROGRAMS  += $(FLASHER_BIN)
-TEST_DEPS += $(FLASHER_BIN) $(BUILD)/asan/tests/test_flasher
-TESTS     += $(BUILD)/asan/tests/test_flasher tests/system/test_flasher_noboard.sh:$(BUILD)
+TEST_DEPS += $(FLASHER_BIN) $(BUILD)/asan/tests/test_flasher $(BUILD)/asan/tests/test_usb_libusb
+TESTS     += $(BUILD)/asan/tests/test_flasher $(BUILD)/asan/tests/test_usb_libusb tests/system/test_flasher_noboard.sh:$(BUILD)
 TEST_NEEDS_test_flasher_noboard := $(FLASHER_BIN)
 
 # The GPIO reset sequence against a fake libgpiod (tests/support/fake_gpiod.c defines

@@ -11,7 +11,7 @@
 #define GPIOD_API_MAJOR 1
 #endif
 
-struct fake_gpiod fake_gpiod = { "gpiochip0", 28, 0, -1, 0, 0, { { 0, 0, 0 } }, NULL };
+struct fake_gpiod fake_gpiod = { "gpiochip0", 28, 0, -1, 0, 0, { { 0, 0, 0, 0 } }, NULL };
 
 void fake_gpiod_reset(void)
 {
@@ -48,7 +48,7 @@ void gpiod_chip_close(struct gpiod_chip *c)
 }
 
 /* Requests line off as an output at value; -1 and errno when refused. */
-static int line_request(unsigned off, int value, int open_drain)
+static int line_request(unsigned off, int value, int open_drain, int bias_disabled)
 {
     if (off >= fake_gpiod.num_lines || off >= FAKE_GPIOD_LINES) {
         errno = EINVAL;
@@ -61,6 +61,7 @@ static int line_request(unsigned off, int value, int open_drain)
     }
     l->requested = 1;
     l->open_drain = open_drain;
+    l->bias_disabled = bias_disabled;
     l->value = value != 0;
     event(off, l->value, FAKE_GPIOD_REQUEST);
     return 0;
@@ -107,6 +108,7 @@ struct gpiod_line_settings {
     enum gpiod_line_direction dir;
     enum gpiod_line_drive drive;
     enum gpiod_line_value value;
+    enum gpiod_line_bias bias;
 };
 
 struct gpiod_line_settings *gpiod_line_settings_new(void)
@@ -125,6 +127,12 @@ int gpiod_line_settings_set_direction(struct gpiod_line_settings *s, enum gpiod_
 int gpiod_line_settings_set_drive(struct gpiod_line_settings *s, enum gpiod_line_drive d)
 {
     s->drive = d;
+    return 0;
+}
+
+int gpiod_line_settings_set_bias(struct gpiod_line_settings *s, enum gpiod_line_bias b)
+{
+    s->bias = b;
     return 0;
 }
 
@@ -190,7 +198,8 @@ struct gpiod_line_request *gpiod_chip_request_lines(struct gpiod_chip *chip,
     struct gpiod_line_request *r = malloc(sizeof *r);
     if (!r) return NULL;
     if (line_request(line_cfg->off, line_cfg->s.value == GPIOD_LINE_VALUE_ACTIVE,
-                     line_cfg->s.drive == GPIOD_LINE_DRIVE_OPEN_DRAIN)) {
+                     line_cfg->s.drive == GPIOD_LINE_DRIVE_OPEN_DRAIN,
+                     line_cfg->s.bias == GPIOD_LINE_BIAS_DISABLED)) {
         free(r);
         return NULL;
     }
@@ -253,7 +262,8 @@ int gpiod_line_request_output_flags(struct gpiod_line *l, const char *consumer, 
                                     int default_val)
 {
     (void)consumer;
-    return line_request(l->off, default_val, (flags & GPIOD_LINE_REQUEST_FLAG_OPEN_DRAIN) != 0);
+    return line_request(l->off, default_val, (flags & GPIOD_LINE_REQUEST_FLAG_OPEN_DRAIN) != 0,
+                        (flags & GPIOD_LINE_REQUEST_FLAG_BIAS_DISABLE) != 0);
 }
 
 int gpiod_line_request_output(struct gpiod_line *l, const char *consumer, int default_val)

@@ -16,6 +16,7 @@ enum fake_gpiod_ev { FAKE_GPIOD_REQUEST, FAKE_GPIOD_SET, FAKE_GPIOD_RELEASE };
 
 struct fake_gpiod_line {
     int requested, value, open_drain;
+    int bias_disabled;   /* requested with the pull-up/down resistors off */
 };
 
 struct fake_gpiod {

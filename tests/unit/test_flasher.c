@@ -2,8 +2,11 @@
 /* test_flasher.c — PICOBOOT command encoding, UF2 loading, and the whole
  * flashing sequence against a fake USB device, with a failure injected at
  * every step. */
+#define _POSIX_C_SOURCE 200809L
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
+#include <unistd.h>
 #include "check.h"
 #include "image.h"
 #include "picoboot.h"
@@ -21,12 +24,16 @@ struct fake {
     long calls;
     enum phase ph;
     uint32_t token, addr, len;
-    int last_erase;
     int exclusive, xip_exited, rebooted, protocol_error, closed;
     int resets, reset_before_cmd;   /* interface resets; 1 if the first came before any command */
     long cmds;
     uint32_t status_code;           /* what GET_COMMAND_STATUS reports after a failure */
-    unsigned erase_ack_timeout, other_timeout_max;
+    /* timeouts seen: largest of command blocks, of data phases, of the
+     * acknowledgements after a data phase; smallest of those without one */
+    unsigned cmd_timeout_max, data_timeout_max, data_ack_timeout_max, nodata_ack_timeout_min;
+    int had_data;
+    long nlog;                      /* every command, in order */
+    struct { uint8_t id; uint32_t addr; } log[4096];
     uint8_t flash[FAKE_FLASH];
 };
 
@@ -54,7 +61,9 @@ static int bad(struct fake *f)
 static int f_out(void *ctx, const uint8_t *d, size_t n, unsigned ms)
 {
     struct fake *f = ctx;
-    if (f->ph != ACK_OUT && ms > f->other_timeout_max) f->other_timeout_max = ms;
+    unsigned *max = f->ph == CMD ? &f->cmd_timeout_max : f->ph == DATA_OUT ? &f->data_timeout_max
+                  : &f->data_ack_timeout_max;
+    if (ms > *max) *max = ms;
     if (f->fail_at && ++f->calls >= f->fail_at) return -1;
     if (!f->fail_at) f->calls++;
     switch (f->ph) {
@@ -63,10 +72,15 @@ static int f_out(void *ctx, const uint8_t *d, size_t n, unsigned ms)
         f->cmds++;
         f->token = g32(d + 4);
         uint8_t id = d[8], sz = d[9];
-        f->last_erase = id == PB_FLASH_ERASE;
         uint32_t tl = g32(d + 12);
+        f->had_data = tl != 0;
         f->addr = g32(d + 16);
         f->len = g32(d + 20);
+        if (f->nlog < (long)(sizeof f->log / sizeof f->log[0])) {
+            f->log[f->nlog].id = id;
+            f->log[f->nlog].addr = f->addr;
+            f->nlog++;
+        }
         switch (id) {
         case PB_EXCLUSIVE_ACCESS:
             if (sz != 1 || tl) return bad(f);
@@ -120,8 +134,12 @@ static int f_out(void *ctx, const uint8_t *d, size_t n, unsigned ms)
 static int f_in(void *ctx, uint8_t *d, size_t n, unsigned ms)
 {
     struct fake *f = ctx;
-    if (f->ph == ACK_IN && f->last_erase) f->erase_ack_timeout = ms;
-    else if (ms > f->other_timeout_max) f->other_timeout_max = ms;
+    if (f->ph == ACK_IN && !f->had_data) {
+        if (!f->nodata_ack_timeout_min || ms < f->nodata_ack_timeout_min) f->nodata_ack_timeout_min = ms;
+    } else {
+        unsigned *max = f->ph == DATA_IN ? &f->data_timeout_max : &f->data_ack_timeout_max;
+        if (ms > *max) *max = ms;
+    }
     if (f->fail_at && ++f->calls >= f->fail_at) return -1;
     if (!f->fail_at) f->calls++;
     switch (f->ph) {
@@ -179,6 +197,7 @@ static void make_image(struct pb_image *img, uint32_t addr, uint32_t len)
     img->addr = addr;
     img->len = len;
     img->data = malloc(len);
+    img->used = NULL;
     uint32_t s = 12345;
     for (uint32_t i = 0; i < len; i++) {
         s = s * 1103515245u + 12345u;
@@ -254,9 +273,10 @@ static void test_success(void)
     long total = f->calls;
     check(f->resets == 1 && f->reset_before_cmd, "flash_resets_the_interface_before_the_first_command",
           "%d resets, before: %d", f->resets, f->reset_before_cmd);
-    check(f->erase_ack_timeout == PB_ERASE_TIMEOUT_MS && f->other_timeout_max == PB_TIMEOUT_MS,
-          "flash_transfer_timeouts", "erase ack %u ms, others up to %u ms", f->erase_ack_timeout,
-          f->other_timeout_max);
+    check(f->cmd_timeout_max == 3000 && f->data_timeout_max == 10000 && f->data_ack_timeout_max == 3000 &&
+          f->nodata_ack_timeout_min == 10000, "flash_transfer_timeouts",
+          "command %u ms, data %u ms, ack after data %u ms, ack without data (erase) %u ms", f->cmd_timeout_max,
+          f->data_timeout_max, f->data_ack_timeout_max, f->nodata_ack_timeout_min);
     free(f);
 
     /* without the reboot, exclusive access is given back at the end */
@@ -401,10 +421,279 @@ static void test_uf2(void)
     image_free(&src);
 }
 
+static int all_bytes(const uint8_t *p, size_t n, uint8_t v)
+{
+    for (size_t i = 0; i < n; i++)
+        if (p[i] != v) return 0;
+    return 1;
+}
+
+/* Page 0 (boot2) is written last, after everything else is written and
+ * verified: an interruption anywhere before leaves it erased (or, before
+ * the first erase, the old flash untouched). */
+static void test_page0_last(void)
+{
+    struct fake *f = fake_new();
+    struct pb_transport t = fake_transport(f);
+    struct pb_image img;
+    char err[512];
+    make_image(&img, 0x10000000u, 2 * 4096 + 768);
+    int rc = pb_flash(&t, &img, 1, err, sizeof err, NULL);
+    long w0 = -1, last_other_write = -1, last_other_read = -1, first_erase = -1, reads_of_0 = 0;
+    for (long i = 0; i < f->nlog; i++) {
+        uint8_t id = f->log[i].id;
+        uint32_t a = f->log[i].addr;
+        if (id == PB_FLASH_ERASE && first_erase < 0) first_erase = i;
+        if (id == PB_FLASH_ERASE && first_erase == i && a != 0x10000000u) first_erase = -2;
+        if (id == PB_WRITE && a == 0x10000000u) w0 = i;
+        else if (id == PB_WRITE) last_other_write = i;
+        else if (id == PB_READ && a == 0x10000000u) reads_of_0++;
+        else if (id == PB_READ) last_other_read = i;
+    }
+    int ordered = rc == 0 && first_erase >= 0 && w0 > last_other_write && w0 > last_other_read &&
+                  last_other_read > last_other_write && f->log[w0 + 1].id == PB_READ &&
+                  f->log[w0 + 1].addr == 0x10000000u && reads_of_0 == 1 && f->log[w0 + 2].id == PB_REBOOT &&
+                  memcmp(f->flash, img.data, img.len) == 0;
+    check(ordered, "flash_writes_page0_last_after_verify",
+          "rc %d: erase of sector 0 at %ld, page 0 written at command %ld, last other write %ld, last other "
+          "read %ld, page 0 read %ld times: %s", rc, first_erase, w0, last_other_write, last_other_read,
+          reads_of_0, err);
+    long total = f->calls;
+    free(f);
+
+    /* cut at every transfer: page 0 is the old one (nothing erased yet) or
+     * erased, unless the rest of the image is already in flash */
+    int all_ok = 1;
+    long bad_at = -1;
+    for (long k = 1; k <= total; k++) {
+        f = fake_new();
+        f->fail_at = k;
+        t = fake_transport(f);
+        rc = pb_flash(&t, &img, 1, err, sizeof err, NULL);
+        int old = all_bytes(f->flash, 256, 0x5A), erased = all_bytes(f->flash, 256, 0xFF);
+        int rest = memcmp(f->flash + 256, img.data + 256, img.len - 256) == 0;
+        if (rc != -1 || !(old || erased || rest)) {
+            all_ok = 0;
+            bad_at = k;
+            free(f);
+            break;
+        }
+        free(f);
+    }
+    check(all_ok, "flash_interrupted_leaves_page0_erased", "cut at transfer %ld of %ld", bad_at, total);
+
+    /* an image that does not start at page 0 keeps its order */
+    f = fake_new();
+    t = fake_transport(f);
+    image_free(&img);
+    make_image(&img, 0x10002000u, 1024);
+    rc = pb_flash(&t, &img, 1, err, sizeof err, NULL);
+    check(rc == 0 && f->log[3].id == PB_WRITE && f->log[3].addr == 0x10002000u &&
+          all_bytes(f->flash, 0x2000, 0x5A), "flash_image_past_page0_in_address_order", "rc %d: %s", rc, err);
+    free(f);
+    image_free(&img);
+}
+
+/* A sparse UF2: only the sectors holding its pages are erased. */
+static void test_sparse_erase(void)
+{
+    struct pb_image src, img;
+    char err[512];
+    size_t n;
+    make_image(&src, 0x10000000u, 4 * 256);
+    uint8_t *u = make_uf2(src.data, src.addr, src.len, UF2_FAMILY_RP2040, &n);
+    /* pages at 0, 0x100 (sector 0), 0x10000 (sector 16), 0x1FF00 (sector 31) */
+    put32(u + 512 * 2 + 12, 0x10010000u);
+    put32(u + 512 * 3 + 12, 0x1001FF00u);
+    int rc = image_from_uf2(u, n, PB_FLASH_LIMIT, &img, err, sizeof err);
+    check(rc == 0 && img.len == 0x20000 && img.used && img.used[0] && img.used[1] && !img.used[2] &&
+          img.used[0x100] && img.used[0x1FF], "uf2_sparse_marks_used_pages", "rc %d: %s", rc, err);
+    if (rc != 0) {
+        free(u);
+        image_free(&src);
+        return;
+    }
+    struct fake *f = fake_new();
+    struct pb_transport t = fake_transport(f);
+    rc = pb_flash(&t, &img, 1, err, sizeof err, NULL);
+    int erases = 0, writes = 0, erased_ok = 1;
+    for (long i = 0; i < f->nlog; i++) {
+        if (f->log[i].id == PB_FLASH_ERASE) {
+            erases++;
+            uint32_t a = f->log[i].addr;
+            if (a != 0x10000000u && a != 0x10010000u && a != 0x1001F000u) erased_ok = 0;
+        }
+        writes += f->log[i].id == PB_WRITE;
+    }
+    uint8_t *fl = f->flash;
+    int gaps_kept = all_bytes(fl + 0x1000, 0x10000 - 0x1000, 0x5A) && all_bytes(fl + 0x11000, 0x1F000 - 0x11000, 0x5A);
+    int pages = memcmp(fl, src.data, 512) == 0 && memcmp(fl + 0x10000, src.data + 512, 256) == 0 &&
+                memcmp(fl + 0x1FF00, src.data + 768, 256) == 0;
+    int sectors_erased = all_bytes(fl + 512, 4096 - 512, 0xFF) && all_bytes(fl + 0x10100, 0xF00, 0xFF) &&
+                         all_bytes(fl + 0x1F000, 0xF00, 0xFF) && all_bytes(fl + 0x20000, 0x1000, 0x5A);
+    check(rc == 0 && erases == 3 && erased_ok && writes == 4 && gaps_kept && pages && sectors_erased,
+          "sparse_uf2_erases_only_its_sectors", "rc %d, %d erases (ok %d), %d writes, gaps kept %d, pages %d, "
+          "sectors erased %d: %s", rc, erases, erased_ok, writes, gaps_kept, pages, sectors_erased, err);
+    free(f);
+    image_free(&img);
+    free(u);
+    image_free(&src);
+}
+
+/* A name ending in .uf2 must hold a UF2: never flashed as a raw binary. */
+static void test_uf2_name(void)
+{
+    struct pb_image src, img;
+    char err[256];
+    size_t n;
+    size_t cap = 2 * PB_FLASH_SIZE + 1;
+    check(image_name_is_uf2("a.uf2") && image_name_is_uf2("dir/X.UF2") && image_name_is_uf2(".Uf2") &&
+          !image_name_is_uf2("a.bin") && !image_name_is_uf2("uf2") && !image_name_is_uf2("a.uf2.bin"),
+          "uf2_name_any_case", "wrong");
+    make_image(&src, 0x10000000u, 4 * 256);
+    uint8_t *u = make_uf2(src.data, src.addr, src.len, UF2_FAMILY_RP2040, &n);
+
+    u[0] ^= 1;   /* the first magic word damaged */
+    int rc = image_load(u, n, cap, "fw.uf2", PB_FLASH_BASE, PB_FLASH_LIMIT, &img, err, sizeof err);
+    check(rc == -1 && one_line(err) && strcmp(err, "not a UF2 file: block 0 has bad magic") == 0,
+          "uf2_name_damaged_magic_refused", "rc %d: %s", rc, err);
+    if (rc == 0) image_free(&img);
+    /* the same bytes under another name are a flat binary, as before */
+    rc = image_load(u, n, cap, "fw.bin", PB_FLASH_BASE, PB_FLASH_LIMIT, &img, err, sizeof err);
+    check(rc == 0 && img.len == n && img.used == NULL, "bin_name_damaged_uf2_is_a_binary", "rc %d: %s", rc, err);
+    if (rc == 0) image_free(&img);
+    u[0] ^= 1;
+    rc = image_load(u, n, cap, "fw.bin", PB_FLASH_BASE, PB_FLASH_LIMIT, &img, err, sizeof err);
+    check(rc == 0 && img.len == src.len && memcmp(img.data, src.data, src.len) == 0, "bin_name_uf2_content_is_uf2",
+          "rc %d: %s", rc, err);
+    if (rc == 0) image_free(&img);
+    rc = image_load(u, n, cap, "FW.UF2", PB_FLASH_BASE, PB_FLASH_LIMIT, &img, err, sizeof err);
+    check(rc == 0 && img.len == src.len, "uf2_name_upper_case_valid_accepted", "rc %d: %s", rc, err);
+    if (rc == 0) image_free(&img);
+
+    static const char text[] = "hello, this is not an image\n";
+    rc = image_load((const uint8_t *)text, sizeof text - 1, cap, "t.uf2", PB_FLASH_BASE, PB_FLASH_LIMIT, &img,
+                    err, sizeof err);
+    check(rc == -1 && one_line(err) && strstr(err, "not a UF2 file"), "uf2_name_text_refused", "rc %d: %s", rc,
+          err);
+    if (rc == 0) image_free(&img);
+    uint8_t zero[512] = { 0 };
+    rc = image_load(zero, sizeof zero, cap, "z.Uf2", PB_FLASH_BASE, PB_FLASH_LIMIT, &img, err, sizeof err);
+    check(rc == -1 && strcmp(err, "not a UF2 file: block 0 has bad magic") == 0, "uf2_name_zero_block_refused",
+          "rc %d: %s", rc, err);
+    if (rc == 0) image_free(&img);
+    rc = image_load(zero, 3, cap, "short.uf2", PB_FLASH_BASE, PB_FLASH_LIMIT, &img, err, sizeof err);
+    check(rc == -1 && strstr(err, "not a UF2 file"), "uf2_name_short_file_refused", "rc %d: %s", rc, err);
+    if (rc == 0) image_free(&img);
+    free(u);
+    image_free(&src);
+}
+
+/* Block numbers: each once, so two images in one file are not one. */
+static void test_uf2_block_numbers(void)
+{
+    struct pb_image src, img;
+    char err[256];
+    size_t n;
+    make_image(&src, 0x10000000u, 4 * 256);
+    uint8_t *u = make_uf2(src.data, src.addr, src.len, UF2_FAMILY_RP2040, &n);
+    put32(u + 512 * 3 + 20, 0);   /* blocks 0 1 2 0, four pages, "4 blocks" */
+    int rc = image_from_uf2(u, n, PB_FLASH_LIMIT, &img, err, sizeof err);
+    check(rc == -1 && one_line(err) && strstr(err, "block number 0 of 4 appears twice") && strstr(err, "block 3"),
+          "uf2_duplicate_block_number_rejected", "rc %d: %s", rc, err);
+    if (rc == 0) image_free(&img);
+    free(u);
+
+    /* two whole images of 2 blocks each, at different addresses, one after the other */
+    uint8_t *a = make_uf2(src.data, src.addr, 512, UF2_FAMILY_RP2040, &n);
+    uint8_t *b = make_uf2(src.data, src.addr + 8192, 512, UF2_FAMILY_RP2040, &n);
+    uint8_t *ab = malloc(2 * n);
+    memcpy(ab, a, n);
+    memcpy(ab + n, b, n);
+    rc = image_from_uf2(ab, 2 * n, PB_FLASH_LIMIT, &img, err, sizeof err);
+    check(rc == -1 && strstr(err, "appears twice"), "uf2_two_images_concatenated_rejected", "rc %d: %s", rc, err);
+    if (rc == 0) image_free(&img);
+    free(a);
+    free(b);
+    free(ab);
+    image_free(&src);
+}
+
+/* ---- reading the file ---------------------------------------------------- */
+
+static char hook_path[256];
+static void grow_file(const char *path)
+{
+    FILE *f = fopen(path, "ab");
+    if (f) {
+        fputs("more", f);
+        fclose(f);
+    }
+    strncpy(hook_path, path, sizeof hook_path - 1);
+}
+
+static void test_read_file(void)
+{
+    char dir[] = "/tmp/test_flasher_XXXXXX", p[300], err[256];
+    static uint8_t buf[8192];
+    size_t len = 99;
+    if (!mkdtemp(dir)) {
+        check(0, "read_file_tmpdir", "mkdtemp failed");
+        return;
+    }
+    snprintf(p, sizeof p, "%s/ok.bin", dir);
+    FILE *f = fopen(p, "wb");
+    fputs("0123456789", f);
+    fclose(f);
+    int rc = image_read_file(p, buf, sizeof buf, &len, err, sizeof err);
+    check(rc == 0 && len == 10 && memcmp(buf, "0123456789", 10) == 0, "read_file_regular", "rc %d: %s", rc, err);
+
+    image_read_hook = grow_file;
+    rc = image_read_file(p, buf, sizeof buf, &len, err, sizeof err);
+    image_read_hook = NULL;
+    check(rc == -1 && one_line(err) && strstr(err, "changed while it was read") && hook_path[0],
+          "read_file_changed_while_read_refused", "rc %d: %s", rc, err);
+
+    snprintf(p, sizeof p, "%s/missing.uf2", dir);
+    rc = image_read_file(p, buf, sizeof buf, &len, err, sizeof err);
+    check(rc == -1 && strcmp(err, "cannot open: No such file or directory") == 0, "read_file_missing_says_why",
+          "rc %d: %s", rc, err);
+
+    rc = image_read_file(dir, buf, sizeof buf, &len, err, sizeof err);
+    check(rc == -1 && one_line(err) && strstr(err, "Is a directory"), "read_file_directory_refused", "rc %d: %s",
+          rc, err);
+
+    snprintf(p, sizeof p, "%s/empty.uf2", dir);
+    fclose(fopen(p, "wb"));
+    rc = image_read_file(p, buf, sizeof buf, &len, err, sizeof err);
+    check(rc == -1 && strstr(err, "empty file (0 bytes)"), "read_file_empty_refused", "rc %d: %s", rc, err);
+    unlink(p);
+
+    /* a FIFO with no writer: refused at once, never a hang */
+    snprintf(p, sizeof p, "%s/fifo.uf2", dir);
+    if (mkfifo(p, 0600) == 0) {
+        rc = image_read_file(p, buf, sizeof buf, &len, err, sizeof err);
+        check(rc == -1 && strcmp(err, "not a regular file (a FIFO)") == 0, "read_file_fifo_refused", "rc %d: %s",
+              rc, err);
+        unlink(p);
+    }
+    rc = image_read_file("/dev/null", buf, sizeof buf, &len, err, sizeof err);
+    check(rc == -1 && strstr(err, "a character device"), "read_file_device_refused", "rc %d: %s", rc, err);
+
+    snprintf(p, sizeof p, "%s/ok.bin", dir);
+    unlink(p);
+    rmdir(dir);
+}
+
 int main(void)
 {
     test_encoding();
     test_success();
     test_uf2();
+    test_uf2_name();
+    test_uf2_block_numbers();
+    test_page0_last();
+    test_sparse_erase();
+    test_read_file();
     return check_exit();
 }

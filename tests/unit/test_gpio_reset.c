@@ -3,7 +3,7 @@
  * gpio_reset.c) against a fake libgpiod (tests/support/fake_gpiod.c, in the API
  * gpio_reset.c is compiled for: 1.x, or 2.x with GPIOD_API_MAJOR=2) that
  * records each line change with its time, so the order, the levels, the
- * open-drain requests, the hold times and the error paths are checked
+ * open-drain requests with bias disabled, the hold times and the error paths are checked
  * without a Raspberry Pi. */
 #define _POSIX_C_SOURCE 200809L
 #include <errno.h>
@@ -71,6 +71,8 @@ int main(void)
     }
     check(L[23].open_drain && L[24].open_drain, "gpio_reset_lines_open_drain", "open drain %d %d",
           L[23].open_drain, L[24].open_drain);
+    check(L[23].bias_disabled && L[24].bias_disabled, "gpio_reset_lines_bias_disabled", "bias disabled %d %d",
+          L[23].bias_disabled, L[24].bias_disabled);
     check(!L[23].requested && !L[24].requested && fake_gpiod.chips_closed == 1 &&
           fake_gpiod.chips_open == 1, "gpio_reset_releases_lines_and_chip",
           "requested %d %d, opened %d, closed %d", L[23].requested, L[24].requested,

@@ -41,7 +41,8 @@ static struct gpiod_chip *open_lookup(const char *descr)
     return gpiod_chip_open(path);
 }
 
-/* One open-drain output line as its own request, at level. */
+/* One open-drain output line as its own request, at level, with the
+ * SoC's pull resistors off (see gpio_reset.h). */
 static struct gpiod_line_request *take(struct gpiod_chip *chip, const struct gpio_reset_cfg *cfg,
                                        unsigned pin, const char *what, int level, char *err, size_t errlen)
 {
@@ -60,6 +61,7 @@ static struct gpiod_line_request *take(struct gpiod_chip *chip, const struct gpi
     errno = 0;
     if (ls && lc && rc && gpiod_line_settings_set_direction(ls, GPIOD_LINE_DIRECTION_OUTPUT) == 0 &&
         gpiod_line_settings_set_drive(ls, GPIOD_LINE_DRIVE_OPEN_DRAIN) == 0 &&
+        gpiod_line_settings_set_bias(ls, GPIOD_LINE_BIAS_DISABLED) == 0 &&
         gpiod_line_settings_set_output_value(ls, level ? GPIOD_LINE_VALUE_ACTIVE
                                                        : GPIOD_LINE_VALUE_INACTIVE) == 0 &&
         gpiod_line_config_add_line_settings(lc, &pin, 1, ls) == 0) {
@@ -115,8 +117,8 @@ static struct gpiod_line *take(struct gpiod_chip *chip, const struct gpio_reset_
                  cfg->chip, gpiod_chip_num_lines(chip));
         return NULL;
     }
-    if (gpiod_line_request_output_flags(l, "cgfs-flasher", GPIOD_LINE_REQUEST_FLAG_OPEN_DRAIN,
-                                        level) != 0) {
+    if (gpiod_line_request_output_flags(l, "cgfs-flasher", GPIOD_LINE_REQUEST_FLAG_OPEN_DRAIN |
+                                        GPIOD_LINE_REQUEST_FLAG_BIAS_DISABLE, level) != 0) {
         snprintf(err, errlen, "gpio: %s line %u of %s: %s", what, pin, cfg->chip, strerror(errno));
         return NULL;
     }

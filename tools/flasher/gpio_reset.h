@@ -8,7 +8,10 @@
  *   Pi GND                     ↔ Pico GND
  * Both lines are driven open-drain: low pulls the Pico's line down, "high"
  * lets go (the Pico's own pull-ups hold RUN and QSPI SS high), so the
- * wiring never fights the button or the flash chip.
+ * wiring never fights the button or the flash chip. Both are requested
+ * with bias disabled: the Pi's own pull-downs (the default on GPIO23/24)
+ * would otherwise drag the released lines towards low against the Pico's
+ * pull-ups.
  *
  * Sequence: BOOTSEL low, RUN low GPIO_RESET_PULSE_MS, RUN released, BOOTSEL
  * held GPIO_BOOTSEL_HOLD_MS while the boot ROM samples it, released. */

@@ -3,16 +3,20 @@
  * BOOTSEL mode over USB (PICOBOOT), verifies it, then reboots the board.
  *
  * usage: flasher [--no-reboot] [--base ADDR] [--flash-size BYTES]
+ *                [--bus N] [--address N] [--serial S]
  *                [--gpio-reset [--gpio-chip CHIP] [--run-pin N] [--bootsel-pin N]]
- *                FILE.uf2|FILE.bin
- * A file is a UF2 when its content is (whatever its name), else a flat
- * binary placed at --base (default 0x10000000). --flash-size (default 2 MiB,
+ *                FILE.uf2|FILE.bin        (flasher --help: every option)
+ * A file named *.uf2 (any case) must be a valid UF2; any other name is a
+ * UF2 when its content is one, else a flat binary placed at --base
+ * (default 0x10000000). Only a regular file is read (image_read_file). --flash-size (default 2 MiB,
  * the Pico's) bounds where an image may go; everything about the image is
  * checked before the board is touched.
  * --gpio-reset first puts the Pico into its boot ROM through a Raspberry Pi's
  * GPIO lines (gpio_reset.h), then waits up to 5 s for the boot ROM's USB
- * device.
- * Exit status: 0 flashed and verified; 2 any error (one line on stderr). */
+ * device. --bus/--address/--serial choose among several boot ROMs attached
+ * (with more than one and no choice: an error listing them).
+ * Exit status: 0 flashed and verified (and --help); 2 any error (one line on
+ * stderr). */
 #define _POSIX_C_SOURCE 200809L
 #include <stdio.h>
 #include <stdlib.h>
@@ -36,8 +40,37 @@ static int die(const char *msg)
     return 2;
 }
 
-#define USAGE "usage: flasher [--no-reboot] [--base ADDR] [--flash-size BYTES] [--gpio-reset " \
-              "[--gpio-chip CHIP] [--run-pin N] [--bootsel-pin N]] FILE.uf2|FILE.bin"
+#define USAGE "usage: flasher [--no-reboot] [--base ADDR] [--flash-size BYTES] [--bus N] [--address N] " \
+              "[--serial S] [--gpio-reset [--gpio-chip CHIP] [--run-pin N] [--bootsel-pin N]] FILE.uf2|FILE.bin " \
+              "(--help: all options)"
+
+static const char help[] =
+    "usage: flasher [OPTIONS] FILE.uf2|FILE.bin\n"
+    "Writes an image to an RP2040 in BOOTSEL mode over USB (PICOBOOT), reads it back\n"
+    "and compares, then reboots the board into it.\n"
+    "\n"
+    "FILE: a name ending in .uf2 (any case) must be a valid UF2; any other name is a\n"
+    "UF2 when its content is one, else a flat binary placed at --base.\n"
+    "\n"
+    "Options (default in brackets):\n"
+    "  --no-reboot          stay in the boot ROM after verifying [reboot into the image]\n"
+    "  --base ADDR          flash address of a flat binary [0x10000000]\n"
+    "  --flash-size BYTES   flash an image may use, a multiple of 4096 up to 16777216\n"
+    "                       [2097152, the Pico's 2 MiB]\n"
+    "  --bus N              only the boot ROM on USB bus N [any]\n"
+    "  --address N          only the boot ROM at USB device address N [any]\n"
+    "  --serial S           only the boot ROM with USB serial number S [any]\n"
+    "                       (with several boot ROMs attached, one must be chosen)\n"
+    "  --gpio-reset         first reset the Pico into its boot ROM through a Raspberry\n"
+    "                       Pi's GPIO lines, then wait up to 5 s for it on USB [off]\n"
+    "  --gpio-chip CHIP     gpiochip of those lines: name, number or path [gpiochip0]\n"
+    "  --run-pin N          line wired to the Pico's RUN pin [23]\n"
+    "  --bootsel-pin N      line wired to the Pico's BOOTSEL (QSPI SS) [24]\n"
+    "  --help               this help\n"
+    "\n"
+    "Exit status: 0 written, verified (and rebooted unless --no-reboot); 2 any error\n"
+    "(bad option or image, no or several boards, USB failure, verify mismatch), with\n"
+    "one line on stderr. --help: 0.\n";
 
 /* After a GPIO reset the boot ROM needs a moment to enumerate on USB: the
  * open is retried while no device is found, for up to 5 s. */
@@ -83,14 +116,21 @@ static int wait_status(void *ctx, uint8_t out[16])
     return w->inner.status ? w->inner.status(w->inner.ctx, out) : -1;
 }
 
+/* A decimal number lo..hi. */
+static int num_arg(const char *s, unsigned long lo, unsigned long hi, unsigned *out)
+{
+    char *end;
+    if (*s < '0' || *s > '9') return -1;
+    unsigned long v = strtoul(s, &end, 10);
+    if (*end || v < lo || v > hi) return -1;
+    *out = (unsigned)v;
+    return 0;
+}
+
 /* A line offset 0..1023. */
 static int pin_arg(const char *s, unsigned *out)
 {
-    char *end;
-    unsigned long v = strtoul(s, &end, 10);
-    if (!*s || *end || v > 1023) return -1;
-    *out = (unsigned)v;
-    return 0;
+    return num_arg(s, 0, 1023, out);
 }
 
 int main(int argc, char **argv)
@@ -99,6 +139,13 @@ int main(int argc, char **argv)
     struct gpio_reset_cfg gcfg = GPIO_RESET_DEFAULTS;
     uint32_t base = PB_FLASH_BASE, flash_size = PB_FLASH_LIMIT;
     const char *file = NULL;
+    struct usb_choice choice = { 0, 0, NULL };
+    for (int i = 1; i < argc; i++) {
+        if (strcmp(argv[i], "--help") == 0 || strcmp(argv[i], "-h") == 0) {
+            fputs(help, stdout);
+            return 0;
+        }
+    }
     for (int i = 1; i < argc; i++) {
         if (strcmp(argv[i], "--no-reboot") == 0) {
             reboot = 0;
@@ -122,6 +169,13 @@ int main(int argc, char **argv)
             unsigned long v = strtoul(argv[++i], &end, 0);
             if (*end || v > 0xFFFFFFFFul) return die("--base needs a number");
             base = (uint32_t)v;
+        } else if (strcmp(argv[i], "--bus") == 0 && i + 1 < argc) {
+            if (num_arg(argv[++i], 1, 255, &choice.bus)) return die("--bus needs a bus number 1..255");
+        } else if (strcmp(argv[i], "--address") == 0 && i + 1 < argc) {
+            if (num_arg(argv[++i], 1, 127, &choice.address)) return die("--address needs a device address 1..127");
+        } else if (strcmp(argv[i], "--serial") == 0 && i + 1 < argc) {
+            choice.serial = argv[++i];
+            if (!*choice.serial) return die("--serial needs a serial number");
         } else if (argv[i][0] == '-' || file) {
             return die(USAGE);
         } else {
@@ -130,39 +184,19 @@ int main(int argc, char **argv)
     }
     if (!file) return die(USAGE);
 
-    FILE *f = fopen(file, "rb");
-    if (!f) {
-        char m[512];
-        snprintf(m, sizeof m, "%s: cannot open", file);
-        return die(m);
-    }
     /* a UF2 block carries 256 of its 512 bytes: twice the flash and one more
      * byte tells a file that is too large for any image */
     static uint8_t buf[2 * PB_FLASH_SIZE + 1];
-    size_t len = fread(buf, 1, sizeof buf, f);
-    int rerr = ferror(f);
-    fclose(f);
-    char m[700];
-    if (rerr) {
-        snprintf(m, sizeof m, "%s: read error", file);
-        return die(m);
-    }
-
+    size_t len;
+    char m[1300], err[1024];
     struct pb_image img;
-    char err[512];
-    int is_uf2 = image_is_uf2(buf, len);
-    if (len > (is_uf2 ? 2 * (size_t)flash_size : (size_t)flash_size)) {
-        snprintf(m, sizeof m, "%s: %s%zu bytes, more than %u KB of flash can hold (--flash-size)", file,
-                 len == sizeof buf ? "over " : "", len, (unsigned)(flash_size / 1024));
-        return die(m);
-    }
-    if ((is_uf2 ? image_from_uf2(buf, len, flash_size, &img, err, sizeof err)
-                : image_from_bin(buf, len, base, flash_size, &img, err, sizeof err)) != 0) {
+    if (image_read_file(file, buf, sizeof buf, &len, err, sizeof err) != 0 ||
+        image_load(buf, len, sizeof buf, file, base, flash_size, &img, err, sizeof err) != 0) {
         snprintf(m, sizeof m, "%s: %s", file, err);
         return die(m);
     }
     struct pb_transport t;
-    usb_libusb_transport(&t);
+    usb_libusb_transport(&t, &choice);
     static struct wait_open w;
     if (gpio) {
         if (gpio_reset_bootsel(&gcfg, err, sizeof err) != 0) {

@@ -107,10 +107,10 @@ static int run(struct session *s, const uint8_t cmd[PB_CMD_LEN], const char *wha
 {
     const struct pb_transport *t = s->t;
     uint8_t ack[1];
-    unsigned ack_timeout = cmd[8] == PB_FLASH_ERASE ? PB_ERASE_TIMEOUT_MS : PB_TIMEOUT_MS;
+    unsigned ack_timeout = len ? PB_TIMEOUT_MS : PB_DATA_TIMEOUT_MS;
     if (t->bulk_out(t->ctx, cmd, PB_CMD_LEN, PB_TIMEOUT_MS) != (int)PB_CMD_LEN) return fail(s, what, addr);
-    if (out && len && t->bulk_out(t->ctx, out, len, PB_TIMEOUT_MS) != (int)len) return fail(s, what, addr);
-    if (in && len && t->bulk_in(t->ctx, in, len, PB_TIMEOUT_MS) != (int)len) return fail(s, what, addr);
+    if (out && len && t->bulk_out(t->ctx, out, len, PB_DATA_TIMEOUT_MS) != (int)len) return fail(s, what, addr);
+    if (in && len && t->bulk_in(t->ctx, in, len, PB_DATA_TIMEOUT_MS) != (int)len) return fail(s, what, addr);
     /* Acknowledgement: a zero-length packet the other way (read into a
      * one-byte buffer: anything longer is an error, not an overflow) */
     int rc = in ? t->bulk_out(t->ctx, NULL, 0, ack_timeout) : t->bulk_in(t->ctx, ack, sizeof ack, ack_timeout);
@@ -119,13 +119,53 @@ static int run(struct session *s, const uint8_t cmd[PB_CMD_LEN], const char *wha
     return 0;
 }
 
+static int page_used(const struct pb_image *img, uint32_t page)
+{
+    return !img->used || img->used[page];
+}
+
+/* 1 when a page of the image lies in the sector at flash address a. */
+static int sector_used(const struct pb_image *img, uint32_t a)
+{
+    uint32_t lo = a < img->addr ? img->addr : a;
+    uint32_t hi = a + PB_SECTOR > img->addr + img->len ? img->addr + img->len : a + PB_SECTOR;
+    for (uint32_t pa = lo; pa < hi; pa += PB_PAGE)
+        if (page_used(img, (pa - img->addr) / PB_PAGE)) return 1;
+    return 0;
+}
+
+static int write_page(struct session *s, const struct pb_image *img, uint32_t page)
+{
+    uint8_t cmd[PB_CMD_LEN];
+    uint32_t off = page * PB_PAGE;
+    pb_encode_write(cmd, s->token, img->addr + off, PB_PAGE);
+    return run(s, cmd, "WRITE", img->addr + off, img->data + off, NULL, PB_PAGE);
+}
+
+/* Reads n <= PB_SECTOR bytes at flash address a and compares them with the
+ * image. */
+static int verify(struct session *s, const struct pb_image *img, uint32_t a, uint32_t n)
+{
+    static uint8_t back[PB_SECTOR];
+    uint8_t cmd[PB_CMD_LEN];
+    const uint8_t *want = img->data + (a - img->addr);
+    pb_encode_read(cmd, s->token, a, n);
+    if (run(s, cmd, "READ", a, NULL, back, n)) return -1;
+    for (uint32_t i = 0; i < n; i++)
+        if (back[i] != want[i]) {
+            snprintf(s->err, s->err_len, "verify failed at 0x%08x (wrote 0x%02x, read 0x%02x): not rebooted "
+                     "into a bad image; flash again", (unsigned)(a + i), want[i], back[i]);
+            return -1;
+        }
+    return 0;
+}
+
 int pb_flash(const struct pb_transport *t, const struct pb_image *img, int reboot,
              char *err, size_t err_len, void (*progress)(const char *stage, uint32_t done, uint32_t total))
 {
     struct session s = { t, 1, err, err_len };
     uint8_t cmd[PB_CMD_LEN];
-    static uint8_t back[PB_SECTOR];
-    char detail[160] = "";
+    char detail[400] = "";
     err[0] = 0;
 
     if (img->len == 0 || img->addr % PB_PAGE || img->len % PB_PAGE || img->addr < PB_FLASH_BASE ||
@@ -147,6 +187,10 @@ int pb_flash(const struct pb_transport *t, const struct pb_image *img, int reboo
                  "tools/flasher/60-picoboot.rules in /etc/udev/rules.d (docs/firmware.md)", PB_VID,
                  PB_PID_RP2040_BOOT);
         return -1;
+    case PB_OPEN_MANY:
+        snprintf(err, err_len, "several RP2040 boot ROMs attached (%s): choose one with --bus and --address, "
+                 "or --serial", detail);
+        return -1;
     case PB_OPEN_WRONG:
         snprintf(err, err_len, "wrong device: %s", detail[0] ? detail : "no PICOBOOT interface");
         return -1;
@@ -156,8 +200,11 @@ int pb_flash(const struct pb_transport *t, const struct pb_image *img, int reboo
     }
 
     int rc = 0;
+    uint32_t npages = img->len / PB_PAGE;
     uint32_t erase_lo = img->addr & ~(PB_SECTOR - 1);
     uint32_t erase_hi = (img->addr + img->len + PB_SECTOR - 1) & ~(PB_SECTOR - 1);
+    /* boot2's page is held back until the rest is written and verified */
+    int boot2 = img->addr == PB_FLASH_BASE && page_used(img, 0);
 
     if (t->reset && t->reset(t->ctx) != 0) {
         snprintf(err, err_len, "cannot reset the PICOBOOT interface of the RP2040 boot ROM: unplug the board "
@@ -170,31 +217,33 @@ int pb_flash(const struct pb_transport *t, const struct pb_image *img, int reboo
     pb_encode_exit_xip(cmd, s.token);
     if ((rc = run(&s, cmd, "EXIT_XIP", img->addr, NULL, NULL, 0))) goto out;
 
-    /* The erase covers whole sectors: the bytes around the image in its first
-     * and last sector are rewritten from what the image holds (0xFF pad). */
+    /* Only sectors that hold a page of the image are erased, in address
+     * order (so the sector of page 0 first): the rest of such a sector,
+     * inside or around the image, ends up erased (0xFF, as the image's pad). */
     for (uint32_t a = erase_lo; a < erase_hi; a += PB_SECTOR) {
+        if (!sector_used(img, a)) continue;
         if (progress) progress("erase", a - erase_lo, erase_hi - erase_lo);
         pb_encode_erase(cmd, s.token, a, PB_SECTOR);
         if ((rc = run(&s, cmd, "FLASH_ERASE", a, NULL, NULL, 0))) goto out;
     }
-    for (uint32_t off = 0; off < img->len; off += PB_PAGE) {
-        if (progress && off % PB_SECTOR == 0) progress("write", off, img->len);
-        pb_encode_write(cmd, s.token, img->addr + off, PB_PAGE);
-        if ((rc = run(&s, cmd, "WRITE", img->addr + off, img->data + off, NULL, PB_PAGE))) goto out;
+    for (uint32_t p = boot2 ? 1 : 0; p < npages; p++) {
+        if (!page_used(img, p)) continue;
+        if (progress && p % (PB_SECTOR / PB_PAGE) == 0) progress("write", p * PB_PAGE, img->len);
+        if ((rc = write_page(&s, img, p))) goto out;
     }
-    for (uint32_t off = 0; off < img->len; off += PB_SECTOR) {
-        uint32_t n = img->len - off < PB_SECTOR ? img->len - off : PB_SECTOR;
-        if (progress) progress("verify", off, img->len);
-        pb_encode_read(cmd, s.token, img->addr + off, n);
-        if ((rc = run(&s, cmd, "READ", img->addr + off, NULL, back, n))) goto out;
-        for (uint32_t i = 0; i < n; i++)
-            if (back[i] != img->data[off + i]) {
-                snprintf(err, err_len, "verify failed at 0x%08x (wrote 0x%02x, read 0x%02x): not rebooted "
-                         "into a bad image; flash again", (unsigned)(img->addr + off + i),
-                         img->data[off + i], back[i]);
-                rc = -1;
-                goto out;
-            }
+    /* Read back what was erased or written: each erased sector's part of
+     * the image (unused pages there read 0xFF), page 0 aside. */
+    for (uint32_t a = erase_lo; a < erase_hi; a += PB_SECTOR) {
+        if (!sector_used(img, a)) continue;
+        uint32_t lo = a < img->addr ? img->addr : a;
+        uint32_t hi = a + PB_SECTOR > img->addr + img->len ? img->addr + img->len : a + PB_SECTOR;
+        if (boot2 && lo == PB_FLASH_BASE) lo += PB_PAGE;
+        if (progress) progress("verify", lo - img->addr, img->len);
+        if (lo < hi && (rc = verify(&s, img, lo, hi - lo))) goto out;
+    }
+    if (boot2) {
+        if ((rc = write_page(&s, img, 0))) goto out;
+        if ((rc = verify(&s, img, PB_FLASH_BASE, PB_PAGE))) goto out;
     }
     if (reboot) {
         /* pc = 0: a normal boot from flash after delay_ms. */

@@ -58,11 +58,11 @@ enum pb_status {
 };
 const char *pb_status_name(uint32_t code);
 
-/* Transfer timeouts: every transfer 3 s (as picotool), the acknowledgement
- * of an erase 10 s (a 4 KB sector erase takes up to 400 ms, longer on worn
- * parts). */
+/* Transfer timeouts, as picotool's: a command block 3 s; a data phase 10 s;
+ * the acknowledgement 3 s after a data phase, 10 s after a command without
+ * one (an erase: a 4 KB sector takes up to 400 ms, longer on worn parts). */
 #define PB_TIMEOUT_MS       3000u
-#define PB_ERASE_TIMEOUT_MS 10000u
+#define PB_DATA_TIMEOUT_MS  10000u
 
 /* Result of pb_transport.open. */
 enum pb_open {
@@ -71,6 +71,7 @@ enum pb_open {
     PB_OPEN_ACCESS = -2,      /* found, but no permission to open it */
     PB_OPEN_WRONG = -3,       /* an RP2040 is there, but not in the boot ROM (or no PICOBOOT interface) */
     PB_OPEN_ERROR = -4,       /* anything else (libusb failure) */
+    PB_OPEN_MANY = -5,        /* several boot ROMs match: the detail lists them */
 };
 
 struct pb_transport {
@@ -104,20 +105,28 @@ size_t pb_encode_read(uint8_t out[PB_CMD_LEN], uint32_t token, uint32_t addr, ui
 size_t pb_encode_reboot(uint8_t out[PB_CMD_LEN], uint32_t token, uint32_t pc, uint32_t sp, uint32_t delay_ms);
 
 /* An image to flash: `len` bytes at flash address `addr` (both multiples of
- * PB_PAGE once loaded; the loader pads with 0xFF). */
+ * PB_PAGE once loaded; the loader pads with 0xFF). `used` (may be NULL:
+ * every page) holds one byte per page, nonzero for a page the image gives;
+ * the others (a sparse UF2's gaps) are neither written nor erased unless
+ * they share a 4 KB sector with a page that is. */
 struct pb_image {
     uint32_t addr;
     uint32_t len;
     uint8_t *data;
+    uint8_t *used;
 };
 
 /* The whole sequence: open, reset the interface (a previous run may have
- * left it stalled), exclusive access, exit XIP, erase the sectors the image
- * covers, write it in pages, read it back and compare, and only then reboot
+ * left it stalled), exclusive access, exit XIP, erase the 4 KB sectors that
+ * hold a page of the image (img->used: a sparse image's gaps stay as they
+ * were), write its pages, read them back and compare, and only then reboot
  * into it (nothing half-written runs); without reboot, exclusive access is
- * released instead. Returns 0, or -1 with a one-line message (no newline) in
- * err, which names the boot ROM's status code when it gives one.
- * `progress` may be NULL. */
+ * released instead. Page 0 of flash (0x10000000, boot2), when the image
+ * gives it, is erased first and written last, after the rest is written and
+ * verified: an interrupted run leaves no boot2 in front of a partial image,
+ * so the board stays in BOOTSEL. Returns 0, or -1 with a one-line message
+ * (no newline) in err, which names the boot ROM's status code when it gives
+ * one. `progress` may be NULL. */
 int pb_flash(const struct pb_transport *t, const struct pb_image *img, int reboot,
              char *err, size_t err_len, void (*progress)(const char *stage, uint32_t done, uint32_t total));
 

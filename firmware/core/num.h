@@ -161,6 +161,21 @@ struct num_divisor {
 struct num_divisor num_divisor_make(num d);
 num num_div_by(num a, const struct num_divisor *v);
 
+/* Division by a value fixed in advance, by its reciprocal alone (no
+ * remainder correction): num_mul_recip(a, &v) is within half an ulp plus
+ * 2^-31 of itself of a / v.d in fixed point (so almost always num_div's
+ * bits; one 32x32 product), num_div itself in the floating modes and for
+ * v.d == 0. */
+struct num_recip {
+    num d;
+#if NUM_MODE == NUM_MODE_FIXED
+    uint32_t m;           /* round(2^(30+L) / |d|) in [2^30, 2^31], L the bit length of |d| */
+    uint8_t sh;           /* 30 + L - F */
+#endif
+};
+struct num_recip num_recip_make(num d);
+num num_mul_recip(num a, const struct num_recip *v);
+
 /* ---- wide intermediates ---------------------------------------------- */
 wnum wnum_from_num(num a);
 num  wnum_to_num(wnum a);                 /* saturates */

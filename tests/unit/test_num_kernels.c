@@ -244,9 +244,39 @@ static void test_div_len(void)
     check(bad == 0 && n > 900000, "v3_div_len_bounded", "%ld of %ld beyond the bound", bad, n);
 }
 
+/* num_mul_recip against a 2^F / d in long double: within half an ulp plus
+ * 2^-31 of the quotient, and num_div's bits nearly always. */
+static void test_mul_recip(void)
+{
+    long bad = 0, same = 0, n = 0, small = 0;
+    for (long i = 0; i < 1000000; i++) {
+        num d = (num)rnd_bits(1 + (int)(i % 31)), a = (num)rnd_bits(1 + (int)(rng() % 31));
+        if (d == 0) d = 1;
+        if (rng() & 1) d = -d;
+        if (rng() & 1) a = -a;
+        struct num_recip r = num_recip_make(d);
+        long double q = (long double)a * (long double)NUM_ONE / (long double)d;
+        num got = num_mul_recip(a, &r);
+        if (fabsl(q) >= (long double)INT32_MAX) {
+            if (got != (q > 0 ? NUM_MAX : NUM_MIN)) bad++;
+            continue;
+        }
+        if ((double)fabsl((long double)got - q) > 0.5 + fabs((double)q) * ldexp(1.0, -31) + 1e-9) bad++;
+        if (fabsl(q) < (long double)(1 << 24)) {
+            same += got == num_div(a, d);
+            small++;
+        }
+        n++;
+    }
+    check(bad == 0 && n > 500000, "num_mul_recip_bounded", "%ld of %ld beyond the bound", bad, n);
+    /* below 2^24 ulps the reciprocal's error is under 2^-7 ulp */
+    check(same * 100 >= small * 99, "num_mul_recip_mostly_num_div", "%ld of %ld as num_div", same, small);
+}
+
 int main(void)
 {
     test_div_len();
+    test_mul_recip();
     test_rsqrt_q30();
     test_sqrt_est();
     test_isqrt64();

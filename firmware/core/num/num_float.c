@@ -126,6 +126,13 @@ num num_div(num a, num b)
 num num_div_int(num a, int32_t k) { return num_div(a, (num)k); }
 struct num_divisor num_divisor_make(num d) { struct num_divisor v; v.d = d; return v; }
 num num_div_by(num a, const struct num_divisor *v) { return num_div(a, v->d); }
+struct num_recip num_recip_make(num d)
+{
+    struct num_recip v;
+    v.d = d;
+    return v;
+}
+num num_mul_recip(num a, const struct num_recip *v) { return num_div(a, v->d); }
 num num_recip(num a) { return num_div(1, a); }
 num num_sqrt(num a) { return a <= 0 ? 0 : F(sqrt)(a); }
 num num_rsqrt(num a) { return a <= 0 ? NUM_MAX : 1 / F(sqrt)(a); }

@@ -75,7 +75,7 @@ struct rt_obj_cache {
     struct rt_csphere cs; /* the sphere for the coarse tests (rt_num.h) */
     struct rt_ccam ccam;  /* ... for the camera's rays (rt_num.h) */
     struct rt_qsphere qs; /* the sphere for the robust test's quadratic (rt_num.h) */
-    struct num_divisor rdiv; /* radius, for the normals (P - C) / r */
+    struct num_recip rrcp;   /* radius, for the normals (P - C) / r */
     /* exact primary directions (x vh, y vh, d h) from the camera: CO x D
      * and -CO.D at 2F fraction bits are linear in x, so a row's part is
      * kept (row px_row; -1: none): -CO.D = px_b + -co.x (x vh), (CO x D).x

@@ -586,9 +586,11 @@ vec3 rt_hit_normal(const struct rt_state *rt, const struct rt_hit *hit, vec3 p)
         if (rt->book) {
             n = v3_scale(n, num_div(NUM_ONE, v3_len(n)));  /* N * (1/|N|), as the demos */
         } else {
-            /* divide by r: 1/r is too coarse in Q15.16 for r = 5000 */
-            const struct num_divisor *r = &rt->oc[hit->surf].rdiv;
-            n = v3_make(num_div_by(n.x, r), num_div_by(n.y, r), num_div_by(n.z, r));
+            /* divide by r: 1/r in the format is too coarse in Q15.16 for
+             * r = 5000; by its 31-bit reciprocal (num_mul_recip: within
+             * half an ulp plus 2^-31 of the quotient) */
+            const struct num_recip *r = &rt->oc[hit->surf].rrcp;
+            n = v3_make(num_mul_recip(n.x, r), num_mul_recip(n.y, r), num_mul_recip(n.z, r));
         }
     } else if (o->shape == RT_PLANE) {
         n = o->normal;

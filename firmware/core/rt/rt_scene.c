@@ -51,7 +51,7 @@ void rt_frame_constants(struct rt_state *rt)
         struct rt_cpt cam = rt_cpt_make(rt->cam_pos);
         oc->ccam = rt_ccam_make(&oc->cs, &cam);
         oc->qs = rt_qsphere_make(o->radius);
-        oc->rdiv = num_divisor_make(o->radius);
+        oc->rrcp = num_recip_make(o->radius);
         if (o->shape == RT_SPHERE) {
             oc->co_cam = v3_sub(rt->cam_pos, o->center);
             if (rt->book)

@@ -261,31 +261,6 @@ num num_div(num a, num b)
     return div_round_signed((uint64_t)uabs32(a) << NUM_FRAC, uabs32(b), (a < 0) != (b < 0));
 }
 
-struct num_recip num_recip_make(num d)
-{
-    struct num_recip v;
-    uint32_t ud = uabs32(d);
-    v.d = d;
-    v.m = 0;
-    v.sh = 0;
-    if (ud == 0) return v;
-    int l = 32 - num_clz32(ud);
-    /* 2^(30+L) / ud in (2^30, 2^31] (2^30 only for a power of two), rounded */
-    v.m = num_udiv64_32(((uint64_t)1 << (30 + l)) + ud / 2, ud, 0);
-    v.sh = (uint8_t)(30 + l - NUM_FRAC);
-    return v;
-}
-
-num num_mul_recip(num a, const struct num_recip *v)
-{
-    if (v->m == 0) return num_div(a, v->d);
-    /* a 2^F / |d| = a m / 2^(30 + L - F), m's relative error <= 2^-31;
-     * |a| m < 2^62, the shift in [11, 53] */
-    uint64_t p = num_umul32(uabs32(a), v->m);
-    uint64_t q = ((p >> (v->sh - 1)) + 1) >> 1;
-    return sat_signed(q, (a < 0) != (v->d < 0));
-}
-
 struct num_divisor num_divisor_make(num d)
 {
     struct num_divisor v;

@@ -1,7 +1,7 @@
 /* SPDX-License-Identifier: MIT */
 /* num_fix.h — what the fixed-point build's definitions share (num.c,
- * num_sqrt.c): the saturation counter's hook and two small
- * helpers. Internal to the numeric layer. */
+ * num_sqrt.c, num_rt.c): the saturation counter's hook and small helpers.
+ * Internal to the numeric layer. */
 #ifndef NUM_FIX_H
 #define NUM_FIX_H
 
@@ -21,5 +21,27 @@ static inline num sat_signed(uint64_t q, int neg)
 }
 
 static inline uint32_t uabs32(int32_t a) { return a < 0 ? 0u - (uint32_t)a : (uint32_t)a; }
+
+/* Pre-scale: components shifted so the largest magnitude lies in
+ * [2^29, 2^30); the sum of squares is then exact and < 3 * 2^60.
+ * Returns the left shift (-1 when the largest is >= 2^30: one bit dropped). */
+static inline int num_prescale3(vec3 a, uint32_t u[3])
+{
+    u[0] = uabs32(a.x);
+    u[1] = uabs32(a.y);
+    u[2] = uabs32(a.z);
+    uint32_t mx = u[0] > u[1] ? u[0] : u[1];
+    if (u[2] > mx) mx = u[2];
+    if (mx == 0) return 0;
+    int sh = num_clz32(mx) - 2;
+    if (sh < 0) sh = -1;
+    for (int i = 0; i < 3; i++) u[i] = sh >= 0 ? u[i] << sh : u[i] >> 1;
+    return sh;
+}
+
+static inline uint64_t num_sumsq3(const uint32_t u[3])
+{
+    return num_umul32(u[0], u[0]) + num_umul32(u[1], u[1]) + num_umul32(u[2], u[2]);
+}
 
 #endif

@@ -214,32 +214,10 @@ wnum wnum_sqrt(wnum a)
 
 /* ---- vector length and normalisation (mode-dependent accuracy) ------- */
 
-/* Pre-scale: components shifted so the largest magnitude lies in
- * [2^29, 2^30); the sum of squares is then exact and < 3 * 2^60.
- * Returns the left shift (-1 when the largest is >= 2^30: one bit dropped). */
-static int prescale(vec3 a, uint32_t u[3])
-{
-    u[0] = uabs32(a.x);
-    u[1] = uabs32(a.y);
-    u[2] = uabs32(a.z);
-    uint32_t mx = u[0] > u[1] ? u[0] : u[1];
-    if (u[2] > mx) mx = u[2];
-    if (mx == 0) return 0;
-    int sh = num_clz32(mx) - 2;
-    if (sh < 0) sh = -1;
-    for (int i = 0; i < 3; i++) u[i] = sh >= 0 ? u[i] << sh : u[i] >> 1;
-    return sh;
-}
-
-static uint64_t sumsq(const uint32_t u[3])
-{
-    return num_umul32(u[0], u[0]) + num_umul32(u[1], u[1]) + num_umul32(u[2], u[2]);
-}
-
 num v3_len(vec3 a)
 {
     uint32_t u[3];
-    int sh = prescale(a, u);
+    int sh = num_prescale3(a, u);
     if (sh < 0) {
         /* Largest >= 2^30: the unscaled squares (each <= 2^62) still sum
          * below 3 * 2^62 < 2^64, so use them directly. */
@@ -247,7 +225,7 @@ num v3_len(vec3 a)
         u[1] = uabs32(a.y);
         u[2] = uabs32(a.z);
     }
-    uint64_t rm, s = sumsq(u);
+    uint64_t rm, s = num_sumsq3(u);
     if (s == 0) return 0;
     int k;
     uint32_t e = num_sqrt_est(s, &k, 0);         /* sqrt(s) 2^k within 2 */
@@ -269,35 +247,12 @@ num v3_len(vec3 a)
     return (num)l;
 }
 
-num v3_div_len(num x, vec3 v)
-{
-    uint32_t u[3];
-    int sh = prescale(v, u);
-    if (u[0] == 0 && u[1] == 0 && u[2] == 0) return num_div(x, NUM_ZERO);
-    if (x == 0) return 0;
-    uint64_t s = sumsq(u);                       /* in [2^58, 3 * 2^60) */
-    /* t = s 4^z in [2^62, 2^64); y = num_rsqrt_q30(t / 2^32) ~ 2^46 / sqrt(t / 2^32)
-     * (2^-17.4), one more Newton step as num_rsqrt takes it (2^-27 with the
-     * truncations). 1 / sqrt(s) = y 2^(z - 62), so x / |v| in raw units is
-     * x 2^(F + sh) / sqrt(s) = x y 2^(F + sh + z - 62); the shift is >= 11. */
-    int z = num_clz64(s) >> 1;
-    uint32_t xh = (uint32_t)((s << (2 * z)) >> 32);
-    uint32_t y = num_rsqrt_q30(xh);
-    uint32_t w = num_mulhi32(xh, num_mulhi32(y, y));
-    if (w <= (1u << 28)) y += num_mulhi32(y, ((1u << 28) - w) << 3);
-    else y -= num_mulhi32(y, (w - (1u << 28)) << 3);
-    int r = 62 - NUM_FRAC - sh - z;              /* in [11, 54] */
-    uint64_t p = num_umul32(uabs32(x), y);
-    uint64_t q = ((p >> (r - 1)) + 1) >> 1;
-    return sat_signed(q, x < 0);
-}
-
 vec3 v3_normalize(vec3 a)
 {
     uint32_t u[3];
     if (a.x == 0 && a.y == 0 && a.z == 0) return a;
-    prescale(a, u);
-    uint64_t s = sumsq(u);                       /* in [2^58, 3 * 2^60) */
+    num_prescale3(a, u);
+    uint64_t s = num_sumsq3(u);                       /* in [2^58, 3 * 2^60) */
     int k;
     uint32_t y, e = num_sqrt_est(s, &k, &y);     /* k = 1 or 2 */
     uint64_t rm;

@@ -1,0 +1,61 @@
+/* SPDX-License-Identifier: MIT */
+/* num_rt.c — the fixed-point build's helpers that only the ray tracer
+ * calls (see num.h): v3_div_len and the reciprocal divisor num_recip. A
+ * file of their own so that an image running the rasterizer's numeric
+ * layer from SRAM (RP2040_RAM_TEXT=raster, which takes num.o, num_sqrt.o
+ * and vec.o) leaves them in flash. */
+#include "num.h"
+
+#if NUM_MODE == NUM_MODE_FIXED
+
+#include "num_fix.h"
+
+struct num_recip num_recip_make(num d)
+{
+    struct num_recip v;
+    uint32_t ud = uabs32(d);
+    v.d = d;
+    v.m = 0;
+    v.sh = 0;
+    if (ud == 0) return v;
+    int l = 32 - num_clz32(ud);
+    /* 2^(30+L) / ud in (2^30, 2^31] (2^30 only for a power of two), rounded */
+    v.m = num_udiv64_32(((uint64_t)1 << (30 + l)) + ud / 2, ud, 0);
+    v.sh = (uint8_t)(30 + l - NUM_FRAC);
+    return v;
+}
+
+num num_mul_recip(num a, const struct num_recip *v)
+{
+    if (v->m == 0) return num_div(a, v->d);
+    /* a 2^F / |d| = a m / 2^(30 + L - F), m's relative error <= 2^-31;
+     * |a| m < 2^62, the shift in [11, 53] */
+    uint64_t p = num_umul32(uabs32(a), v->m);
+    uint64_t q = ((p >> (v->sh - 1)) + 1) >> 1;
+    return sat_signed(q, (a < 0) != (v->d < 0));
+}
+
+num v3_div_len(num x, vec3 v)
+{
+    uint32_t u[3];
+    int sh = num_prescale3(v, u);
+    if (u[0] == 0 && u[1] == 0 && u[2] == 0) return num_div(x, NUM_ZERO);
+    if (x == 0) return 0;
+    uint64_t s = num_sumsq3(u);                       /* in [2^58, 3 * 2^60) */
+    /* t = s 4^z in [2^62, 2^64); y = num_rsqrt_q30(t / 2^32) ~ 2^46 / sqrt(t / 2^32)
+     * (2^-17.4), one more Newton step as num_rsqrt takes it (2^-27 with the
+     * truncations). 1 / sqrt(s) = y 2^(z - 62), so x / |v| in raw units is
+     * x 2^(F + sh) / sqrt(s) = x y 2^(F + sh + z - 62); the shift is >= 11. */
+    int z = num_clz64(s) >> 1;
+    uint32_t xh = (uint32_t)((s << (2 * z)) >> 32);
+    uint32_t y = num_rsqrt_q30(xh);
+    uint32_t w = num_mulhi32(xh, num_mulhi32(y, y));
+    if (w <= (1u << 28)) y += num_mulhi32(y, ((1u << 28) - w) << 3);
+    else y -= num_mulhi32(y, (w - (1u << 28)) << 3);
+    int r = 62 - NUM_FRAC - sh - z;              /* in [11, 54] */
+    uint64_t p = num_umul32(uabs32(x), y);
+    uint64_t q = ((p >> (r - 1)) + 1) >> 1;
+    return sat_signed(q, x < 0);
+}
+
+#endif

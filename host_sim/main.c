@@ -23,6 +23,7 @@
 #include "host_sim/panel_out.h"
 #include "host_sim/window.h"
 #include "firmware/app/font5x7.h"
+#include "tools/scene/suggest.h"
 
 /* Rows a strip has: what a small MCU can hold (16 rows x 320 x 2 bytes = 10 KiB). */
 #define STRIP_ROWS_DEFAULT 16
@@ -210,20 +211,37 @@ static int set_option(struct opts *o, const char *name, const char *val)
     return EXIT_OK;
 }
 
+/* Every option's name, for "did you mean" (those with an argument first). */
+static const char *const option_names[] = {
+    "--scene", "--panel", "--size", "--numeric", "--out", "--out-raw", "--out-rgb888",
+    "--frames", "--backend", "--compare", "--strip-rows", "--inject-fault", "--num-frac",
+    "--loop-frames", "--flush", "--window-scale", "--spi-dev", "--spi-hz", "--spi-mode", "--gpio-chip", "--dc",
+    "--rst", "--bl", "--rotation", NULL,
+    "--stats", "--summary", "--progressive", "--loop", "--fps-overlay", "--window", "--help", NULL,
+};
+
+/* An unknown option: exit 2, with the nearest known name if it is near. */
+static int unknown_option(const char *a)
+{
+    const char *names[sizeof option_names / sizeof option_names[0]];
+    size_t k = 0;
+    for (size_t i = 0; i < sizeof option_names / sizeof option_names[0]; i++)
+        if (option_names[i]) names[k++] = option_names[i];
+    names[k] = NULL;
+    const char *near = !strncmp(a, "--", 2) ? suggest_nearest(a, names) : NULL;
+    if (near) return fail(EXIT_USAGE, "unknown option '%s' (did you mean '%s'? try --help)", a, near);
+    return fail(EXIT_USAGE, "unknown option '%s' (try --help)", a);
+}
+
 static int parse_args(int argc, char **argv, struct opts *o)
 {
-    static const char *const with_arg[] = {
-        "--scene", "--panel", "--size", "--numeric", "--out", "--out-raw", "--out-rgb888",
-        "--frames", "--backend", "--compare", "--strip-rows", "--inject-fault", "--num-frac",
-        "--loop-frames", "--flush", "--window-scale", "--spi-dev", "--spi-hz", "--spi-mode", "--gpio-chip", "--dc", "--rst", "--bl", "--rotation", NULL,
-    };
+    const char *const *with_arg = option_names;   /* up to its first NULL */
     for (int i = 1; i < argc; i++) {
         const char *a = argv[i], *val = NULL;
         char name[32];
         const char *eq = strchr(a, '=');
         size_t n = eq ? (size_t)(eq - a) : strlen(a);
-        if (strncmp(a, "--", 2) || n >= sizeof name)
-            return fail(EXIT_USAGE, "unknown option '%s' (try --help)", a);
+        if (strncmp(a, "--", 2) || n >= sizeof name) return unknown_option(a);
         memcpy(name, a, n);
         name[n] = 0;
         if (!strcmp(name, "--help") || !strcmp(name, "-h")) {
@@ -245,7 +263,7 @@ static int parse_args(int argc, char **argv, struct opts *o)
         }
         int known = 0;
         for (int k = 0; with_arg[k]; k++) known |= !strcmp(name, with_arg[k]);
-        if (!known) return fail(EXIT_USAGE, "unknown option '%s' (try --help)", name);
+        if (!known) return unknown_option(name);
         if (eq) val = eq + 1;
         else if (i + 1 < argc) val = argv[++i];
         if (!val || !*val) return fail(EXIT_USAGE, "option %s needs an argument", name);
@@ -707,9 +725,9 @@ static int open_panel(struct run_state *r)
      * has passed, so an error stays the only line), not refused */
     if (c->info.uses_lights && c->info.nlights == 0 && (c->info.kind == SCENE_RAYTRACE || c->info.ninstances))
         fprintf(stderr, "host_sim: warning: %s: no lights: every lit surface renders black%s\n", o->scene,
-                c->info.kind == SCENE_RAYTRACE ? " (add a light, or unlit = on)" : " (add a light, or shading = none)");
+                c->info.kind == SCENE_RAYTRACE ? " (add a light, or raytracer { lighting = off } for unlit colours)" : " (add a light, or rasterizer { shading = none })");
     if (!c->info.uses_lights && c->info.nlights && c->info.kind != SCENE_RAYTRACE)
-        fprintf(stderr, "host_sim: warning: %s: %u lights, but no shading mode uses them (shading = none)\n",
+        fprintf(stderr, "host_sim: warning: %s: %u lights, but no shading mode uses them (rasterizer { shading = none })\n",
                 o->scene, (unsigned)c->info.nlights);
     if (!o->out && !o->out_raw && !o->out_rgb888 && !o->stats && !o->summary && !o->compare && !o->loop)
         fprintf(stderr, "host_sim: warning: no output given (--out, --out-raw, --out-rgb888, --stats, --summary): "

@@ -42,6 +42,9 @@ TESTS     += tests/system/test_window.sh:$(HOST_SIM_BIN_asan)
 # input/output faults (FIFOs, devices, ulimit -f, signals) of host_sim and scenec
 TEST_DEPS += $(BUILD)/scenec
 TESTS     += tests/system/test_io_faults.sh:$(HOST_SIM_BIN_asan):$(BUILD)/scenec
+# mistakes that point at their fix: nearest names, byte order mark, missing
+# files, the no-lights and culling warnings, scenec --help
+TESTS     += tests/system/test_hints.sh:$(HOST_SIM_BIN_asan):$(BUILD)/scenec
 # the format promise on generated extreme scenes (tools/scene/gen_extreme.py),
 # under the sanitizers: a bounded count here, `make extremes` for more
 EXTREMES_COUNT ?= 300

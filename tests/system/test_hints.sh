@@ -1,0 +1,120 @@
+#!/bin/sh
+# SPDX-License-Identifier: MIT
+# Mistakes that point at their fix: a misspelt option of host_sim or scenec
+# or a misspelt scene key names the nearest valid one; a UTF-8 byte order
+# mark opens a scene file; a missing image file names the path looked at;
+# the no-lights warning names a key that exists; scenec --help; a model
+# whose every triangle faces away is said, not drawn in silence.
+#   tests/system/test_hints.sh HOST_SIM SCENEC
+set -u
+hs=${1:?usage: test_hints.sh HOST_SIM SCENEC}
+sc=${2:?usage: test_hints.sh HOST_SIM SCENEC}
+hs=$(cd "$(dirname "$hs")" && pwd)/$(basename "$hs")   # the test changes directory
+tmp=$(mktemp -d)
+trap 'rm -rf "$tmp"' EXIT
+
+pass() { echo "PASS $1"; }
+fail() { echo "FAIL $1: $2"; }
+
+# expect NAME STATUS PATTERN PROGRAM ARGS...: exit status STATUS and one line
+# on stderr, matching the fixed string PATTERN.
+expect() {
+  name=$1 want=$2 pat=$3
+  shift 3
+  "$@" >"$tmp/o" 2>"$tmp/e"
+  rc=$?
+  lines=$(wc -l <"$tmp/e" | tr -d ' ')
+  if [ "$rc" -ne "$want" ]; then fail "$name" "exit $rc, want $want: $(head -c 300 "$tmp/e")"
+  elif [ "$lines" -ne 1 ]; then fail "$name" "$lines lines on stderr: $(head -c 300 "$tmp/e")"
+  elif ! grep -qF -- "$pat" "$tmp/e"; then fail "$name" "no '$pat' in: $(cat "$tmp/e")"
+  else pass "$name"; fi
+}
+
+sphere='sphere { center = (0, 0, 3) radius = 1 color = (255, 0, 0) }'
+light='light { type = ambient intensity = 1 }'
+printf '%s\n%s\n' "$sphere" "$light" >"$tmp/ok.scene"
+
+# ---- options: the nearest name ---------------------------------------------
+expect host_sim_option_typo 2 "unknown option '--sceen' (did you mean '--scene'?" "$hs" --sceen "$tmp/ok.scene"
+expect host_sim_option_typo_eq 2 "did you mean '--numeric'?" "$hs" --scene "$tmp/ok.scene" --numerc=fixed
+expect host_sim_option_far 2 "unknown option '--frobnicate' (try --help)" "$hs" --scene "$tmp/ok.scene" --frobnicate
+expect scenec_option_typo 2 "unknown option '--sizes' (did you mean '--size'?" "$sc" --sizes 240x240 -o "$tmp/x.c" "$tmp/ok.scene"
+expect scenec_option_far 2 "unknown option '--frobnicate' (try --help)" "$sc" --frobnicate -o "$tmp/x.c" "$tmp/ok.scene"
+expect scenec_missing_argument 2 "option --size needs an argument" "$sc" -o "$tmp/x.c" "$tmp/ok.scene" --size
+expect scenec_bad_size 2 "bad size '10x0'" "$sc" --size 10x0 -o "$tmp/x.c" "$tmp/ok.scene"
+expect scenec_bad_fracs 2 "bad --fracs '20,,12'" "$sc" --fracs 20,,12 -o "$tmp/x.c" "$tmp/ok.scene"
+expect scenec_no_output 2 "-o OUT.c is required" "$sc" "$tmp/ok.scene"
+expect scenec_no_scene 2 "a scene file is required" "$sc" -o "$tmp/x.c"
+
+# ---- scenec --help: every option, the defaults, the exit statuses, exit 0 ----
+"$sc" --help >"$tmp/help" 2>"$tmp/e"
+rc=$?
+missing=""
+for o in -o --size --strip-rows --fracs --id --allow-wide --target-work --deps --help "default 240x240" \
+         "default 16" "exit status"; do
+  grep -qF -- "$o" "$tmp/help" || missing="$missing $o"
+done
+if [ "$rc" -eq 0 ] && [ -z "$missing" ] && [ ! -s "$tmp/e" ]; then pass scenec_help
+else fail scenec_help "exit $rc, missing:$missing"; fi
+"$sc" -h >"$tmp/help2" 2>&1
+cmp -s "$tmp/help" "$tmp/help2" && pass scenec_help_short || fail scenec_help_short "-h differs from --help"
+# and every option the help lists is one scenec takes (no "unknown option")
+for o in $(grep -o -- '--[a-z-]*' "$tmp/help" | sort -u); do
+  "$sc" "$o" >/dev/null 2>"$tmp/e"
+  if grep -q "unknown option" "$tmp/e"; then fail "scenec_help_option[$o]" "$(cat "$tmp/e")"; fi
+done
+
+# ---- scene keys and values: the nearest name ---------------------------------
+printf 'sphere { center = (0, 0, 3) raduis = 1 color = (255, 0, 0) }\n%s\n' "$light" >"$tmp/k.scene"
+expect scene_key_typo 2 "unknown key 'raduis' in sphere (did you mean 'radius'?)" "$hs" --scene "$tmp/k.scene" --panel none
+printf '%s\n%s\nraytracer { lightning = off }\n' "$sphere" "$light" >"$tmp/k2.scene"
+expect scene_option_typo 2 "unknown key 'lightning' in raytracer (did you mean 'lighting'?)" "$hs" --scene "$tmp/k2.scene"
+printf '%s\nlights { type = ambient intensity = 1 }\n' "$sphere" >"$tmp/k3.scene"
+expect scene_top_key_typo 2 "unknown key 'lights' (did you mean 'light'?)" "$hs" --scene "$tmp/k3.scene"
+printf '%s\n%s\nrenderer = raytrace\n' "$sphere" "$light" >"$tmp/k4.scene"
+expect scene_value_typo 2 "unknown value 'raytrace' (did you mean 'raytracer'?" "$hs" --scene "$tmp/k4.scene"
+printf '%s\n%s\nwobble = 1\n' "$sphere" "$light" >"$tmp/k5.scene"
+expect scene_key_far 2 "unknown key 'wobble'" "$hs" --scene "$tmp/k5.scene"
+if grep -q "did you mean" "$tmp/e"; then fail scene_key_far_no_guess "$(cat "$tmp/e")"; else pass scene_key_far_no_guess; fi
+expect scenec_scene_key_typo 2 "(did you mean 'radius'?)" "$sc" -o "$tmp/x.c" "$tmp/k.scene"
+
+# ---- a UTF-8 byte order mark before the scene ------------------------------
+printf '\357\273\277%s\n%s\n' "$sphere" "$light" >"$tmp/bom.scene"
+"$hs" --scene "$tmp/bom.scene" --panel none --size 16x16 --out "$tmp/bom.png" 2>"$tmp/e"
+rc=$?
+"$hs" --scene "$tmp/ok.scene" --panel none --size 16x16 --out "$tmp/nobom.png" 2>/dev/null
+if [ "$rc" -eq 0 ] && [ ! -s "$tmp/e" ] && cmp -s "$tmp/bom.png" "$tmp/nobom.png"; then pass scene_bom_accepted
+else fail scene_bom_accepted "exit $rc: $(cat "$tmp/e")"; fi
+# positions after it are counted as without it
+printf '\357\273\277sphere { center = (0, 0, 3) raduis = 1 color = (255, 0, 0) }\n' >"$tmp/bom2.scene"
+expect scene_bom_columns 2 "bom2.scene:1:29: error: unknown key 'raduis'" "$hs" --scene "$tmp/bom2.scene"
+# a BOM anywhere else is still a stray byte
+printf '%s\n\357\273\277%s\n' "$sphere" "$light" >"$tmp/bom3.scene"
+expect scene_bom_inside 2 "unexpected byte 0xef" "$hs" --scene "$tmp/bom3.scene"
+
+# ---- a missing image file: the path looked at ------------------------------
+mkdir -p "$tmp/sub"
+cat >"$tmp/sub/tex.scene" <<'S'
+texture { name = t file = "crate.png" }
+model { name = q vertices { (0, 0, 0) (1, 0, 0) (0, 1, 0) } color = (255, 0, 0)
+        triangles { (0, 1, 2, uv = ((0, 0), (1, 0), (0, 1))) } }
+instance { model = q texture = t transform { translation = (0, 0, 3) } }
+S
+expect missing_texture_path 2 "cannot open image file '$tmp/sub/crate.png': No such file or directory" \
+  "$hs" --scene "$tmp/sub/tex.scene"
+( cd "$tmp/sub" && "$hs" --scene tex.scene ) >/dev/null 2>"$tmp/e"
+real=$(cd "$tmp/sub" && pwd -P)
+if grep -qF "'$real/crate.png'" "$tmp/e" || grep -qF "'$tmp/sub/crate.png'" "$tmp/e"; then pass missing_texture_path_absolute
+else fail missing_texture_path_absolute "$(cat "$tmp/e")"; fi
+sed 's/texture { name = t file = "crate.png" }//; s/ texture = t//; s/q vertices/q file = "gone.obj" fit = 1 } #/; s/^        triangles.*//' \
+  "$tmp/sub/tex.scene" >"$tmp/sub/obj.scene"
+expect missing_model_path 2 "cannot open model file '$tmp/sub/gone.obj'" "$hs" --scene "$tmp/sub/obj.scene"
+
+# ---- no lights: the warning names a key that exists ------------------------
+printf '%s\n' "$sphere" >"$tmp/dark.scene"
+"$hs" --scene "$tmp/dark.scene" --panel none --size 8x8 --out "$tmp/d.png" 2>"$tmp/e"
+key=$(sed -n 's/.*or \(raytracer { [a-z_]* = [a-z]* }\).*/\1/p' "$tmp/e")
+printf '%s\n%s\n' "$sphere" "$key" >"$tmp/dark2.scene"
+if [ -n "$key" ] && "$hs" --scene "$tmp/dark2.scene" --panel none --size 8x8 --out "$tmp/d2.png" 2>"$tmp/e2" &&
+   [ ! -s "$tmp/e2" ]; then pass no_lights_names_real_key
+else fail no_lights_names_real_key "warning '$(cat "$tmp/e")', its advice: $(cat "$tmp/e2")"; fi

@@ -45,7 +45,7 @@ static const char usage_text[] =
     "  --frames N                    render N frames (default 1)\n"
     "  --loop                        render the scene's animation (its frames, or the still\n"
     "                                frame) endlessly, one line per frame on stdout (frame,\n"
-    "                                fps, SPI bytes); SIGINT (Ctrl-C) or SIGTERM ends it after\n"
+    "                                this host's frame rate and time, SPI bytes); SIGINT (Ctrl-C) or SIGTERM ends it after\n"
     "                                the frame, exit 0; --out FILE: the last frame\n"
     "  --loop-frames N               end --loop after N frames\n"
     "  --flush dirty|full            dirty: only the changed rectangles of each strip go to\n"
@@ -867,7 +867,7 @@ static int frame_done(struct run_state *r, unsigned f, unsigned fi, const struct
         if (o->loop) loop_signals();   /* (imgio's own handlers while it writes) */
     }
     if (o->loop) {
-        printf("frame %u (%u/%u): %.1f fps, %.2f ms, %llu SPI bytes, %u rects\n", f, fi + 1, r->anim, fps,
+        printf("frame %u (%u/%u): host %.1f fps, %.2f ms, %llu SPI bytes, %u rects\n", f, fi + 1, r->anim, fps,
                (double)frame_us / 1000.0, (unsigned long long)(panel_out_spi_bytes(*r->pp) - m->spi0),
                r->lv.rects);
         if (fflush(stdout)) return fail(EXIT_INTERNAL, "stdout: write failed");

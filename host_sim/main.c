@@ -34,7 +34,9 @@ enum { EXIT_OK = 0, EXIT_INTERNAL = 1, EXIT_USAGE = 2, EXIT_PROTOCOL = 3 };
 
 static const char usage_text[] =
     "usage: host_sim --scene FILE [options]\n"
-    "  --panel %s|none   emulated controller (default %s; hal/panels.def)\n"
+    "  --panel NAME|none             the panel (hal/panels.def): a controller, %s (the\n"
+    "                                module of the size), or a module, %s;\n"
+    "                                none: a memory framebuffer (default %s)\n"
     "  --size WxH                    render size (default: the panel's native size;\n"
     "                                with --panel none, the scene's canvas size)\n"
     "  --numeric fixed|float|double  arithmetic of the renderer (default fixed; fixed point\n"
@@ -59,7 +61,10 @@ static const char usage_text[] =
     "  --stats                       one JSON object per frame on stdout\n"
     "  --backend sim|linux           where the HAL's bytes go (default sim)\n"
     "  --rotation 0..3               quarter turns added to the panel's orientation (the\n"
-    "                                module mounted turned; odd turns need a square size)\n"
+    "                                module mounted turned): on a panel that is not square,\n"
+    "                                1 and 3 show its native size turned (240x320 becomes\n"
+    "                                320x240, landscape); with --size, odd turns need a\n"
+    "                                square size (default 0)\n"
     "Raspberry Pi (--backend linux: spidev + libgpiod; docs/raspberry-pi.md):\n"
     "  --spi-dev PATH                spidev device (default /dev/spidev0.0)\n"
     "  --spi-hz N                    SPI clock in Hz (default 32000000)\n"
@@ -144,10 +149,11 @@ static int set_option(struct opts *o, const char *name, const char *val)
     if (!strcmp(name, "--scene")) o->scene = val;
     else if (!strcmp(name, "--panel")) {
         uint16_t pw, ph;
-        char panels[64];
+        char panels[128], modules[256];
         if (strcmp(val, "none") && panel_out_native(val, &pw, &ph)) {
             panel_out_controllers(panels, sizeof panels);
-            return fail(EXIT_USAGE, "unknown panel '%s' (%s|none)", val, panels);
+            panel_out_modules(modules, sizeof modules);
+            return fail(EXIT_USAGE, "unknown panel '%s' (%s|%s|none)", val, panels, modules);
         }
         o->panel = val;
     } else if (!strcmp(name, "--size")) {
@@ -245,9 +251,10 @@ static int parse_args(int argc, char **argv, struct opts *o)
         memcpy(name, a, n);
         name[n] = 0;
         if (!strcmp(name, "--help") || !strcmp(name, "-h")) {
-            char panels[64];
+            char panels[128], modules[256];
             panel_out_controllers(panels, sizeof panels);
-            printf(usage_text, panels, panel_out_default(), panel_out_faults);
+            panel_out_modules(modules, sizeof modules);
+            printf(usage_text, panels, modules, panel_out_default(), panel_out_faults);
             exit(EXIT_OK);
         }
         if (!strcmp(name, "--stats") || !strcmp(name, "--summary") || !strcmp(name, "--progressive") ||
@@ -572,6 +579,7 @@ struct run_state {
     char frame_out[4096];      /* the file of the frame written (pattern) */
     char name[256];            /* the scene's name (scene_name) */
     unsigned w, h, rows;       /* render size, rows per strip */
+    unsigned rotation;         /* quarter turns added to what the size picks (--rotation) */
     size_t npx;
     unsigned frames;           /* frames rendered (fewer if --loop is stopped) */
     unsigned anim;             /* the scene's animation's frames (at least 1) */
@@ -685,6 +693,14 @@ static int pick_core(struct run_state *r)
         }
         w = nw;
         h = nh;
+        /* a panel that is not square mounted a quarter turn: its native
+           size turned, which the module then shows turned (the first odd
+           turn is that one, the other a half turn more) */
+        if (!r->none && (o->rotation & 1) && w != h) {
+            w = nh;
+            h = nw;
+            r->rotation = o->rotation - 1;
+        }
         if (!w || !h || w > MAX_SIDE || h > MAX_SIDE)
             return fail(EXIT_USAGE, "%s: canvas size %ux%u is not renderable (1..%d a side)",
                         o->scene, w, h, MAX_SIDE);
@@ -716,7 +732,7 @@ static int open_panel(struct run_state *r)
     int rc;
     struct panel_out_opts po = { .panel = r->panel, .backend = r->backend, .fault = o->fault,
                                  .width = (uint16_t)r->w, .height = (uint16_t)r->h,
-                                 .rotation = (uint8_t)o->rotation, .spi_dev = o->spi_dev,
+                                 .rotation = (uint8_t)r->rotation, .spi_dev = o->spi_dev,
                                  .gpio_chip = o->gpio_chip, .spi_hz = o->spi_hz, .spi_mode = o->spi_mode,
                                  .dc = o->dc, .rst = o->rst, .bl = o->bl };
     if ((rc = panel_out_open(r->pp, &po, err, sizeof err))) return fail(rc, "%s", err);
@@ -1079,6 +1095,7 @@ static int run(const struct opts *o, struct core *c, struct core *ref, struct pa
     r.backend = o->backend ? o->backend : "sim";
     r.numeric = o->numeric ? o->numeric : "fixed";
     r.none = !strcmp(r.panel, "none");
+    r.rotation = o->rotation;
     if ((rc = check_usage(&r)) || (rc = open_scene(&r)) || (rc = pick_core(&r)) || (rc = open_panel(&r)) ||
         (rc = setup_frames(&r)) || (rc = run_frames(&r)) || (rc = finish_panel(&r)))
         return rc;

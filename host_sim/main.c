@@ -891,6 +891,33 @@ static int frame_done(struct run_state *r, unsigned f, unsigned fi, const struct
     return EXIT_OK;
 }
 
+/* After the first frame of a rasterized scene: a warning for the instances
+ * in view whose every triangle faced away and was culled (a model wound the
+ * other way draws nothing, silently otherwise). */
+static void warn_culled(const struct run_state *r)
+{
+    const struct core *c = r->c;
+    unsigned all_culled = 0, first = 0;
+    uint32_t first_n = 0;
+    const char *first_model = "";
+    for (unsigned i = 0; i < c->info.ninstances; i++) {
+        uint32_t facing, culled;
+        const char *model = "";
+        if (c->api->instance_facing(&c->ctx, (uint16_t)i, &facing, &culled, &model) || facing || !culled) continue;
+        if (!all_culled++) {
+            first = i;
+            first_n = culled;
+            first_model = model;
+        }
+    }
+    if (!all_culled) return;
+    fprintf(stderr, "host_sim: warning: %s: instance %u (model '%s'): all %lu of its triangles face away and are "
+                    "culled", r->o->scene, first, first_model, (unsigned long)first_n);
+    if (all_culled > 1) fprintf(stderr, " (and %u more instances)", all_culled - 1);
+    fputs("; front faces run clockwise on screen: list each triangle's corners the other way round, "
+          "or rasterizer { cull = off }\n", stderr);
+}
+
 /* Every frame; with --loop, until a signal (the frame in progress ends). */
 static int run_frames(struct run_state *r)
 {
@@ -900,6 +927,7 @@ static int run_frames(struct run_state *r)
         const unsigned fi = o->loop ? f % r->anim : f;
         struct frame_meas m = { 0 };
         if ((rc = render_frame(r, fi, &m))) return rc;
+        if (f == 0 && r->c->info.kind == SCENE_RASTER) warn_culled(r);
         r->total_render_us += m.render_us;
         if (o->stats) print_frame_stats(r, f, &m);
         if ((rc = frame_done(r, f, fi, &m))) return rc;

@@ -71,6 +71,13 @@ int raster_frame_start(void *work, uint16_t frame);
 int raster_frame_vertices(const void *work, unsigned part, unsigned parts);
 int raster_frame_triangles(void *work, unsigned part, unsigned parts);
 int raster_frame_finish(void *work);
+/* After a frame's raster_begin_frame (or its raster_frame_* steps): of
+ * instance i's triangles, when its bounding sphere is in view, how many
+ * face the camera or are drawn both ways (*facing) and how many face away
+ * and are culled (*culled); degenerate ones neither. A host's check (every
+ * triangle culled: the winding is probably reversed), not a frame's step.
+ * 0, or -1 for no such instance. */
+int raster_instance_facing(const void *work, uint16_t i, uint32_t *facing, uint32_t *culled);
 /* Rows [t->y0, t->y1) of the current frame (at most strip_rows). */
 int raster_strip(void *work, struct render_target *t, struct render_stats *st);
 /* A sibling context (render.h's render_init_sibling): its work memory holds

@@ -118,3 +118,32 @@ printf '%s\n%s\n' "$sphere" "$key" >"$tmp/dark2.scene"
 if [ -n "$key" ] && "$hs" --scene "$tmp/dark2.scene" --panel none --size 8x8 --out "$tmp/d2.png" 2>"$tmp/e2" &&
    [ ! -s "$tmp/e2" ]; then pass no_lights_names_real_key
 else fail no_lights_names_real_key "warning '$(cat "$tmp/e")', its advice: $(cat "$tmp/e2")"; fi
+
+# ---- culling: a model wound the other way is said, and not counted as drawn -
+cat >"$tmp/ccw.scene" <<'S'
+model { name = quad color = (255, 0, 0)
+        vertices { (-1, -1, 0) (1, -1, 0) (1, 1, 0) (-1, 1, 0) }
+        triangles { (0, 1, 2) (0, 2, 3) } }
+instance { model = quad transform { translation = (0, 0, 4) } }
+S
+sed 's/(0, 1, 2) (0, 2, 3)/(0, 2, 1) (0, 3, 2)/' "$tmp/ccw.scene" >"$tmp/cw.scene"
+drawn() { sed -n 's/.*"triangles_drawn":\([0-9]*\).*/\1/p' "$1"; }
+for path in default book; do
+  extra=""
+  [ $path = book ] && extra="rasterizer { book_exact = on }"
+  for f in ccw cw; do { cat "$tmp/$f.scene"; echo "$extra"; } >"$tmp/$f-$path.scene"; done
+  "$hs" --scene "$tmp/ccw-$path.scene" --stats --out "$tmp/ccw.png" >"$tmp/o" 2>"$tmp/e"
+  rc=$?
+  if [ $rc -eq 0 ] && [ "$(wc -l <"$tmp/e")" -eq 1 ] && [ "$(drawn "$tmp/o")" = 0 ] &&
+     grep -qF "instance 0 (model 'quad'): all 2 of its triangles face away and are culled" "$tmp/e" &&
+     grep -qF "rasterizer { cull = off }" "$tmp/e"; then pass "culled_instance_warned[$path]"
+  else fail "culled_instance_warned[$path]" "exit $rc, drawn '$(drawn "$tmp/o")': $(cat "$tmp/e")"; fi
+  "$hs" --scene "$tmp/cw-$path.scene" --stats --out "$tmp/cw.png" >"$tmp/o" 2>"$tmp/e"
+  rc=$?
+  if [ $rc -eq 0 ] && [ ! -s "$tmp/e" ] && [ "$(drawn "$tmp/o")" = 2 ]; then pass "front_facing_quad_drawn[$path]"
+  else fail "front_facing_quad_drawn[$path]" "exit $rc, drawn '$(drawn "$tmp/o")': $(cat "$tmp/e")"; fi
+done
+{ cat "$tmp/ccw.scene"; echo "rasterizer { cull = off }"; } >"$tmp/nocull.scene"
+"$hs" --scene "$tmp/nocull.scene" --stats --out "$tmp/n.png" >"$tmp/o" 2>"$tmp/e"
+if [ $? -eq 0 ] && [ ! -s "$tmp/e" ] && [ "$(drawn "$tmp/o")" = 2 ]; then pass cull_off_no_warning
+else fail cull_off_no_warning "drawn '$(drawn "$tmp/o")': $(cat "$tmp/e")"; fi

@@ -354,13 +354,32 @@ static int core_open(struct core *c, const struct core_api *api, const char *pat
  * scene that fits no format is an input error (exit 2, the analysis's line)
  * unless --num-frac forces one. *fits gets the products the analysis proved
  * in range at that format (struct scene.fits; 0 when it refused the scene). */
+/* Float: the scene analysis's refusal that holds for float too (a sphere
+ * around the camera too large for its rays to leave it, SCENE_ILL_INSIDE);
+ * exit 2 with its line. */
+static int float_check(const struct opts *o, unsigned w, unsigned h)
+{
+    struct core d = { 0 };
+    int rc = core_open(&d, &core_api_double, o->scene);
+    if (rc) return rc;
+    struct scene_format f;
+    char msg[768];
+    rc = d.api->format(d.scene, o->scene, (uint16_t)w, (uint16_t)h, &f, msg, sizeof msg);
+    d.api->scene_free(d.scene);
+    if (rc && f.ill == SCENE_ILL_INSIDE) {
+        fprintf(stderr, "%s\n", msg);
+        return EXIT_USAGE;
+    }
+    return EXIT_OK;
+}
+
 static int core_pick(const struct opts *o, const char *numeric, unsigned w, unsigned h,
                      const struct core_api **api, unsigned *fits)
 {
     *fits = 0;
     if (strcmp(numeric, "fixed")) {
         *api = core_api_by_name(numeric);
-        return EXIT_OK;
+        return strcmp(numeric, "float") ? EXIT_OK : float_check(o, w, h);
     }
     struct core d = { 0 };
     int rc = core_open(&d, &core_api_double, o->scene);
@@ -710,6 +729,7 @@ static int pick_core(struct run_state *r)
     r->npx = (size_t)w * h;
     r->rows = o->strip_rows ? o->strip_rows : STRIP_ROWS_DEFAULT;
     if (r->rows > h) r->rows = h;
+    if (!strcmp(r->numeric, "float") && (rc = float_check(o, w, h))) return rc;
     if (!strcmp(r->numeric, "fixed")) {
         const struct core_api *api;
         unsigned fits;

@@ -147,3 +147,29 @@ done
 "$hs" --scene "$tmp/nocull.scene" --stats --out "$tmp/n.png" >"$tmp/o" 2>"$tmp/e"
 if [ $? -eq 0 ] && [ ! -s "$tmp/e" ] && [ "$(drawn "$tmp/o")" = 2 ]; then pass cull_off_no_warning
 else fail cull_off_no_warning "drawn '$(drawn "$tmp/o")': $(cat "$tmp/e")"; fi
+
+# ---- standing inside a huge sphere: refused for fixed point and float ------
+cat >"$tmp/inside.scene" <<'S'
+sphere { center = (0, 0, 0) radius = 40000 color = (0, 0, 255) specular = 10 }
+sphere { center = (0, -1, 3) radius = 1 color = (255, 0, 0) specular = 500 }
+light { type = ambient intensity = 0.2 }
+light { type = point intensity = 0.6 position = (2, 1, 0) }
+S
+for n in fixed float; do
+  expect "inside_huge_sphere_refused[$n]" 2 "the camera stands inside sphere 0 (radius 40000)" \
+    "$hs" --scene "$tmp/inside.scene" --numeric $n --size 32x32 --panel none --out "$tmp/i.png"
+done
+expect inside_huge_sphere_refused_compare_float 2 "inside sphere 0" "$hs" --scene "$tmp/inside.scene" \
+  --numeric double --compare float --size 32x32 --panel none --summary
+expect inside_huge_sphere_refused_scenec 2 "inside sphere 0" "$sc" -o "$tmp/i.c" "$tmp/inside.scene"
+"$hs" --scene "$tmp/inside.scene" --numeric double --size 32x32 --panel none --out "$tmp/i.png" 2>"$tmp/e" &&
+  pass inside_huge_sphere_double_renders || fail inside_huge_sphere_double_renders "$(cat "$tmp/e")"
+# below the limit it renders, at 20 dB or more in both
+sed 's/radius = 40000/radius = 3000/' "$tmp/inside.scene" >"$tmp/inside3k.scene"
+for n in fixed float; do
+  "$hs" --scene "$tmp/inside3k.scene" --numeric $n --size 96x96 --panel none --compare double --stats >"$tmp/o" 2>"$tmp/e"
+  rc=$?
+  p=$(sed -n 's/.*"psnr":\([0-9.]*\).*/\1/p' "$tmp/o" | tail -n 1)
+  if [ $rc -eq 0 ] && [ -n "$p" ] && awk "BEGIN { exit !($p >= 20) }"; then pass "inside_sphere_3000_renders[$n] ($p dB)"
+  else fail "inside_sphere_3000_renders[$n]" "exit $rc, psnr '$p': $(cat "$tmp/e")"; fi
+done

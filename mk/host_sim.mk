@@ -56,6 +56,16 @@ extremes: $(HOST_SIM_BIN_asan)
 TESTS     += tests/system/test_make_run.sh:$(BUILD)
 TEST_NEEDS_test_make_run := $(BUILD)/host_sim
 
+# `make pictures`: the README's pictures, a few scenes rendered as `make run`
+# renders them, into docs/images/ (tools/pictures.sh); the test renders them
+# again and compares the pixels with the committed files.
+.PHONY: pictures
+pictures:
+	$(Q)tools/deps.sh run
+	$(Q)$(MAKE) --no-print-directory $(HOST_SIM_BIN_host)
+	$(Q)tools/pictures.sh $(HOST_SIM_BIN_host) docs/images
+TESTS     += tests/system/test_pictures.py:$(HOST_SIM_BIN_host)
+
 # `make run`: every scene in firmware/scenes/ through host_sim (ST7789
 # 240x240, fixed point) into $(OUT)/<scene>.png, one line per scene.
 run:

@@ -67,8 +67,27 @@ pictures:
 TESTS     += tests/system/test_pictures.py:$(HOST_SIM_BIN_host)
 
 # `make run`: every scene in firmware/scenes/ through host_sim (ST7789
-# 240x240, fixed point) into $(OUT)/<scene>.png, one line per scene.
+# 240x240, fixed point) into $(OUT)/<scene>.png, one line per scene. The
+# first build of host_sim takes a minute or more: it says what it builds,
+# then builds the renderer core's number formats one at a time (each with
+# every core), a line before each.
+RUN_BUNDLES := $(foreach m,$(NUM_MODES) $(CORE_FRAC_MODES),$(BUILD)/host/core_$(m).o)
+run_jobs     = $(if $(filter -j%,$(MAKEFLAGS)),,-j$(TEST_JOBS))
 run:
 	$(Q)tools/deps.sh run
-	$(Q)$(MAKE) --no-print-directory $(HOST_SIM_BIN_host)
+	$(Q)missing=""; for b in $(RUN_BUNDLES); do [ -e "$$b" ] || missing="$$missing $$b"; done; \
+	n=$$(echo $$missing | wc -w); k=0; \
+	if [ $$n -gt 0 ]; then \
+		echo "make run: building $(HOST_SIM_BIN_host): the renderer core once per number format ($$n of" \
+		     "$(words $(RUN_BUNDLES)): double, float, fixed point at Q11.20 ... Q19.12), then host_sim itself;" \
+		     "about a minute on two cores the first time"; \
+	elif [ ! -e $(HOST_SIM_BIN_host) ]; then echo "make run: building $(HOST_SIM_BIN_host)"; fi; \
+	for b in $$missing; do \
+		k=$$((k + 1)); m=$${b##*/core_}; \
+		echo "make run:   [$$k/$$n] the renderer core in $${m%.o}"; \
+		$(MAKE) --no-print-directory $(run_jobs) $$b || exit 1; \
+	done; \
+	$(MAKE) --no-print-directory $(run_jobs) $(HOST_SIM_BIN_host) || exit 1; \
+	if [ $$n -gt 0 ]; then echo "make run: $(HOST_SIM_BIN_host) built"; fi
+	$(Q)echo "make run: rendering every scene of firmware/scenes/ (ST7789 240x240, fixed point, compared with double) into $(OUT)/"
 	$(Q)tools/run_scenes.sh $(HOST_SIM_BIN_host) firmware/scenes $(OUT)

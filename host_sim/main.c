@@ -934,7 +934,7 @@ static void warn_culled(const struct run_state *r)
     fprintf(stderr, "host_sim: warning: %s: instance %u (model '%s'): all %lu of its triangles face away and are "
                     "culled", r->o->scene, first, first_model, (unsigned long)first_n);
     if (all_culled > 1) fprintf(stderr, " (and %u more instances)", all_culled - 1);
-    fputs("; front faces run clockwise on screen: list each triangle's corners the other way round, "
+    fputs("; front faces run clockwise as the camera sees them: list each triangle's corners the other way round, "
           "or rasterizer { cull = off }\n", stderr);
 }
 

@@ -28,8 +28,9 @@
  *   * Colours, normals and texture coordinates are interpolated
  *     perspective-correctly; depth is near/z stored in 16 or 32 bits
  *     (larger is nearer, equal keeps the earlier triangle).
- *   * Front faces are those whose corners run clockwise on screen
- *     (counter-clockwise seen with +y up); back faces are culled when
+ *   * Front faces are those whose corners run clockwise as the camera
+ *     sees them (x to the right, +y up; counter-clockwise in pixel
+ *     coordinates, whose rows run downward); back faces are culled when
  *     ras_options.backface_cull is set.
  * 2D primitives (raster-01 … 04) and wireframes are drawn with the book's
  * routines in both paths.

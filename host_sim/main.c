@@ -34,8 +34,9 @@ enum { EXIT_OK = 0, EXIT_INTERNAL = 1, EXIT_USAGE = 2, EXIT_PROTOCOL = 3 };
 
 static const char usage_text[] =
     "usage: host_sim --scene FILE [options]\n"
-    "  --panel NAME|none             the panel (hal/panels.def): a controller, %s (the\n"
-    "                                module of the size), or a module, %s;\n"
+    "  --panel NAME|none             the panel (hal/panels.def): a controller, %s\n"
+    "                                (the module of the size), or a module,\n"
+    "                                %s;\n"
     "                                none: a memory framebuffer (default %s)\n"
     "  --size WxH                    render size (default: the panel's native size;\n"
     "                                with --panel none, the scene's canvas size)\n"
@@ -47,7 +48,8 @@ static const char usage_text[] =
     "  --frames N                    render N frames (default 1)\n"
     "  --loop                        render the scene's animation (its frames, or the still\n"
     "                                frame) endlessly, one line per frame on stdout (frame,\n"
-    "                                this host's frame rate and time, SPI bytes); SIGINT (Ctrl-C) or SIGTERM ends it after\n"
+    "                                this host's frame rate and time, SPI bytes); SIGINT\n"
+    "                                (Ctrl-C) or SIGTERM ends it after\n"
     "                                the frame, exit 0; --out FILE: the last frame\n"
     "  --loop-frames N               end --loop after N frames\n"
     "  --flush dirty|full            dirty: only the changed rectangles of each strip go to\n"

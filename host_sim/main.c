@@ -66,7 +66,9 @@ static const char usage_text[] =
     "                                module mounted turned): on a panel that is not square,\n"
     "                                1 and 3 show its native size turned (240x320 becomes\n"
     "                                320x240, landscape); with --size, odd turns need a\n"
-    "                                square size (default 0)\n"
+    "                                square size (default 0)\n";
+/* (two strings: C11 promises string literals of up to 4095 characters) */
+static const char usage_text2[] =
     "Raspberry Pi (--backend linux: spidev + libgpiod; docs/raspberry-pi.md):\n"
     "  --spi-dev PATH                spidev device (default /dev/spidev0.0)\n"
     "  --spi-hz N                    SPI clock in Hz (default 32000000)\n"
@@ -256,7 +258,8 @@ static int parse_args(int argc, char **argv, struct opts *o)
             char panels[128], modules[256];
             panel_out_controllers(panels, sizeof panels);
             panel_out_modules(modules, sizeof modules);
-            printf(usage_text, panels, modules, panel_out_default(), panel_out_faults);
+            printf(usage_text, panels, modules, panel_out_default());
+            printf(usage_text2, panel_out_faults);
             exit(EXIT_OK);
         }
         if (!strcmp(name, "--stats") || !strcmp(name, "--summary") || !strcmp(name, "--progressive") ||

@@ -23,6 +23,7 @@
 #include "host_sim/panel_out.h"
 #include "host_sim/window.h"
 #include "firmware/app/font5x7.h"
+#include "tools/scene/suggest.h"
 
 /* Rows a strip has: what a small MCU can hold (16 rows x 320 x 2 bytes = 10 KiB). */
 #define STRIP_ROWS_DEFAULT 16
@@ -33,7 +34,10 @@ enum { EXIT_OK = 0, EXIT_INTERNAL = 1, EXIT_USAGE = 2, EXIT_PROTOCOL = 3 };
 
 static const char usage_text[] =
     "usage: host_sim --scene FILE [options]\n"
-    "  --panel %s|none   emulated controller (default %s; hal/panels.def)\n"
+    "  --panel NAME|none             the panel (hal/panels.def): a controller, %s\n"
+    "                                (the module of the size), or a module,\n"
+    "                                %s;\n"
+    "                                none: a memory framebuffer (default %s)\n"
     "  --size WxH                    render size (default: the panel's native size;\n"
     "                                with --panel none, the scene's canvas size)\n"
     "  --numeric fixed|float|double  arithmetic of the renderer (default fixed; fixed point\n"
@@ -44,7 +48,8 @@ static const char usage_text[] =
     "  --frames N                    render N frames (default 1)\n"
     "  --loop                        render the scene's animation (its frames, or the still\n"
     "                                frame) endlessly, one line per frame on stdout (frame,\n"
-    "                                fps, SPI bytes); SIGINT (Ctrl-C) or SIGTERM ends it after\n"
+    "                                this host's frame rate and time, SPI bytes); SIGINT\n"
+    "                                (Ctrl-C) or SIGTERM ends it after\n"
     "                                the frame, exit 0; --out FILE: the last frame\n"
     "  --loop-frames N               end --loop after N frames\n"
     "  --flush dirty|full            dirty: only the changed rectangles of each strip go to\n"
@@ -58,7 +63,12 @@ static const char usage_text[] =
     "  --stats                       one JSON object per frame on stdout\n"
     "  --backend sim|linux           where the HAL's bytes go (default sim)\n"
     "  --rotation 0..3               quarter turns added to the panel's orientation (the\n"
-    "                                module mounted turned; odd turns need a square size)\n"
+    "                                module mounted turned): on a panel that is not square,\n"
+    "                                1 and 3 show its native size turned (240x320 becomes\n"
+    "                                320x240, landscape); with --size, odd turns need a\n"
+    "                                square size (default 0)\n";
+/* (two strings: C11 promises string literals of up to 4095 characters) */
+static const char usage_text2[] =
     "Raspberry Pi (--backend linux: spidev + libgpiod; docs/raspberry-pi.md):\n"
     "  --spi-dev PATH                spidev device (default /dev/spidev0.0)\n"
     "  --spi-hz N                    SPI clock in Hz (default 32000000)\n"
@@ -143,10 +153,11 @@ static int set_option(struct opts *o, const char *name, const char *val)
     if (!strcmp(name, "--scene")) o->scene = val;
     else if (!strcmp(name, "--panel")) {
         uint16_t pw, ph;
-        char panels[64];
+        char panels[128], modules[256];
         if (strcmp(val, "none") && panel_out_native(val, &pw, &ph)) {
             panel_out_controllers(panels, sizeof panels);
-            return fail(EXIT_USAGE, "unknown panel '%s' (%s|none)", val, panels);
+            panel_out_modules(modules, sizeof modules);
+            return fail(EXIT_USAGE, "unknown panel '%s' (%s|%s|none)", val, panels, modules);
         }
         o->panel = val;
     } else if (!strcmp(name, "--size")) {
@@ -210,26 +221,45 @@ static int set_option(struct opts *o, const char *name, const char *val)
     return EXIT_OK;
 }
 
+/* Every option's name, for "did you mean" (those with an argument first). */
+static const char *const option_names[] = {
+    "--scene", "--panel", "--size", "--numeric", "--out", "--out-raw", "--out-rgb888",
+    "--frames", "--backend", "--compare", "--strip-rows", "--inject-fault", "--num-frac",
+    "--loop-frames", "--flush", "--window-scale", "--spi-dev", "--spi-hz", "--spi-mode", "--gpio-chip", "--dc",
+    "--rst", "--bl", "--rotation", NULL,
+    "--stats", "--summary", "--progressive", "--loop", "--fps-overlay", "--window", "--help", NULL,
+};
+
+/* An unknown option: exit 2, with the nearest known name if it is near. */
+static int unknown_option(const char *a)
+{
+    const char *names[sizeof option_names / sizeof option_names[0]];
+    size_t k = 0;
+    for (size_t i = 0; i < sizeof option_names / sizeof option_names[0]; i++)
+        if (option_names[i]) names[k++] = option_names[i];
+    names[k] = NULL;
+    const char *near = !strncmp(a, "--", 2) ? suggest_nearest(a, names) : NULL;
+    if (near) return fail(EXIT_USAGE, "unknown option '%s' (did you mean '%s'? try --help)", a, near);
+    return fail(EXIT_USAGE, "unknown option '%s' (try --help)", a);
+}
+
 static int parse_args(int argc, char **argv, struct opts *o)
 {
-    static const char *const with_arg[] = {
-        "--scene", "--panel", "--size", "--numeric", "--out", "--out-raw", "--out-rgb888",
-        "--frames", "--backend", "--compare", "--strip-rows", "--inject-fault", "--num-frac",
-        "--loop-frames", "--flush", "--window-scale", "--spi-dev", "--spi-hz", "--spi-mode", "--gpio-chip", "--dc", "--rst", "--bl", "--rotation", NULL,
-    };
+    const char *const *with_arg = option_names;   /* up to its first NULL */
     for (int i = 1; i < argc; i++) {
         const char *a = argv[i], *val = NULL;
         char name[32];
         const char *eq = strchr(a, '=');
         size_t n = eq ? (size_t)(eq - a) : strlen(a);
-        if (strncmp(a, "--", 2) || n >= sizeof name)
-            return fail(EXIT_USAGE, "unknown option '%s' (try --help)", a);
+        if (strncmp(a, "--", 2) || n >= sizeof name) return unknown_option(a);
         memcpy(name, a, n);
         name[n] = 0;
         if (!strcmp(name, "--help") || !strcmp(name, "-h")) {
-            char panels[64];
+            char panels[128], modules[256];
             panel_out_controllers(panels, sizeof panels);
-            printf(usage_text, panels, panel_out_default(), panel_out_faults);
+            panel_out_modules(modules, sizeof modules);
+            printf(usage_text, panels, modules, panel_out_default());
+            printf(usage_text2, panel_out_faults);
             exit(EXIT_OK);
         }
         if (!strcmp(name, "--stats") || !strcmp(name, "--summary") || !strcmp(name, "--progressive") ||
@@ -245,7 +275,7 @@ static int parse_args(int argc, char **argv, struct opts *o)
         }
         int known = 0;
         for (int k = 0; with_arg[k]; k++) known |= !strcmp(name, with_arg[k]);
-        if (!known) return fail(EXIT_USAGE, "unknown option '%s' (try --help)", name);
+        if (!known) return unknown_option(name);
         if (eq) val = eq + 1;
         else if (i + 1 < argc) val = argv[++i];
         if (!val || !*val) return fail(EXIT_USAGE, "option %s needs an argument", name);
@@ -329,13 +359,32 @@ static int core_open(struct core *c, const struct core_api *api, const char *pat
  * scene that fits no format is an input error (exit 2, the analysis's line)
  * unless --num-frac forces one. *fits gets the products the analysis proved
  * in range at that format (struct scene.fits; 0 when it refused the scene). */
+/* Float: the scene analysis's refusal that holds for float too (a sphere
+ * around the camera too large for its rays to leave it, SCENE_ILL_INSIDE);
+ * exit 2 with its line. */
+static int float_check(const struct opts *o, unsigned w, unsigned h)
+{
+    struct core d = { 0 };
+    int rc = core_open(&d, &core_api_double, o->scene);
+    if (rc) return rc;
+    struct scene_format f;
+    char msg[768];
+    rc = d.api->format(d.scene, o->scene, (uint16_t)w, (uint16_t)h, &f, msg, sizeof msg);
+    d.api->scene_free(d.scene);
+    if (rc && f.ill == SCENE_ILL_INSIDE) {
+        fprintf(stderr, "%s\n", msg);
+        return EXIT_USAGE;
+    }
+    return EXIT_OK;
+}
+
 static int core_pick(const struct opts *o, const char *numeric, unsigned w, unsigned h,
                      const struct core_api **api, unsigned *fits)
 {
     *fits = 0;
     if (strcmp(numeric, "fixed")) {
         *api = core_api_by_name(numeric);
-        return EXIT_OK;
+        return strcmp(numeric, "float") ? EXIT_OK : float_check(o, w, h);
     }
     struct core d = { 0 };
     int rc = core_open(&d, &core_api_double, o->scene);
@@ -554,6 +603,7 @@ struct run_state {
     char frame_out[4096];      /* the file of the frame written (pattern) */
     char name[256];            /* the scene's name (scene_name) */
     unsigned w, h, rows;       /* render size, rows per strip */
+    unsigned rotation;         /* quarter turns added to what the size picks (--rotation) */
     size_t npx;
     unsigned frames;           /* frames rendered (fewer if --loop is stopped) */
     unsigned anim;             /* the scene's animation's frames (at least 1) */
@@ -667,6 +717,14 @@ static int pick_core(struct run_state *r)
         }
         w = nw;
         h = nh;
+        /* a panel that is not square mounted a quarter turn: its native
+           size turned, which the module then shows turned (the first odd
+           turn is that one, the other a half turn more) */
+        if (!r->none && (o->rotation & 1) && w != h) {
+            w = nh;
+            h = nw;
+            r->rotation = o->rotation - 1;
+        }
         if (!w || !h || w > MAX_SIDE || h > MAX_SIDE)
             return fail(EXIT_USAGE, "%s: canvas size %ux%u is not renderable (1..%d a side)",
                         o->scene, w, h, MAX_SIDE);
@@ -676,6 +734,7 @@ static int pick_core(struct run_state *r)
     r->npx = (size_t)w * h;
     r->rows = o->strip_rows ? o->strip_rows : STRIP_ROWS_DEFAULT;
     if (r->rows > h) r->rows = h;
+    if (!strcmp(r->numeric, "float") && (rc = float_check(o, w, h))) return rc;
     if (!strcmp(r->numeric, "fixed")) {
         const struct core_api *api;
         unsigned fits;
@@ -698,7 +757,7 @@ static int open_panel(struct run_state *r)
     int rc;
     struct panel_out_opts po = { .panel = r->panel, .backend = r->backend, .fault = o->fault,
                                  .width = (uint16_t)r->w, .height = (uint16_t)r->h,
-                                 .rotation = (uint8_t)o->rotation, .spi_dev = o->spi_dev,
+                                 .rotation = (uint8_t)r->rotation, .spi_dev = o->spi_dev,
                                  .gpio_chip = o->gpio_chip, .spi_hz = o->spi_hz, .spi_mode = o->spi_mode,
                                  .dc = o->dc, .rst = o->rst, .bl = o->bl };
     if ((rc = panel_out_open(r->pp, &po, err, sizeof err))) return fail(rc, "%s", err);
@@ -707,9 +766,9 @@ static int open_panel(struct run_state *r)
      * has passed, so an error stays the only line), not refused */
     if (c->info.uses_lights && c->info.nlights == 0 && (c->info.kind == SCENE_RAYTRACE || c->info.ninstances))
         fprintf(stderr, "host_sim: warning: %s: no lights: every lit surface renders black%s\n", o->scene,
-                c->info.kind == SCENE_RAYTRACE ? " (add a light, or unlit = on)" : " (add a light, or shading = none)");
+                c->info.kind == SCENE_RAYTRACE ? " (add a light, or raytracer { lighting = off } for unlit colours)" : " (add a light, or rasterizer { shading = none })");
     if (!c->info.uses_lights && c->info.nlights && c->info.kind != SCENE_RAYTRACE)
-        fprintf(stderr, "host_sim: warning: %s: %u lights, but no shading mode uses them (shading = none)\n",
+        fprintf(stderr, "host_sim: warning: %s: %u lights, but no shading mode uses them (rasterizer { shading = none })\n",
                 o->scene, (unsigned)c->info.nlights);
     if (!o->out && !o->out_raw && !o->out_rgb888 && !o->stats && !o->summary && !o->compare && !o->loop)
         fprintf(stderr, "host_sim: warning: no output given (--out, --out-raw, --out-rgb888, --stats, --summary): "
@@ -849,12 +908,39 @@ static int frame_done(struct run_state *r, unsigned f, unsigned fi, const struct
         if (o->loop) loop_signals();   /* (imgio's own handlers while it writes) */
     }
     if (o->loop) {
-        printf("frame %u (%u/%u): %.1f fps, %.2f ms, %llu SPI bytes, %u rects\n", f, fi + 1, r->anim, fps,
+        printf("frame %u (%u/%u): host %.1f fps, %.2f ms, %llu SPI bytes, %u rects\n", f, fi + 1, r->anim, fps,
                (double)frame_us / 1000.0, (unsigned long long)(panel_out_spi_bytes(*r->pp) - m->spi0),
                r->lv.rects);
         if (fflush(stdout)) return fail(EXIT_INTERNAL, "stdout: write failed");
     }
     return EXIT_OK;
+}
+
+/* After the first frame of a rasterized scene: a warning for the instances
+ * in view whose every triangle faced away and was culled (a model wound the
+ * other way draws nothing, silently otherwise). */
+static void warn_culled(const struct run_state *r)
+{
+    const struct core *c = r->c;
+    unsigned all_culled = 0, first = 0;
+    uint32_t first_n = 0;
+    const char *first_model = "";
+    for (unsigned i = 0; i < c->info.ninstances; i++) {
+        uint32_t facing, culled;
+        const char *model = "";
+        if (c->api->instance_facing(&c->ctx, (uint16_t)i, &facing, &culled, &model) || facing || !culled) continue;
+        if (!all_culled++) {
+            first = i;
+            first_n = culled;
+            first_model = model;
+        }
+    }
+    if (!all_culled) return;
+    fprintf(stderr, "host_sim: warning: %s: instance %u (model '%s'): all %lu of its triangles face away and are "
+                    "culled", r->o->scene, first, first_model, (unsigned long)first_n);
+    if (all_culled > 1) fprintf(stderr, " (and %u more instances)", all_culled - 1);
+    fputs("; front faces run clockwise as the camera sees them: list each triangle's corners the other way round, "
+          "or rasterizer { cull = off }\n", stderr);
 }
 
 /* Every frame; with --loop, until a signal (the frame in progress ends). */
@@ -866,6 +952,7 @@ static int run_frames(struct run_state *r)
         const unsigned fi = o->loop ? f % r->anim : f;
         struct frame_meas m = { 0 };
         if ((rc = render_frame(r, fi, &m))) return rc;
+        if (f == 0 && r->c->info.kind == SCENE_RASTER) warn_culled(r);
         r->total_render_us += m.render_us;
         if (o->stats) print_frame_stats(r, f, &m);
         if ((rc = frame_done(r, f, fi, &m))) return rc;
@@ -1061,6 +1148,7 @@ static int run(const struct opts *o, struct core *c, struct core *ref, struct pa
     r.backend = o->backend ? o->backend : "sim";
     r.numeric = o->numeric ? o->numeric : "fixed";
     r.none = !strcmp(r.panel, "none");
+    r.rotation = o->rotation;
     if ((rc = check_usage(&r)) || (rc = open_scene(&r)) || (rc = pick_core(&r)) || (rc = open_panel(&r)) ||
         (rc = setup_frames(&r)) || (rc = run_frames(&r)) || (rc = finish_panel(&r)))
         return rc;

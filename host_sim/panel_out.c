@@ -10,7 +10,8 @@
  * --panel none:  a plain memory framebuffer.
  *
  * The panels are those of hal/panels.def (panel_all): --panel names a
- * controller, and the size picks the module.
+ * controller, and the size picks the module, or a module itself, which is
+ * then taken first when it holds the size.
  */
 #include "panel_out.h"
 
@@ -51,9 +52,17 @@ static const struct panel_desc *controller_default(const char *panel)
     return d && !strcmp(d->controller, panel) ? d : NULL;
 }
 
+/* A module by its own name (panel_find of a PANEL name), NULL for anything else. */
+static const struct panel_desc *module_named(const char *panel)
+{
+    const struct panel_desc *d = panel_find(panel);
+    return d && !strcmp(d->name, panel) ? d : NULL;
+}
+
 int panel_out_native(const char *panel, uint16_t *w, uint16_t *h)
 {
     const struct panel_desc *d = controller_default(panel);
+    if (!d) d = module_named(panel);
     if (!d) return -1;
     *w = d->width;
     *h = d->height;
@@ -61,6 +70,18 @@ int panel_out_native(const char *panel, uint16_t *w, uint16_t *h)
 }
 
 const char *panel_out_default(void) { return panel_all[0]->controller; }
+
+int panel_out_modules(char *buf, size_t len)
+{
+    size_t n = 0;
+    if (len) buf[0] = 0;
+    for (size_t i = 0; panel_all[i]; i++) {
+        int k = snprintf(buf + n, len - n, "%s%s", n ? "|" : "", panel_all[i]->name);
+        if (k < 0 || (size_t)k >= len - n) return -1;
+        n += (size_t)k;
+    }
+    return 0;
+}
 
 int panel_out_controllers(char *buf, size_t len)
 {
@@ -75,11 +96,19 @@ int panel_out_controllers(char *buf, size_t len)
     return 0;
 }
 
-/* The module and rotation that show a w x h image: the first descriptor of
- * the controller (in panels.def's order, smallest first) that holds it
+/* The module and rotation that show a w x h image: a module named by panel
+ * if it holds it upright, else turned a quarter; else the first descriptor
+ * of the controller (in panels.def's order, smallest first) that holds it
  * upright, else the first that holds it turned a quarter; NULL if none. */
 static const struct panel_desc *pick_module(const char *panel, unsigned w, unsigned h, uint8_t *rot)
 {
+    const struct panel_desc *named = module_named(panel);
+    if (named) {
+        for (*rot = 0; *rot < 2; (*rot)++)
+            if (w <= (*rot ? named->height : named->width) && h <= (*rot ? named->width : named->height))
+                return named;
+        panel = named->controller;
+    }
     for (*rot = 0; *rot < 2; (*rot)++)
         for (size_t i = 0; panel_all[i]; i++) {
             const struct panel_desc *d = panel_all[i];
@@ -154,7 +183,8 @@ int panel_out_open(struct panel_out **out, const struct panel_out_opts *o, char 
     uint8_t rot = 0;
     const struct panel_desc *d = none ? NULL : pick_module(o->panel, o->width, o->height, &rot);
     if (!none && !d) {
-        if (!controller_default(o->panel)) snprintf(err, errlen, "unknown panel '%s'", o->panel);
+        if (!controller_default(o->panel) && !module_named(o->panel))
+            snprintf(err, errlen, "unknown panel '%s'", o->panel);
         else snprintf(err, errlen, "size %ux%u is larger than every %s module", o->width, o->height, o->panel);
         return 2;
     }
@@ -174,7 +204,8 @@ int panel_out_open(struct panel_out **out, const struct panel_out_opts *o, char 
     if (o->rotation > 3 || ((o->rotation & 1) && o->width != o->height)) {
         snprintf(err, errlen, "--rotation %u: %s", (unsigned)o->rotation,
                  o->rotation > 3 ? "quarter turns 0..3" :
-                 "odd turns need a square size (--size picks portrait or landscape)");
+                 "with --size, odd turns need a square size (WxH itself picks portrait or landscape; "
+                 "without --size a panel turned a quarter shows its native size turned)");
         return 2;
     }
     rot = (uint8_t)((rot + o->rotation) & 3);

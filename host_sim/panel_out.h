@@ -21,7 +21,8 @@
 struct panel_out;
 
 struct panel_out_opts {
-    const char *panel;    /* a controller of hal/panels.def ("st7789", "ili9341") or "none" */
+    const char *panel;    /* a controller of hal/panels.def ("st7789", "ili9341"), a module of it
+                             ("st7789_240x320"), or "none" */
     const char *backend;  /* "sim" or "linux" */
     const char *fault;    /* NULL, or a fault to inject (see panel_out_faults) */
     uint16_t width, height;
@@ -39,14 +40,18 @@ struct panel_out_opts {
 /* Names accepted in panel_out_opts.fault, separated by '|', for messages. */
 extern const char panel_out_faults[];
 
-/* The panel's native size (the default --size): the size of the
- * controller's first module in hal/panels.def; -1 for an unknown panel.
- * "none" has no native size (returns -1 too). */
+/* The panel's native size (the default --size): a module's own size, or
+ * for a controller its first module's in hal/panels.def; -1 for an unknown
+ * panel. "none" has no native size (returns -1 too). */
 int panel_out_native(const char *panel, uint16_t *w, uint16_t *h);
 
-/* The panel names (controllers) --panel accepts, "st7789|ili9341", into buf;
- * -1 if it does not fit. */
+/* The controllers --panel accepts, "st7789|ili9341", into buf; -1 if it
+ * does not fit. */
 int panel_out_controllers(char *buf, size_t len);
+
+/* The modules --panel accepts (hal/panels.def's PANEL names, separated by
+ * '|'), into buf; -1 if it does not fit. */
+int panel_out_modules(char *buf, size_t len);
 
 /* The default panel: the controller of hal/panels.def's first module. */
 const char *panel_out_default(void);

@@ -42,6 +42,9 @@ TESTS     += tests/system/test_window.sh:$(HOST_SIM_BIN_asan)
 # input/output faults (FIFOs, devices, ulimit -f, signals) of host_sim and scenec
 TEST_DEPS += $(BUILD)/scenec
 TESTS     += tests/system/test_io_faults.sh:$(HOST_SIM_BIN_asan):$(BUILD)/scenec
+# mistakes that point at their fix: nearest names, byte order mark, missing
+# files, the no-lights and culling warnings, scenec --help
+TESTS     += tests/system/test_hints.sh:$(HOST_SIM_BIN_asan):$(BUILD)/scenec
 # the format promise on generated extreme scenes (tools/scene/gen_extreme.py),
 # under the sanitizers: a bounded count here, `make extremes` for more
 EXTREMES_COUNT ?= 300
@@ -53,9 +56,38 @@ extremes: $(HOST_SIM_BIN_asan)
 TESTS     += tests/system/test_make_run.sh:$(BUILD)
 TEST_NEEDS_test_make_run := $(BUILD)/host_sim
 
-# `make run`: every scene in firmware/scenes/ through host_sim (ST7789
-# 240x240, fixed point) into $(OUT)/<scene>.png, one line per scene.
-run:
+# `make pictures`: the README's pictures, a few scenes rendered as `make run`
+# renders them, into docs/images/ (tools/pictures.sh); the test renders them
+# again and compares the pixels with the committed files.
+.PHONY: pictures
+pictures:
 	$(Q)tools/deps.sh run
 	$(Q)$(MAKE) --no-print-directory $(HOST_SIM_BIN_host)
+	$(Q)tools/pictures.sh $(HOST_SIM_BIN_host) docs/images
+TESTS     += tests/system/test_pictures.py:$(HOST_SIM_BIN_host)
+
+# `make run`: every scene in firmware/scenes/ through host_sim (ST7789
+# 240x240, fixed point) into $(OUT)/<scene>.png, one line per scene. The
+# first build of host_sim takes a minute or more: it says what it builds,
+# then builds the renderer core's number formats one at a time (each with
+# every core), a line before each.
+RUN_BUNDLES := $(foreach m,$(NUM_MODES) $(CORE_FRAC_MODES),$(BUILD)/host/core_$(m).o)
+run_jobs     = $(if $(filter -j%,$(MAKEFLAGS)),,-j$(TEST_JOBS))
+run:
+	$(Q)tools/deps.sh run
+	$(Q)missing=""; for b in $(RUN_BUNDLES); do [ -e "$$b" ] || missing="$$missing $$b"; done; \
+	n=$$(echo $$missing | wc -w); k=0; \
+	if [ $$n -gt 0 ]; then \
+		echo "make run: building $(HOST_SIM_BIN_host): the renderer core once per number format ($$n of" \
+		     "$(words $(RUN_BUNDLES)): double, float, fixed point at Q11.20 ... Q19.12), then host_sim itself;" \
+		     "about a minute on two cores the first time"; \
+	elif [ ! -e $(HOST_SIM_BIN_host) ]; then echo "make run: building $(HOST_SIM_BIN_host)"; fi; \
+	for b in $$missing; do \
+		k=$$((k + 1)); m=$${b##*/core_}; \
+		echo "make run:   [$$k/$$n] the renderer core in $${m%.o}"; \
+		$(MAKE) --no-print-directory $(run_jobs) $$b || exit 1; \
+	done; \
+	$(MAKE) --no-print-directory $(run_jobs) $(HOST_SIM_BIN_host) || exit 1; \
+	if [ $$n -gt 0 ]; then echo "make run: $(HOST_SIM_BIN_host) built"; fi
+	$(Q)echo "make run: rendering every scene of firmware/scenes/ (ST7789 240x240, fixed point, compared with double) into $(OUT)/"
 	$(Q)tools/run_scenes.sh $(HOST_SIM_BIN_host) firmware/scenes $(OUT)

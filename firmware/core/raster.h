@@ -28,8 +28,9 @@
  *   * Colours, normals and texture coordinates are interpolated
  *     perspective-correctly; depth is near/z stored in 16 or 32 bits
  *     (larger is nearer, equal keeps the earlier triangle).
- *   * Front faces are those whose corners run clockwise on screen
- *     (counter-clockwise seen with +y up); back faces are culled when
+ *   * Front faces are those whose corners run clockwise as the camera
+ *     sees them (x to the right, +y up; counter-clockwise in pixel
+ *     coordinates, whose rows run downward); back faces are culled when
  *     ras_options.backface_cull is set.
  * 2D primitives (raster-01 … 04) and wireframes are drawn with the book's
  * routines in both paths.
@@ -71,6 +72,13 @@ int raster_frame_start(void *work, uint16_t frame);
 int raster_frame_vertices(const void *work, unsigned part, unsigned parts);
 int raster_frame_triangles(void *work, unsigned part, unsigned parts);
 int raster_frame_finish(void *work);
+/* After a frame's raster_begin_frame (or its raster_frame_* steps): of
+ * instance i's triangles, when its bounding sphere is in view, how many
+ * face the camera or are drawn both ways (*facing) and how many face away
+ * and are culled (*culled); degenerate ones neither. A host's check (every
+ * triangle culled: the winding is probably reversed), not a frame's step.
+ * 0, or -1 for no such instance. */
+int raster_instance_facing(const void *work, uint16_t i, uint32_t *facing, uint32_t *culled);
 /* Rows [t->y0, t->y1) of the current frame (at most strip_rows). */
 int raster_strip(void *work, struct render_target *t, struct render_stats *st);
 /* A sibling context (render.h's render_init_sibling): its work memory holds

@@ -38,7 +38,9 @@ struct render_target {
  * covered pixel once. render_target.written marks the pixels so covered. */
 struct render_stats {
     uint32_t rays;                           /* ray tracer: rays traced (primary and secondary) */
-    uint32_t triangles_in, triangles_drawn;  /* rasterizer: the frame's, counted with its first strip */
+    uint32_t triangles_in, triangles_drawn;  /* rasterizer: the frame's, counted with its first strip;
+                                                drawn: not culled (in view, on a row, not degenerate,
+                                                not a back face with culling on) */
     uint32_t pixels_written;
 };
 

@@ -73,6 +73,28 @@ expect_err size_larger_than_st7789 2 "larger than" --scene "$scene" --panel st77
 expect_err size_larger_than_st7789_wide 2 "larger than" --scene "$scene" --panel st7789 --size 400x200
 expect_err size_larger_than_ili9341 2 "larger than" --scene "$scene" --panel ili9341 --size 321x240
 
+# Every panel hal/panels.def lists is a --panel name, at its own size; on a
+# panel that is not square, --rotation 1 and 3 show its size turned
+# (landscape for a portrait module), the image upright on the glass.
+bad=""
+for p in $(sed -n 's/^PANEL(\([a-z0-9_]*\),.*/\1/p' hal/panels.def); do
+  size=${p##*_}
+  run --scene "$scene" --panel "$p" --out "$tmp/p.png"
+  [ "$rc" -eq 0 ] && [ "$(png_size "$tmp/p.png")" = "$size" ] || bad="$bad [$p: exit $rc, $(png_size "$tmp/p.png"): $(head -c 200 "$tmp/e")]"
+  w=${size%x*} h=${size#*x}
+  [ "$w" = "$h" ] && continue
+  "$hs" --scene "$scene" --panel none --size "${h}x$w" --out-raw "$tmp/none.raw" 2>/dev/null
+  for rot in 1 3; do
+    run --scene "$scene" --panel "$p" --rotation $rot --out-raw "$tmp/p.raw"
+    [ "$rc" -eq 0 ] && cmp -s "$tmp/p.raw" "$tmp/none.raw" || bad="$bad [$p --rotation $rot: exit $rc: $(head -c 200 "$tmp/e")]"
+  done
+done
+[ -n "$(sed -n 's/^PANEL(\([a-z0-9_]*\),.*/\1/p' hal/panels.def)" ] || bad="no PANEL lines read"
+if [ -z "$bad" ]; then pass every_listed_panel_name; else fail every_listed_panel_name "$bad"; fi
+expect_err unknown_panel_lists_modules 2 "st7789_240x320" --scene "$scene" --panel st7789_240x999
+expect_err rotation_with_size_not_square 2 "odd turns need a square size" --scene "$scene" --panel st7789 \
+  --size 240x320 --rotation 1
+
 # --help
 run --help
 if [ "$rc" -eq 0 ] && grep -q -- "--scene FILE" "$tmp/o"; then pass help; else fail help "exit $rc"; fi

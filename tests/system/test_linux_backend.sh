@@ -116,8 +116,8 @@ for args in "--spi-mode 4" "--spi-hz 0" "--dc none" "--rst x" "--rotation 5" "--
   rc=$?
   [ $rc -eq 2 ] && [ "$(wc -l <"$tmp/err")" -eq 1 ] || bad="$bad [$args: rc $rc]"
 done
-"$hs" --scene $scene --panel ili9341 --rotation 1 >/dev/null 2>"$tmp/err"
-[ $? -eq 2 ] && grep -q 'odd turns need a square size' "$tmp/err" || bad="$bad [ili9341 rotation 1]"
+"$hs" --scene $scene --panel ili9341 --size 320x240 --rotation 1 >/dev/null 2>"$tmp/err"
+[ $? -eq 2 ] && grep -q 'odd turns need a square size' "$tmp/err" || bad="$bad [ili9341 320x240 rotation 1]"
 if [ -z "$bad" ]; then pass linux_backend_bad_pi_options_exit2; else fail linux_backend_bad_pi_options_exit2 "$bad"; fi
 
 help=$("$hs" --help)

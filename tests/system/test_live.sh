@@ -18,7 +18,7 @@ fail() { echo "FAIL $1: $2"; }
 # bounded loop: one line per frame, the animation's frame count, exit 0
 "$hs" --scene $anim --loop --loop-frames 4 --out "$tmp/dirty.png" --out-raw "$tmp/dirty.raw" >"$tmp/dirty.txt" 2>"$tmp/err"
 rc=$?
-n=$(grep -c '^frame [0-9]* ([0-9]*/72): [0-9.]* fps, [0-9.]* ms, [0-9]* SPI bytes, [0-9]* rects$' "$tmp/dirty.txt")
+n=$(grep -c '^frame [0-9]* ([0-9]*/72): host [0-9.]* fps, [0-9.]* ms, [0-9]* SPI bytes, [0-9]* rects$' "$tmp/dirty.txt")
 if [ $rc -eq 0 ] && [ "$n" -eq 4 ] && [ ! -s "$tmp/err" ]; then pass live_loop_frames_bounded_one_line_each
 else fail live_loop_frames_bounded_one_line_each "rc $rc, $n lines: $(head -n 2 "$tmp/dirty.txt" "$tmp/err")"; fi
 

@@ -42,6 +42,19 @@ env -u MAKEFLAGS -u MFLAGS -u MAKELEVEL make --no-print-directory run BUILD="$bu
 rc=$?
 if [ "$rc" -eq 0 ]; then pass make_run_status; else fail make_run_status "exit $rc: $(tail -n 5 "$tmp/log")"; fi
 check_tree make_run_outputs firmware/scenes "$tmp/out" "$tmp/log"
+grep -q '^make run: rendering every scene of firmware/scenes/' "$tmp/log" && pass make_run_says_rendering ||
+  fail make_run_says_rendering "$(head -n 3 "$tmp/log")"
+
+# The first build says what it builds and how far it is: with a build
+# directory of nothing (make -n: the commands it would run, without running
+# them), the line before the build and one line before each of the renderer
+# core's number formats.
+env -u MAKEFLAGS -u MFLAGS -u MAKELEVEL make --no-print-directory -n run BUILD="$tmp/fresh" OUT="$tmp/out4" \
+  >"$tmp/log4" 2>&1
+first=$(grep -c "^make run: building $tmp/fresh/host_sim: the renderer core once per number format (11 of 11" "$tmp/log4")
+steps=$(grep -c '^make run:   \[[0-9]*/11\] the renderer core in [a-z0-9]*$' "$tmp/log4")
+if [ "$first" -eq 1 ] && [ "$steps" -eq 11 ]; then pass make_run_first_build_progress
+else fail make_run_first_build_progress "$first announcement(s), $steps progress lines: $(head -c 400 "$tmp/log4")"; fi
 
 # The loop on a tree with nested directories (small test scenes).
 mkdir -p "$tmp/sc/book" "$tmp/sc/extra/deep"

@@ -112,7 +112,7 @@ fi
 rm "$tmp/cube.mtl"
 "$hs" --scene "$tmp/bad.scene" --panel none --size 32x32 --out "$tmp/bad.png" >/dev/null 2>"$tmp/e"
 rc=$?
-if [ "$rc" -eq 2 ] && grep -q "^$tmp/bad.obj:1:8: error: cannot open material file '$tmp/cube.mtl'\$" "$tmp/e"; then
+if [ "$rc" -eq 2 ] && grep -q "^$tmp/bad.obj:1:8: error: cannot open material file '$tmp/cube.mtl': No such file or directory (its path is relative to the model file's directory)\$" "$tmp/e"; then
   pass obj_missing_material_file
 else
   fail obj_missing_material_file "exit $rc: $(cat "$tmp/e")"

@@ -4,6 +4,7 @@
 #include "scene_format.h"
 #include "scene_parse.h"
 #include "raytracer.h"
+#include "raster.h"
 
 _Static_assert(CORE_SCENE_EINPUT == SCENE_EINPUT && CORE_SCENE_EIO == SCENE_EIO && CORE_SCENE_ENOMEM == SCENE_ENOMEM,
                "core_api.h repeats enum scene_status");
@@ -112,8 +113,17 @@ static void move_camera(void *scene, double dx, double dy, double dz)
                                  num_from_double(num_to_double(p.z) + dz));
 }
 
+static int instance_facing(const struct render_ctx *ctx, uint16_t i, uint32_t *facing, uint32_t *culled,
+                           const char **model)
+{
+    const struct scene *s = ctx->scene;
+    if (s->kind != SCENE_RASTER || i >= s->ninstances) return -1;
+    *model = s->models[s->instances[i].model].name;
+    return raster_instance_facing(ctx->work, i, facing, culled);
+}
+
 const struct core_api API = {
     NUM_NAME, load, parse_text, read_text, free_scene, info, work_size, init, render_begin_frame, render_strip,
     &num_saturations, API_FRAC, format, exact_methods, render_set_pass, set_fits, decision_probe, move_camera,
-    sibling_work_size,
+    sibling_work_size, instance_facing,
 };

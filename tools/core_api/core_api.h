@@ -73,6 +73,10 @@ struct core_api {
     void (*move_camera)(void *scene, double dx, double dy, double dz);
     /* render_sibling_work_size (render.h): a second core's context */
     size_t (*sibling_work_size)(const void *scene, uint16_t w, uint16_t h, uint16_t strip_rows);
+    /* raster_instance_facing (raster.h) of instance i after begin_frame, and
+     * its model's name: 0, or -1 (a ray-traced scene, no such instance). */
+    int (*instance_facing)(const struct render_ctx *ctx, uint16_t i, uint32_t *facing, uint32_t *culled,
+                           const char **model);
 };
 
 extern const struct core_api core_api_fixed, core_api_float, core_api_double;

@@ -36,8 +36,12 @@ struct scene_format_range {
     char what[160];            /* object and quantity */
 };
 
+/* The farthest from the origin the hit points of a sphere around the
+ * camera may lie (scene_format.c, rt_inside). */
+#define SCENE_FORMAT_INSIDE_LIMIT 4096.0
+
 /* Why a scene is ill-conditioned for fixed point (scene_format.ill). */
-enum scene_ill { SCENE_ILL_DIRECTION = 1, SCENE_ILL_RADIUS = 2, SCENE_ILL_PIXEL_STEP = 3 };
+enum scene_ill { SCENE_ILL_DIRECTION = 1, SCENE_ILL_RADIUS = 2, SCENE_ILL_PIXEL_STEP = 3, SCENE_ILL_INSIDE = 4 };
 
 struct scene_format {
     int width, height;         /* the render size analysed */
@@ -58,6 +62,10 @@ struct scene_format {
     int ill;                   /* refused as ill-conditioned at ill_frac, the format the largest
                                   quantity needs: enum scene_ill (scene_format_refusal) */
     int ill_frac;
+    int inside;                /* ray tracer: the sphere around the camera whose hit points lie farthest
+                                  from the origin (-1: none) */
+    double inside_radius, inside_far;   /* its radius, and |C| + r */
+    double inside_limit;       /* SCENE_FORMAT_INSIDE_LIMIT (SCENE_ILL_INSIDE) */
     struct scene_format_range big;      /* the largest of the five above */
     double need;               /* 2 x big.value */
     int num_frac;              /* the chosen NUM_FRAC; -1 when nothing fits (refused) */

@@ -24,6 +24,11 @@
 #include <string.h>
 #include "scene_parse.h"
 #include "mipmap.h"
+#include "suggest.h"
+#if defined(__unix__) || defined(__APPLE__)
+#include <unistd.h>
+#define HAVE_GETCWD 1
+#endif
 #ifdef WITH_PNG
 #include <png.h>
 #endif
@@ -544,7 +549,11 @@ static int get_choice(struct parser *p, const struct node *n, const char *what, 
         if (i) strncat(list, ", ", sizeof list - strlen(list) - 1);
         strncat(list, names[i], sizeof list - strlen(list) - 1);
     }
-    if (n->kind == N_NAME) FAIL_N(p, n, "%s: unknown value '%s' (expected one of %s)", what, n->text, list);
+    if (n->kind == N_NAME) {
+        const char *near = suggest_nearest(n->text, names);
+        if (near) FAIL_N(p, n, "%s: unknown value '%s' (did you mean '%s'? expected one of %s)", what, n->text, near, list);
+        FAIL_N(p, n, "%s: unknown value '%s' (expected one of %s)", what, n->text, list);
+    }
     FAIL_N(p, n, "%s must be one of %s, found %s", what, list, kind_names[n->kind]);
     return 0;
 }
@@ -597,7 +606,11 @@ static void fields(struct parser *p, const struct node *blk, const char *what,
         int i;
         for (i = 0; i < nk; i++)
             if (!strcmp(keys[i], e->key)) break;
-        if (i == nk) FAIL_K(p, e, "unknown key '%s' in %s", e->key, what);
+        if (i == nk) {
+            const char *near = suggest_nearest(e->key, keys);
+            FAIL_K(p, e, "unknown key '%s' in %s%s%s%s", e->key, what, near ? " (did you mean '" : "",
+                   near ? near : "", near ? "'?)" : "");
+        }
         if (vals[i]) FAIL_K(p, e, "duplicate '%s' in %s (first at %d:%d)", e->key, what, vals[i]->kline, vals[i]->kcol);
         vals[i] = e;
     }
@@ -1099,7 +1112,12 @@ static void read_triangle(struct parser *p, const struct node *e, struct ras_tri
         }
         int which = !strcmp(c->key, "color") ? 0 : !strcmp(c->key, "normal") ? 1 : !strcmp(c->key, "normals") ? 2
                   : !strcmp(c->key, "uv") ? 3 : -1;
-        if (which < 0) FAIL_K(p, c, "unknown key '%s' in triangle", c->key);
+        if (which < 0) {
+            static const char *const tri_keys[] = { "color", "normal", "normals", "uv", NULL };
+            const char *near = suggest_nearest(c->key, tri_keys);
+            FAIL_K(p, c, "unknown key '%s' in triangle%s%s%s", c->key, near ? " (did you mean '" : "",
+                   near ? near : "", near ? "'?)" : "");
+        }
         int slot = which == 2 ? 1 : which;
         if (seen[slot]) FAIL_K(p, c, "duplicate '%s' in triangle (first at %d:%d)", c->key, seen[slot]->kline,
                                seen[slot]->kcol);
@@ -1345,6 +1363,21 @@ static FILE *open_file(struct parser *p, int k, const char *path)
     return p->files[k];
 }
 
+/* Ends the parse for a file that did not open (errno from fopen): the
+ * message names the path looked at, made absolute where the host can say
+ * from where, and why it failed. */
+static void fail_open(struct parser *p, const struct where *at, const char *what, const char *path,
+                      const char *relative_to)
+{
+    const char *why = strerror(errno);
+    char cwd[512] = "";
+#ifdef HAVE_GETCWD
+    if (path[0] != '/' && !getcwd(cwd, sizeof cwd)) cwd[0] = 0;
+#endif
+    FAIL_W(p, at, "cannot open %s '%s%s%s': %s (its path is relative to the %s's directory)", what, cwd,
+           cwd[0] ? "/" : "", path, why, relative_to);
+}
+
 static void close_file(struct parser *p, int k)
 {
     if (p->files[k]) fclose(p->files[k]);
@@ -1404,7 +1437,7 @@ static uint8_t *load_image(struct parser *p, const struct where *at, const char 
     static const unsigned char png_sig[8] = { 0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n' };
     unsigned char sig[8];
     FILE *f = open_file(p, 2, path);
-    if (!f) FAIL_W(p, at, "cannot open image file '%s'", path);
+    if (!f) fail_open(p, at, "image file", path, "scene file");
     size_t n = fread(sig, 1, sizeof sig, f);
     rewind(f);
     uint8_t *px = n == sizeof sig && !memcmp(sig, png_sig, sizeof sig) ? read_png(p, at, f, path, w, h)
@@ -1800,7 +1833,7 @@ static void obj_mtllib(struct obj_model *om, struct obj_reader *r, struct obj_re
         file_path(p, &at, "material file", dir, t, path);
         const char *kept = dup_str(p, path, strlen(path));   /* messages name it after the file is read */
         FILE *f = open_file(p, 1, kept);
-        if (!f) FAIL_W(p, &at, "cannot open material file '%s'", kept);
+        if (!f) fail_open(p, &at, "material file", kept, "model file");
         obj_open(mr, p, f, kept);
         read_mtl(om, mr);
         close_file(p, 1);
@@ -2020,7 +2053,10 @@ static void read_obj_model(struct parser *p, struct build *b, const struct node 
     om.mtl = scratch_alloc(p, MAX_MATERIALS, sizeof *om.mtl);
     struct obj_reader *r = scratch_alloc(p, 2, sizeof *r);
     FILE *f = open_file(p, 0, opath);
-    if (!f) FAIL_N(p, file, "cannot open model file '%s'", opath);
+    if (!f) {
+        struct where fat = node_where(p, file);
+        fail_open(p, &fat, "model file", opath, "scene file");
+    }
     obj_open(r, p, f, opath);
     obj_count(&om, r, r + 1, b->ntextures);
 
@@ -2269,7 +2305,14 @@ static void check_top(struct parser *p, const struct node *top, struct top *t, s
         if (!e->key) FAIL_N(p, e, "expected 'key = value' or 'key { ... }' at the top level, found %s",
                             kind_names[e->kind]);
         int i = top_index(e->key);
-        if (i < 0) FAIL_K(p, e, "unknown key '%s'", e->key);
+        if (i < 0) {
+            const char *keys[NTOP + 1];
+            for (int k = 0; k < NTOP; k++) keys[k] = top_rows[k].key;
+            keys[NTOP] = NULL;
+            const char *near = suggest_nearest(e->key, keys);
+            FAIL_K(p, e, "unknown key '%s'%s%s%s", e->key, near ? " (did you mean '" : "", near ? near : "",
+                   near ? "'?)" : "");
+        }
         if (!top_rows[i].repeatable) {
             const struct node *f = t->single[i];
             if (f) FAIL_K(p, e, "duplicate '%s' (first at %d:%d)", e->key, f->kline, f->kcol);
@@ -2467,6 +2510,9 @@ static int parse(const char *file, const char *dir, const char *text, size_t len
     p->src = text;
     p->len = len;
     p->line = p->col = 1;
+    /* a UTF-8 byte order mark, which some editors write first, is not part of the text */
+    if (len >= 3 && (unsigned char)text[0] == 0xEF && (unsigned char)text[1] == 0xBB && (unsigned char)text[2] == 0xBF)
+        p->pos = 3;
     p->err = err;
     p->errlen = errlen;
     if (dir) {

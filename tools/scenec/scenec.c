@@ -39,6 +39,7 @@
 #include "core_api.h"
 #include "scene_format.h"
 #include "scene_parse.h"
+#include "suggest.h"
 
 /* the fixed-point core at NUM_FRAC 12 (mk/scene.mk): it loads every scene any
  * format can hold, and the work layout does not depend on NUM_FRAC */
@@ -496,12 +497,29 @@ static int write_deps(const char *dpath, const char *outc, const char *scene)
     return 0;
 }
 
-static int usage(void)
-{
-    fprintf(stderr, "usage: scenec [--size WxH] [--strip-rows N] [--fracs 20,...,12] [--id NAME] [--allow-wide] "
-                    "[--target-work BYTES[:SIBLING]] [--deps OUT.d] -o OUT.c SCENE\n");
-    return 2;
-}
+static const char help_text[] =
+    "usage: scenec [options] -o OUT.c SCENE\n"
+    "Compiles the scene file SCENE into C source for the firmware: OUT.c (the scene as\n"
+    "const data and one static work buffer) and OUT.h (its declarations and the number\n"
+    "format it was checked for); prints the scene's ranges, the format chosen and why no\n"
+    "intermediate overflows (docs/scene-format.md, \"tools/scenec\").\n"
+    "  -o OUT.c                      the C file to write (required; OUT.h beside it)\n"
+    "  --size WxH                    render size, each side 1..4096 (default 240x240)\n"
+    "  --strip-rows N                rows per strip, 1..4096 (default 16; at most the height)\n"
+    "  --fracs F,F,...               the fixed-point formats Q(31-F).F allowed, F in 12..20,\n"
+    "                                finest first (default 20,19,18,17,16,15,14,13,12)\n"
+    "  --id NAME                     the C identifier of the scene (default: its path under\n"
+    "                                firmware/scenes/ without .scene, other characters as _)\n"
+    "  --allow-wide                  when no format of --fracs holds the scene, take the\n"
+    "                                coarsest of them anyway instead of refusing it\n"
+    "  --target-work BYTES[:SIBLING] the renderer's work memory on the target (and of a\n"
+    "                                second core's context), as measured there (default:\n"
+    "                                this host's fixed-point core, an upper bound)\n"
+    "  --deps OUT.d                  also write a make rule: OUT.c and OUT.h depend on the\n"
+    "                                scene and every file it made scenec read\n"
+    "  -h, --help                    this text\n"
+    "exit status: 0 ok, 1 internal or output error, 2 usage or input error (scene errors\n"
+    "             as FILE:LINE:COLUMN: error: MESSAGE; a scene no format holds)\n";
 
 /* ---- command line ------------------------------------------------------------ */
 
@@ -517,21 +535,51 @@ struct args {
 static int parse_fracs(char *p, struct args *a)
 {
     a->nfracs = 0;
-    while (*p && a->nfracs < 16) {
-        a->fracs[a->nfracs] = (int)strtol(p, &p, 10);
-        if (a->fracs[a->nfracs] < 12 || a->fracs[a->nfracs] > 20) return -1;
-        a->nfracs++;
-        if (*p == ',') p++;
+    if (!*p) return -1;
+    while (*p) {
+        if (a->nfracs == 16) return -1;
+        char *e;
+        long f = strtol(p, &e, 10);
+        if (e == p || f < 12 || f > 20) return -1;
+        a->fracs[a->nfracs++] = (int)f;
+        p = e;
+        if (*p == ',' && p[1]) p++;
         else if (*p) return -1;
     }
     return 0;
 }
 
-/* 0, or -1 for a command line to answer with the usage */
+/* A usage error: its line on stderr; returns 2. */
+static int usage_error(const char *fmt, ...) __attribute__((format(printf, 1, 2)));
+static int usage_error(const char *fmt, ...)
+{
+    va_list ap;
+    fputs("scenec: ", stderr);
+    va_start(ap, fmt);
+    vfprintf(stderr, fmt, ap);
+    va_end(ap);
+    fputc('\n', stderr);
+    return 2;
+}
+
+/* A decimal integer in lo..hi, digits only; -1 if it is not one. */
+static long parse_int(const char *s, long lo, long hi)
+{
+    char *e;
+    if (*s < '0' || *s > '9') return -1;
+    long v = strtol(s, &e, 10);
+    return *e || v < lo || v > hi ? -1 : v;
+}
+
+/* 0, 2 after the message of a bad command line, or -1 for --help (printed). */
 static int parse_args(int argc, char **argv, struct args *a)
 {
     /* every format the renderers are checked at (tests/unit/test_scene_fracs.c) */
     static const int all_fracs[] = { 20, 19, 18, 17, 16, 15, 14, 13, 12 };
+    static const char *const with_arg[] = { "--size", "--strip-rows", "--fracs", "--id", "--target-work",
+                                            "--deps", "-o", NULL };
+    static const char *const all[] = { "--size", "--strip-rows", "--fracs", "--id", "--target-work",
+                                       "--deps", "--allow-wide", "--help", NULL };
     memset(a, 0, sizeof *a);
     a->width = a->height = 240;
     a->strip = 16;
@@ -540,40 +588,67 @@ static int parse_args(int argc, char **argv, struct args *a)
     memcpy(a->fracs, all_fracs, sizeof all_fracs);
     a->nfracs = 9;
     for (int i = 1; i < argc; i++) {
-        if (!strcmp(argv[i], "--size") && i + 1 < argc) {
-            if (sscanf(argv[++i], "%dx%d", &a->width, &a->height) != 2 || a->width < 1 || a->height < 1 ||
-                a->width > 4096 || a->height > 4096)
-                return -1;
-        } else if (!strcmp(argv[i], "--strip-rows") && i + 1 < argc) {
-            a->strip = atoi(argv[++i]);
-            if (a->strip < 1 || a->strip > 4096) return -1;
-        } else if (!strcmp(argv[i], "--fracs") && i + 1 < argc) {
-            if (parse_fracs(argv[++i], a)) return -1;
-        } else if (!strcmp(argv[i], "--id") && i + 1 < argc) {
-            a->idarg = argv[++i];
-        } else if (!strcmp(argv[i], "--target-work") && i + 1 < argc) {
-            char *e;
-            a->target_work = strtol(argv[++i], &e, 10);
-            if (*e == ':') {
-                char *f;
-                a->target_sibling = strtol(e + 1, &f, 10);
-                if (f == e + 1 || *f || a->target_sibling < 0 || a->target_sibling > 0x7fffffffL) return -1;
-                e = f;
-            }
-            if (*e || a->target_work < 0 || a->target_work > 0x7fffffffL) return -1;
-        } else if (!strcmp(argv[i], "--allow-wide")) {
-            a->allow_wide = 1;
-        } else if (!strcmp(argv[i], "--deps") && i + 1 < argc) {
-            a->deps = argv[++i];
-        } else if (!strcmp(argv[i], "-o") && i + 1 < argc) {
-            a->outc = argv[++i];
-        } else if (argv[i][0] == '-' || a->path) {
+        const char *opt = argv[i];
+        if (!strcmp(opt, "--help") || !strcmp(opt, "-h")) {
+            fputs(help_text, stdout);
             return -1;
+        }
+        if (!strcmp(opt, "--allow-wide")) {
+            a->allow_wide = 1;
+            continue;
+        }
+        int takes = 0;
+        for (int k = 0; with_arg[k]; k++) takes |= !strcmp(opt, with_arg[k]);
+        if (!takes) {
+            if (opt[0] != '-') {
+                if (a->path) return usage_error("one scene file only: '%s' and '%s' (try --help)", a->path, opt);
+                a->path = opt;
+                continue;
+            }
+            const char *near = !strncmp(opt, "--", 2) ? suggest_nearest(opt, all) : NULL;
+            if (near) return usage_error("unknown option '%s' (did you mean '%s'? try --help)", opt, near);
+            return usage_error("unknown option '%s' (try --help)", opt);
+        }
+        if (i + 1 >= argc || !argv[i + 1][0]) return usage_error("option %s needs an argument", opt);
+        char *val = argv[++i];
+        if (!strcmp(opt, "--size")) {
+            char *x = strchr(val, 'x');
+            long w = -1, h = -1;
+            if (x) {
+                *x = 0;
+                w = parse_int(val, 1, 4096);
+                h = parse_int(x + 1, 1, 4096);
+                *x = 'x';
+            }
+            if (w < 0 || h < 0) return usage_error("bad size '%s' (WxH, each side 1..4096)", val);
+            a->width = (int)w;
+            a->height = (int)h;
+        } else if (!strcmp(opt, "--strip-rows")) {
+            long n = parse_int(val, 1, 4096);
+            if (n < 0) return usage_error("bad strip height '%s' (1..4096)", val);
+            a->strip = (int)n;
+        } else if (!strcmp(opt, "--fracs")) {
+            if (parse_fracs(val, a)) return usage_error("bad --fracs '%s' (up to 16 of 12..20, comma-separated)", val);
+        } else if (!strcmp(opt, "--id")) {
+            a->idarg = val;
+        } else if (!strcmp(opt, "--target-work")) {
+            char *colon = strchr(val, ':');
+            if (colon) *colon = 0;
+            a->target_work = parse_int(val, 0, 0x7fffffffL);
+            if (colon) {
+                *colon = ':';
+                a->target_sibling = parse_int(colon + 1, 0, 0x7fffffffL);
+            }
+            if (a->target_work < 0 || (colon && a->target_sibling < 0))
+                return usage_error("bad --target-work '%s' (BYTES or BYTES:SIBLING, each 0..2147483647)", val);
+        } else if (!strcmp(opt, "--deps")) {
+            a->deps = val;
         } else {
-            a->path = argv[i];
+            a->outc = val;
         }
     }
-    if (!a->path || !a->outc) return -1;
+    if (!a->outc) return usage_error("-o OUT.c is required (try --help)");
+    if (!a->path) return usage_error("a scene file is required (try --help)");
     if (a->strip > a->height) a->strip = a->height;
     return 0;
 }
@@ -722,7 +797,8 @@ static int write_outputs(const struct args *a, const struct scene *s, const char
 int main(int argc, char **argv)
 {
     struct args a;
-    if (parse_args(argc, argv, &a)) return usage();
+    int prc = parse_args(argc, argv, &a);
+    if (prc) return prc < 0 ? 0 : prc;
 
     char err[600];
     struct scene *s = NULL;

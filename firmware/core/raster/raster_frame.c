@@ -172,7 +172,12 @@ static void instance_triangles(struct ras_ctx *rc, uint16_t i, uint32_t k0, uint
             num ys[3] = { rc->proj[vb + t->v[0]].py, rc->proj[vb + t->v[1]].py, rc->proj[vb + t->v[2]].py }, lo, hi;
             range3(ys, &lo, &hi);
             *rr = rows_of_canvas_y(rc, lo, hi);
-            if (rr->r0 <= rr->r1) rc->part_drawn[part]++;
+            if (rr->r0 > rr->r1) continue;
+            /* counted unless the book's culling will drop it (as ras_book_render_triangle decides) */
+            if (rc->book && !o->wireframe && o->backface_cull &&
+                ras_facing_wide(a->c, ras_face_normal_wide(a->c, b->c, c->c)) <= 0)
+                continue;
+            rc->part_drawn[part]++;
         } else {
             const struct ras_pv *pa = &rc->def.pv[vb + t->v[0]], *pb = &rc->def.pv[vb + t->v[1]], *pc = &rc->def.pv[vb + t->v[2]];
             const int inside = pa->inside && pb->inside && pc->inside;
@@ -180,6 +185,7 @@ static void instance_triangles(struct ras_ctx *rc, uint16_t i, uint32_t k0, uint
             *rr = inside ? sub_rows(rc, lo, hi) : default_tri_rows(rc, a->c, b->c, c->c);
             if (rr->r0 > rr->r1) { rc->def.tri_flags[tb + k] = 0; continue; }
             ras_tri_cache(rc, in, ri, m, t, tb + k, part);
+            if (!(rc->def.tri_flags[tb + k] & RAS_TRI_LIVE)) continue;   /* culled or degenerate: not drawn */
             rc->part_drawn[part]++;
             /* what the strips visit: live triangles only, and those of three
              * projected corners only on the rows of the pixel centres they span */
@@ -308,6 +314,31 @@ int raster_frame_triangles(void *work, unsigned part, unsigned parts)
     for (uint16_t i = 0; i < s->ninstances; i++)
         if (part_slice(rc->ntris, part, parts, rc->inst[i].tbase, s->models[s->instances[i].model].ntris, &k0, &k1))
             instance_triangles(rc, i, k0, k1, (int)part);
+    return 0;
+}
+
+int raster_instance_facing(const void *work, uint16_t i, uint32_t *facing, uint32_t *culled)
+{
+    const struct ras_ctx *rc = ras_ctx_of((void *)(uintptr_t)work);
+    if (rc->owner) rc = rc->owner;
+    const struct scene *s = rc->s;
+    *facing = *culled = 0;
+    if (i >= s->ninstances) return -1;
+    const struct ras_inst *ri = &rc->inst[i];
+    if (!ri->visible) return 0;
+    const struct ras_model *m = &s->models[s->instances[i].model];
+    const int cull = s->ras.backface_cull && !s->ras.wireframe;
+    for (uint32_t k = 0; k < m->ntris; k++) {
+        const struct ras_triangle *t = &m->tris[k];
+        if (t->v[0] >= m->nverts || t->v[1] >= m->nverts || t->v[2] >= m->nverts) continue;
+        vec3 a = rc->verts[ri->vbase + t->v[0]].c, b = rc->verts[ri->vbase + t->v[1]].c,
+             c = rc->verts[ri->vbase + t->v[2]].c;
+        struct ras_wnormal wf = ras_face_normal_wide(a, b, c);
+        wnum f = ras_facing_wide(a, wf);
+        if (f == 0 && wf.x == 0 && wf.y == 0 && wf.z == 0) continue;   /* degenerate */
+        if (f <= 0 && cull) (*culled)++;
+        else (*facing)++;
+    }
     return 0;
 }
 

@@ -21,7 +21,10 @@ int fw_board_init(struct hal *h);
  * host build of the application stops after its passes. */
 int fw_board_again(void);
 
-/* Text to the serial console (UART), blocking. */
+/* Text to the serial console (UART), from core 0; whole, in order. It may
+ * return before the text has left the board (the RP2040 queues it for the
+ * UART's transmit interrupt), so a line's time is what it says, not when it
+ * arrives. */
 void fw_board_puts(const char *s);
 
 /* Cores available for rendering: 1 or 2. */

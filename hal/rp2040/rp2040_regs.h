@@ -120,8 +120,13 @@
 #define UARTFBRD           (UART0_BASE + 0x28)
 #define UARTLCR_H          (UART0_BASE + 0x2c)
 #define UARTCR             (UART0_BASE + 0x30)
+#define UARTIFLS           (UART0_BASE + 0x34)
+#define UARTIMSC           (UART0_BASE + 0x38)
+#define UARTICR            (UART0_BASE + 0x44)
 #define UARTFR_TXFF        (1u << 5)
 #define UARTFR_BUSY        (1u << 3)
+#define UART_TXIM          (1u << 5)     /* UARTIMSC/UARTICR: transmit interrupt */
+#define UART0_IRQ          20u
 
 /* ---- DMA -------------------------------------------------------------- */
 #define DMA_BASE           0x50000000u
@@ -145,5 +150,8 @@
 
 /* ---- Cortex-M0+ private peripherals ----------------------------------- */
 #define PPB_VTOR           0xe000ed08u
+#define NVIC_ISER          0xe000e100u
+#define NVIC_ICER          0xe000e180u
+#define NVIC_ICPR          0xe000e280u
 
 #endif

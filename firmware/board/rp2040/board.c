@@ -1,7 +1,20 @@
 /* SPDX-License-Identifier: MIT */
-/* board.c — RP2040 clocks, resets, UART0, timer and the second core. */
+/* board.c — RP2040 clocks, resets, UART0 (its log ring), timer and the second core. */
 #include "board.h"
 #include "rp2040_regs.h"
+
+/* ---- the log ring ---------------------------------------------------------
+ * Written by board_puts on core 0 with interrupts masked, read by the UART
+ * interrupt on core 0: head and tail count characters (free-running, the
+ * index is the count modulo the size). */
+#ifndef RP2040_LOG_RING
+#define RP2040_LOG_RING 512
+#endif
+#if RP2040_LOG_RING & (RP2040_LOG_RING - 1)
+#error "RP2040_LOG_RING must be a power of two"
+#endif
+static char log_ring[RP2040_LOG_RING];
+static volatile uint32_t log_head, log_tail;
 
 static void unreset(uint32_t mask)
 {
@@ -81,8 +94,14 @@ static void uart_init(void)
     REG(UARTIBRD) = 67;
     REG(UARTFBRD) = 52;
     REG(UARTLCR_H) = (3u << 5) | (1u << 4);  /* 8 bits, FIFOs on */
+    REG(UARTIFLS) = 0;                       /* transmit interrupt at 1/8 full (4 left) */
+    REG(UARTIMSC) = 0;
+    REG(UARTICR) = 0x7ffu;
     REG(UARTCR) = (1u << 0) | (1u << 8);     /* UARTEN, TXE */
     REG(GPIO_CTRL(RP2040_UART_TX)) = GPIO_FUNC_UART;
+    log_head = log_tail = 0;
+    REG(NVIC_ICPR) = 1u << UART0_IRQ;
+    REG(NVIC_ISER) = 1u << UART0_IRQ;        /* core 0's NVIC: core 1 never takes it */
 }
 
 void board_init(void)
@@ -109,15 +128,64 @@ void board_delay_us(uint32_t us)
     while (board_now_us() < end) {}
 }
 
-void board_putc(char c)
+
+static uint32_t irq_mask(void)
 {
-    while (REG(UARTFR) & UARTFR_TXFF) {}
-    REG(UARTDR) = (uint8_t)c;
+    uint32_t m;
+    __asm__ volatile("mrs %0, primask\n cpsid i" : "=r"(m)::"memory");
+    return m;
+}
+
+static void irq_restore(uint32_t m) { __asm__ volatile("msr primask, %0" ::"r"(m) : "memory"); }
+
+/* Moves characters from the ring to the FIFO while it has room (never
+ * waits); the transmit interrupt stays enabled while the ring holds more. */
+static void log_kick(void)
+{
+    uint32_t t = log_tail;
+    const uint32_t h = log_head;
+    while (t != h && !(REG(UARTFR) & UARTFR_TXFF)) REG(UARTDR) = (uint8_t)log_ring[t++ % RP2040_LOG_RING];
+    log_tail = t;
+    /* the FIFO is full when characters are left: the interrupt comes when
+     * it has drained to its trigger level */
+    if (t != h) REG_SET(UARTIMSC) = UART_TXIM;
+    else REG_CLR(UARTIMSC) = UART_TXIM;
+}
+
+void board_uart0_irq(void)
+{
+    REG(UARTICR) = UART_TXIM;
+    log_kick();
 }
 
 void board_puts(const char *s)
 {
-    while (*s) board_putc(*s++);
+    const uint32_t m = irq_mask();
+    for (; *s; s++) {
+        if (log_head - log_tail == RP2040_LOG_RING) {
+            /* full: the oldest character to the FIFO as soon as it has room */
+            while (REG(UARTFR) & UARTFR_TXFF) {}
+            REG(UARTDR) = (uint8_t)log_ring[log_tail++ % RP2040_LOG_RING];
+        }
+        log_ring[log_head++ % RP2040_LOG_RING] = *s;
+    }
+    log_kick();
+    irq_restore(m);
+}
+
+void board_puts_sync(const char *s)
+{
+    const uint32_t m = irq_mask();
+    REG_CLR(UARTIMSC) = UART_TXIM;
+    while (log_tail != log_head) {
+        while (REG(UARTFR) & UARTFR_TXFF) {}
+        REG(UARTDR) = (uint8_t)log_ring[log_tail++ % RP2040_LOG_RING];
+    }
+    for (; *s; s++) {
+        while (REG(UARTFR) & UARTFR_TXFF) {}
+        REG(UARTDR) = (uint8_t)*s;
+    }
+    irq_restore(m);
 }
 
 uint32_t board_core_id(void) { return REG(SIO_CPUID); }

@@ -30,9 +30,17 @@ uint64_t board_now_us(void);
 void board_delay_us(uint32_t us);
 void board_delay_cycles(uint32_t n);   /* at least n cycles of clk_sys */
 
-/* Blocking UART0 output. */
-void board_putc(char c);
+/* UART0 output (core 0 only): the text joins a ring of RP2040_LOG_RING
+ * characters that the UART's transmit interrupt moves into its 32-character
+ * FIFO as it drains, so the caller does not wait for the line; only when the
+ * ring is full does it wait, for room in the FIFO, passing the oldest
+ * character there itself. The text is never dropped. */
 void board_puts(const char *s);
+/* The ring emptied, then the text written straight to the FIFO, waiting for
+ * room (a fault report: from a handler, with the interrupt not taken). */
+void board_puts_sync(const char *s);
+/* UART0's interrupt handler (vector 36). */
+void board_uart0_irq(void);
 
 /* Core id (0 or 1) of the caller. */
 uint32_t board_core_id(void);

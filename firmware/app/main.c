@@ -579,7 +579,10 @@ int main(void)
         fw_board_puts("error the panel in this rotation is not FW_WIDTH x FW_HEIGHT\r\n");
         return 1;
     }
-    if (dual) fw_board_core1_start(core1_main);
+    if (dual && fw_board_core1_start(core1_main) != 0) {
+        fw_board_puts("error core 1 did not answer the launch sequence: one core\r\n");
+        dual = 0;
+    }
 
     do {
         for (unsigned si = 0; si < fw_scene_count; si++) {

@@ -27,6 +27,13 @@
 #define RESET_TIMER        (1u << 21)
 #define RESET_UART0        (1u << 22)
 
+#define RESET_IO_RESETS    (RESET_DMA | RESET_IO_BANK0 | RESET_PADS_BANK0 | RESET_SPI0 | RESET_TIMER | RESET_UART0)
+
+/* ---- power-on state machine ------------------------------------------------ */
+#define PSM_BASE           0x40010000u
+#define PSM_FRCE_OFF       (PSM_BASE + 0x4)
+#define PSM_PROC1          (1u << 16)
+
 /* ---- clocks ---------------------------------------------------------- */
 #define CLOCKS_BASE        0x40008000u
 #define CLK_REF_CTRL       (CLOCKS_BASE + 0x30)

@@ -39,6 +39,11 @@
  *                       the frames must not depend on how the cores interleave)
  *   --inject-nmi N      raise an NMI on core 0 after N cycles (tests: the
  *                       firmware's fault report, a "fault ..." UART line)
+ *   --reset-core0-at-frame N   once N frames are on the glass, reset core 0
+ *                       alone (as a debug probe's reset or SYSRESETREQ do:
+ *                       core 1 and the peripherals go on) and boot it again
+ *                       through boot2; the firmware must recover (tests: the
+ *                       frames after it; the "boot" line is then seen twice)
  *
  * Boot without a boot ROM image (rp2040js 1.4.1 has none): the image is
  * copied into the flash array, its boot2 checked and run from SRAM as the
@@ -68,7 +73,7 @@ function usage(msg) {
 }
 
 function parseArgs(argv) {
-  const o = { frames: 1, maxCycles: 4e9, panel: 'st7789', pins: { dc: 16, cs: 17, rst: 20, bl: 21 }, uart: false, json: false, average: false, numeric: 'fixed', variant: 'single-core', core1Speed: 1, injectNmi: 0 };
+  const o = { frames: 1, maxCycles: 4e9, panel: 'st7789', pins: { dc: 16, cs: 17, rst: 20, bl: 21 }, uart: false, json: false, average: false, numeric: 'fixed', variant: 'single-core', core1Speed: 1, injectNmi: 0, resetCore0At: 0 };
   for (let i = 0; i < argv.length; i++) {
     const a = argv[i];
     const val = () => { if (i + 1 >= argv.length) usage(`${a} needs a value`); return argv[++i]; };
@@ -91,6 +96,7 @@ function parseArgs(argv) {
       case '--average': o.average = true; break;
       case '--numeric': o.numeric = val(); break;
       case '--variant': o.variant = val(); break;
+      case '--reset-core0-at-frame': o.resetCore0At = Number(val()); if (!(o.resetCore0At >= 1)) usage('bad --reset-core0-at-frame'); break;
       case '--inject-nmi': o.injectNmi = Number(val()); if (!(o.injectNmi > 0)) usage('bad --inject-nmi'); break;
       case '--core1-speed': o.core1Speed = Number(val()); if (!(o.core1Speed >= 0.01 && o.core1Speed <= 100)) usage('--core1-speed must be in 0.01..100'); break;
       default: usage(`unknown option '${a}'`);
@@ -167,6 +173,12 @@ function main() {
   /* UART0's transmit FIFO drains at the baud rate (uart.js); the time of an
    * access is the local time of the core making it */
   const uartTx = new UartTx(mcu, mcu.uart[0], () => dual.local[dual.cur]);
+  /* RESETS: UART0 (bit 22) held in reset loses what it was sending */
+  const resetsBlock = mcu.peripherals[0x4000c], resetsWrite = resetsBlock.writeUint32.bind(resetsBlock);
+  resetsBlock.writeUint32 = (off, v) => {
+    resetsWrite(off, v);
+    if (off === 0 && (v & (1 << 22))) uartTx.reset();
+  };
 
   let panel;
   try { panel = new EmuPanel(o.panel); } catch (e) { usage(e.message); }
@@ -225,6 +237,8 @@ function main() {
     frames.push(Object.assign(b, { ns: endNs - b.t_ns, spi_bytes: end.snap.spi - from.spi,
       xip_misses: end.snap.miss - from.miss, xip_stall_cycles: end.snap.stall - from.stall, px: end.px }));
   };
+  /* a line cut by the UART's reset is dropped */
+  uartTx.onReset = () => { if (o.uart && uartLine) process.stderr.write('\n'); uartLine = ''; };
   uartTx.onByte = (b) => {
     const ch = String.fromCharCode(b);
     if (o.uart) process.stderr.write(ch);
@@ -276,6 +290,20 @@ function main() {
     if (b) finish(begins.shift(), now, end); else ends.push(end);
   };
 
+  /* core 0 alone reset and booted again: the frame it was drawing never
+   * ends; frames are counted again from the next begin line */
+  const resetCore0 = () => {
+    dual.resetCore0();
+    bootThroughBoot2(mcu);
+    begins.length = 0;
+    ends.length = 0;
+    lastBegin = null;
+    lastEnd = null;
+    cmdLog = [];
+    resets++;
+  };
+  let resets = 0;
+
   /* boot2 from SRAM until it enters the application in flash */
   for (let i = 0; !(mcu.core.PC >= FLASH_BASE && mcu.core.PC < FLASH_BASE + 0x4000000); i++) {
     if (i > 100000 || !dual.run(1) || emuWarning) {
@@ -296,6 +324,10 @@ function main() {
       dual.cores[0].pendingNMI = true;
       dual.cores[0].interruptsUpdated = true;
       o.injectNmi = 0;
+    }
+    if (o.resetCore0At && frames.length >= o.resetCore0At) {
+      o.resetCore0At = 0;
+      resetCore0();
     }
     if (fwError) break;
     if (emuWarning) { fwError = emuWarning; break; }
@@ -358,7 +390,8 @@ function main() {
   }
   if (o.outRaw) fs.writeFileSync(o.outRaw, rawLE(frames[frames.length - 1].px));
   const simS = (Date.now() - t0) / 1000;
-  process.stderr.write(`rp2040sim: ${frames.length} frame(s), ${Math.round(clock.nanos * cpuHz / 1e9)} cycles emulated in ${simS.toFixed(1)} s\n`);
+  process.stderr.write(`rp2040sim: ${frames.length} frame(s), ${Math.round(clock.nanos * cpuHz / 1e9)} cycles emulated in ${simS.toFixed(1)} s` +
+    (resets ? `, core 0 reset ${resets} time(s), core 1 by the firmware ${dual.core1Resets}` : '') + '\n');
 }
 
 main();

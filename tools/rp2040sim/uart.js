@@ -25,7 +25,8 @@
  *   at the flag that finds the FIFO full and goes on is no wait.
  * onByte(b) is called when the firmware writes a character (the firmware's
  * time: the lines the driver parses carry the moment they were written),
- * onWire(b) when it has left the shift register. */
+ * onWire(b) when it has left the shift register; reset() (the block reset
+ * through RESETS, which the driver calls) empties the FIFO, then onReset(). */
 
 const UARTDR = 0x00, UARTFR = 0x18, UARTIFLS = 0x34, UARTICR = 0x44;
 const FR_BUSY = 1 << 3, FR_TXFF = 1 << 5, FR_TXFE = 1 << 7;
@@ -84,6 +85,17 @@ class UartTx {
       this.stallLog.push([at, this.stallNs]);
     }
     this.runStart = this.runLast = null;
+  }
+
+  /* the block reset (RESETS): what the FIFO and the shift register held is
+   * lost */
+  reset() {
+    this.fifo = [];
+    this.shifting = false;
+    this.alarm.cancel();
+    this.txris = false;
+    this.ifls = 0x12;
+    if (this.onReset) this.onReset();
   }
 
   /* the waits ended at or before ns, their total (ns) */

@@ -104,8 +104,25 @@ static void uart_init(void)
     REG(NVIC_ISER) = 1u << UART0_IRQ;        /* core 0's NVIC: core 1 never takes it */
 }
 
+/* Core 0 may start with the rest of the chip still running: after a reset
+ * of core 0 alone (a debug probe's reset, SYSRESETREQ) core 1 is where the
+ * last run left it (rendering, or waiting for a message that will not come),
+ * a spinlock may be held, and DMA may still be sending. So core 1 goes back
+ * to the boot ROM through the power-on state machine (forced off, then
+ * released: it waits for the launch sequence again), every spinlock is
+ * released and the blocks the firmware uses are reset. */
+static void chip_to_known_state(void)
+{
+    REG_SET(PSM_FRCE_OFF) = PSM_PROC1;
+    while (!(REG(PSM_FRCE_OFF) & PSM_PROC1)) {}
+    REG_CLR(PSM_FRCE_OFF) = PSM_PROC1;
+    for (unsigned n = 0; n < 32; n++) REG(SIO_SPINLOCK(n)) = 1;   /* a write releases it */
+    REG_SET(RESETS_RESET) = RESET_IO_RESETS;
+}
+
 void board_init(void)
 {
+    chip_to_known_state();
     clocks_init();
     unreset(RESET_IO_BANK0 | RESET_PADS_BANK0 | RESET_TIMER | RESET_DMA | RESET_SPI0);
     uart_init();
@@ -220,20 +237,39 @@ static void fifo_drain(void)
     while (REG(SIO_FIFO_ST) & SIO_FIFO_VLD) (void)REG(SIO_FIFO_RD);
 }
 
-void board_core1_launch(void (*entry)(void), uint32_t *stack_top)
+/* The FIFO's next word into *v, waiting until the deadline (board_now_us);
+ * 0, or -1 when none came. */
+static int fifo_pop_until(uint32_t *v, uint64_t deadline)
+{
+    while (!(REG(SIO_FIFO_ST) & SIO_FIFO_VLD))
+        if (board_now_us() >= deadline) return -1;
+    *v = REG(SIO_FIFO_RD);
+    return 0;
+}
+
+int board_core1_launch(void (*entry)(void), uint32_t *stack_top)
 {
     /* The boot ROM on core 1 waits for 0, 0, 1, VTOR, SP, PC, echoing each
      * word; a wrong echo restarts the sequence. A 0 is sent only after
-     * draining, since core 1 may have stale words queued. */
+     * draining, since core 1 may have stale words queued. A core 1 that
+     * does not answer (not in the boot ROM) fails the launch after
+     * RP2040_LAUNCH_TIMEOUT_US. */
     const uint32_t seq[6] = { 0, 0, 1, (uint32_t)(uintptr_t)rp2040_vectors,
                               (uint32_t)(uintptr_t)stack_top, (uint32_t)(uintptr_t)entry };
+    const uint64_t deadline = board_now_us() + RP2040_LAUNCH_TIMEOUT_US;
     unsigned i = 0;
     while (i < 6) {
         if (seq[i] == 0) {
             fifo_drain();
             __asm__ volatile("sev");
         }
-        board_fifo_push(seq[i]);
-        i = (board_fifo_pop() == seq[i]) ? i + 1 : 0;
+        while (!(REG(SIO_FIFO_ST) & SIO_FIFO_RDY))
+            if (board_now_us() >= deadline) return -1;
+        REG(SIO_FIFO_WR) = seq[i];
+        __asm__ volatile("sev");
+        uint32_t echo;
+        if (fifo_pop_until(&echo, deadline) != 0) return -1;
+        i = (echo == seq[i]) ? i + 1 : 0;
     }
+    return 0;
 }

@@ -23,6 +23,8 @@
 typedef void (*vector_fn)(void);
 extern const vector_fn rp2040_vectors[16 + 26];
 
+/* Brings core 1, the spinlocks and the blocks used to a known state (core 0
+ * may have been reset alone), then clocks, GPIO, timer, DMA, SPI0, UART0. */
 void board_init(void);
 
 /* Microseconds since boot (64-bit timer, never wraps in practice). */
@@ -46,8 +48,12 @@ void board_uart0_irq(void);
 uint32_t board_core_id(void);
 
 /* Starts core 1 at entry(), with its stack top at stack_top (8-byte aligned),
- * through the boot ROM's SIO FIFO handshake. */
-void board_core1_launch(void (*entry)(void), uint32_t *stack_top);
+ * through the boot ROM's SIO FIFO handshake; 0, or -1 when core 1 did not
+ * complete it within RP2040_LAUNCH_TIMEOUT_US. */
+#ifndef RP2040_LAUNCH_TIMEOUT_US
+#define RP2040_LAUNCH_TIMEOUT_US 100000u
+#endif
+int board_core1_launch(void (*entry)(void), uint32_t *stack_top);
 
 /* The inter-core lock: SIO spinlock 31, with memory barriers (an access
  * inside it is not moved out by the compiler or the bus). */

@@ -14,7 +14,11 @@ void fw_board_puts(const char *s) { board_puts(s); }
 int fw_board_again(void) { return 1; }
 
 unsigned fw_board_cores(void) { return 1u; }
-void fw_board_core1_start(void (*entry)(void)) { (void)entry; }
+int fw_board_core1_start(void (*entry)(void))
+{
+    (void)entry;
+    return -1;
+}
 void fw_board_send(uint32_t v) { (void)v; }
 uint32_t fw_board_recv(void) { return 0; }
 void fw_board_lock(void) {}

@@ -225,11 +225,12 @@ ST_CFLAGS := $(ST_CPU) -O2 -g -std=c11 $(WARN) -ffunction-sections -fdata-sectio
 ST_LDFLAGS := $(ST_CPU) --specs=nano.specs -nostartfiles -T $(ST_DIR)/stm32f411.ld \
               -Wl,--gc-sections -Wl,--no-warn-rwx-segments
 
-# $(1) = image name, $(2) = numeric mode (fixed point at the book scenes' format)
+# $(1) = image name, $(2) = numeric mode (fixed point at the book scenes' format),
+# $(3) = extra flags
 define ST_IMAGE
 $(FW_OUT)/stm32f411/obj-$(1)/%.o: %.c
 	@mkdir -p $$(@D)
-	$$(Q)$$(ARM_CC) $$(ST_CFLAGS) -DNUM_MODE=$$(NUM_MODE_$(2)) $(if $(filter fixed,$(2)),$(FW_BOOK_FRAC_FLAGS)) -MMD -MP -c $$< -o $$@
+	$$(Q)$$(ARM_CC) $$(ST_CFLAGS) -DNUM_MODE=$$(NUM_MODE_$(2)) $(if $(filter fixed,$(2)),$(FW_BOOK_FRAC_FLAGS)) $(3) -MMD -MP -c $$< -o $$@
 $(FW_OUT)/stm32f411/$(1).elf: $(patsubst %.c,$(FW_OUT)/stm32f411/obj-$(1)/%.o,$(ST_SRCS)) $(ST_DIR)/stm32f411.ld
 	$$(Q)$$(ARM_CC) $$(ST_LDFLAGS) -Wl,-Map=$(FW_OUT)/stm32f411/$(1).map \
 		$$(filter %.o,$$^) -lm -lc -lgcc -o $$@
@@ -238,6 +239,8 @@ $(FW_OUT)/stm32f411/$(1).bin: $(FW_OUT)/stm32f411/$(1).elf
 endef
 $(eval $(call ST_IMAGE,cgfs,$(STM32_NUM_MODE)))
 $(eval $(call ST_IMAGE,cgfs-fixed,fixed))
+# tests only (tests/system/test_stm32_qemu.sh): faults right after board_init
+$(eval $(call ST_IMAGE,cgfs-fault-test,$(STM32_NUM_MODE),-DSTM32_TEST_FAULT=1))
 $(call fw_frac_objs,$(FW_OUT)/stm32f411/obj-cgfs-fixed,$(ST_SRCS)): $(FW_BOOK_FRAC_H)
 ifeq ($(STM32_NUM_MODE),fixed)
 $(call fw_frac_objs,$(FW_OUT)/stm32f411/obj-cgfs,$(ST_SRCS)): $(FW_BOOK_FRAC_H)
@@ -266,3 +269,8 @@ $(foreach t,m4f-qemu m0plus-qemu,$(call fw_frac_objs,$(BUILD)/bench/$(t)/fixed/f
     $(FW_BOOK_FRAC_H)
 BENCH_IMAGES += $(BUILD)/bench/m4f-qemu/fixed/frame.elf $(BUILD)/bench/m4f-qemu/float/frame.elf \
                 $(BUILD)/bench/m0plus-qemu/fixed/frame.elf
+
+# The STM32F411 image on qemu (netduinoplus2): the clock waits' timeouts, the
+# fault line and the reset (tests/system/test_stm32_qemu.sh).
+TESTS += tests/system/test_stm32_qemu.sh:$(BUILD)
+TEST_NEEDS_test_stm32_qemu := $(FW_OUT)/stm32f411/cgfs.elf $(FW_OUT)/stm32f411/cgfs-fault-test.elf

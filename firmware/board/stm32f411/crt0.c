@@ -88,6 +88,9 @@ void reset_handler(void)
     while (dst < __data_end) *dst++ = *src++;
     for (dst = __bss_start; dst < __bss_end; dst++) *dst = 0;
     board_init();
+#ifdef STM32_TEST_FAULT
+    __asm__ volatile("udf #0");   /* tests: the fault line and the reset */
+#endif
     main();
     for (;;) __asm__ volatile("wfi");
 }

@@ -274,3 +274,11 @@ BENCH_IMAGES += $(BUILD)/bench/m4f-qemu/fixed/frame.elf $(BUILD)/bench/m4f-qemu/
 # fault line and the reset (tests/system/test_stm32_qemu.sh).
 TESTS += tests/system/test_stm32_qemu.sh:$(BUILD)
 TEST_NEEDS_test_stm32_qemu := $(FW_OUT)/stm32f411/cgfs.elf $(FW_OUT)/stm32f411/cgfs-fault-test.elf
+TEST_DEPS += $(TEST_NEEDS_test_stm32_qemu)
+
+# docs/firmware.md against the build: its memory figures (tools/fw_sizes.py),
+# the image `make flash` writes.
+TEST_NEEDS_test_fw_docs := $(foreach i,cgfs-book cgfs-book-1core cgfs-cube cgfs-cube-1core cgfs-cube-ili9341 cgfs-rt \
+                              cgfs,$(FW_OUT)/pico/$(i).elf) $(FW_OUT)/stm32f411/cgfs.elf $(FW_OUT)/stm32f411/cgfs-fixed.elf
+TEST_DEPS += $(TEST_NEEDS_test_fw_docs)
+TESTS     += tests/system/test_fw_docs.sh:$(BUILD)

@@ -10,6 +10,8 @@
 #   cgfs.elf (built-in pattern, two cores) against fw_host_ref
 #   cgfs-cube.elf (the cube scenes, two cores, vertices and triangles shared)
 #     against host_sim's frame 0 of bench/cube-textured
+# And a core 1 that never answers the launch handshake (--core1-absent): the
+# launch gives up and says so on the UART (rp2040sim ends on the error line).
 # usage: test_rp2040sim_reset.sh BUILD_DIR
 set -u
 b=${1:-build}
@@ -46,3 +48,11 @@ check() {
 }
 check cgfs pattern "$t/pattern.raw" 2
 check cgfs-cube cube_textured "$t/cube.raw" 3
+name=rp2040sim_core1_launch_timeout_error_line
+if timeout 120 node $sim --image "$b/firmware/pico/cgfs.elf" --core1-absent --frames 1 >/dev/null 2>"$t/absent.err"; then
+  echo "FAIL $name: the run succeeded"
+elif tail -n 1 "$t/absent.err" | grep -q '^rp2040sim: error core 1 did not answer the launch sequence: one core$'; then
+  echo "PASS $name"
+else
+  echo "FAIL $name: $(tail -n 1 "$t/absent.err")"
+fi

@@ -48,6 +48,7 @@ class DualCore {
     const core1 = new Core(mcu);
     this.cores = [core0, core1];
     this.speed = [1, opts.core1Speed || 1];
+    this.core1Absent = !!opts.core1Absent;   /* tests: core 1 never answers the launch */
     /* flash stalls (xip.js): charged to the core whose instruction made them */
     this.xip = opts.xip || { charging: false, take() { return 0; } };
     this.local = [0, 0];              /* each core's time, ns */
@@ -147,7 +148,7 @@ class DualCore {
     if (q.length >= FIFO_DEPTH) { this.sticky[c] |= FIFO_WOF; this.updateFifoIrq(); return; }
     q.push(v);
     this.updateFifoIrq();
-    if (c === 0 && !this.launched[1] && !this.held1) this.bootRom();
+    if (c === 0 && !this.launched[1] && !this.held1 && !this.core1Absent) this.bootRom();
   }
 
   /* SIO_IRQ_PROCn: core n's receive FIFO holds data, or a sticky flag */

@@ -39,6 +39,8 @@
  *                       the frames must not depend on how the cores interleave)
  *   --inject-nmi N      raise an NMI on core 0 after N cycles (tests: the
  *                       firmware's fault report, a "fault ..." UART line)
+ *   --core1-absent      core 1 never answers the launch handshake (tests:
+ *                       the firmware's timeout and its error line)
  *   --reset-core0-at-frame N   once N frames are on the glass, reset core 0
  *                       alone (as a debug probe's reset or SYSRESETREQ do:
  *                       core 1 and the peripherals go on) and boot it again
@@ -73,7 +75,7 @@ function usage(msg) {
 }
 
 function parseArgs(argv) {
-  const o = { frames: 1, maxCycles: 4e9, panel: 'st7789', pins: { dc: 16, cs: 17, rst: 20, bl: 21 }, uart: false, json: false, average: false, numeric: 'fixed', variant: 'single-core', core1Speed: 1, injectNmi: 0, resetCore0At: 0 };
+  const o = { frames: 1, maxCycles: 4e9, panel: 'st7789', pins: { dc: 16, cs: 17, rst: 20, bl: 21 }, uart: false, json: false, average: false, numeric: 'fixed', variant: 'single-core', core1Speed: 1, injectNmi: 0, resetCore0At: 0, core1Absent: false };
   for (let i = 0; i < argv.length; i++) {
     const a = argv[i];
     const val = () => { if (i + 1 >= argv.length) usage(`${a} needs a value`); return argv[++i]; };
@@ -96,6 +98,7 @@ function parseArgs(argv) {
       case '--average': o.average = true; break;
       case '--numeric': o.numeric = val(); break;
       case '--variant': o.variant = val(); break;
+      case '--core1-absent': o.core1Absent = true; break;
       case '--reset-core0-at-frame': o.resetCore0At = Number(val()); if (!(o.resetCore0At >= 1)) usage('bad --reset-core0-at-frame'); break;
       case '--inject-nmi': o.injectNmi = Number(val()); if (!(o.injectNmi > 0)) usage('bad --inject-nmi'); break;
       case '--core1-speed': o.core1Speed = Number(val()); if (!(o.core1Speed >= 0.01 && o.core1Speed <= 100)) usage('--core1-speed must be in 0.01..100'); break;
@@ -169,7 +172,7 @@ function main() {
   const xip = new XipCache(mcu);
   const bootProblem = bootThroughBoot2(mcu);
   if (bootProblem) { process.stderr.write(`rp2040sim: ${o.image}: ${bootProblem}\n`); process.exit(1); }
-  dual = new DualCore(mcu, { core1Speed: o.core1Speed, xip });
+  dual = new DualCore(mcu, { core1Speed: o.core1Speed, xip, core1Absent: o.core1Absent });
   /* UART0's transmit FIFO drains at the baud rate (uart.js); the time of an
    * access is the local time of the core making it */
   const uartTx = new UartTx(mcu, mcu.uart[0], () => dual.local[dual.cur]);

@@ -1,15 +1,18 @@
 #!/bin/sh
 # SPDX-License-Identifier: MIT
-# A reset of core 0 alone (a debug probe's reset, SYSRESETREQ) while core 1
-# renders: rp2040sim --reset-core0-at-frame N resets core 0 once N frames are
-# on the glass and boots it again, core 1 and the peripherals going on as on
-# the chip. The firmware must bring core 1 back through the PSM, launch it
-# again and go on showing frames: the UART shows a second boot line, core 1
-# was reset by the firmware, and the first frame after the reset (frame 0
-# again) equals the host's render bit for bit:
+# Resets while the board runs (tools/rp2040sim):
+#   --reset-core0-at-frame N: core 0 alone is reset once N frames are on the
+#     glass (a debug probe's reset, SYSRESETREQ) and boots again, core 1 and
+#     the peripherals going on as on the chip;
+#   --watchdog-reset-at-frame N: both cores (a watchdog reset that selects
+#     them, as the boot ROM's reboot after flashing does).
+# The firmware must bring core 1 back through the PSM, launch it again and go
+# on showing frames: the UART shows a second boot line, core 1 was reset (by
+# the firmware at each start, and by the watchdog), and the first frame after
+# the reset (frame 0 again) equals the host's render bit for bit:
 #   cgfs.elf (built-in pattern, two cores) against fw_host_ref
 #   cgfs-cube.elf (the cube scenes, two cores, vertices and triangles shared)
-#     against host_sim's frame 0 of bench/cube-textured
+#     against host_sim's frame 0 of bench/cube-textured, both resets
 # And a core 1 that never answers the launch handshake (--core1-absent): the
 # launch gives up and says so on the UART (rp2040sim ends on the error line).
 # usage: test_rp2040sim_reset.sh BUILD_DIR
@@ -24,11 +27,17 @@ frac=$(sed -n 's/^#define NUM_FRAC \([0-9][0-9]*\)$/\1/p' "$b/firmware/scenes/fw
 "$b/host_sim" --scene firmware/scenes/bench/cube-textured.scene --size 240x240 --numeric fixed --num-frac "$frac" \
   --out-raw "$t/cube.raw" >/dev/null 2>"$t/herr" || { echo "FAIL rp2040sim_reset_cube: host_sim: $(tail -n 1 "$t/herr")"; exit 1; }
 
-# IMAGE NAME REF AT: reset core 0 after AT frames; frame AT (the first after
-# the reset) must be frame 0 of the first scene and equal REF
+# IMAGE NAME REF AT [KIND]: reset core 0 (KIND watchdog: both cores, a
+# watchdog reset) after AT frames; frame AT (the first after the reset) must
+# be frame 0 of the first scene and equal REF
 check() {
-  name=rp2040sim_reset_core0_$2
-  if ! timeout 300 node $sim --image "$b/firmware/pico/$1.elf" --frames $(($4 + 2)) --reset-core0-at-frame "$4" \
+  kind=${5:-core0}
+  name=rp2040sim_reset_${kind}_$2
+  # core 1 is reset by the firmware at each start, and by a watchdog reset
+  c1=2
+  [ "$kind" = watchdog ] && c1=3
+  if ! timeout 300 node $sim --image "$b/firmware/pico/$1.elf" --frames $(($4 + 2)) \
+       $([ "$kind" = watchdog ] && echo --watchdog-reset-at-frame || echo --reset-core0-at-frame) "$4" \
        --uart --json --out-dir "$t/$2" >"$t/$2.json" 2>"$t/$2.err"; then
     echo "FAIL $name: $(tail -n 1 "$t/$2.err")"
     return
@@ -36,7 +45,7 @@ check() {
   boots=$(grep -c '^boot board=rp2040 cores=2' "$t/$2.err")
   if [ "$boots" -ne 2 ]; then
     echo "FAIL $name: $boots boot lines, not 2"
-  elif ! tail -n 1 "$t/$2.err" | grep -q 'core 0 reset 1 time(s), core 1 by the firmware 2'; then
+  elif ! tail -n 1 "$t/$2.err" | grep -q "core 0 reset 1 time(s), core 1 $c1\$"; then
     echo "FAIL $name: $(tail -n 1 "$t/$2.err")"
   elif ! sed -n "$(($4 + 1))p" "$t/$2.json" | grep -q '"frame":0,'; then
     echo "FAIL $name: frame $4 is not a frame 0: $(sed -n "$(($4 + 1))p" "$t/$2.json")"
@@ -48,6 +57,7 @@ check() {
 }
 check cgfs pattern "$t/pattern.raw" 2
 check cgfs-cube cube_textured "$t/cube.raw" 3
+check cgfs-cube cube_textured "$t/cube.raw" 2 watchdog
 name=rp2040sim_core1_launch_timeout_error_line
 if timeout 120 node $sim --image "$b/firmware/pico/cgfs.elf" --core1-absent --frames 1 >/dev/null 2>"$t/absent.err"; then
   echo "FAIL $name: the run succeeded"

@@ -39,6 +39,13 @@
  *                       the frames must not depend on how the cores interleave)
  *   --inject-nmi N      raise an NMI on core 0 after N cycles (tests: the
  *                       firmware's fault report, a "fault ..." UART line)
+ *   --watchdog-reset-at-frame N   once N frames are on the glass, a watchdog
+ *                       reset of both processors (as the boot ROM's reboot,
+ *                       which selects every domain but the oscillators):
+ *                       core 1 back to the boot ROM, UART0 emptied, core 0
+ *                       booted again through boot2 (the other peripherals
+ *                       keep their state in rp2040js: the firmware's start-up
+ *                       resets the ones it uses)
  *   --core1-absent      core 1 never answers the launch handshake (tests:
  *                       the firmware's timeout and its error line)
  *   --reset-core0-at-frame N   once N frames are on the glass, reset core 0
@@ -75,7 +82,7 @@ function usage(msg) {
 }
 
 function parseArgs(argv) {
-  const o = { frames: 1, maxCycles: 4e9, panel: 'st7789', pins: { dc: 16, cs: 17, rst: 20, bl: 21 }, uart: false, json: false, average: false, numeric: 'fixed', variant: 'single-core', core1Speed: 1, injectNmi: 0, resetCore0At: 0, core1Absent: false };
+  const o = { frames: 1, maxCycles: 4e9, panel: 'st7789', pins: { dc: 16, cs: 17, rst: 20, bl: 21 }, uart: false, json: false, average: false, numeric: 'fixed', variant: 'single-core', core1Speed: 1, injectNmi: 0, resetCore0At: 0, watchdogAt: 0, core1Absent: false };
   for (let i = 0; i < argv.length; i++) {
     const a = argv[i];
     const val = () => { if (i + 1 >= argv.length) usage(`${a} needs a value`); return argv[++i]; };
@@ -99,6 +106,7 @@ function parseArgs(argv) {
       case '--numeric': o.numeric = val(); break;
       case '--variant': o.variant = val(); break;
       case '--core1-absent': o.core1Absent = true; break;
+      case '--watchdog-reset-at-frame': o.watchdogAt = Number(val()); if (!(o.watchdogAt >= 1)) usage('bad --watchdog-reset-at-frame'); break;
       case '--reset-core0-at-frame': o.resetCore0At = Number(val()); if (!(o.resetCore0At >= 1)) usage('bad --reset-core0-at-frame'); break;
       case '--inject-nmi': o.injectNmi = Number(val()); if (!(o.injectNmi > 0)) usage('bad --inject-nmi'); break;
       case '--core1-speed': o.core1Speed = Number(val()); if (!(o.core1Speed >= 0.01 && o.core1Speed <= 100)) usage('--core1-speed must be in 0.01..100'); break;
@@ -332,6 +340,13 @@ function main() {
       o.resetCore0At = 0;
       resetCore0();
     }
+    if (o.watchdogAt && frames.length >= o.watchdogAt) {
+      o.watchdogAt = 0;
+      dual.holdCore1(true);
+      dual.holdCore1(false);
+      uartTx.reset();
+      resetCore0();
+    }
     if (fwError) break;
     if (emuWarning) { fwError = emuWarning; break; }
     if (!awake) { fwError = 'firmware sleeps with nothing to wake it'; break; }
@@ -394,7 +409,7 @@ function main() {
   if (o.outRaw) fs.writeFileSync(o.outRaw, rawLE(frames[frames.length - 1].px));
   const simS = (Date.now() - t0) / 1000;
   process.stderr.write(`rp2040sim: ${frames.length} frame(s), ${Math.round(clock.nanos * cpuHz / 1e9)} cycles emulated in ${simS.toFixed(1)} s` +
-    (resets ? `, core 0 reset ${resets} time(s), core 1 by the firmware ${dual.core1Resets}` : '') + '\n');
+    (resets ? `, core 0 reset ${resets} time(s), core 1 ${dual.core1Resets}` : '') + '\n');
 }
 
 main();

@@ -191,8 +191,11 @@ $(call fw_scene_image,cgfs-rt-1core,RT,$(FW_1CORE_FLAGS) -DFW_FRAMES_PER_SCENE=1
 # The 4,096-triangle meshes (Gouraud, flat), FW_MESH_FRAMES frames of each,
 # two cores, with only the rasterizer's default path in SRAM (the whole core
 # there leaves too little work memory for a mesh: RP2040_RAM_TEXT=raster).
+# Its UART log ring is 64 characters (RP2040_LOG_RING, firmware/board/rp2040/board.c),
+# not 512: SRAM has no more room; a frame's two lines (about 113 characters) then
+# wait for the last ~17 to enter the FIFO (uart_stall_cycles).
 FW_MESH_FRAMES ?= 10
-$(call fw_scene_image,cgfs-mesh,MESH,-DFW_FRAMES_PER_SCENE=$(FW_MESH_FRAMES) -DRAS_RAM_TEXT -DRP2040_RAM_TEXT_RASTER,raster)
+$(call fw_scene_image,cgfs-mesh,MESH,-DFW_FRAMES_PER_SCENE=$(FW_MESH_FRAMES) -DRAS_RAM_TEXT -DRP2040_RAM_TEXT_RASTER -DRP2040_LOG_RING=64,raster)
 
 FW_RP_IMAGES := $(FW_OUT)/pico/cgfs.uf2 $(FW_OUT)/pico/cgfs-1core.uf2 $(FW_OUT)/pico/cgfs-ili9341.uf2 \
                 $(FW_OUT)/pico/cgfs-rot2.uf2 \
@@ -222,11 +225,12 @@ ST_CFLAGS := $(ST_CPU) -O2 -g -std=c11 $(WARN) -ffunction-sections -fdata-sectio
 ST_LDFLAGS := $(ST_CPU) --specs=nano.specs -nostartfiles -T $(ST_DIR)/stm32f411.ld \
               -Wl,--gc-sections -Wl,--no-warn-rwx-segments
 
-# $(1) = image name, $(2) = numeric mode (fixed point at the book scenes' format)
+# $(1) = image name, $(2) = numeric mode (fixed point at the book scenes' format),
+# $(3) = extra flags
 define ST_IMAGE
 $(FW_OUT)/stm32f411/obj-$(1)/%.o: %.c
 	@mkdir -p $$(@D)
-	$$(Q)$$(ARM_CC) $$(ST_CFLAGS) -DNUM_MODE=$$(NUM_MODE_$(2)) $(if $(filter fixed,$(2)),$(FW_BOOK_FRAC_FLAGS)) -MMD -MP -c $$< -o $$@
+	$$(Q)$$(ARM_CC) $$(ST_CFLAGS) -DNUM_MODE=$$(NUM_MODE_$(2)) $(if $(filter fixed,$(2)),$(FW_BOOK_FRAC_FLAGS)) $(3) -MMD -MP -c $$< -o $$@
 $(FW_OUT)/stm32f411/$(1).elf: $(patsubst %.c,$(FW_OUT)/stm32f411/obj-$(1)/%.o,$(ST_SRCS)) $(ST_DIR)/stm32f411.ld
 	$$(Q)$$(ARM_CC) $$(ST_LDFLAGS) -Wl,-Map=$(FW_OUT)/stm32f411/$(1).map \
 		$$(filter %.o,$$^) -lm -lc -lgcc -o $$@
@@ -235,6 +239,8 @@ $(FW_OUT)/stm32f411/$(1).bin: $(FW_OUT)/stm32f411/$(1).elf
 endef
 $(eval $(call ST_IMAGE,cgfs,$(STM32_NUM_MODE)))
 $(eval $(call ST_IMAGE,cgfs-fixed,fixed))
+# tests only (tests/system/test_stm32_qemu.sh): faults right after board_init
+$(eval $(call ST_IMAGE,cgfs-fault-test,$(STM32_NUM_MODE),-DSTM32_TEST_FAULT=1))
 $(call fw_frac_objs,$(FW_OUT)/stm32f411/obj-cgfs-fixed,$(ST_SRCS)): $(FW_BOOK_FRAC_H)
 ifeq ($(STM32_NUM_MODE),fixed)
 $(call fw_frac_objs,$(FW_OUT)/stm32f411/obj-cgfs,$(ST_SRCS)): $(FW_BOOK_FRAC_H)
@@ -263,3 +269,16 @@ $(foreach t,m4f-qemu m0plus-qemu,$(call fw_frac_objs,$(BUILD)/bench/$(t)/fixed/f
     $(FW_BOOK_FRAC_H)
 BENCH_IMAGES += $(BUILD)/bench/m4f-qemu/fixed/frame.elf $(BUILD)/bench/m4f-qemu/float/frame.elf \
                 $(BUILD)/bench/m0plus-qemu/fixed/frame.elf
+
+# The STM32F411 image on qemu (netduinoplus2): the clock waits' timeouts, the
+# fault line and the reset (tests/system/test_stm32_qemu.sh).
+TESTS += tests/system/test_stm32_qemu.sh:$(BUILD)
+TEST_NEEDS_test_stm32_qemu := $(FW_OUT)/stm32f411/cgfs.elf $(FW_OUT)/stm32f411/cgfs-fault-test.elf
+TEST_DEPS += $(TEST_NEEDS_test_stm32_qemu)
+
+# docs/firmware.md against the build: its memory figures (tools/fw_sizes.py),
+# the image `make flash` writes.
+TEST_NEEDS_test_fw_docs := $(foreach i,cgfs-book cgfs-book-1core cgfs-cube cgfs-cube-1core cgfs-cube-ili9341 cgfs-rt \
+                              cgfs,$(FW_OUT)/pico/$(i).elf) $(FW_OUT)/stm32f411/cgfs.elf $(FW_OUT)/stm32f411/cgfs-fixed.elf
+TEST_DEPS += $(TEST_NEEDS_test_fw_docs)
+TESTS     += tests/system/test_fw_docs.sh:$(BUILD)

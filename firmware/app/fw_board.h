@@ -21,13 +21,17 @@ int fw_board_init(struct hal *h);
  * host build of the application stops after its passes. */
 int fw_board_again(void);
 
-/* Text to the serial console (UART), blocking. */
+/* Text to the serial console (UART), from core 0; whole, in order. It may
+ * return before the text has left the board (the RP2040 queues it for the
+ * UART's transmit interrupt), so a line's time is what it says, not when it
+ * arrives. */
 void fw_board_puts(const char *s);
 
 /* Cores available for rendering: 1 or 2. */
 unsigned fw_board_cores(void);
-/* Starts the second core at entry (only when fw_board_cores() == 2). */
-void fw_board_core1_start(void (*entry)(void));
+/* Starts the second core at entry (only when fw_board_cores() == 2); 0, or
+ * -1 when it did not start (the application then renders on one core). */
+int fw_board_core1_start(void (*entry)(void));
 /* Inter-core mailbox, blocking, in order (each direction its own queue). */
 void fw_board_send(uint32_t v);
 uint32_t fw_board_recv(void);

@@ -16,7 +16,9 @@
  *
  * UART lines (115200 8N1), one per event, parsed by tools/rp2040sim:
  *   boot board=B cores=N cpu_hz=H size=WxH strip_rows=R scenes=S
- *   begin scene=NAME frame=F
+ *   begin scene=NAME frame=F t=T   (T: the board's microsecond timer when the
+ *                                  frame began, its low 32 bits: the line may
+ *                                  leave the board later, fw_board_puts)
  *   coarse scene=NAME frame=F   (ray tracer: a preview of 8x8 blocks follows)
  *   first scene=NAME frame=F us=U   (the preview is on the glass, U after begin)
  *   fps scene=NAME frame=F us=U fps=X.Y
@@ -524,10 +526,10 @@ static uint32_t frame(unsigned si, uint16_t f, uint32_t last_us, int dual)
     const char *name = fw_scenes[si].name;
     char text[16], line[160];
     if (last_us) *put_str(put_fps(text, last_us), " fps") = 0;
-    *put_str(put_frame(line, "begin scene=", name, f), "\r\n") = 0;
+    uint64_t t0 = hal.now_us(hal.ctx);
+    *put_str(put_u32(put_str(put_frame(line, "begin scene=", name, f), " t="), (uint32_t)t0), "\r\n") = 0;
     fw_board_puts(line);
 
-    uint64_t t0 = hal.now_us(hal.ctx);
     /* a rasterized frame is prepared by both cores (core 1 is idle between
      * frames): each takes half of its vertices, then half of its triangles;
      * core 0 bins them */
@@ -577,7 +579,10 @@ int main(void)
         fw_board_puts("error the panel in this rotation is not FW_WIDTH x FW_HEIGHT\r\n");
         return 1;
     }
-    if (dual) fw_board_core1_start(core1_main);
+    if (dual && fw_board_core1_start(core1_main) != 0) {
+        fw_board_puts("error core 1 did not answer the launch sequence: one core\r\n");
+        dual = 0;
+    }
 
     do {
         for (unsigned si = 0; si < fw_scene_count; si++) {

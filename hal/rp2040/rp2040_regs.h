@@ -27,6 +27,13 @@
 #define RESET_TIMER        (1u << 21)
 #define RESET_UART0        (1u << 22)
 
+#define RESET_IO_RESETS    (RESET_DMA | RESET_IO_BANK0 | RESET_PADS_BANK0 | RESET_SPI0 | RESET_TIMER | RESET_UART0)
+
+/* ---- power-on state machine ------------------------------------------------ */
+#define PSM_BASE           0x40010000u
+#define PSM_FRCE_OFF       (PSM_BASE + 0x4)
+#define PSM_PROC1          (1u << 16)
+
 /* ---- clocks ---------------------------------------------------------- */
 #define CLOCKS_BASE        0x40008000u
 #define CLK_REF_CTRL       (CLOCKS_BASE + 0x30)
@@ -120,8 +127,13 @@
 #define UARTFBRD           (UART0_BASE + 0x28)
 #define UARTLCR_H          (UART0_BASE + 0x2c)
 #define UARTCR             (UART0_BASE + 0x30)
+#define UARTIFLS           (UART0_BASE + 0x34)
+#define UARTIMSC           (UART0_BASE + 0x38)
+#define UARTICR            (UART0_BASE + 0x44)
 #define UARTFR_TXFF        (1u << 5)
 #define UARTFR_BUSY        (1u << 3)
+#define UART_TXIM          (1u << 5)     /* UARTIMSC/UARTICR: transmit interrupt */
+#define UART0_IRQ          20u
 
 /* ---- DMA -------------------------------------------------------------- */
 #define DMA_BASE           0x50000000u
@@ -145,5 +157,8 @@
 
 /* ---- Cortex-M0+ private peripherals ----------------------------------- */
 #define PPB_VTOR           0xe000ed08u
+#define NVIC_ISER          0xe000e100u
+#define NVIC_ICER          0xe000e180u
+#define NVIC_ICPR          0xe000e280u
 
 #endif

@@ -38,6 +38,8 @@
 #define PWR_CR          0x40007000u
 #define PWR_CR_VOS_SCALE1 (3u << 14)
 #define PWR_CR_VOS_MASK (3u << 14)
+#define PWR_CSR         0x40007004u
+#define PWR_CSR_VOSRDY  (1u << 14)    /* valid once the PLL runs */
 
 /* Flash interface */
 #define FLASH_ACR       0x40023C00u
@@ -147,6 +149,8 @@ static inline void stm32_pin_af(unsigned pin, unsigned af)
 
 /* System control block: coprocessor access (CP10/CP11 = the FPU) */
 #define SCB_CPACR       0xE000ED88u
+#define SCB_AIRCR       0xE000ED0Cu
+#define SCB_AIRCR_SYSRESETREQ (0x05FAu << 16 | 1u << 2)   /* VECTKEY and the request */
 #define SCB_VTOR        0xE000ED08u
 
 #endif

@@ -102,7 +102,11 @@ void fw_board_puts(const char *s)
 
 int fw_board_again(void) { return 0; }
 unsigned fw_board_cores(void) { return 1; }
-void fw_board_core1_start(void (*entry)(void)) { (void)entry; }
+int fw_board_core1_start(void (*entry)(void))
+{
+    (void)entry;
+    return -1;
+}
 void fw_board_send(uint32_t v) { (void)v; }
 uint32_t fw_board_recv(void) { return 0; }
 void fw_board_lock(void) {}

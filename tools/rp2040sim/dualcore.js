@@ -24,14 +24,21 @@
  *   follows the earlier of the two, so peripheral timing stays within one
  *   instruction. `core1Speed` scales core 1's time per cycle (tests: a
  *   slower or faster core 1 must not change any frame).
+ * - PSM FRCE_OFF.proc1 (bit 16) holds core 1 in reset; released, it is back
+ *   in the boot ROM's wait for the launch sequence (a fresh core). The SIO
+ *   FIFOs are not reset with it (another power domain).
+ * - resetCore0(): core 0 alone reset, as by a debug probe or SYSRESETREQ:
+ *   a fresh core 0 (registers, NVIC, VTOR), its start left to the caller;
+ *   core 1 and the peripherals go on.
  * What is not modelled: SysTick is one timer (the firmware uses the
- * TIMER peripheral on both cores), and core 1 cannot be reset through PSM.
+ * TIMER peripheral on both cores).
  */
 
 const FIFO_DEPTH = 8;
 const SIO_CPUID = 0x000, SIO_FIFO_ST = 0x050, SIO_FIFO_WR = 0x054, SIO_FIFO_RD = 0x058;
 const FIFO_VLD = 1, FIFO_RDY = 2, FIFO_WOF = 4, FIFO_ROE = 8;
 const IRQ_SIO_PROC = [15, 16];
+const PSM_FRCE_OFF = 0x4, PSM_PROC1 = 1 << 16;
 
 class DualCore {
   constructor(mcu, opts = {}) {
@@ -41,6 +48,7 @@ class DualCore {
     const core1 = new Core(mcu);
     this.cores = [core0, core1];
     this.speed = [1, opts.core1Speed || 1];
+    this.core1Absent = !!opts.core1Absent;   /* tests: core 1 never answers the launch */
     /* flash stalls (xip.js): charged to the core whose instruction made them */
     this.xip = opts.xip || { charging: false, take() { return 0; } };
     this.local = [0, 0];              /* each core's time, ns */
@@ -84,6 +92,16 @@ class DualCore {
       },
     };
 
+    /* PSM: FRCE_OFF.proc1 holds core 1 in reset */
+    const psm = mcu.peripherals[0x40010];
+    const psmWrite = psm.writeUint32.bind(psm);
+    psm.writeUint32 = (off, value) => {
+      psmWrite(off, value);
+      if (off === PSM_FRCE_OFF) dc.holdCore1(((value >>> 0) & PSM_PROC1) !== 0);
+    };
+    this.held1 = false;
+    this.core1Resets = 0;
+
     /* interrupt lines to both cores (core 1 once it runs) */
     mcu.setInterrupt = (irq, value) => {
       for (let i = 0; i < 2; i++) if (dc.launched[i]) dc.wakeBy(i, () => dc.cores[i].setInterrupt(irq, value));
@@ -91,6 +109,26 @@ class DualCore {
   }
 
   get core() { return this.cores[this.cur]; }
+
+  /* core 1 into reset (hold) or out of it: back in the boot ROM */
+  holdCore1(hold) {
+    if (hold && !this.held1) {
+      this.cores[1] = new this.cores[0].constructor(this.mcu);
+      this.launched[1] = false;
+      this.boot = { seq: 0, words: [] };
+      this.core1Resets++;
+    }
+    this.held1 = hold;
+  }
+
+  /* core 0 alone reset: a fresh core 0 (the caller sets where it starts) */
+  resetCore0() {
+    const c = new this.cores[0].constructor(this.mcu);
+    this.cores[0] = c;
+    this.mcu.core = c;
+    this.cur = 0;
+    return c;
+  }
 
   fifoStatus(c) {
     return (this.fifo[c].length ? FIFO_VLD : 0) | (this.fifo[1 - c].length < FIFO_DEPTH ? FIFO_RDY : 0) |
@@ -110,7 +148,7 @@ class DualCore {
     if (q.length >= FIFO_DEPTH) { this.sticky[c] |= FIFO_WOF; this.updateFifoIrq(); return; }
     q.push(v);
     this.updateFifoIrq();
-    if (c === 0 && !this.launched[1]) this.bootRom();
+    if (c === 0 && !this.launched[1] && !this.held1 && !this.core1Absent) this.bootRom();
   }
 
   /* SIO_IRQ_PROCn: core n's receive FIFO holds data, or a sticky flag */
@@ -182,8 +220,9 @@ class DualCore {
   run(n) {
     const { mcu } = this;
     const clock = mcu.clock;
-    const [c0, c1] = this.cores;
     for (let k = 0; k < n; k++) {
+      /* (either core may be replaced by a reset) */
+      const c0 = this.cores[0], c1 = this.cores[1];
       if (!this.launched[1]) {
         /* core 0 alone (core 1 in the boot ROM): the package's own loop */
         this.cur = 0;

@@ -15,7 +15,14 @@
  *   --pins dc=16,cs=17,rst=20,bl=21   the firmware's pin options
  *   --uart              echo the firmware's UART output to stderr
  *   --json              one JSON object per frame on stdout (scene, frame,
- *                       cycles at the firmware's clk_sys, us, fps, spi_bytes,
+ *                       cycles and us: from the frame's "begin" line to its
+ *                       last pixel, cycles at the firmware's clk_sys;
+ *                       period_us: from its "begin" line to the next one's,
+ *                       fps: 1 / period (the rate the board shows frames at;
+ *                       the run goes on until the frame after the last one
+ *                       begins); uart_stall_cycles: the cycles the firmware
+ *                       waited for room in the UART's transmit FIFO in that
+ *                       period (uart.js); spi_bytes;
  *                       cores: from the firmware's boot line; a two-core
  *                       image runs on both emulated cores, dualcore.js)
  *                       first_image_us: for a progressive (ray-traced) frame,
@@ -32,12 +39,28 @@
  *                       the frames must not depend on how the cores interleave)
  *   --inject-nmi N      raise an NMI on core 0 after N cycles (tests: the
  *                       firmware's fault report, a "fault ..." UART line)
+ *   --watchdog-reset-at-frame N   once N frames are on the glass, a watchdog
+ *                       reset of both processors (as the boot ROM's reboot,
+ *                       which selects every domain but the oscillators):
+ *                       core 1 back to the boot ROM, UART0 emptied, core 0
+ *                       booted again through boot2 (the other peripherals
+ *                       keep their state in rp2040js: the firmware's start-up
+ *                       resets the ones it uses)
+ *   --core1-absent      core 1 never answers the launch handshake (tests:
+ *                       the firmware's timeout and its error line)
+ *   --reset-core0-at-frame N   once N frames are on the glass, reset core 0
+ *                       alone (as a debug probe's reset or SYSRESETREQ do:
+ *                       core 1 and the peripherals go on) and boot it again
+ *                       through boot2; the firmware must recover (tests: the
+ *                       frames after it; the "boot" line is then seen twice)
  *
  * Boot without a boot ROM image (rp2040js 1.4.1 has none): the image is
  * copied into the flash array, its boot2 checked and run from SRAM as the
  * boot ROM would (xip.js), and boot2 enters the application; and the XIP cache is modelled with the miss cost of the
  * read mode boot2 sets up. Core 1 waits in a model of the boot ROM's launch
- * handshake (dualcore.js). Time: each instruction advances the clock
+ * handshake (dualcore.js). UART0's transmit FIFO drains at the configured
+ * baud rate (uart.js): a firmware that writes more than the line carries
+ * waits, as on the board. Time: each instruction advances the clock
  * by its cycles at the current clk_sys; SPI words complete after their bit
  * count at the configured SPI clock, so frame times include transfer time.
  *
@@ -49,6 +72,7 @@ const { RP2040, GPIOPinState } = require('rp2040js');
 const { EmuPanel } = require('./emu_panel.js');
 const { DualCore } = require('./dualcore.js');
 const { XipCache, bootThroughBoot2 } = require('./xip.js');
+const { UartTx } = require('./uart.js');
 
 const FLASH_BASE = 0x10000000;
 
@@ -58,7 +82,7 @@ function usage(msg) {
 }
 
 function parseArgs(argv) {
-  const o = { frames: 1, maxCycles: 4e9, panel: 'st7789', pins: { dc: 16, cs: 17, rst: 20, bl: 21 }, uart: false, json: false, average: false, numeric: 'fixed', variant: 'single-core', core1Speed: 1, injectNmi: 0 };
+  const o = { frames: 1, maxCycles: 4e9, panel: 'st7789', pins: { dc: 16, cs: 17, rst: 20, bl: 21 }, uart: false, json: false, average: false, numeric: 'fixed', variant: 'single-core', core1Speed: 1, injectNmi: 0, resetCore0At: 0, watchdogAt: 0, core1Absent: false };
   for (let i = 0; i < argv.length; i++) {
     const a = argv[i];
     const val = () => { if (i + 1 >= argv.length) usage(`${a} needs a value`); return argv[++i]; };
@@ -81,6 +105,9 @@ function parseArgs(argv) {
       case '--average': o.average = true; break;
       case '--numeric': o.numeric = val(); break;
       case '--variant': o.variant = val(); break;
+      case '--core1-absent': o.core1Absent = true; break;
+      case '--watchdog-reset-at-frame': o.watchdogAt = Number(val()); if (!(o.watchdogAt >= 1)) usage('bad --watchdog-reset-at-frame'); break;
+      case '--reset-core0-at-frame': o.resetCore0At = Number(val()); if (!(o.resetCore0At >= 1)) usage('bad --reset-core0-at-frame'); break;
       case '--inject-nmi': o.injectNmi = Number(val()); if (!(o.injectNmi > 0)) usage('bad --inject-nmi'); break;
       case '--core1-speed': o.core1Speed = Number(val()); if (!(o.core1Speed >= 0.01 && o.core1Speed <= 100)) usage('--core1-speed must be in 0.01..100'); break;
       default: usage(`unknown option '${a}'`);
@@ -153,7 +180,16 @@ function main() {
   const xip = new XipCache(mcu);
   const bootProblem = bootThroughBoot2(mcu);
   if (bootProblem) { process.stderr.write(`rp2040sim: ${o.image}: ${bootProblem}\n`); process.exit(1); }
-  dual = new DualCore(mcu, { core1Speed: o.core1Speed, xip });
+  dual = new DualCore(mcu, { core1Speed: o.core1Speed, xip, core1Absent: o.core1Absent });
+  /* UART0's transmit FIFO drains at the baud rate (uart.js); the time of an
+   * access is the local time of the core making it */
+  const uartTx = new UartTx(mcu, mcu.uart[0], () => dual.local[dual.cur]);
+  /* RESETS: UART0 (bit 22) held in reset loses what it was sending */
+  const resetsBlock = mcu.peripherals[0x4000c], resetsWrite = resetsBlock.writeUint32.bind(resetsBlock);
+  resetsBlock.writeUint32 = (off, v) => {
+    resetsWrite(off, v);
+    if (off === 0 && (v & (1 << 22))) uartTx.reset();
+  };
 
   let panel;
   try { panel = new EmuPanel(o.panel); } catch (e) { usage(e.message); }
@@ -161,7 +197,7 @@ function main() {
   const gpio = mcu.gpio;
   /* Undriven pins read high: the module pulls its control inputs up. */
   const level = (pin) => gpio[pin].value !== GPIOPinState.Low;
-  let spiBytes = 0;
+  let spiBytes = 0, cmdLog = [];
 
   /* Lines: sampled on change (line events carry the emulated time). */
   const lines = [[0, o.pins.dc], [1, o.pins.rst], [2, o.pins.cs], [3, o.pins.bl]];
@@ -179,16 +215,42 @@ function main() {
   const spiAlarm = clock.createAlarm(() => spi.completeTransmit(0));
   spi.onTransmit = (value) => {
     const t = clock.nanos, bits = spi.dataBits, f = spi.clockFrequency || 1e6;
+    /* until the first frame has ended: the counters at each command (the
+     * first frame's figures count from its first command) */
+    if (cmdLog && !level(o.pins.dc)) cmdLog.push({ ns: t, spi: spiBytes, miss: xip.misses, stall: xip.stallTotal });
     if (bits > 8) { panel.spiByte((value >> 8) & 0xff, t); panel.spiByte(value & 0xff, t); spiBytes += 2; }
     else { panel.spiByte(value & 0xff, t); spiBytes += 1; }
     spiAlarm.schedule(Math.max(1, Math.round(bits * 1e9 / f)));
   };
 
-  /* UART lines: "begin scene=... frame=..." labels the next frame. */
-  let uartLine = '', pending = null, fwError = null, cpuHz = 133e6, cores = 1;
+  /* UART lines: "begin scene=... frame=... t=T" labels the next frame, which
+   * began at T (the board's microsecond timer, low 32 bits; rp2040js's timer
+   * counts the emulated time): the line itself may leave the board later
+   * (the firmware queues its lines for the UART's interrupt), even after the
+   * frame's last pixel. Frames are matched in order with the ends of frames
+   * on the glass. Per frame: cycles from T to its last pixel; the period
+   * from T to the next frame's T; spi_bytes and the XIP figures from the
+   * previous frame's last pixel (the first frame: from its first command to
+   * the panel after T) to its last; uart_stall over the period. */
+  let uartLine = '', fwError = null, cpuHz = 133e6, cores = 1;
   const frames = [];
-  let frameStartNs = 0, frameStartBytes = 0, frameStartMiss = 0, frameStartStall = 0;
-  mcu.uart[0].onByte = (b) => {
+  const begins = [];     /* frames begun, waiting for their last pixel */
+  const ends = [];       /* frames ended before their line arrived */
+  let lastBegin = null, lastEnd = null;
+  const snap = () => ({ spi: spiBytes, miss: xip.misses, stall: xip.stallTotal });
+  /* T (32 bits of us) as emulated ns: the latest time at or before now */
+  const beginNs = (t) => {
+    const nowUs = Math.floor(clock.nanos / 1000);
+    return t === undefined || !/^\d+$/.test(t) ? clock.nanos : (nowUs - ((nowUs - Number(t)) >>> 0)) * 1000;
+  };
+  const finish = (b, endNs, end) => {
+    const from = end.prev || b.snap0;
+    frames.push(Object.assign(b, { ns: endNs - b.t_ns, spi_bytes: end.snap.spi - from.spi,
+      xip_misses: end.snap.miss - from.miss, xip_stall_cycles: end.snap.stall - from.stall, px: end.px }));
+  };
+  /* a line cut by the UART's reset is dropped */
+  uartTx.onReset = () => { if (o.uart && uartLine) process.stderr.write('\n'); uartLine = ''; };
+  uartTx.onByte = (b) => {
     const ch = String.fromCharCode(b);
     if (o.uart) process.stderr.write(ch);
     if (ch === '\n') {
@@ -196,9 +258,20 @@ function main() {
       uartLine = '';
       const kv = Object.fromEntries(l.split(' ').slice(1).map((s) => s.split('=')));
       if (l.startsWith('boot ')) { cpuHz = Number(kv.cpu_hz) || cpuHz; cores = Number(kv.cores) || cores; }
-      if (l.startsWith('begin ')) { pending = { scene: kv.scene, frame: Number(kv.frame) }; frameStartNs = clock.nanos; frameStartBytes = spiBytes; frameStartMiss = xip.misses; frameStartStall = xip.stallTotal; }
+      if (l.startsWith('begin ')) {
+        const t = beginNs(kv.t);
+        /* the previous frame's period, and the firmware's waits for room
+         * in the UART's FIFO in it */
+        if (lastBegin) {
+          lastBegin.period_ns = t - lastBegin.t_ns;
+          lastBegin.uart_stall_ns = uartTx.stallAt(t) - uartTx.stallAt(lastBegin.t_ns);
+        }
+        lastBegin = { scene: kv.scene, frame: Number(kv.frame), t_ns: t, snap0: snap() };
+        const e = ends.shift();
+        if (e) finish(lastBegin, e.ns, e); else begins.push(lastBegin);
+      }
       /* a progressive frame: its first full-screen image is the preview */
-      if (l.startsWith('coarse ') && pending) pending.coarse = true;
+      if (l.startsWith('coarse ') && begins.length) begins[begins.length - 1].coarse = true;
       if (l.startsWith('fps ') && frames.length) frames[frames.length - 1].fw_us = Number(kv.us);
       if (l.startsWith('error') || l.startsWith('fault ')) fwError = l;
     } else {
@@ -214,14 +287,33 @@ function main() {
   panel.onWrap = (xe, ye, area) => {
     if (area > endArea) { endArea = area; endX = xe; endY = ye; }
     if (xe !== endX || ye !== endY) return;
-    if (!pending) return;
-    const ns = clock.nanos - frameStartNs;
-    if (pending.coarse && pending.first_ns === undefined) { pending.first_ns = ns; return; }
-    frames.push({ scene: pending.scene, frame: pending.frame, ns, first_ns: pending.first_ns,
-                  spi_bytes: spiBytes - frameStartBytes, xip_misses: xip.misses - frameStartMiss,
-                  xip_stall_cycles: xip.stallTotal - frameStartStall, px: panel.glass() });
-    pending = null;
+    if (!lastBegin) return;          /* before the first frame */
+    const now = clock.nanos, b = begins[0];
+    if (b && b.coarse && b.first_ns === undefined) { b.first_ns = now - b.t_ns; return; }
+    if (!lastEnd) {
+      /* the first frame: from its first command */
+      const t0 = (b || lastBegin).t_ns;
+      lastEnd = cmdLog.find((c) => c.ns >= t0) || (b || lastBegin).snap0;
+      cmdLog = null;
+    }
+    const end = { ns: now, prev: lastEnd, snap: snap(), px: panel.glass() };
+    lastEnd = end.snap;
+    if (b) finish(begins.shift(), now, end); else ends.push(end);
   };
+
+  /* core 0 alone reset and booted again: the frame it was drawing never
+   * ends; frames are counted again from the next begin line */
+  const resetCore0 = () => {
+    dual.resetCore0();
+    bootThroughBoot2(mcu);
+    begins.length = 0;
+    ends.length = 0;
+    lastBegin = null;
+    lastEnd = null;
+    cmdLog = [];
+    resets++;
+  };
+  let resets = 0;
 
   /* boot2 from SRAM until it enters the application in flash */
   for (let i = 0; !(mcu.core.PC >= FLASH_BASE && mcu.core.PC < FLASH_BASE + 0x4000000); i++) {
@@ -235,12 +327,25 @@ function main() {
 
   const t0 = Date.now();
   const maxNs = o.maxCycles / cpuHz * 1e9;
-  while (frames.length < o.frames && !fwError && !panel.violation) {
+  /* until the frame after the last one begins (the last one's period) */
+  const done = () => frames.length >= o.frames && frames[o.frames - 1].period_ns !== undefined;
+  while (!done() && !fwError && !panel.violation) {
     const awake = dual.run(o.injectNmi ? 1000 : 100000);
     if (o.injectNmi && clock.nanos * cpuHz / 1e9 >= o.injectNmi) {
       dual.cores[0].pendingNMI = true;
       dual.cores[0].interruptsUpdated = true;
       o.injectNmi = 0;
+    }
+    if (o.resetCore0At && frames.length >= o.resetCore0At) {
+      o.resetCore0At = 0;
+      resetCore0();
+    }
+    if (o.watchdogAt && frames.length >= o.watchdogAt) {
+      o.watchdogAt = 0;
+      dual.holdCore1(true);
+      dual.holdCore1(false);
+      uartTx.reset();
+      resetCore0();
     }
     if (fwError) break;
     if (emuWarning) { fwError = emuWarning; break; }
@@ -248,6 +353,8 @@ function main() {
     if (clock.nanos > maxNs) { fwError = `no frame after ${o.maxCycles} cycles`; break; }
   }
   if (!fwError && cores === 2 && !dual.launched[1]) fwError = 'a two-core image that never started core 1';
+  if (!fwError && uartTx.lost) fwError = `${uartTx.lost} character(s) written to a full UART FIFO were lost`;
+  frames.length = Math.min(frames.length, o.frames);
   if (panel.violation) { process.stderr.write(`rp2040sim: panel protocol violation: ${panel.violation}\n`); process.exit(3); }
   if (fwError) { process.stderr.write(`rp2040sim: ${fwError}\n`); process.exit(1); }
 
@@ -264,7 +371,8 @@ function main() {
         target: 'rp2040-sim', what: `scene:${f.scene}`, numeric: o.numeric, variant: o.variant, cores,
         frame: f.frame, width: w, height: h,
         cycles, per: 'frame', cpu_hz: cpuHz, us: Math.round(f.ns / 1000),
-        fps: Number((1e9 / f.ns).toFixed(3)), spi_bytes: f.spi_bytes,
+        period_us: Math.round(f.period_ns / 1000), fps: Number((1e9 / f.period_ns).toFixed(3)),
+        uart_stall_cycles: Math.round(f.uart_stall_ns * cpuHz / 1e9), spi_bytes: f.spi_bytes,
         xip_misses: f.xip_misses, xip_stall_cycles: f.xip_stall_cycles, xip_fill_cycles: xipMode.cycles,
         ...(f.first_ns !== undefined ? { first_image_us: Math.round(f.first_ns / 1000) } : {}),
       }) + '\n');
@@ -280,12 +388,15 @@ function main() {
     for (const r of runs) {
       const n = r.list.length, cyc = r.list.map((f) => f.ns * cpuHz / 1e9);
       const ns = r.list.reduce((a, f) => a + f.ns, 0) / n;
+      const period = r.list.reduce((a, f) => a + f.period_ns, 0) / n;
+      const stall = r.list.reduce((a, f) => a + f.uart_stall_ns, 0) / n;
       process.stdout.write(JSON.stringify({
         target: 'rp2040-sim', what: `scene:${r.scene}`, numeric: o.numeric, variant: o.variant, cores,
         frame: r.list[0].frame, frames: n, width: w, height: h,
         cycles: Math.round(ns * cpuHz / 1e9), per: 'frame',
         cycles_min: Math.round(Math.min(...cyc)), cycles_max: Math.round(Math.max(...cyc)),
-        cpu_hz: cpuHz, us: Math.round(ns / 1000), fps: Number((1e9 / ns).toFixed(3)),
+        cpu_hz: cpuHz, us: Math.round(ns / 1000), period_us: Math.round(period / 1000),
+        fps: Number((1e9 / period).toFixed(3)), uart_stall_cycles: Math.round(stall * cpuHz / 1e9),
         spi_bytes: Math.round(r.list.reduce((a, f) => a + f.spi_bytes, 0) / n),
         xip_misses: Math.round(r.list.reduce((a, f) => a + f.xip_misses, 0) / n),
         xip_stall_cycles: Math.round(r.list.reduce((a, f) => a + f.xip_stall_cycles, 0) / n),
@@ -297,7 +408,8 @@ function main() {
   }
   if (o.outRaw) fs.writeFileSync(o.outRaw, rawLE(frames[frames.length - 1].px));
   const simS = (Date.now() - t0) / 1000;
-  process.stderr.write(`rp2040sim: ${frames.length} frame(s), ${Math.round(clock.nanos * cpuHz / 1e9)} cycles emulated in ${simS.toFixed(1)} s\n`);
+  process.stderr.write(`rp2040sim: ${frames.length} frame(s), ${Math.round(clock.nanos * cpuHz / 1e9)} cycles emulated in ${simS.toFixed(1)} s` +
+    (resets ? `, core 0 reset ${resets} time(s), core 1 ${dual.core1Resets}` : '') + '\n');
 }
 
 main();

@@ -7,11 +7,14 @@
  * launch handshake (with a wrong start, stale words and restarts).
  * xip.js: hits, misses, the two ways and LRU replacement, the uncached and
  * non-allocating aliases, the line-fill cost of the 03h and EBh read modes,
- * and the boot ROM's boot2 CRC.
+ * and the boot ROM's boot2 CRC. uart.js: the transmit FIFO's fill (TXFF,
+ * TXFE, BUSY), its drain at the baud rate, the transmit interrupt at its
+ * trigger level, and the time counted as waiting.
  * Prints PASS/FAIL lines (tests/support/run.sh). */
 const { RP2040 } = require('rp2040js');
 const { DualCore } = require('./dualcore.js');
 const { XipCache, lineFillCycles, crc32BootRom, boot2Problem } = require('./xip.js');
+const { UartTx } = require('./uart.js');
 
 const SIO = 0xd0000000;
 const CPUID = SIO, FIFO_ST = SIO + 0x50, FIFO_WR = SIO + 0x54, FIFO_RD = SIO + 0x58;
@@ -192,6 +195,55 @@ function launch(t, seq) {
   const ok = boot2Problem(flash) === null;
   flash[3] ^= 1;
   check('boot2_crc_accepts_and_refuses', ok && boot2Problem(flash) !== null, 'CRC check wrong');
+}
+
+{
+  /* UART0 at 115200 8N1 from clk_peri 125 MHz (IBRD 67, FBRD 52): 10 bits a
+   * character, 86.8 us */
+  const UART = 0x40034000, DR = UART, FR = UART + 0x18, IBRD = UART + 0x24, FBRD = UART + 0x28,
+    LCR_H = UART + 0x2c, IFLS = UART + 0x34, IMSC = UART + 0x38, RIS = UART + 0x3c;
+  const mcu = new RP2040();
+  mcu.logger = { debug() {}, info() {}, warn() {}, error() {} };
+  mcu.clkPeri = 125e6;
+  const u = new UartTx(mcu, mcu.uart[0]);
+  let irq = false;
+  mcu.setInterrupt = (n, v) => { if (n === 20) irq = v; };
+  const wire = [];
+  u.onWire = (b) => wire.push([b, mcu.clock.nanos]);
+  mcu.writeUint32(IBRD, 67); mcu.writeUint32(FBRD, 52); mcu.writeUint32(LCR_H, (3 << 5) | (1 << 4));
+  mcu.writeUint32(IFLS, 0); mcu.writeUint32(IMSC, 1 << 5);
+  const fr0 = mcu.readUint32(FR);
+  for (let i = 0; i < 33; i++) mcu.writeUint32(DR, 65 + i);
+  const fr1 = mcu.readUint32(FR);
+  check('uart_fifo_empty_then_full', (fr0 & 0xa8) === 0x80 && (fr1 & 0xa8) === 0x28,
+        `FR ${fr0.toString(16)} then ${fr1.toString(16)}`);
+  /* the first character went to the shift register at once: 33 fit */
+  check('uart_33_fit_none_lost', u.lost === 0 && u.written === 33, `lost ${u.lost} written ${u.written}`);
+  /* one character on the line (it left the FIFO at once), 32 in the FIFO */
+  const charNs = 10 * 16 * (67 + 52 / 64) * 1e9 / 125e6;
+  const run = (ns) => mcu.clock.tick(ns);
+  run(charNs * 1.5);
+  check('uart_drains_at_baud_rate', wire.length === 1 && Math.abs(wire[0][1] - charNs) < 2 &&
+        !(mcu.readUint32(FR) & 0x20), `${wire.length} out, first at ${wire.length && wire[0][1]} ns (${charNs})`);
+  check('uart_tx_irq_not_yet', !irq && !(mcu.readUint32(RIS) & 0x20), `irq ${irq}`);
+  run(charNs * 28);   /* 28 more out, 4 left: the trigger level, 1/8 */
+  check('uart_tx_irq_at_trigger', irq && (mcu.readUint32(RIS) & 0x20) !== 0, `${wire.length} out, irq ${irq}`);
+  mcu.writeUint32(DR, 1); mcu.writeUint32(DR, 2);
+  check('uart_tx_irq_cleared_above_trigger', !irq, `irq ${irq}`);
+  run(charNs * 40);
+  check('uart_all_sent_in_order', wire.length === 35 && wire[32][0] === 97 && wire[34][0] === 2 &&
+        (mcu.readUint32(FR) & 0xa8) === 0x80, `${wire.length} out, FR ${mcu.readUint32(FR).toString(16)}`);
+  /* a loop polling TXFF is a wait; one look that goes on is not */
+  for (let i = 0; i < 32; i++) mcu.writeUint32(DR, 48);
+  mcu.readUint32(FR);
+  run(1e6);
+  const before = u.stallNs;
+  for (let i = 0; i < 32; i++) mcu.writeUint32(DR, 48);
+  const t0 = mcu.clock.nanos;
+  for (let i = 0; i < 1e5 && (mcu.readUint32(FR) & 0x20); i++) mcu.clock.tick(50);
+  const waited = mcu.clock.nanos - t0;
+  check('uart_stall_counts_waits_only', before === 0 && Math.abs(u.stallNs - waited) < 1 && waited > 0,
+        `stall ${before} then ${u.stallNs} for a wait of ${waited} ns`);
 }
 
 process.exit(failed ? 1 : 0);

@@ -1,7 +1,20 @@
 /* SPDX-License-Identifier: MIT */
-/* board.c — RP2040 clocks, resets, UART0, timer and the second core. */
+/* board.c — RP2040 clocks, resets, UART0 (its log ring), timer and the second core. */
 #include "board.h"
 #include "rp2040_regs.h"
+
+/* ---- the log ring ---------------------------------------------------------
+ * Written by board_puts on core 0 with interrupts masked, read by the UART
+ * interrupt on core 0: head and tail count characters (free-running, the
+ * index is the count modulo the size). */
+#ifndef RP2040_LOG_RING
+#define RP2040_LOG_RING 512
+#endif
+#if RP2040_LOG_RING & (RP2040_LOG_RING - 1)
+#error "RP2040_LOG_RING must be a power of two"
+#endif
+static char log_ring[RP2040_LOG_RING];
+static volatile uint32_t log_head, log_tail;
 
 static void unreset(uint32_t mask)
 {
@@ -81,12 +94,35 @@ static void uart_init(void)
     REG(UARTIBRD) = 67;
     REG(UARTFBRD) = 52;
     REG(UARTLCR_H) = (3u << 5) | (1u << 4);  /* 8 bits, FIFOs on */
+    REG(UARTIFLS) = 0;                       /* transmit interrupt at 1/8 full (4 left) */
+    REG(UARTIMSC) = 0;
+    REG(UARTICR) = 0x7ffu;
     REG(UARTCR) = (1u << 0) | (1u << 8);     /* UARTEN, TXE */
     REG(GPIO_CTRL(RP2040_UART_TX)) = GPIO_FUNC_UART;
+    log_head = log_tail = 0;
+    REG(NVIC_ICPR) = 1u << UART0_IRQ;
+    REG(NVIC_ISER) = 1u << UART0_IRQ;        /* core 0's NVIC: core 1 never takes it */
+}
+
+/* Core 0 may start with the rest of the chip still running: after a reset
+ * of core 0 alone (a debug probe's reset, SYSRESETREQ) core 1 is where the
+ * last run left it (rendering, or waiting for a message that will not come),
+ * a spinlock may be held, and DMA may still be sending. So core 1 goes back
+ * to the boot ROM through the power-on state machine (forced off, then
+ * released: it waits for the launch sequence again), every spinlock is
+ * released and the blocks the firmware uses are reset. */
+static void chip_to_known_state(void)
+{
+    REG_SET(PSM_FRCE_OFF) = PSM_PROC1;
+    while (!(REG(PSM_FRCE_OFF) & PSM_PROC1)) {}
+    REG_CLR(PSM_FRCE_OFF) = PSM_PROC1;
+    for (unsigned n = 0; n < 32; n++) REG(SIO_SPINLOCK(n)) = 1;   /* a write releases it */
+    REG_SET(RESETS_RESET) = RESET_IO_RESETS;
 }
 
 void board_init(void)
 {
+    chip_to_known_state();
     clocks_init();
     unreset(RESET_IO_BANK0 | RESET_PADS_BANK0 | RESET_TIMER | RESET_DMA | RESET_SPI0);
     uart_init();
@@ -109,15 +145,64 @@ void board_delay_us(uint32_t us)
     while (board_now_us() < end) {}
 }
 
-void board_putc(char c)
+
+static uint32_t irq_mask(void)
 {
-    while (REG(UARTFR) & UARTFR_TXFF) {}
-    REG(UARTDR) = (uint8_t)c;
+    uint32_t m;
+    __asm__ volatile("mrs %0, primask\n cpsid i" : "=r"(m)::"memory");
+    return m;
+}
+
+static void irq_restore(uint32_t m) { __asm__ volatile("msr primask, %0" ::"r"(m) : "memory"); }
+
+/* Moves characters from the ring to the FIFO while it has room (never
+ * waits); the transmit interrupt stays enabled while the ring holds more. */
+static void log_kick(void)
+{
+    uint32_t t = log_tail;
+    const uint32_t h = log_head;
+    while (t != h && !(REG(UARTFR) & UARTFR_TXFF)) REG(UARTDR) = (uint8_t)log_ring[t++ % RP2040_LOG_RING];
+    log_tail = t;
+    /* the FIFO is full when characters are left: the interrupt comes when
+     * it has drained to its trigger level */
+    if (t != h) REG_SET(UARTIMSC) = UART_TXIM;
+    else REG_CLR(UARTIMSC) = UART_TXIM;
+}
+
+void board_uart0_irq(void)
+{
+    REG(UARTICR) = UART_TXIM;
+    log_kick();
 }
 
 void board_puts(const char *s)
 {
-    while (*s) board_putc(*s++);
+    const uint32_t m = irq_mask();
+    for (; *s; s++) {
+        if (log_head - log_tail == RP2040_LOG_RING) {
+            /* full: the oldest character to the FIFO as soon as it has room */
+            while (REG(UARTFR) & UARTFR_TXFF) {}
+            REG(UARTDR) = (uint8_t)log_ring[log_tail++ % RP2040_LOG_RING];
+        }
+        log_ring[log_head++ % RP2040_LOG_RING] = *s;
+    }
+    log_kick();
+    irq_restore(m);
+}
+
+void board_puts_sync(const char *s)
+{
+    const uint32_t m = irq_mask();
+    REG_CLR(UARTIMSC) = UART_TXIM;
+    while (log_tail != log_head) {
+        while (REG(UARTFR) & UARTFR_TXFF) {}
+        REG(UARTDR) = (uint8_t)log_ring[log_tail++ % RP2040_LOG_RING];
+    }
+    for (; *s; s++) {
+        while (REG(UARTFR) & UARTFR_TXFF) {}
+        REG(UARTDR) = (uint8_t)*s;
+    }
+    irq_restore(m);
 }
 
 uint32_t board_core_id(void) { return REG(SIO_CPUID); }
@@ -152,20 +237,39 @@ static void fifo_drain(void)
     while (REG(SIO_FIFO_ST) & SIO_FIFO_VLD) (void)REG(SIO_FIFO_RD);
 }
 
-void board_core1_launch(void (*entry)(void), uint32_t *stack_top)
+/* The FIFO's next word into *v, waiting until the deadline (board_now_us);
+ * 0, or -1 when none came. */
+static int fifo_pop_until(uint32_t *v, uint64_t deadline)
+{
+    while (!(REG(SIO_FIFO_ST) & SIO_FIFO_VLD))
+        if (board_now_us() >= deadline) return -1;
+    *v = REG(SIO_FIFO_RD);
+    return 0;
+}
+
+int board_core1_launch(void (*entry)(void), uint32_t *stack_top)
 {
     /* The boot ROM on core 1 waits for 0, 0, 1, VTOR, SP, PC, echoing each
      * word; a wrong echo restarts the sequence. A 0 is sent only after
-     * draining, since core 1 may have stale words queued. */
+     * draining, since core 1 may have stale words queued. A core 1 that
+     * does not answer (not in the boot ROM) fails the launch after
+     * RP2040_LAUNCH_TIMEOUT_US. */
     const uint32_t seq[6] = { 0, 0, 1, (uint32_t)(uintptr_t)rp2040_vectors,
                               (uint32_t)(uintptr_t)stack_top, (uint32_t)(uintptr_t)entry };
+    const uint64_t deadline = board_now_us() + RP2040_LAUNCH_TIMEOUT_US;
     unsigned i = 0;
     while (i < 6) {
         if (seq[i] == 0) {
             fifo_drain();
             __asm__ volatile("sev");
         }
-        board_fifo_push(seq[i]);
-        i = (board_fifo_pop() == seq[i]) ? i + 1 : 0;
+        while (!(REG(SIO_FIFO_ST) & SIO_FIFO_RDY))
+            if (board_now_us() >= deadline) return -1;
+        REG(SIO_FIFO_WR) = seq[i];
+        __asm__ volatile("sev");
+        uint32_t echo;
+        if (fifo_pop_until(&echo, deadline) != 0) return -1;
+        i = (echo == seq[i]) ? i + 1 : 0;
     }
+    return 0;
 }

@@ -23,6 +23,8 @@
 typedef void (*vector_fn)(void);
 extern const vector_fn rp2040_vectors[16 + 26];
 
+/* Brings core 1, the spinlocks and the blocks used to a known state (core 0
+ * may have been reset alone), then clocks, GPIO, timer, DMA, SPI0, UART0. */
 void board_init(void);
 
 /* Microseconds since boot (64-bit timer, never wraps in practice). */
@@ -30,16 +32,28 @@ uint64_t board_now_us(void);
 void board_delay_us(uint32_t us);
 void board_delay_cycles(uint32_t n);   /* at least n cycles of clk_sys */
 
-/* Blocking UART0 output. */
-void board_putc(char c);
+/* UART0 output (core 0 only): the text joins a ring of RP2040_LOG_RING
+ * characters that the UART's transmit interrupt moves into its 32-character
+ * FIFO as it drains, so the caller does not wait for the line; only when the
+ * ring is full does it wait, for room in the FIFO, passing the oldest
+ * character there itself. The text is never dropped. */
 void board_puts(const char *s);
+/* The ring emptied, then the text written straight to the FIFO, waiting for
+ * room (a fault report: from a handler, with the interrupt not taken). */
+void board_puts_sync(const char *s);
+/* UART0's interrupt handler (vector 36). */
+void board_uart0_irq(void);
 
 /* Core id (0 or 1) of the caller. */
 uint32_t board_core_id(void);
 
 /* Starts core 1 at entry(), with its stack top at stack_top (8-byte aligned),
- * through the boot ROM's SIO FIFO handshake. */
-void board_core1_launch(void (*entry)(void), uint32_t *stack_top);
+ * through the boot ROM's SIO FIFO handshake; 0, or -1 when core 1 did not
+ * complete it within RP2040_LAUNCH_TIMEOUT_US. */
+#ifndef RP2040_LAUNCH_TIMEOUT_US
+#define RP2040_LAUNCH_TIMEOUT_US 100000u
+#endif
+int board_core1_launch(void (*entry)(void), uint32_t *stack_top);
 
 /* The inter-core lock: SIO spinlock 31, with memory barriers (an access
  * inside it is not moved out by the compiler or the bus). */

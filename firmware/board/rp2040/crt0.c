@@ -50,7 +50,7 @@ __attribute__((used)) static void fault_report(const uint32_t *frame)
         *p++ = '\r';
         *p++ = '\n';
         *p = 0;
-        board_puts(line);
+        board_puts_sync(line);
     }
     for (;;) __asm__ volatile("wfi");
 }
@@ -76,13 +76,17 @@ __attribute__((naked)) static void default_handler(void)
 #define D2 default_handler, default_handler
 #define D8 D2, D2, D2, D2
 
-/* 16 system vectors + 26 RP2040 interrupts; nothing here uses interrupts
- * (DMA completion is polled), so all but reset point to default_handler. */
+/* 16 system vectors + 26 RP2040 interrupts; the only interrupt used is
+ * UART0's (IRQ 20, vector 36: the UART's transmit FIFO refilled from the log
+ * ring, board.c; DMA completion is polled), all but it and reset point to
+ * default_handler. */
 __attribute__((section(".vectors"), used))
 const vector_fn rp2040_vectors[16 + 26] = {
     (vector_fn)(uintptr_t)__stack0_top,
     reset_handler,
-    D8, D8, D8, D8, D8, /* 40 = 16 + 26 - 2 */
+    D8, D8, D8, D8, D2,  /* vectors 2..35 */
+    board_uart0_irq,     /* 36 = 16 + UART0_IRQ */
+    D2, D2, default_handler,
 };
 
 void reset_handler(void)

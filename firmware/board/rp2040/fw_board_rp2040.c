@@ -26,9 +26,9 @@ int fw_board_again(void) { return 1; }
 
 unsigned fw_board_cores(void) { return RP2040_SINGLE_CORE ? 1u : 2u; }
 
-void fw_board_core1_start(void (*entry)(void))
+int fw_board_core1_start(void (*entry)(void))
 {
-    board_core1_launch(entry, (uint32_t *)(core1_stack + RP2040_CORE1_STACK / 8));
+    return board_core1_launch(entry, (uint32_t *)(core1_stack + RP2040_CORE1_STACK / 8));
 }
 
 void fw_board_send(uint32_t v) { board_fifo_push(v); }

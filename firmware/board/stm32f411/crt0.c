@@ -16,10 +16,56 @@ extern uint32_t __stack_top[];
 int main(void);
 void reset_handler(void);
 
-/* An unexpected fault or interrupt stops here; a debugger shows the cause. */
-static void default_handler(void)
+/* "0x" and 8 hex digits of v at p; returns the end. */
+static char *put_hex(char *p, uint32_t v)
 {
-    for (;;) __asm__ volatile("bkpt #0");
+    *p++ = '0';
+    *p++ = 'x';
+    for (int s = 28; s >= 0; s -= 4) *p++ = "0123456789abcdef"[(v >> s) & 15u];
+    return p;
+}
+
+/* An unexpected fault or interrupt: the line
+ *   fault ipsr=N pc=0x... lr=0x...
+ * on USART1 when it is up (IPSR: 2 NMI, 3 HardFault, 4 MemManage, 5 BusFault,
+ * 6 UsageFault, 16 + n IRQ n; pc and lr as the exception stacked them), then
+ * a system reset (SCB AIRCR SYSRESETREQ): the board starts again instead of
+ * waiting for a debugger. */
+__attribute__((used)) static void fault_report(const uint32_t *frame)
+{
+    uint32_t ipsr;
+    __asm__ volatile("mrs %0, ipsr" : "=r"(ipsr));
+    if (REG(USART_CR1) & USART_CR1_UE) {
+        char line[64], *p = line;
+        for (const char *a = "fault ipsr="; *a;) *p++ = *a++;
+        if (ipsr >= 100) *p++ = (char)('0' + ipsr / 100 % 10);
+        if (ipsr >= 10) *p++ = (char)('0' + ipsr / 10 % 10);
+        *p++ = (char)('0' + ipsr % 10);
+        for (const char *a = " pc="; *a;) *p++ = *a++;
+        p = put_hex(p, frame[6]);
+        for (const char *a = " lr="; *a;) *p++ = *a++;
+        p = put_hex(p, frame[5]);
+        *p++ = '\r';
+        *p++ = '\n';
+        *p = 0;
+        board_puts(line);   /* returns once the last character has left (TC) */
+    }
+    __asm__ volatile("dsb" ::: "memory");
+    REG(SCB_AIRCR) = SCB_AIRCR_SYSRESETREQ;
+    __asm__ volatile("dsb" ::: "memory");
+    for (;;) {}
+}
+
+/* Every vector but reset: the stacked frame (MSP or PSP, from EXC_RETURN
+ * bit 2) to fault_report. */
+__attribute__((naked)) static void default_handler(void)
+{
+    __asm__ volatile(
+        "tst  lr, #4\n"
+        "ite  eq\n"
+        "mrseq r0, msp\n"
+        "mrsne r0, psp\n"
+        "b    fault_report\n");
 }
 
 #define D2 default_handler, default_handler
@@ -42,6 +88,9 @@ void reset_handler(void)
     while (dst < __data_end) *dst++ = *src++;
     for (dst = __bss_start; dst < __bss_end; dst++) *dst = 0;
     board_init();
+#ifdef STM32_TEST_FAULT
+    __asm__ volatile("udf #0");   /* tests: the fault line and the reset */
+#endif
     main();
     for (;;) __asm__ volatile("wfi");
 }

@@ -7,18 +7,22 @@
 
 const char fw_board_name[] = "stm32f411";
 
-int fw_board_init(struct hal *h) { return hal_stm32f4_init(h, STM32_APB2_HZ, board_now_us); }
+int fw_board_init(struct hal *h) { return hal_stm32f4_init(h, board_apb2_hz, board_now_us); }
 
 void fw_board_puts(const char *s) { board_puts(s); }
 
 int fw_board_again(void) { return 1; }
 
 unsigned fw_board_cores(void) { return 1u; }
-void fw_board_core1_start(void (*entry)(void)) { (void)entry; }
+int fw_board_core1_start(void (*entry)(void))
+{
+    (void)entry;
+    return -1;
+}
 void fw_board_send(uint32_t v) { (void)v; }
 uint32_t fw_board_recv(void) { return 0; }
 void fw_board_lock(void) {}
 void fw_board_unlock(void) {}
 void fw_board_notify(void) {}
 void fw_board_wait(void) {}
-uint32_t fw_board_cpu_hz(void) { return STM32_SYS_HZ; }
+uint32_t fw_board_cpu_hz(void) { return board_sys_hz; }

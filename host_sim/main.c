@@ -5,6 +5,7 @@
  * shows. The command line, exit codes and --stats fields are the project's
  * outside contract (docs/host_sim.md).
  */
+#define _XOPEN_SOURCE 700   /* realpath */
 #include <errno.h>
 #include <math.h>
 #include <stdarg.h>
@@ -667,6 +668,79 @@ static int check_usage(struct run_state *r)
     return EXIT_OK;
 }
 
+/* ---- the files a run reads, and output identity ------------------------------ */
+
+/* The scene parser opens every file it reads (the scene, its textures, OBJ
+ * and MTL files) with fopen, which the link wraps (mk/host_sim.mk:
+ * -Wl,--wrap=fopen): each file opened for reading is kept by its device and
+ * inode, so that no output is written onto one of them. */
+FILE *__real_fopen(const char *path, const char *mode);
+FILE *__wrap_fopen(const char *path, const char *mode);
+
+struct read_file { dev_t dev; ino_t ino; };
+static struct read_file *read_files;
+static size_t nread_files, read_files_cap;
+
+FILE *__wrap_fopen(const char *path, const char *mode)
+{
+    FILE *f = __real_fopen(path, mode);
+    struct stat st;
+    if (!f || mode[0] != 'r' || strchr(mode, '+') || fstat(fileno(f), &st)) return f;
+    for (size_t i = 0; i < nread_files; i++)
+        if (read_files[i].dev == st.st_dev && read_files[i].ino == st.st_ino) return f;
+    if (nread_files == read_files_cap) {
+        size_t cap = read_files_cap ? read_files_cap * 2 : 16;
+        struct read_file *n = realloc(read_files, cap * sizeof *n);
+        if (!n) return f;   /* (the scene's own file is the first, always kept) */
+        read_files = n;
+        read_files_cap = cap;
+    }
+    read_files[nread_files].dev = st.st_dev;
+    read_files[nread_files].ino = st.st_ino;
+    nread_files++;
+    return f;
+}
+
+/* path with its directory resolved (realpath) into out: 0, or -1. */
+static int norm_path(const char *path, char *out, size_t len)
+{
+    char dir[4096], *rd;
+    const char *slash = strrchr(path, '/'), *base = slash ? slash + 1 : path;
+    size_t n = slash ? (size_t)(slash - path) : 0;
+    if (slash && n == 0) n = 1;   /* "/file" */
+    if (n >= sizeof dir) return -1;
+    if (slash) memcpy(dir, path, n);
+    else dir[n++] = '.';
+    dir[n] = 0;
+    if (!(rd = realpath(dir, NULL))) return -1;
+    int w = snprintf(out, len, "%s/%s", strcmp(rd, "/") ? rd : "", base);
+    free(rd);
+    return w < 0 || (size_t)w >= len ? -1 : 0;
+}
+
+/* 1 if a and b are the same file: the same device and inode when both
+ * exist, else the same path once their directories are resolved. */
+static int same_file(const char *a, const char *b)
+{
+    struct stat sa, sb;
+    int ea = !stat(a, &sa), eb = !stat(b, &sb);
+    if (ea || eb) return ea && eb && sa.st_dev == sb.st_dev && sa.st_ino == sb.st_ino;
+    char na[4200], nb[4200];
+    if (norm_path(a, na, sizeof na) || norm_path(b, nb, sizeof nb)) return !strcmp(a, b);
+    return !strcmp(na, nb);
+}
+
+/* 1 if path is a regular file the run has read (the scene, a texture, an
+ * OBJ or MTL file). */
+static int is_read_file(const char *path)
+{
+    struct stat st;
+    if (stat(path, &st) || !S_ISREG(st.st_mode)) return 0;
+    for (size_t i = 0; i < nread_files; i++)
+        if (read_files[i].dev == st.st_dev && read_files[i].ino == st.st_ino) return 1;
+    return 0;
+}
+
 /* The scene file: there, not overwritten by an output, read, and parsed by
  * r->c (the double core for fixed point: core_pick picks the format). */
 static int open_scene(struct run_state *r)
@@ -686,7 +760,7 @@ static int open_scene(struct run_state *r)
         if (!stat(r->outs[i], &so) && so.st_dev == st.st_dev && so.st_ino == st.st_ino && S_ISREG(st.st_mode))
             return fail(EXIT_USAGE, "%s: is the scene file; refusing to overwrite it", r->outs[i]);
         for (int j = 0; j < i; j++)
-            if (r->outs[j] && !strcmp(r->outs[i], r->outs[j]))
+            if (r->outs[j] && same_file(r->outs[i], r->outs[j]))
                 return fail(EXIT_USAGE, "%s: given as two outputs", r->outs[i]);
     }
     if ((rc = core_api_double.scene_read(o->scene, &scene_text, &scene_len, err, sizeof err))) {
@@ -695,8 +769,14 @@ static int open_scene(struct run_state *r)
     }
     /* The scene's canvas (for --panel none) from the double parse, which holds
      * any scene the format analysis may accept. */
-    return core_open(r->c, !strcmp(r->numeric, "fixed") ? &core_api_double : core_api_by_name(r->numeric),
-                     o->scene);
+    if ((rc = core_open(r->c, !strcmp(r->numeric, "fixed") ? &core_api_double : core_api_by_name(r->numeric),
+                        o->scene)))
+        return rc;
+    /* nor a file the scene reads (its textures, OBJ and MTL files) */
+    for (int i = 0; i < 3; i++)
+        if (r->outs[i] && is_read_file(r->outs[i]))
+            return fail(EXIT_USAGE, "%s: is a file the scene reads; refusing to overwrite it", r->outs[i]);
+    return EXIT_OK;
 }
 
 /* The render size (--size, the panel's or the scene's canvas), the strip
@@ -901,6 +981,11 @@ static int frame_done(struct run_state *r, unsigned f, unsigned fi, const struct
     if (r->pattern) {
         /* this frame's glass, as --out does after the last one */
         out_name(r->frame_out, sizeof r->frame_out, o->out, f);
+        if (is_read_file(r->frame_out))
+            return fail(EXIT_USAGE, "%s: is a file the scene reads; refusing to overwrite it", r->frame_out);
+        for (int i = 1; i < 3; i++)
+            if (r->outs[i] && same_file(r->frame_out, r->outs[i]))
+                return fail(EXIT_USAGE, "%s: given as two outputs", r->frame_out);
         if ((rc = panel_out_read(*r->pp, r->b->fb, err, sizeof err))) return fail(rc, "%s", err);
         if ((rc = img_write_565(r->frame_out, img_format_of(r->frame_out), r->b->fb, r->w, r->h, r->w,
                                 err, sizeof err)))
@@ -1095,8 +1180,8 @@ static int compare_ref(struct run_state *r)
 }
 
 /* What the glass shows (or the framebuffer) after the last frame, and the
- * renderer's colours; a failed output removes the ones this run wrote
- * before it. */
+ * renderer's colours (staged: main renames them into place only when the
+ * whole run succeeds). */
 static int write_outputs(const struct run_state *r)
 {
     const struct opts *o = r->o;
@@ -1108,12 +1193,12 @@ static int write_outputs(const struct run_state *r)
         if ((rc = panel_out_read(*r->pp, b->fb, err, sizeof err))) return fail(rc, "%s", err);
         if (o->out && !r->pattern &&
             (rc = img_write_565(o->out, img_format_of(o->out), b->fb, w, h, w, err, sizeof err)))
-            return img_remove_written(), fail(rc, "%s", err);
+            return fail(rc, "%s", err);
         if (o->out_raw && (rc = img_write_raw565(o->out_raw, b->fb, w, h, w, err, sizeof err)))
-            return img_remove_written(), fail(rc, "%s", err);
+            return fail(rc, "%s", err);
     }
     if (o->out_rgb888 && (rc = img_write_ppm888(o->out_rgb888, b->rgb, w, h, err, sizeof err)))
-        return img_remove_written(), fail(rc, "%s", err);
+        return fail(rc, "%s", err);
     return EXIT_OK;
 }
 
@@ -1170,6 +1255,13 @@ int main(int argc, char **argv)
     struct bufs b = { 0 };
     rc = run(&o, &c, &ref, &p, &b);
     if (p) panel_out_close(p);
+    /* every output at once, or none: a failed run leaves the files before it */
+    if (rc == EXIT_OK) {
+        char err[512];
+        if (img_commit(err, sizeof err)) rc = fail(EXIT_INTERNAL, "%s", err);
+    } else {
+        img_discard();
+    }
     core_close(&c);
     core_close(&ref);
     free(b.strip);

@@ -28,8 +28,10 @@ define HOST_SIM_LINK
 $(HOST_SIM_BIN_$(1)): $(call obj,$(1),none,$(HOST_SIM_SRCS)) $(call core_bundles,$(1)) $(call core_frac_bundles,$(1)) \
                       $(call hal_objs,$(1))
 	@mkdir -p $$(@D)
-	$(Q)$$(CC) $(LDFLAGS_$(1)) -o $$@ $$^ $$(PNG_LIBS) $$(HAL_LDLIBS) $$(SDL2_LIBS) -lm
+	$(Q)$$(CC) $(LDFLAGS_$(1)) -Wl,--wrap=fopen -o $$@ $$^ $$(PNG_LIBS) $$(HAL_LDLIBS) $$(SDL2_LIBS) -lm
 endef
+# (--wrap=fopen: host_sim keeps every file the scene parser reads, so that no
+# output is written onto one of them)
 $(foreach v,$(VARIANTS),$(eval $(call HOST_SIM_LINK,$(v))))
 
 PROGRAMS  += $(HOST_SIM_BIN_host)

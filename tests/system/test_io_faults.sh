@@ -63,6 +63,73 @@ mkdir "$t/lim2"
 rc=$?
 if [ $rc -eq 1 ] && [ -z "$(ls -A "$t/lim2")" ]; then ok io_scenec_outputs_complete_or_absent
 else no io_scenec_outputs_complete_or_absent "exit $rc: $(cat "$t/err"); left: $(ls -A "$t/lim2")"; fi
+# a failed run leaves every file of an earlier run as it was: --out and each
+# frame of a per-frame pattern (all frames, not only the first three); the
+# outputs are renamed into place only when the whole run has succeeded
+# (ulimit -f 30, 15 KB: each 100x100 PNG fits, the raw frame, 20 KB, does not)
+mkdir "$t/keep"
+for f in a.png f000.png f001.png f002.png f003.png f004.png a.raw; do echo old >"$t/keep/$f"; done
+(ulimit -f 30; exec "$hs" --scene "$S" --panel none --size 100x100 --out "$t/keep/a.png" --out-raw "$t/keep/a.raw") \
+  >/dev/null 2>"$t/err"
+rc=$?
+(ulimit -f 30; exec "$hs" --scene "$S" --panel none --size 100x100 --frames 5 --out "$t/keep/f%03d.png" \
+  --out-raw "$t/keep/a.raw") >/dev/null 2>>"$t/err"
+rc2=$?
+kept=0
+for f in a.png f000.png f001.png f002.png f003.png f004.png a.raw; do [ "$(cat "$t/keep/$f")" = old ] && kept=$((kept + 1)); done
+if [ $rc -eq 1 ] && [ $rc2 -eq 1 ] && [ $kept -eq 7 ] && [ "$(ls -A "$t/keep" | wc -l)" -eq 7 ]; then
+  ok io_failed_run_keeps_earlier_files
+else no io_failed_run_keeps_earlier_files "exit $rc/$rc2, $kept of 7 kept: $(ls -A "$t/keep") $(cat "$t/err")"; fi
+# the same file under two names (./a.ppm, a hard link) is one output; a
+# file the scene reads (its texture) is not an output
+mkdir "$t/same"
+"$hs" --scene "$S" --size 16x16 --panel none --out "$t/same/a.ppm" --out-rgb888 "$t/same/./a.ppm" >/dev/null 2>"$t/err"
+rc=$?
+echo old >"$t/same/b.ppm"
+ln "$t/same/b.ppm" "$t/same/c.ppm"
+"$hs" --scene "$S" --size 16x16 --panel none --out "$t/same/b.ppm" --out-rgb888 "$t/same/c.ppm" >/dev/null 2>>"$t/err"
+rc2=$?
+if [ $rc -eq 2 ] && [ $rc2 -eq 2 ] && [ "$(grep -c "given as two outputs" "$t/err")" -eq 2 ] && [ ! -e "$t/same/a.ppm" ] &&
+   [ "$(cat "$t/same/b.ppm")" = old ]; then ok io_same_file_two_names_refused
+else no io_same_file_two_names_refused "exit $rc/$rc2: $(cat "$t/err")"; fi
+mkdir "$t/tex"
+printf 'P6\n2 2\n255\n' >"$t/tex/t.ppm"
+printf '\377\0\0\0\377\0\0\0\377\377\377\377' >>"$t/tex/t.ppm"
+cp "$t/tex/t.ppm" "$t/tex/orig.ppm"
+cp firmware/scenes/bench/knot-4k.obj "$t/tex/"
+sed 's/^texture .*/texture { name = checker file = "t.ppm" }/' firmware/scenes/bench/knot-4k-textured.scene >"$t/tex/t.scene"
+"$hs" --scene "$t/tex/t.scene" --size 16x16 --panel none --out "$t/tex/ok.ppm" >/dev/null 2>"$t/err" || no io_texture_scene "$(cat "$t/err")"
+"$hs" --scene "$t/tex/t.scene" --size 16x16 --panel none --out-rgb888 "$t/tex/./t.ppm" >/dev/null 2>"$t/err"
+rc=$?
+cp "$t/tex/knot-4k.obj" "$t/tex/orig.obj"
+"$hs" --scene "$t/tex/t.scene" --size 16x16 --panel none --out-raw "$t/tex/knot-4k.obj" >/dev/null 2>>"$t/err"
+rc2=$?
+if [ $rc -eq 2 ] && [ $rc2 -eq 2 ] && [ "$(grep -c "is a file the scene reads" "$t/err")" -eq 2 ] &&
+   cmp -s "$t/tex/t.ppm" "$t/tex/orig.ppm" && cmp -s "$t/tex/knot-4k.obj" "$t/tex/orig.obj"; then
+  ok io_output_onto_texture_refused
+else no io_output_onto_texture_refused "exit $rc/$rc2: $(cat "$t/err")"; fi
+
+# scenec: no output onto the scene (-o same.c same.c; -o x.c with the scene
+# named x.h), nor two outputs on one file; an output directory that does not
+# exist is an input error (exit 2)
+mkdir "$t/sc"
+cp "$S" "$t/sc/same.c"
+cp "$S" "$t/sc/x.h"
+"$sc" -o "$t/sc/same.c" "$t/sc/same.c" >/dev/null 2>"$t/err"
+rc=$?
+"$sc" -o "$t/sc/x.c" "$t/sc/x.h" >/dev/null 2>>"$t/err"
+rc2=$?
+"$sc" -o "$t/sc/z.c" --deps "$t/sc/./z.c" "$S" >/dev/null 2>>"$t/err"
+rc3=$?
+if [ $rc -eq 2 ] && [ $rc2 -eq 2 ] && [ $rc3 -eq 2 ] && [ "$(grep -c "is the scene file; refusing" "$t/err")" -eq 2 ] &&
+   grep -q "given as two outputs" "$t/err" && cmp -s "$S" "$t/sc/same.c" && cmp -s "$S" "$t/sc/x.h" &&
+   [ ! -e "$t/sc/x.c" ] && [ ! -e "$t/sc/z.c" ]; then ok io_scenec_output_onto_scene_refused
+else no io_scenec_output_onto_scene_refused "exit $rc/$rc2/$rc3: $(cat "$t/err")"; fi
+"$sc" -o /nonexistent/x.c "$S" >/dev/null 2>"$t/err"
+rc=$?
+if [ $rc -eq 2 ] && [ "$(wc -l <"$t/err")" -eq 1 ] && grep -q "does not exist" "$t/err"; then ok io_scenec_missing_output_dir_exit_2
+else no io_scenec_missing_output_dir_exit_2 "exit $rc: $(cat "$t/err")"; fi
+
 # a signal in the middle of a write removes the temporary file (host_sim
 # sends itself SIGTERM after the first row of --out-raw, test option); the
 # run ends by the signal, and nothing of it is left

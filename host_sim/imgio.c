@@ -11,6 +11,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include <sys/stat.h>
+#include <time.h>
 #include <unistd.h>
 
 /* The temporary file being written, removed by the signal handler if the
@@ -205,8 +206,21 @@ static FILE *tmp_open(const char *path, char *err, size_t errlen)
     struct stat st;
     in_place = !stat(path, &st) && (S_ISFIFO(st.st_mode) || S_ISCHR(st.st_mode));
     if (in_place) {
-        int pfd = open(path, O_WRONLY);
-        FILE *pf = pfd < 0 ? NULL : fdopen(pfd, "wb");
+        /* without O_NONBLOCK, opening a FIFO that no program reads would wait
+           forever: tried every 10 ms for IMG_FIFO_TIMEOUT_MS, then refused */
+        int pfd = -1;
+        for (int waited = 0;; waited += 10) {
+            pfd = open(path, O_WRONLY | O_NONBLOCK);
+            if (pfd >= 0 || errno != ENXIO || waited >= IMG_FIFO_TIMEOUT_MS) break;
+            struct timespec ts = { 0, 10000000L };
+            nanosleep(&ts, NULL);
+        }
+        if (pfd < 0 && errno == ENXIO) {
+            snprintf(err, errlen, "%s: a FIFO that no program read for %d s", path, IMG_FIFO_TIMEOUT_MS / 1000);
+            return NULL;
+        }
+        int fl = pfd < 0 ? -1 : fcntl(pfd, F_GETFL);
+        FILE *pf = fl < 0 || fcntl(pfd, F_SETFL, fl & ~O_NONBLOCK) ? NULL : fdopen(pfd, "wb");
         if (!pf) {
             snprintf(err, errlen, "%s: cannot open: %s", path, strerror(errno));
             if (pfd >= 0) close(pfd);

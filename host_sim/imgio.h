@@ -9,7 +9,8 @@
  * leaves every file as it was before it.
  *
  * A destination that is a FIFO or a character device (/dev/stdout) is
- * written in place instead. Signals that can be caught remove the temporary
+ * written in place instead; a FIFO that no program opens for reading within
+ * IMG_FIFO_TIMEOUT_MS is refused (exit 2) instead of waiting forever. Signals that can be caught remove the temporary
  * file; SIGPIPE and SIGXFSZ are ignored so that the write fails with a
  * message (a FIFO's reader gone, `ulimit -f`).
  *
@@ -23,6 +24,8 @@
 
 #include <stddef.h>
 #include <stdint.h>
+
+#define IMG_FIFO_TIMEOUT_MS 10000
 
 /* Image formats of --out, chosen by the file name's extension. */
 enum img_format { IMG_NONE = 0, IMG_PNG, IMG_PPM };

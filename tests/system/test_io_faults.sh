@@ -130,6 +130,66 @@ rc=$?
 if [ $rc -eq 2 ] && [ "$(wc -l <"$t/err")" -eq 1 ] && grep -q "does not exist" "$t/err"; then ok io_scenec_missing_output_dir_exit_2
 else no io_scenec_missing_output_dir_exit_2 "exit $rc: $(cat "$t/err")"; fi
 
+# FIFOs and devices: a scene FIFO no program writes to, an output FIFO no
+# program reads, are refused after 10 s (exit 2, one line) instead of
+# hanging; a texture that is a FIFO, and a device as the scene, at once; a
+# directory as the scene is said to be one (the three slow cases side by side)
+mkdir "$t/ff"
+mkfifo "$t/ff/scene.fifo" "$t/ff/out.fifo"
+timeout 60 "$hs" --scene "$t/ff/scene.fifo" --size 16x16 --panel none --out-raw "$t/ff/a.raw" >/dev/null 2>"$t/ff/e1" &
+p1=$!
+timeout 60 "$sc" -o "$t/ff/s.c" "$t/ff/scene.fifo" >/dev/null 2>"$t/ff/e2" &
+p2=$!
+timeout 60 "$hs" --scene "$S" --size 16x16 --panel none --out-raw "$t/ff/out.fifo" >/dev/null 2>"$t/ff/e3" &
+p3=$!
+mkdir "$t/ff/tex"
+cp firmware/scenes/bench/knot-4k.obj "$t/ff/tex/"
+mkfifo "$t/ff/tex/t.ppm"
+cp "$t/tex/t.scene" "$t/ff/tex/t.scene"
+timeout 30 "$hs" --scene "$t/ff/tex/t.scene" --size 16x16 --panel none --out "$t/ff/t.ppm" >/dev/null 2>"$t/err"
+rc=$?
+timeout 30 "$sc" -o "$t/ff/t.c" "$t/ff/tex/t.scene" >/dev/null 2>>"$t/err"
+rc2=$?
+if [ $rc -eq 2 ] && [ $rc2 -eq 2 ] && [ "$(grep -c "is not a regular file" "$t/err")" -eq 2 ]; then ok io_texture_fifo_refused
+else no io_texture_fifo_refused "exit $rc/$rc2: $(cat "$t/err")"; fi
+timeout 30 "$hs" --scene /dev/zero --size 16x16 --panel none >/dev/null 2>"$t/err"
+rc=$?
+timeout 30 "$sc" -o "$t/ff/z.c" /dev/zero >/dev/null 2>>"$t/err"
+rc2=$?
+timeout 30 "$sc" -o "$t/ff/d.c" "$t/ff" >/dev/null 2>>"$t/err"
+rc3=$?
+if [ $rc -eq 2 ] && [ $rc2 -eq 2 ] && [ $rc3 -eq 2 ] && [ "$(grep -c "not a regular file or a FIFO" "$t/err")" -eq 2 ] &&
+   grep -q "is a directory" "$t/err" && [ "$(wc -l <"$t/err")" -eq 3 ]; then ok io_device_or_directory_scene_refused
+else no io_device_or_directory_scene_refused "exit $rc/$rc2/$rc3: $(cat "$t/err")"; fi
+wait $p1; r1=$?
+wait $p2; r2=$?
+wait $p3; r3=$?
+if [ $r1 -eq 2 ] && [ $r2 -eq 2 ] && grep -q "nothing written to it" "$t/ff/e1" && grep -q "nothing written to it" "$t/ff/e2"
+then ok io_scene_fifo_without_writer_refused
+else no io_scene_fifo_without_writer_refused "exit $r1/$r2: $(cat "$t/ff/e1" "$t/ff/e2")"; fi
+if [ $r3 -eq 2 ] && [ "$(wc -l <"$t/ff/e3")" -eq 1 ] && grep -q "no program read" "$t/ff/e3" && [ -p "$t/ff/out.fifo" ]
+then ok io_output_fifo_without_reader_refused
+else no io_output_fifo_without_reader_refused "exit $r3: $(cat "$t/ff/e3")"; fi
+
+# a texture (or model file) through a symbolic link that leads outside the
+# scene's directory is refused, by host_sim and scenec alike
+mkdir "$t/ln" "$t/ln/in"
+cp firmware/scenes/bench/knot-4k.obj "$t/tex/t.scene" "$t/ln/in/"
+cp "$t/tex/t.ppm" "$t/ln/secret.ppm"
+ln -s ../secret.ppm "$t/ln/in/t.ppm"
+"$hs" --scene "$t/ln/in/t.scene" --size 16x16 --panel none --out "$t/ln/o.ppm" >/dev/null 2>"$t/err"
+rc=$?
+"$sc" -o "$t/ln/o.c" "$t/ln/in/t.scene" >/dev/null 2>>"$t/err"
+rc2=$?
+rm "$t/ln/in/t.ppm"
+cp "$t/tex/t.ppm" "$t/ln/in/real.ppm"
+ln -s real.ppm "$t/ln/in/t.ppm"
+"$hs" --scene "$t/ln/in/t.scene" --size 16x16 --panel none --out "$t/ln/o2.ppm" >/dev/null 2>>"$t/err"
+rc3=$?
+if [ $rc -eq 2 ] && [ $rc2 -eq 2 ] && [ $rc3 -eq 0 ] && [ "$(grep -c "leads outside the scene's directory" "$t/err")" -eq 2 ] &&
+   [ ! -e "$t/ln/o.ppm" ] && [ ! -e "$t/ln/o.c" ]; then ok io_symlink_outside_scene_dir_refused
+else no io_symlink_outside_scene_dir_refused "exit $rc/$rc2/$rc3: $(cat "$t/err")"; fi
+
 # a signal in the middle of a write removes the temporary file (host_sim
 # sends itself SIGTERM after the first row of --out-raw, test option); the
 # run ends by the signal, and nothing of it is left

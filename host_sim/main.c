@@ -134,17 +134,35 @@ static unsigned parse_count(const char *s, unsigned max)
     return (unsigned)v;
 }
 
-/* "WxH" with both sides in 1..MAX_SIDE. */
-static int parse_size(const char *s, unsigned *w, unsigned *h)
+/* Why s (its first n characters) is not a decimal count in 1..max, into
+ * why; 0 if it is one. */
+static int count_why(const char *s, size_t n, unsigned long max, char *why, size_t len)
 {
-    char buf[32];
+    size_t i = 0;
+    unsigned long v = 0;
+    while (i < n && s[i] >= '0' && s[i] <= '9') {
+        v = v * 10 + (unsigned long)(s[i++] - '0');
+        if (v > max) v = max + 1;
+    }
+    if (i == 0) snprintf(why, len, n ? "'%.*s' is not a number" : "no number", (int)n, s);
+    else if (i < n) snprintf(why, len, "'%.*s' after the number", (int)(n - i), s + i);
+    else if (v == 0) snprintf(why, len, "0 is less than 1");
+    else if (v > max) snprintf(why, len, "larger than %lu", max);
+    else return 0;
+    return -1;
+}
+
+/* "WxH" with both sides in 1..MAX_SIDE; -1 with the reason in why. */
+static int parse_size(const char *s, unsigned *w, unsigned *h, char *why, size_t len)
+{
+    char r[96];
     const char *x = strchr(s, 'x');
-    if (!x || (size_t)(x - s) >= sizeof buf) return -1;
-    memcpy(buf, s, (size_t)(x - s));
-    buf[x - s] = 0;
-    *w = parse_count(buf, MAX_SIDE);
-    *h = parse_count(x + 1, MAX_SIDE);
-    return *w && *h ? 0 : -1;
+    if (!x) return snprintf(why, len, "no 'x' between width and height"), -1;
+    if (count_why(s, (size_t)(x - s), MAX_SIDE, r, sizeof r)) return snprintf(why, len, "width: %s", r), -1;
+    if (count_why(x + 1, strlen(x + 1), MAX_SIDE, r, sizeof r)) return snprintf(why, len, "height: %s", r), -1;
+    *w = (unsigned)strtoul(s, NULL, 10);   /* (digits only, checked above) */
+    *h = (unsigned)strtoul(x + 1, NULL, 10);
+    return 0;
 }
 
 /* Option NAME (one of parse_args' with_arg) with its value VAL into o:
@@ -162,8 +180,9 @@ static int set_option(struct opts *o, const char *name, const char *val)
         }
         o->panel = val;
     } else if (!strcmp(name, "--size")) {
-        if (parse_size(val, &o->width, &o->height))
-            return fail(EXIT_USAGE, "bad size '%s' (WxH, each side 1..%d)", val, MAX_SIDE);
+        char why[128];
+        if (parse_size(val, &o->width, &o->height, why, sizeof why))
+            return fail(EXIT_USAGE, "bad size '%s': %s (WxH, each side 1..%d)", val, why, MAX_SIDE);
         o->has_size = 1;
     } else if (!strcmp(name, "--numeric") || !strcmp(name, "--compare")) {
         if (!core_api_by_name(val))
@@ -176,8 +195,10 @@ static int set_option(struct opts *o, const char *name, const char *val)
         if (!(o->frames = parse_count(val, 65535)))
             return fail(EXIT_USAGE, "bad frame count '%s' (1..65535)", val);
     } else if (!strcmp(name, "--strip-rows")) {
-        if (!(o->strip_rows = parse_count(val, MAX_SIDE)))
-            return fail(EXIT_USAGE, "bad strip height '%s' (1..%d)", val, MAX_SIDE);
+        char why[128];
+        if (count_why(val, strlen(val), MAX_SIDE, why, sizeof why))
+            return fail(EXIT_USAGE, "bad strip height '%s': %s (1..%d)", val, why, MAX_SIDE);
+        o->strip_rows = parse_count(val, MAX_SIDE);
     } else if (!strcmp(name, "--backend")) {
         if (strcmp(val, "sim") && strcmp(val, "linux"))
             return fail(EXIT_USAGE, "unknown backend '%s' (sim|linux)", val);

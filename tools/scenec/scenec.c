@@ -648,6 +648,24 @@ static long parse_int(const char *s, long lo, long hi)
     return *e || v < lo || v > hi ? -1 : v;
 }
 
+/* Why s (its first n characters) is not a decimal integer in lo..hi, into
+ * why; 0 if it is one. */
+static int int_why(const char *s, size_t n, long lo, long hi, char *why, size_t len)
+{
+    size_t i = 0;
+    long v = 0;
+    while (i < n && s[i] >= '0' && s[i] <= '9') {
+        v = v * 10 + (s[i++] - '0');
+        if (v > hi) v = hi + 1;
+    }
+    if (i == 0) snprintf(why, len, n ? "'%.*s' is not a number" : "no number", (int)n, s);
+    else if (i < n) snprintf(why, len, "'%.*s' after the number", (int)(n - i), s + i);
+    else if (v < lo) snprintf(why, len, "%ld is less than %ld", v, lo);
+    else if (v > hi) snprintf(why, len, "larger than %ld", hi);
+    else return 0;
+    return -1;
+}
+
 /* 0, 2 after the message of a bad command line, or -1 for --help (printed). */
 static int parse_args(int argc, char **argv, struct args *a)
 {
@@ -697,15 +715,35 @@ static int parse_args(int argc, char **argv, struct args *a)
                 h = parse_int(x + 1, 1, 4096);
                 *x = 'x';
             }
-            if (w < 0 || h < 0) return usage_error("bad size '%s' (WxH, each side 1..4096)", val);
+            if (w < 0 || h < 0) {
+                char why[128] = "no 'x' between width and height", r[96];
+                if (x && int_why(val, (size_t)(x - val), 1, 4096, r, sizeof r)) snprintf(why, sizeof why, "width: %s", r);
+                else if (x && int_why(x + 1, strlen(x + 1), 1, 4096, r, sizeof r))
+                    snprintf(why, sizeof why, "height: %s", r);
+                return usage_error("bad size '%s': %s (WxH, each side 1..4096)", val, why);
+            }
             a->width = (int)w;
             a->height = (int)h;
         } else if (!strcmp(opt, "--strip-rows")) {
             long n = parse_int(val, 1, 4096);
-            if (n < 0) return usage_error("bad strip height '%s' (1..4096)", val);
+            char why[128];
+            if (n < 0 && !int_why(val, strlen(val), 1, 4096, why, sizeof why)) snprintf(why, sizeof why, "not 1..4096");
+            if (n < 0) return usage_error("bad strip height '%s': %s (1..4096)", val, why);
             a->strip = (int)n;
         } else if (!strcmp(opt, "--fracs")) {
-            if (parse_fracs(val, a)) return usage_error("bad --fracs '%s' (up to 16 of 12..20, comma-separated)", val);
+            if (parse_fracs(val, a)) {
+                /* the first item that is not one of 12..20, else the list's form */
+                char why[128] = "", r[96];
+                const char *q = val;
+                for (int k = 0; *q && !why[0]; k++) {
+                    size_t m = strcspn(q, ",");
+                    if (k == 16) snprintf(why, sizeof why, "more than 16 formats");
+                    else if (int_why(q, m, 12, 20, r, sizeof r)) snprintf(why, sizeof why, "item %d: %s", k + 1, r);
+                    q += m + (q[m] == ',');
+                }
+                if (!why[0]) snprintf(why, sizeof why, "an empty item");
+                return usage_error("bad --fracs '%s': %s (up to 16 of 12..20, comma-separated)", val, why);
+            }
         } else if (!strcmp(opt, "--id")) {
             a->idarg = val;
         } else if (!strcmp(opt, "--target-work")) {

@@ -88,6 +88,9 @@ static const char usage_text2[] =
     "  --strip-rows N                rows per strip (default 16)\n"
     "  --num-frac F                  fixed point in Q(31-F).F, F in 12..20, instead of\n"
     "                                the scene's own format\n"
+    "  --max-memory N[K|M|G]         renderer work memory allowed (default 1G)\n"
+    "  --max-cost N[K|M|G]           ray tracer: estimated ray-object tests a frame allowed\n"
+    "                                (default 20G; docs/host_sim.md)\n"
     "  --inject-fault NAME           make the panel driver misbehave (tests): %s;\n"
     "                                signal-in-write: SIGTERM to itself in the middle of\n"
     "                                writing --out-raw (tests: nothing is left behind)\n"
@@ -105,6 +108,8 @@ struct opts {
     unsigned loop_frames, window_scale;
     int flush;                 /* 0 default, 1 full, 2 dirty */
     int num_frac;              /* --num-frac, 0: the scene's own format */
+    unsigned long long max_memory;   /* --max-memory: renderer work memory, bytes */
+    double max_cost;           /* --max-cost: ray tracer's estimated tests a frame */
     unsigned width, height, frames, strip_rows;
 };
 
@@ -209,6 +214,20 @@ static int set_option(struct opts *o, const char *name, const char *val)
             return fail(EXIT_USAGE, "bad --num-frac '%s' (%d..%d)", val, SCENE_FORMAT_FRAC_MIN,
                         SCENE_FORMAT_FRAC_MAX);
         o->num_frac = (int)f;
+    } else if (!strcmp(name, "--max-memory") || !strcmp(name, "--max-cost")) {
+        /* a count with an optional K, M or G (powers of 1024 for memory, of 1000 for cost) */
+        char *e;
+        errno = 0;
+        unsigned long long v = strtoull(val, &e, 10);
+        int mem = !strcmp(name, "--max-memory");
+        unsigned long long k = mem ? 1024 : 1000, mul = 1;
+        if (*e == 'K') mul = k, e++;
+        else if (*e == 'M') mul = k * k, e++;
+        else if (*e == 'G') mul = k * k * k, e++;
+        if (val[0] < '0' || val[0] > '9' || *e || errno || v == 0 || v > ~0ull / mul)
+            return fail(EXIT_USAGE, "bad %s '%s' (a positive count, optionally with K, M or G)", name, val);
+        if (mem) o->max_memory = v * mul;
+        else o->max_cost = (double)v * (double)mul;
     } else if (!strcmp(name, "--loop-frames")) {
         if (!(o->loop_frames = parse_count(val, 4000000000u)))
             return fail(EXIT_USAGE, "bad --loop-frames '%s' (1..4000000000)", val);
@@ -248,7 +267,7 @@ static const char *const option_names[] = {
     "--scene", "--panel", "--size", "--numeric", "--out", "--out-raw", "--out-rgb888",
     "--frames", "--backend", "--compare", "--strip-rows", "--inject-fault", "--num-frac",
     "--loop-frames", "--flush", "--window-scale", "--spi-dev", "--spi-hz", "--spi-mode", "--gpio-chip", "--dc",
-    "--rst", "--bl", "--rotation", NULL,
+    "--rst", "--bl", "--rotation", "--max-memory", "--max-cost", NULL,
     "--stats", "--summary", "--progressive", "--loop", "--fps-overlay", "--window", "--help", NULL,
 };
 
@@ -429,9 +448,17 @@ static int core_pick(const struct opts *o, const char *numeric, unsigned w, unsi
     return *api ? EXIT_OK : fail(EXIT_INTERNAL, "no fixed-point core at NUM_FRAC %d", f.num_frac);
 }
 
+/* The renderer's work memory allowed (--max-memory), checked before it is
+ * allocated. */
+#define MAX_MEMORY_DEFAULT (1ull << 30)
+static unsigned long long max_memory = MAX_MEMORY_DEFAULT;
+
 static int core_init(struct core *c, unsigned w, unsigned h, unsigned strip_rows)
 {
     size_t ws = c->api->work_size(c->scene, (uint16_t)w, (uint16_t)h, (uint16_t)strip_rows);
+    if ((unsigned long long)ws > max_memory)
+        return fail(EXIT_USAGE, "the scene at %ux%u needs %zu bytes of renderer work memory, over the limit of %llu "
+                                "(--max-memory to raise it)", w, h, ws, max_memory);
     c->work = malloc(ws ? ws : 1);
     if (!c->work) return fail(EXIT_INTERNAL, "out of memory (%zu bytes of renderer work memory)", ws);
     if (c->api->init(&c->ctx, c->scene, (uint16_t)w, (uint16_t)h, (uint16_t)strip_rows, c->work, ws))
@@ -848,6 +875,28 @@ static int pick_core(struct run_state *r)
     return EXIT_OK;
 }
 
+/* The ray tracer's work a frame, estimated before rendering (an upper
+ * bound, docs/host_sim.md): rays (pixels x supersample^2, each followed
+ * through recursion_depth reflections, each hit with a shadow ray per light)
+ * times the objects each ray is tested against (with bvh, 2 log2 of them).
+ * Over --max-cost it is refused (exit 2). */
+#define MAX_COST_DEFAULT 20e9
+static int check_cost(const struct run_state *r)
+{
+    const struct scene_info *in = &r->c->info;
+    if (in->kind != SCENE_RAYTRACE) return EXIT_OK;
+    double max = r->o->max_cost > 0 ? r->o->max_cost : MAX_COST_DEFAULT;
+    double ss = in->supersample ? in->supersample : 1;
+    double rays = (double)r->w * r->h * ss * ss * (in->recursion_depth + 1.0) * (in->nlights + 1.0);
+    double objs = in->bvh ? 2.0 * ceil(log2(in->nobjects + 1.0)) + 1.0 : in->nobjects;
+    double cost = rays * (objs > 1 ? objs : 1);
+    if (cost <= max) return EXIT_OK;
+    return fail(EXIT_USAGE, "%s: about %.3g ray-object tests a frame (%ux%u pixels, %.0f rays a pixel, %u levels, "
+                            "%u lights, %u objects), over the limit of %.3g (--max-cost to raise it)",
+                r->o->scene, cost, r->w, r->h, ss * ss, (unsigned)in->recursion_depth + 1, (unsigned)in->nlights,
+                (unsigned)in->nobjects, max);
+}
+
 /* The panel and the renderer at the render size; warnings about the scene
  * and the command, once every check has passed. */
 static int open_panel(struct run_state *r)
@@ -861,6 +910,7 @@ static int open_panel(struct run_state *r)
                                  .rotation = (uint8_t)r->rotation, .spi_dev = o->spi_dev,
                                  .gpio_chip = o->gpio_chip, .spi_hz = o->spi_hz, .spi_mode = o->spi_mode,
                                  .dc = o->dc, .rst = o->rst, .bl = o->bl };
+    if ((rc = check_cost(r))) return rc;
     if ((rc = panel_out_open(r->pp, &po, err, sizeof err))) return fail(rc, "%s", err);
     if ((rc = core_init(r->c, r->w, r->h, r->rows))) return rc;
     /* valid, but almost certainly not what was meant: said (once every check
@@ -1271,6 +1321,7 @@ int main(int argc, char **argv)
                       .bl = PANEL_OUT_PIN_DEFAULT };
     int rc = parse_args(argc, argv, &o);
     if (rc) return rc;
+    if (o.max_memory) max_memory = o.max_memory;
     struct core c = { 0 }, ref = { 0 };
     struct panel_out *p = NULL;
     struct bufs b = { 0 };

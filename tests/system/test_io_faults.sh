@@ -190,6 +190,37 @@ if [ $rc -eq 2 ] && [ $rc2 -eq 2 ] && [ $rc3 -eq 0 ] && [ "$(grep -c "leads outs
    [ ! -e "$t/ln/o.ppm" ] && [ ! -e "$t/ln/o.c" ]; then ok io_symlink_outside_scene_dir_refused
 else no io_symlink_outside_scene_dir_refused "exit $rc/$rc2/$rc3: $(cat "$t/err")"; fi
 
+# bounded work: the renderer's work memory over --max-memory (default 1 GiB)
+# is refused before it is allocated, a ray-traced frame whose estimated
+# ray-object tests exceed --max-cost before rendering (4,096 reflective
+# spheres, 64 lights), a recursion_depth past what the ray tracer follows is
+# an error, not a silent clamp; all exit 2 on one line
+"$hs" --scene "$S" --size 64x64 --panel none --max-memory 1000 >/dev/null 2>"$t/err"
+rc=$?
+if [ $rc -eq 2 ] && [ "$(wc -l <"$t/err")" -eq 1 ] && grep -q "bytes of renderer work memory, over the limit of 1000" "$t/err"
+then ok io_work_memory_limit
+else no io_work_memory_limit "exit $rc: $(cat "$t/err")"; fi
+awk 'BEGIN { print "renderer = raytracer"; print "canvas { width = 240 height = 240 }";
+             print "viewport { width = 1 height = 1 d = 1 }";
+             for (i = 0; i < 4096; i++)
+               printf "sphere { center = (%d, %d, %d) radius = 0.4 color = (200, 100, 50) reflective = 0.5 }\n",
+                      i % 16 - 8, int(i / 16) % 16 - 8, int(i / 256) + 5;
+             for (i = 0; i < 64; i++) printf "light { type = point intensity = 0.01 position = (%d, 5, 0) }\n", i - 32 }' \
+  >"$t/heavy.scene"
+timeout 60 "$hs" --scene "$t/heavy.scene" --panel none --out "$t/heavy.png" >/dev/null 2>"$t/err"
+rc=$?
+if [ $rc -eq 2 ] && [ "$(wc -l <"$t/err")" -eq 1 ] && grep -q "ray-object tests a frame.*over the limit" "$t/err" &&
+   [ ! -e "$t/heavy.png" ]; then ok io_ray_tracer_cost_limit
+else no io_ray_tracer_cost_limit "exit $rc: $(cat "$t/err")"; fi
+printf 'renderer = raytracer\nraytracer { recursion_depth = 16 }\nsphere { center = (0, 0, 3) radius = 1 color = (255, 0, 0) }\nlight { type = ambient intensity = 1 }\n' >"$t/deep.scene"
+"$hs" --scene "$t/deep.scene" --size 16x16 --panel none >/dev/null 2>"$t/err"
+rc=$?
+"$sc" -o "$t/deep.c" "$t/deep.scene" >/dev/null 2>>"$t/err"
+rc2=$?
+if [ $rc -eq 2 ] && [ $rc2 -eq 2 ] && [ "$(grep -c "recursion_depth 16: the ray tracer follows at most 5 levels" "$t/err")" -eq 2 ]
+then ok io_recursion_depth_past_max_refused
+else no io_recursion_depth_past_max_refused "exit $rc/$rc2: $(cat "$t/err")"; fi
+
 # a signal in the middle of a write removes the temporary file (host_sim
 # sends itself SIGTERM after the first row of --out-raw, test option); the
 # run ends by the signal, and nothing of it is left

@@ -202,19 +202,29 @@ programs: $(PROGRAMS)
 
 # Distribution packages: installed when root or passwordless sudo, otherwise
 # one line with the exact command to run. See tools/deps.sh.
+# DEPS_SH: the installer (tests replace it).
+DEPS_SH ?= tools/deps.sh
 deps:
-	$(Q)tools/deps.sh run
+	$(Q)$(DEPS_SH) run
 deps-test:
-	$(Q)tools/deps.sh test
+	$(Q)$(DEPS_SH) test
 deps-firmware:
-	$(Q)tools/deps.sh firmware
+	$(Q)$(DEPS_SH) firmware
 
 # What the tests need is built with one job per processor unless make was
 # given -j; the tests then run TEST_JOBS at a time (tests/support/run.sh).
+# The packages are installed first, then a second make reads the Makefile
+# again: which libraries are found (WITH_GPIOD, WITH_SDL2) and so which tests
+# run is decided after the install, the same on a fresh machine as on any
+# later run. TEST_RUN: the runner (tests replace it).
 TEST_JOBS ?= $(shell nproc 2>/dev/null || echo 1)
+TEST_RUN  ?= tests/support/run.sh
 test: deps-test
+	$(Q)$(MAKE) --no-print-directory test-after-deps
+.PHONY: test-after-deps
+test-after-deps:
 	$(Q)$(MAKE) --no-print-directory $(if $(filter -j%,$(MAKEFLAGS)),,-j$(TEST_JOBS)) $(TEST_DEPS) $(PROGRAMS)
-	$(Q)TEST_JOBS=$(TEST_JOBS) tests/support/run.sh $(TESTS)
+	$(Q)TEST_JOBS=$(TEST_JOBS) $(TEST_RUN) $(TESTS)
 
 clean:
 	rm -rf $(BUILD) $(OUT)

@@ -11,6 +11,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include <sys/stat.h>
+#include <time.h>
 #include <unistd.h>
 
 /* The temporary file being written, removed by the signal handler if the
@@ -21,14 +22,21 @@
  * so that the write fails with EPIPE / EFBIG and is reported on one line. */
 static char tmp_name[4096];
 static volatile sig_atomic_t tmp_live;
-/* The files this run has written (removed again if a later output fails). */
-static char done_name[3][4096];
-static int done_count;
+/* The outputs written so far, each a complete temporary file next to its
+ * destination (staged[i].tmp), renamed into place by img_commit only when
+ * the whole run has succeeded; until then every earlier file stays as it
+ * was. The signal handler removes them too (nstaged grows only after its
+ * entry is complete, with the signals blocked). */
+struct staged { char *tmp, *dest; };
+static struct staged *staged;
+static volatile sig_atomic_t nstaged;
+static size_t staged_cap;
 int img_fault_signal_in_write;
 
 static void on_signal(int sig)
 {
     if (tmp_live) unlink(tmp_name);
+    for (sig_atomic_t i = 0; i < nstaged; i++) unlink(staged[i].tmp);
     signal(sig, SIG_DFL);
     raise(sig);
 }
@@ -49,10 +57,75 @@ static void install_handlers(void)
     signal(SIGXFSZ, SIG_IGN);
 }
 
-void img_remove_written(void)
+/* Keeps tmp_name as the staged file of dest: 0, or -1 out of memory. */
+static int stage(const char *dest)
 {
-    for (int i = 0; i < done_count; i++) unlink(done_name[i]);
-    done_count = 0;
+    sigset_t all, old;
+    char *t = malloc(strlen(tmp_name) + 1), *d = malloc(strlen(dest) + 1);
+    if (!t || !d) {
+        free(t);
+        free(d);
+        return -1;
+    }
+    strcpy(t, tmp_name);
+    strcpy(d, dest);
+    sigfillset(&all);
+    sigprocmask(SIG_BLOCK, &all, &old);
+    int rc = 0;
+    if ((size_t)nstaged == staged_cap) {
+        size_t cap = staged_cap ? staged_cap * 2 : 8;
+        struct staged *n = realloc(staged, cap * sizeof *n);
+        if (n) {
+            staged = n;
+            staged_cap = cap;
+        } else {
+            rc = -1;
+        }
+    }
+    if (!rc) {
+        staged[nstaged].tmp = t;
+        staged[nstaged].dest = d;
+        nstaged++;
+        tmp_live = 0;
+    }
+    sigprocmask(SIG_SETMASK, &old, NULL);
+    if (rc) {
+        free(t);
+        free(d);
+    }
+    return rc;
+}
+
+static void staged_free(void)
+{
+    for (sig_atomic_t i = 0; i < nstaged; i++) {
+        free(staged[i].tmp);
+        free(staged[i].dest);
+    }
+    nstaged = 0;
+    free(staged);
+    staged = NULL;
+    staged_cap = 0;
+}
+
+void img_discard(void)
+{
+    for (sig_atomic_t i = 0; i < nstaged; i++) unlink(staged[i].tmp);
+    staged_free();
+}
+
+int img_commit(char *err, size_t errlen)
+{
+    int rc = 0;
+    for (sig_atomic_t i = 0; i < nstaged; i++) {
+        if (!rc && rename(staged[i].tmp, staged[i].dest)) {
+            snprintf(err, errlen, "%s: rename failed: %s", staged[i].dest, strerror(errno));
+            rc = 1;
+        }
+        if (rc) unlink(staged[i].tmp);
+    }
+    staged_free();
+    return rc;
 }
 
 /* A FIFO or character device is written in place (renaming a file over it
@@ -133,8 +206,21 @@ static FILE *tmp_open(const char *path, char *err, size_t errlen)
     struct stat st;
     in_place = !stat(path, &st) && (S_ISFIFO(st.st_mode) || S_ISCHR(st.st_mode));
     if (in_place) {
-        int pfd = open(path, O_WRONLY);
-        FILE *pf = pfd < 0 ? NULL : fdopen(pfd, "wb");
+        /* without O_NONBLOCK, opening a FIFO that no program reads would wait
+           forever: tried every 10 ms for IMG_FIFO_TIMEOUT_MS, then refused */
+        int pfd = -1;
+        for (int waited = 0;; waited += 10) {
+            pfd = open(path, O_WRONLY | O_NONBLOCK);
+            if (pfd >= 0 || errno != ENXIO || waited >= IMG_FIFO_TIMEOUT_MS) break;
+            struct timespec ts = { 0, 10000000L };
+            nanosleep(&ts, NULL);
+        }
+        if (pfd < 0 && errno == ENXIO) {
+            snprintf(err, errlen, "%s: a FIFO that no program read for %d s", path, IMG_FIFO_TIMEOUT_MS / 1000);
+            return NULL;
+        }
+        int fl = pfd < 0 ? -1 : fcntl(pfd, F_GETFL);
+        FILE *pf = fl < 0 || fcntl(pfd, F_SETFL, fl & ~O_NONBLOCK) ? NULL : fdopen(pfd, "wb");
         if (!pf) {
             snprintf(err, errlen, "%s: cannot open: %s", path, strerror(errno));
             if (pfd >= 0) close(pfd);
@@ -185,13 +271,12 @@ static int tmp_close(FILE *f, const char *path, int ok, char *err, size_t errlen
         snprintf(err, errlen, "%s: close failed: %s", path, strerror(errno));
         ok = 0;
     }
-    if (ok && rename(tmp_name, path)) {
-        snprintf(err, errlen, "%s: rename failed: %s", path, strerror(errno));
+    if (ok && stage(path)) {
+        snprintf(err, errlen, "%s: out of memory", path);
         ok = 0;
     }
     if (!ok) unlink(tmp_name);
     tmp_live = 0;
-    if (ok && done_count < 3) snprintf(done_name[done_count++], sizeof done_name[0], "%s", path);
     return ok ? 0 : 1;
 }
 

@@ -1,13 +1,16 @@
 /* SPDX-License-Identifier: MIT */
-/* imgio.h — host_sim's output files, written atomically.
+/* imgio.h — host_sim's output files, written atomically, all or none.
  *
  * Every writer creates a temporary file in the destination's directory,
- * writes it completely, fsyncs it and renames it over the destination; on
- * any failure the temporary file is removed, so the destination is either
- * the old file (or absent) or the complete new one, never half-written.
+ * writes it completely and fsyncs it; img_commit renames every one of them
+ * over its destination once the whole run has succeeded, img_discard (a
+ * failed run) removes them. A destination is thus either the old file (or
+ * absent) or the complete new one, never half-written, and a failed run
+ * leaves every file as it was before it.
  *
  * A destination that is a FIFO or a character device (/dev/stdout) is
- * written in place instead. Signals that can be caught remove the temporary
+ * written in place instead; a FIFO that no program opens for reading within
+ * IMG_FIFO_TIMEOUT_MS is refused (exit 2) instead of waiting forever. Signals that can be caught remove the temporary
  * file; SIGPIPE and SIGXFSZ are ignored so that the write fails with a
  * message (a FIFO's reader gone, `ulimit -f`).
  *
@@ -21,6 +24,8 @@
 
 #include <stddef.h>
 #include <stdint.h>
+
+#define IMG_FIFO_TIMEOUT_MS 10000
 
 /* Image formats of --out, chosen by the file name's extension. */
 enum img_format { IMG_NONE = 0, IMG_PNG, IMG_PPM };
@@ -45,9 +50,13 @@ int img_write_ppm888(const char *path, const uint8_t *rgb, unsigned w, unsigned 
  * with the temporary file half-written. */
 extern int img_fault_signal_in_write;
 
-/* Removes the files written so far in this run (when a later output fails,
- * none of the run's outputs is left). */
-void img_remove_written(void);
+/* Renames every output written so far into place: 0, or 1 with the line in
+ * err (the outputs not yet renamed are then removed). */
+int img_commit(char *err, size_t errlen);
+
+/* Removes every output written so far (a failed run: the files that were
+ * there before it stay as they were). */
+void img_discard(void);
 
 /* 0 if a file could be created next to `path` (its directory exists and is
  * writable), else 2 with a message: lets host_sim refuse before rendering. */

@@ -5,6 +5,7 @@
  * shows. The command line, exit codes and --stats fields are the project's
  * outside contract (docs/host_sim.md).
  */
+#define _XOPEN_SOURCE 700   /* realpath */
 #include <errno.h>
 #include <math.h>
 #include <stdarg.h>
@@ -87,6 +88,9 @@ static const char usage_text2[] =
     "  --strip-rows N                rows per strip (default 16)\n"
     "  --num-frac F                  fixed point in Q(31-F).F, F in 12..20, instead of\n"
     "                                the scene's own format\n"
+    "  --max-memory N[K|M|G]         renderer work memory allowed (default 1G)\n"
+    "  --max-cost N[K|M|G]           ray tracer: estimated ray-object tests a frame allowed\n"
+    "                                (default 20G; docs/host_sim.md)\n"
     "  --inject-fault NAME           make the panel driver misbehave (tests): %s;\n"
     "                                signal-in-write: SIGTERM to itself in the middle of\n"
     "                                writing --out-raw (tests: nothing is left behind)\n"
@@ -104,6 +108,8 @@ struct opts {
     unsigned loop_frames, window_scale;
     int flush;                 /* 0 default, 1 full, 2 dirty */
     int num_frac;              /* --num-frac, 0: the scene's own format */
+    unsigned long long max_memory;   /* --max-memory: renderer work memory, bytes */
+    double max_cost;           /* --max-cost: ray tracer's estimated tests a frame */
     unsigned width, height, frames, strip_rows;
 };
 
@@ -133,17 +139,35 @@ static unsigned parse_count(const char *s, unsigned max)
     return (unsigned)v;
 }
 
-/* "WxH" with both sides in 1..MAX_SIDE. */
-static int parse_size(const char *s, unsigned *w, unsigned *h)
+/* Why s (its first n characters) is not a decimal count in 1..max, into
+ * why; 0 if it is one. */
+static int count_why(const char *s, size_t n, unsigned long max, char *why, size_t len)
 {
-    char buf[32];
+    size_t i = 0;
+    unsigned long v = 0;
+    while (i < n && s[i] >= '0' && s[i] <= '9') {
+        v = v * 10 + (unsigned long)(s[i++] - '0');
+        if (v > max) v = max + 1;
+    }
+    if (i == 0) snprintf(why, len, n ? "'%.*s' is not a number" : "no number", (int)n, s);
+    else if (i < n) snprintf(why, len, "'%.*s' after the number", (int)(n - i), s + i);
+    else if (v == 0) snprintf(why, len, "0 is less than 1");
+    else if (v > max) snprintf(why, len, "larger than %lu", max);
+    else return 0;
+    return -1;
+}
+
+/* "WxH" with both sides in 1..MAX_SIDE; -1 with the reason in why. */
+static int parse_size(const char *s, unsigned *w, unsigned *h, char *why, size_t len)
+{
+    char r[96];
     const char *x = strchr(s, 'x');
-    if (!x || (size_t)(x - s) >= sizeof buf) return -1;
-    memcpy(buf, s, (size_t)(x - s));
-    buf[x - s] = 0;
-    *w = parse_count(buf, MAX_SIDE);
-    *h = parse_count(x + 1, MAX_SIDE);
-    return *w && *h ? 0 : -1;
+    if (!x) return snprintf(why, len, "no 'x' between width and height"), -1;
+    if (count_why(s, (size_t)(x - s), MAX_SIDE, r, sizeof r)) return snprintf(why, len, "width: %s", r), -1;
+    if (count_why(x + 1, strlen(x + 1), MAX_SIDE, r, sizeof r)) return snprintf(why, len, "height: %s", r), -1;
+    *w = (unsigned)strtoul(s, NULL, 10);   /* (digits only, checked above) */
+    *h = (unsigned)strtoul(x + 1, NULL, 10);
+    return 0;
 }
 
 /* Option NAME (one of parse_args' with_arg) with its value VAL into o:
@@ -161,8 +185,9 @@ static int set_option(struct opts *o, const char *name, const char *val)
         }
         o->panel = val;
     } else if (!strcmp(name, "--size")) {
-        if (parse_size(val, &o->width, &o->height))
-            return fail(EXIT_USAGE, "bad size '%s' (WxH, each side 1..%d)", val, MAX_SIDE);
+        char why[128];
+        if (parse_size(val, &o->width, &o->height, why, sizeof why))
+            return fail(EXIT_USAGE, "bad size '%s': %s (WxH, each side 1..%d)", val, why, MAX_SIDE);
         o->has_size = 1;
     } else if (!strcmp(name, "--numeric") || !strcmp(name, "--compare")) {
         if (!core_api_by_name(val))
@@ -175,8 +200,10 @@ static int set_option(struct opts *o, const char *name, const char *val)
         if (!(o->frames = parse_count(val, 65535)))
             return fail(EXIT_USAGE, "bad frame count '%s' (1..65535)", val);
     } else if (!strcmp(name, "--strip-rows")) {
-        if (!(o->strip_rows = parse_count(val, MAX_SIDE)))
-            return fail(EXIT_USAGE, "bad strip height '%s' (1..%d)", val, MAX_SIDE);
+        char why[128];
+        if (count_why(val, strlen(val), MAX_SIDE, why, sizeof why))
+            return fail(EXIT_USAGE, "bad strip height '%s': %s (1..%d)", val, why, MAX_SIDE);
+        o->strip_rows = parse_count(val, MAX_SIDE);
     } else if (!strcmp(name, "--backend")) {
         if (strcmp(val, "sim") && strcmp(val, "linux"))
             return fail(EXIT_USAGE, "unknown backend '%s' (sim|linux)", val);
@@ -187,6 +214,20 @@ static int set_option(struct opts *o, const char *name, const char *val)
             return fail(EXIT_USAGE, "bad --num-frac '%s' (%d..%d)", val, SCENE_FORMAT_FRAC_MIN,
                         SCENE_FORMAT_FRAC_MAX);
         o->num_frac = (int)f;
+    } else if (!strcmp(name, "--max-memory") || !strcmp(name, "--max-cost")) {
+        /* a count with an optional K, M or G (powers of 1024 for memory, of 1000 for cost) */
+        char *e;
+        errno = 0;
+        unsigned long long v = strtoull(val, &e, 10);
+        int mem = !strcmp(name, "--max-memory");
+        unsigned long long k = mem ? 1024 : 1000, mul = 1;
+        if (*e == 'K') mul = k, e++;
+        else if (*e == 'M') mul = k * k, e++;
+        else if (*e == 'G') mul = k * k * k, e++;
+        if (val[0] < '0' || val[0] > '9' || *e || errno || v == 0 || v > ~0ull / mul)
+            return fail(EXIT_USAGE, "bad %s '%s' (a positive count, optionally with K, M or G)", name, val);
+        if (mem) o->max_memory = v * mul;
+        else o->max_cost = (double)v * (double)mul;
     } else if (!strcmp(name, "--loop-frames")) {
         if (!(o->loop_frames = parse_count(val, 4000000000u)))
             return fail(EXIT_USAGE, "bad --loop-frames '%s' (1..4000000000)", val);
@@ -226,7 +267,7 @@ static const char *const option_names[] = {
     "--scene", "--panel", "--size", "--numeric", "--out", "--out-raw", "--out-rgb888",
     "--frames", "--backend", "--compare", "--strip-rows", "--inject-fault", "--num-frac",
     "--loop-frames", "--flush", "--window-scale", "--spi-dev", "--spi-hz", "--spi-mode", "--gpio-chip", "--dc",
-    "--rst", "--bl", "--rotation", NULL,
+    "--rst", "--bl", "--rotation", "--max-memory", "--max-cost", NULL,
     "--stats", "--summary", "--progressive", "--loop", "--fps-overlay", "--window", "--help", NULL,
 };
 
@@ -407,9 +448,17 @@ static int core_pick(const struct opts *o, const char *numeric, unsigned w, unsi
     return *api ? EXIT_OK : fail(EXIT_INTERNAL, "no fixed-point core at NUM_FRAC %d", f.num_frac);
 }
 
+/* The renderer's work memory allowed (--max-memory), checked before it is
+ * allocated. */
+#define MAX_MEMORY_DEFAULT (1ull << 30)
+static unsigned long long max_memory = MAX_MEMORY_DEFAULT;
+
 static int core_init(struct core *c, unsigned w, unsigned h, unsigned strip_rows)
 {
     size_t ws = c->api->work_size(c->scene, (uint16_t)w, (uint16_t)h, (uint16_t)strip_rows);
+    if ((unsigned long long)ws > max_memory)
+        return fail(EXIT_USAGE, "the scene at %ux%u needs %zu bytes of renderer work memory, over the limit of %llu "
+                                "(--max-memory to raise it)", w, h, ws, max_memory);
     c->work = malloc(ws ? ws : 1);
     if (!c->work) return fail(EXIT_INTERNAL, "out of memory (%zu bytes of renderer work memory)", ws);
     if (c->api->init(&c->ctx, c->scene, (uint16_t)w, (uint16_t)h, (uint16_t)strip_rows, c->work, ws))
@@ -667,6 +716,79 @@ static int check_usage(struct run_state *r)
     return EXIT_OK;
 }
 
+/* ---- the files a run reads, and output identity ------------------------------ */
+
+/* The scene parser opens every file it reads (the scene, its textures, OBJ
+ * and MTL files) with fopen, which the link wraps (mk/host_sim.mk:
+ * -Wl,--wrap=fopen): each file opened for reading is kept by its device and
+ * inode, so that no output is written onto one of them. */
+FILE *__real_fopen(const char *path, const char *mode);
+FILE *__wrap_fopen(const char *path, const char *mode);
+
+struct read_file { dev_t dev; ino_t ino; };
+static struct read_file *read_files;
+static size_t nread_files, read_files_cap;
+
+FILE *__wrap_fopen(const char *path, const char *mode)
+{
+    FILE *f = __real_fopen(path, mode);
+    struct stat st;
+    if (!f || mode[0] != 'r' || strchr(mode, '+') || fstat(fileno(f), &st)) return f;
+    for (size_t i = 0; i < nread_files; i++)
+        if (read_files[i].dev == st.st_dev && read_files[i].ino == st.st_ino) return f;
+    if (nread_files == read_files_cap) {
+        size_t cap = read_files_cap ? read_files_cap * 2 : 16;
+        struct read_file *n = realloc(read_files, cap * sizeof *n);
+        if (!n) return f;   /* (the scene's own file is the first, always kept) */
+        read_files = n;
+        read_files_cap = cap;
+    }
+    read_files[nread_files].dev = st.st_dev;
+    read_files[nread_files].ino = st.st_ino;
+    nread_files++;
+    return f;
+}
+
+/* path with its directory resolved (realpath) into out: 0, or -1. */
+static int norm_path(const char *path, char *out, size_t len)
+{
+    char dir[4096], *rd;
+    const char *slash = strrchr(path, '/'), *base = slash ? slash + 1 : path;
+    size_t n = slash ? (size_t)(slash - path) : 0;
+    if (slash && n == 0) n = 1;   /* "/file" */
+    if (n >= sizeof dir) return -1;
+    if (slash) memcpy(dir, path, n);
+    else dir[n++] = '.';
+    dir[n] = 0;
+    if (!(rd = realpath(dir, NULL))) return -1;
+    int w = snprintf(out, len, "%s/%s", strcmp(rd, "/") ? rd : "", base);
+    free(rd);
+    return w < 0 || (size_t)w >= len ? -1 : 0;
+}
+
+/* 1 if a and b are the same file: the same device and inode when both
+ * exist, else the same path once their directories are resolved. */
+static int same_file(const char *a, const char *b)
+{
+    struct stat sa, sb;
+    int ea = !stat(a, &sa), eb = !stat(b, &sb);
+    if (ea || eb) return ea && eb && sa.st_dev == sb.st_dev && sa.st_ino == sb.st_ino;
+    char na[4200], nb[4200];
+    if (norm_path(a, na, sizeof na) || norm_path(b, nb, sizeof nb)) return !strcmp(a, b);
+    return !strcmp(na, nb);
+}
+
+/* 1 if path is a regular file the run has read (the scene, a texture, an
+ * OBJ or MTL file). */
+static int is_read_file(const char *path)
+{
+    struct stat st;
+    if (stat(path, &st) || !S_ISREG(st.st_mode)) return 0;
+    for (size_t i = 0; i < nread_files; i++)
+        if (read_files[i].dev == st.st_dev && read_files[i].ino == st.st_ino) return 1;
+    return 0;
+}
+
 /* The scene file: there, not overwritten by an output, read, and parsed by
  * r->c (the double core for fixed point: core_pick picks the format). */
 static int open_scene(struct run_state *r)
@@ -686,7 +808,7 @@ static int open_scene(struct run_state *r)
         if (!stat(r->outs[i], &so) && so.st_dev == st.st_dev && so.st_ino == st.st_ino && S_ISREG(st.st_mode))
             return fail(EXIT_USAGE, "%s: is the scene file; refusing to overwrite it", r->outs[i]);
         for (int j = 0; j < i; j++)
-            if (r->outs[j] && !strcmp(r->outs[i], r->outs[j]))
+            if (r->outs[j] && same_file(r->outs[i], r->outs[j]))
                 return fail(EXIT_USAGE, "%s: given as two outputs", r->outs[i]);
     }
     if ((rc = core_api_double.scene_read(o->scene, &scene_text, &scene_len, err, sizeof err))) {
@@ -695,8 +817,14 @@ static int open_scene(struct run_state *r)
     }
     /* The scene's canvas (for --panel none) from the double parse, which holds
      * any scene the format analysis may accept. */
-    return core_open(r->c, !strcmp(r->numeric, "fixed") ? &core_api_double : core_api_by_name(r->numeric),
-                     o->scene);
+    if ((rc = core_open(r->c, !strcmp(r->numeric, "fixed") ? &core_api_double : core_api_by_name(r->numeric),
+                        o->scene)))
+        return rc;
+    /* nor a file the scene reads (its textures, OBJ and MTL files) */
+    for (int i = 0; i < 3; i++)
+        if (r->outs[i] && is_read_file(r->outs[i]))
+            return fail(EXIT_USAGE, "%s: is a file the scene reads; refusing to overwrite it", r->outs[i]);
+    return EXIT_OK;
 }
 
 /* The render size (--size, the panel's or the scene's canvas), the strip
@@ -747,6 +875,28 @@ static int pick_core(struct run_state *r)
     return EXIT_OK;
 }
 
+/* The ray tracer's work a frame, estimated before rendering (an upper
+ * bound, docs/host_sim.md): rays (pixels x supersample^2, each followed
+ * through recursion_depth reflections, each hit with a shadow ray per light)
+ * times the objects each ray is tested against (with bvh, 2 log2 of them).
+ * Over --max-cost it is refused (exit 2). */
+#define MAX_COST_DEFAULT 20e9
+static int check_cost(const struct run_state *r)
+{
+    const struct scene_info *in = &r->c->info;
+    if (in->kind != SCENE_RAYTRACE) return EXIT_OK;
+    double max = r->o->max_cost > 0 ? r->o->max_cost : MAX_COST_DEFAULT;
+    double ss = in->supersample ? in->supersample : 1;
+    double rays = (double)r->w * r->h * ss * ss * (in->recursion_depth + 1.0) * (in->nlights + 1.0);
+    double objs = in->bvh ? 2.0 * ceil(log2(in->nobjects + 1.0)) + 1.0 : in->nobjects;
+    double cost = rays * (objs > 1 ? objs : 1);
+    if (cost <= max) return EXIT_OK;
+    return fail(EXIT_USAGE, "%s: about %.3g ray-object tests a frame (%ux%u pixels, %.0f rays a pixel, %u levels, "
+                            "%u lights, %u objects), over the limit of %.3g (--max-cost to raise it)",
+                r->o->scene, cost, r->w, r->h, ss * ss, (unsigned)in->recursion_depth + 1, (unsigned)in->nlights,
+                (unsigned)in->nobjects, max);
+}
+
 /* The panel and the renderer at the render size; warnings about the scene
  * and the command, once every check has passed. */
 static int open_panel(struct run_state *r)
@@ -760,6 +910,7 @@ static int open_panel(struct run_state *r)
                                  .rotation = (uint8_t)r->rotation, .spi_dev = o->spi_dev,
                                  .gpio_chip = o->gpio_chip, .spi_hz = o->spi_hz, .spi_mode = o->spi_mode,
                                  .dc = o->dc, .rst = o->rst, .bl = o->bl };
+    if ((rc = check_cost(r))) return rc;
     if ((rc = panel_out_open(r->pp, &po, err, sizeof err))) return fail(rc, "%s", err);
     if ((rc = core_init(r->c, r->w, r->h, r->rows))) return rc;
     /* valid, but almost certainly not what was meant: said (once every check
@@ -901,6 +1052,11 @@ static int frame_done(struct run_state *r, unsigned f, unsigned fi, const struct
     if (r->pattern) {
         /* this frame's glass, as --out does after the last one */
         out_name(r->frame_out, sizeof r->frame_out, o->out, f);
+        if (is_read_file(r->frame_out))
+            return fail(EXIT_USAGE, "%s: is a file the scene reads; refusing to overwrite it", r->frame_out);
+        for (int i = 1; i < 3; i++)
+            if (r->outs[i] && same_file(r->frame_out, r->outs[i]))
+                return fail(EXIT_USAGE, "%s: given as two outputs", r->frame_out);
         if ((rc = panel_out_read(*r->pp, r->b->fb, err, sizeof err))) return fail(rc, "%s", err);
         if ((rc = img_write_565(r->frame_out, img_format_of(r->frame_out), r->b->fb, r->w, r->h, r->w,
                                 err, sizeof err)))
@@ -1095,8 +1251,8 @@ static int compare_ref(struct run_state *r)
 }
 
 /* What the glass shows (or the framebuffer) after the last frame, and the
- * renderer's colours; a failed output removes the ones this run wrote
- * before it. */
+ * renderer's colours (staged: main renames them into place only when the
+ * whole run succeeds). */
 static int write_outputs(const struct run_state *r)
 {
     const struct opts *o = r->o;
@@ -1108,12 +1264,12 @@ static int write_outputs(const struct run_state *r)
         if ((rc = panel_out_read(*r->pp, b->fb, err, sizeof err))) return fail(rc, "%s", err);
         if (o->out && !r->pattern &&
             (rc = img_write_565(o->out, img_format_of(o->out), b->fb, w, h, w, err, sizeof err)))
-            return img_remove_written(), fail(rc, "%s", err);
+            return fail(rc, "%s", err);
         if (o->out_raw && (rc = img_write_raw565(o->out_raw, b->fb, w, h, w, err, sizeof err)))
-            return img_remove_written(), fail(rc, "%s", err);
+            return fail(rc, "%s", err);
     }
     if (o->out_rgb888 && (rc = img_write_ppm888(o->out_rgb888, b->rgb, w, h, err, sizeof err)))
-        return img_remove_written(), fail(rc, "%s", err);
+        return fail(rc, "%s", err);
     return EXIT_OK;
 }
 
@@ -1165,11 +1321,19 @@ int main(int argc, char **argv)
                       .bl = PANEL_OUT_PIN_DEFAULT };
     int rc = parse_args(argc, argv, &o);
     if (rc) return rc;
+    if (o.max_memory) max_memory = o.max_memory;
     struct core c = { 0 }, ref = { 0 };
     struct panel_out *p = NULL;
     struct bufs b = { 0 };
     rc = run(&o, &c, &ref, &p, &b);
     if (p) panel_out_close(p);
+    /* every output at once, or none: a failed run leaves the files before it */
+    if (rc == EXIT_OK) {
+        char err[512];
+        if (img_commit(err, sizeof err)) rc = fail(EXIT_INTERNAL, "%s", err);
+    } else {
+        img_discard();
+    }
     core_close(&c);
     core_close(&ref);
     free(b.strip);

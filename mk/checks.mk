@@ -12,6 +12,10 @@ TESTS     += tests/system/test_spdx.py
 # with .clang-format (clang-format from tools/deps.sh test).
 TESTS     += tools/format_check.sh
 
+# `make test` decides which tests run after installing the packages
+# (a library installed by that run counts in the same run).
+TESTS     += tests/system/test_make_deps.sh
+
 # A test's name: the base name of its program (the script run by node, the
 # last image given to tools/bench/run.py), without its extension.
 test_words = $(subst :, ,$(1))
@@ -44,9 +48,13 @@ check:
 	$(Q)$(MAKE) --no-print-directory $(test_jobs) $(sort $(foreach t,$(CHECK_SEL),$(call test_needs,$(t)))) nothing-else
 	$(Q)TEST_JOBS=$(TEST_JOBS) tests/support/run.sh $(CHECK_SEL)
 
+# (like `make test`: the list of tests is read after the install)
 test-host: deps-test
+	$(Q)$(MAKE) --no-print-directory test-host-after-deps
+.PHONY: test-host-after-deps
+test-host-after-deps:
 	$(Q)$(MAKE) --no-print-directory $(test_jobs) $(sort $(foreach t,$(TESTS_HOST),$(call test_needs,$(t)))) nothing-else
-	$(Q)TEST_JOBS=$(TEST_JOBS) tests/support/run.sh $(TESTS_HOST)
+	$(Q)TEST_JOBS=$(TEST_JOBS) $(TEST_RUN) $(TESTS_HOST)
 
 list-tests:
 	@$(foreach t,$(TESTS),printf '%-32s %s\n' '$(call test_name,$(t))' '$(t)';)

@@ -21,6 +21,10 @@ $(foreach v,$(VARIANTS),$(call obj,$(v),none,host_sim/imgio.c)): EXTRA_CFLAGS +=
 # libpng is a distribution package: install it first if it is missing.
 $(foreach v,$(VARIANTS),$(call obj,$(v),none,host_sim/imgio.c)): | deps
 
+# Every link of host_sim's objects: --wrap=fopen, host_sim keeps every file
+# the scene parser reads, so that no output is written onto one of them.
+HOST_SIM_LDFLAGS := -Wl,--wrap=fopen
+
 HOST_SIM_BIN_host := $(BUILD)/host_sim
 HOST_SIM_BIN_asan := $(BUILD)/asan/host_sim
 
@@ -28,7 +32,7 @@ define HOST_SIM_LINK
 $(HOST_SIM_BIN_$(1)): $(call obj,$(1),none,$(HOST_SIM_SRCS)) $(call core_bundles,$(1)) $(call core_frac_bundles,$(1)) \
                       $(call hal_objs,$(1))
 	@mkdir -p $$(@D)
-	$(Q)$$(CC) $(LDFLAGS_$(1)) -o $$@ $$^ $$(PNG_LIBS) $$(HAL_LDLIBS) $$(SDL2_LIBS) -lm
+	$(Q)$$(CC) $(LDFLAGS_$(1)) $(HOST_SIM_LDFLAGS) -o $$@ $$^ $$(PNG_LIBS) $$(HAL_LDLIBS) $$(SDL2_LIBS) -lm
 endef
 $(foreach v,$(VARIANTS),$(eval $(call HOST_SIM_LINK,$(v))))
 

@@ -78,7 +78,7 @@ $(GPIOD2_DIR)/tests/test_hal_linux: $(call gpiod2_obj,asan,tests/unit/test_hal_l
 GPIOD2_HOST_SIM := $(GPIOD2_DIR)/host_sim
 $(GPIOD2_HOST_SIM): $(call obj,host,none,$(HOST_SIM_SRCS)) $(call core_bundles,host) $(call core_frac_bundles,host) \
                     $(filter-out %/hal_linux.o,$(call hal_objs,host)) $(call gpiod2_obj,host,hal/linux/hal_linux.c)
-	$(Q)$(CC) $(LDFLAGS_host) -o $@ $^ $(PNG_LIBS) $(call gpiod_pc,$(GPIOD2_PC_DIR),--libs) $(SDL2_LIBS) -lm
+	$(Q)$(CC) $(LDFLAGS_host) $(HOST_SIM_LDFLAGS) -o $@ $^ $(PNG_LIBS) $(call gpiod_pc,$(GPIOD2_PC_DIR),--libs) $(SDL2_LIBS) -lm
 
 # The LD_PRELOAD shim, once per API: the emulated panel behind spidev and a
 # fake libgpiod (position-independent objects of their own).

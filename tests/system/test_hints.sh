@@ -43,6 +43,18 @@ expect scenec_option_far 2 "unknown option '--frobnicate' (try --help)" "$sc" --
 expect scenec_missing_argument 2 "option --size needs an argument" "$sc" -o "$tmp/x.c" "$tmp/ok.scene" --size
 expect scenec_bad_size 2 "bad size '10x0'" "$sc" --size 10x0 -o "$tmp/x.c" "$tmp/ok.scene"
 expect scenec_bad_fracs 2 "bad --fracs '20,,12'" "$sc" --fracs 20,,12 -o "$tmp/x.c" "$tmp/ok.scene"
+# ---- each bad value with its own reason, exit 2 ------------------------------
+expect host_sim_size_zero 2 "bad size '0x0': width: 0 is less than 1" "$hs" --scene "$tmp/ok.scene" --size 0x0
+expect host_sim_size_large 2 "bad size '99999x99999': width: larger than 8192" "$hs" --scene "$tmp/ok.scene" --size 99999x99999
+expect host_sim_size_junk 2 "bad size '10x10junk': height: 'junk' after the number" "$hs" --scene "$tmp/ok.scene" --size 10x10junk
+expect host_sim_size_no_x 2 "bad size '10X10': no 'x' between width and height" "$hs" --scene "$tmp/ok.scene" --size 10X10
+expect host_sim_strip_junk 2 "bad strip height '16abc': 'abc' after the number" "$hs" --scene "$tmp/ok.scene" --strip-rows 16abc
+expect scenec_size_zero 2 "bad size '0x0': width: 0 is less than 1" "$sc" --size 0x0 -o "$tmp/x.c" "$tmp/ok.scene"
+expect scenec_size_large 2 "bad size '99999x99999': width: larger than 4096" "$sc" --size 99999x99999 -o "$tmp/x.c" "$tmp/ok.scene"
+expect scenec_size_junk 2 "bad size '10x10junk': height: 'junk' after the number" "$sc" --size 10x10junk -o "$tmp/x.c" "$tmp/ok.scene"
+expect scenec_strip_junk 2 "bad strip height '16abc': 'abc' after the number" "$sc" --strip-rows 16abc -o "$tmp/x.c" "$tmp/ok.scene"
+expect scenec_fracs_range 2 "bad --fracs '21': item 1: larger than 20" "$sc" --fracs 21 -o "$tmp/x.c" "$tmp/ok.scene"
+expect scenec_scene_directory 2 "cannot open file: is a directory" "$sc" -o "$tmp/x.c" "$tmp"
 expect scenec_no_output 2 "-o OUT.c is required" "$sc" "$tmp/ok.scene"
 expect scenec_no_scene 2 "a scene file is required" "$sc" -o "$tmp/x.c"
 

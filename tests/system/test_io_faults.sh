@@ -63,6 +63,164 @@ mkdir "$t/lim2"
 rc=$?
 if [ $rc -eq 1 ] && [ -z "$(ls -A "$t/lim2")" ]; then ok io_scenec_outputs_complete_or_absent
 else no io_scenec_outputs_complete_or_absent "exit $rc: $(cat "$t/err"); left: $(ls -A "$t/lim2")"; fi
+# a failed run leaves every file of an earlier run as it was: --out and each
+# frame of a per-frame pattern (all frames, not only the first three); the
+# outputs are renamed into place only when the whole run has succeeded
+# (ulimit -f 30, 15 KB: each 100x100 PNG fits, the raw frame, 20 KB, does not)
+mkdir "$t/keep"
+for f in a.png f000.png f001.png f002.png f003.png f004.png a.raw; do echo old >"$t/keep/$f"; done
+(ulimit -f 30; exec "$hs" --scene "$S" --panel none --size 100x100 --out "$t/keep/a.png" --out-raw "$t/keep/a.raw") \
+  >/dev/null 2>"$t/err"
+rc=$?
+(ulimit -f 30; exec "$hs" --scene "$S" --panel none --size 100x100 --frames 5 --out "$t/keep/f%03d.png" \
+  --out-raw "$t/keep/a.raw") >/dev/null 2>>"$t/err"
+rc2=$?
+kept=0
+for f in a.png f000.png f001.png f002.png f003.png f004.png a.raw; do [ "$(cat "$t/keep/$f")" = old ] && kept=$((kept + 1)); done
+if [ $rc -eq 1 ] && [ $rc2 -eq 1 ] && [ $kept -eq 7 ] && [ "$(ls -A "$t/keep" | wc -l)" -eq 7 ]; then
+  ok io_failed_run_keeps_earlier_files
+else no io_failed_run_keeps_earlier_files "exit $rc/$rc2, $kept of 7 kept: $(ls -A "$t/keep") $(cat "$t/err")"; fi
+# the same file under two names (./a.ppm, a hard link) is one output; a
+# file the scene reads (its texture) is not an output
+mkdir "$t/same"
+"$hs" --scene "$S" --size 16x16 --panel none --out "$t/same/a.ppm" --out-rgb888 "$t/same/./a.ppm" >/dev/null 2>"$t/err"
+rc=$?
+echo old >"$t/same/b.ppm"
+ln "$t/same/b.ppm" "$t/same/c.ppm"
+"$hs" --scene "$S" --size 16x16 --panel none --out "$t/same/b.ppm" --out-rgb888 "$t/same/c.ppm" >/dev/null 2>>"$t/err"
+rc2=$?
+if [ $rc -eq 2 ] && [ $rc2 -eq 2 ] && [ "$(grep -c "given as two outputs" "$t/err")" -eq 2 ] && [ ! -e "$t/same/a.ppm" ] &&
+   [ "$(cat "$t/same/b.ppm")" = old ]; then ok io_same_file_two_names_refused
+else no io_same_file_two_names_refused "exit $rc/$rc2: $(cat "$t/err")"; fi
+mkdir "$t/tex"
+printf 'P6\n2 2\n255\n' >"$t/tex/t.ppm"
+printf '\377\0\0\0\377\0\0\0\377\377\377\377' >>"$t/tex/t.ppm"
+cp "$t/tex/t.ppm" "$t/tex/orig.ppm"
+cp firmware/scenes/bench/knot-4k.obj "$t/tex/"
+sed 's/^texture .*/texture { name = checker file = "t.ppm" }/' firmware/scenes/bench/knot-4k-textured.scene >"$t/tex/t.scene"
+"$hs" --scene "$t/tex/t.scene" --size 16x16 --panel none --out "$t/tex/ok.ppm" >/dev/null 2>"$t/err" || no io_texture_scene "$(cat "$t/err")"
+"$hs" --scene "$t/tex/t.scene" --size 16x16 --panel none --out-rgb888 "$t/tex/./t.ppm" >/dev/null 2>"$t/err"
+rc=$?
+cp "$t/tex/knot-4k.obj" "$t/tex/orig.obj"
+"$hs" --scene "$t/tex/t.scene" --size 16x16 --panel none --out-raw "$t/tex/knot-4k.obj" >/dev/null 2>>"$t/err"
+rc2=$?
+if [ $rc -eq 2 ] && [ $rc2 -eq 2 ] && [ "$(grep -c "is a file the scene reads" "$t/err")" -eq 2 ] &&
+   cmp -s "$t/tex/t.ppm" "$t/tex/orig.ppm" && cmp -s "$t/tex/knot-4k.obj" "$t/tex/orig.obj"; then
+  ok io_output_onto_texture_refused
+else no io_output_onto_texture_refused "exit $rc/$rc2: $(cat "$t/err")"; fi
+
+# scenec: no output onto the scene (-o same.c same.c; -o x.c with the scene
+# named x.h), nor two outputs on one file; an output directory that does not
+# exist is an input error (exit 2)
+mkdir "$t/sc"
+cp "$S" "$t/sc/same.c"
+cp "$S" "$t/sc/x.h"
+"$sc" -o "$t/sc/same.c" "$t/sc/same.c" >/dev/null 2>"$t/err"
+rc=$?
+"$sc" -o "$t/sc/x.c" "$t/sc/x.h" >/dev/null 2>>"$t/err"
+rc2=$?
+"$sc" -o "$t/sc/z.c" --deps "$t/sc/./z.c" "$S" >/dev/null 2>>"$t/err"
+rc3=$?
+if [ $rc -eq 2 ] && [ $rc2 -eq 2 ] && [ $rc3 -eq 2 ] && [ "$(grep -c "is the scene file; refusing" "$t/err")" -eq 2 ] &&
+   grep -q "given as two outputs" "$t/err" && cmp -s "$S" "$t/sc/same.c" && cmp -s "$S" "$t/sc/x.h" &&
+   [ ! -e "$t/sc/x.c" ] && [ ! -e "$t/sc/z.c" ]; then ok io_scenec_output_onto_scene_refused
+else no io_scenec_output_onto_scene_refused "exit $rc/$rc2/$rc3: $(cat "$t/err")"; fi
+"$sc" -o /nonexistent/x.c "$S" >/dev/null 2>"$t/err"
+rc=$?
+if [ $rc -eq 2 ] && [ "$(wc -l <"$t/err")" -eq 1 ] && grep -q "does not exist" "$t/err"; then ok io_scenec_missing_output_dir_exit_2
+else no io_scenec_missing_output_dir_exit_2 "exit $rc: $(cat "$t/err")"; fi
+
+# FIFOs and devices: a scene FIFO no program writes to, an output FIFO no
+# program reads, are refused after 10 s (exit 2, one line) instead of
+# hanging; a texture that is a FIFO, and a device as the scene, at once; a
+# directory as the scene is said to be one (the three slow cases side by side)
+mkdir "$t/ff"
+mkfifo "$t/ff/scene.fifo" "$t/ff/out.fifo"
+timeout 60 "$hs" --scene "$t/ff/scene.fifo" --size 16x16 --panel none --out-raw "$t/ff/a.raw" >/dev/null 2>"$t/ff/e1" &
+p1=$!
+timeout 60 "$sc" -o "$t/ff/s.c" "$t/ff/scene.fifo" >/dev/null 2>"$t/ff/e2" &
+p2=$!
+timeout 60 "$hs" --scene "$S" --size 16x16 --panel none --out-raw "$t/ff/out.fifo" >/dev/null 2>"$t/ff/e3" &
+p3=$!
+mkdir "$t/ff/tex"
+cp firmware/scenes/bench/knot-4k.obj "$t/ff/tex/"
+mkfifo "$t/ff/tex/t.ppm"
+cp "$t/tex/t.scene" "$t/ff/tex/t.scene"
+timeout 30 "$hs" --scene "$t/ff/tex/t.scene" --size 16x16 --panel none --out "$t/ff/t.ppm" >/dev/null 2>"$t/err"
+rc=$?
+timeout 30 "$sc" -o "$t/ff/t.c" "$t/ff/tex/t.scene" >/dev/null 2>>"$t/err"
+rc2=$?
+if [ $rc -eq 2 ] && [ $rc2 -eq 2 ] && [ "$(grep -c "is not a regular file" "$t/err")" -eq 2 ]; then ok io_texture_fifo_refused
+else no io_texture_fifo_refused "exit $rc/$rc2: $(cat "$t/err")"; fi
+timeout 30 "$hs" --scene /dev/zero --size 16x16 --panel none >/dev/null 2>"$t/err"
+rc=$?
+timeout 30 "$sc" -o "$t/ff/z.c" /dev/zero >/dev/null 2>>"$t/err"
+rc2=$?
+timeout 30 "$sc" -o "$t/ff/d.c" "$t/ff" >/dev/null 2>>"$t/err"
+rc3=$?
+if [ $rc -eq 2 ] && [ $rc2 -eq 2 ] && [ $rc3 -eq 2 ] && [ "$(grep -c "not a regular file or a FIFO" "$t/err")" -eq 2 ] &&
+   grep -q "is a directory" "$t/err" && [ "$(wc -l <"$t/err")" -eq 3 ]; then ok io_device_or_directory_scene_refused
+else no io_device_or_directory_scene_refused "exit $rc/$rc2/$rc3: $(cat "$t/err")"; fi
+wait $p1; r1=$?
+wait $p2; r2=$?
+wait $p3; r3=$?
+if [ $r1 -eq 2 ] && [ $r2 -eq 2 ] && grep -q "nothing written to it" "$t/ff/e1" && grep -q "nothing written to it" "$t/ff/e2"
+then ok io_scene_fifo_without_writer_refused
+else no io_scene_fifo_without_writer_refused "exit $r1/$r2: $(cat "$t/ff/e1" "$t/ff/e2")"; fi
+if [ $r3 -eq 2 ] && [ "$(wc -l <"$t/ff/e3")" -eq 1 ] && grep -q "no program read" "$t/ff/e3" && [ -p "$t/ff/out.fifo" ]
+then ok io_output_fifo_without_reader_refused
+else no io_output_fifo_without_reader_refused "exit $r3: $(cat "$t/ff/e3")"; fi
+
+# a texture (or model file) through a symbolic link that leads outside the
+# scene's directory is refused, by host_sim and scenec alike
+mkdir "$t/ln" "$t/ln/in"
+cp firmware/scenes/bench/knot-4k.obj "$t/tex/t.scene" "$t/ln/in/"
+cp "$t/tex/t.ppm" "$t/ln/secret.ppm"
+ln -s ../secret.ppm "$t/ln/in/t.ppm"
+"$hs" --scene "$t/ln/in/t.scene" --size 16x16 --panel none --out "$t/ln/o.ppm" >/dev/null 2>"$t/err"
+rc=$?
+"$sc" -o "$t/ln/o.c" "$t/ln/in/t.scene" >/dev/null 2>>"$t/err"
+rc2=$?
+rm "$t/ln/in/t.ppm"
+cp "$t/tex/t.ppm" "$t/ln/in/real.ppm"
+ln -s real.ppm "$t/ln/in/t.ppm"
+"$hs" --scene "$t/ln/in/t.scene" --size 16x16 --panel none --out "$t/ln/o2.ppm" >/dev/null 2>>"$t/err"
+rc3=$?
+if [ $rc -eq 2 ] && [ $rc2 -eq 2 ] && [ $rc3 -eq 0 ] && [ "$(grep -c "leads outside the scene's directory" "$t/err")" -eq 2 ] &&
+   [ ! -e "$t/ln/o.ppm" ] && [ ! -e "$t/ln/o.c" ]; then ok io_symlink_outside_scene_dir_refused
+else no io_symlink_outside_scene_dir_refused "exit $rc/$rc2/$rc3: $(cat "$t/err")"; fi
+
+# bounded work: the renderer's work memory over --max-memory (default 1 GiB)
+# is refused before it is allocated, a ray-traced frame whose estimated
+# ray-object tests exceed --max-cost before rendering (4,096 reflective
+# spheres, 64 lights), a recursion_depth past what the ray tracer follows is
+# an error, not a silent clamp; all exit 2 on one line
+"$hs" --scene "$S" --size 64x64 --panel none --max-memory 1000 >/dev/null 2>"$t/err"
+rc=$?
+if [ $rc -eq 2 ] && [ "$(wc -l <"$t/err")" -eq 1 ] && grep -q "bytes of renderer work memory, over the limit of 1000" "$t/err"
+then ok io_work_memory_limit
+else no io_work_memory_limit "exit $rc: $(cat "$t/err")"; fi
+awk 'BEGIN { print "renderer = raytracer"; print "canvas { width = 240 height = 240 }";
+             print "viewport { width = 1 height = 1 d = 1 }";
+             for (i = 0; i < 4096; i++)
+               printf "sphere { center = (%d, %d, %d) radius = 0.4 color = (200, 100, 50) reflective = 0.5 }\n",
+                      i % 16 - 8, int(i / 16) % 16 - 8, int(i / 256) + 5;
+             for (i = 0; i < 64; i++) printf "light { type = point intensity = 0.01 position = (%d, 5, 0) }\n", i - 32 }' \
+  >"$t/heavy.scene"
+timeout 60 "$hs" --scene "$t/heavy.scene" --panel none --out "$t/heavy.png" >/dev/null 2>"$t/err"
+rc=$?
+if [ $rc -eq 2 ] && [ "$(wc -l <"$t/err")" -eq 1 ] && grep -q "ray-object tests a frame.*over the limit" "$t/err" &&
+   [ ! -e "$t/heavy.png" ]; then ok io_ray_tracer_cost_limit
+else no io_ray_tracer_cost_limit "exit $rc: $(cat "$t/err")"; fi
+printf 'renderer = raytracer\nraytracer { recursion_depth = 16 }\nsphere { center = (0, 0, 3) radius = 1 color = (255, 0, 0) }\nlight { type = ambient intensity = 1 }\n' >"$t/deep.scene"
+"$hs" --scene "$t/deep.scene" --size 16x16 --panel none >/dev/null 2>"$t/err"
+rc=$?
+"$sc" -o "$t/deep.c" "$t/deep.scene" >/dev/null 2>>"$t/err"
+rc2=$?
+if [ $rc -eq 2 ] && [ $rc2 -eq 2 ] && [ "$(grep -c "recursion_depth 16: the ray tracer follows at most 5 levels" "$t/err")" -eq 2 ]
+then ok io_recursion_depth_past_max_refused
+else no io_recursion_depth_past_max_refused "exit $rc/$rc2: $(cat "$t/err")"; fi
+
 # a signal in the middle of a write removes the temporary file (host_sim
 # sends itself SIGTERM after the first row of --out-raw, test option); the
 # run ends by the signal, and nothing of it is left

@@ -57,6 +57,11 @@ static void info(const void *scene, struct scene_info *out)
     out->nlights = s->nlights;
     out->uses_lights = s->kind == SCENE_RAYTRACE ? !s->rt.unlit : s->ras.shading != SHADE_NONE;
     out->ninstances = s->kind == SCENE_RAYTRACE ? 0 : s->ninstances;
+    int rt = s->kind == SCENE_RAYTRACE;
+    out->nobjects = rt ? s->nobjects : 0;
+    out->recursion_depth = rt ? s->rt.recursion_depth : 0;
+    out->supersample = rt ? s->rt.supersample : 0;
+    out->bvh = rt ? s->rt.bvh : 0;
 }
 
 static size_t work_size(const void *scene, uint16_t w, uint16_t h, uint16_t strip_rows)

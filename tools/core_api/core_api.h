@@ -23,6 +23,9 @@ struct scene_info {
     uint16_t nlights;
     uint8_t uses_lights;       /* ray tracer: not unlit; rasterizer: a shading mode other than none */
     uint16_t ninstances;       /* rasterizer: model instances (0 for the ray tracer) */
+    /* ray tracer: what host_sim's cost estimate counts (0 for the rasterizer) */
+    uint16_t nobjects;         /* objects (spheres, planes, triangles, CSG operands) */
+    uint8_t recursion_depth, supersample, bvh;
 };
 
 /* What scene_load, scene_parse and scene_read return besides 0

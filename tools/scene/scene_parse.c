@@ -14,6 +14,9 @@
  * nearest double to each literal; rotations and the sphere generator use the
  * constants of the book's demos, see rot_y and gen_sphere).
  */
+#if defined(__unix__) || defined(__APPLE__)
+#define _XOPEN_SOURCE 700   /* realpath */
+#endif
 #include <errno.h>
 #include <math.h>
 #include <setjmp.h>
@@ -24,10 +27,16 @@
 #include <string.h>
 #include "scene_parse.h"
 #include "mipmap.h"
+#include "raytracer.h"
 #include "suggest.h"
 #if defined(__unix__) || defined(__APPLE__)
+#include <fcntl.h>
+#include <poll.h>
+#include <sys/stat.h>
 #include <unistd.h>
 #define HAVE_GETCWD 1
+/* stat, open, poll and realpath: what a file is, and where a path leads */
+#define HAVE_POSIX_FILES 1
 #endif
 #ifdef WITH_PNG
 #include <png.h>
@@ -1354,6 +1363,22 @@ static void file_path(struct parser *p, const struct where *at, const char *what
     if (nd + nn >= FILE_PATH_MAX) FAIL_W(p, at, "%s path '%s%s' is too long", what, dir, name);
     memcpy(path, dir, nd);
     memcpy(path + nd, name, nn + 1);
+#ifdef HAVE_POSIX_FILES
+    /* a regular file (a FIFO or a device would block the parse or never
+       end), and inside the scene's directory once every symbolic link is
+       resolved; a path that does not exist is left to the open's message */
+    struct stat st;
+    if (stat(path, &st)) return;
+    if (S_ISDIR(st.st_mode)) FAIL_W(p, at, "%s '%s' is a directory", what, path);
+    if (!S_ISREG(st.st_mode)) FAIL_W(p, at, "%s '%s' is not a regular file (a FIFO or a device)", what, path);
+    char *real = realpath(path, NULL), *top = realpath(p->dir[0] ? p->dir : ".", NULL);
+    size_t nt = top ? strlen(top) : 0;
+    int inside = real && top && !strncmp(real, top, nt) && (real[nt] == '/' || (nt == 1 && top[0] == '/'));
+    free(real);
+    free(top);
+    if (!inside)
+        FAIL_W(p, at, "%s '%s' leads outside the scene's directory (through a symbolic link)", what, name);
+#endif
 }
 
 /* Opens path into slot k of p->files, which a failed parse closes. */
@@ -2465,6 +2490,11 @@ static void read_scene(struct parser *p, const struct node *top, struct scene *s
     set_defaults(&s->rt, rt_option_rows, NROWS(rt_option_rows));
     if (t.single[TOP_raytracer])
         read_options(p, t.single[TOP_raytracer], "raytracer", rt_option_rows, NROWS(rt_option_rows), &s->rt);
+    /* the ray tracer follows at most RT_MAX_DEPTH reflections: a deeper
+       recursion_depth is an error, not silently clamped */
+    if (s->rt.recursion_depth > RT_MAX_DEPTH)
+        FAIL_N(p, t.single[TOP_raytracer], "raytracer: recursion_depth %d: the ray tracer follows at most %d levels",
+               (int)s->rt.recursion_depth, RT_MAX_DEPTH);
     set_defaults(&s->ras, ras_option_rows, NROWS(ras_option_rows));
     if (t.single[TOP_rasterizer])
         read_options(p, t.single[TOP_rasterizer], "rasterizer", ras_option_rows, NROWS(ras_option_rows), &s->ras);
@@ -2586,10 +2616,80 @@ int scene_depth_bits(const struct scene *s, double *far_out, double *step_out, d
     return step <= rmin / 256 ? 16 : 32;
 }
 
+#ifdef HAVE_POSIX_FILES
+/* A FIFO (or a pipe as /dev/stdin) read without blocking forever: opened
+ * with O_NONBLOCK, each read waits at most SCENE_FIFO_TIMEOUT_MS for data
+ * (a FIFO no program writes to is refused instead of hanging). */
+static int read_fifo(const char *path, char **text, size_t *len, char *err, size_t errlen)
+{
+    int fd = open(path, O_RDONLY | O_NONBLOCK);
+    if (fd < 0) {
+        snprintf(err, errlen, "%s:1:1: error: cannot open file: %s", path, strerror(errno));
+        return SCENE_EIO;
+    }
+    size_t cap = 65536, n = 0;
+    char *buf = malloc(cap);
+    int rc = buf ? 0 : SCENE_ENOMEM;
+    while (!rc) {
+        if (n == cap) {
+            if (cap > SCENE_MAX_BYTES) break;
+            char *nb = realloc(buf, cap * 2);
+            if (!nb) { rc = SCENE_ENOMEM; break; }
+            buf = nb;
+            cap *= 2;
+        }
+        /* (before a writer has opened it, a read would say end of file:
+           poll first, which waits for data or for the last writer leaving) */
+        struct pollfd pfd = { .fd = fd, .events = POLLIN };
+        int pr = poll(&pfd, 1, SCENE_FIFO_TIMEOUT_MS);
+        if (pr == 0) {
+            close(fd);
+            free(buf);
+            snprintf(err, errlen, "%s:1:1: error: a FIFO with nothing written to it for %d s (no writer?)", path,
+                     SCENE_FIFO_TIMEOUT_MS / 1000);
+            return SCENE_EIO;
+        }
+        if (pr < 0) {
+            if (errno != EINTR) rc = SCENE_EIO;
+            continue;
+        }
+        ssize_t got = read(fd, buf + n, cap - n);
+        if (got > 0) { n += (size_t)got; continue; }
+        if (got == 0) break;
+        if (errno != EINTR && errno != EAGAIN && errno != EWOULDBLOCK) rc = SCENE_EIO;
+    }
+    close(fd);
+    if (rc) {
+        free(buf);
+        snprintf(err, errlen, "%s:1:1: error: %s", path, rc == SCENE_ENOMEM ? "out of memory" : "read error");
+        return rc;
+    }
+    *text = buf;
+    *len = n;
+    return 0;
+}
+#endif
+
 int scene_read_text(const char *path, char **text, size_t *len, char *err, size_t errlen)
 {
     *text = NULL;
     *len = 0;
+#ifdef HAVE_POSIX_FILES
+    /* a regular file or a FIFO (a pipe); stat before opening, so that
+       nothing here blocks */
+    struct stat st;
+    if (!stat(path, &st)) {
+        if (S_ISDIR(st.st_mode)) {
+            snprintf(err, errlen, "%s:1:1: error: cannot open file: is a directory", path);
+            return SCENE_EIO;
+        }
+        if (S_ISFIFO(st.st_mode)) return read_fifo(path, text, len, err, errlen);
+        if (!S_ISREG(st.st_mode)) {
+            snprintf(err, errlen, "%s:1:1: error: not a regular file or a FIFO (a device or a socket)", path);
+            return SCENE_EIO;
+        }
+    }
+#endif
     FILE *f = fopen(path, "rb");
     if (!f) {
         snprintf(err, errlen, "%s:1:1: error: cannot open file: %s", path, strerror(errno));

@@ -19,6 +19,10 @@
 #include "scene.h"
 
 #define SCENE_MAX_BYTES (4u << 20)
+/* A scene read from a FIFO (or a pipe as /dev/stdin): the longest wait for
+ * data before it is refused (a FIFO no program writes to). The files a scene
+ * names (images, OBJ and MTL files) must be regular files. */
+#define SCENE_FIFO_TIMEOUT_MS 10000
 
 /* What the functions below return: 0, or a negative code with one line
  * "FILE:LINE:COLUMN: error: MESSAGE" (no newline) in err. A program maps

@@ -27,6 +27,7 @@
  * those also a target of its own, so that a file that is gone later asks for
  * a new run instead of stopping make (as cc -MMD -MP).
  */
+#define _XOPEN_SOURCE 700   /* realpath */
 #include <math.h>
 #include <signal.h>
 #include <stddef.h>
@@ -497,6 +498,82 @@ static int write_deps(const char *dpath, const char *outc, const char *scene)
     return 0;
 }
 
+/* ---- output paths ------------------------------------------------------------ */
+
+static int usage_error(const char *fmt, ...) __attribute__((format(printf, 1, 2)));
+
+/* The directory of path ("." when it has none) into dir: 0, or -1 too long. */
+static int dir_of(const char *path, char *dir, size_t len)
+{
+    const char *slash = strrchr(path, '/');
+    size_t n = slash ? (size_t)(slash - path) : 1;
+    if (slash && n == 0) n = 1;   /* "/file" */
+    if (n >= len) return -1;
+    memcpy(dir, slash ? path : ".", n);
+    dir[n] = 0;
+    return 0;
+}
+
+/* path with its directory resolved (realpath) into out: 0, or -1. */
+static int norm_path(const char *path, char *out, size_t len)
+{
+    char dir[1100], *rd;
+    const char *slash = strrchr(path, '/');
+    if (dir_of(path, dir, sizeof dir) || !(rd = realpath(dir, NULL))) return -1;
+    int w = snprintf(out, len, "%s/%s", strcmp(rd, "/") ? rd : "", slash ? slash + 1 : path);
+    free(rd);
+    return w < 0 || (size_t)w >= len ? -1 : 0;
+}
+
+/* 1 if a and b are the same file: the same device and inode when both
+ * exist, else the same path once their directories are resolved. */
+static int same_file(const char *a, const char *b)
+{
+    struct stat sa, sb;
+    int ea = !stat(a, &sa), eb = !stat(b, &sb);
+    if (ea || eb) return ea && eb && sa.st_dev == sb.st_dev && sa.st_ino == sb.st_ino;
+    char na[1200], nb[1200];
+    if (norm_path(a, na, sizeof na) || norm_path(b, nb, sizeof nb)) return !strcmp(a, b);
+    return !strcmp(na, nb);
+}
+
+/* An output's destination before anything is read: its directory exists,
+ * and it is not a directory itself. 0, or 2 after the message. */
+static int check_dest(const char *opt, const char *path)
+{
+    char dir[1100];
+    struct stat st;
+    if (dir_of(path, dir, sizeof dir)) return usage_error("%s %s: path too long", opt, path);
+    if (stat(dir, &st) || !S_ISDIR(st.st_mode))
+        return usage_error("%s %s: directory %s does not exist", opt, path, dir);
+    if (!stat(path, &st) && S_ISDIR(st.st_mode)) return usage_error("%s %s: is a directory", opt, path);
+    return 0;
+}
+
+/* The outputs (OUT.c, OUT.h, --deps) against each other and against every
+ * file the scene made scenec read (the scene, its textures, OBJ and MTL
+ * files): 0, or 2 after the message. */
+static int check_outputs(const char *outc, const char *deps, const char *scene)
+{
+    char outh[1100];
+    size_t n = strlen(outc);
+    if (n < 3 || strcmp(outc + n - 2, ".c")) return 0;   /* write_outputs says why */
+    if (n >= sizeof outh) return usage_error("-o %s: path too long", outc);
+    memcpy(outh, outc, n + 1);
+    outh[n - 1] = 'h';
+    const char *outs[3] = { outc, outh, deps };
+    for (int i = 0; i < 3; i++) {
+        if (!outs[i]) continue;
+        for (size_t k = 0; k < nread_paths; k++)
+            if (same_file(outs[i], read_paths[k]))
+                return usage_error("%s: is %s; refusing to overwrite it", outs[i],
+                                   !strcmp(read_paths[k], scene) ? "the scene file" : "a file the scene reads");
+        for (int j = 0; j < i; j++)
+            if (outs[j] && same_file(outs[i], outs[j])) return usage_error("%s: given as two outputs", outs[i]);
+    }
+    return 0;
+}
+
 static const char help_text[] =
     "usage: scenec [options] -o OUT.c SCENE\n"
     "Compiles the scene file SCENE into C source for the firmware: OUT.c (the scene as\n"
@@ -571,6 +648,24 @@ static long parse_int(const char *s, long lo, long hi)
     return *e || v < lo || v > hi ? -1 : v;
 }
 
+/* Why s (its first n characters) is not a decimal integer in lo..hi, into
+ * why; 0 if it is one. */
+static int int_why(const char *s, size_t n, long lo, long hi, char *why, size_t len)
+{
+    size_t i = 0;
+    long v = 0;
+    while (i < n && s[i] >= '0' && s[i] <= '9') {
+        v = v * 10 + (s[i++] - '0');
+        if (v > hi) v = hi + 1;
+    }
+    if (i == 0) snprintf(why, len, n ? "'%.*s' is not a number" : "no number", (int)n, s);
+    else if (i < n) snprintf(why, len, "'%.*s' after the number", (int)(n - i), s + i);
+    else if (v < lo) snprintf(why, len, "%ld is less than %ld", v, lo);
+    else if (v > hi) snprintf(why, len, "larger than %ld", hi);
+    else return 0;
+    return -1;
+}
+
 /* 0, 2 after the message of a bad command line, or -1 for --help (printed). */
 static int parse_args(int argc, char **argv, struct args *a)
 {
@@ -620,15 +715,35 @@ static int parse_args(int argc, char **argv, struct args *a)
                 h = parse_int(x + 1, 1, 4096);
                 *x = 'x';
             }
-            if (w < 0 || h < 0) return usage_error("bad size '%s' (WxH, each side 1..4096)", val);
+            if (w < 0 || h < 0) {
+                char why[128] = "no 'x' between width and height", r[96];
+                if (x && int_why(val, (size_t)(x - val), 1, 4096, r, sizeof r)) snprintf(why, sizeof why, "width: %s", r);
+                else if (x && int_why(x + 1, strlen(x + 1), 1, 4096, r, sizeof r))
+                    snprintf(why, sizeof why, "height: %s", r);
+                return usage_error("bad size '%s': %s (WxH, each side 1..4096)", val, why);
+            }
             a->width = (int)w;
             a->height = (int)h;
         } else if (!strcmp(opt, "--strip-rows")) {
             long n = parse_int(val, 1, 4096);
-            if (n < 0) return usage_error("bad strip height '%s' (1..4096)", val);
+            char why[128];
+            if (n < 0 && !int_why(val, strlen(val), 1, 4096, why, sizeof why)) snprintf(why, sizeof why, "not 1..4096");
+            if (n < 0) return usage_error("bad strip height '%s': %s (1..4096)", val, why);
             a->strip = (int)n;
         } else if (!strcmp(opt, "--fracs")) {
-            if (parse_fracs(val, a)) return usage_error("bad --fracs '%s' (up to 16 of 12..20, comma-separated)", val);
+            if (parse_fracs(val, a)) {
+                /* the first item that is not one of 12..20, else the list's form */
+                char why[128] = "", r[96];
+                const char *q = val;
+                for (int k = 0; *q && !why[0]; k++) {
+                    size_t m = strcspn(q, ",");
+                    if (k == 16) snprintf(why, sizeof why, "more than 16 formats");
+                    else if (int_why(q, m, 12, 20, r, sizeof r)) snprintf(why, sizeof why, "item %d: %s", k + 1, r);
+                    q += m + (q[m] == ',');
+                }
+                if (!why[0]) snprintf(why, sizeof why, "an empty item");
+                return usage_error("bad --fracs '%s': %s (up to 16 of 12..20, comma-separated)", val, why);
+            }
         } else if (!strcmp(opt, "--id")) {
             a->idarg = val;
         } else if (!strcmp(opt, "--target-work")) {
@@ -802,6 +917,7 @@ int main(int argc, char **argv)
 
     char err[600];
     struct scene *s = NULL;
+    if ((prc = check_dest("-o", a.outc)) || (a.deps && (prc = check_dest("--deps", a.deps)))) return prc;
     /* read once (a FIFO or /dev/stdin), parsed by the double and the fixed core */
     char *text;
     size_t text_len;
@@ -814,6 +930,11 @@ int main(int argc, char **argv)
         fprintf(stderr, "%s\n", err);
         free(text);
         return rc == SCENE_ENOMEM ? 1 : 2;
+    }
+    if ((rc = check_outputs(a.outc, a.deps, a.path))) {
+        scene_free(s);
+        free(text);
+        return rc;
     }
     char id[256];
     make_id(&a, id, sizeof id);

@@ -217,7 +217,7 @@ printf 'renderer = raytracer\nraytracer { recursion_depth = 16 }\nsphere { cente
 rc=$?
 "$sc" -o "$t/deep.c" "$t/deep.scene" >/dev/null 2>>"$t/err"
 rc2=$?
-if [ $rc -eq 2 ] && [ $rc2 -eq 2 ] && [ "$(grep -c "recursion_depth 16: the ray tracer follows at most 5 levels" "$t/err")" -eq 2 ]
+if [ $rc -eq 2 ] && [ $rc2 -eq 2 ] && [ "$(grep -c "recursion_depth must be in 0 .. 5, found 16" "$t/err")" -eq 2 ]
 then ok io_recursion_depth_past_max_refused
 else no io_recursion_depth_past_max_refused "exit $rc/$rc2: $(cat "$t/err")"; fi
 

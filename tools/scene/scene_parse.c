@@ -2490,11 +2490,6 @@ static void read_scene(struct parser *p, const struct node *top, struct scene *s
     set_defaults(&s->rt, rt_option_rows, NROWS(rt_option_rows));
     if (t.single[TOP_raytracer])
         read_options(p, t.single[TOP_raytracer], "raytracer", rt_option_rows, NROWS(rt_option_rows), &s->rt);
-    /* the ray tracer follows at most RT_MAX_DEPTH reflections: a deeper
-       recursion_depth is an error, not silently clamped */
-    if (s->rt.recursion_depth > RT_MAX_DEPTH)
-        FAIL_N(p, t.single[TOP_raytracer], "raytracer: recursion_depth %d: the ray tracer follows at most %d levels",
-               (int)s->rt.recursion_depth, RT_MAX_DEPTH);
     set_defaults(&s->ras, ras_option_rows, NROWS(ras_option_rows));
     if (t.single[TOP_rasterizer])
         read_options(p, t.single[TOP_rasterizer], "rasterizer", ras_option_rows, NROWS(ras_option_rows), &s->ras);

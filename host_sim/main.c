@@ -18,6 +18,7 @@
 #include <signal.h>
 #include <unistd.h>
 
+#include "../tools/common/file_id.h"
 #include "host_sim/compare.h"
 #include "core_api.h"
 #include "host_sim/imgio.h"
@@ -749,35 +750,6 @@ FILE *__wrap_fopen(const char *path, const char *mode)
     return f;
 }
 
-/* path with its directory resolved (realpath) into out: 0, or -1. */
-static int norm_path(const char *path, char *out, size_t len)
-{
-    char dir[4096], *rd;
-    const char *slash = strrchr(path, '/'), *base = slash ? slash + 1 : path;
-    size_t n = slash ? (size_t)(slash - path) : 0;
-    if (slash && n == 0) n = 1;   /* "/file" */
-    if (n >= sizeof dir) return -1;
-    if (slash) memcpy(dir, path, n);
-    else dir[n++] = '.';
-    dir[n] = 0;
-    if (!(rd = realpath(dir, NULL))) return -1;
-    int w = snprintf(out, len, "%s/%s", strcmp(rd, "/") ? rd : "", base);
-    free(rd);
-    return w < 0 || (size_t)w >= len ? -1 : 0;
-}
-
-/* 1 if a and b are the same file: the same device and inode when both
- * exist, else the same path once their directories are resolved. */
-static int same_file(const char *a, const char *b)
-{
-    struct stat sa, sb;
-    int ea = !stat(a, &sa), eb = !stat(b, &sb);
-    if (ea || eb) return ea && eb && sa.st_dev == sb.st_dev && sa.st_ino == sb.st_ino;
-    char na[4200], nb[4200];
-    if (norm_path(a, na, sizeof na) || norm_path(b, nb, sizeof nb)) return !strcmp(a, b);
-    return !strcmp(na, nb);
-}
-
 /* 1 if path is a regular file the run has read (the scene, a texture, an
  * OBJ or MTL file). */
 static int is_read_file(const char *path)
@@ -808,7 +780,7 @@ static int open_scene(struct run_state *r)
         if (!stat(r->outs[i], &so) && so.st_dev == st.st_dev && so.st_ino == st.st_ino && S_ISREG(st.st_mode))
             return fail(EXIT_USAGE, "%s: is the scene file; refusing to overwrite it", r->outs[i]);
         for (int j = 0; j < i; j++)
-            if (r->outs[j] && same_file(r->outs[i], r->outs[j]))
+            if (r->outs[j] && file_same(r->outs[i], r->outs[j]))
                 return fail(EXIT_USAGE, "%s: given as two outputs", r->outs[i]);
     }
     if ((rc = core_api_double.scene_read(o->scene, &scene_text, &scene_len, err, sizeof err))) {
@@ -1055,7 +1027,7 @@ static int frame_done(struct run_state *r, unsigned f, unsigned fi, const struct
         if (is_read_file(r->frame_out))
             return fail(EXIT_USAGE, "%s: is a file the scene reads; refusing to overwrite it", r->frame_out);
         for (int i = 1; i < 3; i++)
-            if (r->outs[i] && same_file(r->frame_out, r->outs[i]))
+            if (r->outs[i] && file_same(r->frame_out, r->outs[i]))
                 return fail(EXIT_USAGE, "%s: given as two outputs", r->frame_out);
         if ((rc = panel_out_read(*r->pp, r->b->fb, err, sizeof err))) return fail(rc, "%s", err);
         if ((rc = img_write_565(r->frame_out, img_format_of(r->frame_out), r->b->fb, r->w, r->h, r->w,

@@ -8,7 +8,7 @@
 # 12 … 20 (core_frac_bundles): --numeric fixed renders at the format the
 # scene's ranges call for (tools/scene/scene_format.c).
 
-HOST_SIM_SRCS := host_sim/main.c host_sim/imgio.c host_sim/panel_out.c host_sim/compare.c
+HOST_SIM_SRCS := host_sim/main.c host_sim/imgio.c host_sim/panel_out.c host_sim/compare.c tools/common/file_id.c
 # the frame-rate overlay's font (--fps-overlay), shared with the firmware
 HOST_SIM_SRCS += firmware/app/font5x7.c
 # --window: SDL2 (the Makefile's WITH_SDL2); without it the option says so, exit 2

@@ -52,7 +52,7 @@ TESTS += tests/system/test_scene_fuzz.sh:$(FUZZ_SCENE):$(FUZZ_SECONDS)
 # literals) and linked with the NUM_FRAC 12 core bundle for render_work_size
 # (its fallback when the target's is not given). fopen is wrapped: scenec
 # --deps names every file the scene made it read (tools/scenec/scenec.c).
-$(SCENEC): $(call obj,host,double,tools/scenec/scenec.c tools/scene/scene_format.c $(SCENE_PARSER_SRCS)) $(BUILD)/host/core_fixed12.o
+$(SCENEC): $(call obj,host,double,tools/scenec/scenec.c tools/common/file_id.c tools/scene/scene_format.c $(SCENE_PARSER_SRCS)) $(BUILD)/host/core_fixed12.o
 	@mkdir -p $(@D)
 	$(Q)$(CC) -Wl,--wrap=fopen -o $@ $^ $(PNG_LIBS) -lm
 PROGRAMS += $(SCENEC)

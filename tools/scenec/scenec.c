@@ -37,6 +37,7 @@
 #include <string.h>
 #include <sys/stat.h>
 #include <unistd.h>
+#include "../common/file_id.h"
 #include "core_api.h"
 #include "scene_format.h"
 #include "scene_parse.h"
@@ -514,29 +515,6 @@ static int dir_of(const char *path, char *dir, size_t len)
     return 0;
 }
 
-/* path with its directory resolved (realpath) into out: 0, or -1. */
-static int norm_path(const char *path, char *out, size_t len)
-{
-    char dir[1100], *rd;
-    const char *slash = strrchr(path, '/');
-    if (dir_of(path, dir, sizeof dir) || !(rd = realpath(dir, NULL))) return -1;
-    int w = snprintf(out, len, "%s/%s", strcmp(rd, "/") ? rd : "", slash ? slash + 1 : path);
-    free(rd);
-    return w < 0 || (size_t)w >= len ? -1 : 0;
-}
-
-/* 1 if a and b are the same file: the same device and inode when both
- * exist, else the same path once their directories are resolved. */
-static int same_file(const char *a, const char *b)
-{
-    struct stat sa, sb;
-    int ea = !stat(a, &sa), eb = !stat(b, &sb);
-    if (ea || eb) return ea && eb && sa.st_dev == sb.st_dev && sa.st_ino == sb.st_ino;
-    char na[1200], nb[1200];
-    if (norm_path(a, na, sizeof na) || norm_path(b, nb, sizeof nb)) return !strcmp(a, b);
-    return !strcmp(na, nb);
-}
-
 /* An output's destination before anything is read: its directory exists,
  * and it is not a directory itself. 0, or 2 after the message. */
 static int check_dest(const char *opt, const char *path)
@@ -565,11 +543,11 @@ static int check_outputs(const char *outc, const char *deps, const char *scene)
     for (int i = 0; i < 3; i++) {
         if (!outs[i]) continue;
         for (size_t k = 0; k < nread_paths; k++)
-            if (same_file(outs[i], read_paths[k]))
+            if (file_same(outs[i], read_paths[k]))
                 return usage_error("%s: is %s; refusing to overwrite it", outs[i],
                                    !strcmp(read_paths[k], scene) ? "the scene file" : "a file the scene reads");
         for (int j = 0; j < i; j++)
-            if (outs[j] && same_file(outs[i], outs[j])) return usage_error("%s: given as two outputs", outs[i]);
+            if (outs[j] && file_same(outs[i], outs[j])) return usage_error("%s: given as two outputs", outs[i]);
     }
     return 0;
 }

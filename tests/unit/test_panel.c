@@ -70,6 +70,67 @@ static void test_init_streams(void)
     check(panel_init(&p, &panel_st7789_240x240, &h, 4) == -1, "panel_init_rejects_rotation_4", "accepted");
 }
 
+/* A controller described by its own command set: other codes, 8-bit
+ * addresses, no orientation command; the driver sends only what it names. */
+static const struct panel_ctl ctl_other = {
+    .name = "other",
+    .set_cols = 0x15, .set_rows = 0x75, .addr_bytes = 1,
+    .write_mem = 0x5C,
+    .orient = PANEL_CMD_NONE,
+    .inv_on = 0xA7, .inv_off = 0xA6,
+    .disp_on = 0xAF, .disp_off = 0xAE,
+    .sleep_in = 0xAE, .sleep_out = PANEL_CMD_NONE,
+    .sleep_wait_ms = 3,
+};
+static const struct panel_cmd other_init[] = { { 0xFD, 1, 0, { 0x12 } } };
+static const struct panel_desc desc_other = {
+    .name = "other_96x64", .controller = "other", .ctl = &ctl_other,
+    .width = 96, .height = 64, .reset_low_ms = 1, .reset_wait_ms = 2,
+    .init = other_init, .init_len = 1,
+    .madctl = { 0, 0, 0, 0 }, .x_off = { 1, 2, 3, 4 }, .y_off = { 5, 6, 7, 8 },
+    .invert = 1, .spi_mode = 0,
+};
+
+static void test_other_command_set(void)
+{
+    struct rec r; struct hal h; struct panel p;
+    uint16_t px[2] = { 0xABCD, 0x0102 };
+    rec_init(&r, &h, 0);
+    int rc = panel_init(&p, &desc_other, &h, 1);
+    expect_log("other_command_set_init_stream", rec_take(&r),
+        "CS1 DC1 BL0 RST1 RST0 D1 RST1 D2 "
+        "CS0 DC0 FD DC1 12 CS1 "                           /* init table */
+        "CS0 DC0 A7 DC1 CS1 "                              /* inversion on */
+        "CS0 DC0 15 DC1 02 41 CS1 CS0 DC0 75 DC1 06 65 CS1 " /* 8-bit window plus offsets */
+        "CS0 DC0 5C DC1 00x12288 CS1 "
+        "CS0 DC0 AF DC1 CS1 BL1");
+    rc |= panel_flush(&p, 3, 4, 2, 1, px);
+    rc |= panel_sleep(&p, 1);
+    rc |= panel_sleep(&p, 0);
+    rc |= panel_display(&p, 0);
+    expect_log("other_command_set_ops", rec_take(&r),
+        "CS0 DC0 15 DC1 05 06 CS1 CS0 DC0 75 DC1 0A 0A CS1 CS0 DC0 5C DC1 AB CD 01 02 CS1 "
+        "CS0 DC0 AE DC1 CS1 D3 CS0 DC0 AE DC1 CS1");
+    check(rc == 0 && panel_ctl(&p) == &ctl_other, "other_command_set_rc", "rc %d", rc);
+    /* 8-bit addresses: a window beyond 255 after the offset is refused (no
+     * command sent, the bus only deselected) */
+    struct panel_desc big = desc_other;
+    big.width = 300;
+    rec_init(&r, &h, 0);
+    panel_init(&p, &big, &h, 0);
+    rec_take(&r);
+    int ok = panel_flush(&p, 253, 0, 2, 1, px) == 0 && strstr(rec_take(&r), "CS0 DC0 15 DC1 FE FF CS1");
+    int refused = panel_flush(&p, 254, 0, 2, 1, px) == -1;
+    const char *after = rec_take(&r);
+    check(ok && refused && strcmp(after, "CS1") == 0, "other_command_set_8bit_address_overflow",
+          "ok %d refused %d sent \"%s\"", ok, refused, after);
+    /* the DCS descriptors name no command set: DCS is the default */
+    rec_init(&r, &h, 0);
+    panel_init(&p, &panel_st7789_240x240, &h, 0);
+    check(panel_st7789_240x240.ctl == NULL && panel_ctl(&p) == &panel_ctl_dcs, "dcs_is_the_default_command_set",
+          "not DCS");
+}
+
 static void test_find(void)
 {
     check(panel_find("st7789") == &panel_st7789_240x240 && panel_find("ili9341") == &panel_ili9341_320x240 &&
@@ -234,6 +295,7 @@ int main(void)
         return 1;
     test_init_streams();
     test_find();
+    test_other_command_set();
     test_streaming();
     for (size_t i = 0; panel_all[i]; i++)
         for (uint8_t r = 0; r < 4; r++)

@@ -61,28 +61,43 @@ int dcs_hw_reset(struct dcs *d, uint32_t low_ms, uint32_t wait_ms)
     return 0;
 }
 
-static int addr_pair(struct dcs *d, uint8_t cmd, uint16_t a0, uint16_t a1, uint16_t off)
+static int addr_pair(struct dcs *d, uint8_t cmd, uint8_t bytes, uint16_t a0, uint16_t a1, uint16_t off)
 {
     uint32_t s = (uint32_t)a0 + off, e = (uint32_t)a1 + off;
-    if (e > 0xFFFFu)
-        return -1;
     uint8_t p[4] = { (uint8_t)(s >> 8), (uint8_t)s, (uint8_t)(e >> 8), (uint8_t)e };
-    return dcs_command(d, cmd, p, 4);
+    if (bytes == 1) {
+        p[0] = (uint8_t)s;
+        p[1] = (uint8_t)e;
+    }
+    return dcs_command(d, cmd, p, 2u * bytes);
+}
+
+int dcs_set_window_cmds(struct dcs *d, uint8_t col_cmd, uint8_t row_cmd, uint8_t addr_bytes,
+                        uint16_t x0, uint16_t y0, uint16_t x1, uint16_t y1)
+{
+    uint32_t max = addr_bytes == 1 ? 0xFFu : 0xFFFFu;
+    if ((addr_bytes != 1 && addr_bytes != 2) || x0 > x1 || y0 > y1 || (uint32_t)x1 + d->x_off > max ||
+        (uint32_t)y1 + d->y_off > max)
+        return -1;
+    int rc = addr_pair(d, col_cmd, addr_bytes, x0, x1, d->x_off);
+    if (rc == 0)
+        rc = addr_pair(d, row_cmd, addr_bytes, y0, y1, d->y_off);
+    return rc;
 }
 
 int dcs_set_window(struct dcs *d, uint16_t x0, uint16_t y0, uint16_t x1, uint16_t y1)
 {
-    if (x0 > x1 || y0 > y1 || (uint32_t)x1 + d->x_off > 0xFFFFu || (uint32_t)y1 + d->y_off > 0xFFFFu)
-        return -1;
-    int rc = addr_pair(d, DCS_CASET, x0, x1, d->x_off);
-    if (rc == 0)
-        rc = addr_pair(d, DCS_RASET, y0, y1, d->y_off);
-    return rc;
+    return dcs_set_window_cmds(d, DCS_CASET, DCS_RASET, 2, x0, y0, x1, y1);
 }
 
 int dcs_write_begin(struct dcs *d, int cont)
 {
     return begin(d, cont ? DCS_RAMWRC : DCS_RAMWR);
+}
+
+int dcs_write_begin_cmd(struct dcs *d, uint8_t cmd)
+{
+    return begin(d, cmd);
 }
 
 int dcs_write_data(struct dcs *d, const uint8_t *data, size_t n)

@@ -86,11 +86,21 @@ int dcs_hw_reset(struct dcs *d, uint32_t low_ms, uint32_t wait_ms);
  * the offsets. Returns -1 without sending if x0 > x1 or y0 > y1 or an address
  * plus offset exceeds 0xFFFF. */
 int dcs_set_window(struct dcs *d, uint16_t x0, uint16_t y0, uint16_t x1, uint16_t y1);
+/* The same with a controller's own commands and address width: col_cmd with
+ * start and end column, row_cmd with start and end row, each address plus
+ * its offset in addr_bytes bytes (1 or 2; 2 is big-endian). Returns -1
+ * without sending if x0 > x1, y0 > y1, addr_bytes is not 1 or 2, or an
+ * address plus offset does not fit addr_bytes. dcs_set_window is
+ * dcs_set_window_cmds(d, DCS_CASET, DCS_RASET, 2, ...). */
+int dcs_set_window_cmds(struct dcs *d, uint8_t col_cmd, uint8_t row_cmd, uint8_t addr_bytes,
+                        uint16_t x0, uint16_t y0, uint16_t x1, uint16_t y1);
 
 /* Starts a memory write: CS low, RAMWR (or RAMWRC when cont != 0), then D/C
  * high; the bus stays selected for dcs_write_pixels/dcs_write_data until
  * dcs_write_end. */
 int dcs_write_begin(struct dcs *d, int cont);
+/* The same with a controller's own memory write command cmd. */
+int dcs_write_begin_cmd(struct dcs *d, uint8_t cmd);
 /* Sends n raw data bytes inside a write begun with dcs_write_begin. */
 int dcs_write_data(struct dcs *d, const uint8_t *data, size_t n);
 /* Sends n RGB565 pixels big-endian, converted in chunks through d->buf. */

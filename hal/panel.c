@@ -1,7 +1,8 @@
 /* SPDX-License-Identifier: MIT */
 /* panel.c — the generic part of the panel drivers: runs a descriptor's
  * tables through the DCS layer. Controller specifics live in the
- * descriptors (panel_st7789.c, panel_ili9341.c). */
+ * descriptors (panel_st7789.c, panel_ili9341.c) and in the command set they
+ * name (struct panel_ctl; panel_dcs.c): no command code is named here. */
 #include <string.h>
 #include "panel.h"
 
@@ -24,6 +25,27 @@ const struct panel_desc *panel_find(const char *name)
     return NULL;
 }
 
+const struct panel_ctl *panel_ctl(const struct panel *p)
+{
+    return p->desc->ctl ? p->desc->ctl : &panel_ctl_dcs;
+}
+
+/* Sends command c (skipped if PANEL_CMD_NONE) with n parameters. */
+static int send(struct panel *p, uint16_t c, const uint8_t *params, size_t n)
+{
+    return c == PANEL_CMD_NONE ? 0 : dcs_command(&p->dcs, (uint8_t)c, params, n);
+}
+
+/* The window x0..x1 x y0..y1 and the start of a memory write into it. */
+static int open_window(struct panel *p, uint16_t x0, uint16_t y0, uint16_t x1, uint16_t y1)
+{
+    const struct panel_ctl *c = panel_ctl(p);
+    if (c->set_cols == PANEL_CMD_NONE || c->set_rows == PANEL_CMD_NONE || c->write_mem == PANEL_CMD_NONE)
+        return -1;
+    int rc = dcs_set_window_cmds(&p->dcs, (uint8_t)c->set_cols, (uint8_t)c->set_rows, c->addr_bytes, x0, y0, x1, y1);
+    return rc ? rc : dcs_write_begin_cmd(&p->dcs, (uint8_t)c->write_mem);
+}
+
 int panel_set_rotation(struct panel *p, uint8_t rotation)
 {
     if (rotation > 3)
@@ -34,7 +56,7 @@ int panel_set_rotation(struct panel *p, uint8_t rotation)
     p->height = (rotation & 1) ? d->width : d->height;
     p->dcs.x_off = d->x_off[rotation];
     p->dcs.y_off = d->y_off[rotation];
-    return dcs_command(&p->dcs, DCS_MADCTL, &d->madctl[rotation], 1);
+    return send(p, panel_ctl(p)->orient, &d->madctl[rotation], 1);
 }
 
 int panel_init(struct panel *p, const struct panel_desc *d, const struct hal *hal, uint8_t rotation)
@@ -57,7 +79,7 @@ int panel_init(struct panel *p, const struct panel_desc *d, const struct hal *ha
     if (rc == 0)
         rc = panel_set_rotation(p, rotation);
     if (rc == 0)
-        rc = dcs_command(&p->dcs, d->invert ? DCS_INVON : DCS_INVOFF, NULL, 0);
+        rc = send(p, d->invert ? panel_ctl(p)->inv_on : panel_ctl(p)->inv_off, NULL, 0);
     /* Memory holds noise after power-on: clear it before the glass shows it. */
     if (rc == 0)
         rc = panel_fill(p, 0, 0, p->width, p->height, 0x0000);
@@ -77,9 +99,7 @@ int panel_flush_begin(struct panel *p, uint16_t x, uint16_t y, uint16_t w, uint1
 {
     if (!rect_ok(p, x, y, w, h) || p->flush_rows)
         return -1;
-    int rc = dcs_set_window(&p->dcs, x, y, (uint16_t)(x + w - 1), (uint16_t)(y + h - 1));
-    if (rc == 0)
-        rc = dcs_write_begin(&p->dcs, 0);
+    int rc = open_window(p, x, y, (uint16_t)(x + w - 1), (uint16_t)(y + h - 1));
     if (rc != 0) {
         dcs_write_end(&p->dcs);
         return rc;
@@ -138,9 +158,7 @@ int panel_fill(struct panel *p, uint16_t x, uint16_t y, uint16_t w, uint16_t h, 
 {
     if (!rect_ok(p, x, y, w, h))
         return -1;
-    int rc = dcs_set_window(&p->dcs, x, y, (uint16_t)(x + w - 1), (uint16_t)(y + h - 1));
-    if (rc == 0)
-        rc = dcs_write_begin(&p->dcs, 0);
+    int rc = open_window(p, x, y, (uint16_t)(x + w - 1), (uint16_t)(y + h - 1));
     if (rc == 0)
         rc = dcs_write_fill(&p->dcs, colour, (size_t)w * h);
     int rc2 = dcs_write_end(&p->dcs);
@@ -149,16 +167,17 @@ int panel_fill(struct panel *p, uint16_t x, uint16_t y, uint16_t w, uint16_t h, 
 
 int panel_display(struct panel *p, int on)
 {
-    return dcs_command(&p->dcs, on ? DCS_DISPON : DCS_DISPOFF, NULL, 0);
+    return send(p, on ? panel_ctl(p)->disp_on : panel_ctl(p)->disp_off, NULL, 0);
 }
 
-/* Both controllers: 5 ms before the next command after SLPIN/SLPOUT, and
- * 120 ms between SLPOUT and a following SLPIN (and back). Waiting 120 ms
- * after either covers all cases. */
+/* The wait after a sleep change is the command set's (panel_dcs.c: DCS). */
 int panel_sleep(struct panel *p, int sleep)
 {
-    int rc = dcs_command(&p->dcs, sleep ? DCS_SLPIN : DCS_SLPOUT, NULL, 0);
-    dcs_delay_ms(&p->dcs, 120);
+    const struct panel_ctl *c = panel_ctl(p);
+    uint16_t cmd = sleep ? c->sleep_in : c->sleep_out;
+    int rc = send(p, cmd, NULL, 0);
+    if (cmd != PANEL_CMD_NONE && c->sleep_wait_ms)
+        dcs_delay_ms(&p->dcs, c->sleep_wait_ms);
     return rc;
 }
 

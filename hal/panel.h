@@ -6,6 +6,13 @@
  * column/row offsets for each rotation, colour order and inversion.
  * Adding a module means adding a descriptor, not code.
  *
+ * What the generic driver sends for each operation (window, memory write,
+ * orientation, inversion, display and sleep) is the controller's command
+ * set, struct panel_ctl, named by the descriptor: MIPI DCS (panel_ctl_dcs)
+ * unless the descriptor names another. A controller that does not speak
+ * DCS but takes commands with D/C low and their parameters with D/C high
+ * is described by its own panel_ctl, as data.
+ *
  * Rotation r (0..3) turns the image r*90 degrees clockwise relative to the
  * descriptor's rotation 0; odd rotations swap width and height.
  * Pixels are RGB565, native uint16_t, row-major.
@@ -33,17 +40,39 @@ struct panel_cmd {
     uint8_t params[PANEL_CMD_MAX_PARAMS];
 };
 
+/* An operation a controller does not have. */
+#define PANEL_CMD_NONE 0x100
+
+/* A controller's command set: the command (0..0xFF, or PANEL_CMD_NONE: the
+ * operation is skipped) the generic driver sends for each operation. */
+struct panel_ctl {
+    const char *name;            /* "MIPI DCS", ... */
+    uint16_t set_cols, set_rows; /* window: start and end column / row, */
+    uint8_t addr_bytes;          /* each address in 1 byte or 2 (big-endian) */
+    uint16_t write_mem;          /* memory write; pixels follow (RGB565, big-endian) */
+    uint16_t orient;             /* one parameter: the descriptor's madctl[rotation] */
+    uint16_t inv_on, inv_off;    /* no parameters, as the rest */
+    uint16_t disp_on, disp_off;
+    uint16_t sleep_in, sleep_out;
+    uint16_t sleep_wait_ms;      /* wait after sleep_in and sleep_out */
+};
+
+/* MIPI DCS: CASET/RASET (16-bit addresses), RAMWR, MADCTL, INVON/INVOFF,
+ * DISPON/DISPOFF, SLPIN/SLPOUT and 120 ms after a sleep change. */
+extern const struct panel_ctl panel_ctl_dcs;
+
 struct panel_desc {
     const char *name;            /* "st7789_240x240", ... (panel_find key) */
     const char *controller;      /* "st7789", "ili9341" */
+    const struct panel_ctl *ctl; /* the controller's command set; NULL: panel_ctl_dcs */
     uint16_t width, height;      /* visible size in rotation 0 */
     uint16_t reset_low_ms;       /* hardware reset pulse */
     uint16_t reset_wait_ms;      /* wait after releasing RESET */
     const struct panel_cmd *init;/* sent after the hardware reset, in order */
     size_t init_len;
-    uint8_t madctl[4];           /* MADCTL per rotation, BGR bit included */
+    uint8_t madctl[4];           /* orientation (DCS: MADCTL) per rotation, BGR bit included */
     uint16_t x_off[4], y_off[4]; /* column/row offset per rotation */
-    uint8_t invert;              /* 1: INVON (IPS glass), 0: INVOFF */
+    uint8_t invert;              /* 1: inversion on (INVON, IPS glass), 0: off (INVOFF) */
     uint8_t spi_mode;            /* SPI mode a host drives the module in by default
                                     (ST7789: 3, which CS-less modules need and
                                     modules with CS accept; ILI9341: 0) */
@@ -73,12 +102,15 @@ const struct panel_desc *panel_find(const char *name);
 /* The descriptors panel_find knows, in panels.def's order, NULL-terminated. */
 extern const struct panel_desc *const panel_all[];
 
-/* Resets and initialises the panel (hardware reset, init table, MADCTL for
- * rotation, inversion, memory cleared to black, display on, backlight on).
+/* The command set p's descriptor names (panel_ctl_dcs if it names none). */
+const struct panel_ctl *panel_ctl(const struct panel *p);
+
+/* Resets and initialises the panel (hardware reset, init table, orientation
+ * for rotation, inversion, memory cleared to black, display on, backlight on).
  * rotation 0..3; returns -1 for a bad rotation, else 0 or the HAL's error. */
 int panel_init(struct panel *p, const struct panel_desc *d, const struct hal *hal, uint8_t rotation);
 
-/* Changes the rotation (MADCTL and offsets); width/height follow. */
+/* Changes the rotation (orientation command and offsets); width/height follow. */
 int panel_set_rotation(struct panel *p, uint8_t rotation);
 
 /* Sends the w*h pixels px (row-major, stride w) to the rectangle at (x, y).
@@ -86,7 +118,7 @@ int panel_set_rotation(struct panel *p, uint8_t rotation);
 int panel_flush(struct panel *p, uint16_t x, uint16_t y, uint16_t w, uint16_t h, const uint16_t *px);
 
 /* Streaming flush of the w x h rectangle at (x, y): begin opens the window
- * (CASET, RASET, RAMWR; -1 and nothing sent if it is empty or leaves the
+ * (columns, rows, memory write: CASET, RASET, RAMWR on DCS; -1 and nothing sent if it is empty or leaves the
  * panel, or a flush is open), each panel_flush_rows call sends the next rows
  * (rows * w pixels, stride w; -1 and nothing sent for more rows than are
  * left), end waits for the bus and closes the write (-1 if rows were left,
@@ -111,7 +143,8 @@ int panel_wait(struct panel *p);
 /* Fills a rectangle with one colour (same rules as panel_flush). */
 int panel_fill(struct panel *p, uint16_t x, uint16_t y, uint16_t w, uint16_t h, uint16_t colour);
 
-/* DISPON/DISPOFF and SLPIN/SLPOUT with the waits they need. */
+/* Display on/off and sleep in/out (DISPON/DISPOFF, SLPIN/SLPOUT on DCS),
+ * sleep changes with the wait they need. */
 int panel_display(struct panel *p, int on);
 int panel_sleep(struct panel *p, int sleep);
 

@@ -25,6 +25,9 @@ TEST_DEPS += $(FW_OUT)/pico/cgfs-book-1core.elf $(FW_OUT)/pico/cgfs-cube-1core.e
 TESTS     += tests/system/test_rp2040sim_book.sh:$(BUILD) tests/system/test_rp2040sim_cube.sh:$(BUILD):$(FW_CUBE_FRAMES)
 TEST_DEPS += $(FW_OUT)/pico/cgfs-cube-ili9341-1core.elf
 TESTS     += tests/system/test_rp2040sim_cube.sh:$(BUILD):$(FW_CUBE_FRAMES):cgfs-cube-ili9341-1core:ili9341_320x240:320x240
+# and on the ST7735S 1.8" module, 128x160
+TEST_DEPS += $(FW_OUT)/pico/cgfs-cube-st7735-1core.elf
+TESTS     += tests/system/test_rp2040sim_cube.sh:$(BUILD):$(FW_CUBE_FRAMES):cgfs-cube-st7735-1core:st7735_128x160:128x160
 # the two-core images on both emulated cores (tools/rp2040sim/dualcore.js)
 TEST_DEPS += $(FW_OUT)/pico/cgfs.elf $(FW_OUT)/pico/cgfs-book.elf
 TESTS     += tests/system/test_rp2040sim_dual.sh:$(BUILD)

@@ -1,5 +1,5 @@
 /* SPDX-License-Identifier: MIT */
-/* emu_panel.c — emulated ST7789 / ILI9341 controller behind a module glass.
+/* emu_panel.c — emulated ST7789 / ILI9341 / ST7735S controller behind a module glass.
  *
  * Model (datasheet behaviour; the rules are listed in docs/hal.md):
  * - A byte with D/C low is a command; with D/C high, a parameter of the
@@ -10,8 +10,11 @@
  * - The address counter moves along x, wraps to xs and steps y at xe, and
  *   wraps to (xs, ys) after (xe, ye).
  * - Waits: any command at least 5 ms after SWRESET, hardware reset, SLPIN and
- *   SLPOUT; SLPOUT at least 120 ms after SLPIN, a hardware reset, or a
- *   SWRESET sent while awake; SLPIN at least 120 ms after SLPOUT.
+ *   SLPOUT (120 ms after SLPOUT on the ST7735S); SLPOUT at least 120 ms
+ *   after SLPIN, a hardware reset, or a SWRESET sent while awake; SLPIN at
+ *   least 120 ms after SLPOUT.
+ * - Memory size, COLMOD after reset and what SWRESET does to COLMOD are the
+ *   model's (struct model below).
  */
 #include <stdio.h>
 #include <string.h>
@@ -20,7 +23,9 @@
 #define MS 1000000ull
 #define M_ST (1u << EMU_ST7789)
 #define M_IL (1u << EMU_ILI9341)
-#define M_ALL (M_ST | M_IL)
+#define M_S7 (1u << EMU_ST7735S)
+#define M_SI (M_ST | M_IL)
+#define M_ALL (M_ST | M_IL | M_S7)
 
 /* Command flags (emu_commands.def, the table of accepted commands). */
 enum { F_PIXELS = 1, F_NOTEMU = 2, F_READ = 4 };
@@ -39,7 +44,20 @@ static const struct cmd_info cmds[] = {
 #undef CMD
 };
 
-static const char *const model_name[] = { "ST7789", "ILI9341" };
+/* Facts of each controller model the rules depend on. */
+static const struct model {
+    const char *name;
+    uint16_t mem_w, mem_h;       /* memory columns x rows (native) */
+    uint8_t colmod_reset;        /* COLMOD after a hardware reset */
+    uint8_t colmod_swreset;      /* 1: SWRESET resets COLMOD too, 0: keeps it */
+    uint8_t colmod_16bit;        /* the 16-bit value named in the violation */
+    uint16_t slpout_busy_ms;     /* no command for this long after SLPOUT */
+} models[] = {
+    [EMU_ST7789] = { "ST7789", 240, 320, 0x66, 1, 0x55, 5 },
+    [EMU_ILI9341] = { "ILI9341", 240, 320, 0x66, 1, 0x55, 5 },
+    [EMU_ST7735S] = { "ST7735S", 132, 162, 0x06, 0, 0x05, 120 },
+};
+#define MODEL(p) (&models[(p)->mod->model])
 
 #define GLASS(nm, model, w, h, mem_x, mem_y, mirror_x, bgr, inverted, normally_black) \
     const struct emu_module emu_module_##nm = { #nm, EMU_##model, w, h, mem_x, mem_y, mirror_x, bgr, inverted, normally_black };
@@ -107,8 +125,8 @@ static void vcmd(struct emu_panel *p, int code, const char *what)
     violate(p, cmd_name(p, code), code, p->offset, what);
 }
 
-/* Register state after a hardware reset or SWRESET (memory is kept). */
-static void reset_regs(struct emu_panel *p)
+/* Register state after a hardware reset (hw) or SWRESET (memory is kept). */
+static void reset_regs(struct emu_panel *p, int hw)
 {
     p->cur = -1;
     p->nparam = 0;
@@ -117,14 +135,15 @@ static void reset_regs(struct emu_panel *p)
     p->display_on = 0;
     p->inverted = 0;
     p->idle = 0;
-    p->colmod = 0x66;
+    if (hw || MODEL(p)->colmod_swreset)
+        p->colmod = MODEL(p)->colmod_reset;
     p->madctl = 0;
     p->window_set = 0;
     p->cont_valid = 0;
     p->xs = 0;
-    p->xe = EMU_MEM_W - 1;
+    p->xe = (uint16_t)(MODEL(p)->mem_w - 1);
     p->ys = 0;
-    p->ye = EMU_MEM_H - 1;
+    p->ye = (uint16_t)(MODEL(p)->mem_h - 1);
     p->cx = 0;
     p->cy = 0;
 }
@@ -140,7 +159,7 @@ static void set_wait(uint64_t *until, const char **why, uint64_t t, uint64_t d, 
 /* A hardware reset is released at t. */
 static void hw_reset_done(struct emu_panel *p, uint64_t t)
 {
-    reset_regs(p);
+    reset_regs(p, 1);
     set_wait(&p->busy_until_ns, &p->busy_why, t, 5 * MS, "hardware reset", &p->busy_since_ns);
     set_wait(&p->slpout_ok_ns, &p->slpout_why, t, 120 * MS, "hardware reset", &p->slpout_since_ns);
     p->slpin_ok_ns = 0;
@@ -172,8 +191,8 @@ int emu_panel_init(struct emu_panel *p, const struct emu_module *mod, uint8_t vi
 }
 
 /* Memory limits of the window's x and y in the current orientation. */
-static uint16_t lim_x(const struct emu_panel *p) { return (p->madctl & 0x20) ? EMU_MEM_H : EMU_MEM_W; }
-static uint16_t lim_y(const struct emu_panel *p) { return (p->madctl & 0x20) ? EMU_MEM_W : EMU_MEM_H; }
+static uint16_t lim_x(const struct emu_panel *p) { return (p->madctl & 0x20) ? MODEL(p)->mem_h : MODEL(p)->mem_w; }
+static uint16_t lim_y(const struct emu_panel *p) { return (p->madctl & 0x20) ? MODEL(p)->mem_w : MODEL(p)->mem_h; }
 
 /* The current command ends (a new command, a reset, or the end). */
 static void end_command(struct emu_panel *p)
@@ -219,8 +238,8 @@ static void start_write(struct emu_panel *p, uint8_t code)
                      : (p->window_set & 2) ? "memory write before CASET set the columns"
                      : "memory write before CASET/RASET set a window");
     } else if ((p->colmod & 7) != 5) {
-        snprintf(what, sizeof what, "memory write with COLMOD 0x%02X (only 16-bit, 0x55, emulated)",
-                 (unsigned)p->colmod);
+        snprintf(what, sizeof what, "memory write with COLMOD 0x%02X (only 16-bit, 0x%02X, emulated)",
+                 (unsigned)p->colmod, (unsigned)MODEL(p)->colmod_16bit);
         vcmd(p, code, what);
     } else if (p->xe >= lim_x(p) || p->ye >= lim_y(p)) {
         snprintf(what, sizeof what, "window %u..%u x %u..%u outside the memory (%ux%u)",
@@ -244,7 +263,7 @@ static void command(struct emu_panel *p, uint8_t code, uint64_t t)
     const struct cmd_info *c = lookup(p, code);
     char what[60];
     if (!c) {
-        snprintf(what, sizeof what, "not an %s command", model_name[p->mod->model]);
+        snprintf(what, sizeof what, "not an %s command", MODEL(p)->name);
         vcmd(p, code, what);
         return;
     }
@@ -259,7 +278,7 @@ static void command(struct emu_panel *p, uint8_t code, uint64_t t)
     switch (code) {
     case 0x01: {    /* SWRESET */
         int awake = !p->asleep;
-        reset_regs(p);
+        reset_regs(p, 0);
         set_wait(&p->busy_until_ns, &p->busy_why, t, 5 * MS, "SWRESET", &p->busy_since_ns);
         if (awake)
             set_wait(&p->slpout_ok_ns, &p->slpout_why, t, 120 * MS, "SWRESET", &p->slpout_since_ns);
@@ -283,7 +302,7 @@ static void command(struct emu_panel *p, uint8_t code, uint64_t t)
             p->asleep = 0;
             set_wait(&p->slpin_ok_ns, &p->slpin_why, t, 120 * MS, "SLPOUT", &p->slpin_since_ns);
         }
-        set_wait(&p->busy_until_ns, &p->busy_why, t, 5 * MS, "SLPOUT", &p->busy_since_ns);
+        set_wait(&p->busy_until_ns, &p->busy_why, t, MODEL(p)->slpout_busy_ms * MS, "SLPOUT", &p->busy_since_ns);
         break;
     case 0x20: p->inverted = 0; break;
     case 0x21: p->inverted = 1; break;
@@ -337,8 +356,8 @@ static void pixel(struct emu_panel *p, uint16_t v)
 {
     uint16_t c = p->cx, r = p->cy;
     if (p->madctl & 0x20) { c = p->cy; r = p->cx; }
-    if (p->madctl & 0x40) c = (uint16_t)(EMU_MEM_W - 1 - c);
-    if (p->madctl & 0x80) r = (uint16_t)(EMU_MEM_H - 1 - r);
+    if (p->madctl & 0x40) c = (uint16_t)(MODEL(p)->mem_w - 1 - c);
+    if (p->madctl & 0x80) r = (uint16_t)(MODEL(p)->mem_h - 1 - r);
     p->mem[r][c] = v;
     p->pixels_written++;
     if (p->cx < p->xe) {
@@ -478,7 +497,7 @@ uint16_t emu_panel_glass_height(const struct emu_panel *p)
 
 uint16_t emu_panel_mem(const struct emu_panel *p, uint16_t col, uint16_t row)
 {
-    return (col < EMU_MEM_W && row < EMU_MEM_H) ? p->mem[row][col] : 0;
+    return (col < MODEL(p)->mem_w && row < MODEL(p)->mem_h) ? p->mem[row][col] : 0;
 }
 
 int emu_panel_glass(const struct emu_panel *p, uint16_t *out, uint16_t w, uint16_t h)

@@ -1,9 +1,10 @@
 /* SPDX-License-Identifier: MIT */
-/* emu_panel.h — an emulated SPI display controller (ST7789, ILI9341).
+/* emu_panel.h — an emulated SPI display controller (ST7789, ILI9341, ST7735S).
  *
  * Decodes the byte stream and line changes a driver produces, as the
  * controllers' datasheets describe, keeps the controller's frame memory
- * (RGB565, 240 columns x 320 rows in the controller's native orientation)
+ * (RGB565, in the controller's native orientation: 240 columns x 320 rows,
+ * 132 x 162 on the ST7735S)
  * and shows what the module's glass displays.
  *
  * Strict: the first protocol violation is recorded as one line,
@@ -25,16 +26,16 @@
 #include <stddef.h>
 #include <stdint.h>
 
-#define EMU_MEM_W 240   /* controller memory columns (native) */
-#define EMU_MEM_H 320   /* controller memory rows (native) */
+#define EMU_MEM_W 240   /* controller memory columns (native; the largest model's) */
+#define EMU_MEM_H 320   /* controller memory rows (native; the largest model's) */
 #define EMU_MSG_LEN 160
 
-enum emu_model { EMU_ST7789 = 0, EMU_ILI9341 = 1 };
+enum emu_model { EMU_ST7789 = 0, EMU_ILI9341 = 1, EMU_ST7735S = 2 };
 
 /* A module: a controller behind a glass. Facts of the hardware, not of the
  * driver; the modules are the GLASS lines of hal/panels.def. */
 struct emu_module {
-    const char *name;            /* "st7789_240x240", "st7789_240x320", "ili9341_240x320" */
+    const char *name;            /* "st7789_240x240", "ili9341_240x320", "st7735s_80x160", ... */
     enum emu_model model;
     uint16_t glass_w, glass_h;   /* visible pixels, native orientation */
     uint16_t mem_x, mem_y;       /* memory column/row of the glass's top-left */

@@ -15,7 +15,9 @@
 # ~10 s of emulation (0.13 G cycles). IMAGE, PANEL and SIZE run another
 # image of the cube scenes: cgfs-cube-ili9341-1core ili9341_320x240 320x240,
 # the ILI9341 module in landscape (its scenes compiled at 320x240, format in
-# fw_cube320_num_frac.h); the cases' names then carry "_320x240".
+# fw_cube320_num_frac.h), or cgfs-cube-st7735-1core st7735_128x160 128x160, the
+# ST7735S 1.8" module (fw_cube128_num_frac.h); the cases' names then carry
+# "_<SIZE>".
 # usage: test_rp2040sim_cube.sh BUILD_DIR [FRAMES_PER_SCENE [IMAGE PANEL SIZE]]
 set -u
 b=${1:-build}
@@ -25,7 +27,11 @@ panel=${4:-st7789_240x240}
 size=${5:-240x240}
 width=${size%x*}
 set=cube tag=
-[ "$size" = 240x240 ] || { set=cube320; tag=_$size; }
+case $size in
+240x240) ;;
+128x160) set=cube128 tag=_$size ;;
+*) set=cube320 tag=_$size ;;
+esac
 t=$(mktemp -d)
 trap 'rm -rf "$t"' EXIT
 elf=$b/firmware/pico/$image.elf

@@ -48,6 +48,16 @@ static void test_window(void)
     d.x_off = 10;
     check(dcs_set_window(&d, 0, 0, 0xFFFF, 0) == -1 && strcmp(rec_take(&r), "") == 0,
           "dcs_window_rejects_offset_overflow", "sent something");
+    /* a controller's own window commands, 8-bit addresses */
+    d.x_off = 2; d.y_off = 1;
+    dcs_set_window_cmds(&d, 0x15, 0x75, 1, 0, 3, 127, 158);
+    dcs_write_begin_cmd(&d, 0x5C);
+    dcs_write_end(&d);
+    EXPECT("dcs_window_cmds_8bit", rec_take(&r),
+           "CS0 DC0 15 DC1 02 81 CS1 CS0 DC0 75 DC1 04 9F CS1 CS0 DC0 5C DC1 CS1");
+    check(dcs_set_window_cmds(&d, 0x15, 0x75, 1, 0, 0, 254, 0) == -1 &&
+          dcs_set_window_cmds(&d, 0x15, 0x75, 3, 0, 0, 1, 1) == -1 && strcmp(rec_take(&r), "") == 0,
+          "dcs_window_cmds_rejects_8bit_overflow_and_bad_width", "sent something");
 }
 
 static void test_pixels(void)

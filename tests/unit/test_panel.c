@@ -52,6 +52,22 @@ static void test_init_streams(void)
         "CS0 DC0 29 DC1 CS1 BL1");
 
     rec_init(&r, &h, 0);
+    panel_init(&p, &panel_st7735_80x160, &h, 0);
+    expect_log("st7735_80x160_init_stream", rec_take(&r),
+        "CS1 DC1 BL0 RST1 RST0 D1 RST1 D120 "
+        "CS0 DC0 01 DC1 CS1 D120 "
+        "CS0 DC0 11 DC1 CS1 D120 "                         /* SLPOUT: 120 ms on the ST7735S */
+        "CS0 DC0 3A DC1 05 CS1 "                           /* COLMOD 16-bit */
+        "CS0 DC0 B1 DC1 01 2C 2D CS1 "                     /* FRMCTR1 */
+        "CS0 DC0 B4 DC1 07 CS1 "                           /* INVCTR */
+        "CS0 DC0 13 DC1 CS1 "
+        "CS0 DC0 36 DC1 08 CS1 "                           /* MADCTL BGR */
+        "CS0 DC0 21 DC1 CS1 "                              /* INVON: IPS */
+        "CS0 DC0 2A DC1 00 1A 00 69 CS1 CS0 DC0 2B DC1 00 01 00 A0 CS1 " /* columns 26.., row 1.. */
+        "CS0 DC0 2C DC1 00x25600 CS1 "
+        "CS0 DC0 29 DC1 CS1 BL1");
+
+    rec_init(&r, &h, 0);
     panel_init(&p, &panel_st7789_240x240, &h, 2);
     rec_take(&r);
     uint16_t px[2] = { 0xABCD, 0x0102 };
@@ -70,9 +86,134 @@ static void test_init_streams(void)
     check(panel_init(&p, &panel_st7789_240x240, &h, 4) == -1, "panel_init_rejects_rotation_4", "accepted");
 }
 
+/* A controller described by its own command set: other codes, 8-bit
+ * addresses, no orientation command; the driver sends only what it names. */
+static const struct panel_ctl ctl_other = {
+    .name = "other",
+    .set_cols = 0x15, .set_rows = 0x75, .addr_bytes = 1,
+    .write_mem = 0x5C,
+    .orient = PANEL_CMD_NONE,
+    .inv_on = 0xA7, .inv_off = 0xA6,
+    .disp_on = 0xAF, .disp_off = 0xAE,
+    .sleep_in = 0xAE, .sleep_out = PANEL_CMD_NONE,
+    .sleep_wait_ms = 3,
+};
+static const struct panel_cmd other_init[] = { { 0xFD, 1, 0, { 0x12 } } };
+static const struct panel_desc desc_other = {
+    .name = "other_96x64", .controller = "other", .ctl = &ctl_other,
+    .width = 96, .height = 64, .reset_low_ms = 1, .reset_wait_ms = 2,
+    .init = other_init, .init_len = 1,
+    .madctl = { 0, 0, 0, 0 }, .x_off = { 1, 2, 3, 4 }, .y_off = { 5, 6, 7, 8 },
+    .invert = 1, .spi_mode = 0,
+};
+
+static void test_other_command_set(void)
+{
+    struct rec r; struct hal h; struct panel p;
+    uint16_t px[2] = { 0xABCD, 0x0102 };
+    rec_init(&r, &h, 0);
+    int rc = panel_init(&p, &desc_other, &h, 1);
+    expect_log("other_command_set_init_stream", rec_take(&r),
+        "CS1 DC1 BL0 RST1 RST0 D1 RST1 D2 "
+        "CS0 DC0 FD DC1 12 CS1 "                           /* init table */
+        "CS0 DC0 A7 DC1 CS1 "                              /* inversion on */
+        "CS0 DC0 15 DC1 02 41 CS1 CS0 DC0 75 DC1 06 65 CS1 " /* 8-bit window plus offsets */
+        "CS0 DC0 5C DC1 00x12288 CS1 "
+        "CS0 DC0 AF DC1 CS1 BL1");
+    rc |= panel_flush(&p, 3, 4, 2, 1, px);
+    rc |= panel_sleep(&p, 1);
+    rc |= panel_sleep(&p, 0);
+    rc |= panel_display(&p, 0);
+    expect_log("other_command_set_ops", rec_take(&r),
+        "CS0 DC0 15 DC1 05 06 CS1 CS0 DC0 75 DC1 0A 0A CS1 CS0 DC0 5C DC1 AB CD 01 02 CS1 "
+        "CS0 DC0 AE DC1 CS1 D3 CS0 DC0 AE DC1 CS1");
+    check(rc == 0 && panel_ctl(&p) == &ctl_other, "other_command_set_rc", "rc %d", rc);
+    /* 8-bit addresses: a window beyond 255 after the offset is refused (no
+     * command sent, the bus only deselected) */
+    struct panel_desc big = desc_other;
+    big.width = 300;
+    rec_init(&r, &h, 0);
+    panel_init(&p, &big, &h, 0);
+    rec_take(&r);
+    int ok = panel_flush(&p, 253, 0, 2, 1, px) == 0 && strstr(rec_take(&r), "CS0 DC0 15 DC1 FE FF CS1");
+    int refused = panel_flush(&p, 254, 0, 2, 1, px) == -1;
+    const char *after = rec_take(&r);
+    check(ok && refused && strcmp(after, "CS1") == 0, "other_command_set_8bit_address_overflow",
+          "ok %d refused %d sent \"%s\"", ok, refused, after);
+    /* the DCS descriptors name no command set: DCS is the default */
+    rec_init(&r, &h, 0);
+    panel_init(&p, &panel_st7789_240x240, &h, 0);
+    check(panel_st7789_240x240.ctl == NULL && panel_ctl(&p) == &panel_ctl_dcs, "dcs_is_the_default_command_set",
+          "not DCS");
+}
+
+static uint32_t crc32_str(const char *s)
+{
+    uint32_t crc = 0xFFFFFFFFu;
+    for (; *s; s++) {
+        crc ^= (uint8_t)*s;
+        for (int k = 0; k < 8; k++)
+            crc = (crc >> 1) ^ (0xEDB88320u & (0u - (crc & 1u)));
+    }
+    return ~crc;
+}
+
+/* The command streams of the DCS descriptors, pinned: the CRC-32 of the
+ * recorded log of panel_init in each rotation, and of a run of every other
+ * operation after it (flush, fill, streamed flush, stopped flush, display
+ * off/on, sleep in/out, the next rotation, a pixel), as the driver sent them
+ * before the command sets (struct panel_ctl) existed. */
+static void test_streams_pinned(void)
+{
+    static const struct { const char *name; uint8_t rot; uint32_t init, ops; } pin[] = {
+        { "st7789_240x240", 0, 0x991AE6C2u, 0xD3D52803u },  { "st7789_240x240", 1, 0x855A4ABCu, 0x928849AFu },
+        { "st7789_240x240", 2, 0x38D1E9E9u, 0x609102C0u },  { "st7789_240x240", 3, 0x1D706808u, 0x97D78997u },
+        { "st7789_240x320", 0, 0x0FA22AC9u, 0xABC5475Bu },  { "st7789_240x320", 1, 0xC76AF323u, 0x60BFD969u },
+        { "st7789_240x320", 2, 0x40FA9C07u, 0x92DF18F0u },  { "st7789_240x320", 3, 0x9FB28DB9u, 0xC5ECE8E7u },
+        { "ili9341_320x240", 0, 0x5E5E6B0Eu, 0xA6DE2B64u }, { "ili9341_320x240", 1, 0xAE17EA18u, 0x8E476F5Du },
+        { "ili9341_320x240", 2, 0x06861594u, 0xD9749F4Au }, { "ili9341_320x240", 3, 0x9696B2E4u, 0xB75D30F6u },
+        { "ili9341_240x320", 0, 0x9696B2E4u, 0xB75D30F6u }, { "ili9341_240x320", 1, 0x5E5E6B0Eu, 0xA6DE2B64u },
+        { "ili9341_240x320", 2, 0xAE17EA18u, 0x8E476F5Du }, { "ili9341_240x320", 3, 0x06861594u, 0xD9749F4Au },
+    };
+    int bad = 0;
+    char first[80] = "";
+    for (size_t i = 0; i < sizeof pin / sizeof pin[0]; i++)
+        for (int async = 0; async < 2; async++) {
+            struct rec r; struct hal h; struct panel p;
+            uint16_t px[6] = { 0x1234, 0xABCD, 0xFFFF, 0, 0x0F0F, 0xF0F0 };
+            rec_init(&r, &h, async);
+            int rc = panel_init(&p, panel_find(pin[i].name), &h, pin[i].rot);
+            uint32_t c_init = crc32_str(rec_take(&r));
+            rc |= panel_flush(&p, 1, 2, 3, 2, px);
+            rc |= panel_fill(&p, (uint16_t)(p.width - 4), (uint16_t)(p.height - 3), 4, 3, 0xBEEF);
+            rc |= panel_flush_begin(&p, 0, 0, 2, 3);
+            rc |= panel_flush_rows(&p, px, 1, NULL, NULL);
+            rc |= panel_flush_rows(&p, px + 2, 2, NULL, NULL);
+            rc |= panel_flush_end(&p);
+            rc |= panel_flush_begin(&p, 0, 0, 2, 3);
+            rc |= panel_flush_rows(&p, px, 1, NULL, NULL);
+            rc |= panel_flush_stop(&p);
+            rc |= panel_display(&p, 0);
+            rc |= panel_display(&p, 1);
+            rc |= panel_sleep(&p, 1);
+            rc |= panel_sleep(&p, 0);
+            rc |= panel_set_rotation(&p, (uint8_t)((pin[i].rot + 1) & 3));
+            rc |= panel_flush(&p, 0, 0, 1, 1, px);
+            rc |= panel_wait(&p);
+            uint32_t c_ops = crc32_str(rec_take(&r));
+            if (rc || c_init != pin[i].init || c_ops != pin[i].ops) {
+                if (!bad++)
+                    snprintf(first, sizeof first, "%s rotation %u async %d: rc %d, %08X %08X", pin[i].name,
+                             (unsigned)pin[i].rot, async, rc, (unsigned)c_init, (unsigned)c_ops);
+            }
+        }
+    check(!bad, "dcs_descriptor_streams_pinned", "%d differ, first %s", bad, first);
+}
+
 static void test_find(void)
 {
     check(panel_find("st7789") == &panel_st7789_240x240 && panel_find("ili9341") == &panel_ili9341_320x240 &&
+          panel_find("st7735") == &panel_st7735_128x160 && panel_find("st7735_80x160") == &panel_st7735_80x160 &&
           panel_find("st7789_240x320") == &panel_st7789_240x320 &&
           panel_find("ili9341_240x320") == &panel_ili9341_240x320 && panel_find("ssd1306") == NULL,
           "panel_find_names", "mismatch");
@@ -234,6 +375,8 @@ int main(void)
         return 1;
     test_init_streams();
     test_find();
+    test_other_command_set();
+    test_streams_pinned();
     test_streaming();
     for (size_t i = 0; panel_all[i]; i++)
         for (uint8_t r = 0; r < 4; r++)

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
 'use strict';
-/* emu_panel.js — the emulated ST7789 / ILI9341 controller of hal/sim/emu_panel.c,
+/* emu_panel.js — the emulated ST7789 / ILI9341 / ST7735S controller of hal/sim/emu_panel.c,
  * ported line for line so the emulated Pico and host_sim decode the same bus
  * the same way (same rules, same violation lines; tools/rp2040sim/replay_vectors.js
  * and tests/unit/test_panel_vectors.c replay the same vectors through both). Keep the two in step. */
@@ -13,9 +13,12 @@ const MEM_W = 240;
 const MEM_H = 320;
 const ST = 0;
 const IL = 1;
+const S7 = 2;
 const M_ST = 1 << ST;
 const M_IL = 1 << IL;
-const M_ALL = M_ST | M_IL;
+const M_S7 = 1 << S7;
+const M_SI = M_ST | M_IL;
+const M_ALL = M_ST | M_IL | M_S7;
 const F_PIXELS = 1;
 const F_NOTEMU = 2;
 const F_READ = 4;   /* a read command: the bytes after it are its read phase (dummy clocks) */
@@ -23,7 +26,7 @@ const F_READ = 4;   /* a read command: the bytes after it are its read phase (du
 /* The accepted commands: the CMD lines of hal/sim/emu_commands.def, the table
  * hal/sim/emu_panel.c compiles in. */
 function readCommands(file) {
-  const consts = { M_ALL, M_ST, M_IL, F_PIXELS, F_NOTEMU, F_READ, 0: 0 };
+  const consts = { M_ALL, M_SI, M_ST, M_IL, M_S7, F_PIXELS, F_NOTEMU, F_READ, 0: 0 };
   const cmds = [];
   const text = fs.readFileSync(file, 'utf8');
   for (const m of text.matchAll(/^CMD\((0x[0-9A-F]{2}), *(\w+), *(\d+), *(\d+), *(\w+), *"([^"]*)"\)/gm)) {
@@ -36,7 +39,14 @@ function readCommands(file) {
 }
 const CMDS = readCommands(path.join(__dirname, '..', '..', 'hal', 'sim', 'emu_commands.def'));
 
-const MODEL_NAME = ['ST7789', 'ILI9341'];
+/* Facts of each controller model the rules depend on (struct model in
+ * hal/sim/emu_panel.c): memory size, COLMOD after a hardware reset, whether
+ * SWRESET resets COLMOD, the 16-bit value, the wait after SLPOUT (ms). */
+const MODELS = [
+  { name: 'ST7789', memW: 240, memH: 320, colmodReset: 0x66, colmodSwreset: 1, colmod16: 0x55, slpoutBusyMs: 5 },
+  { name: 'ILI9341', memW: 240, memH: 320, colmodReset: 0x66, colmodSwreset: 1, colmod16: 0x55, slpoutBusyMs: 5 },
+  { name: 'ST7735S', memW: 132, memH: 162, colmodReset: 0x06, colmodSwreset: 0, colmod16: 0x05, slpoutBusyMs: 120 },
+];
 
 /* The modules and the panels they show: the GLASS and PANEL lines of
  * hal/panels.def, the table hal/sim/emu_panel.c compiles in. */
@@ -66,7 +76,7 @@ function readPanels(file) {
   for (const [c, f] of Object.entries(controllers)) if (!(c in find)) find[c] = f;
   return { MODULES: modules, FIND: find };
 }
-const MODEL = { ST7789: ST, ILI9341: IL };
+const MODEL = { ST7789: ST, ILI9341: IL, ST7735S: S7 };
 const { MODULES, FIND } = readPanels(path.join(__dirname, '..', '..', 'hal', 'panels.def'));
 
 function hex2(v) { return v.toString(16).toUpperCase().padStart(2, '0'); }
@@ -77,6 +87,7 @@ class EmuPanel {
     const f = FIND[name];
     if (!f) throw new Error(`unknown panel '${name}'`);
     this.mod = MODULES[f[0]];
+    this.model = MODELS[this.mod.model];
     this.view = view === undefined ? f[1] : view;
     if (!Number.isInteger(this.view) || this.view < 0 || this.view > 3) throw new Error(`bad view ${view}`);
     this.cs = 1; this.dc = 1; this.reset = 1; this.bl = 1;
@@ -116,22 +127,24 @@ class EmuPanel {
 
   vcmd(code, what) { this.violate(this.cmdName(code), code, this.offset, what); }
 
-  resetRegs() {
+  /* hw: a hardware reset (else SWRESET) */
+  resetRegs(hw) {
     this.cur = -1; this.nparam = 0; this.half = 0; this.hi = 0;
     this.asleep = 1; this.displayOn = 0; this.inverted = 0; this.idle = 0;
-    this.colmod = 0x66; this.madctl = 0; this.windowSet = 0; this.contValid = 0;
-    this.xs = 0; this.xe = MEM_W - 1; this.ys = 0; this.ye = MEM_H - 1; this.cx = 0; this.cy = 0;
+    if (hw || this.model.colmodSwreset) this.colmod = this.model.colmodReset;
+    this.madctl = 0; this.windowSet = 0; this.contValid = 0;
+    this.xs = 0; this.xe = this.model.memW - 1; this.ys = 0; this.ye = this.model.memH - 1; this.cx = 0; this.cy = 0;
   }
 
   hwResetDone(t) {
-    this.resetRegs();
+    this.resetRegs(true);
     this.busyUntil = t + 5 * MS; this.busyWhy = 'hardware reset'; this.busySince = t;
     this.slpoutOk = t + 120 * MS; this.slpoutWhy = 'hardware reset'; this.slpoutSince = t;
     this.slpinOk = 0;
   }
 
-  limX() { return (this.madctl & 0x20) ? MEM_H : MEM_W; }
-  limY() { return (this.madctl & 0x20) ? MEM_W : MEM_H; }
+  limX() { return (this.madctl & 0x20) ? this.model.memH : this.model.memW; }
+  limY() { return (this.madctl & 0x20) ? this.model.memW : this.model.memH; }
 
   endCommand() {
     if (this.cur < 0) return;
@@ -158,7 +171,7 @@ class EmuPanel {
         : (this.windowSet & 2) ? 'memory write before CASET set the columns'
           : 'memory write before CASET/RASET set a window');
     } else if ((this.colmod & 7) !== 5) {
-      this.vcmd(code, `memory write with COLMOD 0x${hex2(this.colmod)} (only 16-bit, 0x55, emulated)`);
+      this.vcmd(code, `memory write with COLMOD 0x${hex2(this.colmod)} (only 16-bit, 0x${hex2(this.model.colmod16)}, emulated)`);
     } else if (this.xe >= this.limX() || this.ye >= this.limY()) {
       this.vcmd(code, `window ${this.xs}..${this.xe} x ${this.ys}..${this.ye} outside the memory (${this.limX()}x${this.limY()})`);
     } else if (code === 0x3C && !this.contValid) {
@@ -172,14 +185,14 @@ class EmuPanel {
     this.endCommand();
     if (this.violation) return;
     const c = this.lookup(code);
-    if (!c) { this.vcmd(code, `not an ${MODEL_NAME[this.mod.model]} command`); return; }
+    if (!c) { this.vcmd(code, `not an ${this.model.name} command`); return; }
     if (c.flags & F_NOTEMU) { this.vcmd(code, 'not emulated'); return; }
     if (this.tooSoon(code, t, this.busyUntil, this.busySince, this.busyWhy)) return;
     this.cur = code; this.nparam = 0;
     switch (code) {
       case 0x01: {
         const awake = !this.asleep;
-        this.resetRegs();
+        this.resetRegs(false);
         this.busyUntil = t + 5 * MS; this.busyWhy = 'SWRESET'; this.busySince = t;
         if (awake) { this.slpoutOk = t + 120 * MS; this.slpoutWhy = 'SWRESET'; this.slpoutSince = t; }
         this.slpinOk = 0;
@@ -194,7 +207,7 @@ class EmuPanel {
       case 0x11:
         if (this.tooSoon(code, t, this.slpoutOk, this.slpoutSince, this.slpoutWhy)) return;
         if (this.asleep) { this.asleep = 0; this.slpinOk = t + 120 * MS; this.slpinWhy = 'SLPOUT'; this.slpinSince = t; }
-        this.busyUntil = t + 5 * MS; this.busyWhy = 'SLPOUT'; this.busySince = t;
+        this.busyUntil = t + this.model.slpoutBusyMs * MS; this.busyWhy = 'SLPOUT'; this.busySince = t;
         break;
       case 0x20: this.inverted = 0; break;
       case 0x21: this.inverted = 1; break;
@@ -233,8 +246,8 @@ class EmuPanel {
   pixel(v) {
     let c = this.cx, r = this.cy;
     if (this.madctl & 0x20) { c = this.cy; r = this.cx; }
-    if (this.madctl & 0x40) c = MEM_W - 1 - c;
-    if (this.madctl & 0x80) r = MEM_H - 1 - r;
+    if (this.madctl & 0x40) c = this.model.memW - 1 - c;
+    if (this.madctl & 0x80) r = this.model.memH - 1 - r;
     this.mem[r * MEM_W + c] = v;
     this.pixelsWritten++;
     if (this.cx < this.xe) {
@@ -359,7 +372,7 @@ class EmuPanel {
     return out;
   }
 
-  memAt(col, row) { return (col < MEM_W && row < MEM_H) ? this.mem[row * MEM_W + col] : 0; }
+  memAt(col, row) { return (col < this.model.memW && row < this.model.memH) ? this.mem[row * MEM_W + col] : 0; }
 }
 
 module.exports = { EmuPanel, MEM_W, MEM_H };

@@ -395,24 +395,29 @@ static int core_open(struct core *c, const struct core_api *api, const char *pat
     return EXIT_OK;
 }
 
-/* The core of mode `numeric` for the scene at w x h. For fixed point: the
- * format of --num-frac, or the one the scene's ranges call for, analysed on
- * the scene as the double core parsed it (tools/scene/scene_format.c); a
- * scene that fits no format is an input error (exit 2, the analysis's line)
- * unless --num-frac forces one. *fits gets the products the analysis proved
- * in range at that format (struct scene.fits; 0 when it refused the scene). */
+/* The scene analysis (tools/scene/scene_format.c) on the scene as the
+ * double core parses it, at w x h: its return (0: a format fits) with *f
+ * and the refusal's line in msg, or a load error's exit status in *load. */
+static int analyse(const struct opts *o, unsigned w, unsigned h, struct scene_format *f, char *msg, size_t len,
+                   int *load)
+{
+    struct core d = { 0 };
+    *load = core_open(&d, &core_api_double, o->scene);
+    if (*load) return -1;
+    int rc = d.api->format(d.scene, o->scene, (uint16_t)w, (uint16_t)h, f, msg, len);
+    d.api->scene_free(d.scene);
+    return rc;
+}
+
 /* Float: the scene analysis's refusal that holds for float too (a sphere
  * around the camera too large for its rays to leave it, SCENE_ILL_INSIDE);
  * exit 2 with its line. */
 static int float_check(const struct opts *o, unsigned w, unsigned h)
 {
-    struct core d = { 0 };
-    int rc = core_open(&d, &core_api_double, o->scene);
-    if (rc) return rc;
     struct scene_format f;
     char msg[768];
-    rc = d.api->format(d.scene, o->scene, (uint16_t)w, (uint16_t)h, &f, msg, sizeof msg);
-    d.api->scene_free(d.scene);
+    int load, rc = analyse(o, w, h, &f, msg, sizeof msg, &load);
+    if (load) return load;
     if (rc && f.ill == SCENE_ILL_INSIDE) {
         fprintf(stderr, "%s\n", msg);
         return EXIT_USAGE;
@@ -420,6 +425,12 @@ static int float_check(const struct opts *o, unsigned w, unsigned h)
     return EXIT_OK;
 }
 
+/* The core of mode `numeric` for the scene at w x h. For fixed point: the
+ * format of --num-frac, or the one the scene's ranges call for, analysed on
+ * the scene as the double core parsed it (tools/scene/scene_format.c); a
+ * scene that fits no format is an input error (exit 2, the analysis's line)
+ * unless --num-frac forces one. *fits gets the products the analysis proved
+ * in range at that format (struct scene.fits; 0 when it refused the scene). */
 static int core_pick(const struct opts *o, const char *numeric, unsigned w, unsigned h,
                      const struct core_api **api, unsigned *fits)
 {
@@ -428,13 +439,10 @@ static int core_pick(const struct opts *o, const char *numeric, unsigned w, unsi
         *api = core_api_by_name(numeric);
         return strcmp(numeric, "float") ? EXIT_OK : float_check(o, w, h);
     }
-    struct core d = { 0 };
-    int rc = core_open(&d, &core_api_double, o->scene);
-    if (rc) return rc;
     struct scene_format f;
     char msg[768];
-    rc = d.api->format(d.scene, o->scene, (uint16_t)w, (uint16_t)h, &f, msg, sizeof msg);
-    d.api->scene_free(d.scene);
+    int load, rc = analyse(o, w, h, &f, msg, sizeof msg, &load);
+    if (load) return load;
     if (o->num_frac) {
         *api = core_api_fixed_frac(o->num_frac);
         if (!rc) *fits = scene_format_fits(&f, o->num_frac);

@@ -241,6 +241,32 @@ RT_ALWAYS_INLINE int rt_coarse_units_miss(const struct rt_cdir *cd, const int32_
     xx >>= k; xy >>= k; xz >>= k;
     return xx * xx + xy * xy + xz * xz > T * T;
 }
+/* The margins of rt_coarse_sphere_miss (derivation above), in fine units
+ * U = 2^-10 scene units with n1 = |co|_1 < 2^19: with w = 2^-10,
+ * A = (n1 + 2)^2, 2 r m >= M for m = (6.25 A w + 25 (n1 + 2) + 42 / w) /
+ * (2 r_raw) (|CO| <= (n1 + 2) w), rt_coarse_margin_2r (all ones when
+ * the sphere is too small for it or n1 >= 2^15); m^2 >= M for m = 5 (n1 +
+ * 2) 2^(-F/2) + 9 2^(10 - F/2), rt_coarse_margin_sq. */
+static inline uint32_t rt_coarse_margin_sq(uint32_t n1)
+{
+    return ((5u * (n1 + 2) + (1u << (NUM_FRAC / 2)) - 1) >> (NUM_FRAC / 2)) + ((9u << 10) >> (NUM_FRAC / 2)) + 1;
+}
+
+static inline uint32_t rt_coarse_margin_2r(const struct rt_csphere *sp, uint32_t n1)
+{
+    if (!sp->inv2r || n1 >= (1u << 15)) return UINT32_MAX;
+    uint32_t a = (n1 + 2) * (n1 + 2);            /* < 2^31 */
+    uint32_t num = (((a >> 4) + 1) * 25 >> 8) + 1 + 25 * (n1 + 2) + 43008u;
+    return (uint32_t)(num_umul32(num, sp->inv2r) >> 32) + 1;
+}
+
+/* R in the coarse units U = 2^12 raw (n1 < 2^19): rc < 2^19 and the margin
+ * < 2^16 (F >= 12), so R < 2^19 + 2^17; m = 5 (n1 + 2) 2^(-F/2) +
+ * 9 2^(F/2 - 12) <= ceil(5 n1 2^(-F/2)) + 3. */
+static inline uint32_t rt_coarse_big_R(const struct rt_csphere *sp, uint32_t n1)
+{
+    return sp->rc + ((5u * n1 + (1u << (NUM_FRAC / 2)) - 1) >> (NUM_FRAC / 2)) + 3;
+}
 #endif
 
 static inline int rt_coarse_sphere_miss(const struct rt_cdir *cd, const struct rt_csphere *sp)
@@ -253,23 +279,14 @@ static inline int rt_coarse_sphere_miss(const struct rt_cdir *cd, const struct r
     co[2] = sp->c.fz - cd->o.fz;
     uint32_t n1 = rt_uabs(co[0]) + rt_uabs(co[1]) + rt_uabs(co[2]);
     if (n1 < (1u << 19)) {
-        /* fine units, U = 2^-10 scene units: with w = 2^-10, A = (n1 + 2)^2,
-         * 2 r m >= M for m = (6.25 A w + 25 (n1 + 2) + 42 / w) / (2 r_raw)
-         * (|CO| <= (n1 + 2) w); m^2 >= M for m = 5 (n1 + 2) 2^(-F/2) +
-         * 9 2^(10 - F/2) */
-        uint32_t m = ((5u * (n1 + 2) + (1u << (NUM_FRAC / 2)) - 1) >> (NUM_FRAC / 2)) +
-                     ((9u << 10) >> (NUM_FRAC / 2)) + 1;
+        uint32_t m = rt_coarse_margin_sq(n1);
         /* R < 2^19 + 2^17 keeps T below 2^31; larger spheres use U = 2^12 */
         if (sp->rcf + m + 3 < (1u << 19) + (1u << 17)) {
             if (rt_coarse_units_miss(cd, co, n1, sp->rcf + m + 3, sp->rcf)) return 1;
             /* not proven with the first margin: try the 2 r m one, usually
              * far smaller for spheres that are not tiny */
-            if (sp->inv2r && n1 < (1u << 15)) {
-                uint32_t a = (n1 + 2) * (n1 + 2);            /* < 2^31 */
-                uint32_t num = (((a >> 4) + 1) * 25 >> 8) + 1 + 25 * (n1 + 2) + 43008u;
-                uint32_t m2 = (uint32_t)(num_umul32(num, sp->inv2r) >> 32) + 1;
-                if (m2 < m) return rt_coarse_units_miss(cd, co, n1, sp->rcf + m2 + 3, sp->rcf);
-            }
+            uint32_t m2 = rt_coarse_margin_2r(sp, n1);
+            if (m2 < m) return rt_coarse_units_miss(cd, co, n1, sp->rcf + m2 + 3, sp->rcf);
             return 0;
         }
     }
@@ -278,10 +295,7 @@ static inline int rt_coarse_sphere_miss(const struct rt_cdir *cd, const struct r
     co[2] = sp->c.z - cd->o.z;
     n1 = rt_uabs(co[0]) + rt_uabs(co[1]) + rt_uabs(co[2]);
     if (n1 >= (1u << 19)) return 0;
-    /* rc < 2^19 and the margin < 2^16 (n1 < 2^19, F >= 12): R < 2^19 + 2^17 */
-    /* U = 2^12 raw: m = 5 (n1 + 2) 2^(-F/2) + 9 2^(F/2 - 12) <= ceil(5 n1 2^(-F/2)) + 3 */
-    uint32_t R = sp->rc + ((5u * n1 + (1u << (NUM_FRAC / 2)) - 1) >> (NUM_FRAC / 2)) + 3;
-    return rt_coarse_units_miss(cd, co, n1, R, sp->rc);
+    return rt_coarse_units_miss(cd, co, n1, rt_coarse_big_R(sp, n1), sp->rc);
 #else
     (void)cd; (void)sp;
     return 0;
@@ -315,15 +329,10 @@ static inline struct rt_ccam rt_ccam_make(const struct rt_csphere *sp, const str
     uint32_t n1 = rt_uabs(co[0]) + rt_uabs(co[1]) + rt_uabs(co[2]);
     int fine = 0;
     if (n1 < (1u << 19)) {
-        uint32_t m = ((5u * (n1 + 2) + (1u << (NUM_FRAC / 2)) - 1) >> (NUM_FRAC / 2)) +
-                     ((9u << 10) >> (NUM_FRAC / 2)) + 1;
+        uint32_t m = rt_coarse_margin_sq(n1);
         if (sp->rcf + m + 3 < (1u << 19) + (1u << 17)) {
-            if (sp->inv2r && n1 < (1u << 15)) {
-                uint32_t a = (n1 + 2) * (n1 + 2);
-                uint32_t num = (((a >> 4) + 1) * 25 >> 8) + 1 + 25 * (n1 + 2) + 43008u;
-                uint32_t m2 = (uint32_t)(num_umul32(num, sp->inv2r) >> 32) + 1;
-                if (m2 < m) m = m2;
-            }
+            uint32_t m2 = rt_coarse_margin_2r(sp, n1);
+            if (m2 < m) m = m2;
             cc.R = sp->rcf + m + 3;
             cc.rc = sp->rcf;
             fine = 1;
@@ -335,7 +344,7 @@ static inline struct rt_ccam rt_ccam_make(const struct rt_csphere *sp, const str
         co[2] = sp->c.z - o->z;
         n1 = rt_uabs(co[0]) + rt_uabs(co[1]) + rt_uabs(co[2]);
         if (n1 >= (1u << 19)) return cc;
-        cc.R = sp->rc + ((5u * n1 + (1u << (NUM_FRAC / 2)) - 1) >> (NUM_FRAC / 2)) + 3;
+        cc.R = rt_coarse_big_R(sp, n1);
         cc.rc = sp->rc;
     }
     cc.co[0] = co[0];

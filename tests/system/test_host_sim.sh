@@ -286,7 +286,7 @@ grep -q decisions_off "$tmp/o" && fail compare_decisions_raster "counted on a ra
   pass compare_decisions_raster
 expect_err num_frac_bad 2 "bad --num-frac '11' (12..20)" --scene "$scene" --num-frac 11
 expect_err num_frac_not_fixed 2 "--num-frac applies to fixed point" --scene "$scene" --numeric float --num-frac 16
-# A scene no format holds (the book's r^2 and |CO|^2 of a 5000-radius sphere
+# A scene no format holds (the book's discriminant of a 5000-radius sphere
 # kept in num): exit 2 with the analysis's line; --num-frac still forces one.
 cat >"$tmp/ground.scene" <<'SCENE'
 raytracer { formulation = book }
@@ -294,7 +294,7 @@ sphere { center = (0, -1, 3) radius = 1 color = (255, 0, 0) }
 sphere { center = (0, -5001, 0) radius = 5000 color = (255, 255, 0) }
 SCENE
 expect_err num_frac_refused 2 \
-  "ground.scene:1:1: error: sphere 1: |CO|^2 from the camera = .* exceeds the widest number format (|x| < 524288 at NUM_FRAC 12); use a plane, or formulation = robust" \
+  "ground.scene:1:1: error: sphere 1: the book's discriminant k2^2 - 4 k1 k3 (|CO| <= .*) = .* exceeds the widest number format (|x| < 524288 at NUM_FRAC 12); use a plane, or formulation = robust" \
   --scene "$tmp/ground.scene" --panel none --size 32x24
 run --scene "$tmp/ground.scene" --panel none --size 32x24 --num-frac 12
 [ "$rc" -eq 0 ] && pass num_frac_refused_forced || fail num_frac_refused_forced "exit $rc: $(head -n 1 "$tmp/e")"

@@ -448,6 +448,40 @@ static void scan_rt_objects(const struct scene *s, struct scene_format *R, int w
     free(H);
 }
 
+/* Ray tracer, formulation = book: the sphere test keeps the quadratic's
+ * terms in num (rt_intersect.c): k1 = D.D, k2 = 2 CO.D, k3 = CO.CO - r^2,
+ * then k2^2, 4 k1 and (4 k1) k3, the discriminant and 2 k1. A ray's origin
+ * O is the camera or a hit point (|O| <= reach), so |CO| <= reach + |C|;
+ * its direction is a primary or reflected one (<= dmax) or, for a shadow
+ * ray, the light vector L (<= lmax). */
+static void scan_rt_book(const struct scene *s, struct scene_format *R, double hmax, double reach,
+                         double dmax, double lmax)
+{
+    double d = s->rt.shadows ? fmax(dmax, lmax) : dmax, d2 = d * d;
+    double cam = len3(s->camera.position) + anim_reach(&s->camera_anim, s->frames);
+    reach = fmax(reach, fmax(hmax, cam));
+    /* a hit point is the root t times D, t from the quadratic's terms rounded
+     * to num: it lies about |t D| 2^-NUM_FRAC off the surface, and a shadow or
+     * reflected ray leaving it finds its own surface past epsilon once that
+     * is more than epsilon (measured: tools/charts/sweeps.py rt-scale, the
+     * book quadratic at Q15.16 holds to k = 2, reach x 2^-16 = 0.6 epsilon,
+     * and fails from k = 4, 1.2 epsilon) */
+    int secondary = s->rt.recursion_depth > 0;
+    for (int k = 0; k < s->nlights; k++) secondary |= s->rt.shadows && s->lights[k].type != LIGHT_AMBIENT;
+    R->book_reach = secondary ? reach + cam : 0;
+    R->epsilon = fabs(num_to_double(s->rt.epsilon));
+    for (int i = 0; i < s->nobjects; i++) {
+        const struct rt_object *o = &s->objects[i];
+        if (o->shape != RT_SPHERE) continue;
+        double r = num_to_double(o->radius), co = reach + len3(o->center);
+        double k3 = fmax(co * co, r * r);
+        note(&R->square, d2, "sphere %d: the book's k1 = D.D", i);
+        note(&R->square, 4 * d2 * k3, "sphere %d: the book's 4 k1 k3 (|CO| <= %.4g, |D| <= %.4g)", i, co, d);
+        note(&R->square, 4 * d2 * co * co + 4 * d2 * k3,
+             "sphere %d: the book's discriminant k2^2 - 4 k1 k3 (|CO| <= %.4g, |D| <= %.4g)", i, co, d);
+    }
+}
+
 /* Ray tracer: the view direction D = (x vw / W, y vh / H, d) and the light
  * vectors stay unnormalised (the book's lighting), so two products are num:
  * the specular term's R.V and |R| |V| (|R| = |L|, |V| = |D|, reflections
@@ -475,12 +509,15 @@ static void scan_rt_rays(const struct scene *s, struct scene_format *R, double h
     }
     if (s->rt.specular) note(&R->other, lmax * dmax, "specular: R.V of the longest light vector and view ray");
     if (dmin > 0) note(&R->other, R->position.value / dmin, "a ray parameter t: distance / |direction| (%.3g)", dmin);
+    if (s->rt.formulation == 1) scan_rt_book(s, R, hmax, planes ? R->position.value : hmax, dmax, lmax);
 }
 
 static void scan_rt(const struct scene *s, struct scene_format *R, int width, int height, double cam, double colour)
 {
     /* a ray from the viewport runs at most this far across the scene */
-    R->pixel_step = num_to_double(s->viewport_w) / (width > 0 ? width : 1);
+    /* the primary directions step by Vw / W across and Vh / H down */
+    R->pixel_step = fmin(fabs(num_to_double(s->viewport_w)) / (width > 0 ? width : 1),
+                         fabs(num_to_double(s->viewport_h)) / (height > 0 ? height : 1));
     smallest(R, R->pixel_step, "viewport step per pixel");
     smallest(R, num_to_double(s->rt.epsilon), "epsilon");
     note(&R->other, num_to_double(s->rt.t_min_primary), "t_min");
@@ -502,6 +539,8 @@ static void scan_rt(const struct scene *s, struct scene_format *R, int width, in
  * and the camera's reach. */
 struct ras_view {
     double cam, w, W, d;
+    double k;                  /* canvas units per unit of x / z: H / Vh (the render's viewport
+                                  width follows its aspect, so W / Vw is the same) */
     int face_normals;          /* face normals are shading normals (narrowed to num) only when the
                                   triangles are shaded with computed normals or the model has none */
 };
@@ -521,8 +560,8 @@ static void scan_ras_prims_models(const struct scene *s, struct scene_format *R,
             note(&R->position, len3(e[k]) + v->cam, "line %d: end %d", i, k);
             double z = num_to_double(e[k].z) - num_to_double(s->camera.position.z);
             if (z > 0) {
-                note(&R->screen, num_to_double(e[k].x) * v->d / z * v->w / v->W, "line %d: projected x", i);
-                note(&R->screen, num_to_double(e[k].y) * v->d / z * v->w / v->W, "line %d: projected y", i);
+                note(&R->screen, num_to_double(e[k].x) * v->d / z * v->k, "line %d: projected x", i);
+                note(&R->screen, num_to_double(e[k].y) * v->d / z * v->k, "line %d: projected y", i);
             }
         }
     }
@@ -574,8 +613,8 @@ static void scan_unclipped(const struct scene *s, struct scene_format *R, int i,
         double y = num_to_double(p.y) * sc + num_to_double(in->position.y) - num_to_double(s->camera.position.y);
         double z = num_to_double(p.z) * sc + num_to_double(in->position.z) - num_to_double(s->camera.position.z);
         if (z > 0) {
-            note(&R->screen, x * v->d / z * v->w / v->W, "instance %d: projected vertex %d", i, k);
-            note(&R->screen, y * v->d / z * v->w / v->W, "instance %d: projected vertex %d", i, k);
+            note(&R->screen, x * v->d / z * v->k, "instance %d: projected vertex %d", i, k);
+            note(&R->screen, y * v->d / z * v->k, "instance %d: projected vertex %d", i, k);
             note(&R->screen, 1 / z, "instance %d: 1/z of vertex %d", i, k);
         }
     }
@@ -618,8 +657,27 @@ static void scan_instance(const struct scene *s, struct scene_format *R, int i, 
 
 static void scan_ras(const struct scene *s, struct scene_format *R, int width, int height, double cam)
 {
+    double vh = fabs(num_to_double(s->viewport_h)), h = height > 0 ? height : 1;
     struct ras_view v = { cam, width, num_to_double(s->viewport_w), num_to_double(s->projection_d),
-                          s->ras.shading != SHADE_NONE && !s->ras.wireframe };
+                          vh > 0 ? h / vh : 0, s->ras.shading != SHADE_NONE && !s->ras.wireframe };
+    /* the render's viewport (raster_work.c): Vw = Vh W / H, the projection's
+     * scale W d / Vw = H d / Vh, and the clip planes' sides
+     * (Vw / 2 + 2 Vw / W) / d times the farthest depth */
+    double vw = vh * width / h, dd = fabs(v.d);
+    note(&R->other, vw, "the render's viewport width Vh x W / H");
+    /* (the instances' path only: 2D primitives and 3D lines project by ras_project) */
+    if (s->ninstances > 0) note(&R->screen, v.k * dd, "the projection's scale H x d / Vh");
+    if (dd > 0 && s->ninstances > 0) {
+        double side = fmax(vw / 2 + 2 * vw / (width > 0 ? width : 1), vh / 2 + 2 * vh / h) / dd;
+        note(&R->other, side, "the clip planes' side slope (Vw / 2 + 2 Vw / W) / d");
+        for (int i = 0; i < s->ninstances; i++) {
+            const struct ras_instance *in = &s->instances[i];
+            const struct ras_model *m = &s->models[in->model];
+            double far = len3(in->position) + anim_reach(&in->anim, s->frames) + cam +
+                         num_to_double(in->scale) * (len3(m->bound_center) + num_to_double(m->bound_radius));
+            note(&R->other, side * far, "instance %d: the clip planes' side slope x its farthest depth", i);
+        }
+    }
     smallest(R, 1.0 / 1024, "texture coordinates (1/1024 of a texture)");
     note(&R->screen, v.w > height ? v.w : height, "render size");
     note(&R->screen, s->canvas_w > s->canvas_h ? s->canvas_w : s->canvas_h, "scene canvas size");
@@ -721,6 +779,7 @@ int scene_format_choose(const struct scene *s, int width, int height, const int 
         f->ill = f->pixel_step < 16 * step                            ? SCENE_ILL_PIXEL_STEP
                  : f->smallest_radius < 256 * step                    ? SCENE_ILL_RADIUS
                  : f->smallest_dir * f->smallest_dir < 64 * step      ? SCENE_ILL_DIRECTION
+                 : f->book_reach * step >= f->epsilon && f->book_reach > 0 ? SCENE_ILL_BOOK
                                                                       : 0;
         if (f->ill) {
             f->ill_frac = f->num_frac;
@@ -784,6 +843,17 @@ void scene_format_refusal(const struct scene_format *f, const char *path, char *
     }
     if (f->ill) {
         char what[320];
+        if (f->ill == SCENE_ILL_BOOK) {
+            snprintf(msg, len,
+                     "%s:1:1: error: ill-conditioned for fixed point: with formulation = book, hit points up to "
+                     "%.6g from the camera lie about %.3g off their surface at NUM_FRAC %d (the finest format "
+                     "that holds %s = %.6g), not under epsilon %.3g: shadow and reflected rays would find "
+                     "their own surface; use formulation = robust, or an epsilon above %.3g (float and double "
+                     "render it)",
+                     path, f->book_reach, f->book_reach * ldexp(1.0, -f->ill_frac), f->ill_frac, f->big.what,
+                     f->big.value, f->epsilon, f->book_reach * ldexp(1.0, -f->ill_frac));
+            return;
+        }
         if (f->ill == SCENE_ILL_PIXEL_STEP)
             snprintf(what, sizeof what, "the viewport step from pixel to pixel, %.3g, is under 16 steps",
                      f->pixel_step);

@@ -41,7 +41,9 @@ struct scene_format_range {
 #define SCENE_FORMAT_INSIDE_LIMIT 4096.0
 
 /* Why a scene is ill-conditioned for fixed point (scene_format.ill). */
-enum scene_ill { SCENE_ILL_DIRECTION = 1, SCENE_ILL_RADIUS = 2, SCENE_ILL_PIXEL_STEP = 3, SCENE_ILL_INSIDE = 4 };
+enum scene_ill {
+    SCENE_ILL_DIRECTION = 1, SCENE_ILL_RADIUS = 2, SCENE_ILL_PIXEL_STEP = 3, SCENE_ILL_INSIDE = 4, SCENE_ILL_BOOK = 5
+};
 
 struct scene_format {
     int width, height;         /* the render size analysed */
@@ -56,7 +58,11 @@ struct scene_format {
     double smallest_dir;       /* shortest direction whose squared length the ray tracer forms
                                   (a light direction, the view direction; 1e300: none) */
     char smallest_dir_what[160];
-    double pixel_step;         /* ray tracer: viewport width / render width (1e300: none) */
+    double pixel_step;         /* ray tracer: the smaller of Vw / W and Vh / H (1e300: none) */
+    double book_reach;         /* ray tracer, formulation = book with shadow or reflected rays: the
+                                  farthest hit point from the camera (0: none), placed to about
+                                  book_reach x 2^-NUM_FRAC, which must stay under epsilon */
+    double epsilon;            /* the scene's epsilon (SCENE_ILL_BOOK) */
     double smallest_radius;    /* smallest sphere radius (ray tracer; 1e300: none): a normal
                                   (P - C) / r is only as precise as r in steps */
     int ill;                   /* refused as ill-conditioned at ill_frac, the format the largest

@@ -229,17 +229,23 @@ static void init_viewport(struct ras_ctx *rc)
     const struct scene *s = rc->s;
     rc->cw = num_from_int(rc->w);
     rc->vh = s->viewport_h;
-    rc->vw = num_div(num_mul_int(s->viewport_h, rc->w), num_from_int(rc->h));
+    /* Vh W / H and W d / Vw with the products kept wide: a wide viewport
+     * (Vh W) or a far projection plane (W d) may pass the format where the
+     * quotients do not (the format analysis bounds the quotients) */
+    rc->vw = wnum_div(num_mul_wide(s->viewport_h, num_from_int(rc->w)), wnum_from_num(num_from_int(rc->h)));
     rc->d = s->projection_d;
-    rc->unproj = num_div(num_mul(rc->cw, rc->d), rc->vw);
+    rc->unproj = ras_mul_div(rc->cw, rc->d, rc->vw);
     rc->scale2d = num_from_ratio(rc->h, s->canvas_h);
     rc->def.near_z = rc->d;
     /* side planes two pixels outside the viewport: the guard band keeps
      * rounded clip points from landing inside the image edge */
     rc->def.side_x = num_div(num_add(num_mul(rc->vw, NUM_HALF), num_div_int(num_mul_int(rc->vw, 2), rc->w)), rc->d);
     rc->def.side_y = num_div(num_add(num_mul(rc->vh, NUM_HALF), num_div_int(num_mul_int(rc->vh, 2), rc->h)), rc->d);
-    rc->def.side_xk = num_sqrt(num_add(NUM_ONE, num_mul(rc->def.side_x, rc->def.side_x)));
-    rc->def.side_yk = num_sqrt(num_add(NUM_ONE, num_mul(rc->def.side_y, rc->def.side_y)));
+    /* sqrt(1 + side^2) from the wide square: a view wider than about 2 atan(sqrt(NUM_MAX))
+     * squares its side past the format */
+    wnum one = wnum_from_num(NUM_ONE);
+    rc->def.side_xk = wnum_to_num(wnum_sqrt(wnum_add(one, num_mul_wide(rc->def.side_x, rc->def.side_x))));
+    rc->def.side_yk = wnum_to_num(wnum_sqrt(wnum_add(one, num_mul_wide(rc->def.side_y, rc->def.side_y))));
 }
 
 /* Each texture's mip chain (default path) and RGB565 copy (fast path), in

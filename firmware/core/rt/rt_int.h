@@ -61,6 +61,12 @@ struct rt_sample {
  * this many levels between them (rt_options.adaptive_threshold, default). */
 #define RT_SUBSAMPLE_DIFF 6
 
+/* A plane hit whose ray parameter lies beyond the number format (a grazing
+ * ray toward a far part of the plane): a hit after every other (strict
+ * comparisons against t_max = NUM_MAX still take it), shaded at
+ * rt_far_point. Fixed point only: float and double hold such t. */
+#define RT_T_FAR (NUM_MAX - NUM_EPS)
+
 /* Per-object constants, recomputed per frame. */
 struct rt_obj_cache {
     wnum r2;              /* radius^2 */
@@ -204,6 +210,7 @@ int rt_closest_intersection(struct rt_state *rt, struct rt_ray *ray, num t_min, 
 int rt_item_hit(struct rt_state *rt, int16_t item, struct rt_ray *ray, num t_min, num t_max,
                 struct rt_hit *hit);
 vec3 rt_hit_normal(const struct rt_state *rt, const struct rt_hit *hit, vec3 p);
+vec3 rt_far_point(const struct rt_ray *ray);
 
 /* rt_scene.c: the bounding-sphere hierarchy over rt->items (planes aside,
  * unbounded); the per-frame object constants (after the camera moved). */

@@ -325,12 +325,16 @@ static int intersect_ray_plane(const struct rt_state *rt, int16_t obj, struct rt
     if (den == 0) return 0;
     num num_ = num_sub(o->dist, v3_dot(o->normal, ray->o));
     /* Only t > 0 can be a hit (every t_min is positive), and a quotient
-     * beyond the number format is no hit either: both are decided before
-     * dividing, so a grazing ray costs no division and saturates nothing. */
+     * beyond the number format is the far hit RT_T_FAR: both are decided
+     * before dividing, so a grazing ray costs no division and saturates
+     * nothing. */
     if (num_ == 0 || (num_ > 0) != (den > 0)) return 0;
-    if (wnum_from_num(num_abs(num_)) >= num_mul_wide(num_abs(den), NUM_MAX)) return 0;
-    *t = scale_t(num_div(num_, den), ts);
     *flip = den > 0;
+    if (wnum_from_num(num_abs(num_)) >= num_mul_wide(num_abs(den), NUM_MAX)) {
+        *t = RT_T_FAR;
+        return 1;
+    }
+    *t = scale_t(num_div(num_, den), ts);
     return 1;
 }
 

@@ -73,7 +73,8 @@ static rgb trace_ray(struct rt_state *rt, struct rt_ray *ray, num t_min, num t_m
      * on a bounded object (SCENE_FITS_HIT) */
     vec3 p = s->fits & SCENE_FITS_HIT
                  ? v3_add(ray->o, v3_make(num_mul_fit(ray->d.x, hit.t), num_mul_fit(ray->d.y, hit.t), num_mul_fit(ray->d.z, hit.t)))
-                 : v3_add(ray->o, v3_scale(ray->d, hit.t));
+             : hit.t == RT_T_FAR ? rt_far_point(ray)
+                                 : v3_add(ray->o, v3_scale(ray->d, hit.t));
     if (rt->hit_probe) {
         num *m = &rt->hit_probe[hit.surf];
         *m = num_max(*m, v3_len(p));
@@ -114,6 +115,19 @@ static rgb trace_ray(struct rt_state *rt, struct rt_ray *ray, num t_min, num t_m
         out = colour_add(s, colour_scale(s, out, num_sub(NUM_ONE, tr)), colour_scale(s, seen, tr));
     }
     return out;
+}
+
+/* Where a far plane hit (RT_T_FAR) is shaded: along the ray at distance
+ * NUM_MAX / 8 from its origin. The true point lies farther than the format
+ * reaches; this one is far from the lights of a scene the format analysis
+ * sized (every position under NUM_MAX / 2), so a light vector L - P points
+ * nearly as the true one does, and L - P stays inside the format. The hit's
+ * order among the others does not depend on it (RT_T_FAR). */
+vec3 rt_far_point(const struct rt_ray *ray)
+{
+    num len = v3_len(ray->d);
+    if (len <= 0) return ray->o;
+    return v3_add(ray->o, v3_scale(ray->d, num_div(NUM_MAX / 8, len)));
 }
 
 /* CanvasToViewport for canvas point (x, y) (num, sub-pixel allowed), then

@@ -186,3 +186,24 @@ viewport { width = 2 height = 0.001 d = 1000 }
 line3d { p0 = (-0.01, -0.5, 5) p1 = (0.01, 0.5, 6) color = (0, 0, 255) }
 EOS
 refused_case flat_viewport_lines "$t/flat_lines.scene" "error: line 0: projected y = "
+# lit triangles larger than the format's square: the face normal edge x edge
+# saturated in num and turned (refused; forced to Q19.12, 22.4 dB); the default
+# path narrows its direction only
+cat >"$t/big_triangles.scene" <<EOS
+renderer = rasterizer
+canvas { width = 240 height = 240 }
+camera { position = (0, 0, -1500) }
+rasterizer { shading = flat normals = computed }
+light { type = ambient intensity = 0.3 }
+light { type = directional intensity = 0.7 direction = (-1, 2, -3) }
+model { name = slab vertices { (-900, -900, 0) (900, -900, 0) (900, 900, 0) (-900, 900, 300) }
+  triangles { (0, 2, 1, color = (200, 120, 40)) (0, 3, 2, color = (40, 120, 200)) } }
+instance { model = slab }
+EOS
+rendered_case big_lit_triangles "$t/big_triangles.scene" 40
+if timeout 120 "$hs" --scene "$t/big_triangles.scene" --panel none --num-frac 12 --compare double --stats >"$t/c.json" 2>"$t/c.err" &&
+   { p=$(psnr "$t/c.json"); [ "$p" = null ] || awk -v a="$p" 'BEGIN { exit !(a >= 40) }'; }; then
+  echo "PASS extremes_case_big_lit_triangles_q19_12"
+else
+  echo "FAIL extremes_case_big_lit_triangles_q19_12: $(psnr "$t/c.json") dB: $(head -c 200 "$t/c.err")"
+fi

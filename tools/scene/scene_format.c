@@ -586,8 +586,33 @@ static void scan_face_normals(const struct scene *s, struct scene_format *R, int
                               double cam)
 {
     const struct ras_model *m = &s->models[s->instances[i].model];
-    note(&R->square, diam2, "instance %d (%s): face normal edge x edge", i, m->name);
+    /* |e1 x e2| is the same in model and camera space up to scale^2 (the
+     * rotations keep lengths): the largest of the model's triangles, plus
+     * the transformed corners' rounding (a few steps of the coarsest format
+     * on each edge, times the other edge) */
+    double sc = fabs(num_to_double(s->instances[i].scale)), nmax = 0, emax = 0;
+    for (int k = 0; k < m->ntris; k++) {
+        const struct ras_triangle *t = &m->tris[k];
+        if (t->v[0] >= m->nverts || t->v[1] >= m->nverts || t->v[2] >= m->nverts) continue;
+        double a[3], e1[3], e2[3];
+        vec3 p0 = m->verts[t->v[0]], p1 = m->verts[t->v[1]], p2 = m->verts[t->v[2]];
+        a[0] = num_to_double(p0.x), a[1] = num_to_double(p0.y), a[2] = num_to_double(p0.z);
+        e1[0] = num_to_double(p1.x) - a[0], e1[1] = num_to_double(p1.y) - a[1], e1[2] = num_to_double(p1.z) - a[2];
+        e2[0] = num_to_double(p2.x) - a[0], e2[1] = num_to_double(p2.y) - a[1], e2[2] = num_to_double(p2.z) - a[2];
+        double c0 = e1[1] * e2[2] - e1[2] * e2[1], c1 = e1[2] * e2[0] - e1[0] * e2[2], c2 = e1[0] * e2[1] - e1[1] * e2[0];
+        double n = sqrt(c0 * c0 + c1 * c1 + c2 * c2);
+        double e = fmax(sqrt(e1[0] * e1[0] + e1[1] * e1[1] + e1[2] * e1[2]),
+                        sqrt(e2[0] * e2[0] + e2[1] * e2[1] + e2[2] * e2[2]));
+        if (n > nmax) nmax = n;
+        if (e > emax) emax = e;
+    }
+    double step = 8 * ldexp(1.0, -12);
+    nmax = fmin(diam2, (sc * sc * nmax + 2 * (sc * emax + step) * step) * (1 + ldexp(1.0, -10)));
+    /* the default path narrows the normal's direction only
+     * (ras_wnormal_narrow_dir): a range on the book path alone */
     if (!s->ras.book_exact) return;
+    note(&R->square, nmax, "instance %d (%s): face normal edge x edge", i, m->name);
+    diam2 = nmax;   /* |N| below */
     /* the book path never normalises N: 2 N (N.L) - L of
      * ras_compute_illumination is |N|^2 |L| x 2 (N.L and the
      * cosines' products are wide) */

@@ -118,7 +118,8 @@ static int tri_facts(const struct ras_ctx *rc, const struct ras_inst *ri, const 
     if (o->backface_cull && !*front) return 0;
     if (!want_n) return 1;
     int face_n = o->computed_normals || !m->has_normals;
-    vec3 nf = face_n ? ras_wnormal_narrow(wf) : v3_make(NUM_ZERO, NUM_ZERO, NUM_ZERO);
+    /* the default path's lighting takes the normal's direction only */
+    vec3 nf = face_n ? ras_wnormal_narrow_dir(wf) : v3_make(NUM_ZERO, NUM_ZERO, NUM_ZERO);
     for (int k = 0; k < 3; k++) N[k] = face_n ? nf : ras_corner_normal(ri, t->n[k]);
     return 1;
 }

@@ -350,6 +350,7 @@ struct ras_wnormal { wnum x, y, z; };
 struct ras_wnormal ras_face_normal_wide(vec3 a, vec3 b, vec3 c);
 /* wnum_to_num of each component: the face normal as v3_cross gives it. */
 vec3 ras_wnormal_narrow(struct ras_wnormal n);
+vec3 ras_wnormal_narrow_dir(struct ras_wnormal n);
 /* (-p) . n summed in wnum, in v3_dot's operand order (x, y, z): positive
  * when the face is seen from its front from the camera at the origin.
  * |p| |n| need not fit `num`. */

@@ -75,26 +75,6 @@ vec3 ras_wnormal_narrow(struct ras_wnormal n)
     return v3_make(wnum_to_num(n.x), wnum_to_num(n.y), wnum_to_num(n.z));
 }
 
-static wnum wabs(wnum a) { return a < 0 ? wnum_sub(wnum_from_num(NUM_ZERO), a) : a; }
-
-/* The same normal's direction in num: narrowed as it is when every
- * component is under NUM_MAX / 2 (the same bits), else all three shifted
- * right by the same power of two until they are (a triangle larger than
- * the format's square: its length saturated, and with it the direction). */
-vec3 ras_wnormal_narrow_dir(struct ras_wnormal n)
-{
-    wnum m = wabs(n.x), lim = wnum_from_num(NUM_MAX / 2);
-    if (wabs(n.y) > m) m = wabs(n.y);
-    if (wabs(n.z) > m) m = wabs(n.z);
-    if (m < lim) return ras_wnormal_narrow(n);
-    int k = 0;
-    while (m >= lim && k < 62) {
-        m /= 2;
-        k++;
-    }
-    return v3_make(wnum_to_num_shr(n.x, k), wnum_to_num_shr(n.y, k), wnum_to_num_shr(n.z, k));
-}
-
 wnum ras_facing_wide(vec3 p, struct ras_wnormal n)
 {
     wnum s = wnum_mul(wnum_from_num(num_neg(p.x)), n.x);

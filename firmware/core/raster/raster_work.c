@@ -222,6 +222,39 @@ size_t raster_work_size(const struct scene *s, uint16_t width, uint16_t height, 
     return c.off + WORK_ALIGN; /* slack to align the caller's pointer */
 }
 
+static wnum wabs(wnum a) { return a < 0 ? wnum_sub(wnum_from_num(NUM_ZERO), a) : a; }
+
+/* The same normal's direction in num: narrowed as it is when every
+ * component is under NUM_MAX / 2 (the same bits), else all three shifted
+ * right by the same power of two until they are (a triangle larger than
+ * the format's square: its length saturated, and with it the direction).
+ * Here, not in raster_project.c: called only for lit triangles with
+ * computed normals, it stays out of the SRAM that RP2040_RAM_TEXT=raster
+ * fills. */
+vec3 ras_wnormal_narrow_dir(struct ras_wnormal n)
+{
+    wnum m = wabs(n.x), lim = wnum_from_num(NUM_MAX / 2);
+    if (wabs(n.y) > m) m = wabs(n.y);
+    if (wabs(n.z) > m) m = wabs(n.z);
+    if (m < lim) return ras_wnormal_narrow(n);
+    int k = 0;
+    while (m >= lim && k < 62) {
+        m /= 2;
+        k++;
+    }
+    return v3_make(wnum_to_num_shr(n.x, k), wnum_to_num_shr(n.y, k), wnum_to_num_shr(n.z, k));
+}
+
+/* sqrt(1 + s^2) of a clip plane's side slope s: as num forms it where s^2
+ * fits (the same bits), else |s| sqrt(1 + (1/s)^2) (a view wider than about
+ * 2 atan(sqrt(NUM_MAX / 2)) squares its side past the format). */
+static num side_k(num s)
+{
+    if (num_mul_wide(s, s) < wnum_from_num(NUM_MAX / 2)) return num_sqrt(num_add(NUM_ONE, num_mul(s, s)));
+    num r = num_div(NUM_ONE, s);
+    return num_mul(num_abs(s), num_sqrt(num_add(NUM_ONE, num_mul(r, r))));
+}
+
 /* The render size's canvas: viewport height kept, width by aspect; the
  * default path's clipping planes. */
 static void init_viewport(struct ras_ctx *rc)
@@ -241,11 +274,8 @@ static void init_viewport(struct ras_ctx *rc)
      * rounded clip points from landing inside the image edge */
     rc->def.side_x = num_div(num_add(num_mul(rc->vw, NUM_HALF), num_div_int(num_mul_int(rc->vw, 2), rc->w)), rc->d);
     rc->def.side_y = num_div(num_add(num_mul(rc->vh, NUM_HALF), num_div_int(num_mul_int(rc->vh, 2), rc->h)), rc->d);
-    /* sqrt(1 + side^2) from the wide square: a view wider than about 2 atan(sqrt(NUM_MAX))
-     * squares its side past the format */
-    wnum one = wnum_from_num(NUM_ONE);
-    rc->def.side_xk = wnum_to_num(wnum_sqrt(wnum_add(one, num_mul_wide(rc->def.side_x, rc->def.side_x))));
-    rc->def.side_yk = wnum_to_num(wnum_sqrt(wnum_add(one, num_mul_wide(rc->def.side_y, rc->def.side_y))));
+    rc->def.side_xk = side_k(rc->def.side_x);
+    rc->def.side_yk = side_k(rc->def.side_y);
 }
 
 /* Each texture's mip chain (default path) and RGB565 copy (fast path), in

@@ -558,10 +558,20 @@ static void scan_ras_prims_models(const struct scene *s, struct scene_format *R,
         vec3 e[2] = { l->a, l->b };
         for (int k = 0; k < 2; k++) {
             note(&R->position, len3(e[k]) + v->cam, "line %d: end %d", i, k);
-            double z = num_to_double(e[k].z) - num_to_double(s->camera.position.z);
-            if (z > 0) {
-                note(&R->screen, num_to_double(e[k].x) * v->d / z * v->k, "line %d: projected x", i);
-                note(&R->screen, num_to_double(e[k].y) * v->d / z * v->k, "line %d: projected y", i);
+            /* ProjectVertex of the end as written (the lines take no
+             * camera transform), behind the camera too: z = 0 has no
+             * projection */
+            double z = num_to_double(e[k].z);
+            double px = z != 0 ? num_to_double(e[k].x) * v->d / z * v->k : INFINITY;
+            double py = z != 0 ? num_to_double(e[k].y) * v->d / z * v->k : INFINITY;
+            note(&R->screen, px, "line %d: projected x of end %d", i, k);
+            note(&R->screen, py, "line %d: projected y of end %d", i, k);
+            /* a step of x or y moves the end by d k / |z| pixels, a step of
+             * z by |x'| / |z| (x' the projected coordinate) */
+            double per = z != 0 ? (fabs(v->d) * v->k + fmax(fabs(px), fabs(py))) / fabs(z) : INFINITY;
+            if (per > R->line_px) {
+                R->line_px = per;
+                R->line = i;
             }
         }
     }
@@ -690,6 +700,32 @@ static void scan_ras(const struct scene *s, struct scene_format *R, int width, i
      * (Vw / 2 + 2 Vw / W) / d times the farthest depth */
     double vw = vh * width / h, dd = fabs(v.d);
     note(&R->other, vw, "the render's viewport width Vh x W / H");
+    if (s->ninstances > 0) R->near_d = dd;
+    /* A position's rounding moves a projected vertex by step x H d / (Vh z)
+     * (x and z alike, within the view): the pixel at the nearest depth an
+     * instance reaches, Vh z / (H d), is the rasterizer's pixel step. An
+     * on-screen point at distance D from the camera has z >= D c, c the
+     * view's half-diagonal cosine; clipping keeps z >= d. */
+    if (s->ninstances > 0 && dd > 0 && vh > 0) {
+        double sx = vw / (2 * dd), sy = vh / (2 * dd), c = 1 / sqrt(1 + sx * sx + sy * sy), zn = INFINITY;
+        for (int i = 0; i < s->ninstances; i++) {
+            const struct ras_instance *in = &s->instances[i];
+            const struct ras_model *m = &s->models[in->model];
+            double rb = fabs(num_to_double(in->scale)) * (len3(m->bound_center) + num_to_double(m->bound_radius));
+            double dc = dist3(in->position, s->camera.position) - anim_reach(&in->anim, s->frames) -
+                        anim_reach(&s->camera_anim, s->frames);
+            double z = (dc - rb) * c;
+            if (s->ras.clip) z = fmax(z, dd);
+            if (z < zn) zn = z;
+        }
+        if (zn > 0 && zn < INFINITY) {
+            double px = zn * vh / (h * dd);
+            if (px < R->pixel_step) {
+                R->pixel_step = px;
+                R->pixel_at_depth = 1;
+            }
+        }
+    }
     /* (the instances' path only: 2D primitives and 3D lines project by ras_project) */
     if (s->ninstances > 0) note(&R->screen, v.k * dd, "the projection's scale H x d / Vh");
     if (dd > 0 && s->ninstances > 0) {
@@ -805,6 +841,8 @@ int scene_format_choose(const struct scene *s, int width, int height, const int 
                  : f->smallest_radius < 256 * step                    ? SCENE_ILL_RADIUS
                  : f->smallest_dir * f->smallest_dir < 64 * step      ? SCENE_ILL_DIRECTION
                  : f->book_reach * step >= f->epsilon && f->book_reach > 0 ? SCENE_ILL_BOOK
+                 : f->near_d > 0 && f->near_d < 32 * step               ? SCENE_ILL_NEAR
+                 : f->line_px * step > 0.25                             ? SCENE_ILL_LINE
                                                                       : 0;
         if (f->ill) {
             f->ill_frac = f->num_frac;
@@ -879,8 +917,20 @@ void scene_format_refusal(const struct scene_format *f, const char *path, char *
                      f->big.value, f->epsilon, f->book_reach * ldexp(1.0, -f->ill_frac));
             return;
         }
-        if (f->ill == SCENE_ILL_PIXEL_STEP)
-            snprintf(what, sizeof what, "the viewport step from pixel to pixel, %.3g, is under 16 steps",
+        if (f->ill == SCENE_ILL_LINE)
+            snprintf(what, sizeof what,
+                     "3D line %d's end moves %.3g pixels per step (ProjectVertex x d k / z of a small z), over "
+                     "1/4 pixel",
+                     f->line, f->line_px * ldexp(1.0, -f->ill_frac));
+        else if (f->ill == SCENE_ILL_NEAR)
+            snprintf(what, sizeof what,
+                     "the near plane's distance d = %.3g is under 32 steps (the depths the clip planes make "
+                     "near it err by over 3 %%)",
+                     f->near_d);
+        else if (f->ill == SCENE_ILL_PIXEL_STEP)
+            snprintf(what, sizeof what, "%s, %.3g, is under 16 steps",
+                     f->pixel_at_depth ? "a pixel's size at the nearest depth an instance reaches"
+                                       : "the viewport step from pixel to pixel",
                      f->pixel_step);
         else if (f->ill == SCENE_ILL_RADIUS)
             snprintf(what, sizeof what, "a sphere of radius %.3g is under 256 steps (its normals are imprecise)",
@@ -888,7 +938,9 @@ void scene_format_refusal(const struct scene_format *f, const char *path, char *
         else
             snprintf(what, sizeof what, "%s has length %.3g, whose square %.3g is under 64 steps",
                      f->smallest_dir_what, f->smallest_dir, f->smallest_dir * f->smallest_dir);
-        const char *fix = f->ill == SCENE_ILL_PIXEL_STEP ? "widen the viewport, render smaller"
+        const char *fix = f->ill == SCENE_ILL_LINE         ? "move the line away from z = 0"
+                          : f->ill == SCENE_ILL_NEAR         ? "move the viewport's d out"
+                          : f->ill == SCENE_ILL_PIXEL_STEP ? "widen the viewport, render smaller"
                           : f->ill == SCENE_ILL_RADIUS   ? "make the sphere larger"
                                                          : "make the direction longer";
         snprintf(msg, len,

@@ -42,7 +42,8 @@ struct scene_format_range {
 
 /* Why a scene is ill-conditioned for fixed point (scene_format.ill). */
 enum scene_ill {
-    SCENE_ILL_DIRECTION = 1, SCENE_ILL_RADIUS = 2, SCENE_ILL_PIXEL_STEP = 3, SCENE_ILL_INSIDE = 4, SCENE_ILL_BOOK = 5
+    SCENE_ILL_DIRECTION = 1, SCENE_ILL_RADIUS = 2, SCENE_ILL_PIXEL_STEP = 3, SCENE_ILL_INSIDE = 4, SCENE_ILL_BOOK = 5,
+    SCENE_ILL_NEAR = 6, SCENE_ILL_LINE = 7
 };
 
 struct scene_format {
@@ -63,6 +64,11 @@ struct scene_format {
                                   farthest hit point from the camera (0: none), placed to about
                                   book_reach x 2^-NUM_FRAC, which must stay under epsilon */
     double epsilon;            /* the scene's epsilon (SCENE_ILL_BOOK) */
+    double near_d;             /* rasterizer: the near plane's distance d (0: none) */
+    int pixel_at_depth;        /* rasterizer: pixel_step is a pixel's size at the nearest depth */
+    double line_px;            /* rasterizer: pixels a 3D line's end moves per step of its x, y or z
+                                  (ProjectVertex x d k / z), the largest (0: none) */
+    int line;                  /* its line */
     double smallest_radius;    /* smallest sphere radius (ray tracer; 1e300: none): a normal
                                   (P - C) / r is only as precise as r in steps */
     int ill;                   /* refused as ill-conditioned at ill_frac, the format the largest

@@ -91,9 +91,9 @@ num ras_ratio(int64_t p, int64_t q)
     if (q < 0) { p = -p; q = -q; }
     int neg = p < 0;
     uint64_t up = neg ? (uint64_t)0 - (uint64_t)p : (uint64_t)p;
-    if (up > ((uint64_t)1 << 46)) { /* keep p * 2^16 inside 64 bits */
+    if (up >= ((uint64_t)1 << (62 - NUM_FRAC))) { /* keep p * 2^NUM_FRAC inside 64 bits */
         int s = 0;
-        while (up > ((uint64_t)1 << 46)) { up >>= 1; s++; }
+        while (up >= ((uint64_t)1 << (62 - NUM_FRAC))) { up >>= 1; s++; }
         q >>= s;
         if (q == 0) return neg ? NUM_MIN : NUM_MAX;
     }
@@ -108,14 +108,27 @@ num ras_ratio(int64_t p, int64_t q)
 
 num ras_project(num x, num d, num z, num cw, num vw)
 {
-    /* numerator x*d*cw in Q.48, denominator z*vw in Q.32: both in int64
-     * for |x*d| < 2^15 and cw < 2^15 */
-    int64_t xd = ((int64_t)x * d + (1 << (NUM_FRAC - 1))) >> NUM_FRAC;     /* Q.16 */
-    int64_t zv = ((int64_t)z * vw + (1 << (NUM_FRAC - 1))) >> NUM_FRAC;    /* Q.16 */
-    int64_t cwi = cw >> NUM_FRAC;
-    if (zv == 0) return xd == 0 ? 0 : (xd > 0 ? NUM_MAX : NUM_MIN);
-    if ((cw & (NUM_ONE_RAW - 1)) == 0 && xd < ((int64_t)1 << 40) && xd > -((int64_t)1 << 40))
-        return ras_ratio(xd * cwi, zv);
+    /* x*d and z*vw exact (Q.2F, under 2^62 in magnitude), shifted right
+     * together until z*vw fits 32 bits (the hardware divider's 64/32; a
+     * relative error under 2^-31 on either), then x*d*cw / (z*vw) rounded
+     * once: a small x*d or z*vw (a tiny viewport, d or depth) keeps its
+     * precision instead of being rounded to the format first */
+    int64_t a = (int64_t)x * d, b = (int64_t)z * vw;
+    int neg = (a < 0) != (b < 0);
+    uint64_t ua = a < 0 ? (uint64_t)0 - (uint64_t)a : (uint64_t)a;
+    uint64_t ub = b < 0 ? (uint64_t)0 - (uint64_t)b : (uint64_t)b;
+    if (ub == 0) return ua == 0 ? 0 : (neg ? NUM_MIN : NUM_MAX);
+    if ((cw & (NUM_ONE_RAW - 1)) == 0 && cw > 0) {
+        uint64_t cwi = (uint64_t)(cw >> NUM_FRAC);
+        while (ub > UINT32_MAX || ua >= ((uint64_t)1 << 50)) {
+            ua >>= 1;
+            ub >>= 1;
+        }
+        if (ub == 0) return neg ? NUM_MIN : NUM_MAX;
+        int64_t p = (int64_t)(ua * cwi);
+        return ras_ratio(neg ? -p : p, (int64_t)ub);
+    }
+    int64_t xd = (a + (1 << (NUM_FRAC - 1))) >> NUM_FRAC;     /* Q.F */
     return num_div(num_mul(num_div(xd > INT32_MAX ? NUM_MAX : (xd < -INT32_MAX ? NUM_MIN : (num)xd), z), cw), vw);
 }
 

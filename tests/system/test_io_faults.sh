@@ -221,6 +221,43 @@ if [ $rc -eq 2 ] && [ $rc2 -eq 2 ] && [ "$(grep -c "recursion_depth must be in 0
 then ok io_recursion_depth_past_max_refused
 else no io_recursion_depth_past_max_refused "exit $rc/$rc2: $(cat "$t/err")"; fi
 
+# scenec: a scene over the target's budget is refused before anything is
+# written (exit 2, one line naming the need, the budget and the option): 16
+# generated 1024x1024 trilinear textures (67 MB of texels, 214 MB of C) over
+# the default target's flash (m0plus), the 16,384-triangle knot's work memory
+# over the RP2040's RAM, any scene over --ram-budget / --flash-budget; the
+# same scene within a budget compiles
+mkdir -p "$t/bud"
+{ i=0; while [ $i -lt 16 ]; do
+    echo "texture { name = t$i generate = checkerboard width = 1024 height = 1024 filter = trilinear }"; i=$((i + 1))
+  done
+  echo 'model { name = q vertices { (-1, -1, 0) (1, -1, 0) (1, 1, 0) } triangles { (0, 1, 2, color = (255, 0, 0), uv = ((0, 0), (1, 0), (1, 1))) } }'
+  echo 'instance { model = q texture = t0 transform { translation = (0, 0, 5) } }'; } >"$t/bud/tex16.scene"
+timeout 60 "$sc" -o "$t/bud/tex16.c" "$t/bud/tex16.scene" >/dev/null 2>"$t/err"
+rc=$?
+if [ $rc -eq 2 ] && [ "$(wc -l <"$t/err")" -eq 1 ] &&
+   grep -q "needs [0-9]* bytes of flash (the scene's const data, 67108848 of them textures), over the m0plus flash budget of 3670016 bytes (--flash-budget or --target to change it)" "$t/err" &&
+   [ -z "$(ls -A "$t/bud" | grep -v tex16.scene)" ]; then ok io_scenec_flash_budget_textures
+else no io_scenec_flash_budget_textures "exit $rc: $(cat "$t/err"); left: $(ls -A "$t/bud")"; fi
+"$sc" --target rp2040 -o "$t/bud/k.c" firmware/scenes/bench/knot-16k-gouraud.scene >/dev/null 2>"$t/err"
+rc=$?
+"$sc" --ram-budget 4K -o "$t/bud/r.c" "$S" >/dev/null 2>>"$t/err"
+rc2=$?
+"$sc" --flash-budget 1K -o "$t/bud/f.c" firmware/scenes/book/raster-11.scene >/dev/null 2>>"$t/err"
+rc3=$?
+"$sc" --target m4f --ram-budget 64K --flash-budget 1M -o "$t/bud/ok.c" firmware/scenes/book/raster-11.scene >"$t/out" 2>>"$t/err"
+rc4=$?
+"$sc" --target rp2050 -o "$t/bud/x.c" "$S" >/dev/null 2>>"$t/err"
+rc5=$?
+if [ $rc -eq 2 ] && [ $rc2 -eq 2 ] && [ $rc3 -eq 2 ] && [ $rc4 -eq 0 ] && [ $rc5 -eq 2 ] && [ "$(wc -l <"$t/err")" -eq 4 ] &&
+   grep -q "knot-16k-gouraud.scene: needs [0-9]* bytes of RAM at 240x240 (renderer work memory [0-9]* + [0-9]* of a second core's context), over the rp2040 RAM budget of 162416 bytes (--ram-budget or --target to change it)" "$t/err" &&
+   grep -q "raytracer-02.scene: needs [0-9]* bytes of RAM .*, over the RAM budget of 4096 bytes (--ram-budget)" "$t/err" &&
+   grep -q "raster-11.scene: needs [0-9]* bytes of flash (the scene's const data, 0 of them textures), over the flash budget of 1024 bytes (--flash-budget)" "$t/err" &&
+   grep -q "unknown --target 'rp2050' (did you mean 'rp2040'?)" "$t/err" &&
+   grep -q "the budget (m4f): RAM 65536, flash 1048576 bytes" "$t/out" && [ -s "$t/bud/ok.c" ] &&
+   [ ! -e "$t/bud/k.c" ] && [ ! -e "$t/bud/r.c" ] && [ ! -e "$t/bud/f.c" ]; then ok io_scenec_ram_and_flash_budget
+else no io_scenec_ram_and_flash_budget "exit $rc/$rc2/$rc3/$rc4/$rc5: $(cat "$t/err")"; fi
+
 # a signal in the middle of a write removes the temporary file (host_sim
 # sends itself SIGTERM after the first row of --out-raw, test option); the
 # run ends by the signal, and nothing of it is left

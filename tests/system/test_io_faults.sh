@@ -212,6 +212,43 @@ rc=$?
 if [ $rc -eq 2 ] && [ "$(wc -l <"$t/err")" -eq 1 ] && grep -q "ray-object tests a frame.*over the limit" "$t/err" &&
    [ ! -e "$t/heavy.png" ]; then ok io_ray_tracer_cost_limit
 else no io_ray_tracer_cost_limit "exit $rc: $(cat "$t/err")"; fi
+# the rasterizer's frame estimated the same way (triangle-strip visits plus
+# pixels, --max-cost): 4,096 instances of a 2,000-triangle fan at 4096x4096
+# in 1-row strips are refused before any memory is allocated; the
+# 16,384-triangle knots pass at the default limit; the scene's textures count
+# in --max-memory (16 generated 1024x1024 trilinear textures, 67 MB)
+awk 'BEGIN { print "rasterizer { shading = flat }"; print "light { type = ambient intensity = 1 }";
+             printf "model { name = fan color = (200, 100, 50) vertices { (0, 0, 0)";
+             for (i = 0; i <= 2000; i++) printf " (%.4f, %.4f, 0)", cos(i * 0.00314), sin(i * 0.00314);
+             printf " } triangles {"; for (i = 1; i <= 2000; i++) printf " (0, %d, %d)", i + 1, i; print " } }";
+             for (i = 0; i < 4096; i++) printf "instance { model = fan transform { translation = (%d, %d, 40) } }\n",
+                                               i % 64 - 32, int(i / 64) - 32 }' >"$t/fans.scene"
+timeout 120 "$hs" --scene "$t/fans.scene" --panel none --size 4096x4096 --strip-rows 1 --out "$t/fans.png" >/dev/null 2>"$t/err"
+rc=$?
+timeout 120 "$hs" --scene firmware/scenes/bench/knot-16k-gouraud.scene --panel none --size 240x240 --max-cost 100K \
+  >/dev/null 2>>"$t/err"
+rc2=$?
+timeout 300 "$hs" --scene firmware/scenes/bench/knot-16k-flat.scene --panel none --size 960x960 --strip-rows 1 \
+  --summary >/dev/null 2>>"$t/err"
+rc3=$?
+if [ $rc -eq 2 ] && [ $rc2 -eq 2 ] && [ $rc3 -eq 0 ] && [ "$(wc -l <"$t/err")" -eq 2 ] &&
+   grep -q "fans.scene: about 3.36e+10 triangle-strip visits and pixels a frame (8192000 triangles, lines and 2-D primitives x 4096 strips of 1 rows at 4096x4096), over the limit of 2e+10 (--max-cost to raise it)" "$t/err" &&
+   grep -q "knot-16k-gouraud.scene: about .* over the limit of 1e+05" "$t/err" && [ ! -e "$t/fans.png" ]
+then ok io_rasterizer_cost_limit
+else no io_rasterizer_cost_limit "exit $rc/$rc2/$rc3: $(cat "$t/err")"; fi
+{ i=0; while [ $i -lt 16 ]; do
+    echo "texture { name = t$i generate = checkerboard width = 1024 height = 1024 filter = trilinear }"; i=$((i + 1))
+  done
+  echo 'model { name = q vertices { (-1, -1, 0) (1, 1, 0) (1, -1, 0) } triangles { (0, 1, 2, color = (255, 0, 0), uv = ((0, 0), (1, 1), (1, 0))) } }'
+  echo 'instance { model = q texture = t0 transform { translation = (0, 0, 5) } }'; } >"$t/tex16.scene"
+timeout 120 "$hs" --scene "$t/tex16.scene" --panel none --size 64x64 --max-memory 64M --out "$t/tex16.png" >/dev/null 2>"$t/err"
+rc=$?
+timeout 120 "$hs" --scene "$t/tex16.scene" --panel none --size 64x64 --max-memory 65M --out "$t/tex16.png" >/dev/null 2>>"$t/err"
+rc2=$?
+if [ $rc -eq 2 ] && [ $rc2 -eq 0 ] && [ "$(wc -l <"$t/err")" -eq 1 ] && [ -s "$t/tex16.png" ] &&
+   grep -q "needs [0-9]* bytes of renderer work memory and 67108848 bytes of textures ([0-9]* in all), over the limit of 67108864 (--max-memory to raise it)" "$t/err"
+then ok io_texture_memory_limit
+else no io_texture_memory_limit "exit $rc/$rc2: $(cat "$t/err")"; fi
 printf 'renderer = raytracer\nraytracer { recursion_depth = 16 }\nsphere { center = (0, 0, 3) radius = 1 color = (255, 0, 0) }\nlight { type = ambient intensity = 1 }\n' >"$t/deep.scene"
 "$hs" --scene "$t/deep.scene" --size 16x16 --panel none >/dev/null 2>"$t/err"
 rc=$?

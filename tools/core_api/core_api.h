@@ -26,6 +26,13 @@ struct scene_info {
     /* ray tracer: what host_sim's cost estimate counts (0 for the rasterizer) */
     uint16_t nobjects;         /* objects (spheres, planes, triangles, CSG operands) */
     uint8_t recursion_depth, supersample, bvh;
+    /* rasterizer: what host_sim's cost estimate counts (0 for the ray tracer) */
+    uint32_t triangles;        /* a frame's: every instance's model's triangles */
+    uint16_t nprims, nlines;   /* 2-D primitives and 3-D lines */
+    uint8_t shadow_volumes;    /* chapter 15's shadow volumes: the triangles drawn again */
+    uint16_t shadow_map;       /* chapter 15's shadow map: its side (0: none) */
+    /* both: the texels the scene holds, every mip level (host_sim's --max-memory) */
+    size_t texture_bytes;
 };
 
 /* What scene_load, scene_parse and scene_read return besides 0

@@ -258,6 +258,34 @@ if [ $rc -eq 2 ] && [ $rc2 -eq 2 ] && [ "$(grep -c "recursion_depth must be in 0
 then ok io_recursion_depth_past_max_refused
 else no io_recursion_depth_past_max_refused "exit $rc/$rc2: $(cat "$t/err")"; fi
 
+# values the parser would change silently are errors (docs/scene-format.md,
+# "Values changed"): a literal below the smallest normal double (it was read
+# as 0, in the scene and in an OBJ file); a value given in the scene whose 0
+# means something else that the chosen fixed-point format rounds to 0 (a
+# light's intensity of 1e-9 at Q11.20), refused by host_sim's fixed core and
+# by scenec alike, while the double core renders it
+mkdir -p "$t/val"
+printf 'sphere { center = (0, 0, 3) radius = 1e-400 color = (255, 0, 0) }\nlight { type = ambient intensity = 1 }\n' \
+  >"$t/val/under.scene"
+printf 'v 0 0 0\nv 1 0 1e-400\nv 0 1 0\nf 1 2 3\n' >"$t/val/u.obj"
+printf 'model { name = u file = "u.obj" color = (255, 0, 0) }\ninstance { model = u transform { translation = (0, 0, 5) } }\n' \
+  >"$t/val/obj.scene"
+printf 'sphere { center = (0, 0, 3) radius = 1 color = (255, 0, 0) }\nlight { type = ambient intensity = 1e-9 }\nlight { type = ambient intensity = 1 }\n' \
+  >"$t/val/tiny.scene"
+: >"$t/err"
+for f in under obj tiny; do
+  "$hs" --scene "$t/val/$f.scene" --size 16x16 --panel none >/dev/null 2>>"$t/err"; echo "$?" >>"$t/rcs"
+  "$sc" -o "$t/val/$f.c" "$t/val/$f.scene" >/dev/null 2>>"$t/err"; echo "$?" >>"$t/rcs"
+done
+"$hs" --scene "$t/val/tiny.scene" --size 16x16 --panel none --numeric double --summary >/dev/null 2>>"$t/err"
+rc=$?
+if [ "$(sort -u "$t/rcs")" = 2 ] && [ $rc -eq 0 ] && [ "$(wc -l <"$t/err")" -eq 6 ] &&
+   [ "$(grep -c "under.scene:1:38: error: number 1e-400 is too small (under 2.22507e-308, it would be read as 0)" "$t/err")" -eq 2 ] &&
+   [ "$(grep -c "u.obj:2:7: error: v: number 1e-400 is too small" "$t/err")" -eq 2 ] &&
+   [ "$(grep -c "tiny.scene:1:1: error: light 0 intensity 1e-09 would be 0 in the format Q11.20 the scene needs (step 9.54e-07)" "$t/err")" -eq 2 ] &&
+   [ ! -e "$t/val/under.c" ] && [ ! -e "$t/val/obj.c" ] && [ ! -e "$t/val/tiny.c" ]; then ok io_parser_no_silent_zero
+else no io_parser_no_silent_zero "exits $(tr '\n' ' ' <"$t/rcs")/$rc: $(cat "$t/err")"; fi
+
 # scenec: a scene over the target's budget is refused before anything is
 # written (exit 2, one line naming the need, the budget and the option): 16
 # generated 1024x1024 trilinear textures (67 MB of texels, 214 MB of C) over

@@ -101,7 +101,8 @@ static int init(struct render_ctx *ctx, const void *scene, uint16_t w, uint16_t 
 static int format(const void *scene, const char *path, uint16_t w, uint16_t h, struct scene_format *f,
                   char *msg, size_t msglen)
 {
-    if (!scene_format_choose(scene, w, h, NULL, 0, 0, f)) return 0;
+    if (!scene_format_choose(scene, w, h, NULL, 0, 0, f))
+        return scene_given_zero(scene, f->num_frac, path, msg, msglen);
     scene_format_refusal(f, path, msg, msglen);
     return -1;
 }

@@ -1040,6 +1040,10 @@ int main(int argc, char **argv)
     rc = analyse(&a, s, &F);
     if (!rc) rc = work_sizes(&a, text, text_len, &work, &host_work, &sibling);
     free(text);
+    if (!rc && scene_given_zero(s, F.num_frac, a.path, err, sizeof err)) {
+        fprintf(stderr, "%s\n", err);
+        rc = 2;
+    }
     if (!rc) rc = check_budget(&a, s, id, F.num_frac, scene_format_fits(&F, F.num_frac), work, sibling);
     if (!rc && a.deps) rc = write_deps(a.deps, a.outc, a.path);
     if (!rc) rc = write_outputs(&a, s, id, F.num_frac, scene_format_fits(&F, F.num_frac), work, sibling);

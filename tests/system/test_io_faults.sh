@@ -236,6 +236,13 @@ if [ $rc -eq 2 ] && [ $rc2 -eq 2 ] && [ $rc3 -eq 0 ] && [ "$(wc -l <"$t/err")" -
    grep -q "knot-16k-gouraud.scene: about .* over the limit of 1e+05" "$t/err" && [ ! -e "$t/fans.png" ]
 then ok io_rasterizer_cost_limit
 else no io_rasterizer_cost_limit "exit $rc/$rc2/$rc3: $(cat "$t/err")"; fi
+# and scenec refuses its 402 MB work array under the default budget (m0plus)
+"$sc" -o "$t/fans.c" "$t/fans.scene" >/dev/null 2>"$t/err"
+rc=$?
+if [ $rc -eq 2 ] && [ "$(wc -l <"$t/err")" -eq 1 ] && [ ! -e "$t/fans.c" ] &&
+   grep -q "fans.scene: needs [0-9]* bytes of RAM at 240x240 (renderer work memory [0-9]*), over the m0plus RAM budget of 3670016 bytes (--ram-budget or --target to change it)" "$t/err"
+then ok io_scenec_work_array_over_default_budget
+else no io_scenec_work_array_over_default_budget "exit $rc: $(cat "$t/err")"; fi
 { i=0; while [ $i -lt 16 ]; do
     echo "texture { name = t$i generate = checkerboard width = 1024 height = 1024 filter = trilinear }"; i=$((i + 1))
   done

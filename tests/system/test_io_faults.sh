@@ -326,7 +326,7 @@ if [ $rc -eq 2 ] && [ $rc2 -eq 2 ] && [ $rc3 -eq 2 ] && [ $rc4 -eq 0 ] && [ $rc5
    grep -q "raytracer-02.scene: needs [0-9]* bytes of RAM .*, over the RAM budget of 4096 bytes (--ram-budget)" "$t/err" &&
    grep -q "raster-11.scene: needs [0-9]* bytes of flash (the scene's const data, 0 of them textures), over the flash budget of 1024 bytes (--flash-budget)" "$t/err" &&
    grep -q "unknown --target 'rp2050' (did you mean 'rp2040'?)" "$t/err" &&
-   grep -q "the budget (m4f): RAM 65536, flash 1048576 bytes" "$t/out" && [ -s "$t/bud/ok.c" ] &&
+   grep -q "the budget (m4f, emulated Cortex-M4F, mps2-an386): RAM 65536, flash 1048576 bytes" "$t/out" && [ -s "$t/bud/ok.c" ] &&
    [ ! -e "$t/bud/k.c" ] && [ ! -e "$t/bud/r.c" ] && [ ! -e "$t/bud/f.c" ]; then ok io_scenec_ram_and_flash_budget
 else no io_scenec_ram_and_flash_budget "exit $rc/$rc2/$rc3/$rc4/$rc5: $(cat "$t/err")"; fi
 

@@ -2,14 +2,16 @@
 /* scenec — compiles a scene file into C source for the firmware.
  *
  *   scenec [--size WxH] [--strip-rows N] [--fracs 20,...,12] [--id NAME]
- *          [--allow-wide] [--target-work BYTES[:SIBLING]] [--deps OUT.d] -o OUT.c SCENE
+ *          [--allow-wide] [--target-work BYTES[:SIBLING]] [--deps OUT.d]
+ *          [--target NAME] [--ram-budget N[K|M]] [--flash-budget N[K|M]] -o OUT.c SCENE
  *
  * Writes OUT.c (the scene as const data: models, textures, lights in flash;
  * one static work buffer of exactly render_work_size() bytes) and OUT.h (its
  * declarations and the number format it was checked for). Prints the ranges
  * it found, the number format chosen and why no intermediate overflows, and
  * one "scenec-summary" line; or fails (exit 2) naming the object and the
- * quantity that cannot fit.
+ * quantity that cannot fit, or the RAM or flash the scene needs over the
+ * target's budget (--target, default m0plus), before anything is written.
  *
  * scenec is built in the double mode: the values it emits are the parser's
  * doubles, written as NUM_C(literal), so the same file compiles to the exact
@@ -1058,8 +1060,8 @@ int main(int argc, char **argv)
     char budget[160];
     if (a.ram_budget < 0 && a.flash_budget < 0) snprintf(budget, sizeof budget, "no budget (--target none)");
     else
-        snprintf(budget, sizeof budget, "the budget (%s): RAM %lld, flash %lld bytes", a.target->name, a.ram_budget,
-                 a.flash_budget);
+        snprintf(budget, sizeof budget, "the budget (%s, %s): RAM %lld, flash %lld bytes", a.target->name,
+                 a.target->what, a.ram_budget, a.flash_budget);
     printf("  memory: RAM %zu bytes of work (%s; this host's core: %zu) + %zu bytes of strip (%dx%d, %d rows);\n"
            "    a second core's context (render_init_sibling) %zu bytes more;\n"
            "    flash: the const data of %s, %zu bytes (%zu of textures; this host's sizes, an upper bound);\n"

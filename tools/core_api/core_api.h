@@ -59,7 +59,9 @@ struct core_api {
     int num_frac;              /* NUM_FRAC of a fixed-point core, 0 in float and double */
     /* The number format the scene needs at w x h (tools/scene/scene_format.h):
      * 0 with f->num_frac set, or -1 with the refusal, one line naming PATH, in
-     * msg. Meaningful on the double core, whose scene holds the exact values. */
+     * msg: no format holds the scene, or (f->num_frac set) a value given in
+     * the scene would be 0 at that format (scene_parse.h, scene_given_zero).
+     * Meaningful on the double core, whose scene holds the exact values. */
     int (*format)(const void *scene, const char *path, uint16_t w, uint16_t h, struct scene_format *f,
                   char *msg, size_t msglen);
     /* Switches a loaded scene to the rasterizer's exact methods (perspective_step = 1,

@@ -132,11 +132,12 @@ core_lib = $(BUILD)/$(1)/$(2)/libcore.a
 HAL_SRCS := hal/dcs.c $(sort $(wildcard hal/panel*.c))
 
 # Scenes compiled by tools/scenec (mk/scene.mk builds scenec and the work
-# probe). $(call scenec_rule,OUT.c,SCENE,WxH,STRIP_ROWS,ID,TARGET) writes
+# probe). $(call scenec_rule,OUT.c,SCENE,WxH,STRIP_ROWS,ID,TARGET[,BUDGET]) writes
 # OUT.c and OUT.h from firmware/scenes/SCENE.scene, with the C identifier ID
 # (empty: scenec's default) and the work size of the emulated Cortex-M0+
 # (TARGET 1: measured by the work probe) or of this host (TARGET 0: an upper
-# bound for the target).
+# bound for the target); BUDGET names the board whose RAM and flash budget
+# the scene must fit (scenec --target; empty: scenec's default, m0plus).
 SCENEC      := $(BUILD)/scenec
 SCENE_PROBE := $(BUILD)/scenes/work_probe.elf
 # The .c and the .h are one grouped target (GNU make 4.3): whatever includes
@@ -145,10 +146,10 @@ define SCENEC_RULE
 $(1) $(patsubst %.c,%.h,$(1)) &: firmware/scenes/$(2).scene $(SCENEC) $(if $(filter 1,$(6)),$(SCENE_PROBE))
 	@mkdir -p $(dir $(1))
 	$(Q)$(if $(filter 1,$(6)),tw=$$$$(tools/scenec/target_work.sh $(SCENE_PROBE) $$< $(subst x, ,$(3)) $(4)) || exit 2;) \
-	$(SCENEC) --size $(3) --strip-rows $(4) $(if $(5),--id $(5)) $(if $(filter 1,$(6)),--target-work $$$$tw) \
+	$(SCENEC) --size $(3) --strip-rows $(4) $(if $(5),--id $(5)) $(if $(filter 1,$(6)),--target-work $$$$tw) $(if $(7),--target $(7)) \
 		-o $(1) $$< >$(patsubst %.c,%.log,$(1)) || { cat $(patsubst %.c,%.log,$(1)); exit 2; }
 endef
-scenec_rule = $(eval $(call SCENEC_RULE,$(strip $(1)),$(strip $(2)),$(strip $(3)),$(strip $(4)),$(strip $(5)),$(strip $(6))))
+scenec_rule = $(eval $(call SCENEC_RULE,$(strip $(1)),$(strip $(2)),$(strip $(3)),$(strip $(4)),$(strip $(5)),$(strip $(6)),$(strip $(7))))
 
 # $(call scene_frac_rule,OUT.h,HEADERS[,MORE]): OUT.h defines NUM_FRAC as the
 # smallest SCENE_<ID>_NUM_FRAC of the scenec headers HEADERS (MORE: other

@@ -89,9 +89,11 @@ static const char usage_text2[] =
     "  --strip-rows N                rows per strip (default 16)\n"
     "  --num-frac F                  fixed point in Q(31-F).F, F in 12..20, instead of\n"
     "                                the scene's own format\n"
-    "  --max-memory N[K|M|G]         renderer work memory allowed (default 1G)\n"
-    "  --max-cost N[K|M|G]           ray tracer: estimated ray-object tests a frame allowed\n"
-    "                                (default 20G; docs/host_sim.md)\n"
+    "  --max-memory N[K|M|G]         renderer work memory and the scene's textures allowed\n"
+    "                                (default 1G)\n"
+    "  --max-cost N[K|M|G]           a frame's estimated work allowed: the ray tracer's\n"
+    "                                ray-object tests, the rasterizer's triangle-strip\n"
+    "                                visits and pixels (default 20G; docs/host_sim.md)\n"
     "  --inject-fault NAME           make the panel driver misbehave (tests): %s;\n"
     "                                signal-in-write: SIGTERM to itself in the middle of\n"
     "                                writing --out-raw (tests: nothing is left behind)\n"
@@ -110,7 +112,7 @@ struct opts {
     int flush;                 /* 0 default, 1 full, 2 dirty */
     int num_frac;              /* --num-frac, 0: the scene's own format */
     unsigned long long max_memory;   /* --max-memory: renderer work memory, bytes */
-    double max_cost;           /* --max-cost: ray tracer's estimated tests a frame */
+    double max_cost;           /* --max-cost: a frame's estimated work (check_cost) */
     unsigned width, height, frames, strip_rows;
 };
 
@@ -465,6 +467,13 @@ static unsigned long long max_memory = MAX_MEMORY_DEFAULT;
 static int core_init(struct core *c, unsigned w, unsigned h, unsigned strip_rows)
 {
     size_t ws = c->api->work_size(c->scene, (uint16_t)w, (uint16_t)h, (uint16_t)strip_rows);
+    /* the scene's textures (their texels, every mip level) count too: the
+       parser holds them for the whole run */
+    unsigned long long tb = c->info.texture_bytes;
+    if (tb && (unsigned long long)ws + tb > max_memory)
+        return fail(EXIT_USAGE, "the scene at %ux%u needs %zu bytes of renderer work memory and %llu bytes of textures "
+                                "(%llu in all), over the limit of %llu (--max-memory to raise it)", w, h, ws, tb,
+                    (unsigned long long)ws + tb, max_memory);
     if ((unsigned long long)ws > max_memory)
         return fail(EXIT_USAGE, "the scene at %ux%u needs %zu bytes of renderer work memory, over the limit of %llu "
                                 "(--max-memory to raise it)", w, h, ws, max_memory);
@@ -861,11 +870,12 @@ static int pick_core(struct run_state *r)
  * times the objects each ray is tested against (with bvh, 2 log2 of them).
  * Over --max-cost it is refused (exit 2). */
 #define MAX_COST_DEFAULT 20e9
+static int check_raster_cost(const struct run_state *r, double max);
 static int check_cost(const struct run_state *r)
 {
     const struct scene_info *in = &r->c->info;
-    if (in->kind != SCENE_RAYTRACE) return EXIT_OK;
     double max = r->o->max_cost > 0 ? r->o->max_cost : MAX_COST_DEFAULT;
+    if (in->kind != SCENE_RAYTRACE) return check_raster_cost(r, max);
     double ss = in->supersample ? in->supersample : 1;
     double rays = (double)r->w * r->h * ss * ss * (in->recursion_depth + 1.0) * (in->nlights + 1.0);
     double objs = in->bvh ? 2.0 * ceil(log2(in->nobjects + 1.0)) + 1.0 : in->nobjects;
@@ -875,6 +885,25 @@ static int check_cost(const struct run_state *r)
                             "%u lights, %u objects), over the limit of %.3g (--max-cost to raise it)",
                 r->o->scene, cost, r->w, r->h, ss * ss, (unsigned)in->recursion_depth + 1, (unsigned)in->nlights,
                 (unsigned)in->nobjects, max);
+}
+
+/* The rasterizer's work a frame, estimated before rendering (an upper
+ * bound, docs/host_sim.md): every triangle of every instance visited by
+ * every strip (the binning finds a triangle only in the strips it covers,
+ * but one may cover them all), twice with shadow volumes, plus the pixels
+ * (each written at least once) and the shadow map's texels. Over --max-cost
+ * it is refused (exit 2). */
+static int check_raster_cost(const struct run_state *r, double max)
+{
+    const struct scene_info *in = &r->c->info;
+    double strips = ceil((double)r->h / (r->rows ? r->rows : 1));
+    double prims = (double)in->triangles * (in->shadow_volumes ? 2.0 : 1.0) + in->nprims + in->nlines;
+    double pixels = (double)r->w * r->h + (double)in->shadow_map * in->shadow_map;
+    double cost = prims * strips + pixels;
+    if (cost <= max) return EXIT_OK;
+    return fail(EXIT_USAGE, "%s: about %.3g triangle-strip visits and pixels a frame (%.0f triangles, lines and 2-D "
+                            "primitives x %.0f strips of %u rows at %ux%u), over the limit of %.3g (--max-cost to "
+                            "raise it)", r->o->scene, cost, prims, strips, r->rows, r->w, r->h, max);
 }
 
 /* The panel and the renderer at the render size; warnings about the scene

@@ -45,7 +45,8 @@ FW_INC       := -I. -Ifirmware/core -Ifirmware/app -Ihal -I$(FW_OUT)/scenes
 # Scene sets: a list of scenes linked into an image. Each scene is compiled
 # for the firmware's render size and strip height with the work size measured
 # on the target (the emulated Cortex-M0+ work probe of mk/scene.mk,
-# tools/scenec/target_work.sh); each set has its table and its format. Every
+# tools/scenec/target_work.sh) and checked against the RP2040's budget
+# (scenec --target rp2040); each set has its table and its format. Every
 # image that links a set builds its core at the coarsest format among its
 # scenes: fw_<set>_num_frac.h (-include'd; the Makefile's scene_frac_rule).
 #   book  FW_BOOK_SCENES: the "book" images (raytracer-02 and raster-11)
@@ -64,15 +65,15 @@ fw_scene_id     = $(subst -,_,$(subst /,_,$(1)))
 fw_scene_h      = $(foreach n,$(1),$(FW_OUT)/scenes/$(call fw_scene_id,$(n))$(2).h)
 # once per scene of all the sets (book/raytracer-02 -> book_raytracer_02.c)
 $(foreach n,$(sort $(FW_BOOK_SCENES) $(FW_CUBE_SCENES) $(FW_RT_SCENES) $(FW_MESH_SCENES)),\
-    $(call scenec_rule,$(FW_OUT)/scenes/$(call fw_scene_id,$(n)).c,$(n),240x240,$(FW_STRIP_ROWS),$(call fw_scene_id,$(n)),1))
+    $(call scenec_rule,$(FW_OUT)/scenes/$(call fw_scene_id,$(n)).c,$(n),240x240,$(FW_STRIP_ROWS),$(call fw_scene_id,$(n)),1,rp2040))
 # The cube scenes again at 320x240, for the ILI9341 module in landscape
 # (files and identifiers <id>_320).
 $(foreach n,$(FW_CUBE_SCENES),\
-    $(call scenec_rule,$(FW_OUT)/scenes/$(call fw_scene_id,$(n))_320.c,$(n),320x240,$(FW_STRIP_ROWS),$(call fw_scene_id,$(n))_320,1))
+    $(call scenec_rule,$(FW_OUT)/scenes/$(call fw_scene_id,$(n))_320.c,$(n),320x240,$(FW_STRIP_ROWS),$(call fw_scene_id,$(n))_320,1,rp2040))
 FW_CUBE320_SCENES := $(FW_CUBE_SCENES)
 # And at 128x160, for the ST7735S 1.8" module (files and identifiers <id>_128).
 $(foreach n,$(FW_CUBE_SCENES),\
-    $(call scenec_rule,$(FW_OUT)/scenes/$(call fw_scene_id,$(n))_128.c,$(n),128x160,$(FW_STRIP_ROWS),$(call fw_scene_id,$(n))_128,1))
+    $(call scenec_rule,$(FW_OUT)/scenes/$(call fw_scene_id,$(n))_128.c,$(n),128x160,$(FW_STRIP_ROWS),$(call fw_scene_id,$(n))_128,1,rp2040))
 FW_CUBE128_SCENES := $(FW_CUBE_SCENES)
 # $(1) = SET (variable names), $(2) = set (file names), $(3) = the suffix of
 # the scenes' files (none: compiled at 240x240). The list of scenes,

@@ -13,6 +13,10 @@ set -u
 [ $# -eq 8 ] || { echo "usage: image_scene.sh IMAGE SCENEC PROBE SCENE WxH STRIP_ROWS ID OUT.c" >&2; exit 2; }
 image=$1 scenec=$2 probe=$3 scene=$4 size=$5 strip=$6 id=$7 out=$8
 base=${out%.c}
+# the RP2040's flash budget (scenec --target rp2040's: 2 MB less 256 KB for
+# the firmware); the work memory is image_fits.sh's to check, against what
+# the linked image leaves
+budget="--flash-budget 1792K"
 fail() {
   echo "image $image: ${1:-$2}" >&2
   rm -f "$base.err" "$base.log.tmp" "$base.check.c" "$base.check.h"
@@ -20,13 +24,13 @@ fail() {
 }
 if ! tw=$(tools/scenec/target_work.sh "$probe" "$scene" "${size%x*}" "${size#*x}" "$strip" 2>"$base.err"); then
   probe_err=$(head -n 1 "$base.err")
-  if "$scenec" --size "$size" --strip-rows "$strip" --id "$id" -o "$base.check.c" "$scene" \
+  if "$scenec" --size "$size" --strip-rows "$strip" --id "$id" $budget -o "$base.check.c" "$scene" \
      >/dev/null 2>"$base.err"; then
     fail "$probe_err" "the work probe failed on $scene"
   fi
   fail "$(head -n 1 "$base.err")" "scenec refused $scene"
 fi
-"$scenec" --size "$size" --strip-rows "$strip" --id "$id" --target-work "$tw" --deps "$base.d" -o "$out" "$scene" \
-  >"$base.log.tmp" 2>"$base.err" || fail "$(head -n 1 "$base.err")" "scenec refused $scene"
+"$scenec" --size "$size" --strip-rows "$strip" --id "$id" --target-work "$tw" $budget --deps "$base.d" -o "$out" \
+  "$scene" >"$base.log.tmp" 2>"$base.err" || fail "$(head -n 1 "$base.err")" "scenec refused $scene"
 mv "$base.log.tmp" "$base.log"
 rm -f "$base.err"

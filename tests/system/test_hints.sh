@@ -62,7 +62,8 @@ expect scenec_no_scene 2 "a scene file is required" "$sc" -o "$tmp/x.c"
 "$sc" --help >"$tmp/help" 2>"$tmp/e"
 rc=$?
 missing=""
-for o in -o --size --strip-rows --fracs --id --allow-wide --target-work --deps --help "default 240x240" \
+for o in -o --size --strip-rows --fracs --id --allow-wide --target-work --deps --target --ram-budget \
+         --flash-budget "default m0plus" --help "default 240x240" \
          "default 16" "exit status"; do
   grep -qF -- "$o" "$tmp/help" || missing="$missing $o"
 done

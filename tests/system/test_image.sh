@@ -15,7 +15,8 @@
 #   - a new tiles.ppm compiles tex.scene again (not flat.scene), and the
 #     image shows the new texture;
 #   - refused, one line "image NAME: ..." and no image left: a scene scenec
-#     refuses, a missing scene file, a bad NAME, no SCENES, an unknown PANEL,
+#     refuses, a scene over the RP2040's flash (a 1024x1024 texture: 3 MB), a
+#     missing scene file, a bad NAME, no SCENES, an unknown PANEL,
 #     and a scene whose work memory does not fit (a sphere of 64 divisions),
 #     with the bytes it needs and the bytes the image has, before the scene
 #     is compiled for the board and the image linked.
@@ -156,6 +157,12 @@ refused() {
 printf 'name = "x"\nrenderer = rasterizer\nbogus = 1\n' >"$t/my/bad.scene"
 refused image_refuses_a_scene_scenec_refuses "^image $name: $t/my/bad.scene:3:1: error: unknown key 'bogus'\$" \
   NAME="$name" SCENES="$t/my/flat.scene $t/my/bad.scene"
+{ echo 'texture { name = t generate = checkerboard width = 1024 height = 1024 }'
+  echo 'model { name = q vertices { (-1, -1, 0) (1, 1, 0) (1, -1, 0) } triangles { (0, 1, 2, color = (255, 0, 0), uv = ((0, 0), (1, 1), (1, 0))) } }'
+  echo 'instance { model = q texture = t transform { translation = (0, 0, 5) } }'; } >"$t/my/huge.scene"
+refused image_refuses_a_scene_over_the_flash \
+  "^image $name: scenec: $t/my/huge.scene: needs [0-9]* bytes of flash (the scene's const data, 3145728 of them textures), over the flash budget of 1835008 bytes (--flash-budget)\$" \
+  NAME="$name" SCENES="$t/my/flat.scene $t/my/huge.scene"
 refused image_refuses_a_missing_scene_file "^.*image $name: $t/my/none.scene: no such scene file" \
   NAME="$name" SCENES="$t/my/flat.scene $t/my/none.scene"
 refused image_refuses_a_bad_name "NAME may have only letters, digits" NAME="my.image" SCENES="$t/my/flat.scene"

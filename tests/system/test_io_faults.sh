@@ -212,6 +212,50 @@ rc=$?
 if [ $rc -eq 2 ] && [ "$(wc -l <"$t/err")" -eq 1 ] && grep -q "ray-object tests a frame.*over the limit" "$t/err" &&
    [ ! -e "$t/heavy.png" ]; then ok io_ray_tracer_cost_limit
 else no io_ray_tracer_cost_limit "exit $rc: $(cat "$t/err")"; fi
+# the rasterizer's frame estimated the same way (triangle-strip visits plus
+# pixels, --max-cost): 4,096 instances of a 2,000-triangle fan at 4096x4096
+# in 1-row strips are refused before any memory is allocated; the
+# 16,384-triangle knots pass at the default limit; the scene's textures count
+# in --max-memory (16 generated 1024x1024 trilinear textures, 67 MB)
+awk 'BEGIN { print "rasterizer { shading = flat }"; print "light { type = ambient intensity = 1 }";
+             printf "model { name = fan color = (200, 100, 50) vertices { (0, 0, 0)";
+             for (i = 0; i <= 2000; i++) printf " (%.4f, %.4f, 0)", cos(i * 0.00314), sin(i * 0.00314);
+             printf " } triangles {"; for (i = 1; i <= 2000; i++) printf " (0, %d, %d)", i + 1, i; print " } }";
+             for (i = 0; i < 4096; i++) printf "instance { model = fan transform { translation = (%d, %d, 40) } }\n",
+                                               i % 64 - 32, int(i / 64) - 32 }' >"$t/fans.scene"
+timeout 120 "$hs" --scene "$t/fans.scene" --panel none --size 4096x4096 --strip-rows 1 --out "$t/fans.png" >/dev/null 2>"$t/err"
+rc=$?
+timeout 120 "$hs" --scene firmware/scenes/bench/knot-16k-gouraud.scene --panel none --size 240x240 --max-cost 100K \
+  >/dev/null 2>>"$t/err"
+rc2=$?
+timeout 300 "$hs" --scene firmware/scenes/bench/knot-16k-flat.scene --panel none --size 960x960 --strip-rows 1 \
+  --summary >/dev/null 2>>"$t/err"
+rc3=$?
+if [ $rc -eq 2 ] && [ $rc2 -eq 2 ] && [ $rc3 -eq 0 ] && [ "$(wc -l <"$t/err")" -eq 2 ] &&
+   grep -q "fans.scene: about 3.36e+10 triangle-strip visits and pixels a frame (8192000 triangles, lines and 2-D primitives x 4096 strips of 1 rows at 4096x4096), over the limit of 2e+10 (--max-cost to raise it)" "$t/err" &&
+   grep -q "knot-16k-gouraud.scene: about .* over the limit of 1e+05" "$t/err" && [ ! -e "$t/fans.png" ]
+then ok io_rasterizer_cost_limit
+else no io_rasterizer_cost_limit "exit $rc/$rc2/$rc3: $(cat "$t/err")"; fi
+# and scenec refuses its 402 MB work array under the default budget (m0plus)
+"$sc" -o "$t/fans.c" "$t/fans.scene" >/dev/null 2>"$t/err"
+rc=$?
+if [ $rc -eq 2 ] && [ "$(wc -l <"$t/err")" -eq 1 ] && [ ! -e "$t/fans.c" ] &&
+   grep -q "fans.scene: needs [0-9]* bytes of RAM at 240x240 (renderer work memory [0-9]*), over the m0plus RAM budget of 3670016 bytes (--ram-budget or --target to change it)" "$t/err"
+then ok io_scenec_work_array_over_default_budget
+else no io_scenec_work_array_over_default_budget "exit $rc: $(cat "$t/err")"; fi
+{ i=0; while [ $i -lt 16 ]; do
+    echo "texture { name = t$i generate = checkerboard width = 1024 height = 1024 filter = trilinear }"; i=$((i + 1))
+  done
+  echo 'model { name = q vertices { (-1, -1, 0) (1, 1, 0) (1, -1, 0) } triangles { (0, 1, 2, color = (255, 0, 0), uv = ((0, 0), (1, 1), (1, 0))) } }'
+  echo 'instance { model = q texture = t0 transform { translation = (0, 0, 5) } }'; } >"$t/tex16.scene"
+timeout 120 "$hs" --scene "$t/tex16.scene" --panel none --size 64x64 --max-memory 64M --out "$t/tex16.png" >/dev/null 2>"$t/err"
+rc=$?
+timeout 120 "$hs" --scene "$t/tex16.scene" --panel none --size 64x64 --max-memory 65M --out "$t/tex16.png" >/dev/null 2>>"$t/err"
+rc2=$?
+if [ $rc -eq 2 ] && [ $rc2 -eq 0 ] && [ "$(wc -l <"$t/err")" -eq 1 ] && [ -s "$t/tex16.png" ] &&
+   grep -q "needs [0-9]* bytes of renderer work memory and 67108848 bytes of textures ([0-9]* in all), over the limit of 67108864 (--max-memory to raise it)" "$t/err"
+then ok io_texture_memory_limit
+else no io_texture_memory_limit "exit $rc/$rc2: $(cat "$t/err")"; fi
 printf 'renderer = raytracer\nraytracer { recursion_depth = 16 }\nsphere { center = (0, 0, 3) radius = 1 color = (255, 0, 0) }\nlight { type = ambient intensity = 1 }\n' >"$t/deep.scene"
 "$hs" --scene "$t/deep.scene" --size 16x16 --panel none >/dev/null 2>"$t/err"
 rc=$?
@@ -220,6 +264,71 @@ rc2=$?
 if [ $rc -eq 2 ] && [ $rc2 -eq 2 ] && [ "$(grep -c "recursion_depth must be in 0 .. 5, found 16" "$t/err")" -eq 2 ]
 then ok io_recursion_depth_past_max_refused
 else no io_recursion_depth_past_max_refused "exit $rc/$rc2: $(cat "$t/err")"; fi
+
+# values the parser would change silently are errors (docs/scene-format.md,
+# "Values changed"): a literal below the smallest normal double (it was read
+# as 0, in the scene and in an OBJ file); a value given in the scene whose 0
+# means something else that the chosen fixed-point format rounds to 0 (a
+# light's intensity of 1e-9 at Q11.20), refused by host_sim's fixed core and
+# by scenec alike, while the double core renders it
+mkdir -p "$t/val"
+printf 'sphere { center = (0, 0, 3) radius = 1e-400 color = (255, 0, 0) }\nlight { type = ambient intensity = 1 }\n' \
+  >"$t/val/under.scene"
+printf 'v 0 0 0\nv 1 0 1e-400\nv 0 1 0\nf 1 2 3\n' >"$t/val/u.obj"
+printf 'model { name = u file = "u.obj" color = (255, 0, 0) }\ninstance { model = u transform { translation = (0, 0, 5) } }\n' \
+  >"$t/val/obj.scene"
+printf 'sphere { center = (0, 0, 3) radius = 1 color = (255, 0, 0) }\nlight { type = ambient intensity = 1e-9 }\nlight { type = ambient intensity = 1 }\n' \
+  >"$t/val/tiny.scene"
+: >"$t/err"
+for f in under obj tiny; do
+  "$hs" --scene "$t/val/$f.scene" --size 16x16 --panel none >/dev/null 2>>"$t/err"; echo "$?" >>"$t/rcs"
+  "$sc" -o "$t/val/$f.c" "$t/val/$f.scene" >/dev/null 2>>"$t/err"; echo "$?" >>"$t/rcs"
+done
+"$hs" --scene "$t/val/tiny.scene" --size 16x16 --panel none --numeric double --summary >/dev/null 2>>"$t/err"
+rc=$?
+if [ "$(sort -u "$t/rcs")" = 2 ] && [ $rc -eq 0 ] && [ "$(wc -l <"$t/err")" -eq 6 ] &&
+   [ "$(grep -c "under.scene:1:38: error: number 1e-400 is too small (under 2.22507e-308, it would be read as 0)" "$t/err")" -eq 2 ] &&
+   [ "$(grep -c "u.obj:2:7: error: v: number 1e-400 is too small" "$t/err")" -eq 2 ] &&
+   [ "$(grep -c "tiny.scene:1:1: error: light 0 intensity 1e-09 would be 0 in the format Q11.20 the scene needs (step 9.54e-07)" "$t/err")" -eq 2 ] &&
+   [ ! -e "$t/val/under.c" ] && [ ! -e "$t/val/obj.c" ] && [ ! -e "$t/val/tiny.c" ]; then ok io_parser_no_silent_zero
+else no io_parser_no_silent_zero "exits $(tr '\n' ' ' <"$t/rcs")/$rc: $(cat "$t/err")"; fi
+
+# scenec: a scene over the target's budget is refused before anything is
+# written (exit 2, one line naming the need, the budget and the option): 16
+# generated 1024x1024 trilinear textures (67 MB of texels, 214 MB of C) over
+# the default target's flash (m0plus), the 16,384-triangle knot's work memory
+# over the RP2040's RAM, any scene over --ram-budget / --flash-budget; the
+# same scene within a budget compiles
+mkdir -p "$t/bud"
+{ i=0; while [ $i -lt 16 ]; do
+    echo "texture { name = t$i generate = checkerboard width = 1024 height = 1024 filter = trilinear }"; i=$((i + 1))
+  done
+  echo 'model { name = q vertices { (-1, -1, 0) (1, -1, 0) (1, 1, 0) } triangles { (0, 1, 2, color = (255, 0, 0), uv = ((0, 0), (1, 0), (1, 1))) } }'
+  echo 'instance { model = q texture = t0 transform { translation = (0, 0, 5) } }'; } >"$t/bud/tex16.scene"
+timeout 60 "$sc" -o "$t/bud/tex16.c" "$t/bud/tex16.scene" >/dev/null 2>"$t/err"
+rc=$?
+if [ $rc -eq 2 ] && [ "$(wc -l <"$t/err")" -eq 1 ] &&
+   grep -q "needs [0-9]* bytes of flash (the scene's const data, 67108848 of them textures), over the m0plus flash budget of 3670016 bytes (--flash-budget or --target to change it)" "$t/err" &&
+   [ -z "$(ls -A "$t/bud" | grep -v tex16.scene)" ]; then ok io_scenec_flash_budget_textures
+else no io_scenec_flash_budget_textures "exit $rc: $(cat "$t/err"); left: $(ls -A "$t/bud")"; fi
+"$sc" --target rp2040 -o "$t/bud/k.c" firmware/scenes/bench/knot-16k-gouraud.scene >/dev/null 2>"$t/err"
+rc=$?
+"$sc" --ram-budget 4K -o "$t/bud/r.c" "$S" >/dev/null 2>>"$t/err"
+rc2=$?
+"$sc" --flash-budget 1K -o "$t/bud/f.c" firmware/scenes/book/raster-11.scene >/dev/null 2>>"$t/err"
+rc3=$?
+"$sc" --target m4f --ram-budget 64K --flash-budget 1M -o "$t/bud/ok.c" firmware/scenes/book/raster-11.scene >"$t/out" 2>>"$t/err"
+rc4=$?
+"$sc" --target rp2050 -o "$t/bud/x.c" "$S" >/dev/null 2>>"$t/err"
+rc5=$?
+if [ $rc -eq 2 ] && [ $rc2 -eq 2 ] && [ $rc3 -eq 2 ] && [ $rc4 -eq 0 ] && [ $rc5 -eq 2 ] && [ "$(wc -l <"$t/err")" -eq 4 ] &&
+   grep -q "knot-16k-gouraud.scene: needs [0-9]* bytes of RAM at 240x240 (renderer work memory [0-9]* + [0-9]* of a second core's context), over the rp2040 RAM budget of 229448 bytes (--ram-budget or --target to change it)" "$t/err" &&
+   grep -q "raytracer-02.scene: needs [0-9]* bytes of RAM .*, over the RAM budget of 4096 bytes (--ram-budget)" "$t/err" &&
+   grep -q "raster-11.scene: needs [0-9]* bytes of flash (the scene's const data, 0 of them textures), over the flash budget of 1024 bytes (--flash-budget)" "$t/err" &&
+   grep -q "unknown --target 'rp2050' (did you mean 'rp2040'?)" "$t/err" &&
+   grep -q "the budget (m4f, emulated Cortex-M4F, mps2-an386): RAM 65536, flash 1048576 bytes" "$t/out" && [ -s "$t/bud/ok.c" ] &&
+   [ ! -e "$t/bud/k.c" ] && [ ! -e "$t/bud/r.c" ] && [ ! -e "$t/bud/f.c" ]; then ok io_scenec_ram_and_flash_budget
+else no io_scenec_ram_and_flash_budget "exit $rc/$rc2/$rc3/$rc4/$rc5: $(cat "$t/err")"; fi
 
 # a signal in the middle of a write removes the temporary file (host_sim
 # sends itself SIGTERM after the first row of --out-raw, test option); the

@@ -62,6 +62,24 @@ static void info(const void *scene, struct scene_info *out)
     out->recursion_depth = rt ? s->rt.recursion_depth : 0;
     out->supersample = rt ? s->rt.supersample : 0;
     out->bvh = rt ? s->rt.bvh : 0;
+    uint32_t tris = 0;
+    for (unsigned i = 0; !rt && i < s->ninstances; i++)
+        if (s->instances[i].model < s->nmodels) tris += s->models[s->instances[i].model].ntris;
+    out->triangles = tris;
+    out->nprims = rt ? 0 : s->nprims;
+    out->nlines = rt ? 0 : s->nlines;
+    out->shadow_volumes = !rt && s->ras.shadow_volume;
+    out->shadow_map = !rt && s->ras.shadow_map ? (s->ras.shadow_map_size ? s->ras.shadow_map_size : 128) : 0;
+    size_t tb = 0;
+    for (unsigned t = 0; t < s->ntextures; t++) {
+        size_t w = s->textures[t].w, h = s->textures[t].h;
+        for (unsigned l = 0; l < (s->textures[t].mip_levels ? s->textures[t].mip_levels : 1u); l++) {
+            tb += w * h * 3;
+            w = w > 1 ? w / 2 : 1;
+            h = h > 1 ? h / 2 : 1;
+        }
+    }
+    out->texture_bytes = tb;
 }
 
 static size_t work_size(const void *scene, uint16_t w, uint16_t h, uint16_t strip_rows)
@@ -83,7 +101,8 @@ static int init(struct render_ctx *ctx, const void *scene, uint16_t w, uint16_t 
 static int format(const void *scene, const char *path, uint16_t w, uint16_t h, struct scene_format *f,
                   char *msg, size_t msglen)
 {
-    if (!scene_format_choose(scene, w, h, NULL, 0, 0, f)) return 0;
+    if (!scene_format_choose(scene, w, h, NULL, 0, 0, f))
+        return scene_given_zero(scene, f->num_frac, path, msg, msglen);
     scene_format_refusal(f, path, msg, msglen);
     return -1;
 }

@@ -26,6 +26,13 @@ struct scene_info {
     /* ray tracer: what host_sim's cost estimate counts (0 for the rasterizer) */
     uint16_t nobjects;         /* objects (spheres, planes, triangles, CSG operands) */
     uint8_t recursion_depth, supersample, bvh;
+    /* rasterizer: what host_sim's cost estimate counts (0 for the ray tracer) */
+    uint32_t triangles;        /* a frame's: every instance's model's triangles */
+    uint16_t nprims, nlines;   /* 2-D primitives and 3-D lines */
+    uint8_t shadow_volumes;    /* chapter 15's shadow volumes: the triangles drawn again */
+    uint16_t shadow_map;       /* chapter 15's shadow map: its side (0: none) */
+    /* both: the texels the scene holds, every mip level (host_sim's --max-memory) */
+    size_t texture_bytes;
 };
 
 /* What scene_load, scene_parse and scene_read return besides 0
@@ -52,7 +59,9 @@ struct core_api {
     int num_frac;              /* NUM_FRAC of a fixed-point core, 0 in float and double */
     /* The number format the scene needs at w x h (tools/scene/scene_format.h):
      * 0 with f->num_frac set, or -1 with the refusal, one line naming PATH, in
-     * msg. Meaningful on the double core, whose scene holds the exact values. */
+     * msg: no format holds the scene, or (f->num_frac set) a value given in
+     * the scene would be 0 at that format (scene_parse.h, scene_given_zero).
+     * Meaningful on the double core, whose scene holds the exact values. */
     int (*format)(const void *scene, const char *path, uint16_t w, uint16_t h, struct scene_format *f,
                   char *msg, size_t msglen);
     /* Switches a loaded scene to the rasterizer's exact methods (perspective_step = 1,

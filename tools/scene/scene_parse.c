@@ -18,6 +18,7 @@
 #define _XOPEN_SOURCE 700   /* realpath */
 #endif
 #include <errno.h>
+#include <float.h>
 #include <math.h>
 #include <setjmp.h>
 #include <stddef.h>
@@ -337,6 +338,10 @@ static struct token lex(struct parser *p)
         errno = 0;
         t.num = strtod(buf, NULL);
         if (!isfinite(t.num)) fail_at(p, t.line, t.col, "number %s is too large", buf);
+        /* a literal below the smallest normal double would be read as 0 (or
+           a subnormal no numeric mode holds): an error, not a silent 0 */
+        if ((errno == ERANGE && t.num == 0) || (t.num != 0 && fabs(t.num) < DBL_MIN))
+            fail_at(p, t.line, t.col, "number %s is too small (under %g, it would be read as 0)", buf, DBL_MIN);
         t.t = T_NUM;
         return t;
     }
@@ -1709,8 +1714,11 @@ static double obj_num(struct obj_reader *r, const char *t, const char *what)
     }
     size_t off = (size_t)(t - r->buf);
     if (!digits || *c) obj_fail(r, off, "%s: '%s' is not a number", what, t);
+    errno = 0;
     double d = strtod(t, NULL);
     if (!isfinite(d)) obj_fail(r, off, "%s: number %s is too large", what, t);
+    if ((errno == ERANGE && d == 0) || (d != 0 && fabs(d) < DBL_MIN))
+        obj_fail(r, off, "%s: number %s is too small (under %g, it would be read as 0)", what, t, DBL_MIN);
     return d;
 }
 
@@ -2513,6 +2521,43 @@ static void read_scene(struct parser *p, const struct node *top, struct scene *s
     s->prims = b.prims;
     s->nlines = (uint16_t)b.nlines;
     s->lines = b.lines;
+}
+
+/* ---- values given that a format would round to 0 ---------------------------- */
+
+int scene_given_zero(const struct scene *s, int frac, const char *path, char *msg, size_t len)
+{
+    const double half = ldexp(1, -(frac + 1));
+    char what[96] = "";
+    double bad = 0;
+#define GIVEN(v, ...)                                                   \
+    do {                                                                \
+        double d_ = num_to_double(v);                                   \
+        if (!what[0] && d_ != 0 && fabs(d_) <= half) {                  \
+            snprintf(what, sizeof what, __VA_ARGS__);                   \
+            bad = d_;                                                   \
+        }                                                               \
+    } while (0)
+    for (int i = 0; i < s->nlights; i++) GIVEN(s->lights[i].intensity, "light %d intensity", i);
+    for (int i = 0; s->kind == SCENE_RAYTRACE && i < s->nobjects; i++) {
+        GIVEN(s->objects[i].mat.reflective, "object %d reflective", i);
+        GIVEN(s->objects[i].mat.transparency, "object %d transparency", i);
+        if (s->objects[i].shape == RT_SPHERE) GIVEN(s->objects[i].radius, "sphere %d radius", i);
+    }
+    for (int i = 0; s->kind == SCENE_RASTER && i < s->ninstances; i++) {
+        GIVEN(s->instances[i].scale, "instance %d scale", i);
+        GIVEN(s->instances[i].anim.rot_y_per_frame, "instance %d rotate_y", i);
+    }
+    GIVEN(s->camera_anim.rot_y_per_frame, "camera rotate_y");
+    if (s->kind == SCENE_RAYTRACE) {
+        GIVEN(s->rt.epsilon, "raytracer epsilon");
+        GIVEN(s->rt.t_min_primary, "raytracer t_min");
+    }
+#undef GIVEN
+    if (!what[0]) return 0;
+    snprintf(msg, len, "%s:1:1: error: %s %.6g would be 0 in the format Q%d.%d the scene needs (step %.3g): give 0 or "
+                       "a value of at least half a step", path, what, bad, 31 - frac, frac, ldexp(1, -frac));
+    return -1;
 }
 
 /* ---- entry points -------------------------------------------------------- */

@@ -63,4 +63,13 @@ void scene_free(struct scene *s);
  * receive the three quantities. Scenes without instances: 16. */
 int scene_depth_bits(const struct scene *s, double *far, double *step16, double *rmin);
 
+/* Values given in the scene whose 0 means something else (a light's
+ * intensity, a material's reflectivity or transparency, a sphere's radius,
+ * an instance's scale, a rotation per frame, the ray tracer's epsilon and
+ * t_min) that fixed point at NUM_FRAC frac would round to 0: meant for a
+ * scene parsed in the double build (its exact values), with the format the
+ * analysis chose (tools/scene/scene_format.h). 0, or -1 with one line
+ * "PATH:1:1: error: ..." (no newline) in msg naming the first such value. */
+int scene_given_zero(const struct scene *s, int frac, const char *path, char *msg, size_t len);
+
 #endif

@@ -51,12 +51,18 @@ TESTS     += tests/system/test_io_faults.sh:$(HOST_SIM_BIN_asan):$(BUILD)/scenec
 TESTS     += tests/system/test_hints.sh:$(HOST_SIM_BIN_asan):$(BUILD)/scenec
 # the format promise on generated extreme scenes (tools/scene/gen_extreme.py),
 # under the sanitizers: a bounded count here, `make extremes` for more
+# (family 2, round two: flat views and sizes, the book quadratic, mirrored
+# cameras, the camera inside, grazing planes, 3D lines)
 EXTREMES_COUNT ?= 300
+EXTREMES2_COUNT ?= 200
 TESTS     += tests/system/test_scene_extremes.sh:$(HOST_SIM_BIN_asan):1:$(EXTREMES_COUNT)
+TESTS     += tests/system/test_scene_extremes.sh:$(HOST_SIM_BIN_asan):9100:$(EXTREMES2_COUNT):2
 EXTREMES_SEEDS ?= 2 3 4 5 6 7 8 9 10 11
+EXTREMES2_SEEDS ?= 9100 9200 9300
 .PHONY: extremes
 extremes: $(HOST_SIM_BIN_asan)
-	$(Q)tests/support/run.sh $(foreach s,$(EXTREMES_SEEDS),tests/system/test_scene_extremes.sh:$(HOST_SIM_BIN_asan):$(s):1000)
+	$(Q)tests/support/run.sh $(foreach s,$(EXTREMES_SEEDS),tests/system/test_scene_extremes.sh:$(HOST_SIM_BIN_asan):$(s):1000) \
+	  $(foreach s,$(EXTREMES2_SEEDS),tests/system/test_scene_extremes.sh:$(HOST_SIM_BIN_asan):$(s):1000:2)
 TESTS     += tests/system/test_make_run.sh:$(BUILD)
 TEST_NEEDS_test_make_run := $(BUILD)/host_sim
 

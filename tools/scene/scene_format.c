@@ -475,6 +475,10 @@ static void scan_rt_book(const struct scene *s, struct scene_format *R, double h
         if (o->shape != RT_SPHERE) continue;
         double r = num_to_double(o->radius), co = reach + len3(o->center);
         double k3 = fmax(co * co, r * r);
+        /* the quadratic's terms scale as (|D| r)^2: the shortest direction
+         * (|D| >= d, a directional light's length) and this radius */
+        double sm = R->smallest_dir < 1e300 ? R->smallest_dir * r : r;
+        if (sm * sm < R->book_small) R->book_small = sm * sm;
         note(&R->square, d2, "sphere %d: the book's k1 = D.D", i);
         note(&R->square, 4 * d2 * k3, "sphere %d: the book's 4 k1 k3 (|CO| <= %.4g, |D| <= %.4g)", i, co, d);
         note(&R->square, 4 * d2 * co * co + 4 * d2 * k3,
@@ -510,22 +514,27 @@ static void scan_rt_rays(const struct scene *s, struct scene_format *R, double h
     if (s->rt.specular) note(&R->other, lmax * dmax, "specular: R.V of the longest light vector and view ray");
     if (dmin > 0) note(&R->other, R->position.value / dmin, "a ray parameter t: distance / |direction| (%.3g)", dmin);
     if (s->rt.formulation == 1) scan_rt_book(s, R, hmax, planes ? R->position.value : hmax, dmax, lmax);
+    int secondary = s->rt.recursion_depth > 0;
+    for (int k = 0; k < s->nlights; k++) secondary |= s->rt.shadows && s->lights[k].type != LIGHT_AMBIENT;
+    R->t_dir = secondary ? dmax : 0;
+    R->epsilon = fabs(num_to_double(s->rt.epsilon));
 }
 
 static void scan_rt(const struct scene *s, struct scene_format *R, int width, int height, double cam, double colour)
 {
     /* a ray from the viewport runs at most this far across the scene */
-    /* the primary directions step by Vw / W across and Vh / H down */
-    R->pixel_step = fmin(fabs(num_to_double(s->viewport_w)) / (width > 0 ? width : 1),
-                         fabs(num_to_double(s->viewport_h)) / (height > 0 ? height : 1));
+    /* the primary directions step by Vh / H across and down (the render's
+     * viewport width follows its aspect: Vw = Vh W / H, rt_init.c) */
+    double vh = fabs(num_to_double(s->viewport_h)), vwr = vh * width / (height > 0 ? height : 1);
+    R->pixel_step = vh / (height > 0 ? height : 1);
     smallest(R, R->pixel_step, "viewport step per pixel");
     smallest(R, num_to_double(s->rt.epsilon), "epsilon");
     note(&R->other, num_to_double(s->rt.t_min_primary), "t_min");
     note(&R->other, width > height ? width : height, "render size (pixel counts are num)");
-    /* canvas x times viewport size, before the division by the width */
-    note(&R->other, (width > height ? width : height) / 2.0 *
-                        fmax(num_to_double(s->viewport_w), num_to_double(s->viewport_h)),
-         "canvas coordinate x viewport size");
+    /* canvas x times viewport size, before the division by the width (a
+     * sub-pixel x for supersampling; columns' are formed wide) */
+    note(&R->other, vwr, "the render's viewport width Vh x W / H");
+    note(&R->other, fmax(width / 2.0 * vwr, height / 2.0 * vh), "canvas coordinate x viewport size");
     /* supersampling sums n^2 colours before dividing */
     int n = s->rt.supersample > 1 ? s->rt.supersample : 1;
     if (n > 1) note(&R->colour, colour * n * n, "supersample %d: the sum of %d colours", n, n * n);
@@ -755,6 +764,7 @@ static void scan(const struct scene *s, struct scene_format *R, int width, int h
     R->smallest_dir = 1e300;
     R->smallest_radius = 1e300;
     R->pixel_step = 1e300;
+    R->book_small = 1e300;
     double cam = len3(s->camera.position) + anim_reach(&s->camera_anim, s->frames);
     note(&R->position, cam, "camera position");
     double colour = scan_lights_view(s, R, cam);
@@ -841,6 +851,8 @@ int scene_format_choose(const struct scene *s, int width, int height, const int 
                  : f->smallest_radius < 256 * step                    ? SCENE_ILL_RADIUS
                  : f->smallest_dir * f->smallest_dir < 64 * step      ? SCENE_ILL_DIRECTION
                  : f->book_reach * step >= f->epsilon && f->book_reach > 0 ? SCENE_ILL_BOOK
+                 : f->book_small < 64 * step                            ? SCENE_ILL_BOOK_SMALL
+                 : f->t_dir * step > f->epsilon / 2                     ? SCENE_ILL_T_STEP
                  : f->near_d > 0 && f->near_d < 32 * step               ? SCENE_ILL_NEAR
                  : f->line_px * step > 0.25                             ? SCENE_ILL_LINE
                                                                       : 0;
@@ -917,7 +929,17 @@ void scene_format_refusal(const struct scene_format *f, const char *path, char *
                      f->big.value, f->epsilon, f->book_reach * ldexp(1.0, -f->ill_frac));
             return;
         }
-        if (f->ill == SCENE_ILL_LINE)
+        if (f->ill == SCENE_ILL_T_STEP)
+            snprintf(what, sizeof what,
+                     "a hit point P = O + D t, t in num, steps by the longest direction |D| = %.3g times the "
+                     "step, %.3g, over half of epsilon %.3g (shadow and reflected rays leave it)",
+                     f->t_dir, f->t_dir * ldexp(1.0, -f->ill_frac), f->epsilon);
+        else if (f->ill == SCENE_ILL_BOOK_SMALL)
+            snprintf(what, sizeof what,
+                     "with formulation = book, the sphere test's terms k2^2 and k1 k3 scale as (|D| r)^2 = %.3g "
+                     "(the shortest direction times the smallest radius), under 64 steps",
+                     f->book_small);
+        else if (f->ill == SCENE_ILL_LINE)
             snprintf(what, sizeof what,
                      "3D line %d's end moves %.3g pixels per step (ProjectVertex x d k / z of a small z), over "
                      "1/4 pixel",
@@ -938,7 +960,9 @@ void scene_format_refusal(const struct scene_format *f, const char *path, char *
         else
             snprintf(what, sizeof what, "%s has length %.3g, whose square %.3g is under 64 steps",
                      f->smallest_dir_what, f->smallest_dir, f->smallest_dir * f->smallest_dir);
-        const char *fix = f->ill == SCENE_ILL_LINE         ? "move the line away from z = 0"
+        const char *fix = f->ill == SCENE_ILL_T_STEP       ? "shorten the viewport's d, raise epsilon"
+                          : f->ill == SCENE_ILL_BOOK_SMALL   ? "use formulation = robust"
+                          : f->ill == SCENE_ILL_LINE         ? "move the line away from z = 0"
                           : f->ill == SCENE_ILL_NEAR         ? "move the viewport's d out"
                           : f->ill == SCENE_ILL_PIXEL_STEP ? "widen the viewport, render smaller"
                           : f->ill == SCENE_ILL_RADIUS   ? "make the sphere larger"

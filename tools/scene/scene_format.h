@@ -43,7 +43,7 @@ struct scene_format_range {
 /* Why a scene is ill-conditioned for fixed point (scene_format.ill). */
 enum scene_ill {
     SCENE_ILL_DIRECTION = 1, SCENE_ILL_RADIUS = 2, SCENE_ILL_PIXEL_STEP = 3, SCENE_ILL_INSIDE = 4, SCENE_ILL_BOOK = 5,
-    SCENE_ILL_NEAR = 6, SCENE_ILL_LINE = 7
+    SCENE_ILL_NEAR = 6, SCENE_ILL_LINE = 7, SCENE_ILL_BOOK_SMALL = 8, SCENE_ILL_T_STEP = 9
 };
 
 struct scene_format {
@@ -63,7 +63,11 @@ struct scene_format {
     double book_reach;         /* ray tracer, formulation = book with shadow or reflected rays: the
                                   farthest hit point from the camera (0: none), placed to about
                                   book_reach x 2^-NUM_FRAC, which must stay under epsilon */
-    double epsilon;            /* the scene's epsilon (SCENE_ILL_BOOK) */
+    double epsilon;            /* the scene's epsilon (SCENE_ILL_BOOK, SCENE_ILL_T_STEP) */
+    double t_dir;              /* ray tracer with shadow or reflected rays: the longest direction a hit
+                                  point is formed along (P = O + D t, t in num: P steps by |D| 2^-F) */
+    double book_small;         /* formulation = book: the smallest (|D| r)^2 of a sphere, the scale of its
+                                  quadratic's k2^2 and k1 k3 (1e300: none) */
     double near_d;             /* rasterizer: the near plane's distance d (0: none) */
     int pixel_at_depth;        /* rasterizer: pixel_step is a pixel's size at the nearest depth */
     double line_px;            /* rasterizer: pixels a 3D line's end moves per step of its x, y or z

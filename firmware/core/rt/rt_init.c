@@ -114,13 +114,15 @@ static void init_viewport(struct rt_state *rt)
     rt->wn = num_from_int(rt->w);
     rt->hn = num_from_int(rt->h);
     rt->vh = s->viewport_h;
-    rt->vw = num_div(num_mul(s->viewport_h, rt->wn), rt->hn);
+    /* Vh W / H with the product wide (a flat render's Vh W may pass the
+     * format where Vw does not; the same bits where it fits) */
+    rt->vw = wnum_div(num_mul_wide(s->viewport_h, rt->wn), wnum_from_num(rt->hn));
     rt->d = s->projection_d;
     rt->sx = num_div(rt->vw, rt->wn);
     rt->sy = num_div(rt->vh, rt->hn);
     /* viewport x of every column's centre sample (canvas_to_viewport) */
     for (uint16_t c = 0; c < rt->w; c++)
-        rt->col_x[c] = num_div(num_mul(num_from_int(c - rt->w / 2), rt->vw), rt->wn);
+        rt->col_x[c] = wnum_div(num_mul_wide(num_from_int(c - rt->w / 2), rt->vw), wnum_from_num(rt->wn));
     rt->row_y_row = -1;
     rt->dx_row = -1;
     if (rt->row_y_tab)

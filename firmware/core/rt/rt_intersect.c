@@ -334,7 +334,9 @@ static int intersect_ray_plane(const struct rt_state *rt, int16_t obj, struct rt
         *t = RT_T_FAR;
         return 1;
     }
-    *t = scale_t(num_div(num_, den), ts);
+    /* t' along ds in range, t = t' ts past it (a short direction): far too */
+    num t_ = scale_t(num_div(num_, den), ts);
+    *t = t_ >= RT_T_FAR ? RT_T_FAR : t_;
     return 1;
 }
 

@@ -121,8 +121,10 @@ static rgb trace_ray(struct rt_state *rt, struct rt_ray *ray, num t_min, num t_m
  * NUM_MAX / 8 from its origin. The true point lies farther than the format
  * reaches; this one is far from the lights of a scene the format analysis
  * sized (every position under NUM_MAX / 2), so a light vector L - P points
- * nearly as the true one does, and L - P stays inside the format. The hit's
- * order among the others does not depend on it (RT_T_FAR). */
+ * nearly as the true one does, and L - P stays inside the format. (Moved
+ * onto the plane, so that N.L is the true one's, it measured worse:
+ * demo/mirror-spheres 71.2 -> 65.7 dB.) The hit's order among the others
+ * does not depend on it (RT_T_FAR). */
 vec3 rt_far_point(const struct rt_ray *ray)
 {
     num len = v3_len(ray->d);

@@ -36,13 +36,18 @@ static int send(struct panel *p, uint16_t c, const uint8_t *params, size_t n)
     return c == PANEL_CMD_NONE ? 0 : dcs_command(&p->dcs, (uint8_t)c, params, n);
 }
 
-/* The window x0..x1 x y0..y1 and the start of a memory write into it. */
+/* The window x0..x1 x y0..y1 and the start of a memory write into it. A
+ * controller without a row/column exchange (xy_by_driver) takes the
+ * window's rows as columns and its columns as rows in odd rotations; the
+ * offsets stay with the commands (x_off: the column command's). */
 static int open_window(struct panel *p, uint16_t x0, uint16_t y0, uint16_t x1, uint16_t y1)
 {
     const struct panel_ctl *c = panel_ctl(p);
     if (c->set_cols == PANEL_CMD_NONE || c->set_rows == PANEL_CMD_NONE || c->write_mem == PANEL_CMD_NONE)
         return -1;
-    int rc = dcs_set_window_cmds(&p->dcs, (uint8_t)c->set_cols, (uint8_t)c->set_rows, c->addr_bytes, x0, y0, x1, y1);
+    int rc = (c->xy_by_driver && (p->rotation & 1))
+                 ? dcs_set_window_cmds(&p->dcs, (uint8_t)c->set_cols, (uint8_t)c->set_rows, c->addr_bytes, y0, x0, y1, x1)
+                 : dcs_set_window_cmds(&p->dcs, (uint8_t)c->set_cols, (uint8_t)c->set_rows, c->addr_bytes, x0, y0, x1, y1);
     return rc ? rc : dcs_write_begin_cmd(&p->dcs, (uint8_t)c->write_mem);
 }
 

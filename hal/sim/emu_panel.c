@@ -1,5 +1,5 @@
 /* SPDX-License-Identifier: MIT */
-/* emu_panel.c — emulated ST7789 / ILI9341 / ST7735S controller behind a module glass.
+/* emu_panel.c — emulated ST7789 / ILI9341 / ST7735S / SSD1351 controller behind a module glass.
  *
  * Model (datasheet behaviour; the rules are listed in docs/hal.md):
  * - A byte with D/C low is a command; with D/C high, a parameter of the
@@ -15,6 +15,13 @@
  *   least 120 ms after SLPOUT.
  * - Memory size, COLMOD after reset and what SWRESET does to COLMOD are the
  *   model's (struct model below).
+ * - The SSD1351 is not DCS (its own rules, ssd_* below): window 15h/75h
+ *   with one-byte addresses 0..127, write RAM 5Ch in 65k colours only,
+ *   re-map A0h (vertical address increment at write; column remap, COM scan
+ *   direction, COM split and colour order when the glass is shown), the
+ *   command lock FDh (16h: every command but FDh ignored; after a reset
+ *   A2h B1h B3h BBh BEh C1h are refused until FDh B1h), sleep AEh/AFh and no
+ *   waits but the reset pulse (2 us).
  */
 #include <stdio.h>
 #include <string.h>
@@ -24,11 +31,12 @@
 #define M_ST (1u << EMU_ST7789)
 #define M_IL (1u << EMU_ILI9341)
 #define M_S7 (1u << EMU_ST7735S)
+#define M_SD (1u << EMU_SSD1351)
 #define M_SI (M_ST | M_IL)
 #define M_ALL (M_ST | M_IL | M_S7)
 
 /* Command flags (emu_commands.def, the table of accepted commands). */
-enum { F_PIXELS = 1, F_NOTEMU = 2, F_READ = 4 };
+enum { F_PIXELS = 1, F_NOTEMU = 2, F_READ = 4, F_LOCKB = 8 };
 
 struct cmd_info {
     uint8_t code;
@@ -52,10 +60,13 @@ static const struct model {
     uint8_t colmod_swreset;      /* 1: SWRESET resets COLMOD too, 0: keeps it */
     uint8_t colmod_16bit;        /* the 16-bit value named in the violation */
     uint16_t slpout_busy_ms;     /* no command for this long after SLPOUT */
+    uint8_t dcs;                 /* 1: MIPI DCS rules, 0: the SSD1351's (ssd_*) */
+    uint32_t reset_pulse_ns;     /* shortest RESET low pulse */
 } models[] = {
-    [EMU_ST7789] = { "ST7789", 240, 320, 0x66, 1, 0x55, 5 },
-    [EMU_ILI9341] = { "ILI9341", 240, 320, 0x66, 1, 0x55, 5 },
-    [EMU_ST7735S] = { "ST7735S", 132, 162, 0x06, 0, 0x05, 120 },
+    [EMU_ST7789] = { "ST7789", 240, 320, 0x66, 1, 0x55, 5, 1, 10000 },
+    [EMU_ILI9341] = { "ILI9341", 240, 320, 0x66, 1, 0x55, 5, 1, 10000 },
+    [EMU_ST7735S] = { "ST7735S", 132, 162, 0x06, 0, 0x05, 120, 1, 10000 },
+    [EMU_SSD1351] = { "SSD1351", 128, 128, 0, 0, 0, 0, 0, 2000 },
 };
 #define MODEL(p) (&models[(p)->mod->model])
 
@@ -138,6 +149,10 @@ static void reset_regs(struct emu_panel *p, int hw)
     if (hw || MODEL(p)->colmod_swreset)
         p->colmod = MODEL(p)->colmod_reset;
     p->madctl = 0;
+    p->remap = 0x40;            /* 65k colours */
+    p->locked = 0;
+    p->protect = 1;
+    p->mode = 0xA6;
     p->window_set = 0;
     p->cont_valid = 0;
     p->xs = 0;
@@ -160,7 +175,7 @@ static void set_wait(uint64_t *until, const char **why, uint64_t t, uint64_t d, 
 static void hw_reset_done(struct emu_panel *p, uint64_t t)
 {
     reset_regs(p, 1);
-    set_wait(&p->busy_until_ns, &p->busy_why, t, 5 * MS, "hardware reset", &p->busy_since_ns);
+    set_wait(&p->busy_until_ns, &p->busy_why, t, MODEL(p)->dcs ? 5 * MS : 0, "hardware reset", &p->busy_since_ns);
     set_wait(&p->slpout_ok_ns, &p->slpout_why, t, 120 * MS, "hardware reset", &p->slpout_since_ns);
     p->slpin_ok_ns = 0;
 }
@@ -255,6 +270,156 @@ static void start_write(struct emu_panel *p, uint8_t code)
     }
 }
 
+/* ---- SSD1351 ---------------------------------------------------------------- */
+
+/* A command byte arrived (known, emulated): the lock, then its effect. */
+static void ssd_command(struct emu_panel *p, uint8_t code, const struct cmd_info *c)
+{
+    if (p->locked && code != 0xFD) {
+        vcmd(p, code, "ignored: the command lock is on (FDh 16h)");
+        return;
+    }
+    if ((c->flags & F_LOCKB) && p->protect) {
+        vcmd(p, code, "refused: locked until the command lock is given B1h (FDh B1h)");
+        return;
+    }
+    p->cur = code;
+    p->nparam = 0;
+    switch (code) {
+    case 0xAE: p->asleep = 1; break;
+    case 0xAF: p->asleep = 0; break;
+    case 0xA4: case 0xA5: case 0xA6: case 0xA7: p->mode = code; break;
+    case 0x5C:
+        if ((p->remap & 0xC0) != 0x40) {
+            char what[100];
+            snprintf(what, sizeof what, "memory write with re-map 0x%02X: %s colours (only 65k, A0h bits 7:6 01b, emulated)",
+                     (unsigned)p->remap, (p->remap & 0x80) ? "262k" : "256");
+            vcmd(p, code, what);
+        }
+        break;
+    default: break;
+    }
+}
+
+static void ssd_execute(struct emu_panel *p)
+{
+    const uint8_t *a = p->param;
+    char what[100];
+    switch (p->cur) {
+    case 0x15:
+    case 0x75: {
+        int col = p->cur == 0x15;
+        uint16_t lim = col ? MODEL(p)->mem_w : MODEL(p)->mem_h;
+        if (a[0] > a[1]) {
+            snprintf(what, sizeof what, "start %u after end %u", (unsigned)a[0], (unsigned)a[1]);
+            vcmd(p, p->cur, what);
+        } else if (a[1] >= lim) {
+            snprintf(what, sizeof what, "%s %u..%u outside the memory (0..%u)", col ? "columns" : "rows",
+                     (unsigned)a[0], (unsigned)a[1], (unsigned)(lim - 1));
+            vcmd(p, p->cur, what);
+        } else if (col) {
+            p->xs = a[0]; p->xe = a[1]; p->cx = a[0];
+        } else {
+            p->ys = a[0]; p->ye = a[1]; p->cy = a[0];
+        }
+        break;
+    }
+    case 0xA0:
+        if (a[0] & 0x08)
+            vcmd(p, p->cur, "reserved bit 3 set");
+        else
+            p->remap = a[0];
+        break;
+    case 0xA1:
+    case 0xA2:
+        if (a[0])
+            vcmd(p, p->cur, p->cur == 0xA1 ? "not emulated (a start line other than 0)"
+                                           : "not emulated (a display offset other than 0)");
+        break;
+    case 0xCA:
+        if (a[0] != 127)
+            vcmd(p, p->cur, "not emulated (a multiplex ratio other than 127: 128 rows)");
+        break;
+    case 0xFD:
+        switch (a[0]) {
+        case 0x12: p->locked = 0; break;
+        case 0x16: p->locked = 1; break;
+        case 0xB0: p->protect = 1; break;
+        case 0xB1: p->protect = 0; break;
+        default:
+            snprintf(what, sizeof what, "parameter 0x%02X (12h, 16h, B0h or B1h)", (unsigned)a[0]);
+            vcmd(p, p->cur, what);
+            break;
+        }
+        break;
+    default: break;
+    }
+}
+
+/* A pixel at the address counter; it moves along the columns (A0h bit 0
+ * clear) or along the rows, wrapping in the window. */
+static void ssd_pixel(struct emu_panel *p, uint16_t v)
+{
+    p->mem[p->cy][p->cx] = v;
+    p->pixels_written++;
+    if (p->remap & 1) {
+        if (p->cy < p->ye) {
+            p->cy++;
+        } else {
+            p->cy = p->ys;
+            p->cx = p->cx < p->xe ? (uint16_t)(p->cx + 1) : p->xs;
+        }
+    } else if (p->cx < p->xe) {
+        p->cx++;
+    } else {
+        p->cx = p->xs;
+        p->cy = p->cy < p->ye ? (uint16_t)(p->cy + 1) : p->ys;
+    }
+}
+
+/* The glass: its top row is COM127 and its left column SEG0 (mirror_x:
+ * SEG127). A0h bit 1 maps column address 127 to SEG0, bit 4 scans from
+ * COM127 (row 0 on the top row), bit 5 splits odd and even COMs as these
+ * glasses are wired (clear: the rows interleave), bit 2 orders the colours
+ * C-B-A. Sleep (AEh) shows black, A4h black, A5h white, A7h inverts. */
+static void ssd_glass(const struct emu_panel *p, uint16_t *out, uint16_t w, uint16_t h)
+{
+    const struct emu_module *m = p->mod;
+    uint16_t mw = MODEL(p)->mem_w, mh = MODEL(p)->mem_h;
+    int dark = p->asleep || !p->reset || p->mode == 0xA4;
+    int invert = (p->mode == 0xA7) != (m->inverted != 0);
+    int swap = ((p->remap & 0x04) != 0) != (m->bgr != 0);
+    uint16_t gw = m->glass_w, gh = m->glass_h;
+    for (uint16_t oy = 0; oy < h; oy++)
+        for (uint16_t ox = 0; ox < w; ox++) {
+            uint16_t gx, gy;
+            switch (p->view) {
+            case 1: gx = (uint16_t)(gw - 1 - oy); gy = ox; break;
+            case 2: gx = (uint16_t)(gw - 1 - ox); gy = (uint16_t)(gh - 1 - oy); break;
+            case 3: gx = oy; gy = (uint16_t)(gh - 1 - ox); break;
+            default: gx = ox; gy = oy; break;
+            }
+            uint16_t seg = (uint16_t)(m->mem_x + (m->mirror_x ? gw - 1 - gx : gx));
+            uint16_t line = (uint16_t)(m->mem_y + gy);      /* counted from COM127 */
+            uint16_t col = (p->remap & 0x02) ? (uint16_t)(mw - 1 - seg) : seg;
+            uint16_t row = (p->remap & 0x10) ? line : (uint16_t)(mh - 1 - line);
+            if (!(p->remap & 0x20))
+                row = (row & 1) ? (uint16_t)(mh / 2 + row / 2) : (uint16_t)(row / 2);
+            uint16_t v = p->mem[row][col];
+            if (dark) {
+                v = 0x0000;
+            } else if (p->mode == 0xA5) {
+                v = 0xFFFF;
+            } else {
+                if (invert)
+                    v = (uint16_t)~v;
+                if (swap)
+                    v = (uint16_t)((v & 0x07E0) | (v >> 11) | ((v & 0x1F) << 11));
+            }
+            out[(size_t)oy * w + ox] = v;
+        }
+}
+
 static void command(struct emu_panel *p, uint8_t code, uint64_t t)
 {
     end_command(p);
@@ -269,6 +434,10 @@ static void command(struct emu_panel *p, uint8_t code, uint64_t t)
     }
     if (c->flags & F_NOTEMU) {
         vcmd(p, code, "not emulated");
+        return;
+    }
+    if (!MODEL(p)->dcs) {
+        ssd_command(p, code, c);
         return;
     }
     if (too_soon(p, code, t, p->busy_until_ns, p->busy_since_ns, p->busy_why))
@@ -321,6 +490,10 @@ static void execute(struct emu_panel *p)
 {
     const uint8_t *a = p->param;
     char what[100];
+    if (!MODEL(p)->dcs) {
+        ssd_execute(p);
+        return;
+    }
     switch (p->cur) {
     case 0x2A:
     case 0x2B: {
@@ -354,6 +527,10 @@ static void execute(struct emu_panel *p)
 
 static void pixel(struct emu_panel *p, uint16_t v)
 {
+    if (!MODEL(p)->dcs) {
+        ssd_pixel(p, v);
+        return;
+    }
     uint16_t c = p->cx, r = p->cy;
     if (p->madctl & 0x20) { c = p->cy; r = p->cx; }
     if (p->madctl & 0x40) c = (uint16_t)(MODEL(p)->mem_w - 1 - c);
@@ -443,10 +620,10 @@ void emu_panel_line(struct emu_panel *p, int line, int level, uint64_t t_ns)
             p->cur = -1;
             p->half = 0;
         } else if (!p->reset && level) {
-            if (t_ns - p->reset_low_ns < 10000) {
+            if (t_ns - p->reset_low_ns < MODEL(p)->reset_pulse_ns) {
                 char what[60];
-                snprintf(what, sizeof what, "pulse of %llu ns, needs 10 us",
-                         (unsigned long long)(t_ns - p->reset_low_ns));
+                snprintf(what, sizeof what, "pulse of %llu ns, needs %u us",
+                         (unsigned long long)(t_ns - p->reset_low_ns), (unsigned)(MODEL(p)->reset_pulse_ns / 1000));
                 violate(p, "RESET", -1, p->offset, what);
             } else {
                 hw_reset_done(p, t_ns);
@@ -505,6 +682,10 @@ int emu_panel_glass(const struct emu_panel *p, uint16_t *out, uint16_t w, uint16
     const struct emu_module *m = p->mod;
     if (w != emu_panel_glass_width(p) || h != emu_panel_glass_height(p))
         return -1;
+    if (!MODEL(p)->dcs) {
+        ssd_glass(p, out, w, h);
+        return 0;
+    }
     int dark = p->asleep || !p->display_on || !p->bl || !p->reset;
     uint16_t off = (m->normally_black || !p->bl) ? 0x0000 : 0xFFFF;
     int invert = p->inverted != m->inverted;

@@ -1,10 +1,11 @@
 /* SPDX-License-Identifier: MIT */
-/* emu_panel.h — an emulated SPI display controller (ST7789, ILI9341, ST7735S).
+/* emu_panel.h — an emulated SPI display controller (ST7789, ILI9341, ST7735S,
+ * SSD1351).
  *
  * Decodes the byte stream and line changes a driver produces, as the
  * controllers' datasheets describe, keeps the controller's frame memory
  * (RGB565, in the controller's native orientation: 240 columns x 320 rows,
- * 132 x 162 on the ST7735S)
+ * 132 x 162 on the ST7735S, 128 x 128 on the SSD1351)
  * and shows what the module's glass displays.
  *
  * Strict: the first protocol violation is recorded as one line,
@@ -30,7 +31,7 @@
 #define EMU_MEM_H 320   /* controller memory rows (native; the largest model's) */
 #define EMU_MSG_LEN 160
 
-enum emu_model { EMU_ST7789 = 0, EMU_ILI9341 = 1, EMU_ST7735S = 2 };
+enum emu_model { EMU_ST7789 = 0, EMU_ILI9341 = 1, EMU_ST7735S = 2, EMU_SSD1351 = 3 };
 
 /* A module: a controller behind a glass. Facts of the hardware, not of the
  * driver; the modules are the GLASS lines of hal/panels.def. */
@@ -68,6 +69,10 @@ struct emu_panel {
     uint8_t hi;
     /* controller state */
     uint8_t asleep, display_on, inverted, idle, colmod, madctl;
+    uint8_t remap;               /* SSD1351: re-map / colour depth (A0h) */
+    uint8_t locked;              /* SSD1351: command lock on (FDh 16h) */
+    uint8_t protect;             /* SSD1351: A2h B1h B3h BBh BEh C1h refused (FDh B0h, reset) */
+    uint8_t mode;                /* SSD1351: display mode, A4h..A7h */
     uint8_t window_set;          /* bit 0: CASET seen, bit 1: RASET seen */
     uint8_t cont_valid;          /* RAMWRC may continue */
     uint16_t xs, xe, ys, ye;     /* window (logical, inclusive) */

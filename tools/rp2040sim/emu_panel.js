@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
 'use strict';
-/* emu_panel.js — the emulated ST7789 / ILI9341 / ST7735S controller of hal/sim/emu_panel.c,
+/* emu_panel.js — the emulated ST7789 / ILI9341 / ST7735S / SSD1351 controller of hal/sim/emu_panel.c,
  * ported line for line so the emulated Pico and host_sim decode the same bus
  * the same way (same rules, same violation lines; tools/rp2040sim/replay_vectors.js
  * and tests/unit/test_panel_vectors.c replay the same vectors through both). Keep the two in step. */
@@ -14,19 +14,22 @@ const MEM_H = 320;
 const ST = 0;
 const IL = 1;
 const S7 = 2;
+const SD = 3;
 const M_ST = 1 << ST;
 const M_IL = 1 << IL;
 const M_S7 = 1 << S7;
+const M_SD = 1 << SD;
 const M_SI = M_ST | M_IL;
 const M_ALL = M_ST | M_IL | M_S7;
 const F_PIXELS = 1;
 const F_NOTEMU = 2;
 const F_READ = 4;   /* a read command: the bytes after it are its read phase (dummy clocks) */
+const F_LOCKB = 8;  /* SSD1351: refused until the command lock is given B1h */
 
 /* The accepted commands: the CMD lines of hal/sim/emu_commands.def, the table
  * hal/sim/emu_panel.c compiles in. */
 function readCommands(file) {
-  const consts = { M_ALL, M_SI, M_ST, M_IL, M_S7, F_PIXELS, F_NOTEMU, F_READ, 0: 0 };
+  const consts = { M_ALL, M_SI, M_ST, M_IL, M_S7, M_SD, F_PIXELS, F_NOTEMU, F_READ, F_LOCKB, 0: 0 };
   const cmds = [];
   const text = fs.readFileSync(file, 'utf8');
   for (const m of text.matchAll(/^CMD\((0x[0-9A-F]{2}), *(\w+), *(\d+), *(\d+), *(\w+), *"([^"]*)"\)/gm)) {
@@ -41,11 +44,13 @@ const CMDS = readCommands(path.join(__dirname, '..', '..', 'hal', 'sim', 'emu_co
 
 /* Facts of each controller model the rules depend on (struct model in
  * hal/sim/emu_panel.c): memory size, COLMOD after a hardware reset, whether
- * SWRESET resets COLMOD, the 16-bit value, the wait after SLPOUT (ms). */
+ * SWRESET resets COLMOD, the 16-bit value, the wait after SLPOUT (ms),
+ * DCS rules or the SSD1351's, the shortest reset pulse (ns). */
 const MODELS = [
-  { name: 'ST7789', memW: 240, memH: 320, colmodReset: 0x66, colmodSwreset: 1, colmod16: 0x55, slpoutBusyMs: 5 },
-  { name: 'ILI9341', memW: 240, memH: 320, colmodReset: 0x66, colmodSwreset: 1, colmod16: 0x55, slpoutBusyMs: 5 },
-  { name: 'ST7735S', memW: 132, memH: 162, colmodReset: 0x06, colmodSwreset: 0, colmod16: 0x05, slpoutBusyMs: 120 },
+  { name: 'ST7789', memW: 240, memH: 320, colmodReset: 0x66, colmodSwreset: 1, colmod16: 0x55, slpoutBusyMs: 5, dcs: 1, resetPulseNs: 10000 },
+  { name: 'ILI9341', memW: 240, memH: 320, colmodReset: 0x66, colmodSwreset: 1, colmod16: 0x55, slpoutBusyMs: 5, dcs: 1, resetPulseNs: 10000 },
+  { name: 'ST7735S', memW: 132, memH: 162, colmodReset: 0x06, colmodSwreset: 0, colmod16: 0x05, slpoutBusyMs: 120, dcs: 1, resetPulseNs: 10000 },
+  { name: 'SSD1351', memW: 128, memH: 128, colmodReset: 0, colmodSwreset: 0, colmod16: 0, slpoutBusyMs: 0, dcs: 0, resetPulseNs: 2000 },
 ];
 
 /* The modules and the panels they show: the GLASS and PANEL lines of
@@ -76,7 +81,7 @@ function readPanels(file) {
   for (const [c, f] of Object.entries(controllers)) if (!(c in find)) find[c] = f;
   return { MODULES: modules, FIND: find };
 }
-const MODEL = { ST7789: ST, ILI9341: IL, ST7735S: S7 };
+const MODEL = { ST7789: ST, ILI9341: IL, ST7735S: S7, SSD1351: SD };
 const { MODULES, FIND } = readPanels(path.join(__dirname, '..', '..', 'hal', 'panels.def'));
 
 function hex2(v) { return v.toString(16).toUpperCase().padStart(2, '0'); }
@@ -133,12 +138,13 @@ class EmuPanel {
     this.asleep = 1; this.displayOn = 0; this.inverted = 0; this.idle = 0;
     if (hw || this.model.colmodSwreset) this.colmod = this.model.colmodReset;
     this.madctl = 0; this.windowSet = 0; this.contValid = 0;
+    this.remap = 0x40; this.locked = 0; this.protect = 1; this.mode = 0xA6;
     this.xs = 0; this.xe = this.model.memW - 1; this.ys = 0; this.ye = this.model.memH - 1; this.cx = 0; this.cy = 0;
   }
 
   hwResetDone(t) {
     this.resetRegs(true);
-    this.busyUntil = t + 5 * MS; this.busyWhy = 'hardware reset'; this.busySince = t;
+    this.busyUntil = t + (this.model.dcs ? 5 * MS : 0); this.busyWhy = 'hardware reset'; this.busySince = t;
     this.slpoutOk = t + 120 * MS; this.slpoutWhy = 'hardware reset'; this.slpoutSince = t;
     this.slpinOk = 0;
   }
@@ -187,6 +193,7 @@ class EmuPanel {
     const c = this.lookup(code);
     if (!c) { this.vcmd(code, `not an ${this.model.name} command`); return; }
     if (c.flags & F_NOTEMU) { this.vcmd(code, 'not emulated'); return; }
+    if (!this.model.dcs) { this.ssdCommand(code, c); return; }
     if (this.tooSoon(code, t, this.busyUntil, this.busySince, this.busyWhy)) return;
     this.cur = code; this.nparam = 0;
     switch (code) {
@@ -222,6 +229,7 @@ class EmuPanel {
 
   execute() {
     const a = this.param;
+    if (!this.model.dcs) { this.ssdExecute(); return; }
     switch (this.cur) {
       case 0x2A: case 0x2B: {
         const s = (a[0] << 8) | a[1], e = (a[2] << 8) | a[3];
@@ -244,6 +252,7 @@ class EmuPanel {
   }
 
   pixel(v) {
+    if (!this.model.dcs) { this.ssdPixel(v); return; }
     let c = this.cx, r = this.cy;
     if (this.madctl & 0x20) { c = this.cy; r = this.cx; }
     if (this.madctl & 0x40) c = this.model.memW - 1 - c;
@@ -310,7 +319,9 @@ class EmuPanel {
           this.half = 0;
         }
         else if (!this.reset && level) {
-          if (t - this.resetLowNs < 10000) this.violate('RESET', -1, this.offset, `pulse of ${t - this.resetLowNs} ns, needs 10 us`);
+          if (t - this.resetLowNs < this.model.resetPulseNs) {
+            this.violate('RESET', -1, this.offset, `pulse of ${t - this.resetLowNs} ns, needs ${Math.floor(this.model.resetPulseNs / 1000)} us`);
+          }
           else this.hwResetDone(t);
         }
         this.reset = level;
@@ -342,6 +353,7 @@ class EmuPanel {
   glass() {
     const m = this.mod, w = this.glassWidth(), h = this.glassHeight();
     const out = new Uint16Array(w * h);
+    if (!this.model.dcs) { this.ssdGlass(out, w, h); return out; }
     const dark = this.asleep || !this.displayOn || !this.bl || !this.reset;
     const off = (m.normallyBlack || !this.bl) ? 0x0000 : 0xFFFF;
     const invert = this.inverted !== m.inverted;
@@ -370,6 +382,116 @@ class EmuPanel {
       }
     }
     return out;
+  }
+
+  /* ---- SSD1351 (ssd_* in hal/sim/emu_panel.c) ---- */
+
+  ssdCommand(code, c) {
+    if (this.locked && code !== 0xFD) { this.vcmd(code, 'ignored: the command lock is on (FDh 16h)'); return; }
+    if ((c.flags & F_LOCKB) && this.protect) {
+      this.vcmd(code, 'refused: locked until the command lock is given B1h (FDh B1h)');
+      return;
+    }
+    this.cur = code; this.nparam = 0;
+    switch (code) {
+      case 0xAE: this.asleep = 1; break;
+      case 0xAF: this.asleep = 0; break;
+      case 0xA4: case 0xA5: case 0xA6: case 0xA7: this.mode = code; break;
+      case 0x5C:
+        if ((this.remap & 0xC0) !== 0x40) {
+          this.vcmd(code, `memory write with re-map 0x${hex2(this.remap)}: ${(this.remap & 0x80) ? '262k' : '256'} colours (only 65k, A0h bits 7:6 01b, emulated)`);
+        }
+        break;
+      default: break;
+    }
+  }
+
+  ssdExecute() {
+    const a = this.param;
+    switch (this.cur) {
+      case 0x15: case 0x75: {
+        const col = this.cur === 0x15;
+        const lim = col ? this.model.memW : this.model.memH;
+        if (a[0] > a[1]) this.vcmd(this.cur, `start ${a[0]} after end ${a[1]}`);
+        else if (a[1] >= lim) this.vcmd(this.cur, `${col ? 'columns' : 'rows'} ${a[0]}..${a[1]} outside the memory (0..${lim - 1})`);
+        else if (col) { this.xs = a[0]; this.xe = a[1]; this.cx = a[0]; }
+        else { this.ys = a[0]; this.ye = a[1]; this.cy = a[0]; }
+        break;
+      }
+      case 0xA0:
+        if (a[0] & 0x08) this.vcmd(this.cur, 'reserved bit 3 set');
+        else this.remap = a[0];
+        break;
+      case 0xA1: case 0xA2:
+        if (a[0]) {
+          this.vcmd(this.cur, this.cur === 0xA1 ? 'not emulated (a start line other than 0)'
+            : 'not emulated (a display offset other than 0)');
+        }
+        break;
+      case 0xCA:
+        if (a[0] !== 127) this.vcmd(this.cur, 'not emulated (a multiplex ratio other than 127: 128 rows)');
+        break;
+      case 0xFD:
+        switch (a[0]) {
+          case 0x12: this.locked = 0; break;
+          case 0x16: this.locked = 1; break;
+          case 0xB0: this.protect = 1; break;
+          case 0xB1: this.protect = 0; break;
+          default: this.vcmd(this.cur, `parameter 0x${hex2(a[0])} (12h, 16h, B0h or B1h)`); break;
+        }
+        break;
+      default: break;
+    }
+  }
+
+  ssdPixel(v) {
+    this.mem[this.cy * MEM_W + this.cx] = v;
+    this.pixelsWritten++;
+    if (this.remap & 1) {
+      if (this.cy < this.ye) { this.cy++; return; }
+      this.cy = this.ys;
+      this.cx = this.cx < this.xe ? this.cx + 1 : this.xs;
+    } else {
+      if (this.cx < this.xe) { this.cx++; return; }
+      this.cx = this.xs;
+      this.cy = this.cy < this.ye ? this.cy + 1 : this.ys;
+    }
+    /* the window's last pixel: its end and its size in pixels */
+    if (this.cx === this.xs && this.cy === this.ys && this.onWrap) {
+      this.onWrap(this.xe, this.ye, (this.xe - this.xs + 1) * (this.ye - this.ys + 1));
+    }
+  }
+
+  ssdGlass(out, w, h) {
+    const m = this.mod, mw = this.model.memW, mh = this.model.memH;
+    const dark = this.asleep || !this.reset || this.mode === 0xA4;
+    const invert = (this.mode === 0xA7) !== (m.inverted !== 0);
+    const swap = ((this.remap & 0x04) !== 0) !== (m.bgr !== 0);
+    const gw = m.gw, gh = m.gh;
+    for (let oy = 0; oy < h; oy++) {
+      for (let ox = 0; ox < w; ox++) {
+        let gx, gy;
+        switch (this.view) {
+          case 1: gx = gw - 1 - oy; gy = ox; break;
+          case 2: gx = gw - 1 - ox; gy = gh - 1 - oy; break;
+          case 3: gx = oy; gy = gh - 1 - ox; break;
+          default: gx = ox; gy = oy; break;
+        }
+        const seg = m.memX + (m.mirrorX ? gw - 1 - gx : gx);
+        const line = m.memY + gy;
+        const col = (this.remap & 0x02) ? mw - 1 - seg : seg;
+        let row = (this.remap & 0x10) ? line : mh - 1 - line;
+        if (!(this.remap & 0x20)) row = (row & 1) ? (mh >> 1) + (row >> 1) : row >> 1;
+        let v = this.mem[row * MEM_W + col];
+        if (dark) v = 0;
+        else if (this.mode === 0xA5) v = 0xFFFF;
+        else {
+          if (invert) v = (~v) & 0xffff;
+          if (swap) v = (v & 0x07E0) | (v >> 11) | ((v & 0x1F) << 11);
+        }
+        out[oy * w + ox] = v;
+      }
+    }
   }
 
   memAt(col, row) { return (col < this.model.memW && row < this.model.memH) ? this.mem[row * MEM_W + col] : 0; }

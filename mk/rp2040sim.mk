@@ -28,6 +28,9 @@ TESTS     += tests/system/test_rp2040sim_cube.sh:$(BUILD):$(FW_CUBE_FRAMES):cgfs
 # and on the ST7735S 1.8" module, 128x160
 TEST_DEPS += $(FW_OUT)/pico/cgfs-cube-st7735-1core.elf
 TESTS     += tests/system/test_rp2040sim_cube.sh:$(BUILD):$(FW_CUBE_FRAMES):cgfs-cube-st7735-1core:st7735_128x160:128x160
+# and on the SSD1351 OLED module, 128x128 (not DCS)
+TEST_DEPS += $(FW_OUT)/pico/cgfs-cube-ssd1351-1core.elf
+TESTS     += tests/system/test_rp2040sim_cube.sh:$(BUILD):$(FW_CUBE_FRAMES):cgfs-cube-ssd1351-1core:ssd1351_128x128:128x128
 # the two-core images on both emulated cores (tools/rp2040sim/dualcore.js)
 TEST_DEPS += $(FW_OUT)/pico/cgfs.elf $(FW_OUT)/pico/cgfs-book.elf
 TESTS     += tests/system/test_rp2040sim_dual.sh:$(BUILD)

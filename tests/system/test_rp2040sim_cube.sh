@@ -15,8 +15,9 @@
 # ~10 s of emulation (0.13 G cycles). IMAGE, PANEL and SIZE run another
 # image of the cube scenes: cgfs-cube-ili9341-1core ili9341_320x240 320x240,
 # the ILI9341 module in landscape (its scenes compiled at 320x240, format in
-# fw_cube320_num_frac.h), or cgfs-cube-st7735-1core st7735_128x160 128x160, the
-# ST7735S 1.8" module (fw_cube128_num_frac.h); the cases' names then carry
+# fw_cube320_num_frac.h), cgfs-cube-st7735-1core st7735_128x160 128x160, the
+# ST7735S 1.8" module (fw_cube128_num_frac.h), or cgfs-cube-ssd1351-1core
+# ssd1351_128x128 128x128, the SSD1351 OLED (fw_cube128sq_num_frac.h); the cases' names then carry
 # "_<SIZE>".
 # usage: test_rp2040sim_cube.sh BUILD_DIR [FRAMES_PER_SCENE [IMAGE PANEL SIZE]]
 set -u
@@ -30,6 +31,7 @@ set=cube tag=
 case $size in
 240x240) ;;
 128x160) set=cube128 tag=_$size ;;
+128x128) set=cube128sq tag=_$size ;;
 *) set=cube320 tag=_$size ;;
 esac
 t=$(mktemp -d)

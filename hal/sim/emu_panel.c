@@ -15,6 +15,9 @@
  *   least 120 ms after SLPOUT.
  * - Memory size, COLMOD after reset and what SWRESET does to COLMOD are the
  *   model's (struct model below).
+ * - GC9A01: the registers the datasheet does not describe (F_INTER) are
+ *   refused until the inter-register enable, FEh then EFh (a reset or
+ *   SWRESET disables it again).
  * - The SSD1351 is not DCS (its own rules, ssd_* below): window 15h/75h
  *   with one-byte addresses 0..127, write RAM 5Ch in 65k colours only,
  *   re-map A0h (vertical address increment at write; column remap, COM scan
@@ -32,11 +35,14 @@
 #define M_IL (1u << EMU_ILI9341)
 #define M_S7 (1u << EMU_ST7735S)
 #define M_SD (1u << EMU_SSD1351)
-#define M_SI (M_ST | M_IL)
-#define M_ALL (M_ST | M_IL | M_S7)
+#define M_GC (1u << EMU_GC9A01)
+#define M_SIL (M_ST | M_IL)
+#define M_SI (M_ST | M_IL | M_GC)
+#define M_GAM (M_ST | M_IL | M_S7)
+#define M_ALL (M_ST | M_IL | M_S7 | M_GC)
 
 /* Command flags (emu_commands.def, the table of accepted commands). */
-enum { F_PIXELS = 1, F_NOTEMU = 2, F_READ = 4, F_LOCKB = 8 };
+enum { F_PIXELS = 1, F_NOTEMU = 2, F_READ = 4, F_LOCKB = 8, F_INTER = 16 };
 
 struct cmd_info {
     uint8_t code;
@@ -62,11 +68,14 @@ static const struct model {
     uint16_t slpout_busy_ms;     /* no command for this long after SLPOUT */
     uint8_t dcs;                 /* 1: MIPI DCS rules, 0: the SSD1351's (ssd_*) */
     uint32_t reset_pulse_ns;     /* shortest RESET low pulse */
+    uint8_t round;               /* its glass is the circle inscribed in the memory:
+                                    the pixels outside it are not there (black) */
 } models[] = {
-    [EMU_ST7789] = { "ST7789", 240, 320, 0x66, 1, 0x55, 5, 1, 10000 },
-    [EMU_ILI9341] = { "ILI9341", 240, 320, 0x66, 1, 0x55, 5, 1, 10000 },
-    [EMU_ST7735S] = { "ST7735S", 132, 162, 0x06, 0, 0x05, 120, 1, 10000 },
-    [EMU_SSD1351] = { "SSD1351", 128, 128, 0, 0, 0, 0, 0, 2000 },
+    [EMU_ST7789] = { "ST7789", 240, 320, 0x66, 1, 0x55, 5, 1, 10000, 0 },
+    [EMU_ILI9341] = { "ILI9341", 240, 320, 0x66, 1, 0x55, 5, 1, 10000, 0 },
+    [EMU_ST7735S] = { "ST7735S", 132, 162, 0x06, 0, 0x05, 120, 1, 10000, 0 },
+    [EMU_SSD1351] = { "SSD1351", 128, 128, 0, 0, 0, 0, 0, 2000, 0 },
+    [EMU_GC9A01] = { "GC9A01", 240, 240, 0x66, 1, 0x55, 5, 1, 10000, 1 },
 };
 #define MODEL(p) (&models[(p)->mod->model])
 
@@ -153,6 +162,7 @@ static void reset_regs(struct emu_panel *p, int hw)
     p->locked = 0;
     p->protect = 1;
     p->mode = 0xA6;
+    p->inter = 0;
     p->window_set = 0;
     p->cont_valid = 0;
     p->xs = 0;
@@ -428,7 +438,9 @@ static void command(struct emu_panel *p, uint8_t code, uint64_t t)
     const struct cmd_info *c = lookup(p, code);
     char what[60];
     if (!c) {
-        snprintf(what, sizeof what, "not an %s command", MODEL(p)->name);
+        /* "an" before a letter said with a vowel first: "an SSD1351", "a GC9A01" */
+        snprintf(what, sizeof what, "not %s %s command", strchr("AEFHILMNORSX", MODEL(p)->name[0]) ? "an" : "a",
+                 MODEL(p)->name);
         vcmd(p, code, what);
         return;
     }
@@ -442,8 +454,16 @@ static void command(struct emu_panel *p, uint8_t code, uint64_t t)
     }
     if (too_soon(p, code, t, p->busy_until_ns, p->busy_since_ns, p->busy_why))
         return;
+    if ((c->flags & F_INTER) && p->inter != 2) {
+        vcmd(p, code, "refused: a vendor register, locked until the inter-register enable (FEh, then EFh)");
+        return;
+    }
     p->cur = code;
     p->nparam = 0;
+    if (p->mod->model == EMU_GC9A01 && (code == 0xFE || code == 0xEF)) {
+        p->inter = code == 0xFE ? 1 : p->inter ? 2 : 0;
+        return;
+    }
     switch (code) {
     case 0x01: {    /* SWRESET */
         int awake = !p->asleep;
@@ -672,6 +692,15 @@ uint16_t emu_panel_glass_height(const struct emu_panel *p)
     return (p->view & 1) ? p->mod->glass_w : p->mod->glass_h;
 }
 
+int emu_panel_shown(const struct emu_panel *p, uint16_t x, uint16_t y)
+{
+    int32_t w = emu_panel_glass_width(p), h = emu_panel_glass_height(p);
+    if (x >= w || y >= h)
+        return 0;
+    int32_t dx = 2 * x + 1 - w, dy = 2 * y + 1 - h;
+    return !MODEL(p)->round || dx * dx + dy * dy <= w * w;
+}
+
 uint16_t emu_panel_mem(const struct emu_panel *p, uint16_t col, uint16_t row)
 {
     return (col < MODEL(p)->mem_w && row < MODEL(p)->mem_h) ? p->mem[row][col] : 0;
@@ -704,7 +733,10 @@ int emu_panel_glass(const struct emu_panel *p, uint16_t *out, uint16_t w, uint16
             uint16_t col = (uint16_t)(m->mem_x + (m->mirror_x ? gw - 1 - gx : gx));
             uint16_t row = (uint16_t)(m->mem_y + gy);
             uint16_t v = p->mem[row][col];
-            if (dark) {
+            int32_t dx = 2 * gx + 1 - gw, dy = 2 * gy + 1 - gh;
+            if (MODEL(p)->round && dx * dx + dy * dy > (int32_t)gw * gw) {
+                v = 0x0000;     /* no glass there */
+            } else if (dark) {
                 v = off;
             } else {
                 if (invert)

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
 'use strict';
-/* emu_panel.js — the emulated ST7789 / ILI9341 / ST7735S / SSD1351 controller of hal/sim/emu_panel.c,
+/* emu_panel.js — the emulated ST7789 / ILI9341 / ST7735S / SSD1351 / GC9A01 controller of hal/sim/emu_panel.c,
  * ported line for line so the emulated Pico and host_sim decode the same bus
  * the same way (same rules, same violation lines; tools/rp2040sim/replay_vectors.js
  * and tests/unit/test_panel_vectors.c replay the same vectors through both). Keep the two in step. */
@@ -15,21 +15,26 @@ const ST = 0;
 const IL = 1;
 const S7 = 2;
 const SD = 3;
+const GC = 4;
 const M_ST = 1 << ST;
 const M_IL = 1 << IL;
 const M_S7 = 1 << S7;
 const M_SD = 1 << SD;
-const M_SI = M_ST | M_IL;
-const M_ALL = M_ST | M_IL | M_S7;
+const M_GC = 1 << GC;
+const M_SIL = M_ST | M_IL;
+const M_SI = M_ST | M_IL | M_GC;
+const M_GAM = M_ST | M_IL | M_S7;
+const M_ALL = M_ST | M_IL | M_S7 | M_GC;
 const F_PIXELS = 1;
 const F_NOTEMU = 2;
 const F_READ = 4;   /* a read command: the bytes after it are its read phase (dummy clocks) */
 const F_LOCKB = 8;  /* SSD1351: refused until the command lock is given B1h */
+const F_INTER = 16; /* GC9A01: refused until the inter-register enable (FEh, EFh) */
 
 /* The accepted commands: the CMD lines of hal/sim/emu_commands.def, the table
  * hal/sim/emu_panel.c compiles in. */
 function readCommands(file) {
-  const consts = { M_ALL, M_SI, M_ST, M_IL, M_S7, M_SD, F_PIXELS, F_NOTEMU, F_READ, F_LOCKB, 0: 0 };
+  const consts = { M_ALL, M_SI, M_SIL, M_GAM, M_ST, M_IL, M_S7, M_SD, M_GC, F_PIXELS, F_NOTEMU, F_READ, F_LOCKB, F_INTER, 0: 0 };
   const cmds = [];
   const text = fs.readFileSync(file, 'utf8');
   for (const m of text.matchAll(/^CMD\((0x[0-9A-F]{2}), *(\w+), *(\d+), *(\d+), *(\w+), *"([^"]*)"\)/gm)) {
@@ -45,12 +50,14 @@ const CMDS = readCommands(path.join(__dirname, '..', '..', 'hal', 'sim', 'emu_co
 /* Facts of each controller model the rules depend on (struct model in
  * hal/sim/emu_panel.c): memory size, COLMOD after a hardware reset, whether
  * SWRESET resets COLMOD, the 16-bit value, the wait after SLPOUT (ms),
- * DCS rules or the SSD1351's, the shortest reset pulse (ns). */
+ * DCS rules or the SSD1351's, the shortest reset pulse (ns), a round glass
+ * (the circle inscribed in the memory; black outside it). */
 const MODELS = [
-  { name: 'ST7789', memW: 240, memH: 320, colmodReset: 0x66, colmodSwreset: 1, colmod16: 0x55, slpoutBusyMs: 5, dcs: 1, resetPulseNs: 10000 },
-  { name: 'ILI9341', memW: 240, memH: 320, colmodReset: 0x66, colmodSwreset: 1, colmod16: 0x55, slpoutBusyMs: 5, dcs: 1, resetPulseNs: 10000 },
-  { name: 'ST7735S', memW: 132, memH: 162, colmodReset: 0x06, colmodSwreset: 0, colmod16: 0x05, slpoutBusyMs: 120, dcs: 1, resetPulseNs: 10000 },
-  { name: 'SSD1351', memW: 128, memH: 128, colmodReset: 0, colmodSwreset: 0, colmod16: 0, slpoutBusyMs: 0, dcs: 0, resetPulseNs: 2000 },
+  { name: 'ST7789', memW: 240, memH: 320, colmodReset: 0x66, colmodSwreset: 1, colmod16: 0x55, slpoutBusyMs: 5, dcs: 1, resetPulseNs: 10000, round: 0 },
+  { name: 'ILI9341', memW: 240, memH: 320, colmodReset: 0x66, colmodSwreset: 1, colmod16: 0x55, slpoutBusyMs: 5, dcs: 1, resetPulseNs: 10000, round: 0 },
+  { name: 'ST7735S', memW: 132, memH: 162, colmodReset: 0x06, colmodSwreset: 0, colmod16: 0x05, slpoutBusyMs: 120, dcs: 1, resetPulseNs: 10000, round: 0 },
+  { name: 'SSD1351', memW: 128, memH: 128, colmodReset: 0, colmodSwreset: 0, colmod16: 0, slpoutBusyMs: 0, dcs: 0, resetPulseNs: 2000, round: 0 },
+  { name: 'GC9A01', memW: 240, memH: 240, colmodReset: 0x66, colmodSwreset: 1, colmod16: 0x55, slpoutBusyMs: 5, dcs: 1, resetPulseNs: 10000, round: 1 },
 ];
 
 /* The modules and the panels they show: the GLASS and PANEL lines of
@@ -81,7 +88,7 @@ function readPanels(file) {
   for (const [c, f] of Object.entries(controllers)) if (!(c in find)) find[c] = f;
   return { MODULES: modules, FIND: find };
 }
-const MODEL = { ST7789: ST, ILI9341: IL, ST7735S: S7, SSD1351: SD };
+const MODEL = { ST7789: ST, ILI9341: IL, ST7735S: S7, SSD1351: SD, GC9A01: GC };
 const { MODULES, FIND } = readPanels(path.join(__dirname, '..', '..', 'hal', 'panels.def'));
 
 function hex2(v) { return v.toString(16).toUpperCase().padStart(2, '0'); }
@@ -138,7 +145,7 @@ class EmuPanel {
     this.asleep = 1; this.displayOn = 0; this.inverted = 0; this.idle = 0;
     if (hw || this.model.colmodSwreset) this.colmod = this.model.colmodReset;
     this.madctl = 0; this.windowSet = 0; this.contValid = 0;
-    this.remap = 0x40; this.locked = 0; this.protect = 1; this.mode = 0xA6;
+    this.remap = 0x40; this.locked = 0; this.protect = 1; this.mode = 0xA6; this.inter = 0;
     this.xs = 0; this.xe = this.model.memW - 1; this.ys = 0; this.ye = this.model.memH - 1; this.cx = 0; this.cy = 0;
   }
 
@@ -191,11 +198,23 @@ class EmuPanel {
     this.endCommand();
     if (this.violation) return;
     const c = this.lookup(code);
-    if (!c) { this.vcmd(code, `not an ${this.model.name} command`); return; }
+    if (!c) {
+      /* "an" before a letter said with a vowel first: "an SSD1351", "a GC9A01" */
+      this.vcmd(code, `not ${'AEFHILMNORSX'.includes(this.model.name[0]) ? 'an' : 'a'} ${this.model.name} command`);
+      return;
+    }
     if (c.flags & F_NOTEMU) { this.vcmd(code, 'not emulated'); return; }
     if (!this.model.dcs) { this.ssdCommand(code, c); return; }
     if (this.tooSoon(code, t, this.busyUntil, this.busySince, this.busyWhy)) return;
+    if ((c.flags & F_INTER) && this.inter !== 2) {
+      this.vcmd(code, 'refused: a vendor register, locked until the inter-register enable (FEh, then EFh)');
+      return;
+    }
     this.cur = code; this.nparam = 0;
+    if (this.mod.model === GC && (code === 0xFE || code === 0xEF)) {
+      this.inter = code === 0xFE ? 1 : this.inter ? 2 : 0;
+      return;
+    }
     switch (code) {
       case 0x01: {
         const awake = !this.asleep;
@@ -371,7 +390,10 @@ class EmuPanel {
         const col = m.memX + (m.mirrorX ? gw - 1 - gx : gx);
         const row = m.memY + gy;
         let v = this.mem[row * MEM_W + col];
-        if (dark) {
+        const dx = 2 * gx + 1 - gw, dy = 2 * gy + 1 - gh;
+        if (this.model.round && dx * dx + dy * dy > gw * gw) {
+          v = 0;   /* no glass there */
+        } else if (dark) {
           v = off;
         } else {
           if (invert) v = (~v) & 0xffff;

@@ -8,9 +8,9 @@
 #   build/firmware/pico/cgfs.{elf,bin,uf2,map}         two cores (the board)
 #   build/firmware/pico/cgfs-1core.{elf,bin,uf2,map}   RP2040_SINGLE_CORE=1 (rp2040js)
 #   build/firmware/pico/cgfs-{book,cube}{,-1core}.*    scenes compiled by tools/scenec
-#   build/firmware/pico/cgfs-cube-{ili9341,st7735,ssd1351}{,-1core}.*  the cube scenes
-#                                                      on the other modules (320x240,
-#                                                      128x160, 128x128)
+#   build/firmware/pico/cgfs-cube-{ili9341,st7735,ssd1351,gc9a01}{,-1core}.*  the cube
+#                                                      scenes on the other modules (320x240,
+#                                                      128x160, 128x128, 240x240 round)
 #   build/firmware/stm32f411/cgfs{,-fixed}.{elf,bin,map}  Cortex-M4F, see below
 #
 # Build options (make VAR=value): FW_PINS (extra -D pin options, e.g.
@@ -205,6 +205,10 @@ $(call fw_scene_image,cgfs-cube-st7735-1core,CUBE128,$(FW_ST7735) $(FW_1CORE_FLA
 FW_SSD1351 := -DFW_PANEL=panel_ssd1351_128x128 -DFW_WIDTH=128 -DFW_HEIGHT=128
 $(call fw_scene_image,cgfs-cube-ssd1351,CUBE128SQ,$(FW_SSD1351) -DFW_FRAMES_PER_SCENE=$(FW_CUBE_FRAMES))
 $(call fw_scene_image,cgfs-cube-ssd1351-1core,CUBE128SQ,$(FW_SSD1351) $(FW_1CORE_FLAGS) -DFW_FRAMES_PER_SCENE=$(FW_CUBE_FRAMES))
+# And on the GC9A01 round module, 240x240 (the cube scenes as compiled for the ST7789).
+FW_GC9A01 := -DFW_PANEL=panel_gc9a01_240x240 -DFW_WIDTH=240 -DFW_HEIGHT=240
+$(call fw_scene_image,cgfs-cube-gc9a01,CUBE,$(FW_GC9A01) -DFW_FRAMES_PER_SCENE=$(FW_CUBE_FRAMES))
+$(call fw_scene_image,cgfs-cube-gc9a01-1core,CUBE,$(FW_GC9A01) $(FW_1CORE_FLAGS) -DFW_FRAMES_PER_SCENE=$(FW_CUBE_FRAMES))
 # The ray tracer's benchmark: one frame of each, progressive (the preview's
 # time is rp2040sim's first_image_us).
 $(call fw_scene_image,cgfs-rt,RT,-DFW_FRAMES_PER_SCENE=1)
@@ -222,7 +226,8 @@ FW_RP_IMAGES := $(FW_OUT)/pico/cgfs.uf2 $(FW_OUT)/pico/cgfs-1core.uf2 $(FW_OUT)/
                 $(FW_OUT)/pico/cgfs-rot2.uf2 \
                 $(foreach i,cgfs-book cgfs-book-1core cgfs-book-bench cgfs-cube cgfs-cube-1core cgfs-cube-ili9341 \
                   cgfs-cube-ili9341-1core cgfs-cube-st7735 \
-                  cgfs-cube-st7735-1core cgfs-cube-ssd1351 cgfs-cube-ssd1351-1core cgfs-rt cgfs-rt-1core cgfs-mesh,$(FW_OUT)/pico/$(i).uf2)
+                  cgfs-cube-st7735-1core cgfs-cube-ssd1351 cgfs-cube-ssd1351-1core \
+                  cgfs-cube-gc9a01 cgfs-cube-gc9a01-1core cgfs-rt cgfs-rt-1core cgfs-mesh,$(FW_OUT)/pico/$(i).uf2)
 
 .PHONY: firmware-pico
 firmware-pico: deps-firmware

@@ -31,6 +31,9 @@ TESTS     += tests/system/test_rp2040sim_cube.sh:$(BUILD):$(FW_CUBE_FRAMES):cgfs
 # and on the SSD1351 OLED module, 128x128 (not DCS)
 TEST_DEPS += $(FW_OUT)/pico/cgfs-cube-ssd1351-1core.elf
 TESTS     += tests/system/test_rp2040sim_cube.sh:$(BUILD):$(FW_CUBE_FRAMES):cgfs-cube-ssd1351-1core:ssd1351_128x128:128x128
+# and on the GC9A01 round module, 240x240 (the glass: the circle)
+TEST_DEPS += $(FW_OUT)/pico/cgfs-cube-gc9a01-1core.elf
+TESTS     += tests/system/test_rp2040sim_cube.sh:$(BUILD):$(FW_CUBE_FRAMES):cgfs-cube-gc9a01-1core:gc9a01_240x240:240x240
 # the two-core images on both emulated cores (tools/rp2040sim/dualcore.js)
 TEST_DEPS += $(FW_OUT)/pico/cgfs.elf $(FW_OUT)/pico/cgfs-book.elf
 TESTS     += tests/system/test_rp2040sim_dual.sh:$(BUILD)

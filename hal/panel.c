@@ -72,6 +72,7 @@ int panel_init(struct panel *p, const struct panel_desc *d, const struct hal *ha
     p->flush_w = 0;
     p->flush_rows = 0;
     int rc = dcs_init(&p->dcs, hal);
+    p->dcs.rgb666 = panel_ctl(p)->pixel_bytes == 3;
     hal->line_set(hal->ctx, HAL_LINE_BL, 0);
     if (rc == 0)
         rc = dcs_hw_reset(&p->dcs, d->reset_low_ms, d->reset_wait_ms);
@@ -121,7 +122,7 @@ int panel_flush_rows(struct panel *p, const uint16_t *px, uint16_t rows, hal_don
     p->flush_rows = (uint16_t)(p->flush_rows - rows);
     size_t n = (size_t)p->flush_w * rows;
     const struct hal *h = p->dcs.hal;
-    if (h->pixels_async) {          /* the DMA path, without a call through dcs.c */
+    if (h->pixels_async && !p->dcs.rgb666) {  /* the DMA path, without a call through dcs.c */
         p->dcs.bytes_sent += (uint32_t)(2u * n);
         return h->pixels_async(h->ctx, px, n, done, arg);
     }

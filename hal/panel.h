@@ -61,6 +61,10 @@ struct panel_ctl {
                                     set_rows and its rows with set_cols, and
                                     the orientation parameter turns on the
                                     controller's vertical address increment */
+    uint8_t pixel_bytes;         /* bytes a pixel on the wire: 0 or 2, RGB565;
+                                    3, RGB666 converted on the way out
+                                    (struct dcs rgb666), never by the HAL's
+                                    pixels_async */
 };
 
 /* MIPI DCS: CASET/RASET (16-bit addresses), RAMWR, MADCTL, INVON/INVOFF,
@@ -69,6 +73,9 @@ extern const struct panel_ctl panel_ctl_dcs;
 /* Solomon Systech SSD1351 (OLED): 15h/75h windows with 1-byte addresses,
  * write RAM 5Ch, remap A0h, A6h/A7h, sleep AEh/AFh (hal/panel_ssd1351.c). */
 extern const struct panel_ctl panel_ctl_ssd1351;
+/* MIPI DCS with 18-bit pixels, three bytes each (the ILI9488 on SPI, which
+ * has no 16-bit mode there; hal/panel_ili9488.c). */
+extern const struct panel_ctl panel_ctl_ili9488;
 
 struct panel_desc {
     const char *name;            /* "st7789_240x240", ... (panel_find key) */

@@ -1,5 +1,6 @@
 /* SPDX-License-Identifier: MIT */
-/* emu_panel.c — emulated ST7789 / ILI9341 / ST7735S / SSD1351 controller behind a module glass.
+/* emu_panel.c — emulated ST7789 / ILI9341 / ST7735S / SSD1351 / GC9A01 / ILI9488 controller
+ * behind a module glass.
  *
  * Model (datasheet behaviour; the rules are listed in docs/hal.md):
  * - A byte with D/C low is a command; with D/C high, a parameter of the
@@ -36,10 +37,11 @@
 #define M_S7 (1u << EMU_ST7735S)
 #define M_SD (1u << EMU_SSD1351)
 #define M_GC (1u << EMU_GC9A01)
-#define M_SIL (M_ST | M_IL)
-#define M_SI (M_ST | M_IL | M_GC)
-#define M_GAM (M_ST | M_IL | M_S7)
-#define M_ALL (M_ST | M_IL | M_S7 | M_GC)
+#define M_I8 (1u << EMU_ILI9488)
+#define M_SIL (M_ST | M_IL | M_I8)
+#define M_SI (M_ST | M_IL | M_GC | M_I8)
+#define M_GAM (M_ST | M_IL | M_S7 | M_I8)
+#define M_ALL (M_ST | M_IL | M_S7 | M_GC | M_I8)
 
 /* Command flags (emu_commands.def, the table of accepted commands). */
 enum { F_PIXELS = 1, F_NOTEMU = 2, F_READ = 4, F_LOCKB = 8, F_INTER = 16 };
@@ -70,12 +72,15 @@ static const struct model {
     uint32_t reset_pulse_ns;     /* shortest RESET low pulse */
     uint8_t round;               /* its glass is the circle inscribed in the memory:
                                     the pixels outside it are not there (black) */
+    uint8_t rgb666;              /* the serial interface takes 18-bit pixels only
+                                    (COLMOD 0x66, three bytes: R G B in bits 7..2) */
 } models[] = {
-    [EMU_ST7789] = { "ST7789", 240, 320, 0x66, 1, 0x55, 5, 1, 10000, 0 },
-    [EMU_ILI9341] = { "ILI9341", 240, 320, 0x66, 1, 0x55, 5, 1, 10000, 0 },
-    [EMU_ST7735S] = { "ST7735S", 132, 162, 0x06, 0, 0x05, 120, 1, 10000, 0 },
-    [EMU_SSD1351] = { "SSD1351", 128, 128, 0, 0, 0, 0, 0, 2000, 0 },
-    [EMU_GC9A01] = { "GC9A01", 240, 240, 0x66, 1, 0x55, 5, 1, 10000, 1 },
+    [EMU_ST7789] = { "ST7789", 240, 320, 0x66, 1, 0x55, 5, 1, 10000, 0, 0 },
+    [EMU_ILI9341] = { "ILI9341", 240, 320, 0x66, 1, 0x55, 5, 1, 10000, 0, 0 },
+    [EMU_ST7735S] = { "ST7735S", 132, 162, 0x06, 0, 0x05, 120, 1, 10000, 0, 0 },
+    [EMU_SSD1351] = { "SSD1351", 128, 128, 0, 0, 0, 0, 0, 2000, 0, 0 },
+    [EMU_GC9A01] = { "GC9A01", 240, 240, 0x66, 1, 0x55, 5, 1, 10000, 1, 0 },
+    [EMU_ILI9488] = { "ILI9488", 320, 480, 0x66, 1, 0x66, 5, 1, 10000, 0, 1 },
 };
 #define MODEL(p) (&models[(p)->mod->model])
 
@@ -203,14 +208,19 @@ int emu_panel_init(struct emu_panel *p, const struct emu_module *mod, uint8_t vi
     p->bl = 1;
     /* Power-on memory content is undefined; a fixed xorshift32 sequence
      * stands for it so that unwritten areas are visible and reproducible. */
+    /* (the first 240x320 cells in the order they had before the memory
+     * grew for the ILI9488, so that the other models' noise is unchanged) */
     uint32_t s = 0x2545F491u;
-    for (int r = 0; r < EMU_MEM_H; r++)
-        for (int c = 0; c < EMU_MEM_W; c++) {
-            s ^= s << 13;
-            s ^= s >> 17;
-            s ^= s << 5;
-            p->mem[r][c] = (uint16_t)s;
-        }
+    for (int pass = 0; pass < 2; pass++)
+        for (int r = 0; r < EMU_MEM_H; r++)
+            for (int c = 0; c < EMU_MEM_W; c++) {
+                if ((r < 320 && c < 240) != (pass == 0))
+                    continue;
+                s ^= s << 13;
+                s ^= s >> 17;
+                s ^= s << 5;
+                p->mem[r][c] = (uint16_t)s;
+            }
     hw_reset_done(p, 0);
     return 0;
 }
@@ -218,6 +228,21 @@ int emu_panel_init(struct emu_panel *p, const struct emu_module *mod, uint8_t vi
 /* Memory limits of the window's x and y in the current orientation. */
 static uint16_t lim_x(const struct emu_panel *p) { return (p->madctl & 0x20) ? MODEL(p)->mem_h : MODEL(p)->mem_w; }
 static uint16_t lim_y(const struct emu_panel *p) { return (p->madctl & 0x20) ? MODEL(p)->mem_w : MODEL(p)->mem_h; }
+
+/* A memory write stopped inside a pixel: "<how> half a pixel (odd number
+ * of data bytes)" ("<how> half a pixel" after a reset), or "<how> N of a
+ * pixel's 3 bytes" (18-bit). */
+static void partial_pixel(struct emu_panel *p, const char *how)
+{
+    char what[90];
+    if (MODEL(p)->rgb666)
+        snprintf(what, sizeof what, "%s %u of a pixel's 3 bytes", how, (unsigned)p->half);
+    else if (how[0] == 'e')
+        snprintf(what, sizeof what, "%s half a pixel (odd number of data bytes)", how);
+    else
+        snprintf(what, sizeof what, "%s half a pixel", how);
+    vcmd(p, p->cur, what);
+}
 
 /* The current command ends (a new command, a reset, or the end). */
 static void end_command(struct emu_panel *p)
@@ -228,7 +253,7 @@ static void end_command(struct emu_panel *p)
     char what[80];
     if (c->flags & F_PIXELS) {
         if (p->half)
-            vcmd(p, p->cur, "ended with half a pixel (odd number of data bytes)");
+            partial_pixel(p, "ended with");
     } else if (p->nparam < c->min) {
         snprintf(what, sizeof what, "%u parameter bytes, needs %u", (unsigned)p->nparam,
                  (unsigned)c->min);
@@ -262,7 +287,11 @@ static void start_write(struct emu_panel *p, uint8_t code)
         vcmd(p, code, (p->window_set & 1) ? "memory write before RASET set the rows"
                      : (p->window_set & 2) ? "memory write before CASET set the columns"
                      : "memory write before CASET/RASET set a window");
-    } else if ((p->colmod & 7) != 5) {
+    } else if (MODEL(p)->rgb666 && (p->colmod & 7) != 6) {
+        snprintf(what, sizeof what, "memory write with COLMOD 0x%02X (the serial interface takes 18-bit only, 0x66)",
+                 (unsigned)p->colmod);
+        vcmd(p, code, what);
+    } else if (!MODEL(p)->rgb666 && (p->colmod & 7) != 5) {
         snprintf(what, sizeof what, "memory write with COLMOD 0x%02X (only 16-bit, 0x%02X, emulated)",
                  (unsigned)p->colmod, (unsigned)MODEL(p)->colmod_16bit);
         vcmd(p, code, what);
@@ -575,7 +604,18 @@ static void data(struct emu_panel *p, uint8_t b)
     }
     const struct cmd_info *c = lookup(p, (uint8_t)p->cur);
     if (c->flags & F_PIXELS) {
-        if (p->half) {
+        if (MODEL(p)->rgb666) {     /* R, G, B in bits 7..2; kept as RGB565 */
+            if (p->half == 2) {
+                p->half = 0;
+                pixel(p, (uint16_t)((p->hi >> 3) << 11 | (p->mid >> 2) << 5 | b >> 3));
+            } else {
+                if (p->half)
+                    p->mid = b;
+                else
+                    p->hi = b;
+                p->half++;
+            }
+        } else if (p->half) {
             p->half = 0;
             pixel(p, (uint16_t)(p->hi << 8 | b));
         } else {
@@ -630,7 +670,7 @@ void emu_panel_line(struct emu_panel *p, int line, int level, uint64_t t_ns)
                 const struct cmd_info *c = lookup(p, (uint8_t)p->cur);
                 char what[80];
                 if ((c->flags & F_PIXELS) && p->half) {
-                    vcmd(p, p->cur, "cut short by a hardware reset with half a pixel");
+                    partial_pixel(p, "cut short by a hardware reset with");
                 } else if (!(c->flags & F_PIXELS) && p->nparam < c->min) {
                     snprintf(what, sizeof what, "cut short by a hardware reset: %u parameter bytes, needs %u",
                              (unsigned)p->nparam, (unsigned)c->min);
@@ -667,7 +707,7 @@ int emu_panel_finish(struct emu_panel *p, uint64_t t_ns)
         char what[80];
         if (c->flags & F_PIXELS) {
             if (p->half)
-                vcmd(p, p->cur, "ended with half a pixel (odd number of data bytes)");
+                partial_pixel(p, "ended with");
         } else if (p->nparam < c->min) {
             snprintf(what, sizeof what, "%u parameter bytes, needs %u", (unsigned)p->nparam,
                      (unsigned)c->min);

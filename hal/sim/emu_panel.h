@@ -1,11 +1,12 @@
 /* SPDX-License-Identifier: MIT */
 /* emu_panel.h — an emulated SPI display controller (ST7789, ILI9341, ST7735S,
- * SSD1351, GC9A01).
+ * SSD1351, GC9A01, ILI9488).
  *
  * Decodes the byte stream and line changes a driver produces, as the
  * controllers' datasheets describe, keeps the controller's frame memory
  * (RGB565, in the controller's native orientation: 240 columns x 320 rows,
- * 132 x 162 on the ST7735S, 128 x 128 on the SSD1351, 240 x 240 on the GC9A01)
+ * 132 x 162 on the ST7735S, 128 x 128 on the SSD1351, 240 x 240 on the GC9A01,
+ * 320 x 480 on the ILI9488)
  * and shows what the module's glass displays.
  *
  * Strict: the first protocol violation is recorded as one line,
@@ -18,7 +19,7 @@
  * Time: every call carries the simulated time in nanoseconds (monotonic);
  * the waits after reset and sleep changes are checked against it.
  *
- * Memory: no heap; struct emu_panel holds the frame memory (~150 KiB), the
+ * Memory: no heap; struct emu_panel holds the frame memory (~300 KiB), the
  * caller provides it (static or malloc).
  */
 #ifndef HAL_EMU_PANEL_H
@@ -27,11 +28,11 @@
 #include <stddef.h>
 #include <stdint.h>
 
-#define EMU_MEM_W 240   /* controller memory columns (native; the largest model's) */
-#define EMU_MEM_H 320   /* controller memory rows (native; the largest model's) */
+#define EMU_MEM_W 320   /* controller memory columns (native; the largest model's) */
+#define EMU_MEM_H 480   /* controller memory rows (native; the largest model's) */
 #define EMU_MSG_LEN 160
 
-enum emu_model { EMU_ST7789 = 0, EMU_ILI9341 = 1, EMU_ST7735S = 2, EMU_SSD1351 = 3, EMU_GC9A01 = 4 };
+enum emu_model { EMU_ST7789 = 0, EMU_ILI9341 = 1, EMU_ST7735S = 2, EMU_SSD1351 = 3, EMU_GC9A01 = 4, EMU_ILI9488 = 5 };
 
 /* A module: a controller behind a glass. Facts of the hardware, not of the
  * driver; the modules are the GLASS lines of hal/panels.def. */
@@ -65,8 +66,8 @@ struct emu_panel {
     int cur;                     /* current command, -1 none */
     uint32_t nparam;             /* parameters received for cur */
     uint8_t param[16];
-    uint8_t half;                /* a pixel's first byte is pending */
-    uint8_t hi;
+    uint8_t half;                /* bytes of a pixel pending (1, or 1..2 for 3-byte pixels) */
+    uint8_t hi, mid;
     /* controller state */
     uint8_t asleep, display_on, inverted, idle, colmod, madctl;
     uint8_t remap;               /* SSD1351: re-map / colour depth (A0h) */

@@ -185,8 +185,8 @@ static uint32_t crc32_str(const char *s)
  * recorded log of panel_init in each rotation, and of a run of every other
  * operation after it (flush, fill, streamed flush, stopped flush, display
  * off/on, sleep in/out, the next rotation, a pixel), as the driver sent them
- * before the command sets (struct panel_ctl) existed; and the SSD1351's and
- * GC9A01's as first written (its init stream and rotation-1 window spelled out in
+ * before the command sets (struct panel_ctl) existed; and the SSD1351's,
+ * GC9A01's and ILI9488's as first written (its init stream and rotation-1 window spelled out in
  * test_init_streams, all four rotations shown by the emulated glass in
  * round_trip). */
 static void test_streams_pinned(void)
@@ -204,6 +204,8 @@ static void test_streams_pinned(void)
         { "ssd1351_128x128", 2, 0x4B239178u, 0xEEC8C60Bu }, { "ssd1351_128x128", 3, 0x1061346Au, 0xC9CDE4CCu },
         { "gc9a01_240x240", 0, 0x5F908109u, 0x5304318Bu }, { "gc9a01_240x240", 1, 0x43D02D77u, 0xC9825A12u },
         { "gc9a01_240x240", 2, 0x10C837C7u, 0x6A1E6E20u }, { "gc9a01_240x240", 3, 0x1B0853EDu, 0x6CD16B9Cu },
+        { "ili9488_320x480", 0, 0x0F0A2F2Bu, 0x17741552u }, { "ili9488_320x480", 1, 0xE3B371CFu, 0x75257064u },
+        { "ili9488_320x480", 2, 0x378B77D7u, 0x02181F0Bu }, { "ili9488_320x480", 3, 0xBB6B0F55u, 0xF15C3ABBu },
     };
     int bad = 0;
     char first[80] = "";
@@ -400,10 +402,49 @@ static void test_streaming(void)
     }
 }
 
+/* The ILI9488's 18-bit pixels: each RGB565 pixel as three bytes, every
+ * channel's top bits repeated below it, with or without the HAL's 16-bit
+ * pixel operation (never used for them), in a flush, a streamed flush and
+ * a fill; a frame is 1.5 times the bytes of 16-bit. */
+static void test_rgb666(void)
+{
+    static const uint16_t px[4] = { 0xF800, 0x07E0, 0x001F, 0x8410 };
+    for (int mode = 0; mode < 3; mode++) {
+        struct rec r; struct hal h; struct panel p;
+        char name[64];
+        rec_init(&r, &h, mode > 0);
+        if (mode == 2)
+            h.pixels_async = rec_pixels;
+        panel_init(&p, &panel_ili9488_320x480, &h, 0);
+        rec_take(&r);
+        panel_flush(&p, 1, 2, 2, 2, px);
+        panel_flush_begin(&p, 0, 0, 4, 1);
+        panel_flush_rows(&p, px, 1, NULL, NULL);
+        panel_flush_end(&p);
+        panel_fill(&p, 0, 0, 1, 1, 0x8410);
+        snprintf(name, sizeof name, "ili9488_rgb666_mode%d", mode);
+        expect_log(name, rec_take(&r),
+            "CS0 DC0 2A DC1 00 01 00 02 CS1 CS0 DC0 2B DC1 00 02 00 03 CS1 "
+            "CS0 DC0 2C DC1 FF 00 00 00 FF 00 00 00 FF 84 82 84 CS1 "
+            "CS0 DC0 2A DC1 00 00 00 03 CS1 CS0 DC0 2B DC1 00 00 00 00 CS1 "
+            "CS0 DC0 2C DC1 FF 00 00 00 FF 00 00 00 FF 84 82 84 CS1 "
+            "CS0 DC0 2A DC1 00 00 00 00 CS1 CS0 DC0 2B DC1 00 00 00 00 CS1 "
+            "CS0 DC0 2C DC1 84 82 84 CS1");
+    }
+    struct rec r; struct hal h; struct panel p;
+    rec_init(&r, &h, 0);
+    panel_init(&p, &panel_ili9488_320x480, &h, 0);
+    uint32_t b0 = p.dcs.bytes_sent;
+    panel_fill(&p, 0, 0, 320, 480, 0);
+    check(p.dcs.bytes_sent - b0 == 320u * 480u * 3u + 11u, "ili9488_frame_bytes", "%u bytes",
+          (unsigned)(p.dcs.bytes_sent - b0));
+    rec_take(&r);
+}
+
 int main(void)
 {
     struct emu_panel *e = malloc(sizeof *e);
-    uint16_t *img = malloc(sizeof(uint16_t) * 320 * 240), *glass = malloc(sizeof(uint16_t) * 320 * 240);
+    uint16_t *img = malloc(sizeof(uint16_t) * 320 * 480), *glass = malloc(sizeof(uint16_t) * 320 * 480);
     if (!e || !img || !glass)
         return 1;
     test_init_streams();
@@ -411,6 +452,7 @@ int main(void)
     test_other_command_set();
     test_streams_pinned();
     test_streaming();
+    test_rgb666();
     for (size_t i = 0; panel_all[i]; i++)
         for (uint8_t r = 0; r < 4; r++)
             round_trip(panel_all[i], r, e, img, glass);

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
 'use strict';
-/* emu_panel.js — the emulated ST7789 / ILI9341 / ST7735S / SSD1351 / GC9A01 controller of hal/sim/emu_panel.c,
+/* emu_panel.js — the emulated ST7789 / ILI9341 / ST7735S / SSD1351 / GC9A01 / ILI9488 controller of hal/sim/emu_panel.c,
  * ported line for line so the emulated Pico and host_sim decode the same bus
  * the same way (same rules, same violation lines; tools/rp2040sim/replay_vectors.js
  * and tests/unit/test_panel_vectors.c replay the same vectors through both). Keep the two in step. */
@@ -9,22 +9,24 @@ const fs = require('fs');
 const path = require('path');
 
 const MS = 1000000;
-const MEM_W = 240;
-const MEM_H = 320;
+const MEM_W = 320;
+const MEM_H = 480;
 const ST = 0;
 const IL = 1;
 const S7 = 2;
 const SD = 3;
 const GC = 4;
+const I8 = 5;
 const M_ST = 1 << ST;
 const M_IL = 1 << IL;
 const M_S7 = 1 << S7;
 const M_SD = 1 << SD;
 const M_GC = 1 << GC;
-const M_SIL = M_ST | M_IL;
-const M_SI = M_ST | M_IL | M_GC;
-const M_GAM = M_ST | M_IL | M_S7;
-const M_ALL = M_ST | M_IL | M_S7 | M_GC;
+const M_I8 = 1 << I8;
+const M_SIL = M_ST | M_IL | M_I8;
+const M_SI = M_ST | M_IL | M_GC | M_I8;
+const M_GAM = M_ST | M_IL | M_S7 | M_I8;
+const M_ALL = M_ST | M_IL | M_S7 | M_GC | M_I8;
 const F_PIXELS = 1;
 const F_NOTEMU = 2;
 const F_READ = 4;   /* a read command: the bytes after it are its read phase (dummy clocks) */
@@ -34,7 +36,7 @@ const F_INTER = 16; /* GC9A01: refused until the inter-register enable (FEh, EFh
 /* The accepted commands: the CMD lines of hal/sim/emu_commands.def, the table
  * hal/sim/emu_panel.c compiles in. */
 function readCommands(file) {
-  const consts = { M_ALL, M_SI, M_SIL, M_GAM, M_ST, M_IL, M_S7, M_SD, M_GC, F_PIXELS, F_NOTEMU, F_READ, F_LOCKB, F_INTER, 0: 0 };
+  const consts = { M_ALL, M_SI, M_SIL, M_GAM, M_ST, M_IL, M_S7, M_SD, M_GC, M_I8, F_PIXELS, F_NOTEMU, F_READ, F_LOCKB, F_INTER, 0: 0 };
   const cmds = [];
   const text = fs.readFileSync(file, 'utf8');
   for (const m of text.matchAll(/^CMD\((0x[0-9A-F]{2}), *(\w+), *(\d+), *(\d+), *(\w+), *"([^"]*)"\)/gm)) {
@@ -51,13 +53,15 @@ const CMDS = readCommands(path.join(__dirname, '..', '..', 'hal', 'sim', 'emu_co
  * hal/sim/emu_panel.c): memory size, COLMOD after a hardware reset, whether
  * SWRESET resets COLMOD, the 16-bit value, the wait after SLPOUT (ms),
  * DCS rules or the SSD1351's, the shortest reset pulse (ns), a round glass
- * (the circle inscribed in the memory; black outside it). */
+ * (the circle inscribed in the memory; black outside it), 18-bit pixels only
+ * on the serial interface (three bytes). */
 const MODELS = [
-  { name: 'ST7789', memW: 240, memH: 320, colmodReset: 0x66, colmodSwreset: 1, colmod16: 0x55, slpoutBusyMs: 5, dcs: 1, resetPulseNs: 10000, round: 0 },
-  { name: 'ILI9341', memW: 240, memH: 320, colmodReset: 0x66, colmodSwreset: 1, colmod16: 0x55, slpoutBusyMs: 5, dcs: 1, resetPulseNs: 10000, round: 0 },
-  { name: 'ST7735S', memW: 132, memH: 162, colmodReset: 0x06, colmodSwreset: 0, colmod16: 0x05, slpoutBusyMs: 120, dcs: 1, resetPulseNs: 10000, round: 0 },
-  { name: 'SSD1351', memW: 128, memH: 128, colmodReset: 0, colmodSwreset: 0, colmod16: 0, slpoutBusyMs: 0, dcs: 0, resetPulseNs: 2000, round: 0 },
-  { name: 'GC9A01', memW: 240, memH: 240, colmodReset: 0x66, colmodSwreset: 1, colmod16: 0x55, slpoutBusyMs: 5, dcs: 1, resetPulseNs: 10000, round: 1 },
+  { name: 'ST7789', memW: 240, memH: 320, colmodReset: 0x66, colmodSwreset: 1, colmod16: 0x55, slpoutBusyMs: 5, dcs: 1, resetPulseNs: 10000, round: 0, rgb666: 0 },
+  { name: 'ILI9341', memW: 240, memH: 320, colmodReset: 0x66, colmodSwreset: 1, colmod16: 0x55, slpoutBusyMs: 5, dcs: 1, resetPulseNs: 10000, round: 0, rgb666: 0 },
+  { name: 'ST7735S', memW: 132, memH: 162, colmodReset: 0x06, colmodSwreset: 0, colmod16: 0x05, slpoutBusyMs: 120, dcs: 1, resetPulseNs: 10000, round: 0, rgb666: 0 },
+  { name: 'SSD1351', memW: 128, memH: 128, colmodReset: 0, colmodSwreset: 0, colmod16: 0, slpoutBusyMs: 0, dcs: 0, resetPulseNs: 2000, round: 0, rgb666: 0 },
+  { name: 'GC9A01', memW: 240, memH: 240, colmodReset: 0x66, colmodSwreset: 1, colmod16: 0x55, slpoutBusyMs: 5, dcs: 1, resetPulseNs: 10000, round: 1, rgb666: 0 },
+  { name: 'ILI9488', memW: 320, memH: 480, colmodReset: 0x66, colmodSwreset: 1, colmod16: 0x66, slpoutBusyMs: 5, dcs: 1, resetPulseNs: 10000, round: 0, rgb666: 1 },
 ];
 
 /* The modules and the panels they show: the GLASS and PANEL lines of
@@ -88,7 +92,7 @@ function readPanels(file) {
   for (const [c, f] of Object.entries(controllers)) if (!(c in find)) find[c] = f;
   return { MODULES: modules, FIND: find };
 }
-const MODEL = { ST7789: ST, ILI9341: IL, ST7735S: S7, SSD1351: SD, GC9A01: GC };
+const MODEL = { ST7789: ST, ILI9341: IL, ST7735S: S7, SSD1351: SD, GC9A01: GC, ILI9488: I8 };
 const { MODULES, FIND } = readPanels(path.join(__dirname, '..', '..', 'hal', 'panels.def'));
 
 function hex2(v) { return v.toString(16).toUpperCase().padStart(2, '0'); }
@@ -110,12 +114,17 @@ class EmuPanel {
     this.violation = '';
     this.pixelsWritten = 0;
     this.mem = new Uint16Array(MEM_W * MEM_H);
+    /* (the first 240x320 cells in the order they had before the memory
+     * grew for the ILI9488, so that the other models' noise is unchanged) */
     let s = 0x2545F491;
-    for (let i = 0; i < MEM_W * MEM_H; i++) {
-      s = (s ^ (s << 13)) >>> 0;
-      s = (s ^ (s >>> 17)) >>> 0;
-      s = (s ^ (s << 5)) >>> 0;
-      this.mem[i] = s & 0xffff;
+    for (let pass = 0; pass < 2; pass++) {
+      for (let i = 0; i < MEM_W * MEM_H; i++) {
+        if ((Math.floor(i / MEM_W) < 320 && i % MEM_W < 240) !== (pass === 0)) continue;
+        s = (s ^ (s << 13)) >>> 0;
+        s = (s ^ (s >>> 17)) >>> 0;
+        s = (s ^ (s << 5)) >>> 0;
+        this.mem[i] = s & 0xffff;
+      }
     }
     this.slpinOk = 0; this.slpinSince = 0; this.slpinWhy = '';
     this.hwResetDone(0);
@@ -141,7 +150,7 @@ class EmuPanel {
 
   /* hw: a hardware reset (else SWRESET) */
   resetRegs(hw) {
-    this.cur = -1; this.nparam = 0; this.half = 0; this.hi = 0;
+    this.cur = -1; this.nparam = 0; this.half = 0; this.hi = 0; this.mid = 0;
     this.asleep = 1; this.displayOn = 0; this.inverted = 0; this.idle = 0;
     if (hw || this.model.colmodSwreset) this.colmod = this.model.colmodReset;
     this.madctl = 0; this.windowSet = 0; this.contValid = 0;
@@ -159,11 +168,18 @@ class EmuPanel {
   limX() { return (this.madctl & 0x20) ? this.model.memH : this.model.memW; }
   limY() { return (this.madctl & 0x20) ? this.model.memW : this.model.memH; }
 
+  /* a memory write stopped inside a pixel (partial_pixel in emu_panel.c) */
+  partialPixel(how) {
+    if (this.model.rgb666) this.vcmd(this.cur, `${how} ${this.half} of a pixel's 3 bytes`);
+    else if (how[0] === 'e') this.vcmd(this.cur, `${how} half a pixel (odd number of data bytes)`);
+    else this.vcmd(this.cur, `${how} half a pixel`);
+  }
+
   endCommand() {
     if (this.cur < 0) return;
     const c = this.lookup(this.cur);
     if (c.flags & F_PIXELS) {
-      if (this.half) this.vcmd(this.cur, 'ended with half a pixel (odd number of data bytes)');
+      if (this.half) this.partialPixel('ended with');
     } else if (this.nparam < c.min) {
       this.vcmd(this.cur, `${this.nparam} parameter bytes, needs ${c.min}`);
     }
@@ -183,7 +199,9 @@ class EmuPanel {
       this.vcmd(code, (this.windowSet & 1) ? 'memory write before RASET set the rows'
         : (this.windowSet & 2) ? 'memory write before CASET set the columns'
           : 'memory write before CASET/RASET set a window');
-    } else if ((this.colmod & 7) !== 5) {
+    } else if (this.model.rgb666 && (this.colmod & 7) !== 6) {
+      this.vcmd(code, `memory write with COLMOD 0x${hex2(this.colmod)} (the serial interface takes 18-bit only, 0x66)`);
+    } else if (!this.model.rgb666 && (this.colmod & 7) !== 5) {
       this.vcmd(code, `memory write with COLMOD 0x${hex2(this.colmod)} (only 16-bit, 0x${hex2(this.model.colmod16)}, emulated)`);
     } else if (this.xe >= this.limX() || this.ye >= this.limY()) {
       this.vcmd(code, `window ${this.xs}..${this.xe} x ${this.ys}..${this.ye} outside the memory (${this.limX()}x${this.limY()})`);
@@ -293,7 +311,10 @@ class EmuPanel {
     if (this.cur < 0) { this.violate('DATA', -1, this.offset, `data byte 0x${hex2(b)} without a command`); return; }
     const c = this.lookup(this.cur);
     if (c.flags & F_PIXELS) {
-      if (this.half) { this.half = 0; this.pixel((this.hi << 8) | b); } else { this.half = 1; this.hi = b; }
+      if (this.model.rgb666) {   /* R, G, B in bits 7..2; kept as RGB565 */
+        if (this.half === 2) { this.half = 0; this.pixel(((this.hi >> 3) << 11) | ((this.mid >> 2) << 5) | (b >> 3)); }
+        else { if (this.half) this.mid = b; else this.hi = b; this.half++; }
+      } else if (this.half) { this.half = 0; this.pixel((this.hi << 8) | b); } else { this.half = 1; this.hi = b; }
       return;
     }
     if (this.nparam >= c.max) { this.vcmd(this.cur, `too many parameter bytes (takes ${c.max})`); return; }
@@ -330,7 +351,7 @@ class EmuPanel {
            * all its bytes was cut short */
           if (this.cur >= 0) {
             const c = this.lookup(this.cur);
-            if ((c.flags & F_PIXELS) && this.half) this.vcmd(this.cur, 'cut short by a hardware reset with half a pixel');
+            if ((c.flags & F_PIXELS) && this.half) this.partialPixel('cut short by a hardware reset with');
             else if (!(c.flags & F_PIXELS) && this.nparam < c.min)
               this.vcmd(this.cur, `cut short by a hardware reset: ${this.nparam} parameter bytes, needs ${c.min}`);
           }
@@ -357,7 +378,7 @@ class EmuPanel {
     if (!this.violation && this.cur >= 0) {
       const c = this.lookup(this.cur);
       if (c.flags & F_PIXELS) {
-        if (this.half) this.vcmd(this.cur, 'ended with half a pixel (odd number of data bytes)');
+        if (this.half) this.partialPixel('ended with');
       } else if (this.nparam < c.min) {
         this.vcmd(this.cur, `${this.nparam} parameter bytes, needs ${c.min}`);
       }

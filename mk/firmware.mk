@@ -8,9 +8,10 @@
 #   build/firmware/pico/cgfs.{elf,bin,uf2,map}         two cores (the board)
 #   build/firmware/pico/cgfs-1core.{elf,bin,uf2,map}   RP2040_SINGLE_CORE=1 (rp2040js)
 #   build/firmware/pico/cgfs-{book,cube}{,-1core}.*    scenes compiled by tools/scenec
-#   build/firmware/pico/cgfs-cube-{ili9341,st7735,ssd1351,gc9a01}{,-1core}.*  the cube
-#                                                      scenes on the other modules (320x240,
-#                                                      128x160, 128x128, 240x240 round)
+#   build/firmware/pico/cgfs-cube-{ili9341,st7735,ssd1351,gc9a01,ili9488}{,-1core}.*
+#                                                      the cube scenes on the other modules
+#                                                      (320x240, 128x160, 128x128, 240x240
+#                                                      round, 320x480)
 #   build/firmware/stm32f411/cgfs{,-fixed}.{elf,bin,map}  Cortex-M4F, see below
 #
 # Build options (make VAR=value): FW_PINS (extra -D pin options, e.g.
@@ -79,6 +80,10 @@ FW_CUBE128_SCENES := $(FW_CUBE_SCENES)
 $(foreach n,$(FW_CUBE_SCENES),\
     $(call scenec_rule,$(FW_OUT)/scenes/$(call fw_scene_id,$(n))_128sq.c,$(n),128x128,$(FW_STRIP_ROWS),$(call fw_scene_id,$(n))_128sq,1))
 FW_CUBE128SQ_SCENES := $(FW_CUBE_SCENES)
+# And at 320x480, for the ILI9488 module (files and identifiers <id>_480).
+$(foreach n,$(FW_CUBE_SCENES),\
+    $(call scenec_rule,$(FW_OUT)/scenes/$(call fw_scene_id,$(n))_480.c,$(n),320x480,$(FW_STRIP_ROWS),$(call fw_scene_id,$(n))_480,1))
+FW_CUBE480_SCENES := $(FW_CUBE_SCENES)
 # $(1) = SET (variable names), $(2) = set (file names), $(3) = the suffix of
 # the scenes' files (none: compiled at 240x240). The list of scenes,
 # fw_<set>_scenes.list, is rewritten only when FW_<SET>_SCENES changes, so
@@ -104,6 +109,7 @@ $(call fw_scene_set,MESH,mesh)
 $(call fw_scene_set,CUBE320,cube320,_320)
 $(call fw_scene_set,CUBE128,cube128,_128)
 $(call fw_scene_set,CUBE128SQ,cube128sq,_128sq)
+$(call fw_scene_set,CUBE480,cube480,_480)
 # fw_frac_objs(OBJ_DIR,SOURCES): the objects of an image that links a scene
 # set; they are compiled after, and again when, the format changes.
 fw_frac_objs = $(patsubst %.c,$(1)/%.o,$(2))
@@ -209,6 +215,10 @@ $(call fw_scene_image,cgfs-cube-ssd1351-1core,CUBE128SQ,$(FW_SSD1351) $(FW_1CORE
 FW_GC9A01 := -DFW_PANEL=panel_gc9a01_240x240 -DFW_WIDTH=240 -DFW_HEIGHT=240
 $(call fw_scene_image,cgfs-cube-gc9a01,CUBE,$(FW_GC9A01) -DFW_FRAMES_PER_SCENE=$(FW_CUBE_FRAMES))
 $(call fw_scene_image,cgfs-cube-gc9a01-1core,CUBE,$(FW_GC9A01) $(FW_1CORE_FLAGS) -DFW_FRAMES_PER_SCENE=$(FW_CUBE_FRAMES))
+# And on the ILI9488 module, 320x480, 18-bit pixels (three bytes each on the bus).
+FW_ILI9488 := -DFW_PANEL=panel_ili9488_320x480 -DFW_WIDTH=320 -DFW_HEIGHT=480
+$(call fw_scene_image,cgfs-cube-ili9488,CUBE480,$(FW_ILI9488) -DFW_FRAMES_PER_SCENE=$(FW_CUBE_FRAMES))
+$(call fw_scene_image,cgfs-cube-ili9488-1core,CUBE480,$(FW_ILI9488) $(FW_1CORE_FLAGS) -DFW_FRAMES_PER_SCENE=$(FW_CUBE_FRAMES))
 # The ray tracer's benchmark: one frame of each, progressive (the preview's
 # time is rp2040sim's first_image_us).
 $(call fw_scene_image,cgfs-rt,RT,-DFW_FRAMES_PER_SCENE=1)
@@ -227,7 +237,7 @@ FW_RP_IMAGES := $(FW_OUT)/pico/cgfs.uf2 $(FW_OUT)/pico/cgfs-1core.uf2 $(FW_OUT)/
                 $(foreach i,cgfs-book cgfs-book-1core cgfs-book-bench cgfs-cube cgfs-cube-1core cgfs-cube-ili9341 \
                   cgfs-cube-ili9341-1core cgfs-cube-st7735 \
                   cgfs-cube-st7735-1core cgfs-cube-ssd1351 cgfs-cube-ssd1351-1core \
-                  cgfs-cube-gc9a01 cgfs-cube-gc9a01-1core cgfs-rt cgfs-rt-1core cgfs-mesh,$(FW_OUT)/pico/$(i).uf2)
+                  cgfs-cube-gc9a01 cgfs-cube-gc9a01-1core cgfs-cube-ili9488 cgfs-cube-ili9488-1core cgfs-rt cgfs-rt-1core cgfs-mesh,$(FW_OUT)/pico/$(i).uf2)
 
 .PHONY: firmware-pico
 firmware-pico: deps-firmware

@@ -34,6 +34,9 @@ TESTS     += tests/system/test_rp2040sim_cube.sh:$(BUILD):$(FW_CUBE_FRAMES):cgfs
 # and on the GC9A01 round module, 240x240 (the glass: the circle)
 TEST_DEPS += $(FW_OUT)/pico/cgfs-cube-gc9a01-1core.elf
 TESTS     += tests/system/test_rp2040sim_cube.sh:$(BUILD):$(FW_CUBE_FRAMES):cgfs-cube-gc9a01-1core:gc9a01_240x240:240x240
+# and on the ILI9488 module, 320x480 (18-bit pixels on the bus)
+TEST_DEPS += $(FW_OUT)/pico/cgfs-cube-ili9488-1core.elf
+TESTS     += tests/system/test_rp2040sim_cube.sh:$(BUILD):$(FW_CUBE_FRAMES):cgfs-cube-ili9488-1core:ili9488_320x480:320x480
 # the two-core images on both emulated cores (tools/rp2040sim/dualcore.js)
 TEST_DEPS += $(FW_OUT)/pico/cgfs.elf $(FW_OUT)/pico/cgfs-book.elf
 TESTS     += tests/system/test_rp2040sim_dual.sh:$(BUILD)

@@ -20,7 +20,8 @@
 # ssd1351_128x128 128x128, the SSD1351 OLED (fw_cube128sq_num_frac.h), or
 # cgfs-cube-gc9a01-1core gc9a01_240x240 240x240, the GC9A01 round module (the
 # scenes of the ST7789 image; outside the circle the glass shows black, in the
-# image as in host_sim's); host_sim renders on PANEL too; the cases' names
+# image as in host_sim's), or cgfs-cube-ili9488-1core ili9488_320x480 320x480,
+# the ILI9488 (fw_cube480_num_frac.h; 18-bit pixels); host_sim renders on PANEL too; the cases' names
 # then carry "_<SIZE>" ("_<PANEL>" at 240x240).
 # usage: test_rp2040sim_cube.sh BUILD_DIR [FRAMES_PER_SCENE [IMAGE PANEL SIZE]]
 set -u
@@ -36,6 +37,7 @@ case $size in
 240x240) tag= ; [ "$panel" = st7789_240x240 ] || tag=_$panel ;;
 128x160) set=cube128 ;;
 128x128) set=cube128sq ;;
+320x480) set=cube480 ;;
 *) set=cube320 ;;
 esac
 t=$(mktemp -d)

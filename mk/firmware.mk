@@ -211,10 +211,14 @@ $(call fw_scene_image,cgfs-cube-st7735-1core,CUBE128,$(FW_ST7735) $(FW_1CORE_FLA
 FW_SSD1351 := -DFW_PANEL=panel_ssd1351_128x128 -DFW_WIDTH=128 -DFW_HEIGHT=128
 $(call fw_scene_image,cgfs-cube-ssd1351,CUBE128SQ,$(FW_SSD1351) -DFW_FRAMES_PER_SCENE=$(FW_CUBE_FRAMES))
 $(call fw_scene_image,cgfs-cube-ssd1351-1core,CUBE128SQ,$(FW_SSD1351) $(FW_1CORE_FLAGS) -DFW_FRAMES_PER_SCENE=$(FW_CUBE_FRAMES))
-# And on the GC9A01 round module, 240x240 (the cube scenes as compiled for the ST7789).
-FW_GC9A01 := -DFW_PANEL=panel_gc9a01_240x240 -DFW_WIDTH=240 -DFW_HEIGHT=240
+# And on the GC9A01 round module, 240x240 (the cube scenes as compiled for the ST7789),
+# the ray tracer skipping the pixels outside the glass's circle (FW_GC9A01_ROUND=0: not).
+FW_GC9A01_ROUND ?= 1
+FW_GC9A01 := -DFW_PANEL=panel_gc9a01_240x240 -DFW_WIDTH=240 -DFW_HEIGHT=240 -DFW_ROUND_GLASS=$(FW_GC9A01_ROUND)
 $(call fw_scene_image,cgfs-cube-gc9a01,CUBE,$(FW_GC9A01) -DFW_FRAMES_PER_SCENE=$(FW_CUBE_FRAMES))
 $(call fw_scene_image,cgfs-cube-gc9a01-1core,CUBE,$(FW_GC9A01) $(FW_1CORE_FLAGS) -DFW_FRAMES_PER_SCENE=$(FW_CUBE_FRAMES))
+# The book scenes on it, one frame each (the ray-traced one is where the circle saves).
+$(call fw_scene_image,cgfs-book-gc9a01,BOOK,$(FW_GC9A01) -DFW_FRAMES_PER_SCENE=1)
 # And on the ILI9488 module, 320x480, 18-bit pixels (three bytes each on the bus).
 FW_ILI9488 := -DFW_PANEL=panel_ili9488_320x480 -DFW_WIDTH=320 -DFW_HEIGHT=480
 $(call fw_scene_image,cgfs-cube-ili9488,CUBE480,$(FW_ILI9488) -DFW_FRAMES_PER_SCENE=$(FW_CUBE_FRAMES))
@@ -237,7 +241,8 @@ FW_RP_IMAGES := $(FW_OUT)/pico/cgfs.uf2 $(FW_OUT)/pico/cgfs-1core.uf2 $(FW_OUT)/
                 $(foreach i,cgfs-book cgfs-book-1core cgfs-book-bench cgfs-cube cgfs-cube-1core cgfs-cube-ili9341 \
                   cgfs-cube-ili9341-1core cgfs-cube-st7735 \
                   cgfs-cube-st7735-1core cgfs-cube-ssd1351 cgfs-cube-ssd1351-1core \
-                  cgfs-cube-gc9a01 cgfs-cube-gc9a01-1core cgfs-cube-ili9488 cgfs-cube-ili9488-1core cgfs-rt cgfs-rt-1core cgfs-mesh,$(FW_OUT)/pico/$(i).uf2)
+                  cgfs-cube-gc9a01 cgfs-cube-gc9a01-1core cgfs-book-gc9a01 cgfs-cube-ili9488 \
+                  cgfs-cube-ili9488-1core cgfs-rt cgfs-rt-1core cgfs-mesh,$(FW_OUT)/pico/$(i).uf2)
 
 .PHONY: firmware-pico
 firmware-pico: deps-firmware

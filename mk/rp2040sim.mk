@@ -19,7 +19,8 @@ $(FW_HOST_REF): $(call obj,host,none,tests/support/fw_host_ref.c) $(call obj,hos
 
 TEST_DEPS += $(RP2040SIM_DEPS) $(FW_HOST_REF) $(FW_OUT)/pico/cgfs-1core.elf $(FW_OUT)/pico/cgfs-1core.bin
 TESTS     += tests/system/test_rp2040sim.sh:$(BUILD)
-TEST_DEPS += $(FW_OUT)/pico/cgfs-ili9341.elf $(FW_OUT)/pico/cgfs-rot2.elf $(FW_OUT)/pico/cgfs-book-gc9a01.elf
+TEST_DEPS += $(FW_OUT)/pico/cgfs-ili9341.elf $(FW_OUT)/pico/cgfs-rot2.elf $(FW_OUT)/pico/cgfs-book-gc9a01.elf \
+             $(FW_OUT)/pico/cgfs-book-ssd1351.elf $(FW_OUT)/pico/cgfs-book-ili9488.elf
 TESTS     += tests/system/test_rp2040sim_panels.sh:$(BUILD)
 TEST_DEPS += $(FW_OUT)/pico/cgfs-book-1core.elf $(FW_OUT)/pico/cgfs-cube-1core.elf $(BUILD)/host_sim
 TESTS     += tests/system/test_rp2040sim_book.sh:$(BUILD) tests/system/test_rp2040sim_cube.sh:$(BUILD):$(FW_CUBE_FRAMES)

@@ -15,6 +15,7 @@ int dcs_init(struct dcs *d, const struct hal *hal)
     d->y_off = 0;
     d->bytes_sent = 0;
     d->next_buf = 0;
+    d->rgb666 = 0;
     hal->line_set(hal->ctx, HAL_LINE_CS, 1);
     hal->line_set(hal->ctx, HAL_LINE_DC, 1);
     return 0;
@@ -120,9 +121,40 @@ static int send_chunk(struct dcs *d, int k, size_t n)
     return spi(d, d->buf[k], n);
 }
 
+/* One RGB565 pixel as three bytes, each channel's top bits repeated below
+ * it (31 -> 255, 63 -> 255, 0 -> 0): the controller reads bits 7..2. */
+static void put666(uint8_t *b, uint16_t v)
+{
+    unsigned r = v >> 11, g = (v >> 5) & 0x3Fu, bl = v & 0x1Fu;
+    b[0] = (uint8_t)(r << 3 | r >> 2);
+    b[1] = (uint8_t)(g << 2 | g >> 4);
+    b[2] = (uint8_t)(bl << 3 | bl >> 2);
+}
+
+static int write_pixels666(struct dcs *d, const uint16_t *px, size_t n)
+{
+    int k = d->next_buf;
+    while (n > 0) {
+        size_t m = n < DCS_CHUNK_BYTES / 3 ? n : DCS_CHUNK_BYTES / 3;
+        uint8_t *b = d->buf[k];
+        for (size_t i = 0; i < m; i++)
+            put666(b + 3 * i, px[i]);
+        int rc = send_chunk(d, k, 3 * m);
+        if (rc != 0)
+            return rc;
+        px += m;
+        n -= m;
+        k ^= 1;
+        d->next_buf = (uint8_t)k;
+    }
+    return 0;
+}
+
 int dcs_write_pixels(struct dcs *d, const uint16_t *px, size_t n)
 {
     int k = d->next_buf;
+    if (d->rgb666)
+        return write_pixels666(d, px, n);
     while (n > 0) {
         size_t m = n < DCS_CHUNK_BYTES / 2 ? n : DCS_CHUNK_BYTES / 2;
         uint8_t *b = d->buf[k];
@@ -144,7 +176,7 @@ int dcs_write_pixels(struct dcs *d, const uint16_t *px, size_t n)
 int dcs_write_pixels_async(struct dcs *d, const uint16_t *px, size_t n, hal_done_fn done, void *arg)
 {
     const struct hal *h = d->hal;
-    if (h->pixels_async) {
+    if (h->pixels_async && !d->rgb666) {
         d->bytes_sent += (uint32_t)(2u * n);
         return h->pixels_async(h->ctx, px, n, done, arg);
     }
@@ -163,19 +195,24 @@ int dcs_wait(struct dcs *d)
 int dcs_write_fill(struct dcs *d, uint16_t colour, size_t n)
 {
     /* One buffer never changes while it is on the bus, so it is filled once. */
-    size_t per = DCS_CHUNK_BYTES / 2;
+    size_t bpp = d->rgb666 ? 3 : 2;
+    size_t per = DCS_CHUNK_BYTES / bpp;
     size_t m0 = n < per ? n : per;
     int k = d->next_buf;
     if (n == 0)
         return 0;
     for (size_t i = 0; i < m0; i++) {
-        d->buf[k][2 * i] = (uint8_t)(colour >> 8);
-        d->buf[k][2 * i + 1] = (uint8_t)colour;
+        if (d->rgb666) {
+            put666(d->buf[k] + 3 * i, colour);
+        } else {
+            d->buf[k][2 * i] = (uint8_t)(colour >> 8);
+            d->buf[k][2 * i + 1] = (uint8_t)colour;
+        }
     }
     d->next_buf = (uint8_t)(k ^ 1);
     while (n > 0) {
         size_t m = n < per ? n : per;
-        int rc = send_chunk(d, k, 2 * m);
+        int rc = send_chunk(d, k, bpp * m);
         if (rc != 0)
             return rc;
         n -= m;

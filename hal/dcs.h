@@ -61,8 +61,14 @@
 #define DCS_CHUNK_BYTES 512
 #endif
 
+#if DCS_CHUNK_BYTES < 6 || DCS_CHUNK_BYTES % 2
+#error "DCS_CHUNK_BYTES: even, at least 6"
+#endif
+
 struct dcs {
     const struct hal *hal;       /* not owned; must outlive the dcs */
+    uint8_t rgb666;              /* 1: pixels go as three bytes, R G B in bits 7..2
+                                    (COLMOD 18-bit: the ILI9488 on SPI); 0: RGB565 */
     uint16_t x_off, y_off;       /* added to CASET / RASET addresses */
     uint32_t bytes_sent;         /* SPI bytes sent so far (statistics; wraps) */
     uint8_t next_buf;            /* buffer to fill next (the other may be on the bus) */
@@ -103,11 +109,14 @@ int dcs_write_begin(struct dcs *d, int cont);
 int dcs_write_begin_cmd(struct dcs *d, uint8_t cmd);
 /* Sends n raw data bytes inside a write begun with dcs_write_begin. */
 int dcs_write_data(struct dcs *d, const uint8_t *data, size_t n);
-/* Sends n RGB565 pixels big-endian, converted in chunks through d->buf. */
+/* Sends n RGB565 pixels big-endian, converted in chunks through d->buf;
+ * with d->rgb666 each as three bytes (every 5- or 6-bit channel widened to 8
+ * bits by repeating its top bits), DCS_CHUNK_BYTES / 3 pixels a chunk: no
+ * buffer of a whole frame. */
 int dcs_write_pixels(struct dcs *d, const uint16_t *px, size_t n);
 /* Sends n RGB565 pixels inside a write begun with dcs_write_begin and
  * returns; done(arg) (may be NULL) runs once px may be reused. With the HAL's
- * pixels_async the pixels go as 16-bit frames by DMA and done runs on
+ * pixels_async (and not d->rgb666) the pixels go as 16-bit frames by DMA and done runs on
  * completion (px untouched until then, or until dcs_wait/dcs_write_end);
  * otherwise they are converted as dcs_write_pixels does and done runs
  * before this returns. The bytes on the wire are the same either way. */

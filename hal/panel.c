@@ -36,13 +36,18 @@ static int send(struct panel *p, uint16_t c, const uint8_t *params, size_t n)
     return c == PANEL_CMD_NONE ? 0 : dcs_command(&p->dcs, (uint8_t)c, params, n);
 }
 
-/* The window x0..x1 x y0..y1 and the start of a memory write into it. */
+/* The window x0..x1 x y0..y1 and the start of a memory write into it. A
+ * controller without a row/column exchange (xy_by_driver) takes the
+ * window's rows as columns and its columns as rows in odd rotations; the
+ * offsets stay with the commands (x_off: the column command's). */
 static int open_window(struct panel *p, uint16_t x0, uint16_t y0, uint16_t x1, uint16_t y1)
 {
     const struct panel_ctl *c = panel_ctl(p);
     if (c->set_cols == PANEL_CMD_NONE || c->set_rows == PANEL_CMD_NONE || c->write_mem == PANEL_CMD_NONE)
         return -1;
-    int rc = dcs_set_window_cmds(&p->dcs, (uint8_t)c->set_cols, (uint8_t)c->set_rows, c->addr_bytes, x0, y0, x1, y1);
+    int rc = (c->xy_by_driver && (p->rotation & 1))
+                 ? dcs_set_window_cmds(&p->dcs, (uint8_t)c->set_cols, (uint8_t)c->set_rows, c->addr_bytes, y0, x0, y1, x1)
+                 : dcs_set_window_cmds(&p->dcs, (uint8_t)c->set_cols, (uint8_t)c->set_rows, c->addr_bytes, x0, y0, x1, y1);
     return rc ? rc : dcs_write_begin_cmd(&p->dcs, (uint8_t)c->write_mem);
 }
 
@@ -67,6 +72,7 @@ int panel_init(struct panel *p, const struct panel_desc *d, const struct hal *ha
     p->flush_w = 0;
     p->flush_rows = 0;
     int rc = dcs_init(&p->dcs, hal);
+    p->dcs.rgb666 = panel_ctl(p)->pixel_bytes == 3;
     hal->line_set(hal->ctx, HAL_LINE_BL, 0);
     if (rc == 0)
         rc = dcs_hw_reset(&p->dcs, d->reset_low_ms, d->reset_wait_ms);
@@ -116,7 +122,7 @@ int panel_flush_rows(struct panel *p, const uint16_t *px, uint16_t rows, hal_don
     p->flush_rows = (uint16_t)(p->flush_rows - rows);
     size_t n = (size_t)p->flush_w * rows;
     const struct hal *h = p->dcs.hal;
-    if (h->pixels_async) {          /* the DMA path, without a call through dcs.c */
+    if (h->pixels_async && !p->dcs.rgb666) {  /* the DMA path, without a call through dcs.c */
         p->dcs.bytes_sent += (uint32_t)(2u * n);
         return h->pixels_async(h->ctx, px, n, done, arg);
     }

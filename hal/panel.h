@@ -55,11 +55,27 @@ struct panel_ctl {
     uint16_t disp_on, disp_off;
     uint16_t sleep_in, sleep_out;
     uint16_t sleep_wait_ms;      /* wait after sleep_in and sleep_out */
+    uint8_t xy_by_driver;        /* 1: the controller cannot exchange rows and
+                                    columns (no DCS MV): in odd rotations the
+                                    driver sends the window's columns with
+                                    set_rows and its rows with set_cols, and
+                                    the orientation parameter turns on the
+                                    controller's vertical address increment */
+    uint8_t pixel_bytes;         /* bytes a pixel on the wire: 0 or 2, RGB565;
+                                    3, RGB666 converted on the way out
+                                    (struct dcs rgb666), never by the HAL's
+                                    pixels_async */
 };
 
 /* MIPI DCS: CASET/RASET (16-bit addresses), RAMWR, MADCTL, INVON/INVOFF,
  * DISPON/DISPOFF, SLPIN/SLPOUT and 120 ms after a sleep change. */
 extern const struct panel_ctl panel_ctl_dcs;
+/* Solomon Systech SSD1351 (OLED): 15h/75h windows with 1-byte addresses,
+ * write RAM 5Ch, remap A0h, A6h/A7h, sleep AEh/AFh (hal/panel_ssd1351.c). */
+extern const struct panel_ctl panel_ctl_ssd1351;
+/* MIPI DCS with 18-bit pixels, three bytes each (the ILI9488 on SPI, which
+ * has no 16-bit mode there; hal/panel_ili9488.c). */
+extern const struct panel_ctl panel_ctl_ili9488;
 
 struct panel_desc {
     const char *name;            /* "st7789_240x240", ... (panel_find key) */

@@ -38,7 +38,7 @@ struct panel_out {
     uint16_t *fb;                /* memory framebuffer, or the copy of what was sent (linux) */
     struct hal hal;
     struct hal_sim sim;
-    struct emu_panel *emu;       /* ~150 KiB, so on the heap */
+    struct emu_panel *emu;       /* ~300 KiB, so on the heap */
     struct panel panel;
     struct hal_linux lx;
     int lx_open;

@@ -8,8 +8,10 @@
 #   build/firmware/pico/cgfs.{elf,bin,uf2,map}         two cores (the board)
 #   build/firmware/pico/cgfs-1core.{elf,bin,uf2,map}   RP2040_SINGLE_CORE=1 (rp2040js)
 #   build/firmware/pico/cgfs-{book,cube}{,-1core}.*    scenes compiled by tools/scenec
-#   build/firmware/pico/cgfs-cube-{ili9341,st7735}{,-1core}.*  the cube scenes on the
-#                                                      other modules (320x240, 128x160)
+#   build/firmware/pico/cgfs-cube-{ili9341,st7735,ssd1351,gc9a01,ili9488}{,-1core}.*
+#                                                      the cube scenes on the other modules
+#                                                      (320x240, 128x160, 128x128, 240x240
+#                                                      round, 320x480)
 #   build/firmware/stm32f411/cgfs{,-fixed}.{elf,bin,map}  Cortex-M4F, see below
 #
 # Build options (make VAR=value): FW_PINS (extra -D pin options, e.g.
@@ -75,6 +77,21 @@ FW_CUBE320_SCENES := $(FW_CUBE_SCENES)
 $(foreach n,$(FW_CUBE_SCENES),\
     $(call scenec_rule,$(FW_OUT)/scenes/$(call fw_scene_id,$(n))_128.c,$(n),128x160,$(FW_STRIP_ROWS),$(call fw_scene_id,$(n))_128,1,rp2040))
 FW_CUBE128_SCENES := $(FW_CUBE_SCENES)
+# And at 128x128, for the SSD1351 OLED module (files and identifiers <id>_128sq).
+$(foreach n,$(FW_CUBE_SCENES),\
+    $(call scenec_rule,$(FW_OUT)/scenes/$(call fw_scene_id,$(n))_128sq.c,$(n),128x128,$(FW_STRIP_ROWS),$(call fw_scene_id,$(n))_128sq,1))
+FW_CUBE128SQ_SCENES := $(FW_CUBE_SCENES)
+# And at 320x480, for the ILI9488 module (files and identifiers <id>_480).
+$(foreach n,$(FW_CUBE_SCENES),\
+    $(call scenec_rule,$(FW_OUT)/scenes/$(call fw_scene_id,$(n))_480.c,$(n),320x480,$(FW_STRIP_ROWS),$(call fw_scene_id,$(n))_480,1))
+FW_CUBE480_SCENES := $(FW_CUBE_SCENES)
+# The book scenes at 128x128 (the SSD1351) and 320x480 (the ILI9488), likewise.
+$(foreach n,$(FW_BOOK_SCENES),\
+    $(call scenec_rule,$(FW_OUT)/scenes/$(call fw_scene_id,$(n))_128sq.c,$(n),128x128,$(FW_STRIP_ROWS),$(call fw_scene_id,$(n))_128sq,1))
+$(foreach n,$(FW_BOOK_SCENES),\
+    $(call scenec_rule,$(FW_OUT)/scenes/$(call fw_scene_id,$(n))_480.c,$(n),320x480,$(FW_STRIP_ROWS),$(call fw_scene_id,$(n))_480,1))
+FW_BOOK128SQ_SCENES := $(FW_BOOK_SCENES)
+FW_BOOK480_SCENES := $(FW_BOOK_SCENES)
 # $(1) = SET (variable names), $(2) = set (file names), $(3) = the suffix of
 # the scenes' files (none: compiled at 240x240). The list of scenes,
 # fw_<set>_scenes.list, is rewritten only when FW_<SET>_SCENES changes, so
@@ -99,6 +116,10 @@ $(call fw_scene_set,RT,rt)
 $(call fw_scene_set,MESH,mesh)
 $(call fw_scene_set,CUBE320,cube320,_320)
 $(call fw_scene_set,CUBE128,cube128,_128)
+$(call fw_scene_set,CUBE128SQ,cube128sq,_128sq)
+$(call fw_scene_set,CUBE480,cube480,_480)
+$(call fw_scene_set,BOOK128SQ,book128sq,_128sq)
+$(call fw_scene_set,BOOK480,book480,_480)
 # fw_frac_objs(OBJ_DIR,SOURCES): the objects of an image that links a scene
 # set; they are compiled after, and again when, the format changes.
 fw_frac_objs = $(patsubst %.c,$(1)/%.o,$(2))
@@ -196,6 +217,24 @@ $(call fw_scene_image,cgfs-cube-ili9341-1core,CUBE320,$(FW_ILI320) $(FW_1CORE_FL
 FW_ST7735 := -DFW_PANEL=panel_st7735_128x160 -DFW_WIDTH=128 -DFW_HEIGHT=160
 $(call fw_scene_image,cgfs-cube-st7735,CUBE128,$(FW_ST7735) -DFW_FRAMES_PER_SCENE=$(FW_CUBE_FRAMES))
 $(call fw_scene_image,cgfs-cube-st7735-1core,CUBE128,$(FW_ST7735) $(FW_1CORE_FLAGS) -DFW_FRAMES_PER_SCENE=$(FW_CUBE_FRAMES))
+# And on the SSD1351 OLED module, 128x128 (the first controller that is not DCS).
+FW_SSD1351 := -DFW_PANEL=panel_ssd1351_128x128 -DFW_WIDTH=128 -DFW_HEIGHT=128
+$(call fw_scene_image,cgfs-cube-ssd1351,CUBE128SQ,$(FW_SSD1351) -DFW_FRAMES_PER_SCENE=$(FW_CUBE_FRAMES))
+$(call fw_scene_image,cgfs-cube-ssd1351-1core,CUBE128SQ,$(FW_SSD1351) $(FW_1CORE_FLAGS) -DFW_FRAMES_PER_SCENE=$(FW_CUBE_FRAMES))
+$(call fw_scene_image,cgfs-book-ssd1351,BOOK128SQ,$(FW_SSD1351) -DFW_FRAMES_PER_SCENE=1)
+# And on the GC9A01 round module, 240x240 (the cube scenes as compiled for the ST7789),
+# the ray tracer skipping the pixels outside the glass's circle (FW_GC9A01_ROUND=0: not).
+FW_GC9A01_ROUND ?= 1
+FW_GC9A01 := -DFW_PANEL=panel_gc9a01_240x240 -DFW_WIDTH=240 -DFW_HEIGHT=240 -DFW_ROUND_GLASS=$(FW_GC9A01_ROUND)
+$(call fw_scene_image,cgfs-cube-gc9a01,CUBE,$(FW_GC9A01) -DFW_FRAMES_PER_SCENE=$(FW_CUBE_FRAMES))
+$(call fw_scene_image,cgfs-cube-gc9a01-1core,CUBE,$(FW_GC9A01) $(FW_1CORE_FLAGS) -DFW_FRAMES_PER_SCENE=$(FW_CUBE_FRAMES))
+# The book scenes on it, one frame each (the ray-traced one is where the circle saves).
+$(call fw_scene_image,cgfs-book-gc9a01,BOOK,$(FW_GC9A01) -DFW_FRAMES_PER_SCENE=1)
+# And on the ILI9488 module, 320x480, 18-bit pixels (three bytes each on the bus).
+FW_ILI9488 := -DFW_PANEL=panel_ili9488_320x480 -DFW_WIDTH=320 -DFW_HEIGHT=480
+$(call fw_scene_image,cgfs-cube-ili9488,CUBE480,$(FW_ILI9488) -DFW_FRAMES_PER_SCENE=$(FW_CUBE_FRAMES))
+$(call fw_scene_image,cgfs-cube-ili9488-1core,CUBE480,$(FW_ILI9488) $(FW_1CORE_FLAGS) -DFW_FRAMES_PER_SCENE=$(FW_CUBE_FRAMES))
+$(call fw_scene_image,cgfs-book-ili9488,BOOK480,$(FW_ILI9488) -DFW_FRAMES_PER_SCENE=1)
 # The ray tracer's benchmark: one frame of each, progressive (the preview's
 # time is rp2040sim's first_image_us).
 $(call fw_scene_image,cgfs-rt,RT,-DFW_FRAMES_PER_SCENE=1)
@@ -213,7 +252,9 @@ FW_RP_IMAGES := $(FW_OUT)/pico/cgfs.uf2 $(FW_OUT)/pico/cgfs-1core.uf2 $(FW_OUT)/
                 $(FW_OUT)/pico/cgfs-rot2.uf2 \
                 $(foreach i,cgfs-book cgfs-book-1core cgfs-book-bench cgfs-cube cgfs-cube-1core cgfs-cube-ili9341 \
                   cgfs-cube-ili9341-1core cgfs-cube-st7735 \
-                  cgfs-cube-st7735-1core cgfs-rt cgfs-rt-1core cgfs-mesh,$(FW_OUT)/pico/$(i).uf2)
+                  cgfs-cube-st7735-1core cgfs-cube-ssd1351 cgfs-cube-ssd1351-1core \
+                  cgfs-cube-gc9a01 cgfs-cube-gc9a01-1core cgfs-book-gc9a01 cgfs-cube-ili9488 \
+                  cgfs-cube-ili9488-1core cgfs-book-ssd1351 cgfs-book-ili9488 cgfs-rt cgfs-rt-1core cgfs-mesh,$(FW_OUT)/pico/$(i).uf2)
 
 .PHONY: firmware-pico
 firmware-pico: deps-firmware

@@ -39,6 +39,9 @@ $(foreach v,$(VARIANTS),$(eval $(call HOST_SIM_LINK,$(v))))
 PROGRAMS  += $(HOST_SIM_BIN_host)
 TEST_DEPS += $(HOST_SIM_BIN_asan) $(HOST_SIM_BIN_host)
 TESTS     += tests/system/test_host_sim.sh:$(HOST_SIM_BIN_asan)
+# every scene on every panel of hal/panels.def, at the panel's size (the
+# optimised build: 40 scenes x 9 panels)
+TESTS     += tests/system/test_host_sim_panels.sh:$(HOST_SIM_BIN_host)
 # --loop, dirty-rectangle flush, per-frame --out, --fps-overlay, progress line
 TESTS     += tests/system/test_live.sh:$(HOST_SIM_BIN_asan)
 # --window under Xvfb: a screenshot (xwd) against the PNG

@@ -44,6 +44,7 @@ PANEL  ?= st7789
 FRAMES ?= 0
 IMG_LPAREN := (
 IMG_PANELS := $(shell sed -n 's/^PANEL$(IMG_LPAREN)\([A-Za-z0-9_]*\),.*/\1/p' hal/panels.def)
+IMG_CONTROLLERS := $(sort $(foreach p,$(IMG_PANELS),$(firstword $(subst _, ,$(p)))))
 IMG_PANEL  := $(if $(filter $(PANEL),$(IMG_PANELS)),$(PANEL),$(firstword $(filter $(PANEL)_%,$(IMG_PANELS))))
 
 ifneq ($(words $(NAME)),1)
@@ -67,7 +68,7 @@ ifneq ($(IMG_MISSING),)
 $(error image $(NAME): $(IMG_MISSING): no such scene file)
 endif
 ifeq ($(IMG_PANEL),)
-$(error image $(NAME): PANEL=$(PANEL): not a panel of hal/panels.def ($(IMG_PANELS), or st7789, ili9341))
+$(error image $(NAME): PANEL=$(PANEL): not a panel of hal/panels.def ($(IMG_PANELS), or a controller: $(IMG_CONTROLLERS)))
 endif
 ifneq ($(words $(FRAMES))$(call img_rest,$(FRAMES),$(IMG_DIGITS)),1)
 $(error image $(NAME): FRAMES=$(FRAMES): a number of frames per scene, or 0 for each scene's own)

@@ -19,7 +19,8 @@ $(FW_HOST_REF): $(call obj,host,none,tests/support/fw_host_ref.c) $(call obj,hos
 
 TEST_DEPS += $(RP2040SIM_DEPS) $(FW_HOST_REF) $(FW_OUT)/pico/cgfs-1core.elf $(FW_OUT)/pico/cgfs-1core.bin
 TESTS     += tests/system/test_rp2040sim.sh:$(BUILD)
-TEST_DEPS += $(FW_OUT)/pico/cgfs-ili9341.elf $(FW_OUT)/pico/cgfs-rot2.elf
+TEST_DEPS += $(FW_OUT)/pico/cgfs-ili9341.elf $(FW_OUT)/pico/cgfs-rot2.elf $(FW_OUT)/pico/cgfs-book-gc9a01.elf \
+             $(FW_OUT)/pico/cgfs-book-ssd1351.elf $(FW_OUT)/pico/cgfs-book-ili9488.elf
 TESTS     += tests/system/test_rp2040sim_panels.sh:$(BUILD)
 TEST_DEPS += $(FW_OUT)/pico/cgfs-book-1core.elf $(FW_OUT)/pico/cgfs-cube-1core.elf $(BUILD)/host_sim
 TESTS     += tests/system/test_rp2040sim_book.sh:$(BUILD) tests/system/test_rp2040sim_cube.sh:$(BUILD):$(FW_CUBE_FRAMES)
@@ -28,6 +29,15 @@ TESTS     += tests/system/test_rp2040sim_cube.sh:$(BUILD):$(FW_CUBE_FRAMES):cgfs
 # and on the ST7735S 1.8" module, 128x160
 TEST_DEPS += $(FW_OUT)/pico/cgfs-cube-st7735-1core.elf
 TESTS     += tests/system/test_rp2040sim_cube.sh:$(BUILD):$(FW_CUBE_FRAMES):cgfs-cube-st7735-1core:st7735_128x160:128x160
+# and on the SSD1351 OLED module, 128x128 (not DCS)
+TEST_DEPS += $(FW_OUT)/pico/cgfs-cube-ssd1351-1core.elf
+TESTS     += tests/system/test_rp2040sim_cube.sh:$(BUILD):$(FW_CUBE_FRAMES):cgfs-cube-ssd1351-1core:ssd1351_128x128:128x128
+# and on the GC9A01 round module, 240x240 (the glass: the circle)
+TEST_DEPS += $(FW_OUT)/pico/cgfs-cube-gc9a01-1core.elf
+TESTS     += tests/system/test_rp2040sim_cube.sh:$(BUILD):$(FW_CUBE_FRAMES):cgfs-cube-gc9a01-1core:gc9a01_240x240:240x240
+# and on the ILI9488 module, 320x480 (18-bit pixels on the bus)
+TEST_DEPS += $(FW_OUT)/pico/cgfs-cube-ili9488-1core.elf
+TESTS     += tests/system/test_rp2040sim_cube.sh:$(BUILD):$(FW_CUBE_FRAMES):cgfs-cube-ili9488-1core:ili9488_320x480:320x480
 # the two-core images on both emulated cores (tools/rp2040sim/dualcore.js)
 TEST_DEPS += $(FW_OUT)/pico/cgfs.elf $(FW_OUT)/pico/cgfs-book.elf
 TESTS     += tests/system/test_rp2040sim_dual.sh:$(BUILD)

@@ -79,6 +79,11 @@
 #ifndef FW_RING
 #define FW_RING 4
 #endif
+/* FW_ROUND_GLASS 1: the panel's glass is round (the GC9A01): the ray tracer
+ * does not trace the pixels outside its circle (render_set_round). */
+#ifndef FW_ROUND_GLASS
+#define FW_ROUND_GLASS 0
+#endif
 #ifndef FW_SKIP_UNCHANGED
 #define FW_SKIP_UNCHANGED 1
 #endif
@@ -233,9 +238,10 @@ static void flush_close(struct bus *b)
 static int scene_init(struct render_ctx *c, unsigned si, unsigned core)
 {
     const struct fw_scene *fs = &fw_scenes[si];
-    if (core == 0)
-        return render_init(c, fs->scene, FW_WIDTH, FW_HEIGHT, FW_STRIP_ROWS, fs->work[0], fs->work_size[0]);
-    return render_init_sibling(c, &ctx[0], fs->work[1], fs->work_size[1]);
+    int rc = core == 0 ? render_init(c, fs->scene, FW_WIDTH, FW_HEIGHT, FW_STRIP_ROWS, fs->work[0], fs->work_size[0])
+                       : render_init_sibling(c, &ctx[0], fs->work[1], fs->work_size[1]);
+    if (rc == 0 && FW_ROUND_GLASS) render_set_round(c, 1);
+    return rc;
 }
 
 /* ---- text helpers (no printf: it would cost more flash than the app) ---- */

@@ -63,6 +63,10 @@ int rt_init(void *work, size_t work_size, const struct scene *s, uint16_t width,
 int rt_begin_frame(void *work, uint16_t frame);
 /* enum render_pass of the following strips. */
 void rt_set_pass(void *work, uint8_t pass);
+/* on 1: the frame is seen through a round glass, the circle of diameter
+ * min(w, h) centred in it; the full pass's plain pixels outside it get the
+ * background instead of a ray (render_set_round). Kept until changed. */
+void rt_set_round(void *work, uint8_t on);
 /* Rows [t->y0, t->y1) of the current frame. */
 int rt_render_strip(void *work, struct render_target *t, struct render_stats *st);
 

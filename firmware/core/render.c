@@ -61,6 +61,13 @@ int render_set_pass(struct render_ctx *ctx, uint8_t pass)
     return 0;
 }
 
+int render_set_round(struct render_ctx *ctx, int on)
+{
+    if (ctx->scene->kind != SCENE_RAYTRACE) return -1;
+    rt_set_round(ctx->work, (uint8_t)(on != 0));
+    return 0;
+}
+
 int render_begin_frame(struct render_ctx *ctx, uint16_t frame)
 {
     if (ctx->owner) {

@@ -99,4 +99,12 @@ uint16_t render_background_565(const struct render_ctx *ctx);
  * for a pass the scene's renderer does not have (nothing changes). */
 int render_set_pass(struct render_ctx *ctx, uint8_t pass);
 
+/* on 1: the frame is seen through a round glass (the GC9A01's), the circle
+ * of diameter min(width, height) centred in it: the ray tracer writes the
+ * background to the pixels outside it instead of tracing them (the plain
+ * full pass; supersampled, subsampled and adaptive frames are traced whole).
+ * The rasterizer draws as before. 0, or -1 for a rasterized scene (nothing
+ * changes). Kept until changed. */
+int render_set_round(struct render_ctx *ctx, int on);
+
 #endif

@@ -1,10 +1,12 @@
 /* SPDX-License-Identifier: MIT */
-/* emu_panel.h — an emulated SPI display controller (ST7789, ILI9341, ST7735S).
+/* emu_panel.h — an emulated SPI display controller (ST7789, ILI9341, ST7735S,
+ * SSD1351, GC9A01, ILI9488).
  *
  * Decodes the byte stream and line changes a driver produces, as the
  * controllers' datasheets describe, keeps the controller's frame memory
  * (RGB565, in the controller's native orientation: 240 columns x 320 rows,
- * 132 x 162 on the ST7735S)
+ * 132 x 162 on the ST7735S, 128 x 128 on the SSD1351, 240 x 240 on the GC9A01,
+ * 320 x 480 on the ILI9488)
  * and shows what the module's glass displays.
  *
  * Strict: the first protocol violation is recorded as one line,
@@ -17,7 +19,7 @@
  * Time: every call carries the simulated time in nanoseconds (monotonic);
  * the waits after reset and sleep changes are checked against it.
  *
- * Memory: no heap; struct emu_panel holds the frame memory (~150 KiB), the
+ * Memory: no heap; struct emu_panel holds the frame memory (~300 KiB), the
  * caller provides it (static or malloc).
  */
 #ifndef HAL_EMU_PANEL_H
@@ -26,11 +28,11 @@
 #include <stddef.h>
 #include <stdint.h>
 
-#define EMU_MEM_W 240   /* controller memory columns (native; the largest model's) */
-#define EMU_MEM_H 320   /* controller memory rows (native; the largest model's) */
+#define EMU_MEM_W 320   /* controller memory columns (native; the largest model's) */
+#define EMU_MEM_H 480   /* controller memory rows (native; the largest model's) */
 #define EMU_MSG_LEN 160
 
-enum emu_model { EMU_ST7789 = 0, EMU_ILI9341 = 1, EMU_ST7735S = 2 };
+enum emu_model { EMU_ST7789 = 0, EMU_ILI9341 = 1, EMU_ST7735S = 2, EMU_SSD1351 = 3, EMU_GC9A01 = 4, EMU_ILI9488 = 5 };
 
 /* A module: a controller behind a glass. Facts of the hardware, not of the
  * driver; the modules are the GLASS lines of hal/panels.def. */
@@ -64,10 +66,15 @@ struct emu_panel {
     int cur;                     /* current command, -1 none */
     uint32_t nparam;             /* parameters received for cur */
     uint8_t param[16];
-    uint8_t half;                /* a pixel's first byte is pending */
-    uint8_t hi;
+    uint8_t half;                /* bytes of a pixel pending (1, or 1..2 for 3-byte pixels) */
+    uint8_t hi, mid;
     /* controller state */
     uint8_t asleep, display_on, inverted, idle, colmod, madctl;
+    uint8_t remap;               /* SSD1351: re-map / colour depth (A0h) */
+    uint8_t locked;              /* SSD1351: command lock on (FDh 16h) */
+    uint8_t protect;             /* SSD1351: A2h B1h B3h BBh BEh C1h refused (FDh B0h, reset) */
+    uint8_t mode;                /* SSD1351: display mode, A4h..A7h */
+    uint8_t inter;               /* GC9A01: inter-register enable, 0, 1 (FEh), 2 (FEh EFh) */
     uint8_t window_set;          /* bit 0: CASET seen, bit 1: RASET seen */
     uint8_t cont_valid;          /* RAMWRC may continue */
     uint16_t xs, xe, ys, ye;     /* window (logical, inclusive) */
@@ -115,6 +122,10 @@ uint16_t emu_panel_glass_height(const struct emu_panel *p);
 /* What the glass shows, as RGB565 in true RGB order, row-major, top row
  * first, w*h values; w and h must equal the viewed glass size (-1 if not). */
 int emu_panel_glass(const struct emu_panel *p, uint16_t *out, uint16_t w, uint16_t h);
+
+/* 1 if the viewed glass has a pixel at (x, y), 0 if not (outside a round
+ * glass, GC9A01: emu_panel_glass shows black there) or outside the glass. */
+int emu_panel_shown(const struct emu_panel *p, uint16_t x, uint16_t y);
 
 /* Controller memory cell (native column/row), for tests. */
 uint16_t emu_panel_mem(const struct emu_panel *p, uint16_t col, uint16_t row);

@@ -88,8 +88,11 @@ for api in v1 v2; do
 done
 
 # The SPI mode by default is the module's (hal/panel.h, spi_mode), whatever
-# its name: every ST7789 module in mode 3, the ILI9341 in mode 0.
-for m in st7789_240x320:3 ili9341_240x320:0 ili9341_320x240:0; do
+# its name: every ST7789 module in mode 3, the ILI9341 in mode 0; the other
+# controllers (the SSD1351: not DCS; the ILI9488: three bytes a pixel) in
+# mode 0, their streams through the Linux backend as strict as host_sim's.
+for m in st7789_240x320:3 ili9341_240x320:0 ili9341_320x240:0 st7735_128x160:0 ssd1351_128x128:0 \
+         gc9a01_240x240:0 ili9488_320x480:0; do
   module=${m%:*} want=${m#*:}
   size=${module#*_} ctl=${module%%_*}
   run_linux v1 "$module" 0 25,27,18 -- --panel "$ctl" --size "$size"

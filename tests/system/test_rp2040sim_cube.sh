@@ -15,9 +15,14 @@
 # ~10 s of emulation (0.13 G cycles). IMAGE, PANEL and SIZE run another
 # image of the cube scenes: cgfs-cube-ili9341-1core ili9341_320x240 320x240,
 # the ILI9341 module in landscape (its scenes compiled at 320x240, format in
-# fw_cube320_num_frac.h), or cgfs-cube-st7735-1core st7735_128x160 128x160, the
-# ST7735S 1.8" module (fw_cube128_num_frac.h); the cases' names then carry
-# "_<SIZE>".
+# fw_cube320_num_frac.h), cgfs-cube-st7735-1core st7735_128x160 128x160, the
+# ST7735S 1.8" module (fw_cube128_num_frac.h), or cgfs-cube-ssd1351-1core
+# ssd1351_128x128 128x128, the SSD1351 OLED (fw_cube128sq_num_frac.h), or
+# cgfs-cube-gc9a01-1core gc9a01_240x240 240x240, the GC9A01 round module (the
+# scenes of the ST7789 image; outside the circle the glass shows black, in the
+# image as in host_sim's), or cgfs-cube-ili9488-1core ili9488_320x480 320x480,
+# the ILI9488 (fw_cube480_num_frac.h; 18-bit pixels); host_sim renders on PANEL too; the cases' names
+# then carry "_<SIZE>" ("_<PANEL>" at 240x240).
 # usage: test_rp2040sim_cube.sh BUILD_DIR [FRAMES_PER_SCENE [IMAGE PANEL SIZE]]
 set -u
 b=${1:-build}
@@ -26,11 +31,14 @@ image=${3:-cgfs-cube-1core}
 panel=${4:-st7789_240x240}
 size=${5:-240x240}
 width=${size%x*}
-set=cube tag=
+set=cube
+tag=_$size
 case $size in
-240x240) ;;
-128x160) set=cube128 tag=_$size ;;
-*) set=cube320 tag=_$size ;;
+240x240) tag= ; [ "$panel" = st7789_240x240 ] || tag=_$panel ;;
+128x160) set=cube128 ;;
+128x128) set=cube128sq ;;
+320x480) set=cube480 ;;
+*) set=cube320 ;;
 esac
 t=$(mktemp -d)
 trap 'rm -rf "$t"' EXIT
@@ -54,7 +62,7 @@ for s in $scenes; do
   last=$((k + n - 1))
   if ! sed -n "$((k + 1))p" "$t/json" | grep "\"what\":\"scene:$s\"" | grep "\"frame\":0," | grep -q "\"cycles\":[1-9]"; then
     echo "FAIL rp2040sim_cube${tag}_equals_host_sim_$id: frame $k is not frame 0 of $s: $(sed -n "$((k + 1))p" "$t/json")"
-  elif ! "$b/host_sim" --scene "firmware/scenes/$s.scene" --size "$size" --numeric fixed \
+  elif ! "$b/host_sim" --scene "firmware/scenes/$s.scene" --panel "$panel" --size "$size" --numeric fixed \
        --num-frac "$frac" --out-raw "$t/host0.raw" >/dev/null 2>"$t/herr"; then
     echo "FAIL rp2040sim_cube${tag}_equals_host_sim_$id: host_sim: $(tail -n 1 "$t/herr")"
   elif cmp -s "$t/host0.raw" "$t/pico/frame-$k.raw"; then
@@ -65,7 +73,7 @@ for s in $scenes; do
   if [ "$n" -gt 1 ]; then
     if ! sed -n "$((last + 1))p" "$t/json" | grep "\"what\":\"scene:$s\"" | grep -q "\"frame\":$((n - 1)),"; then
       echo "FAIL rp2040sim_cube${tag}_last_frame_$id: frame $last is not frame $((n - 1)) of $s"
-    elif ! "$b/host_sim" --scene "firmware/scenes/$s.scene" --size "$size" --numeric fixed \
+    elif ! "$b/host_sim" --scene "firmware/scenes/$s.scene" --panel "$panel" --size "$size" --numeric fixed \
          --num-frac "$frac" --frames "$n" --out-raw "$t/hostn.raw" >/dev/null 2>"$t/herr"; then
       echo "FAIL rp2040sim_cube${tag}_last_frame_$id: host_sim: $(tail -n 1 "$t/herr")"
     elif cmp -s -i "$skip" "$t/hostn.raw" "$t/pico/frame-$last.raw"; then

@@ -68,6 +68,29 @@ static void test_init_streams(void)
         "CS0 DC0 29 DC1 CS1 BL1");
 
     rec_init(&r, &h, 0);
+    panel_init(&p, &panel_ssd1351_128x128, &h, 0);
+    expect_log("ssd1351_128x128_init_stream", rec_take(&r),
+        "CS1 DC1 BL0 RST1 RST0 D1 RST1 D1 "
+        "CS0 DC0 FD DC1 12 CS1 CS0 DC0 FD DC1 B1 CS1 "     /* command lock: open */
+        "CS0 DC0 AE DC1 CS1 "                              /* sleep mode on */
+        "CS0 DC0 B3 DC1 F1 CS1 CS0 DC0 CA DC1 7F CS1 CS0 DC0 A1 DC1 00 CS1 CS0 DC0 A2 DC1 00 CS1 "
+        "CS0 DC0 B5 DC1 00 CS1 CS0 DC0 AB DC1 01 CS1 CS0 DC0 B1 DC1 32 CS1 CS0 DC0 BE DC1 05 CS1 "
+        "CS0 DC0 C1 DC1 C8 80 C8 CS1 CS0 DC0 C7 DC1 0F CS1 CS0 DC0 B4 DC1 A0 B5 55 CS1 "
+        "CS0 DC0 B6 DC1 01 CS1 "
+        "CS0 DC0 A0 DC1 74 CS1 "                           /* re-map: rotation 0 */
+        "CS0 DC0 A6 DC1 CS1 "                              /* normal display */
+        "CS0 DC0 15 DC1 00 7F CS1 CS0 DC0 75 DC1 00 7F CS1 " /* one-byte addresses */
+        "CS0 DC0 5C DC1 00x32768 CS1 "
+        "CS0 DC0 AF DC1 CS1 BL1");                         /* sleep mode off */
+    panel_set_rotation(&p, 1);
+    uint16_t px1[2] = { 0xABCD, 0x0102 };
+    panel_flush(&p, 3, 4, 2, 1, px1);
+    expect_log("ssd1351_128x128_rotation1_rows_as_columns", rec_take(&r),
+        "CS0 DC0 A0 DC1 77 CS1 "                           /* vertical address increment */
+        "CS0 DC0 15 DC1 04 04 CS1 CS0 DC0 75 DC1 03 04 CS1 "
+        "CS0 DC0 5C DC1 AB CD 01 02 CS1");
+
+    rec_init(&r, &h, 0);
     panel_init(&p, &panel_st7789_240x240, &h, 2);
     rec_take(&r);
     uint16_t px[2] = { 0xABCD, 0x0102 };
@@ -162,7 +185,10 @@ static uint32_t crc32_str(const char *s)
  * recorded log of panel_init in each rotation, and of a run of every other
  * operation after it (flush, fill, streamed flush, stopped flush, display
  * off/on, sleep in/out, the next rotation, a pixel), as the driver sent them
- * before the command sets (struct panel_ctl) existed. */
+ * before the command sets (struct panel_ctl) existed; and the SSD1351's,
+ * GC9A01's and ILI9488's as first written (its init stream and rotation-1 window spelled out in
+ * test_init_streams, all four rotations shown by the emulated glass in
+ * round_trip). */
 static void test_streams_pinned(void)
 {
     static const struct { const char *name; uint8_t rot; uint32_t init, ops; } pin[] = {
@@ -174,6 +200,12 @@ static void test_streams_pinned(void)
         { "ili9341_320x240", 2, 0x06861594u, 0xD9749F4Au }, { "ili9341_320x240", 3, 0x9696B2E4u, 0xB75D30F6u },
         { "ili9341_240x320", 0, 0x9696B2E4u, 0xB75D30F6u }, { "ili9341_240x320", 1, 0x5E5E6B0Eu, 0xA6DE2B64u },
         { "ili9341_240x320", 2, 0xAE17EA18u, 0x8E476F5Du }, { "ili9341_240x320", 3, 0x06861594u, 0xD9749F4Au },
+        { "ssd1351_128x128", 0, 0xC12E4400u, 0xBB463552u }, { "ssd1351_128x128", 1, 0x9A6CE112u, 0x9C431795u },
+        { "ssd1351_128x128", 2, 0x4B239178u, 0xEEC8C60Bu }, { "ssd1351_128x128", 3, 0x1061346Au, 0xC9CDE4CCu },
+        { "gc9a01_240x240", 0, 0x5F908109u, 0x5304318Bu }, { "gc9a01_240x240", 1, 0x43D02D77u, 0xC9825A12u },
+        { "gc9a01_240x240", 2, 0x10C837C7u, 0x6A1E6E20u }, { "gc9a01_240x240", 3, 0x1B0853EDu, 0x6CD16B9Cu },
+        { "ili9488_320x480", 0, 0x0F0A2F2Bu, 0x17741552u }, { "ili9488_320x480", 1, 0xE3B371CFu, 0x75257064u },
+        { "ili9488_320x480", 2, 0x378B77D7u, 0x02181F0Bu }, { "ili9488_320x480", 3, 0xBB6B0F55u, 0xF15C3ABBu },
     };
     int bad = 0;
     char first[80] = "";
@@ -201,6 +233,8 @@ static void test_streams_pinned(void)
             rc |= panel_flush(&p, 0, 0, 1, 1, px);
             rc |= panel_wait(&p);
             uint32_t c_ops = crc32_str(rec_take(&r));
+            if (getenv("PIN_PRINT"))
+                printf("pin %s %u %08X %08X\n", pin[i].name, (unsigned)pin[i].rot, (unsigned)c_init, (unsigned)c_ops);
             if (rc || c_init != pin[i].init || c_ops != pin[i].ops) {
                 if (!bad++)
                     snprintf(first, sizeof first, "%s rotation %u async %d: rc %d, %08X %08X", pin[i].name,
@@ -245,7 +279,8 @@ static uint16_t pattern(uint32_t x, uint32_t y)
 
 /* A full-screen pattern flushed in strips, and a small rectangle, in
  * rotation r must show on the glass (viewed as the descriptor's rotation 0)
- * turned r*90 degrees clockwise. */
+ * turned r*90 degrees clockwise (where there is glass: a round one has
+ * none in the corners). */
 static void round_trip(const struct panel_desc *d, uint8_t rot, struct emu_panel *e, uint16_t *img, uint16_t *glass)
 {
     char name[80];
@@ -286,7 +321,7 @@ static void round_trip(const struct panel_desc *d, uint8_t rot, struct emu_panel
             case 3: dx = y; dy = W - 1 - x; break;
             default: dx = x; dy = y; break;
             }
-            if (glass[dy * gw + dx] != img[y * W + x]) {
+            if (emu_panel_shown(e, (uint16_t)dx, (uint16_t)dy) && glass[dy * gw + dx] != img[y * W + x]) {
                 if (first < 0)
                     first = (long)(y * W + x);
                 bad++;
@@ -367,10 +402,49 @@ static void test_streaming(void)
     }
 }
 
+/* The ILI9488's 18-bit pixels: each RGB565 pixel as three bytes, every
+ * channel's top bits repeated below it, with or without the HAL's 16-bit
+ * pixel operation (never used for them), in a flush, a streamed flush and
+ * a fill; a frame is 1.5 times the bytes of 16-bit. */
+static void test_rgb666(void)
+{
+    static const uint16_t px[4] = { 0xF800, 0x07E0, 0x001F, 0x8410 };
+    for (int mode = 0; mode < 3; mode++) {
+        struct rec r; struct hal h; struct panel p;
+        char name[64];
+        rec_init(&r, &h, mode > 0);
+        if (mode == 2)
+            h.pixels_async = rec_pixels;
+        panel_init(&p, &panel_ili9488_320x480, &h, 0);
+        rec_take(&r);
+        panel_flush(&p, 1, 2, 2, 2, px);
+        panel_flush_begin(&p, 0, 0, 4, 1);
+        panel_flush_rows(&p, px, 1, NULL, NULL);
+        panel_flush_end(&p);
+        panel_fill(&p, 0, 0, 1, 1, 0x8410);
+        snprintf(name, sizeof name, "ili9488_rgb666_mode%d", mode);
+        expect_log(name, rec_take(&r),
+            "CS0 DC0 2A DC1 00 01 00 02 CS1 CS0 DC0 2B DC1 00 02 00 03 CS1 "
+            "CS0 DC0 2C DC1 FF 00 00 00 FF 00 00 00 FF 84 82 84 CS1 "
+            "CS0 DC0 2A DC1 00 00 00 03 CS1 CS0 DC0 2B DC1 00 00 00 00 CS1 "
+            "CS0 DC0 2C DC1 FF 00 00 00 FF 00 00 00 FF 84 82 84 CS1 "
+            "CS0 DC0 2A DC1 00 00 00 00 CS1 CS0 DC0 2B DC1 00 00 00 00 CS1 "
+            "CS0 DC0 2C DC1 84 82 84 CS1");
+    }
+    struct rec r; struct hal h; struct panel p;
+    rec_init(&r, &h, 0);
+    panel_init(&p, &panel_ili9488_320x480, &h, 0);
+    uint32_t b0 = p.dcs.bytes_sent;
+    panel_fill(&p, 0, 0, 320, 480, 0);
+    check(p.dcs.bytes_sent - b0 == 320u * 480u * 3u + 11u, "ili9488_frame_bytes", "%u bytes",
+          (unsigned)(p.dcs.bytes_sent - b0));
+    rec_take(&r);
+}
+
 int main(void)
 {
     struct emu_panel *e = malloc(sizeof *e);
-    uint16_t *img = malloc(sizeof(uint16_t) * 320 * 240), *glass = malloc(sizeof(uint16_t) * 320 * 240);
+    uint16_t *img = malloc(sizeof(uint16_t) * 320 * 480), *glass = malloc(sizeof(uint16_t) * 320 * 480);
     if (!e || !img || !glass)
         return 1;
     test_init_streams();
@@ -378,6 +452,7 @@ int main(void)
     test_other_command_set();
     test_streams_pinned();
     test_streaming();
+    test_rgb666();
     for (size_t i = 0; panel_all[i]; i++)
         for (uint8_t r = 0; r < 4; r++)
             round_trip(panel_all[i], r, e, img, glass);

@@ -11,7 +11,8 @@
  * Scenes: the book's raytracer-02 (white background, three spheres) and
  * raster-11 (its cubes and sphere), and raytracer-05 with each way the ray
  * tracer fills pixels (plain, supersampled, the book's subsampling, adaptive
- * subsampling, the progressive preview). Built per numeric mode. */
+ * subsampling, the progressive preview), and raytracer-02 through a round
+ * glass (render_set_round). Built per numeric mode. */
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -30,6 +31,8 @@ struct frame {
 };
 
 static uint64_t work[65536];
+static int round_glass;         /* render(): render_set_round(ctx, 1) */
+static uint32_t last_rays;      /* render(): render_stats.rays of the frame */
 
 /* One frame in strips of `strip` rows with a guard word after each strip's
  * buffers; 0, or -1 when the renderer failed or wrote outside a strip. */
@@ -41,6 +44,7 @@ static int render(const struct scene *s, int strip, int pass, int null_stats, st
     if (render_init(&ctx, s, W, H, (uint16_t)strip, work, sizeof work) != 0) return -1;
     if (render_begin_frame(&ctx, 0) != 0) return -1;
     if (pass && render_set_pass(&ctx, (uint8_t)pass) != 0) return -1;
+    if (round_glass && render_set_round(&ctx, 1) != 0) return -1;
     struct render_stats st = { 0 };
     static uint16_t spx[W * H + 8];
     static uint8_t smask[W * H + 8];
@@ -59,6 +63,7 @@ static int render(const struct scene *s, int strip, int pass, int null_stats, st
         memcpy(f->mask + (size_t)y0 * W, smask, n);
     }
     f->written = st.pixels_written;
+    last_rays = st.rays;
     return 0;
 }
 
@@ -143,6 +148,41 @@ int main(void)
         check(render(s, 5, modes[m].pass, 0, &g) == 0, name, "render failed or wrote outside the strip");
         if (modes[m].pass == 0) same(name, &f, &g);
         else check(g.written == ones(&g), name, "count differs from the mask");
+    }
+
+    /* a round glass (render_set_round): the plain pixels outside the circle
+     * of diameter H centred in the frame get the background, no ray; inside
+     * it the frame is the same; the contract holds; a rasterized scene
+     * refuses it */
+    {
+        struct scene *s = book_scene("raytracer-02");
+        snprintf(name, sizeof name, "round_glass_raytracer_%s", NUM_NAME);
+        int ok = render(s, 16, 0, 0, &f) == 0;
+        uint32_t rays_all = last_rays;
+        round_glass = 1;
+        ok = ok && render(s, 16, 0, 0, &g) == 0;
+        round_glass = 0;
+        rgb bg = s->background;
+        long wrong = 0, outside = 0;
+        for (int y = 0; y < H; y++)
+            for (int x = 0; x < W; x++) {
+                int32_t dx = 2 * x + 1 - W, dy = 2 * y + 1 - H;
+                int i = y * W + x;
+                if (dx * dx + dy * dy > H * H) {
+                    outside++;
+                    wrong += g.px[i] != rgb_to_565(bg) || g.mask[i];
+                } else {
+                    wrong += g.px[i] != f.px[i] || g.mask[i] != f.mask[i];
+                }
+            }
+        check(ok && wrong == 0 && rays_all - last_rays >= (uint32_t)outside, name,
+              "%ld pixels wrong, rays %lu -> %lu for %ld pixels outside", wrong, (unsigned long)rays_all,
+              (unsigned long)last_rays, outside);
+        check_frame(name, s, &g);
+        struct render_ctx ctx;
+        check(render_init(&ctx, book_scene("raster-11"), W, H, 16, work, sizeof work) == 0 &&
+                  render_set_round(&ctx, 1) == -1,
+              "round_glass_raster_refused", "accepted");
     }
 
     /* bad arguments: -1, nothing rendered */

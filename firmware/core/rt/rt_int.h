@@ -117,6 +117,7 @@ struct rt_state {
     num adapt_diff;       /* its colour threshold */
     num *adapt_ratio;     /* [w (adapt + 1) + i] = num_from_ratio(i, w) for w <= adapt (bilinear weights) */
     uint8_t pass;         /* enum render_pass of the following strips */
+    uint8_t round;        /* 1: only the circle inscribed in the frame is seen (rt_set_round) */
     mat3 cam_rot;
     vec3 cam_pos;
     num vw, vh, d;        /* viewport of this render size */

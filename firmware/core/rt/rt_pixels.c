@@ -159,7 +159,15 @@ static void full_strip(struct rt_state *rt, struct render_target *t)
         /* adaptive supersampling compares with the row above when that was
          * the last row rendered (also across strips) */
         int have_up = row == rt->last_row + 1;
+        /* a round glass: plain pixels outside its circle are not traced */
+        int32_t d = rt->w < rt->h ? rt->w : rt->h, dy = 2 * row + 1 - rt->h;
+        int skip = rt->round && rt->ss <= 1;
         for (int col = 0; col < rt->w; col++) {
+            int32_t dx = 2 * col + 1 - rt->w;
+            if (skip && dx * dx + dy * dy > d * d) {
+                rt_put(rt, t, col, row, rt->s->background, 0);
+                continue;
+            }
             rgb c = pixel(rt, col, row, 1, have_up, probe ? probe + col : NULL);
             rt_put(rt, t, col, row, c, rt->px_covered);
         }
@@ -170,6 +178,11 @@ static void full_strip(struct rt_state *rt, struct render_target *t)
 void rt_set_pass(void *work, uint8_t pass)
 {
     rt_state_of(work)->pass = pass;
+}
+
+void rt_set_round(void *work, uint8_t on)
+{
+    rt_state_of(work)->round = on != 0;
 }
 
 int rt_render_strip(void *work, struct render_target *t, struct render_stats *st)

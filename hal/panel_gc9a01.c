@@ -1,0 +1,77 @@
+/* SPDX-License-Identifier: MIT */
+/* panel_gc9a01.c — GalaxyCore GC9A01 round modules (240x240 memory, a
+ * 240-pixel circle of IPS glass).
+ *
+ * MIPI DCS for the window, memory write, orientation, inversion, display
+ * and sleep; the vendor's initialisation sets registers the datasheet
+ * does not describe, reached after the inter-register enable (FEh, then
+ * EFh). The glass is IPS (INVON) behind a BGR colour filter. Memory
+ * outside the circle is never shown; the frame still has all 240x240.
+ */
+#include "panel.h"
+
+static const struct panel_cmd gc9a01_init[] = {
+    { 0xFE, 0, 0, { 0 } },                                  /* inter-register enable 1 */
+    { 0xEF, 0, 0, { 0 } },                                  /* inter-register enable 2 */
+    { 0xEB, 1, 0, { 0x14 } },
+    { 0x84, 1, 0, { 0x40 } },
+    { 0x85, 1, 0, { 0xFF } },
+    { 0x86, 1, 0, { 0xFF } },
+    { 0x87, 1, 0, { 0xFF } },
+    { 0x88, 1, 0, { 0x0A } },
+    { 0x89, 1, 0, { 0x21 } },
+    { 0x8A, 1, 0, { 0x00 } },
+    { 0x8B, 1, 0, { 0x80 } },
+    { 0x8C, 1, 0, { 0x01 } },
+    { 0x8D, 1, 0, { 0x01 } },
+    { 0x8E, 1, 0, { 0xFF } },
+    { 0x8F, 1, 0, { 0xFF } },
+    { 0xB6, 2, 0, { 0x00, 0x00 } },                         /* display function control */
+    { DCS_COLMOD, 1, 0, { DCS_COLMOD_16BIT } },
+    { 0x90, 4, 0, { 0x08, 0x08, 0x08, 0x08 } },
+    { 0xBD, 1, 0, { 0x06 } },
+    { 0xBC, 1, 0, { 0x00 } },
+    { 0xFF, 3, 0, { 0x60, 0x01, 0x04 } },
+    { 0xC3, 1, 0, { 0x13 } },                               /* power control 2: VREG1A */
+    { 0xC4, 1, 0, { 0x13 } },                               /* power control 3: VREG1B */
+    { 0xC9, 1, 0, { 0x22 } },                               /* power control 4: VREG2A */
+    { 0xBE, 1, 0, { 0x11 } },
+    { 0xE1, 2, 0, { 0x10, 0x0E } },
+    { 0xDF, 3, 0, { 0x21, 0x0C, 0x02 } },
+    { 0xF0, 6, 0, { 0x45, 0x09, 0x08, 0x08, 0x26, 0x2A } }, /* gamma 1..4 */
+    { 0xF1, 6, 0, { 0x43, 0x70, 0x72, 0x36, 0x37, 0x6F } },
+    { 0xF2, 6, 0, { 0x45, 0x09, 0x08, 0x08, 0x26, 0x2A } },
+    { 0xF3, 6, 0, { 0x43, 0x70, 0x72, 0x36, 0x37, 0x6F } },
+    { 0xED, 2, 0, { 0x1B, 0x0B } },
+    { 0xAE, 1, 0, { 0x77 } },
+    { 0xCD, 1, 0, { 0x63 } },
+    { 0x70, 9, 0, { 0x07, 0x07, 0x04, 0x0E, 0x0F, 0x09, 0x07, 0x08, 0x03 } },
+    { 0xE8, 1, 0, { 0x34 } },                               /* frame rate */
+    { 0x62, 12, 0, { 0x18, 0x0D, 0x71, 0xED, 0x70, 0x70, 0x18, 0x0F, 0x71, 0xEF, 0x70, 0x70 } },
+    { 0x63, 12, 0, { 0x18, 0x11, 0x71, 0xF1, 0x70, 0x70, 0x18, 0x13, 0x71, 0xF3, 0x70, 0x70 } },
+    { 0x64, 7, 0, { 0x28, 0x29, 0xF1, 0x01, 0xF1, 0x00, 0x07 } },
+    { 0x66, 10, 0, { 0x3C, 0x00, 0xCD, 0x67, 0x45, 0x45, 0x10, 0x00, 0x00, 0x00 } },
+    { 0x67, 10, 0, { 0x00, 0x3C, 0x00, 0x00, 0x00, 0x01, 0x54, 0x10, 0x32, 0x98 } },
+    { 0x74, 7, 0, { 0x10, 0x85, 0x80, 0x00, 0x00, 0x4E, 0x00 } },
+    { 0x98, 2, 0, { 0x3E, 0x07 } },
+    { DCS_SLPOUT, 0, 120, { 0 } },
+};
+
+#define M_MX  DCS_MADCTL_MX
+#define M_MY  DCS_MADCTL_MY
+#define M_MV  DCS_MADCTL_MV
+#define M_BGR DCS_MADCTL_BGR
+
+const struct panel_desc panel_gc9a01_240x240 = {
+    .name = "gc9a01_240x240",
+    .controller = "gc9a01",
+    .width = 240, .height = 240,
+    .reset_low_ms = 1, .reset_wait_ms = 120,
+    .init = gc9a01_init,
+    .init_len = sizeof gc9a01_init / sizeof gc9a01_init[0],
+    .madctl = { M_BGR, M_MX | M_MV | M_BGR, M_MX | M_MY | M_BGR, M_MY | M_MV | M_BGR },
+    .x_off = { 0, 0, 0, 0 },
+    .y_off = { 0, 0, 0, 0 },
+    .invert = 1,
+    .spi_mode = 0,
+};

@@ -427,6 +427,81 @@ static int float_check(const struct opts *o, unsigned w, unsigned h)
     return EXIT_OK;
 }
 
+/* Frame 0 of the scene at w x h in core api, rendered quietly into rgb
+ * (rows of strip_rows): 0, or -1 when the core cannot take it (a parse
+ * error at that format, the work memory over --max-memory, ...). */
+static unsigned long long max_memory;
+static int quiet_render(const struct core_api *api, const char *path, unsigned w, unsigned h, unsigned rows,
+                        int exact, uint16_t *fb, uint8_t *rgb)
+{
+    char err[512];
+    void *scene = NULL;
+    if (!api || api->scene_parse(path, scene_text, scene_len, &scene, err, sizeof err)) return -1;
+    if (exact) api->exact_methods(scene);
+    int rc = -1;
+    size_t ws = api->work_size(scene, (uint16_t)w, (uint16_t)h, (uint16_t)rows);
+    void *work = ws <= max_memory ? malloc(ws ? ws : 1) : NULL;
+    struct render_ctx ctx;
+    struct render_stats st = { 0 };
+    if (work && !api->init(&ctx, scene, (uint16_t)w, (uint16_t)h, (uint16_t)rows, work, ws) &&
+        !api->begin_frame(&ctx, 0)) {
+        rc = 0;
+        for (unsigned y0 = 0; y0 < h && !rc; y0 += rows) {
+            unsigned y1 = y0 + rows < h ? y0 + rows : h;
+            struct render_target t = { .width = (uint16_t)w, .height = (uint16_t)h, .y0 = (uint16_t)y0,
+                                       .y1 = (uint16_t)y1, .rgb565 = fb + (size_t)y0 * w,
+                                       .rgb888 = rgb + (size_t)y0 * w * 3 };
+            if (api->render_strip(&ctx, &t, &st)) rc = -1;
+        }
+    }
+    free(work);
+    api->scene_free(scene);
+    return rc;
+}
+
+/* A refused scene (no --num-frac): what forcing each format would give,
+ * measured on frame 0 at this size against the double build's exact
+ * render, appended to the refusal's line. Only for renders up to 320x240
+ * and within about two seconds of rendering: a hint, not a proof. */
+static void forced_hint(const struct opts *o, unsigned w, unsigned h, char *msg, size_t len)
+{
+    if ((unsigned long long)w * h > 320u * 240u) return;
+    unsigned rows = o->strip_rows && o->strip_rows < h ? o->strip_rows : (h < STRIP_ROWS_DEFAULT ? h : STRIP_ROWS_DEFAULT);
+    size_t npx = (size_t)w * h;
+    uint16_t *fb = malloc(npx * sizeof *fb);
+    uint8_t *ref = malloc(npx * 3), *rgb = malloc(npx * 3);
+    uint64_t t0 = now_us();
+    int best = -1;
+    double best_db = -1;
+    if (fb && ref && rgb && !quiet_render(&core_api_double, o->scene, w, h, rows, 1, fb, ref)) {
+        for (int frac = 12; frac <= 20 && now_us() - t0 < 2000000; frac++) {
+            memset(rgb, 0, npx * 3);
+            if (quiet_render(core_api_fixed_frac(frac), o->scene, w, h, rows, 0, fb, rgb)) continue;
+            struct compare_result cmp;
+            compare_rgb888(rgb, ref, w, h, &cmp);
+            double db = isinf(cmp.psnr) ? 99 : cmp.psnr;
+            if (db > best_db) {
+                best_db = db;
+                best = frac;
+            }
+        }
+    }
+    free(fb);
+    free(ref);
+    free(rgb);
+    size_t n = strlen(msg);
+    if (best < 0 || n + 1 >= len) return;
+    if (best_db >= 99)
+        snprintf(msg + n, len - n, " (measured, not proven: with --num-frac %d frame 0 at %ux%u renders exactly as "
+                 "double does)", best, w, h);
+    else if (best_db >= 40)
+        snprintf(msg + n, len - n, " (measured, not proven: with --num-frac %d frame 0 at %ux%u renders at %.1f dB "
+                 "against double)", best, w, h, best_db);
+    else
+        snprintf(msg + n, len - n, " (measured: no format renders frame 0 at %ux%u at 40 dB against double; the "
+                 "best, --num-frac %d, %.1f dB)", w, h, best, best_db);
+}
+
 /* The core of mode `numeric` for the scene at w x h. For fixed point: the
  * format of --num-frac, or the one the scene's ranges call for, analysed on
  * the scene as the double core parsed it (tools/scene/scene_format.c); a
@@ -442,7 +517,7 @@ static int core_pick(const struct opts *o, const char *numeric, unsigned w, unsi
         return strcmp(numeric, "float") ? EXIT_OK : float_check(o, w, h);
     }
     struct scene_format f;
-    char msg[768];
+    char msg[1024];
     int load, rc = analyse(o, w, h, &f, msg, sizeof msg, &load);
     if (load) return load;
     if (o->num_frac) {
@@ -451,6 +526,7 @@ static int core_pick(const struct opts *o, const char *numeric, unsigned w, unsi
         return EXIT_OK;
     }
     if (rc) {
+        if (f.ill != SCENE_ILL_INSIDE) forced_hint(o, w, h, msg, sizeof msg);
         fprintf(stderr, "%s\n", msg);
         return EXIT_USAGE;
     }

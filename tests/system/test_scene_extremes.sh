@@ -137,7 +137,7 @@ raytracer { formulation = book recursion_depth = 0 }
 sphere { center = (0, 0, 0) radius = 100 color = (255, 200, 100) }
 light { type = directional intensity = 1 direction = (0.3, 0.2, 1) }
 EOS
-refused_case book_inside_sphere "$t/book_inside.scene" "ill-conditioned for fixed point: with formulation = book, hit points up to 100 from the camera"
+refused_case book_inside_sphere "$t/book_inside.scene" "ill-conditioned for fixed point: with formulation = book, hit points up to 100 from the camera.*(measured: no format renders frame 0 at 240x240 at 40 dB against double; the best, --num-frac 1[0-9], [0-9.]* dB)$"
 sed 's/formulation = book/formulation = book epsilon = 0.02/' "$t/book_inside.scene" >"$t/book_inside_eps.scene"
 rendered_case book_inside_sphere_epsilon "$t/book_inside_eps.scene" 40
 # a 100 x 100 viewport at d = 1 (Vh W overflowed the render's viewport width:
@@ -171,7 +171,7 @@ background = (0, 0, 0)
 plane { normal = (0, 1, 0) dist = -1 color = (200, 100, 50) }
 light { type = ambient intensity = 1 }
 EOS
-refused_case flat_viewport_grazing_plane "$t/flat_view.scene" "ill-conditioned for fixed point: the viewport step from pixel to pixel, 4.17e-06"
+refused_case flat_viewport_grazing_plane "$t/flat_view.scene" "ill-conditioned for fixed point: the viewport step from pixel to pixel, 4.17e-06.*(measured, not proven: with --num-frac 1[0-9] frame 0 at 240x240 renders exactly as double does)$"
 # a floor seen to the horizon: the rows whose floor point lies beyond the
 # format (t past NUM_MAX) once showed the background (41 dB); they are the
 # far hit now

@@ -39,7 +39,11 @@
  * a preview, another background, a bus error). Strips sent whole follow one
  * another in one window. The last strip always reaches the last column, so
  * every frame ends with the panel's last pixel. Exact: the glass at the end
- * of every frame is what a full flush leaves. */
+ * of every frame is what a full flush leaves. That trusts the wire; so that
+ * a byte the panel took wrongly (noise on a long cable, a glitch) does not
+ * stay for good where the glass stays background, one strip a frame goes
+ * out whole, in turn (FW_REPAIR_STRIPS, default on): any damage is gone
+ * within NSTRIPS frames (15 at 240 rows), for one strip's bytes a frame. */
 #include <stddef.h>
 #include <stdint.h>
 #include "fw_board.h"
@@ -84,6 +88,9 @@
 #ifndef FW_ROUND_GLASS
 #define FW_ROUND_GLASS 0
 #endif
+#ifndef FW_REPAIR_STRIPS
+#define FW_REPAIR_STRIPS 1
+#endif
 #ifndef FW_SKIP_UNCHANGED
 #define FW_SKIP_UNCHANGED 1
 #endif
@@ -126,6 +133,7 @@ static struct {
     uint16_t bg;
     int16_t x0, x1;
 } glass[NSTRIPS];
+static unsigned repair_k;     /* the strip this frame sends whole (FW_REPAIR_STRIPS) */
 static struct render_ctx ctx[2];
 static struct hal hal;
 static struct panel panel;
@@ -179,6 +187,7 @@ static void content_cols(const union strip_buf *b, unsigned rows, uint16_t bg, i
 static void changed_cols(unsigned k, const union strip_buf *sb, unsigned rows, uint16_t bg, int track, int scan,
                          int *x0, int *x1)
 {
+    const int whole = FW_REPAIR_STRIPS && k == repair_k;
     int c0 = 0, c1 = FW_WIDTH - 1;
     *x0 = 0;
     *x1 = FW_WIDTH - 1;
@@ -192,6 +201,10 @@ static void changed_cols(unsigned k, const union strip_buf *sb, unsigned rows, u
         if (k + 1 == NSTRIPS) {     /* the frame ends with the last pixel */
             *x1 = FW_WIDTH - 1;
             if (*x0 > *x1) *x0 = *x1;
+        }
+        if (whole) {                /* this frame's repair strip */
+            *x0 = 0;
+            *x1 = FW_WIDTH - 1;
         }
         if (*x0 <= *x1) {
             *x0 &= ~1;
@@ -503,6 +516,7 @@ static void send_strips(uint16_t bg, const char *text, int *err, struct bus *b)
     if (b->open && panel_flush_end(&panel) != 0) b->err = 1;
     if (b->err)
         for (unsigned k = 0; k < NSTRIPS; k++) glass[k].known = 0;   /* what arrived is unknown */
+    repair_k = repair_k + 1 < NSTRIPS ? repair_k + 1 : 0;
 }
 
 /* The frame's line: "fps" with its time us, or an "error" one; returns the

@@ -15,6 +15,7 @@
 #     against host_sim's frame 0 of bench/cube-textured, both resets
 # And a core 1 that never answers the launch handshake (--core1-absent): the
 # launch gives up and says so on the UART (rp2040sim ends on the error line).
+# And a glitch on the wire (--corrupt-at-frame): the repair strips mend it.
 # usage: test_rp2040sim_reset.sh BUILD_DIR
 set -u
 b=${1:-build}
@@ -65,4 +66,20 @@ elif tail -n 1 "$t/absent.err" | grep -q '^rp2040sim: error core 1 did not answe
   echo "PASS $name"
 else
   echo "FAIL $name: $(tail -n 1 "$t/absent.err")"
+fi
+
+# A glitch on the wire (--corrupt-at-frame 2: one pixel in every 16 rows of
+# the panel's memory flipped, in column 0, which the cube scenes leave
+# background): the changed-columns flush alone never sends those columns
+# again; one strip a frame sent whole mends them. Frame 30, cube-textured's
+# frame 0 again, must equal the host's render.
+if ! timeout 300 node $sim --image "$b/firmware/pico/cgfs-cube.elf" --frames 31 --corrupt-at-frame 2 \
+     --json --out-dir "$t/glitch" >"$t/glitch.json" 2>"$t/glitch.err"; then
+  echo "FAIL rp2040sim_repair_after_glitch: $(tail -n 1 "$t/glitch.err")"
+elif ! sed -n 31p "$t/glitch.json" | grep -q '"what":"scene:bench/cube-textured".*"frame":0,'; then
+  echo "FAIL rp2040sim_repair_after_glitch: frame 30 is not cube-textured's frame 0: $(sed -n 31p "$t/glitch.json" | head -c 200)"
+elif cmp -s "$t/cube.raw" "$t/glitch/frame-30.raw"; then
+  echo "PASS rp2040sim_repair_after_glitch"
+else
+  echo "FAIL rp2040sim_repair_after_glitch: $(cmp "$t/cube.raw" "$t/glitch/frame-30.raw" 2>&1 | head -n 1)"
 fi

@@ -386,6 +386,14 @@ class EmuPanel {
     return this.violation ? -1 : 0;
   }
 
+  /* Damage as a glitch on the wire would leave it (rp2040sim
+   * --corrupt-at-frame): one pixel in every 16 rows of the module's memory
+   * (its first column, rows 3, 19, ...) flipped. */
+  corrupt() {
+    const m = this.mod;
+    for (let y = 3; y < m.gh; y += 16) this.mem[(m.memY + y) * MEM_W + m.memX] ^= 0x0841;
+  }
+
   glassWidth() { return (this.view & 1) ? this.mod.gh : this.mod.gw; }
   glassHeight() { return (this.view & 1) ? this.mod.gw : this.mod.gh; }
 

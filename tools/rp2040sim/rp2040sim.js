@@ -46,6 +46,10 @@
  *                       booted again through boot2 (the other peripherals
  *                       keep their state in rp2040js: the firmware's start-up
  *                       resets the ones it uses)
+ *   --corrupt-at-frame N   once N frames are on the glass, damage the panel's
+ *                       memory as a glitch on the wire would: one pixel in
+ *                       every 16 rows (column 0, rows 3, 19, ...) flipped
+ *                       (tests: the firmware's repair strips mend it)
  *   --core1-absent      core 1 never answers the launch handshake (tests:
  *                       the firmware's timeout and its error line)
  *   --reset-core0-at-frame N   once N frames are on the glass, reset core 0
@@ -82,7 +86,7 @@ function usage(msg) {
 }
 
 function parseArgs(argv) {
-  const o = { frames: 1, maxCycles: 4e9, panel: 'st7789', pins: { dc: 16, cs: 17, rst: 20, bl: 21 }, uart: false, json: false, average: false, numeric: 'fixed', variant: 'single-core', core1Speed: 1, injectNmi: 0, resetCore0At: 0, watchdogAt: 0, core1Absent: false };
+  const o = { frames: 1, maxCycles: 4e9, panel: 'st7789', pins: { dc: 16, cs: 17, rst: 20, bl: 21 }, uart: false, json: false, average: false, numeric: 'fixed', variant: 'single-core', core1Speed: 1, injectNmi: 0, resetCore0At: 0, watchdogAt: 0, corruptAt: 0, core1Absent: false };
   for (let i = 0; i < argv.length; i++) {
     const a = argv[i];
     const val = () => { if (i + 1 >= argv.length) usage(`${a} needs a value`); return argv[++i]; };
@@ -108,6 +112,7 @@ function parseArgs(argv) {
       case '--core1-absent': o.core1Absent = true; break;
       case '--watchdog-reset-at-frame': o.watchdogAt = Number(val()); if (!(o.watchdogAt >= 1)) usage('bad --watchdog-reset-at-frame'); break;
       case '--reset-core0-at-frame': o.resetCore0At = Number(val()); if (!(o.resetCore0At >= 1)) usage('bad --reset-core0-at-frame'); break;
+      case '--corrupt-at-frame': o.corruptAt = Number(val()); if (!(o.corruptAt >= 1)) usage('bad --corrupt-at-frame'); break;
       case '--inject-nmi': o.injectNmi = Number(val()); if (!(o.injectNmi > 0)) usage('bad --inject-nmi'); break;
       case '--core1-speed': o.core1Speed = Number(val()); if (!(o.core1Speed >= 0.01 && o.core1Speed <= 100)) usage('--core1-speed must be in 0.01..100'); break;
       default: usage(`unknown option '${a}'`);
@@ -335,6 +340,10 @@ function main() {
       dual.cores[0].pendingNMI = true;
       dual.cores[0].interruptsUpdated = true;
       o.injectNmi = 0;
+    }
+    if (o.corruptAt && frames.length >= o.corruptAt) {
+      o.corruptAt = 0;
+      panel.corrupt();
     }
     if (o.resetCore0At && frames.length >= o.resetCore0At) {
       o.resetCore0At = 0;

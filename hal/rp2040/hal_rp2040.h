@@ -5,8 +5,9 @@
  * Pins are build-time options (defaults: a 240x240 ST7789 module wired as in
  * docs/firmware.md): SCK GP18, MOSI GP19, CS GP17, DC GP16, RST GP20, BL GP21.
  * SPI0 runs in mode 3 (works with modules that tie CS low) at
- * clk_peri / RP2040_SPI_CPSDVSR = 125 MHz / 2 = 62.5 MHz by default, the
- * ST7789's fastest write clock.
+ * clk_peri / RP2040_SPI_CPSDVSR = 125 MHz / 2 = 62.5 MHz by default: the
+ * ST7789VW's 16 ns write cycle, beyond the ST7789V's and ILI9341's rated
+ * clocks (docs/firmware.md: 8 gives 15.6 MHz, 14 gives 8.9 MHz).
  *
  * Completion of asynchronous writes is polled (no interrupts): `done` runs
  * inside the next spi_wait() or line_set() on the same core. Only core 0

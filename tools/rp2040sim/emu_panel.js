@@ -97,6 +97,13 @@ const { MODULES, FIND } = readPanels(path.join(__dirname, '..', '..', 'hal', 'pa
 
 function hex2(v) { return v.toString(16).toUpperCase().padStart(2, '0'); }
 
+/* The rate the glass is scanned at, per controller: the ST7789's FRCTRL2
+ * after reset (0x0F, 60 Hz) and the ILI9341's FRMCTR1 (70 Hz); the others
+ * are modelled at 60 Hz. The gate lines of the module's glass are scanned
+ * top to bottom over SCAN_ACTIVE of the period, then the vertical blank. */
+const SCAN_HZ = { ST7789: 60, ILI9341: 70 };
+const SCAN_ACTIVE = 0.95;
+
 class EmuPanel {
   /* name as emu_module_find accepts; throws for an unknown name. */
   constructor(name, view) {
@@ -113,6 +120,9 @@ class EmuPanel {
     this.param = new Uint8Array(16);
     this.violation = '';
     this.pixelsWritten = 0;
+    this.now = 0;
+    this.scanNs = 1e9 / (SCAN_HZ[this.model.name] || 60);
+    this.tearLo = Infinity; this.tearHi = -Infinity;
     this.mem = new Uint16Array(MEM_W * MEM_H);
     /* (the first 240x320 cells in the order they had before the memory
      * grew for the ILI9488, so that the other models' noise is unchanged) */
@@ -288,6 +298,35 @@ class EmuPanel {
     }
   }
 
+  /* A write into memory row r at this.now: the scan shows it from the
+   * first pass that reads row r after now (pass n reads glass row g at
+   * n T + g SCAN_ACTIVE T / rows). A frame whose writes show from more
+   * than one pass was torn: some pass showed part of it over part of the
+   * frame before (takeTear). */
+  scanWrite(r) {
+    const g = r - this.mod.memY, rows = this.mod.gh;
+    if (g < 0 || g >= rows) return;
+    const T = this.scanNs, n = Math.ceil((this.now - g * SCAN_ACTIVE * T / rows) / T);
+    if (n < this.tearLo) this.tearLo = n;
+    if (n > this.tearHi) this.tearHi = n;
+  }
+
+  /* Whether the writes since the last call show from more than one scan
+   * pass (the frame they made was torn), and how many passes they spread
+   * over; starts over. */
+  takeTear() {
+    const passes = this.tearHi >= this.tearLo ? this.tearHi - this.tearLo + 1 : 0;
+    this.tearLo = Infinity; this.tearHi = -Infinity;
+    return passes;
+  }
+
+  /* The time (ns) of the scan's next vertical blank at or after t. */
+  nextBlank(t) {
+    const T = this.scanNs, b = SCAN_ACTIVE * T;
+    const n = Math.floor(t / T), inPass = t - n * T;
+    return inPass >= b ? t : n * T + b;
+  }
+
   pixel(v) {
     if (!this.model.dcs) { this.ssdPixel(v); return; }
     let c = this.cx, r = this.cy;
@@ -295,6 +334,7 @@ class EmuPanel {
     if (this.madctl & 0x40) c = this.model.memW - 1 - c;
     if (this.madctl & 0x80) r = this.model.memH - 1 - r;
     this.mem[r * MEM_W + c] = v;
+    this.scanWrite(r);
     this.pixelsWritten++;
     if (this.cx < this.xe) {
       this.cx++;
@@ -325,6 +365,7 @@ class EmuPanel {
 
   /* One SPI byte at time t (ns). */
   spiByte(b, t) {
+    this.now = t;
     if (!this.violation) {
       if (!this.reset) this.violate('RESET', -1, this.offset, 'byte sent while RESET is low');
       else if (this.cs && !this.csTiedLow) this.violate('CS', -1, this.offset, 'byte sent while CS is high (controller deselected)');
@@ -497,6 +538,7 @@ class EmuPanel {
 
   ssdPixel(v) {
     this.mem[this.cy * MEM_W + this.cx] = v;
+    this.scanWrite(this.cy);
     this.pixelsWritten++;
     if (this.remap & 1) {
       if (this.cy < this.ye) { this.cy++; return; }

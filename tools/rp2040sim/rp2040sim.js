@@ -22,7 +22,13 @@
  *                       the run goes on until the frame after the last one
  *                       begins); uart_stall_cycles: the cycles the firmware
  *                       waited for room in the UART's transmit FIFO in that
- *                       period (uart.js); spi_bytes;
+ *                       period (uart.js); spi_bytes; torn, scan_passes:
+ *                       whether the frame's writes showed over more than
+ *                       one pass of the panel's scan (emu_panel.js: the
+ *                       glass scanned top to bottom at the controller's
+ *                       frame rate, 60 Hz on the ST7789, 70 Hz on the
+ *                       ILI9341), so that one pass showed part of it over
+ *                       part of the frame before (--average: torn_frames);
  *                       cores: from the firmware's boot line; a two-core
  *                       image runs on both emulated cores, dualcore.js)
  *                       first_image_us: for a progressive (ray-traced) frame,
@@ -250,7 +256,7 @@ function main() {
   };
   const finish = (b, endNs, end) => {
     const from = end.prev || b.snap0;
-    frames.push(Object.assign(b, { ns: endNs - b.t_ns, spi_bytes: end.snap.spi - from.spi,
+    frames.push(Object.assign(b, { ns: endNs - b.t_ns, spi_bytes: end.snap.spi - from.spi, passes: end.passes,
       xip_misses: end.snap.miss - from.miss, xip_stall_cycles: end.snap.stall - from.stall, px: end.px }));
   };
   /* a line cut by the UART's reset is dropped */
@@ -301,7 +307,7 @@ function main() {
       lastEnd = cmdLog.find((c) => c.ns >= t0) || (b || lastBegin).snap0;
       cmdLog = null;
     }
-    const end = { ns: now, prev: lastEnd, snap: snap(), px: panel.glass() };
+    const end = { ns: now, prev: lastEnd, snap: snap(), px: panel.glass(), passes: panel.takeTear() };
     lastEnd = end.snap;
     if (b) finish(begins.shift(), now, end); else ends.push(end);
   };
@@ -382,7 +388,7 @@ function main() {
         cycles, per: 'frame', cpu_hz: cpuHz, us: Math.round(f.ns / 1000),
         period_us: Math.round(f.period_ns / 1000), fps: Number((1e9 / f.period_ns).toFixed(3)),
         uart_stall_cycles: Math.round(f.uart_stall_ns * cpuHz / 1e9), spi_bytes: f.spi_bytes,
-        xip_misses: f.xip_misses, xip_stall_cycles: f.xip_stall_cycles, xip_fill_cycles: xipMode.cycles,
+        torn: f.passes > 1, scan_passes: f.passes, xip_misses: f.xip_misses, xip_stall_cycles: f.xip_stall_cycles, xip_fill_cycles: xipMode.cycles,
         ...(f.first_ns !== undefined ? { first_image_us: Math.round(f.first_ns / 1000) } : {}),
       }) + '\n');
     }
@@ -407,6 +413,7 @@ function main() {
         cpu_hz: cpuHz, us: Math.round(ns / 1000), period_us: Math.round(period / 1000),
         fps: Number((1e9 / period).toFixed(3)), uart_stall_cycles: Math.round(stall * cpuHz / 1e9),
         spi_bytes: Math.round(r.list.reduce((a, f) => a + f.spi_bytes, 0) / n),
+        torn_frames: r.list.filter((f) => f.passes > 1).length,
         xip_misses: Math.round(r.list.reduce((a, f) => a + f.xip_misses, 0) / n),
         xip_stall_cycles: Math.round(r.list.reduce((a, f) => a + f.xip_stall_cycles, 0) / n),
         xip_fill_cycles: xipMode.cycles,
@@ -417,7 +424,9 @@ function main() {
   }
   if (o.outRaw) fs.writeFileSync(o.outRaw, rawLE(frames[frames.length - 1].px));
   const simS = (Date.now() - t0) / 1000;
+  const torn = frames.filter((f) => f.passes > 1).length;
   process.stderr.write(`rp2040sim: ${frames.length} frame(s), ${Math.round(clock.nanos * cpuHz / 1e9)} cycles emulated in ${simS.toFixed(1)} s` +
+    `, ${torn} torn (shown over more than one scan of the glass)` +
     (resets ? `, core 0 reset ${resets} time(s), core 1 ${dual.core1Resets}` : '') + '\n');
 }
 

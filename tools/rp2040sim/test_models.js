@@ -246,4 +246,27 @@ function launch(t, seq) {
         `stall ${before} then ${u.stallNs} for a wait of ${waited} ns`);
 }
 
+/* The panel's scan (emu_panel.js): a frame written within one pass's blank
+ * shows whole from the next pass; one written while the scan runs through
+ * it shows over two passes (torn). */
+{
+  const { EmuPanel } = require('./emu_panel.js');
+  const p = new EmuPanel('st7789');
+  const T = p.scanNs, rows = p.mod.gh;
+  const write = (t0, dt) => { for (let g = 0; g < rows; g++) { p.now = t0 + g * dt; p.scanWrite(p.mod.memY + g); } };
+  write(10 * T + 0.96 * T, 0.0001 * T / rows);   /* inside the blank, quickly */
+  const whole = p.takeTear();
+  write(20 * T + 0.5 * T, 0.1 * T / rows);       /* from the top while the scan is past the middle: it
+                                                    overtakes the scan, whose pass shows the rows below
+                                                    and the next pass the rows above */
+  const torn = p.takeTear();
+  write(30 * T + 0.96 * T, 0.9 * T / rows);      /* from the blank, ahead of the scan */
+  const ahead = p.takeTear();
+  check('scan_frame_in_blank_shows_whole', whole === 1, `${whole} passes`);
+  check('scan_frame_across_the_scan_is_torn', torn === 2, `${torn} passes`);
+  check('scan_frame_ahead_of_the_scan_shows_whole', ahead === 1, `${ahead} passes`);
+  check('scan_rates', Math.abs(1e9 / T - 60) < 1e-9 && Math.abs(1e9 / new EmuPanel('ili9341').scanNs - 70) < 1e-9,
+        `${1e9 / T} Hz`);
+}
+
 process.exit(failed ? 1 : 0);

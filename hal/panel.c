@@ -187,5 +187,13 @@ int panel_sleep(struct panel *p, int sleep)
     return rc;
 }
 
+int panel_tear_effect(struct panel *p)
+{
+    static const uint8_t vblank_only = 0;
+    uint16_t c = panel_ctl(p)->te_on;
+    if (c == 0 || c == PANEL_CMD_NONE) return -1;
+    return send(p, c, &vblank_only, 1);
+}
+
 uint16_t panel_width(const struct panel *p) { return p->width; }
 uint16_t panel_height(const struct panel *p) { return p->height; }

@@ -61,6 +61,8 @@ struct panel_ctl {
                                     set_rows and its rows with set_cols, and
                                     the orientation parameter turns on the
                                     controller's vertical address increment */
+    uint16_t te_on;              /* tearing-effect output on, in the vertical blank only
+                                    (one parameter, 0); 0: the controller has none */
     uint8_t pixel_bytes;         /* bytes a pixel on the wire: 0 or 2, RGB565;
                                     3, RGB666 converted on the way out
                                     (struct dcs rgb666), never by the HAL's
@@ -163,6 +165,10 @@ int panel_fill(struct panel *p, uint16_t x, uint16_t y, uint16_t w, uint16_t h, 
  * sleep changes with the wait they need. */
 int panel_display(struct panel *p, int on);
 int panel_sleep(struct panel *p, int sleep);
+/* Turns on the controller's tearing-effect output (a pulse at the start of
+ * each vertical blank, for boards that wire TE: fw_board_te_wait); -1 when
+ * its command set has none (panel_ctl.te_on). */
+int panel_tear_effect(struct panel *p);
 
 uint16_t panel_width(const struct panel *p);
 uint16_t panel_height(const struct panel *p);

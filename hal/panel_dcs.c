@@ -14,6 +14,7 @@ const struct panel_ctl panel_ctl_dcs = {
     .write_mem = DCS_RAMWR,
     .orient = DCS_MADCTL,
     .inv_on = DCS_INVON,
+    .te_on = DCS_TEON,
     .inv_off = DCS_INVOFF,
     .disp_on = DCS_DISPON,
     .disp_off = DCS_DISPOFF,

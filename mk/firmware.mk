@@ -209,6 +209,9 @@ $(call fw_scene_image,cgfs-book-bench,BOOK,-DFW_FRAMES_PER_SCENE=1)
 FW_CUBE_FRAMES ?= 10
 $(call fw_scene_image,cgfs-cube,CUBE,-DFW_FRAMES_PER_SCENE=$(FW_CUBE_FRAMES))
 $(call fw_scene_image,cgfs-cube-1core,CUBE,$(FW_1CORE_FLAGS) -DFW_FRAMES_PER_SCENE=$(FW_CUBE_FRAMES))
+# The same with the panel's TE output wired to GP22: frames start in the
+# panel's vertical blank (no tearing; at most its scan rate).
+$(call fw_scene_image,cgfs-cube-te,CUBE,-DRP2040_PIN_TE=22 -DFW_FRAMES_PER_SCENE=$(FW_CUBE_FRAMES))
 # The same on the ILI9341 module in landscape, 320x240.
 FW_ILI320 := -DFW_PANEL=panel_ili9341_320x240 -DFW_WIDTH=320 -DFW_HEIGHT=240
 $(call fw_scene_image,cgfs-cube-ili9341,CUBE320,$(FW_ILI320) -DFW_FRAMES_PER_SCENE=$(FW_CUBE_FRAMES))
@@ -250,7 +253,7 @@ $(call fw_scene_image,cgfs-mesh,MESH,-DFW_FRAMES_PER_SCENE=$(FW_MESH_FRAMES) -DR
 
 FW_RP_IMAGES := $(FW_OUT)/pico/cgfs.uf2 $(FW_OUT)/pico/cgfs-1core.uf2 $(FW_OUT)/pico/cgfs-ili9341.uf2 \
                 $(FW_OUT)/pico/cgfs-rot2.uf2 \
-                $(foreach i,cgfs-book cgfs-book-1core cgfs-book-bench cgfs-cube cgfs-cube-1core cgfs-cube-ili9341 \
+                $(foreach i,cgfs-book cgfs-book-1core cgfs-book-bench cgfs-cube cgfs-cube-1core cgfs-cube-te cgfs-cube-ili9341 \
                   cgfs-cube-ili9341-1core cgfs-cube-st7735 \
                   cgfs-cube-st7735-1core cgfs-cube-ssd1351 cgfs-cube-ssd1351-1core \
                   cgfs-cube-gc9a01 cgfs-cube-gc9a01-1core cgfs-book-gc9a01 cgfs-cube-ili9488 \

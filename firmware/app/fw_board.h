@@ -48,4 +48,10 @@ void fw_board_wait(void);
 /* Core clock in Hz (for cycle figures). */
 uint32_t fw_board_cpu_hz(void);
 
+/* The panel's tearing-effect output (TE), where the board wires it: waits
+ * for its rising edge, the start of the panel's vertical blank, for at most
+ * timeout_us. 1 when it rose, 0 after the timeout, -1 when no TE line is
+ * wired (then it returns at once). */
+int fw_board_te_wait(uint32_t timeout_us);
+
 #endif

@@ -88,6 +88,9 @@
 #ifndef FW_ROUND_GLASS
 #define FW_ROUND_GLASS 0
 #endif
+#ifndef FW_TE_TIMEOUT_US
+#define FW_TE_TIMEOUT_US 50000u   /* three scans at 60 Hz */
+#endif
 #ifndef FW_REPAIR_STRIPS
 #define FW_REPAIR_STRIPS 1
 #endif
@@ -134,6 +137,7 @@ static struct {
     int16_t x0, x1;
 } glass[NSTRIPS];
 static unsigned repair_k;     /* the strip this frame sends whole (FW_REPAIR_STRIPS) */
+static int te_sync;           /* the board wires the panel's TE line and it is on */
 static struct render_ctx ctx[2];
 static struct hal hal;
 static struct panel panel;
@@ -494,7 +498,14 @@ static void send_strips(uint16_t bg, const char *text, int *err, struct bus *b)
     for (unsigned next = 0; next < NSTRIPS;) {
         unsigned st = strip_state(next);
         if (st) {
-            /* the next strip in order is done: on the bus with it */
+            /* the next strip in order is done: on the bus with it; the
+             * first one at the start of the panel's vertical blank, so that
+             * the writes run ahead of its scan (TE wired: no tearing while
+             * the frame's strips come faster than the scan's rows) */
+            if (next == 0 && te_sync && fw_board_te_wait(FW_TE_TIMEOUT_US) == 0) {
+                te_sync = 0;
+                fw_board_puts("warning panel TE line did not rise: frames go out unsynchronised\r\n");
+            }
             if (st != 1) *err = 1;
             send_strip(next, st, bg, text, b);
             next++;
@@ -599,6 +610,8 @@ int main(void)
         fw_board_puts("error the panel in this rotation is not FW_WIDTH x FW_HEIGHT\r\n");
         return 1;
     }
+    /* a board that wires TE: the controller's TE output on, frames synchronised to it */
+    te_sync = fw_board_te_wait(0) >= 0 && panel_tear_effect(&panel) == 0;
     if (dual && fw_board_core1_start(core1_main) != 0) {
         fw_board_puts("error core 1 did not answer the launch sequence: one core\r\n");
         dual = 0;

@@ -84,10 +84,12 @@
 #define PADS_DRIVE_12MA    (3u << 4)
 #define PADS_SLEWFAST      (1u << 0)
 #define PADS_IE            (1u << 6)
+#define PADS_PDE           (1u << 2)
 
 /* ---- SIO (single-cycle I/O, per core) ---------------------------------- */
 #define SIO_BASE           0xd0000000u
 #define SIO_CPUID          (SIO_BASE + 0x000)
+#define SIO_GPIO_IN        (SIO_BASE + 0x004)
 #define SIO_GPIO_OUT_SET   (SIO_BASE + 0x014)
 #define SIO_GPIO_OUT_CLR   (SIO_BASE + 0x018)
 #define SIO_GPIO_OE_SET    (SIO_BASE + 0x024)

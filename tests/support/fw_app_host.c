@@ -114,6 +114,11 @@ void fw_board_unlock(void) {}
 void fw_board_notify(void) {}
 void fw_board_wait(void) {}
 uint32_t fw_board_cpu_hz(void) { return 133000000u; }
+int fw_board_te_wait(uint32_t timeout_us)
+{
+    (void)timeout_us;
+    return -1;
+}
 
 int main(void)
 {

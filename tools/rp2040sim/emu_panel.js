@@ -160,6 +160,7 @@ class EmuPanel {
 
   /* hw: a hardware reset (else SWRESET) */
   resetRegs(hw) {
+    this.teOn = 0;
     this.cur = -1; this.nparam = 0; this.half = 0; this.hi = 0; this.mid = 0;
     this.asleep = 1; this.displayOn = 0; this.inverted = 0; this.idle = 0;
     if (hw || this.model.colmodSwreset) this.colmod = this.model.colmodReset;
@@ -267,6 +268,7 @@ class EmuPanel {
       case 0x21: this.inverted = 1; break;
       case 0x28: this.displayOn = 0; break;
       case 0x29: this.displayOn = 1; break;
+      case 0x34: this.teOn = 0; break;
       case 0x38: this.idle = 0; break;
       case 0x39: this.idle = 1; break;
       case 0x2C: case 0x3C: this.startWrite(code); break;
@@ -290,6 +292,7 @@ class EmuPanel {
         break;
       }
       case 0x36: this.madctl = a[0]; this.contValid = 0; break;
+      case 0x35: this.teOn = 1; break;   /* TE in the vertical blank (parameter 0) */
       case 0x37:   /* the scroll start line: 0 shows the memory unscrolled */
         if (a[0] || a[1]) this.vcmd(this.cur, 'not emulated (a scroll start other than 0)');
         break;
@@ -320,11 +323,12 @@ class EmuPanel {
     return passes;
   }
 
-  /* The time (ns) of the scan's next vertical blank at or after t. */
-  nextBlank(t) {
-    const T = this.scanNs, b = SCAN_ACTIVE * T;
-    const n = Math.floor(t / T), inPass = t - n * T;
-    return inPass >= b ? t : n * T + b;
+  /* The TE output at time t (ns): high in the scan's vertical blank once
+   * TEON turned it on (TEOFF, a reset: low). */
+  te(t) {
+    if (!this.teOn || !this.reset) return false;
+    const T = this.scanNs;
+    return t - Math.floor(t / T) * T >= SCAN_ACTIVE * T;
   }
 
   pixel(v) {

@@ -52,6 +52,9 @@
  *                       booted again through boot2 (the other peripherals
  *                       keep their state in rp2040js: the firmware's start-up
  *                       resets the ones it uses)
+ *   --te-pin N          the panel's TE output wired to GPIO N (the firmware's
+ *                       RP2040_PIN_TE): high in the scan's vertical blank
+ *                       once the firmware sent TEON (emu_panel.js)
  *   --corrupt-at-frame N   once N frames are on the glass, damage the panel's
  *                       memory as a glitch on the wire would: one pixel in
  *                       every 16 rows (column 0, rows 3, 19, ...) flipped
@@ -92,7 +95,7 @@ function usage(msg) {
 }
 
 function parseArgs(argv) {
-  const o = { frames: 1, maxCycles: 4e9, panel: 'st7789', pins: { dc: 16, cs: 17, rst: 20, bl: 21 }, uart: false, json: false, average: false, numeric: 'fixed', variant: 'single-core', core1Speed: 1, injectNmi: 0, resetCore0At: 0, watchdogAt: 0, corruptAt: 0, core1Absent: false };
+  const o = { frames: 1, maxCycles: 4e9, panel: 'st7789', pins: { dc: 16, cs: 17, rst: 20, bl: 21 }, uart: false, json: false, average: false, numeric: 'fixed', variant: 'single-core', core1Speed: 1, injectNmi: 0, resetCore0At: 0, watchdogAt: 0, corruptAt: 0, tePin: -1, core1Absent: false };
   for (let i = 0; i < argv.length; i++) {
     const a = argv[i];
     const val = () => { if (i + 1 >= argv.length) usage(`${a} needs a value`); return argv[++i]; };
@@ -118,6 +121,7 @@ function parseArgs(argv) {
       case '--core1-absent': o.core1Absent = true; break;
       case '--watchdog-reset-at-frame': o.watchdogAt = Number(val()); if (!(o.watchdogAt >= 1)) usage('bad --watchdog-reset-at-frame'); break;
       case '--reset-core0-at-frame': o.resetCore0At = Number(val()); if (!(o.resetCore0At >= 1)) usage('bad --reset-core0-at-frame'); break;
+      case '--te-pin': o.tePin = Number(val()); if (!(Number.isInteger(o.tePin) && o.tePin >= 0 && o.tePin < 30)) usage('bad --te-pin'); break;
       case '--corrupt-at-frame': o.corruptAt = Number(val()); if (!(o.corruptAt >= 1)) usage('bad --corrupt-at-frame'); break;
       case '--inject-nmi': o.injectNmi = Number(val()); if (!(o.injectNmi > 0)) usage('bad --inject-nmi'); break;
       case '--core1-speed': o.core1Speed = Number(val()); if (!(o.core1Speed >= 0.01 && o.core1Speed <= 100)) usage('--core1-speed must be in 0.01..100'); break;
@@ -277,6 +281,8 @@ function main() {
           lastBegin.period_ns = t - lastBegin.t_ns;
           lastBegin.uart_stall_ns = uartTx.stallAt(t) - uartTx.stallAt(lastBegin.t_ns);
         }
+        /* the first frame's tearing counts its own writes, not the start-up's */
+        if (!lastBegin && !lastEnd) panel.takeTear();
         lastBegin = { scene: kv.scene, frame: Number(kv.frame), t_ns: t, snap0: snap() };
         const e = ends.shift();
         if (e) finish(lastBegin, e.ns, e); else begins.push(lastBegin);
@@ -341,7 +347,10 @@ function main() {
   /* until the frame after the last one begins (the last one's period) */
   const done = () => frames.length >= o.frames && frames[o.frames - 1].period_ns !== undefined;
   while (!done() && !fwError && !panel.violation) {
-    const awake = dual.run(o.injectNmi ? 1000 : 100000);
+    /* with TE wired, steps of 2000 cycles (15 us) so that the firmware
+     * sees each blank (0.8 ms at 60 Hz) */
+    if (o.tePin >= 0) gpio[o.tePin].setInputValue(panel.te(clock.nanos));
+    const awake = dual.run(o.injectNmi ? 1000 : o.tePin >= 0 ? 2000 : 100000);
     if (o.injectNmi && clock.nanos * cpuHz / 1e9 >= o.injectNmi) {
       dual.cores[0].pendingNMI = true;
       dual.cores[0].interruptsUpdated = true;

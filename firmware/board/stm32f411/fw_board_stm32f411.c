@@ -26,3 +26,8 @@ void fw_board_unlock(void) {}
 void fw_board_notify(void) {}
 void fw_board_wait(void) {}
 uint32_t fw_board_cpu_hz(void) { return board_sys_hz; }
+int fw_board_te_wait(uint32_t timeout_us)
+{
+    (void)timeout_us;
+    return -1; /* no TE line wired */
+}

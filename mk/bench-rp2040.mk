@@ -21,13 +21,14 @@ RP2040SIM_ARGS_plain   = --frames $(RP2040SIM_BENCH_FRAMES) --json
 RP2040SIM_ARGS_book    = --frames $(words $(FW_BOOK_SCENES)) --json
 RP2040SIM_ARGS_cube    = --frames $$(($(words $(FW_CUBE_SCENES)) * $(FW_CUBE_FRAMES))) --json --average
 RP2040SIM_ARGS_cube320 = --panel ili9341_320x240 $(RP2040SIM_ARGS_cube)
+RP2040SIM_ARGS_cubete  = --te-pin 22 $(RP2040SIM_ARGS_cube)
 RP2040SIM_ARGS_rt      = --frames $(words $(FW_RT_SCENES)) --json
 RP2040SIM_ARGS_mesh    = --frames $$(($(words $(FW_MESH_SCENES)) * $(FW_MESH_FRAMES))) --json --average
 # The runs, IMAGE:VARIANT:SET (SET: RP2040SIM_ARGS_<SET>), in the order of
 # their rows in results.jsonl.
 RP2040SIM_BENCH_RUNS := cgfs-1core:single-core:plain cgfs:two-core:plain \
                         cgfs-book-1core:single-core:book cgfs-book-bench:two-core:book \
-                        cgfs-cube-1core:single-core:cube cgfs-cube:two-core:cube \
+                        cgfs-cube-1core:single-core:cube cgfs-cube:two-core:cube cgfs-cube-te:two-core-te:cubete \
                         cgfs-cube-ili9341-1core:single-core:cube320 cgfs-cube-ili9341:two-core:cube320 \
                         cgfs-rt-1core:single-core:rt cgfs-rt:two-core:rt \
                         cgfs-mesh:two-core:mesh
@@ -37,7 +38,7 @@ RP2040SIM_BENCH_IMAGES := $(foreach r,$(RP2040SIM_BENCH_RUNS),$(call rp2040sim_f
 # The generated header that states a scene set's format (tools/bench/tag_frac.py
 # adds it to the rows, "num_frac", so their accuracy is the image's): "-" for
 # the placeholder, which has no scene.
-rp2040sim_frac_h = $(if $(filter plain,$(1)),-,$(FW_OUT)/scenes/fw_$(1)_num_frac.h)
+rp2040sim_frac_h = $(if $(filter plain,$(1)),-,$(FW_OUT)/scenes/fw_$(patsubst cubete,cube,$(1))_num_frac.h)
 # One recipe line per run: its rows to the terminal and to results.jsonl.
 define RP2040SIM_BENCH_RUN
 	$(Q)node tools/rp2040sim/rp2040sim.js --image $(FW_OUT)/pico/$(call rp2040sim_field,1,$(1)).elf \

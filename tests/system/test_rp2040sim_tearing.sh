@@ -25,7 +25,7 @@ torn() { grep -o '"torn_frames":[0-9]*' "$1" | sed 's/.*://' | awk '{ s += $1 } 
 
 if timeout 300 node $sim --image "$b/firmware/pico/cgfs-cube.elf" --frames 30 --json --average >"$t/free.json" 2>"$t/free.err"; then
   n=$(torn "$t/free.json")
-  [ "$n" -gt 0 ] && echo "PASS rp2040sim_tearing_without_te ($n of 30 torn)" ||
+  [ "$n" -gt 0 ] && echo "PASS rp2040sim_tearing_without_te ($n of 30 torn; shown whole a second: $(grep -o '"shown_fps":[0-9.]*' "$t/free.json" | sed 's/.*://' | tr '\n' ' '))" ||
     echo "FAIL rp2040sim_tearing_without_te: no frame torn at $(grep -o '"fps":[0-9.]*' "$t/free.json" | tr '\n' ' ')"
 else
   echo "FAIL rp2040sim_tearing_without_te: $(tail -n 1 "$t/free.err")"
@@ -37,10 +37,14 @@ if timeout 300 node $sim --image "$b/firmware/pico/cgfs-cube-te.elf" --te-pin 22
      >/dev/null 2>>"$t/te.err"; then
   n=$(torn "$t/te.json")
   fast=$(grep -o '"fps":[0-9.]*' "$t/te.json" | sed 's/.*://' | awk '$1 > 60.5' | wc -l)
+  lost=$(grep -o '"fps":[0-9.]*,.*"shown_fps":[0-9.]*' "$t/te.json" |
+         sed 's/"fps":\([0-9.]*\),.*"shown_fps":\([0-9.]*\)/\1 \2/' | awk '$2 < $1 - 0.001' | wc -l)
   if [ "$n" -ne 0 ]; then
     echo "FAIL rp2040sim_tearing_with_te: $n of 30 torn"
   elif [ "$fast" -ne 0 ]; then
     echo "FAIL rp2040sim_tearing_with_te: a scene faster than the 60 Hz scan: $(grep -o '"fps":[0-9.]*' "$t/te.json" | tr '\n' ' ')"
+  elif [ "$lost" -ne 0 ]; then
+    echo "FAIL rp2040sim_tearing_with_te: frames sent but not shown whole: $(grep -o '"shown_fps":[0-9.]*' "$t/te.json" | tr '\n' ' ')"
   elif ! cmp -s "$t/gouraud.raw" "$t/te/frame-10.raw"; then
     echo "FAIL rp2040sim_tearing_with_te: frame 10 (cube-gouraud's frame 0) differs from the host's"
   else

@@ -40,7 +40,8 @@ def main(argv):
     with open(path) as fh:
         for line in fh:
             r = json.loads(line)
-            if r.get("target") == "rp2040-sim" and r.get("width", 240) == 240:
+            if (r.get("target") == "rp2040-sim" and r.get("width", 240) == 240 and
+                    r.get("variant") in ("single-core", "two-core")):
                 rows[(r["what"], r["cores"] if r["variant"] != "single-core" else 1)] = r
     print("| scene | one core | two cores | XIP misses (two cores) | UART wait (two cores) |")
     print("|---|---|---|---|---|")

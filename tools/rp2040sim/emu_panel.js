@@ -314,13 +314,13 @@ class EmuPanel {
     if (n > this.tearHi) this.tearHi = n;
   }
 
-  /* Whether the writes since the last call show from more than one scan
-   * pass (the frame they made was torn), and how many passes they spread
-   * over; starts over. */
+  /* The scan passes the writes since the last call show from: { lo, hi }
+   * (hi > lo: the frame they made was torn; none written: lo > hi); starts
+   * over. */
   takeTear() {
-    const passes = this.tearHi >= this.tearLo ? this.tearHi - this.tearLo + 1 : 0;
+    const r = { lo: this.tearLo, hi: this.tearHi };
     this.tearLo = Infinity; this.tearHi = -Infinity;
-    return passes;
+    return r;
   }
 
   /* The TE output at time t (ns): high in the scan's vertical blank once

@@ -28,7 +28,10 @@
  *                       glass scanned top to bottom at the controller's
  *                       frame rate, 60 Hz on the ST7789, 70 Hz on the
  *                       ILI9341), so that one pass showed part of it over
- *                       part of the frame before (--average: torn_frames);
+ *                       part of the frame before; shown: not torn, and a
+ *                       pass shows it before the next frame's writes do
+ *                       (--average: torn_frames, and shown_fps, the frames
+ *                       shown whole a second);
  *                       cores: from the firmware's boot line; a two-core
  *                       image runs on both emulated cores, dualcore.js)
  *                       first_image_us: for a progressive (ray-traced) frame,
@@ -260,7 +263,7 @@ function main() {
   };
   const finish = (b, endNs, end) => {
     const from = end.prev || b.snap0;
-    frames.push(Object.assign(b, { ns: endNs - b.t_ns, spi_bytes: end.snap.spi - from.spi, passes: end.passes,
+    frames.push(Object.assign(b, { ns: endNs - b.t_ns, spi_bytes: end.snap.spi - from.spi, passes: end.passes, scan: end.scan,
       xip_misses: end.snap.miss - from.miss, xip_stall_cycles: end.snap.stall - from.stall, px: end.px }));
   };
   /* a line cut by the UART's reset is dropped */
@@ -313,7 +316,9 @@ function main() {
       lastEnd = cmdLog.find((c) => c.ns >= t0) || (b || lastBegin).snap0;
       cmdLog = null;
     }
-    const end = { ns: now, prev: lastEnd, snap: snap(), px: panel.glass(), passes: panel.takeTear() };
+    const scan = panel.takeTear();
+    const end = { ns: now, prev: lastEnd, snap: snap(), px: panel.glass(), scan,
+      passes: scan.hi >= scan.lo ? scan.hi - scan.lo + 1 : 0 };
     lastEnd = end.snap;
     if (b) finish(begins.shift(), now, end); else ends.push(end);
   };
@@ -382,6 +387,13 @@ function main() {
   if (panel.violation) { process.stderr.write(`rp2040sim: panel protocol violation: ${panel.violation}\n`); process.exit(3); }
   if (fwError) { process.stderr.write(`rp2040sim: ${fwError}\n`); process.exit(1); }
 
+  /* A frame the glass shows whole: not torn, and some pass shows it before
+   * the next frame's writes do (frames faster than the scan overwrite one
+   * another before it reaches them). The last one: shown if not torn. */
+  frames.forEach((f, i) => {
+    const nx = frames[i + 1];
+    f.shown = f.passes === 1 && (!nx || !(nx.scan.lo <= f.scan.hi));
+  });
   const w = panel.glassWidth(), h = panel.glassHeight();
   if (o.outDir) fs.mkdirSync(o.outDir, { recursive: true });
   frames.forEach((f, i) => {
@@ -397,7 +409,7 @@ function main() {
         cycles, per: 'frame', cpu_hz: cpuHz, us: Math.round(f.ns / 1000),
         period_us: Math.round(f.period_ns / 1000), fps: Number((1e9 / f.period_ns).toFixed(3)),
         uart_stall_cycles: Math.round(f.uart_stall_ns * cpuHz / 1e9), spi_bytes: f.spi_bytes,
-        torn: f.passes > 1, scan_passes: f.passes, xip_misses: f.xip_misses, xip_stall_cycles: f.xip_stall_cycles, xip_fill_cycles: xipMode.cycles,
+        torn: f.passes > 1, scan_passes: f.passes, shown: f.shown, xip_misses: f.xip_misses, xip_stall_cycles: f.xip_stall_cycles, xip_fill_cycles: xipMode.cycles,
         ...(f.first_ns !== undefined ? { first_image_us: Math.round(f.first_ns / 1000) } : {}),
       }) + '\n');
     }
@@ -423,6 +435,7 @@ function main() {
         fps: Number((1e9 / period).toFixed(3)), uart_stall_cycles: Math.round(stall * cpuHz / 1e9),
         spi_bytes: Math.round(r.list.reduce((a, f) => a + f.spi_bytes, 0) / n),
         torn_frames: r.list.filter((f) => f.passes > 1).length,
+        shown_fps: Number((r.list.filter((f) => f.shown).length * 1e9 / (period * n)).toFixed(3)),
         xip_misses: Math.round(r.list.reduce((a, f) => a + f.xip_misses, 0) / n),
         xip_stall_cycles: Math.round(r.list.reduce((a, f) => a + f.xip_stall_cycles, 0) / n),
         xip_fill_cycles: xipMode.cycles,

@@ -255,13 +255,13 @@ function launch(t, seq) {
   const T = p.scanNs, rows = p.mod.gh;
   const write = (t0, dt) => { for (let g = 0; g < rows; g++) { p.now = t0 + g * dt; p.scanWrite(p.mod.memY + g); } };
   write(10 * T + 0.96 * T, 0.0001 * T / rows);   /* inside the blank, quickly */
-  const whole = p.takeTear();
+  const w0 = p.takeTear(), whole = w0.hi - w0.lo + 1;
   write(20 * T + 0.5 * T, 0.1 * T / rows);       /* from the top while the scan is past the middle: it
                                                     overtakes the scan, whose pass shows the rows below
                                                     and the next pass the rows above */
-  const torn = p.takeTear();
+  const t0 = p.takeTear(), torn = t0.hi - t0.lo + 1;
   write(30 * T + 0.96 * T, 0.9 * T / rows);      /* from the blank, ahead of the scan */
-  const ahead = p.takeTear();
+  const a0 = p.takeTear(), ahead = a0.hi - a0.lo + 1;
   check('scan_frame_in_blank_shows_whole', whole === 1, `${whole} passes`);
   check('scan_frame_across_the_scan_is_torn', torn === 2, `${torn} passes`);
   check('scan_frame_ahead_of_the_scan_shows_whole', ahead === 1, `${ahead} passes`);

@@ -37,9 +37,12 @@ def cell(r, scene, first):
 def main(argv):
     path = argv[0] if argv else "build/bench/results.jsonl"
     rows = {}
+    te = {}
     with open(path) as fh:
         for line in fh:
             r = json.loads(line)
+            if r.get("target") == "rp2040-sim" and r.get("variant") == "two-core-te":
+                te[r["what"]] = r
             if (r.get("target") == "rp2040-sim" and r.get("width", 240) == 240 and
                     r.get("variant") in ("single-core", "two-core")):
                 rows[(r["what"], r["cores"] if r["variant"] != "single-core" else 1)] = r
@@ -55,6 +58,18 @@ def main(argv):
         wait = "" if wait is None else "0" if wait == 0 else f"{wait / 1e6:.2f} M cycles"
         print(f"| {scene}{note} | {cell(one, scene, first)} | {cell(two, scene, False)} | {xip} | {wait} |")
         first = False
+    # the cubes against the panel's scan: frames sent, shown whole, torn
+    cubes = [s for s, _ in SCENES if s.startswith("bench/cube-")]
+    if any(rows.get((f"scene:{s}", 2), {}).get("shown_fps") is not None for s in cubes):
+        print()
+        print("| scene (two cores, 60 Hz scan) | sent / shown whole, torn | with TE (`cgfs-cube-te`) |")
+        print("|---|---|---|")
+        for s in cubes:
+            cells = []
+            for r in (rows.get((f"scene:{s}", 2)), te.get(f"scene:{s}")):
+                cells.append("" if not r or r.get("shown_fps") is None else
+                             f"{r['fps']:.1f} / {r['shown_fps']:.1f} fps, {r['torn_frames']} of {r['frames']}")
+            print(f"| {s} | {cells[0]} | {cells[1]} |")
     return 0
 
 

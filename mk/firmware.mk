@@ -190,7 +190,7 @@ endef
 $(eval $(call RP_IMAGE,cgfs,,$(FW_SCENE_SRCS)))
 $(eval $(call RP_IMAGE,cgfs-1core,-DRP2040_SINGLE_CORE=1,$(FW_SCENE_SRCS)))
 # The other panel: an ILI9341 module in landscape, 320x240 (two cores).
-$(eval $(call RP_IMAGE,cgfs-ili9341,-DFW_PANEL=panel_ili9341_320x240 -DFW_WIDTH=320 -DFW_HEIGHT=240,$(FW_SCENE_SRCS)))
+$(eval $(call RP_IMAGE,cgfs-ili9341,-DFW_PANEL=panel_ili9341_320x240 -DFW_WIDTH=320 -DFW_HEIGHT=240 -DFW_SCAN_HZ=70,$(FW_SCENE_SRCS)))
 # The ST7789 upside down (FW_ROTATION=2: the module mounted the other way).
 $(eval $(call RP_IMAGE,cgfs-rot2,-DFW_ROTATION=2,$(FW_SCENE_SRCS)))
 # fw_scene_image(IMAGE,SET,FLAGS[,RAM_TEXT_DIR]): an image of the scene set
@@ -213,7 +213,7 @@ $(call fw_scene_image,cgfs-cube-1core,CUBE,$(FW_1CORE_FLAGS) -DFW_FRAMES_PER_SCE
 # panel's vertical blank (no tearing; at most its scan rate).
 $(call fw_scene_image,cgfs-cube-te,CUBE,-DRP2040_PIN_TE=22 -DFW_FRAMES_PER_SCENE=$(FW_CUBE_FRAMES))
 # The same on the ILI9341 module in landscape, 320x240.
-FW_ILI320 := -DFW_PANEL=panel_ili9341_320x240 -DFW_WIDTH=320 -DFW_HEIGHT=240
+FW_ILI320 := -DFW_PANEL=panel_ili9341_320x240 -DFW_WIDTH=320 -DFW_HEIGHT=240 -DFW_SCAN_HZ=70
 $(call fw_scene_image,cgfs-cube-ili9341,CUBE320,$(FW_ILI320) -DFW_FRAMES_PER_SCENE=$(FW_CUBE_FRAMES))
 $(call fw_scene_image,cgfs-cube-ili9341-1core,CUBE320,$(FW_ILI320) $(FW_1CORE_FLAGS) -DFW_FRAMES_PER_SCENE=$(FW_CUBE_FRAMES))
 # And on the ST7735S 1.8" module, 128x160.

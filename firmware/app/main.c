@@ -88,6 +88,13 @@
 #ifndef FW_ROUND_GLASS
 #define FW_ROUND_GLASS 0
 #endif
+/* Without a TE line: frames start no sooner than one scan period (with a 2 %
+ * margin) after the one before, so that none is overwritten before the
+ * panel's scan reaches it (FW_SCAN_HZ: the controller's frame rate; 0 turns
+ * the pacing off). */
+#ifndef FW_SCAN_HZ
+#define FW_SCAN_HZ 60
+#endif
 #ifndef FW_TE_TIMEOUT_US
 #define FW_TE_TIMEOUT_US 50000u   /* three scans at 60 Hz */
 #endif
@@ -138,6 +145,7 @@ static struct {
 } glass[NSTRIPS];
 static unsigned repair_k;     /* the strip this frame sends whole (FW_REPAIR_STRIPS) */
 static int te_sync;           /* the board wires the panel's TE line and it is on */
+static uint64_t last_begin_us; /* when the last frame began (FW_SCAN_HZ) */
 static struct render_ctx ctx[2];
 static struct hal hal;
 static struct panel panel;
@@ -506,6 +514,7 @@ static void send_strips(uint16_t bg, const char *text, int *err, struct bus *b)
                 te_sync = 0;
                 fw_board_puts("warning panel TE line did not rise: frames go out unsynchronised\r\n");
             }
+
             if (st != 1) *err = 1;
             send_strip(next, st, bg, text, b);
             next++;
@@ -557,7 +566,26 @@ static uint32_t frame(unsigned si, uint16_t f, uint32_t last_us, int dual)
     const char *name = fw_scenes[si].name;
     char text[16], line[160];
     if (last_us) *put_str(put_fps(text, last_us), " fps") = 0;
+    /* no TE: the frame begins one scan period (and the margin) after the
+     * last one at the soonest; the wait is before its begin line, so the
+     * frame's own time stays the renderer's and the bus's */
+    if (!te_sync && FW_SCAN_HZ > 0 && last_begin_us) {
+        const uint64_t period = 1020000u / (FW_SCAN_HZ > 0 ? FW_SCAN_HZ : 1);
+        uint64_t prev = 0, now;
+        unsigned same = 0;
+        while ((now = hal.now_us(hal.ctx)) - last_begin_us < period) {
+            /* a clock that only moves with the bus or a delay (the host's
+             * simulated board): let a millisecond pass */
+            same = now == prev ? same + 1 : 0;
+            prev = now;
+            if (same > 1000) {
+                hal.delay_ms(hal.ctx, 1);
+                same = 0;
+            }
+        }
+    }
     uint64_t t0 = hal.now_us(hal.ctx);
+    last_begin_us = t0;
     *put_str(put_u32(put_str(put_frame(line, "begin scene=", name, f), " t="), (uint32_t)t0), "\r\n") = 0;
     fw_board_puts(line);
 

@@ -70,8 +70,15 @@ struct panel_ctl {
 };
 
 /* MIPI DCS: CASET/RASET (16-bit addresses), RAMWR, MADCTL, INVON/INVOFF,
- * DISPON/DISPOFF, SLPIN/SLPOUT and 120 ms after a sleep change. */
+ * DISPON/DISPOFF, SLPIN/SLPOUT and 120 ms after a sleep change, TEON. */
 extern const struct panel_ctl panel_ctl_dcs;
+/* Its fields, for a command set that is DCS but for one field (the
+ * ILI9488's 18-bit pixels): { .name = ..., PANEL_CTL_DCS_FIELDS, .pixel_bytes = 3 }. */
+#define PANEL_CTL_DCS_FIELDS                                                                    \
+    .set_cols = DCS_CASET, .set_rows = DCS_RASET, .addr_bytes = 2, .write_mem = DCS_RAMWR,     \
+    .orient = DCS_MADCTL, .inv_on = DCS_INVON, .inv_off = DCS_INVOFF, .disp_on = DCS_DISPON,   \
+    .disp_off = DCS_DISPOFF, .sleep_in = DCS_SLPIN, .sleep_out = DCS_SLPOUT,                   \
+    .sleep_wait_ms = 120, .te_on = DCS_TEON
 /* Solomon Systech SSD1351 (OLED): 15h/75h windows with 1-byte addresses,
  * write RAM 5Ch, remap A0h, A6h/A7h, sleep AEh/AFh (hal/panel_ssd1351.c). */
 extern const struct panel_ctl panel_ctl_ssd1351;

@@ -430,7 +430,8 @@ static int float_check(const struct opts *o, unsigned w, unsigned h)
 /* Frame 0 of the scene at w x h in core api, rendered quietly into rgb
  * (rows of strip_rows): 0, or -1 when the core cannot take it (a parse
  * error at that format, the work memory over --max-memory, ...). */
-static unsigned long long max_memory;
+#define MAX_MEMORY_DEFAULT (1ull << 30)
+static unsigned long long max_memory = MAX_MEMORY_DEFAULT;   /* --max-memory */
 static int quiet_render(const struct core_api *api, const char *path, unsigned w, unsigned h, unsigned rows,
                         int exact, uint16_t *fb, uint8_t *rgb)
 {
@@ -466,7 +467,8 @@ static int quiet_render(const struct core_api *api, const char *path, unsigned w
 static void forced_hint(const struct opts *o, unsigned w, unsigned h, char *msg, size_t len)
 {
     if ((unsigned long long)w * h > 320u * 240u) return;
-    unsigned rows = o->strip_rows && o->strip_rows < h ? o->strip_rows : (h < STRIP_ROWS_DEFAULT ? h : STRIP_ROWS_DEFAULT);
+    unsigned rows = o->strip_rows ? o->strip_rows : STRIP_ROWS_DEFAULT;   /* as pick_core takes them */
+    if (rows > h) rows = h;
     size_t npx = (size_t)w * h;
     uint16_t *fb = malloc(npx * sizeof *fb);
     uint8_t *ref = malloc(npx * 3), *rgb = malloc(npx * 3);
@@ -535,10 +537,6 @@ static int core_pick(const struct opts *o, const char *numeric, unsigned w, unsi
     return *api ? EXIT_OK : fail(EXIT_INTERNAL, "no fixed-point core at NUM_FRAC %d", f.num_frac);
 }
 
-/* The renderer's work memory allowed (--max-memory), checked before it is
- * allocated. */
-#define MAX_MEMORY_DEFAULT (1ull << 30)
-static unsigned long long max_memory = MAX_MEMORY_DEFAULT;
 
 static int core_init(struct core *c, unsigned w, unsigned h, unsigned strip_rows)
 {

@@ -421,6 +421,18 @@ static void ssd_pixel(struct emu_panel *p, uint16_t v)
  * COM127 (row 0 on the top row), bit 5 splits odd and even COMs as these
  * glasses are wired (clear: the rows interleave), bit 2 orders the colours
  * C-B-A. Sleep (AEh) shows black, A4h black, A5h white, A7h inverts. */
+/* Viewed pixel (ox, oy) -> glass pixel: the glass turned view*90 degrees. */
+static void view_to_glass(const struct emu_panel *p, uint16_t ox, uint16_t oy, uint16_t *gx, uint16_t *gy)
+{
+    uint16_t gw = p->mod->glass_w, gh = p->mod->glass_h;
+    switch (p->view) {
+    case 1: *gx = (uint16_t)(gw - 1 - oy); *gy = ox; break;
+    case 2: *gx = (uint16_t)(gw - 1 - ox); *gy = (uint16_t)(gh - 1 - oy); break;
+    case 3: *gx = oy; *gy = (uint16_t)(gh - 1 - ox); break;
+    default: *gx = ox; *gy = oy; break;
+    }
+}
+
 static void ssd_glass(const struct emu_panel *p, uint16_t *out, uint16_t w, uint16_t h)
 {
     const struct emu_module *m = p->mod;
@@ -428,16 +440,11 @@ static void ssd_glass(const struct emu_panel *p, uint16_t *out, uint16_t w, uint
     int dark = p->asleep || !p->reset || p->mode == 0xA4;
     int invert = (p->mode == 0xA7) != (m->inverted != 0);
     int swap = ((p->remap & 0x04) != 0) != (m->bgr != 0);
-    uint16_t gw = m->glass_w, gh = m->glass_h;
+    uint16_t gw = m->glass_w;
     for (uint16_t oy = 0; oy < h; oy++)
         for (uint16_t ox = 0; ox < w; ox++) {
             uint16_t gx, gy;
-            switch (p->view) {
-            case 1: gx = (uint16_t)(gw - 1 - oy); gy = ox; break;
-            case 2: gx = (uint16_t)(gw - 1 - ox); gy = (uint16_t)(gh - 1 - oy); break;
-            case 3: gx = oy; gy = (uint16_t)(gh - 1 - ox); break;
-            default: gx = ox; gy = oy; break;
-            }
+            view_to_glass(p, ox, oy, &gx, &gy);
             uint16_t seg = (uint16_t)(m->mem_x + (m->mirror_x ? gw - 1 - gx : gx));
             uint16_t line = (uint16_t)(m->mem_y + gy);      /* counted from COM127 */
             uint16_t col = (p->remap & 0x02) ? (uint16_t)(mw - 1 - seg) : seg;
@@ -762,14 +769,8 @@ int emu_panel_glass(const struct emu_panel *p, uint16_t *out, uint16_t w, uint16
     uint16_t gw = m->glass_w, gh = m->glass_h;
     for (uint16_t oy = 0; oy < h; oy++)
         for (uint16_t ox = 0; ox < w; ox++) {
-            /* Viewed pixel -> glass pixel: the glass turned view*90 degrees. */
             uint16_t gx, gy;
-            switch (p->view) {
-            case 1: gx = (uint16_t)(gw - 1 - oy); gy = ox; break;
-            case 2: gx = (uint16_t)(gw - 1 - ox); gy = (uint16_t)(gh - 1 - oy); break;
-            case 3: gx = oy; gy = (uint16_t)(gh - 1 - ox); break;
-            default: gx = ox; gy = oy; break;
-            }
+            view_to_glass(p, ox, oy, &gx, &gy);
             uint16_t col = (uint16_t)(m->mem_x + (m->mirror_x ? gw - 1 - gx : gx));
             uint16_t row = (uint16_t)(m->mem_y + gy);
             uint16_t v = p->mem[row][col];

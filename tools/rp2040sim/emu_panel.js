@@ -439,6 +439,18 @@ class EmuPanel {
     for (let y = 3; y < m.gh; y += 16) this.mem[(m.memY + y) * MEM_W + m.memX] ^= 0x0841;
   }
 
+  /* Viewed pixel (ox, oy) -> glass pixel (this.gx, this.gy): the glass
+   * turned view*90 degrees. */
+  viewToGlass(ox, oy) {
+    const gw = this.mod.gw, gh = this.mod.gh;
+    switch (this.view) {
+      case 1: this.gx = gw - 1 - oy; this.gy = ox; break;
+      case 2: this.gx = gw - 1 - ox; this.gy = gh - 1 - oy; break;
+      case 3: this.gx = oy; this.gy = gh - 1 - ox; break;
+      default: this.gx = ox; this.gy = oy; break;
+    }
+  }
+
   glassWidth() { return (this.view & 1) ? this.mod.gh : this.mod.gw; }
   glassHeight() { return (this.view & 1) ? this.mod.gw : this.mod.gh; }
 
@@ -454,13 +466,8 @@ class EmuPanel {
     const gw = m.gw, gh = m.gh;
     for (let oy = 0; oy < h; oy++) {
       for (let ox = 0; ox < w; ox++) {
-        let gx, gy;
-        switch (this.view) {
-          case 1: gx = gw - 1 - oy; gy = ox; break;
-          case 2: gx = gw - 1 - ox; gy = gh - 1 - oy; break;
-          case 3: gx = oy; gy = gh - 1 - ox; break;
-          default: gx = ox; gy = oy; break;
-        }
+        this.viewToGlass(ox, oy);
+        const gx = this.gx, gy = this.gy;
         const col = m.memX + (m.mirrorX ? gw - 1 - gx : gx);
         const row = m.memY + gy;
         let v = this.mem[row * MEM_W + col];
@@ -564,16 +571,11 @@ class EmuPanel {
     const dark = this.asleep || !this.reset || this.mode === 0xA4;
     const invert = (this.mode === 0xA7) !== (m.inverted !== 0);
     const swap = ((this.remap & 0x04) !== 0) !== (m.bgr !== 0);
-    const gw = m.gw, gh = m.gh;
+    const gw = m.gw;
     for (let oy = 0; oy < h; oy++) {
       for (let ox = 0; ox < w; ox++) {
-        let gx, gy;
-        switch (this.view) {
-          case 1: gx = gw - 1 - oy; gy = ox; break;
-          case 2: gx = gw - 1 - ox; gy = gh - 1 - oy; break;
-          case 3: gx = oy; gy = gh - 1 - ox; break;
-          default: gx = ox; gy = oy; break;
-        }
+        this.viewToGlass(ox, oy);
+        const gx = this.gx, gy = this.gy;
         const seg = m.memX + (m.mirrorX ? gw - 1 - gx : gx);
         const line = m.memY + gy;
         const col = (this.remap & 0x02) ? mw - 1 - seg : seg;

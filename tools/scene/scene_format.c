@@ -455,7 +455,7 @@ static void scan_rt_objects(const struct scene *s, struct scene_format *R, int w
  * its direction is a primary or reflected one (<= dmax) or, for a shadow
  * ray, the light vector L (<= lmax). */
 static void scan_rt_book(const struct scene *s, struct scene_format *R, double hmax, double reach,
-                         double dmax, double lmax)
+                         double dmax, double lmax, int secondary)
 {
     double d = s->rt.shadows ? fmax(dmax, lmax) : dmax, d2 = d * d;
     double cam = len3(s->camera.position) + anim_reach(&s->camera_anim, s->frames);
@@ -466,10 +466,7 @@ static void scan_rt_book(const struct scene *s, struct scene_format *R, double h
      * is more than epsilon (measured: tools/charts/sweeps.py rt-scale, the
      * book quadratic at Q15.16 holds to k = 2, reach x 2^-16 = 0.6 epsilon,
      * and fails from k = 4, 1.2 epsilon) */
-    int secondary = s->rt.recursion_depth > 0;
-    for (int k = 0; k < s->nlights; k++) secondary |= s->rt.shadows && s->lights[k].type != LIGHT_AMBIENT;
     R->book_reach = secondary ? reach + cam : 0;
-    R->epsilon = fabs(num_to_double(s->rt.epsilon));
     for (int i = 0; i < s->nobjects; i++) {
         const struct rt_object *o = &s->objects[i];
         if (o->shape != RT_SPHERE) continue;
@@ -513,11 +510,14 @@ static void scan_rt_rays(const struct scene *s, struct scene_format *R, double h
     }
     if (s->rt.specular) note(&R->other, lmax * dmax, "specular: R.V of the longest light vector and view ray");
     if (dmin > 0) note(&R->other, R->position.value / dmin, "a ray parameter t: distance / |direction| (%.3g)", dmin);
-    if (s->rt.formulation == 1) scan_rt_book(s, R, hmax, planes ? R->position.value : hmax, dmax, lmax);
+    /* rays that leave a hit point: shadow rays to a light that casts them,
+     * or reflected ones */
     int secondary = s->rt.recursion_depth > 0;
     for (int k = 0; k < s->nlights; k++) secondary |= s->rt.shadows && s->lights[k].type != LIGHT_AMBIENT;
     R->t_dir = secondary ? dmax : 0;
     R->epsilon = fabs(num_to_double(s->rt.epsilon));
+    if (s->rt.formulation == 1)
+        scan_rt_book(s, R, hmax, planes ? R->position.value : hmax, dmax, lmax, secondary);
 }
 
 static void scan_rt(const struct scene *s, struct scene_format *R, int width, int height, double cam, double colour)
@@ -710,42 +710,37 @@ static void scan_ras(const struct scene *s, struct scene_format *R, int width, i
     double vw = vh * width / h, dd = fabs(v.d);
     note(&R->other, vw, "the render's viewport width Vh x W / H");
     if (s->ninstances > 0) R->near_d = dd;
-    /* A position's rounding moves a projected vertex by step x H d / (Vh z)
-     * (x and z alike, within the view): the pixel at the nearest depth an
-     * instance reaches, Vh z / (H d), is the rasterizer's pixel step. An
-     * on-screen point at distance D from the camera has z >= D c, c the
-     * view's half-diagonal cosine; clipping keeps z >= d. */
-    if (s->ninstances > 0 && dd > 0 && vh > 0) {
+    /* (the instances' path only: 2D primitives and 3D lines project by ras_project) */
+    if (s->ninstances > 0) note(&R->screen, v.k * dd, "the projection's scale H x d / Vh");
+    /* Per instance: the clip planes' side slope times its farthest depth;
+     * and the nearest depth it reaches. A position's rounding moves a
+     * projected vertex by step x H d / (Vh z) (x and z alike, within the
+     * view): the pixel at the nearest depth an instance reaches, Vh z / (H d),
+     * is the rasterizer's pixel step. An on-screen point at distance D from
+     * the camera has z >= D c, c the view's half-diagonal cosine; clipping
+     * keeps z >= d. */
+    if (s->ninstances > 0 && dd > 0) {
+        double side = fmax(vw / 2 + 2 * vw / (width > 0 ? width : 1), vh / 2 + 2 * vh / h) / dd;
         double sx = vw / (2 * dd), sy = vh / (2 * dd), c = 1 / sqrt(1 + sx * sx + sy * sy), zn = INFINITY;
+        note(&R->other, side, "the clip planes' side slope (Vw / 2 + 2 Vw / W) / d");
         for (int i = 0; i < s->ninstances; i++) {
             const struct ras_instance *in = &s->instances[i];
             const struct ras_model *m = &s->models[in->model];
-            double rb = fabs(num_to_double(in->scale)) * (len3(m->bound_center) + num_to_double(m->bound_radius));
-            double dc = dist3(in->position, s->camera.position) - anim_reach(&in->anim, s->frames) -
-                        anim_reach(&s->camera_anim, s->frames);
-            double z = (dc - rb) * c;
+            double sc = num_to_double(in->scale), ball = len3(m->bound_center) + num_to_double(m->bound_radius);
+            double reach = anim_reach(&in->anim, s->frames);
+            double far = len3(in->position) + reach + cam + sc * ball;
+            note(&R->other, side * far, "instance %d: the clip planes' side slope x its farthest depth", i);
+            double z = (dist3(in->position, s->camera.position) - reach - anim_reach(&s->camera_anim, s->frames) -
+                        fabs(sc) * ball) * c;
             if (s->ras.clip) z = fmax(z, dd);
             if (z < zn) zn = z;
         }
-        if (zn > 0 && zn < INFINITY) {
+        if (vh > 0 && zn > 0 && zn < INFINITY) {
             double px = zn * vh / (h * dd);
             if (px < R->pixel_step) {
                 R->pixel_step = px;
                 R->pixel_at_depth = 1;
             }
-        }
-    }
-    /* (the instances' path only: 2D primitives and 3D lines project by ras_project) */
-    if (s->ninstances > 0) note(&R->screen, v.k * dd, "the projection's scale H x d / Vh");
-    if (dd > 0 && s->ninstances > 0) {
-        double side = fmax(vw / 2 + 2 * vw / (width > 0 ? width : 1), vh / 2 + 2 * vh / h) / dd;
-        note(&R->other, side, "the clip planes' side slope (Vw / 2 + 2 Vw / W) / d");
-        for (int i = 0; i < s->ninstances; i++) {
-            const struct ras_instance *in = &s->instances[i];
-            const struct ras_model *m = &s->models[in->model];
-            double far = len3(in->position) + anim_reach(&in->anim, s->frames) + cam +
-                         num_to_double(in->scale) * (len3(m->bound_center) + num_to_double(m->bound_radius));
-            note(&R->other, side * far, "instance %d: the clip planes' side slope x its farthest depth", i);
         }
     }
     smallest(R, 1.0 / 1024, "texture coordinates (1/1024 of a texture)");

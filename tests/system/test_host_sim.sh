@@ -298,6 +298,18 @@ expect_err num_frac_refused 2 \
   --scene "$tmp/ground.scene" --panel none --size 32x24
 run --scene "$tmp/ground.scene" --panel none --size 32x24 --num-frac 12
 [ "$rc" -eq 0 ] && pass num_frac_refused_forced || fail num_frac_refused_forced "exit $rc: $(head -n 1 "$tmp/e")"
+# A scene past every format's positions: the fix named is host_sim's own
+# (floating point), not a scene compiler option; float renders it.
+cat >"$tmp/far.scene" <<'SCENE'
+sphere { center = (0, 0, 3000000) radius = 100000 color = (255, 0, 0) }
+SCENE
+expect_err num_frac_refused_hint 2 \
+  "far.scene:1:1: error: sphere 0: hit points (their reach) = .* exceeds the widest number format .*; scale the scene down, or render it in floating point (--numeric float)" \
+  --scene "$tmp/far.scene" --panel none --size 32x24
+grep -q -- "--allow-wide" "$tmp/e" && fail num_frac_refused_hint_tool "names scenec's option: $(cat "$tmp/e")" ||
+  pass num_frac_refused_hint_tool
+run --scene "$tmp/far.scene" --panel none --size 32x24 --numeric float
+[ "$rc" -eq 0 ] && pass num_frac_refused_float || fail num_frac_refused_float "exit $rc: $(head -n 1 "$tmp/e")"
 run --scene "$tmp/ground.scene" --panel none --size 32x24 --numeric double
 [ "$rc" -eq 0 ] && pass num_frac_refused_double_renders || fail num_frac_refused_double_renders "exit $rc"
 

@@ -140,6 +140,16 @@ elif grep -q "error: sphere 1: .* exceeds the widest number format (|x| < 524288
 else
   echo "FAIL scenec_refuses_overflow: $(cat "$work/g.err")"
 fi
+# The same refusal of positions past every format names scenec's option.
+printf 'sphere { center = (0, 0, 3000000) radius = 100000 color = (255, 0, 0) }\n' >"$work/far.scene"
+if "$scenec" -o "$work/far.c" "$work/far.scene" >"$work/f.log" 2>"$work/f.err"; then
+  echo "FAIL scenec_refusal_hint: accepted"
+elif grep -q "exceeds the widest number format .*; scale the scene down, or allow 64-bit intermediates for this scene (--allow-wide)$" "$work/f.err" &&
+     [ ! -e "$work/far.c" ]; then
+  echo "PASS scenec_refusal_hint"
+else
+  echo "FAIL scenec_refusal_hint: $(cat "$work/f.err")"
+fi
 # Bad input: the parser's message and exit status 2
 printf 'sphere { radius = 1 }\n' >"$work/bad.scene"
 "$scenec" -o "$work/bad.c" "$work/bad.scene" >/dev/null 2>"$work/b.err"; rc=$?

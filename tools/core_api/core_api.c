@@ -103,7 +103,7 @@ static int format(const void *scene, const char *path, uint16_t w, uint16_t h, s
 {
     if (!scene_format_choose(scene, w, h, NULL, 0, 0, f))
         return scene_given_zero(scene, f->num_frac, path, msg, msglen);
-    scene_format_refusal(f, path, msg, msglen);
+    scene_format_refusal(f, path, NULL, msg, msglen);
     return -1;
 }
 

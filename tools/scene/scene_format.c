@@ -900,7 +900,8 @@ void scene_format_print_argument(FILE *out, const struct scene_format *f)
                 ldexp(1.0, -frac));
 }
 
-void scene_format_refusal(const struct scene_format *f, const char *path, char *msg, size_t len)
+void scene_format_refusal(const struct scene_format *f, const char *path, const char *wide_option, char *msg,
+                          size_t len)
 {
     if (f->ill == SCENE_ILL_INSIDE) {
         snprintf(msg, len,
@@ -972,9 +973,13 @@ void scene_format_refusal(const struct scene_format *f, const char *path, char *
     /* a square kept in num is the book's operation order: the robust one keeps it wide */
     const char *fix = f->big.value == f->square.value
                           ? "use a plane, or formulation = robust (64-bit intermediates) for this scene"
-                          : "scale the scene down, or allow 64-bit intermediates for this scene (--allow-wide)";
+                      : wide_option ? "scale the scene down, or allow 64-bit intermediates for this scene"
+                                    : "scale the scene down, or render it in floating point (--numeric float)";
     snprintf(msg, len,
              "%s:1:1: error: %s = %.6g (x2 margin: %.6g) exceeds the widest number format (|x| < %.6g at "
-             "NUM_FRAC %d); %s",
-             path, f->big.what, f->big.value, f->need, lim, f->coarsest, fix);
+             "NUM_FRAC %d); %s%s%s%s",
+             path, f->big.what, f->big.value, f->need, lim, f->coarsest, fix,
+             f->big.value != f->square.value && wide_option ? " (" : "",
+             f->big.value != f->square.value && wide_option ? wide_option : "",
+             f->big.value != f->square.value && wide_option ? ")" : "");
 }

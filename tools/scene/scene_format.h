@@ -132,7 +132,11 @@ void scene_format_print_argument(FILE *out, const struct scene_format *f);
 /* The refusal as one line "PATH:1:1: error: QUANTITY ... exceeds the widest
  * number format ...; WHAT TO CHANGE" (no newline) into msg (len >= 1). The
  * position is the file's start: the quantity is a property of the whole
- * scene, named by object and index in the message. */
-void scene_format_refusal(const struct scene_format *f, const char *path, char *msg, size_t len);
+ * scene, named by object and index in the message. wide_option: the
+ * calling tool's option that takes the widest format with 64-bit
+ * intermediates (scenec's "--allow-wide"), named as the fix; NULL for a
+ * tool without one (the fix named is floating point). */
+void scene_format_refusal(const struct scene_format *f, const char *path, const char *wide_option, char *msg,
+                          size_t len);
 
 #endif

@@ -853,7 +853,7 @@ static int analyse(const struct args *a, const struct scene *s, struct scene_for
            s->nmodels, s->ninstances, s->ntextures, s->frames);
     scene_format_print_ranges(stdout, F);
     if (refused) {
-        scene_format_refusal(F, a->path, err, sizeof err);
+        scene_format_refusal(F, a->path, "--allow-wide", err, sizeof err);
         fprintf(stderr, "%s\n", err);
         return 2;
     }

@@ -11,6 +11,8 @@
 HOST_SIM_SRCS := host_sim/main.c host_sim/imgio.c host_sim/panel_out.c host_sim/compare.c tools/common/file_id.c
 # the frame-rate overlay's font (--fps-overlay), shared with the firmware
 HOST_SIM_SRCS += firmware/app/font5x7.c
+# --pattern check: the bring-up pattern of the cgfs-check images
+HOST_SIM_SRCS += firmware/app/check_pattern.c
 # --window: SDL2 (the Makefile's WITH_SDL2); without it the option says so, exit 2
 HOST_SIM_SRCS += host_sim/window.c
 $(foreach v,$(VARIANTS),$(call obj,$(v),none,host_sim/window.c)): EXTRA_CFLAGS += $(SDL2_FLAGS)

@@ -1458,21 +1458,22 @@ static int run_pattern(const struct opts *o, struct panel_out **pp, struct bufs 
     for (int i = 0; i < 2; i++)
         if (outs[i] && (rc = img_check_dest(outs[i], err, sizeof err))) return fail(rc, "%s", err);
     if (outs[0] && outs[1] && file_same(outs[0], outs[1])) return fail(EXIT_USAGE, "%s: given as two outputs", outs[1]);
-    if (!o->out && !o->out_raw && strcmp(backend, "linux"))
-        fprintf(stderr, "host_sim: warning: no output given (--out, --out-raw): the pattern is drawn and discarded\n");
 
     struct panel_out_opts po = { .panel = panel, .backend = backend, .miswire = o->miswire, .width = w,
                                  .height = h, .rotation = (uint8_t)rotation, .spi_dev = o->spi_dev,
                                  .gpio_chip = o->gpio_chip, .spi_hz = o->spi_hz, .spi_mode = o->spi_mode,
                                  .dc = o->dc, .rst = o->rst, .bl = o->bl };
     if ((rc = panel_out_open(pp, &po, err, sizeof err))) return fail(rc, "%s", err);
+    if (!o->out && !o->out_raw && strcmp(backend, "linux"))
+        fprintf(stderr, "host_sim: warning: no output given (--out, --out-raw): the pattern is drawn and discarded\n");
     const struct panel *pn = panel_out_panel(*pp);
     /* the driver's settings, as the firmware prints them */
     struct check_settings cs = { .panel = pn->desc->name, .width = w, .height = h, .rotation = pn->rotation,
                                  .x_off = pn->desc->x_off[pn->rotation], .y_off = pn->desc->y_off[pn->rotation],
                                  .bgr = (uint8_t)panel_bgr(pn), .invert = pn->desc->invert,
                                  .spi_hz = o->has_clocks ? o->board_spi_hz : panel_out_spi_hz(*pp),
-                                 .sys_hz = o->has_clocks ? o->board_sys_hz : 0 };
+                                 .sys_hz = o->has_clocks ? o->board_sys_hz : 0,
+                                 .round = (uint8_t)panel_out_round(*pp) };
     struct check_layout lay;
     check_setup(&lay, &cs);
     unsigned rows = o->strip_rows ? o->strip_rows : STRIP_ROWS_DEFAULT;

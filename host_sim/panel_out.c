@@ -378,6 +378,8 @@ const struct panel *panel_out_panel(const struct panel_out *p) { return p->kind 
 
 uint32_t panel_out_spi_hz(const struct panel_out *p) { return p->spi_hz; }
 
+int panel_out_round(const struct panel_out *p) { return p->kind == OUT_SIM && !emu_panel_shown(p->emu, 0, 0); }
+
 uint64_t panel_out_spi_bytes(const struct panel_out *p)
 {
     if (p->kind == OUT_SIM) return p->sim.spi_bytes;

@@ -94,6 +94,10 @@ int panel_out_finish(struct panel_out *p, char *err, size_t errlen);
  * offsets), NULL for --panel none. */
 const struct panel *panel_out_panel(const struct panel_out *p);
 
+/* 1 when the emulated glass is round (it has no pixel in its corner: the
+ * GC9A01's), 0 otherwise and for a real panel. */
+int panel_out_round(const struct panel_out *p);
+
 /* The SPI clock the bus runs at, Hz: the emulated bus's, or spidev's (0 for
  * --panel none). */
 uint32_t panel_out_spi_hz(const struct panel_out *p);

@@ -268,7 +268,7 @@ $(eval $(call RP_IMAGE,cgfs-check,$(FW_CHECK),,,$(RP_CHECK_SRCS)))
 $(eval $(call RP_IMAGE,cgfs-check-ili9341,$(FW_CHECK) $(FW_ILI320),,,$(RP_CHECK_SRCS)))
 $(eval $(call RP_IMAGE,cgfs-check-st7735,$(FW_CHECK) $(FW_ST7735),,,$(RP_CHECK_SRCS)))
 $(eval $(call RP_IMAGE,cgfs-check-ssd1351,$(FW_CHECK) $(FW_SSD1351),,,$(RP_CHECK_SRCS)))
-$(eval $(call RP_IMAGE,cgfs-check-gc9a01,$(FW_CHECK) -DFW_PANEL=panel_gc9a01_240x240,,,$(RP_CHECK_SRCS)))
+$(eval $(call RP_IMAGE,cgfs-check-gc9a01,$(FW_CHECK) $(FW_GC9A01),,,$(RP_CHECK_SRCS)))
 $(eval $(call RP_IMAGE,cgfs-check-ili9488,$(FW_CHECK) $(FW_ILI9488),,,$(RP_CHECK_SRCS)))
 
 FW_RP_IMAGES := $(FW_OUT)/pico/cgfs.uf2 $(FW_OUT)/pico/cgfs-1core.uf2 $(FW_OUT)/pico/cgfs-ili9341.uf2 \

@@ -44,6 +44,8 @@ TESTS     += tests/system/test_host_sim.sh:$(HOST_SIM_BIN_asan)
 # every scene on every panel of hal/panels.def, at the panel's size (the
 # optimised build: 40 scenes x 9 panels)
 TESTS     += tests/system/test_host_sim_panels.sh:$(HOST_SIM_BIN_host)
+# --pattern check (the bring-up pattern) on every panel in every rotation, --miswire
+TESTS     += tests/system/test_check_pattern.py:$(HOST_SIM_BIN_asan)
 # --loop, dirty-rectangle flush, per-frame --out, --fps-overlay, progress line
 TESTS     += tests/system/test_live.sh:$(HOST_SIM_BIN_asan)
 # --window under Xvfb: a screenshot (xwd) against the PNG

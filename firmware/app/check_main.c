@@ -32,6 +32,11 @@
 #ifndef FW_ROTATION
 #define FW_ROTATION 0
 #endif
+/* FW_ROUND_GLASS 1: the panel's glass is round (the GC9A01): the pattern
+ * inside the square its circle holds */
+#ifndef FW_ROUND_GLASS
+#define FW_ROUND_GLASS 0
+#endif
 #ifndef FW_CHECK_PERIOD_MS
 #define FW_CHECK_PERIOD_MS 2000u
 #endif
@@ -101,7 +106,7 @@ int main(void)
         .panel = FW_PANEL.name, .width = FW_WIDTH, .height = FW_HEIGHT, .rotation = FW_ROTATION,
         .x_off = FW_PANEL.x_off[FW_ROTATION], .y_off = FW_PANEL.y_off[FW_ROTATION],
         .bgr = (uint8_t)panel_bgr(&panel), .invert = FW_PANEL.invert,
-        .spi_hz = fw_board_spi_hz(), .sys_hz = fw_board_cpu_hz(),
+        .spi_hz = fw_board_spi_hz(), .sys_hz = fw_board_cpu_hz(), .round = FW_ROUND_GLASS,
     };
     check_setup(&layout, &s);
     check_uart_line(uart, sizeof uart, &s);

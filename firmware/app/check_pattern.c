@@ -58,19 +58,24 @@ static struct text line_at(char *line)
 
 void check_setup(struct check_layout *l, const struct check_settings *s)
 {
-    const uint16_t w = s->width, h = s->height, m = w < h ? w : h;
+    const uint16_t w = s->width, h = s->height;
+    /* a round glass: the square inside its circle, 3/20 of the side in
+       (1 - 1/sqrt(2) = 0.146 of it halved is 0.146; a little more) */
+    const unsigned in = s->round ? (w < h ? w : h) * 3u / 20u : 0u;
+    const unsigned cw = w - 2u * in, ch = h - 2u * in, m = cw < ch ? cw : ch;
     l->w = w;
     l->h = h;
+    l->inset = (uint16_t)in;
     l->mark = (uint16_t)(m / 8u);
     l->scale = m >= 200u ? 2u : 1u;
-    l->bars_y = (uint16_t)(l->mark + 4u);
-    l->bars_h = (uint16_t)(h / 10u);
+    l->bars_y = (uint16_t)(in + l->mark + 4u);
+    l->bars_h = (uint16_t)(ch / 10u);
     l->grad_y = (uint16_t)(l->bars_y + l->bars_h + 2u);
-    l->grad_h = (uint16_t)(h / 30u > 2u ? h / 30u : 2u);
+    l->grad_h = (uint16_t)(ch / 30u > 2u ? ch / 30u : 2u);
     l->text_y = (uint16_t)(l->grad_y + 4u * l->grad_h + 2u);
     /* beside the blue square when the text would reach its rows */
     const unsigned text_h = CHECK_LINES * (unsigned)FONT5X7_BOX_H(l->scale);
-    l->text_x = l->text_y + text_h + 2u > (unsigned)(h - l->mark - 2u) ? (uint16_t)(l->mark + 6u) : 4u;
+    l->text_x = (uint16_t)(in + (l->text_y + text_h + 2u > h - in - l->mark - 2u ? l->mark + 6u : 4u));
 
     struct text t = line_at(l->lines[0]);
     put_upper(&t, s->panel);
@@ -107,14 +112,15 @@ void check_setup(struct check_layout *l, const struct check_settings *s)
 /* one row of everything but the text and the border */
 static void row(const struct check_layout *l, uint16_t *px, unsigned y)
 {
-    const unsigned w = l->w, h = l->h, m = l->mark, n = w > 4u ? w - 4u : 1u;
-    for (unsigned x = 0; x < w; x++) px[x] = CHECK_GROUND;
+    const unsigned in = l->inset, w = l->w - in, h = l->h - in, m = l->mark;
+    const unsigned x0 = in + 2u, n = w - x0 - 2u;   /* the bars' and gradients' columns: x0 .. x0 + n - 1 */
+    for (unsigned x = 0; x < l->w; x++) px[x] = CHECK_GROUND;
     if (y >= l->bars_y && y < (unsigned)l->bars_y + l->bars_h)
-        for (unsigned x = 2; x + 2 < w; x++) px[x] = bars[(x - 2u) * 8u / n];
+        for (unsigned x = x0; x < x0 + n; x++) px[x] = bars[(x - x0) * 8u / n];
     if (y >= l->grad_y && y < (unsigned)l->grad_y + 4u * l->grad_h) {
         const unsigned band = (y - l->grad_y) / l->grad_h, d = n > 1u ? n - 1u : 1u;
-        for (unsigned x = 2; x + 2 < w; x++) {
-            const unsigned t = x - 2u, v5 = t * 31u / d, v6 = t * 63u / d;
+        for (unsigned x = x0; x < x0 + n; x++) {
+            const unsigned t = x - x0, v5 = t * 31u / d, v6 = t * 63u / d;
             uint16_t c;
             if (band == 0) c = (uint16_t)((v6 >> 1) << 11 | v6 << 5 | (v6 >> 1));
             else if (band == 1) c = (uint16_t)(v5 << 11);
@@ -123,12 +129,12 @@ static void row(const struct check_layout *l, uint16_t *px, unsigned y)
             px[x] = c;
         }
     }
-    if (y >= 2u && y < 2u + m) {
-        for (unsigned x = 2; x < 2u + m && x < w; x++) px[x] = CHECK_RED;
+    if (y >= in + 2u && y < in + 2u + m) {
+        for (unsigned x = x0; x < x0 + m; x++) px[x] = CHECK_RED;
         for (unsigned x = w - 2u - m; x < w - 2u; x++) px[x] = CHECK_GREEN;
     }
     if (y + 2u + m >= h && y + 2u < h)
-        for (unsigned x = 2; x < 2u + m && x < w; x++) px[x] = CHECK_BLUE;
+        for (unsigned x = x0; x < x0 + m; x++) px[x] = CHECK_BLUE;
 }
 
 void check_rows(const struct check_layout *l, uint16_t *strip, uint16_t y0, uint16_t y1)
@@ -137,7 +143,7 @@ void check_rows(const struct check_layout *l, uint16_t *strip, uint16_t y0, uint
     for (unsigned y = y0; y < y1; y++) row(l, strip + (size_t)(y - y0) * (size_t)w, y);
     /* "TOP", centred, and the settings */
     const int top_w = 3 * 6 * s + 3;
-    font5x7_draw(strip, w, y0, y1, (w - top_w) / 2, 2, s, "TOP", CHECK_WHITE, 0x0000u);
+    font5x7_draw(strip, w, y0, y1, (w - top_w) / 2, l->inset + 2, s, "TOP", CHECK_WHITE, 0x0000u);
     for (int i = 0; i < CHECK_LINES; i++)
         font5x7_draw(strip, w, y0, y1, l->text_x, l->text_y + i * FONT5X7_BOX_H(s), s, l->lines[i], CHECK_WHITE,
                      0x0000u);

@@ -46,20 +46,29 @@ struct check_settings {
     uint8_t invert;            /* 1: inversion on */
     uint32_t spi_hz;           /* the SPI clock; 0: not known */
     uint32_t sys_hz;           /* the board's clk_sys; 0: not known */
+    uint8_t round;             /* 1: a round glass (the GC9A01's): everything but the
+                                  border inside the square the circle holds */
 };
 
 /* Where everything goes at one size, and the text (check_setup). */
 struct check_layout {
     uint16_t w, h;
+    uint16_t inset;            /* round glass: the margin of the square inside it, else 0 */
     uint16_t mark;             /* side of the corner squares */
     uint16_t bars_y, bars_h;   /* the colour bars' rows */
     uint16_t grad_y, grad_h;   /* the first gradient's rows; each is grad_h high */
     uint16_t text_x, text_y;   /* the settings' top-left */
-    uint8_t scale;             /* of the font: 2 when the panel's shorter side is 200 or more */
+    uint8_t scale;             /* of the font: 2 when the shorter side inside the inset is 200
+                                  or more */
     char lines[CHECK_LINES][CHECK_LINE_LEN];
 };
 
-/* The layout for s's size (at least 16 x 16) and its text. */
+/* The layout for s's size (at least 16 x 16) and its text: the corner squares
+ * mark = (the shorter side) / 8 pixels, 2 pixels inside the border; "TOP"
+ * 2 rows below the border; the bars from row mark + 4, h / 10 high; after 2
+ * rows the gradients, each max(h / 30, 2) high; after 2 more the settings,
+ * at column 4, or beside the blue square where they would reach its rows
+ * (a round glass: all of it inset, and h the inset square's). */
 void check_setup(struct check_layout *l, const struct check_settings *s);
 
 /* Rows [y0, y1) of the pattern into strip (row y at (y - y0) * l->w). */

@@ -357,6 +357,6 @@ TEST_DEPS += $(TEST_NEEDS_test_stm32_qemu)
 # docs/firmware.md against the build: its memory figures (tools/fw_sizes.py),
 # the image `make flash` writes.
 TEST_NEEDS_test_fw_docs := $(foreach i,cgfs-book cgfs-book-1core cgfs-cube cgfs-cube-1core cgfs-cube-ili9341 cgfs-rt \
-                              cgfs,$(FW_OUT)/pico/$(i).elf) $(FW_OUT)/stm32f411/cgfs.elf $(FW_OUT)/stm32f411/cgfs-fixed.elf
+                              cgfs cgfs-check,$(FW_OUT)/pico/$(i).elf) $(FW_OUT)/stm32f411/cgfs.elf $(FW_OUT)/stm32f411/cgfs-fixed.elf
 TEST_DEPS += $(TEST_NEEDS_test_fw_docs)
 TESTS     += tests/system/test_fw_docs.sh:$(BUILD)

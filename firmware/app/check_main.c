@@ -103,10 +103,17 @@ int main(void)
         return 1;
     }
     const struct check_settings s = {
-        .panel = FW_PANEL.name, .width = FW_WIDTH, .height = FW_HEIGHT, .rotation = FW_ROTATION,
-        .x_off = FW_PANEL.x_off[FW_ROTATION], .y_off = FW_PANEL.y_off[FW_ROTATION],
-        .bgr = (uint8_t)panel_bgr(&panel), .invert = FW_PANEL.invert,
-        .spi_hz = fw_board_spi_hz(), .sys_hz = fw_board_cpu_hz(), .round = FW_ROUND_GLASS,
+        .panel = FW_PANEL.name,
+        .width = FW_WIDTH,
+        .height = FW_HEIGHT,
+        .rotation = FW_ROTATION,
+        .x_off = FW_PANEL.x_off[FW_ROTATION],
+        .y_off = FW_PANEL.y_off[FW_ROTATION],
+        .bgr = (uint8_t)panel_bgr(&panel),
+        .invert = FW_PANEL.invert,
+        .spi_hz = fw_board_spi_hz(),
+        .sys_hz = fw_board_cpu_hz(),
+        .round = FW_ROUND_GLASS,
     };
     check_setup(&layout, &s);
     check_uart_line(uart, sizeof uart, &s);

@@ -33,7 +33,7 @@ static void put_mhz(struct text *t, uint32_t hz)
         put_s(t, "?");
         return;
     }
-    const uint32_t c = (uint32_t)(((uint64_t)hz + 5000u) / 10000u);   /* hundredths */
+    const uint32_t c = (uint32_t)(((uint64_t)hz + 5000u) / 10000u); /* hundredths */
     put_u(t, c / 100u);
     if (c % 100u) {
         char d[4] = { '.', (char)('0' + c % 100u / 10u), (char)('0' + c % 10u), 0 };
@@ -113,7 +113,7 @@ void check_setup(struct check_layout *l, const struct check_settings *s)
 static void row(const struct check_layout *l, uint16_t *px, unsigned y)
 {
     const unsigned in = l->inset, w = l->w - in, h = l->h - in, m = l->mark;
-    const unsigned x0 = in + 2u, n = w - x0 - 2u;   /* the bars' and gradients' columns: x0 .. x0 + n - 1 */
+    const unsigned x0 = in + 2u, n = w - x0 - 2u; /* the bars' and gradients' columns: x0 .. x0 + n - 1 */
     for (unsigned x = 0; x < l->w; x++) px[x] = CHECK_GROUND;
     if (y >= l->bars_y && y < (unsigned)l->bars_y + l->bars_h)
         for (unsigned x = x0; x < x0 + n; x++) px[x] = bars[(x - x0) * 8u / n];

@@ -108,9 +108,9 @@ static const char usage_text2[] =
     "  --board-clocks SPI_HZ,SYS_HZ  the clocks it prints (a board's; default the bus's SPI clock\n"
     "                                and no clk_sys)\n"
     "  --miswire %s\n"
-    "                                the driver with one setting wrong (the emulated module stays\n"
-    "                                true): offsets, colour order, inversion, rotation a half turn\n"
-    "                                off, each pixel's bytes swapped\n"
+    "                                the driver with one setting wrong, for a scene too (the\n"
+    "                                emulated module stays true): offsets, colour order, inversion,\n"
+    "                                rotation a half turn off, each pixel's bytes swapped\n"
     "exit status: 0 ok, 1 internal error, 2 usage or input error,\n"
     "             3 panel protocol violation\n";
 

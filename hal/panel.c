@@ -195,5 +195,7 @@ int panel_tear_effect(struct panel *p)
     return send(p, c, &vblank_only, 1);
 }
 
+int panel_bgr(const struct panel *p) { return (p->desc->madctl[p->rotation] & panel_ctl(p)->order_bgr) != 0; }
+
 uint16_t panel_width(const struct panel *p) { return p->width; }
 uint16_t panel_height(const struct panel *p) { return p->height; }

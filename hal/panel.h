@@ -67,6 +67,9 @@ struct panel_ctl {
                                     3, RGB666 converted on the way out
                                     (struct dcs rgb666), never by the HAL's
                                     pixels_async */
+    uint8_t order_bgr;           /* the orientation parameter's bit that sends
+                                    RGB565's red to the glass's third colour
+                                    (BGR order; DCS: MADCTL BGR, 08h) */
 };
 
 /* MIPI DCS: CASET/RASET (16-bit addresses), RAMWR, MADCTL, INVON/INVOFF,
@@ -78,7 +81,7 @@ extern const struct panel_ctl panel_ctl_dcs;
     .set_cols = DCS_CASET, .set_rows = DCS_RASET, .addr_bytes = 2, .write_mem = DCS_RAMWR,     \
     .orient = DCS_MADCTL, .inv_on = DCS_INVON, .inv_off = DCS_INVOFF, .disp_on = DCS_DISPON,   \
     .disp_off = DCS_DISPOFF, .sleep_in = DCS_SLPIN, .sleep_out = DCS_SLPOUT,                   \
-    .sleep_wait_ms = 120, .te_on = DCS_TEON
+    .sleep_wait_ms = 120, .te_on = DCS_TEON, .order_bgr = DCS_MADCTL_BGR
 /* Solomon Systech SSD1351 (OLED): 15h/75h windows with 1-byte addresses,
  * write RAM 5Ch, remap A0h, A6h/A7h, sleep AEh/AFh (hal/panel_ssd1351.c). */
 extern const struct panel_ctl panel_ctl_ssd1351;
@@ -176,6 +179,10 @@ int panel_sleep(struct panel *p, int sleep);
  * each vertical blank, for boards that wire TE: fw_board_te_wait); -1 when
  * its command set has none (panel_ctl.te_on). */
 int panel_tear_effect(struct panel *p);
+
+/* 1 when the orientation parameter of p's rotation selects BGR order
+ * (panel_ctl.order_bgr), 0 for RGB. */
+int panel_bgr(const struct panel *p);
 
 uint16_t panel_width(const struct panel *p);
 uint16_t panel_height(const struct panel *p);

@@ -33,6 +33,7 @@ const struct panel_ctl panel_ctl_ssd1351 = {
     .sleep_out = 0xAF,
     .sleep_wait_ms = 0,
     .xy_by_driver = 1,
+    .order_bgr = 0x04,   /* A0h bit 2: colour order C-B-A */
 };
 
 /* The vendor's initialisation: unlock, display off, clocks, multiplex

@@ -24,7 +24,9 @@
 #include "host_sim/imgio.h"
 #include "host_sim/panel_out.h"
 #include "host_sim/window.h"
+#include "firmware/app/check_pattern.h"
 #include "firmware/app/font5x7.h"
+#include "hal/panel.h"
 #include "tools/scene/suggest.h"
 
 /* Rows a strip has: what a small MCU can hold (16 rows x 320 x 2 bytes = 10 KiB). */
@@ -36,6 +38,7 @@ enum { EXIT_OK = 0, EXIT_INTERNAL = 1, EXIT_USAGE = 2, EXIT_PROTOCOL = 3 };
 
 static const char usage_text[] =
     "usage: host_sim --scene FILE [options]\n"
+    "       host_sim --pattern check [--panel NAME] [--rotation R] [--miswire WHAT] [--out FILE]\n"
     "  --panel NAME|none             the panel (hal/panels.def): a controller, %s\n"
     "                                (the module of the size), or a module,\n"
     "                                %s;\n"
@@ -97,6 +100,17 @@ static const char usage_text2[] =
     "  --inject-fault NAME           make the panel driver misbehave (tests): %s;\n"
     "                                signal-in-write: SIGTERM to itself in the middle of\n"
     "                                writing --out-raw (tests: nothing is left behind)\n"
+    "the bring-up pattern (the cgfs-check images; docs/firmware.md):\n"
+    "  --pattern check               draw it instead of a scene: bars, gradients, corner marks,\n"
+    "                                a border and the driver's settings; with --panel, --rotation,\n"
+    "                                --miswire, --board-clocks, --strip-rows, --out, --out-raw and\n"
+    "                                --backend (and its options), no other option\n"
+    "  --board-clocks SPI_HZ,SYS_HZ  the clocks it prints (a board's; default the bus's SPI clock\n"
+    "                                and no clk_sys)\n"
+    "  --miswire %s\n"
+    "                                the driver with one setting wrong, for a scene too (the\n"
+    "                                emulated module stays true): offsets, colour order, inversion,\n"
+    "                                rotation a half turn off, each pixel's bytes swapped\n"
     "exit status: 0 ok, 1 internal error, 2 usage or input error,\n"
     "             3 panel protocol violation\n";
 
@@ -106,6 +120,9 @@ struct opts {
     int spi_mode, dc, rst, bl;   /* -1 / PANEL_OUT_PIN_DEFAULT: the default */
     const char *scene, *panel, *numeric, *out, *out_raw, *out_rgb888, *backend;
     const char *compare, *fault;
+    const char *pattern, *miswire;   /* --pattern check, --miswire */
+    uint32_t board_spi_hz, board_sys_hz;   /* --board-clocks */
+    int has_clocks;
     int has_size, stats, summary, progressive;
     int loop, fps_overlay, window;
     unsigned loop_frames, window_scale;
@@ -258,6 +275,26 @@ static int set_option(struct opts *o, const char *name, const char *val)
         else if (!(*pin = (int)parse_count(val, 1023)))
             return fail(EXIT_USAGE, "bad %s '%s' (a line number 0..1023%s)", name, val,
                         strcmp(name, "--dc") ? " or none" : "");
+    } else if (!strcmp(name, "--pattern")) {
+        if (strcmp(val, "check")) return fail(EXIT_USAGE, "unknown pattern '%s' (check)", val);
+        o->pattern = val;
+    } else if (!strcmp(name, "--miswire")) {
+        char list[128];
+        snprintf(list, sizeof list, "|%s", panel_out_miswires);
+        size_t n = strlen(val);
+        const char *at = strstr(list, val);
+        if (!at || at[-1] != '|' || (at[n] && at[n] != '|'))
+            return fail(EXIT_USAGE, "unknown --miswire '%s' (%s)", val, panel_out_miswires);
+        o->miswire = val;
+    } else if (!strcmp(name, "--board-clocks")) {
+        const char *c = strchr(val, ',');
+        char why[128];
+        if (!c || count_why(val, (size_t)(c - val), 1000000000u, why, sizeof why) ||
+            count_why(c + 1, strlen(c + 1), 1000000000u, why, sizeof why))
+            return fail(EXIT_USAGE, "bad --board-clocks '%s' (SPI_HZ,SYS_HZ, each 1..1000000000)", val);
+        o->board_spi_hz = (uint32_t)strtoul(val, NULL, 10);
+        o->board_sys_hz = (uint32_t)strtoul(c + 1, NULL, 10);
+        o->has_clocks = 1;
     } else if (!strcmp(name, "--inject-fault")) {
         if (!strcmp(val, "signal-in-write")) img_fault_signal_in_write = 1;   /* imgio's, not the panel's */
         else o->fault = val;
@@ -270,7 +307,7 @@ static const char *const option_names[] = {
     "--scene", "--panel", "--size", "--numeric", "--out", "--out-raw", "--out-rgb888",
     "--frames", "--backend", "--compare", "--strip-rows", "--inject-fault", "--num-frac",
     "--loop-frames", "--flush", "--window-scale", "--spi-dev", "--spi-hz", "--spi-mode", "--gpio-chip", "--dc",
-    "--rst", "--bl", "--rotation", "--max-memory", "--max-cost", NULL,
+    "--rst", "--bl", "--rotation", "--max-memory", "--max-cost", "--pattern", "--miswire", "--board-clocks", NULL,
     "--stats", "--summary", "--progressive", "--loop", "--fps-overlay", "--window", "--help", NULL,
 };
 
@@ -303,7 +340,7 @@ static int parse_args(int argc, char **argv, struct opts *o)
             panel_out_controllers(panels, sizeof panels);
             panel_out_modules(modules, sizeof modules);
             printf(usage_text, panels, modules, panel_out_default());
-            printf(usage_text2, panel_out_faults);
+            printf(usage_text2, panel_out_faults, panel_out_miswires);
             exit(EXIT_OK);
         }
         if (!strcmp(name, "--stats") || !strcmp(name, "--summary") || !strcmp(name, "--progressive") ||
@@ -326,7 +363,15 @@ static int parse_args(int argc, char **argv, struct opts *o)
         int rc = set_option(o, name, val);
         if (rc != EXIT_OK) return rc;
     }
-    if (!o->scene) return fail(EXIT_USAGE, "--scene FILE is required (try --help)");
+    if (o->scene && o->pattern) return fail(EXIT_USAGE, "--scene and --pattern: one or the other");
+    if (!o->scene && !o->pattern) return fail(EXIT_USAGE, "--scene FILE is required (try --help)");
+    if (o->has_clocks && !o->pattern) return fail(EXIT_USAGE, "--board-clocks needs --pattern check");
+    if (o->pattern && (o->has_size || o->numeric || o->compare || o->frames || o->loop || o->loop_frames ||
+                       o->stats || o->summary || o->progressive || o->fps_overlay || o->window ||
+                       o->window_scale || o->out_rgb888 || o->num_frac || o->max_memory || o->max_cost > 0 ||
+                       o->flush || o->fault))
+        return fail(EXIT_USAGE, "--pattern check takes --panel, --rotation, --miswire, --board-clocks, "
+                                "--strip-rows, --out, --out-raw and --backend with its options, no other option");
     if (o->num_frac && strcmp(o->numeric ? o->numeric : "fixed", "fixed") &&
         !(o->compare && !strcmp(o->compare, "fixed")))
         return fail(EXIT_USAGE, "--num-frac applies to fixed point (--numeric fixed or --compare fixed)");
@@ -789,6 +834,8 @@ static int check_usage(struct run_state *r)
         return fail(EXIT_USAGE, "--window-scale needs --window");
     if (o->out_rgb888 && img_format_of(o->out_rgb888) != IMG_PPM)
         return fail(EXIT_USAGE, "--out-rgb888 %s: the file name must end in .ppm", o->out_rgb888);
+    if (o->miswire && r->none)
+        return fail(EXIT_USAGE, "--miswire needs a panel's driver, not --panel none");
     if (o->fault && r->none)
         return fail(EXIT_USAGE, "--inject-fault needs an emulated panel, not --panel none");
     if (o->compare && !strcmp(r->backend, "linux"))
@@ -988,7 +1035,7 @@ static int open_panel(struct run_state *r)
     const struct core *c = r->c;
     char err[512];
     int rc;
-    struct panel_out_opts po = { .panel = r->panel, .backend = r->backend, .fault = o->fault,
+    struct panel_out_opts po = { .panel = r->panel, .backend = r->backend, .fault = o->fault, .miswire = o->miswire,
                                  .width = (uint16_t)r->w, .height = (uint16_t)r->h,
                                  .rotation = (uint8_t)r->rotation, .spi_dev = o->spi_dev,
                                  .gpio_chip = o->gpio_chip, .spi_hz = o->spi_hz, .spi_mode = o->spi_mode,
@@ -1377,6 +1424,80 @@ static void print_summary(const struct run_state *r)
     putchar('\n');
 }
 
+/* --pattern check: the bring-up pattern (firmware/app/check_pattern.h) at
+ * the panel's size in its rotation, streamed strip by strip to the panel as
+ * the cgfs-check images do, with the driver's settings printed on it; then
+ * --out and --out-raw, what the glass shows. What main() frees is in *pp
+ * and *b. */
+static int run_pattern(const struct opts *o, struct panel_out **pp, struct bufs *b)
+{
+    const char *panel = o->panel ? o->panel : panel_out_default();
+    const char *backend = o->backend ? o->backend : "sim";
+    char err[512];
+    int rc;
+    uint16_t w, h;
+    unsigned rotation = o->rotation;
+    if (!strcmp(panel, "none")) return fail(EXIT_USAGE, "--pattern check needs a panel, not --panel none");
+    if (panel_out_native(panel, &w, &h)) return fail(EXIT_USAGE, "unknown panel '%s'", panel);
+    if ((rotation & 1) && w != h) {   /* as for a scene: the native size turned (pick_core) */
+        uint16_t t = w;
+        w = h;
+        h = t;
+        rotation--;
+    }
+    if (strcmp(backend, "linux") && (o->spi_dev || o->gpio_chip || o->spi_hz || o->spi_mode >= 0 ||
+                                     o->dc != PANEL_OUT_PIN_DEFAULT || o->rst != PANEL_OUT_PIN_DEFAULT ||
+                                     o->bl != PANEL_OUT_PIN_DEFAULT))
+        return fail(EXIT_USAGE, "--spi-dev, --spi-hz, --spi-mode, --gpio-chip, --dc, --rst and --bl "
+                                "need --backend linux");
+    const char *outs[2] = { o->out, o->out_raw };
+    if (o->out && img_format_of(o->out) == IMG_NONE)
+        return fail(EXIT_USAGE, "--out %s: the file name must end in .png or .ppm", o->out);
+    if (o->out && out_pattern(o->out))
+        return fail(EXIT_USAGE, "--out %s: --pattern check draws one picture (no %%d in the name)", o->out);
+    for (int i = 0; i < 2; i++)
+        if (outs[i] && (rc = img_check_dest(outs[i], err, sizeof err))) return fail(rc, "%s", err);
+    if (outs[0] && outs[1] && file_same(outs[0], outs[1])) return fail(EXIT_USAGE, "%s: given as two outputs", outs[1]);
+
+    struct panel_out_opts po = { .panel = panel, .backend = backend, .miswire = o->miswire, .width = w,
+                                 .height = h, .rotation = (uint8_t)rotation, .spi_dev = o->spi_dev,
+                                 .gpio_chip = o->gpio_chip, .spi_hz = o->spi_hz, .spi_mode = o->spi_mode,
+                                 .dc = o->dc, .rst = o->rst, .bl = o->bl };
+    if ((rc = panel_out_open(pp, &po, err, sizeof err))) return fail(rc, "%s", err);
+    if (!o->out && !o->out_raw && strcmp(backend, "linux"))
+        fprintf(stderr, "host_sim: warning: no output given (--out, --out-raw): the pattern is drawn and discarded\n");
+    const struct panel *pn = panel_out_panel(*pp);
+    /* the driver's settings, as the firmware prints them */
+    struct check_settings cs = { .panel = pn->desc->name, .width = w, .height = h, .rotation = pn->rotation,
+                                 .x_off = pn->desc->x_off[pn->rotation], .y_off = pn->desc->y_off[pn->rotation],
+                                 .bgr = (uint8_t)panel_bgr(pn), .invert = pn->desc->invert,
+                                 .spi_hz = o->has_clocks ? o->board_spi_hz : panel_out_spi_hz(*pp),
+                                 .sys_hz = o->has_clocks ? o->board_sys_hz : 0,
+                                 .round = (uint8_t)panel_out_round(*pp) };
+    struct check_layout lay;
+    check_setup(&lay, &cs);
+    unsigned rows = o->strip_rows ? o->strip_rows : STRIP_ROWS_DEFAULT;
+    if (rows > h) rows = h;
+    size_t npx = (size_t)w * h;
+    b->strip = malloc((size_t)rows * w * sizeof *b->strip);
+    b->fb = malloc(npx * sizeof *b->fb);
+    if (!b->strip || !b->fb) return fail(EXIT_INTERNAL, "out of memory for a %ux%u image", w, h);
+    for (unsigned y0 = 0; y0 < h; y0 += rows) {
+        unsigned y1 = y0 + rows < h ? y0 + rows : h;
+        check_rows(&lay, b->strip, (uint16_t)y0, (uint16_t)y1);
+        if ((rc = panel_out_flush(*pp, (uint16_t)y0, (uint16_t)y1, b->strip, err, sizeof err))) return fail(rc, "%s", err);
+    }
+    if ((rc = panel_out_finish(*pp, err, sizeof err))) return fail(rc, "%s", err);
+    if (o->out || o->out_raw) {
+        if ((rc = panel_out_read(*pp, b->fb, err, sizeof err))) return fail(rc, "%s", err);
+        if (o->out && (rc = img_write_565(o->out, img_format_of(o->out), b->fb, w, h, w, err, sizeof err)))
+            return fail(rc, "%s", err);
+        if (o->out_raw && (rc = img_write_raw565(o->out_raw, b->fb, w, h, w, err, sizeof err)))
+            return fail(rc, "%s", err);
+    }
+    return EXIT_OK;
+}
+
 /* One host_sim run: what main() frees is in *c, *ref, *pp and *b. */
 static int run(const struct opts *o, struct core *c, struct core *ref, struct panel_out **pp,
                struct bufs *b)
@@ -1408,7 +1529,7 @@ int main(int argc, char **argv)
     struct core c = { 0 }, ref = { 0 };
     struct panel_out *p = NULL;
     struct bufs b = { 0 };
-    rc = run(&o, &c, &ref, &p, &b);
+    rc = o.pattern ? run_pattern(&o, &p, &b) : run(&o, &c, &ref, &p, &b);
     if (p) panel_out_close(p);
     /* every output at once, or none: a failed run leaves the files before it */
     if (rc == EXIT_OK) {

@@ -29,6 +29,7 @@
 #define SIM_SPI_HZ 40000000u
 
 const char panel_out_faults[] = "ramwr-no-window|early-after-slpout";
+const char panel_out_miswires[] = "offset|bgr|invert|rotation|byteswap";
 
 enum kind { OUT_MEMORY, OUT_SIM, OUT_LINUX };
 
@@ -40,6 +41,9 @@ struct panel_out {
     struct hal_sim sim;
     struct emu_panel *emu;       /* ~300 KiB, so on the heap */
     struct panel panel;
+    struct panel_desc wrong;     /* --miswire: the driver's descriptor, one setting wrong */
+    int byteswap;                /* --miswire byteswap */
+    uint32_t spi_hz;
     struct hal_linux lx;
     int lx_open;
 };
@@ -161,6 +165,48 @@ static int inject_fault(struct panel_out *p, const struct panel_desc *d, const c
     return 1;
 }
 
+/* --miswire: *d replaced by a copy with one of its settings wrong (offset,
+ * bgr, invert), the driver's rotation *drv turned a half turn (rotation), or
+ * the pixels' bytes swapped (byteswap); 2 and err for an unknown name or a
+ * setting the panel does not have. */
+static int miswire(struct panel_out *p, const struct panel_desc **d, uint8_t rot, uint8_t *drv, const char *what,
+                   char *err, size_t errlen)
+{
+    struct panel_desc *w = &p->wrong;
+    const uint8_t half = (uint8_t)((rot + 2) & 3);
+    const struct panel_ctl *ctl = (*d)->ctl ? (*d)->ctl : &panel_ctl_dcs;
+    *w = **d;
+    if (!strcmp(what, "offset")) {
+        if (w->x_off[rot] != w->x_off[half] || w->y_off[rot] != w->y_off[half]) {
+            w->x_off[rot] = w->x_off[half];
+            w->y_off[rot] = w->y_off[half];
+        } else if (w->x_off[rot] || w->y_off[rot]) {
+            w->x_off[rot] = w->y_off[rot] = 0;
+        } else {
+            snprintf(err, errlen, "--miswire offset: %s has no offsets to get wrong in rotation %u", w->name,
+                     (unsigned)rot);
+            return 2;
+        }
+    } else if (!strcmp(what, "bgr")) {
+        if (!ctl->order_bgr) {
+            snprintf(err, errlen, "--miswire bgr: %s has no colour-order setting", w->name);
+            return 2;
+        }
+        w->madctl[rot] ^= ctl->order_bgr;
+    } else if (!strcmp(what, "invert")) {
+        w->invert = !w->invert;
+    } else if (!strcmp(what, "rotation")) {
+        *drv = half;
+    } else if (!strcmp(what, "byteswap")) {
+        p->byteswap = 1;
+    } else {
+        snprintf(err, errlen, "unknown --miswire '%s' (%s)", what, panel_out_miswires);
+        return 2;
+    }
+    *d = w;
+    return 0;
+}
+
 static int open_memory(struct panel_out *p, char *err, size_t errlen)
 {
     p->fb = calloc((size_t)p->width * p->height, sizeof *p->fb);
@@ -209,7 +255,9 @@ int panel_out_open(struct panel_out **out, const struct panel_out_opts *o, char 
         return 2;
     }
     rot = (uint8_t)((rot + o->rotation) & 3);
+    uint8_t drv = rot;   /* the driver's rotation (the module's but with --miswire rotation) */
     int rc;
+    if (o->miswire && (rc = miswire(p, &d, rot, &drv, o->miswire, err, errlen))) return rc;
     if (linux_be) {
         struct hal_linux_config cfg;
         if (o->fault) {
@@ -231,7 +279,8 @@ int panel_out_open(struct panel_out **out, const struct panel_out_opts *o, char 
             return 2;
         }
         p->lx_open = 1;
-        if (panel_init(&p->panel, d, &p->hal, rot)) {
+        p->spi_hz = cfg.spi_hz;
+        if (panel_init(&p->panel, d, &p->hal, drv)) {
             snprintf(err, errlen, "backend linux: %s init failed: %s", name, hal_linux_error(&p->lx));
             return 1;
         }
@@ -251,8 +300,9 @@ int panel_out_open(struct panel_out **out, const struct panel_out_opts *o, char 
     }
     hal_sim_init(&p->sim, &p->hal, p->emu);
     hal_sim_set_spi_hz(&p->sim, SIM_SPI_HZ);
+    p->spi_hz = SIM_SPI_HZ;
     if (o->fault) return inject_fault(p, d, o->fault, err, errlen);
-    rc = panel_init(&p->panel, d, &p->hal, rot);
+    rc = panel_init(&p->panel, d, &p->hal, drv);
     if (violation(p, err, errlen)) return 3;
     if (rc) {
         snprintf(err, errlen, "%s: panel_init failed (%d)", name, rc);
@@ -269,6 +319,7 @@ int panel_out_flush(struct panel_out *p, uint16_t y0, uint16_t y1, const uint16_
         return 1;
     }
     if (p->fb) memcpy(p->fb + (size_t)y0 * p->width, px, (size_t)(y1 - y0) * p->width * sizeof *px);
+    if (p->byteswap) return panel_out_flush_rect(p, 0, y0, p->width, (uint16_t)(y1 - y0), px, p->width, err, errlen);
     if (p->kind != OUT_MEMORY) {
         int rc = panel_flush(&p->panel, 0, y0, p->width, (uint16_t)(y1 - y0), px);
         if (violation(p, err, errlen)) return 3;
@@ -288,7 +339,7 @@ int panel_out_flush_rect(struct panel_out *p, uint16_t x, uint16_t y, uint16_t w
                  p->width, p->height);
         return 1;
     }
-    if (x == 0 && w == p->width && stride == p->width)
+    if (x == 0 && w == p->width && stride == p->width && !p->byteswap)
         return panel_out_flush(p, y, (uint16_t)(y + h), px, err, errlen);
     uint16_t *packed = malloc((size_t)w * h * sizeof *packed);
     if (!packed) {
@@ -299,6 +350,8 @@ int panel_out_flush_rect(struct panel_out *p, uint16_t x, uint16_t y, uint16_t w
         memcpy(packed + (size_t)r * w, px + (size_t)r * stride, (size_t)w * sizeof *px);
         if (p->fb) memcpy(p->fb + (size_t)(y + r) * p->width + x, px + (size_t)r * stride, (size_t)w * sizeof *px);
     }
+    if (p->byteswap)   /* --miswire byteswap: what was sent, not what was meant */
+        for (size_t i = 0; i < (size_t)w * h; i++) packed[i] = (uint16_t)(packed[i] << 8 | packed[i] >> 8);
     int rc = 0;
     if (p->kind != OUT_MEMORY) {
         int prc = panel_flush(&p->panel, x, y, w, h, packed);
@@ -320,6 +373,12 @@ int panel_out_finish(struct panel_out *p, char *err, size_t errlen)
     (void)p; (void)err; (void)errlen;
     return 0;
 }
+
+const struct panel *panel_out_panel(const struct panel_out *p) { return p->kind == OUT_MEMORY ? NULL : &p->panel; }
+
+uint32_t panel_out_spi_hz(const struct panel_out *p) { return p->spi_hz; }
+
+int panel_out_round(const struct panel_out *p) { return p->kind == OUT_SIM && !emu_panel_shown(p->emu, 0, 0); }
 
 uint64_t panel_out_spi_bytes(const struct panel_out *p)
 {

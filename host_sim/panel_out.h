@@ -19,12 +19,14 @@
 #include <stdint.h>
 
 struct panel_out;
+struct panel;
 
 struct panel_out_opts {
     const char *panel;    /* a controller of hal/panels.def ("st7789", "ili9341"), a module of it
                              ("st7789_240x320"), or "none" */
     const char *backend;  /* "sim" or "linux" */
     const char *fault;    /* NULL, or a fault to inject (see panel_out_faults) */
+    const char *miswire;  /* NULL, or a driver setting to get wrong (see panel_out_miswires) */
     uint16_t width, height;
     uint8_t rotation;     /* quarter turns added to the orientation the size picks
                              (the module mounted turned); odd turns need a square size */
@@ -39,6 +41,21 @@ struct panel_out_opts {
 
 /* Names accepted in panel_out_opts.fault, separated by '|', for messages. */
 extern const char panel_out_faults[];
+
+/* Names accepted in panel_out_opts.miswire, separated by '|': the driver
+ * (never the emulated module, which stays true to the hardware) with one
+ * setting wrong, as a mistake in a descriptor or a HAL would have it:
+ *   offset    the column and row offsets of the rotation in use taken from
+ *             the rotation a half turn away where those differ, else 0, 0
+ *             (a panel without offsets has none to get wrong: exit 2)
+ *   bgr       the colour-order bit of the orientation parameter flipped
+ *             (panel_ctl.order_bgr)
+ *   invert    the inversion setting flipped
+ *   rotation  the driver in the rotation a half turn away from the module's
+ *             (the module mounted the other way up, FW_ROTATION not changed)
+ *   byteswap  each pixel's two bytes sent in the other order (a HAL that
+ *             sends little-endian memory as it lies) */
+extern const char panel_out_miswires[];
 
 /* The panel's native size (the default --size): a module's own size, or
  * for a controller its first module's in hal/panels.def; -1 for an unknown
@@ -72,6 +89,18 @@ int panel_out_flush_rect(struct panel_out *p, uint16_t x, uint16_t y, uint16_t w
 /* After the last flush: the end of the stream (a command left without its
  * parameters, half a pixel) is checked too. 0 or 3. */
 int panel_out_finish(struct panel_out *p, char *err, size_t errlen);
+
+/* The driver's panel (its descriptor, a copy with --miswire, rotation,
+ * offsets), NULL for --panel none. */
+const struct panel *panel_out_panel(const struct panel_out *p);
+
+/* 1 when the emulated glass is round (it has no pixel in its corner: the
+ * GC9A01's), 0 otherwise and for a real panel. */
+int panel_out_round(const struct panel_out *p);
+
+/* The SPI clock the bus runs at, Hz: the emulated bus's, or spidev's (0 for
+ * --panel none). */
+uint32_t panel_out_spi_hz(const struct panel_out *p);
 
 /* Bytes that went over the SPI bus so far (0 for --panel none). */
 uint64_t panel_out_spi_bytes(const struct panel_out *p);

@@ -12,6 +12,8 @@
 #                                                      the cube scenes on the other modules
 #                                                      (320x240, 128x160, 128x128, 240x240
 #                                                      round, 320x480)
+#   build/firmware/pico/cgfs-check{,-ili9341,-st7735,-ssd1351,-gc9a01,-ili9488}.*
+#                                                      the bring-up pattern on each module
 #   build/firmware/stm32f411/cgfs{,-fixed}.{elf,bin,map}  Cortex-M4F, see below
 #
 # Build options (make VAR=value): FW_PINS (extra -D pin options, e.g.
@@ -161,7 +163,8 @@ $(FW_OUT)/pico/boot2_crc.S: $(FW_OUT)/pico/boot2.bin tools/uf2/boot2crc.py
 	$(Q)$(PYTHON) tools/uf2/boot2crc.py $< $@
 
 # $(1) = image name, $(2) = extra flags, $(3) = scene table sources, $(4) =
-# the image's ram_text directory (on, raster, off; default RP2040_RAM_TEXT's).
+# the image's ram_text directory (on, raster, off; default RP2040_RAM_TEXT's),
+# $(5) = the image's other sources (default RP_SRCS: the scene application).
 # obj-<image>/cflags holds the image's compile flags, rewritten only when they
 # change (RP2040_RAM_TEXT=0, RP2040_SYS_MHZ=125, ...), so that its objects follow.
 define RP_IMAGE
@@ -176,7 +179,7 @@ $(FW_OUT)/pico/obj-$(1)/%.o: %.S
 $(FW_OUT)/pico/obj-$(1)/boot2_crc.o: $(FW_OUT)/pico/boot2_crc.S
 	@mkdir -p $$(@D)
 	$$(Q)$$(ARM_CC) -mcpu=cortex-m0plus -mthumb -c $$< -o $$@
-$(FW_OUT)/pico/$(1).elf: $(patsubst %.c,$(FW_OUT)/pico/obj-$(1)/%.o,$(RP_SRCS) $(3)) \
+$(FW_OUT)/pico/$(1).elf: $(patsubst %.c,$(FW_OUT)/pico/obj-$(1)/%.o,$(or $(5),$(RP_SRCS)) $(3)) \
                          $(patsubst %.S,$(FW_OUT)/pico/obj-$(1)/%.o,$(RP_ASM)) \
                          $(FW_OUT)/pico/obj-$(1)/boot2_crc.o $(RP_DIR)/rp2040.ld \
                          $(RP_DIR)/ram_text/$(or $(4),$(RP_RAM_TEXT_DIR))/ram_text.ld
@@ -251,13 +254,31 @@ $(call fw_scene_image,cgfs-rt-1core,RT,$(FW_1CORE_FLAGS) -DFW_FRAMES_PER_SCENE=1
 FW_MESH_FRAMES ?= 10
 $(call fw_scene_image,cgfs-mesh,MESH,-DFW_FRAMES_PER_SCENE=$(FW_MESH_FRAMES) -DRAS_RAM_TEXT -DRP2040_RAM_TEXT_RASTER -DRP2040_LOG_RING=64,raster)
 
+# The bring-up pattern (firmware/app/check_main.c, check_pattern.h): no
+# scenes, no renderer core, one core; the pattern sent again every
+# FW_CHECK_PERIOD_MS with the settings on the UART. cgfs-check on the ST7789
+# 240x240, and one image per other module the cube images are built for.
+FW_CHECK_PERIOD_MS ?= 2000
+RP_CHECK_SRCS := $(RP_DIR)/crt0.c $(RP_DIR)/board.c $(RP_DIR)/fw_board_rp2040.c hal/rp2040/hal_rp2040.c \
+                 firmware/app/check_main.c firmware/app/check_pattern.c firmware/app/font5x7.c $(FW_HAL_SRCS)
+FW_CHECK := -DRP2040_SINGLE_CORE=1 -DFW_CHECK_PERIOD_MS=$(FW_CHECK_PERIOD_MS)u
+FW_CHECK_IMAGES := cgfs-check cgfs-check-ili9341 cgfs-check-st7735 cgfs-check-ssd1351 cgfs-check-gc9a01 \
+                   cgfs-check-ili9488
+$(eval $(call RP_IMAGE,cgfs-check,$(FW_CHECK),,,$(RP_CHECK_SRCS)))
+$(eval $(call RP_IMAGE,cgfs-check-ili9341,$(FW_CHECK) $(FW_ILI320),,,$(RP_CHECK_SRCS)))
+$(eval $(call RP_IMAGE,cgfs-check-st7735,$(FW_CHECK) $(FW_ST7735),,,$(RP_CHECK_SRCS)))
+$(eval $(call RP_IMAGE,cgfs-check-ssd1351,$(FW_CHECK) $(FW_SSD1351),,,$(RP_CHECK_SRCS)))
+$(eval $(call RP_IMAGE,cgfs-check-gc9a01,$(FW_CHECK) $(FW_GC9A01),,,$(RP_CHECK_SRCS)))
+$(eval $(call RP_IMAGE,cgfs-check-ili9488,$(FW_CHECK) $(FW_ILI9488),,,$(RP_CHECK_SRCS)))
+
 FW_RP_IMAGES := $(FW_OUT)/pico/cgfs.uf2 $(FW_OUT)/pico/cgfs-1core.uf2 $(FW_OUT)/pico/cgfs-ili9341.uf2 \
                 $(FW_OUT)/pico/cgfs-rot2.uf2 \
                 $(foreach i,cgfs-book cgfs-book-1core cgfs-book-bench cgfs-cube cgfs-cube-1core cgfs-cube-te cgfs-cube-ili9341 \
                   cgfs-cube-ili9341-1core cgfs-cube-st7735 \
                   cgfs-cube-st7735-1core cgfs-cube-ssd1351 cgfs-cube-ssd1351-1core \
                   cgfs-cube-gc9a01 cgfs-cube-gc9a01-1core cgfs-book-gc9a01 cgfs-cube-ili9488 \
-                  cgfs-cube-ili9488-1core cgfs-book-ssd1351 cgfs-book-ili9488 cgfs-rt cgfs-rt-1core cgfs-mesh,$(FW_OUT)/pico/$(i).uf2)
+                  cgfs-cube-ili9488-1core cgfs-book-ssd1351 cgfs-book-ili9488 cgfs-rt cgfs-rt-1core cgfs-mesh \
+                  $(FW_CHECK_IMAGES),$(FW_OUT)/pico/$(i).uf2)
 
 .PHONY: firmware-pico
 firmware-pico: deps-firmware
@@ -336,6 +357,6 @@ TEST_DEPS += $(TEST_NEEDS_test_stm32_qemu)
 # docs/firmware.md against the build: its memory figures (tools/fw_sizes.py),
 # the image `make flash` writes.
 TEST_NEEDS_test_fw_docs := $(foreach i,cgfs-book cgfs-book-1core cgfs-cube cgfs-cube-1core cgfs-cube-ili9341 cgfs-rt \
-                              cgfs,$(FW_OUT)/pico/$(i).elf) $(FW_OUT)/stm32f411/cgfs.elf $(FW_OUT)/stm32f411/cgfs-fixed.elf
+                              cgfs cgfs-check,$(FW_OUT)/pico/$(i).elf) $(FW_OUT)/stm32f411/cgfs.elf $(FW_OUT)/stm32f411/cgfs-fixed.elf
 TEST_DEPS += $(TEST_NEEDS_test_fw_docs)
 TESTS     += tests/system/test_fw_docs.sh:$(BUILD)

@@ -11,6 +11,8 @@
 HOST_SIM_SRCS := host_sim/main.c host_sim/imgio.c host_sim/panel_out.c host_sim/compare.c tools/common/file_id.c
 # the frame-rate overlay's font (--fps-overlay), shared with the firmware
 HOST_SIM_SRCS += firmware/app/font5x7.c
+# --pattern check: the bring-up pattern of the cgfs-check images
+HOST_SIM_SRCS += firmware/app/check_pattern.c
 # --window: SDL2 (the Makefile's WITH_SDL2); without it the option says so, exit 2
 HOST_SIM_SRCS += host_sim/window.c
 $(foreach v,$(VARIANTS),$(call obj,$(v),none,host_sim/window.c)): EXTRA_CFLAGS += $(SDL2_FLAGS)
@@ -42,6 +44,8 @@ TESTS     += tests/system/test_host_sim.sh:$(HOST_SIM_BIN_asan)
 # every scene on every panel of hal/panels.def, at the panel's size (the
 # optimised build: 40 scenes x 9 panels)
 TESTS     += tests/system/test_host_sim_panels.sh:$(HOST_SIM_BIN_host)
+# --pattern check (the bring-up pattern) on every panel in every rotation, --miswire
+TESTS     += tests/system/test_check_pattern.py:$(HOST_SIM_BIN_asan)
 # --loop, dirty-rectangle flush, per-frame --out, --fps-overlay, progress line
 TESTS     += tests/system/test_live.sh:$(HOST_SIM_BIN_asan)
 # --window under Xvfb: a screenshot (xwd) against the PNG

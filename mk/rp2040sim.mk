@@ -47,9 +47,13 @@ TESTS     += tests/system/test_rp2040sim_reset.sh:$(BUILD)
 # tearing: the panel's scan modelled, the TE line wired or not (cgfs-cube-te)
 TEST_DEPS += $(FW_OUT)/pico/cgfs-cube-te.elf
 TESTS     += tests/system/test_rp2040sim_tearing.sh:$(BUILD)
+# the bring-up images (cgfs-check*): the UART's settings line, and the glass
+# equal to host_sim --pattern check on each module
+TEST_DEPS += $(foreach i,$(FW_CHECK_IMAGES),$(FW_OUT)/pico/$(i).elf) $(BUILD)/host_sim
+TESTS     += tests/system/test_rp2040sim_check.sh:$(BUILD)
 # (make check: each of these tests builds what all of them need)
 RP2040SIM_TEST_NEEDS := $(filter $(RP2040SIM_DEPS) $(FW_HOST_REF) $(FW_OUT)/% $(BUILD)/host_sim,$(TEST_DEPS))
-$(foreach t,test_rp2040sim test_rp2040sim_panels test_rp2040sim_book test_rp2040sim_cube test_rp2040sim_dual test_rp2040sim_reset test_rp2040sim_tearing,    $(eval TEST_NEEDS_$(t) := $(RP2040SIM_TEST_NEEDS)))
+$(foreach t,test_rp2040sim test_rp2040sim_panels test_rp2040sim_book test_rp2040sim_cube test_rp2040sim_dual test_rp2040sim_reset test_rp2040sim_tearing test_rp2040sim_check,    $(eval TEST_NEEDS_$(t) := $(RP2040SIM_TEST_NEEDS)))
 TESTS     += node:tools/rp2040sim/test_models.js
 # The JavaScript panel (emu_panel.js) replays the vectors the C emulator
 # replays (test_panel_vectors), so the two decoders cannot drift apart.

@@ -27,7 +27,7 @@ import struct
 import sys
 
 RP_IMAGES = ["cgfs-book", "cgfs-book-1core", "cgfs-cube", "cgfs-cube-1core", "cgfs-cube-ili9341", "cgfs-rt",
-             "cgfs"]
+             "cgfs", "cgfs-check"]
 ST_IMAGES = ["cgfs", "cgfs-fixed"]
 RP_FLASH, RP_SRAM = (0x10000000, 0x11000000), (0x20000000, 0x20040000)
 ST_FLASH, ST_SRAM = (0x08000000, 0x08080000), (0x20000000, 0x20020000)

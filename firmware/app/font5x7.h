@@ -1,6 +1,7 @@
 /* SPDX-License-Identifier: MIT */
-/* font5x7.h — a tiny built-in font for the frame-rate overlay: digits,
- * '.', ' ', 'f', 'p', 's'; 5x7 pixels per glyph, 6 pixels advance. */
+/* font5x7.h — a tiny built-in font for the frame-rate overlay and the
+ * bring-up pattern (check_pattern.h): digits, 'A'..'Z', '.', ',', '_', '-',
+ * '?', ' ', 'f', 'p', 's'; 5x7 pixels per glyph, 6 pixels advance. */
 #ifndef FONT5X7_H
 #define FONT5X7_H
 

@@ -48,6 +48,9 @@ void fw_board_wait(void);
 /* Core clock in Hz (for cycle figures). */
 uint32_t fw_board_cpu_hz(void);
 
+/* The panel's SPI clock in Hz as the board's HAL runs it. */
+uint32_t fw_board_spi_hz(void);
+
 /* The panel's tearing-effect output (TE), where the board wires it: waits
  * for its rising edge, the start of the panel's vertical blank, for at most
  * timeout_us. 1 when it rose, 0 after the timeout, -1 when no TE line is

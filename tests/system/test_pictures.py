@@ -1,10 +1,10 @@
 #!/usr/bin/env python3
 # SPDX-License-Identifier: MIT
-"""The README's pictures are current: tools/pictures.sh renders them again
+"""The README's and the docs' pictures are current: tools/pictures.sh renders them again
 with HOST_SIM into a temporary directory, and each must hold the same
 pixels as its committed file in docs/images/ (pixels, not bytes: another
-libpng may compress them otherwise); README.md shows every one of them,
-and docs/images/ holds no other PNG; the README's example scene (the
+libpng may compress them otherwise); README.md or a page of docs/ shows every
+one of them, and docs/images/ holds no other PNG; the README's example scene (the
 first fenced block after "A scene is a short text file") renders without a
 word on stderr.
   test_pictures.py HOST_SIM
@@ -52,9 +52,12 @@ def main():
             print("PASS pictures_no_stale")
         readme = open("README.md").read()
         shown = set(re.findall(r"\(docs/images/([^)]+\.png)\)", readme))
+        for page in sorted(os.listdir("docs")):
+            if page.endswith(".md"):
+                shown |= set(re.findall(r"\(images/([^)]+\.png)\)", open(os.path.join("docs", page)).read()))
         missing = [f for f in made if f not in shown]
         if missing:
-            print("FAIL pictures_in_readme: README.md does not show %s" % ", ".join(missing))
+            print("FAIL pictures_in_readme: neither README.md nor docs/*.md shows %s" % ", ".join(missing))
             ok = False
         else:
             print("PASS pictures_in_readme")

@@ -39,6 +39,7 @@ void fw_board_unlock(void) { board_unlock(); }
 void fw_board_notify(void) { __asm__ volatile("dmb\n sev" ::: "memory"); }
 void fw_board_wait(void) { __asm__ volatile("wfe" ::: "memory"); }
 uint32_t fw_board_cpu_hz(void) { return RP2040_SYS_MHZ * 1000000u; }
+uint32_t fw_board_spi_hz(void) { return hal_rp2040_spi_hz(); }
 
 /* RP2040_PIN_TE: the GPIO the panel's TE output is wired to (-1, the
  * default: none; the common 240x240 modules do not bring it out). */

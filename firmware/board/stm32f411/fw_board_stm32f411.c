@@ -26,6 +26,7 @@ void fw_board_unlock(void) {}
 void fw_board_notify(void) {}
 void fw_board_wait(void) {}
 uint32_t fw_board_cpu_hz(void) { return board_sys_hz; }
+uint32_t fw_board_spi_hz(void) { return hal_stm32f4_spi_hz(); }
 int fw_board_te_wait(uint32_t timeout_us)
 {
     (void)timeout_us;

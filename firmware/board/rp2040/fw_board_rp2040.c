@@ -19,7 +19,10 @@ const char fw_board_name[] = "rp2040";
 
 static uint64_t core1_stack[RP2040_CORE1_STACK / 8];
 
-int fw_board_init(struct hal *h) { return hal_rp2040_init(h, RP2040_PERI_HZ, board_now_us); }
+int fw_board_init(struct hal *h, uint32_t spi_max_hz)
+{
+    return hal_rp2040_init(h, RP2040_PERI_HZ, spi_max_hz, board_now_us);
+}
 
 void fw_board_puts(const char *s) { board_puts(s); }
 
@@ -39,6 +42,7 @@ void fw_board_unlock(void) { board_unlock(); }
 void fw_board_notify(void) { __asm__ volatile("dmb\n sev" ::: "memory"); }
 void fw_board_wait(void) { __asm__ volatile("wfe" ::: "memory"); }
 uint32_t fw_board_cpu_hz(void) { return RP2040_SYS_MHZ * 1000000u; }
+uint32_t fw_board_spi_hz(void) { return hal_rp2040_spi_hz(); }
 
 /* RP2040_PIN_TE: the GPIO the panel's TE output is wired to (-1, the
  * default: none; the common 240x240 modules do not bring it out). */

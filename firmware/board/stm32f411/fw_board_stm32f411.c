@@ -7,7 +7,13 @@
 
 const char fw_board_name[] = "stm32f411";
 
-int fw_board_init(struct hal *h) { return hal_stm32f4_init(h, board_apb2_hz, board_now_us); }
+/* The SPI clock is STM32_SPI_BR's (hal_stm32f4.h), whatever the panel's
+ * rated clock. */
+int fw_board_init(struct hal *h, uint32_t spi_max_hz)
+{
+    (void)spi_max_hz;
+    return hal_stm32f4_init(h, board_apb2_hz, board_now_us);
+}
 
 void fw_board_puts(const char *s) { board_puts(s); }
 
@@ -26,6 +32,7 @@ void fw_board_unlock(void) {}
 void fw_board_notify(void) {}
 void fw_board_wait(void) {}
 uint32_t fw_board_cpu_hz(void) { return board_sys_hz; }
+uint32_t fw_board_spi_hz(void) { return hal_stm32f4_spi_hz(); }
 int fw_board_te_wait(uint32_t timeout_us)
 {
     (void)timeout_us;

@@ -35,7 +35,7 @@ FW_OUT      := $(BUILD)/firmware
 RP2040_SYS_MHZ ?= 133
 FW_CLK_MHZ ?= $(RP2040_SYS_MHZ)
 FW_SPI_HZ ?=
-ifneq ($(shell echo '$(FW_CLK_MHZ)' | grep -Ex '[0-9]+'),$(FW_CLK_MHZ))
+ifneq ($(shell [ '$(FW_CLK_MHZ)' -ge 125 ] 2>/dev/null && [ '$(FW_CLK_MHZ)' -le 300 ] && echo ok),ok)
 $(error FW_CLK_MHZ=$(FW_CLK_MHZ): a whole number of MHz, 125..300)
 endif
 ifneq ($(FW_SPI_HZ),)
@@ -184,7 +184,7 @@ $(FW_OUT)/pico/boot2_crc.S: $(FW_OUT)/pico/boot2.bin tools/uf2/boot2crc.py
 # $(1) = image name, $(2) = extra flags, $(3) = scene table sources, $(4) =
 # the image's ram_text directory (on, raster, off; default RP2040_RAM_TEXT's).
 # obj-<image>/cflags holds the image's compile flags, rewritten only when they
-# change (RP2040_RAM_TEXT=0, RP2040_SYS_MHZ=125, ...), so that its objects follow.
+# change (RP2040_RAM_TEXT=0, FW_CLK_MHZ=200, ...), so that its objects follow.
 define RP_IMAGE
 $$(shell mkdir -p $(FW_OUT)/pico/obj-$(1) && { printf '%s\n' '$(strip $(RP_CFLAGS) $(2))' | \
           cmp -s - $(FW_OUT)/pico/obj-$(1)/cflags || printf '%s\n' '$(strip $(RP_CFLAGS) $(2))' >$(FW_OUT)/pico/obj-$(1)/cflags; })

@@ -39,7 +39,8 @@
      RP2040_PLL_FITS(20) ? 20 : RP2040_PLL_FITS(18) ? 18 : RP2040_PLL_FITS(16) ? 16 :                   \
      RP2040_PLL_FITS(15) ? 15 : RP2040_PLL_FITS(14) ? 14 : RP2040_PLL_FITS(12) ? 12 :                   \
      RP2040_PLL_FITS(10) ? 10 : RP2040_PLL_FITS(9) ? 9 : RP2040_PLL_FITS(8) ? 8 :                       \
-     RP2040_PLL_FITS(7) ? 7 : RP2040_PLL_FITS(6) ? 6 : 0)
+     RP2040_PLL_FITS(7) ? 7 : RP2040_PLL_FITS(6) ? 6 : RP2040_PLL_FITS(5) ? 5 :                        \
+     RP2040_PLL_FITS(4) ? 4 : RP2040_PLL_FITS(3) ? 3 : RP2040_PLL_FITS(2) ? 2 : 0)
 #if RP2040_PLL_P == 0
 #error "RP2040_SYS_MHZ: no PLL_SYS setting gives this clock exactly (12 MHz * FBDIV / (POSTDIV1 * POSTDIV2))"
 #endif
@@ -47,7 +48,7 @@
 /* P as POSTDIV1 * POSTDIV2, POSTDIV1 >= POSTDIV2, each 1..7 */
 #define RP2040_PLL_PD1                                                                                  \
     (RP2040_PLL_P % 7 == 0 ? 7 : RP2040_PLL_P % 6 == 0 ? 6 : RP2040_PLL_P % 5 == 0 ? 5 :                \
-     RP2040_PLL_P % 4 == 0 ? 4 : 3)
+     RP2040_PLL_P % 4 == 0 ? 4 : RP2040_PLL_P % 3 == 0 ? 3 : 2)
 #define RP2040_PLL_PD2 (RP2040_PLL_P / RP2040_PLL_PD1)
 
 /* The core voltage for the clock (VREG VSEL; 11, 1.10 V, is its reset value) */

@@ -32,7 +32,7 @@
  *                       pass shows it before the next frame's writes do
  *                       (--average: torn_frames, and shown_fps, the frames
  *                       shown whole a second);
- *                       cores: from the firmware's boot line; a two-core
+ *                       cores, spi_hz: from the firmware's boot line; a two-core
  *                       image runs on both emulated cores, dualcore.js)
  *                       first_image_us: for a progressive (ray-traced) frame,
  *                       when its whole-screen preview was on the glass;
@@ -257,7 +257,7 @@ function main() {
    * from T to the next frame's T; spi_bytes and the XIP figures from the
    * previous frame's last pixel (the first frame: from its first command to
    * the panel after T) to its last; uart_stall over the period. */
-  let uartLine = '', fwError = null, cpuHz = 133e6, cores = 1;
+  let uartLine = '', fwError = null, cpuHz = 133e6, cores = 1, spiHz = 0;
   const frames = [];
   const begins = [];     /* frames begun, waiting for their last pixel */
   const ends = [];       /* frames ended before their line arrived */
@@ -283,7 +283,7 @@ function main() {
       uartLine = '';
       const kv = Object.fromEntries(l.split(' ').slice(1).map((s) => s.split('=')));
       if (l.startsWith('boot ')) {
-        cpuHz = Number(kv.cpu_hz) || cpuHz; cores = Number(kv.cores) || cores;
+        cpuHz = Number(kv.cpu_hz) || cpuHz; cores = Number(kv.cores) || cores; spiHz = Number(kv.spi_hz) || spiHz;
         if (cpuHz !== mcu.clkSys) fwError = `the boot line's cpu_hz=${cpuHz} is not the clk_sys the registers set (${mcu.clkSys} Hz)`;
       }
       if (l.startsWith('begin ')) {
@@ -415,7 +415,7 @@ function main() {
       process.stdout.write(JSON.stringify({
         target: 'rp2040-sim', what: `scene:${f.scene}`, numeric: o.numeric, variant: o.variant, cores,
         frame: f.frame, width: w, height: h,
-        cycles, per: 'frame', cpu_hz: cpuHz, us: Math.round(f.ns / 1000),
+        cycles, per: 'frame', cpu_hz: cpuHz, ...(spiHz ? { spi_hz: spiHz } : {}), us: Math.round(f.ns / 1000),
         period_us: Math.round(f.period_ns / 1000), fps: Number((1e9 / f.period_ns).toFixed(3)),
         uart_stall_cycles: Math.round(f.uart_stall_ns * cpuHz / 1e9), spi_bytes: f.spi_bytes,
         torn: f.passes > 1, scan_passes: f.passes, shown: f.shown, xip_misses: f.xip_misses, xip_stall_cycles: f.xip_stall_cycles, xip_fill_cycles: xip.fill.cycles,
@@ -440,7 +440,7 @@ function main() {
         frame: r.list[0].frame, frames: n, width: w, height: h,
         cycles: Math.round(ns * cpuHz / 1e9), per: 'frame',
         cycles_min: Math.round(Math.min(...cyc)), cycles_max: Math.round(Math.max(...cyc)),
-        cpu_hz: cpuHz, us: Math.round(ns / 1000), period_us: Math.round(period / 1000),
+        cpu_hz: cpuHz, ...(spiHz ? { spi_hz: spiHz } : {}), us: Math.round(ns / 1000), period_us: Math.round(period / 1000),
         fps: Number((1e9 / period).toFixed(3)), uart_stall_cycles: Math.round(stall * cpuHz / 1e9),
         spi_bytes: Math.round(r.list.reduce((a, f) => a + f.spi_bytes, 0) / n),
         torn_frames: r.list.filter((f) => f.passes > 1).length,

@@ -75,12 +75,12 @@ static void clocks_init(void)
 
 #if RP2040_VREG_VSEL != 11
     /* A faster clk_sys needs the higher core voltage first: the regulator
-     * is told, reports regulation, and gets 10 ms to settle (120,000
-     * iterations of board_delay_cycles at the 12 MHz clk_ref, each two
-     * cycles or more) before anything runs faster. */
+     * is told, reports regulation, and gets at least 10 ms to settle
+     * (60,000 iterations of board_delay_cycles, each two cycles or more of
+     * the 12 MHz clk_ref) before anything runs faster. */
     REG(VREG_CTRL) = VREG_EN | VREG_VSEL(RP2040_VREG_VSEL);
     while (!(REG(VREG_CTRL) & VREG_ROK)) {}
-    board_delay_cycles(120000);
+    board_delay_cycles(60000);
 #endif
 #if RP2040_FLASH_DIV != RP2040_BOOT2_DIV
     /* The flash clock too, while clk_sys is still slow (boot2's read mode

@@ -104,7 +104,17 @@ struct panel_desc {
     uint8_t spi_mode;            /* SPI mode a host drives the module in by default
                                     (ST7789: 3, which CS-less modules need and
                                     modules with CS accept; ILI9341: 0) */
+    uint32_t spi_max_hz;         /* the controller's rated serial write clock:
+                                    1 / the minimum serial write cycle of its
+                                    datasheet (PANEL_WRITE_CYCLE_NS), for the
+                                    chip revision the module carries; a host
+                                    drives the bus at this clock or below
+                                    unless told otherwise */
 };
+
+/* The rated clock of a serial write cycle of ns nanoseconds, in Hz (rounded
+ * down: the cycle is a minimum). */
+#define PANEL_WRITE_CYCLE_NS(ns) (1000000000u / (ns))
 
 /* panel_st7789_240x240, ...: every descriptor of panels.def */
 #define PANEL(name, controller, glass, view) extern const struct panel_desc panel_##name;

@@ -74,4 +74,5 @@ const struct panel_desc panel_gc9a01_240x240 = {
     .y_off = { 0, 0, 0, 0 },
     .invert = 1,
     .spi_mode = 0,
+    .spi_max_hz = PANEL_WRITE_CYCLE_NS(20),  /* T_SCYCW 20 ns, 50 MHz */
 };

@@ -39,6 +39,7 @@ const struct panel_desc panel_ili9341_240x320 = {
     .y_off = { 0, 0, 0, 0 },
     .invert = 0,
     .spi_mode = 0,
+    .spi_max_hz = PANEL_WRITE_CYCLE_NS(100),  /* t_scycw 100 ns, 10 MHz */
 };
 
 /* The same module held landscape: its rotation 0 is the portrait's 1. */
@@ -54,4 +55,5 @@ const struct panel_desc panel_ili9341_320x240 = {
     .y_off = { 0, 0, 0, 0 },
     .invert = 0,
     .spi_mode = 0,
+    .spi_max_hz = PANEL_WRITE_CYCLE_NS(100),  /* t_scycw 100 ns, 10 MHz */
 };

@@ -56,4 +56,5 @@ const struct panel_desc panel_ili9488_320x480 = {
     .y_off = { 0, 0, 0, 0 },
     .invert = 0,
     .spi_mode = 0,
+    .spi_max_hz = PANEL_WRITE_CYCLE_NS(50),  /* t_scycw 50 ns, 20 MHz */
 };

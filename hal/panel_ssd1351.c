@@ -75,4 +75,5 @@ const struct panel_desc panel_ssd1351_128x128 = {
     .y_off = { 0, 0, 0, 0 },
     .invert = 0,
     .spi_mode = 0,
+    .spi_max_hz = PANEL_WRITE_CYCLE_NS(50),  /* t_cycle 50 ns, 20 MHz */
 };

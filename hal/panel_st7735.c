@@ -36,6 +36,7 @@ const struct panel_desc panel_st7735_128x160 = {
     .y_off = { 1, 2, 1, 2 },
     .invert = 0,
     .spi_mode = 0,
+    .spi_max_hz = PANEL_WRITE_CYCLE_NS(66),  /* ST7735S: t_SCYCW 66 ns, 15.2 MHz */
 };
 
 const struct panel_desc panel_st7735_80x160 = {
@@ -50,4 +51,5 @@ const struct panel_desc panel_st7735_80x160 = {
     .y_off = { 1, 26, 1, 26 },
     .invert = 1,
     .spi_mode = 0,
+    .spi_max_hz = PANEL_WRITE_CYCLE_NS(66),  /* ST7735S: t_SCYCW 66 ns, 15.2 MHz */
 };

@@ -39,6 +39,7 @@ const struct panel_desc panel_st7789_240x240 = {
     .y_off = { 0, 0, 80, 0 },
     .invert = 1,
     .spi_mode = 3,
+    .spi_max_hz = PANEL_WRITE_CYCLE_NS(16),  /* ST7789VW: t_SCYCW 16 ns, 62.5 MHz */
 };
 
 const struct panel_desc panel_st7789_240x320 = {
@@ -53,4 +54,5 @@ const struct panel_desc panel_st7789_240x320 = {
     .y_off = { 0, 0, 0, 0 },
     .invert = 1,
     .spi_mode = 3,
+    .spi_max_hz = PANEL_WRITE_CYCLE_NS(66),  /* ST7789V: t_SCYCW 66 ns, 15.2 MHz */
 };

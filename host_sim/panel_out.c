@@ -269,7 +269,8 @@ int panel_out_open(struct panel_out **out, const struct panel_out_opts *o, char 
         hal_linux_default_config(&cfg);
         if (o->spi_dev) cfg.spi_dev = o->spi_dev;
         if (o->gpio_chip) cfg.gpio_chip = o->gpio_chip;
-        if (o->spi_hz) cfg.spi_hz = o->spi_hz;
+        /* the panel's rated write clock and its mode unless told otherwise */
+        cfg.spi_hz = o->spi_hz ? o->spi_hz : d->spi_max_hz;
         cfg.spi_mode = (uint8_t)(o->spi_mode >= 0 ? o->spi_mode : d->spi_mode);
         if (o->dc != PANEL_OUT_PIN_DEFAULT) cfg.dc = o->dc;
         if (o->rst != PANEL_OUT_PIN_DEFAULT) cfg.reset = o->rst;

@@ -32,8 +32,9 @@ struct panel_out_opts {
                              (the module mounted turned); odd turns need a square size */
     /* --backend linux (0 / NULL / PANEL_OUT_PIN_DEFAULT: hal_linux's defaults) */
     const char *spi_dev, *gpio_chip;
-    uint32_t spi_hz;
-    int spi_mode;         /* 0..3, or -1: 3 for the ST7789 (works with CS-less modules), 0 else */
+    uint32_t spi_hz;      /* 0: the panel's rated write clock (struct panel_desc spi_max_hz) */
+    int spi_mode;         /* 0..3, or -1: the panel's (3 for the ST7789, which works with
+                             CS-less modules; 0 else) */
     int dc, rst, bl;      /* line offsets; -1 not connected; PANEL_OUT_PIN_DEFAULT */
 };
 

@@ -9,7 +9,8 @@
 # "cycles_max"; frame 0 is drawn without the fps overlay, the others with it,
 # as on the board), and the ray tracer's benchmark scenes with the
 # progressive preview's first_image_us; the cube scenes again on the ILI9341
-# in landscape ("width":320); the 4,096-triangle meshes on two cores (the
+# in landscape ("width":320), also with SPI0 at 62.5 MHz (variant
+# two-core-fastspi, FW_SPI_HZ); the 4,096-triangle meshes on two cores (the
 # mean of FW_MESH_FRAMES frames each, RP2040_RAM_TEXT=raster). Read after mk/firmware.mk and mk/rp2040sim.mk,
 # whose images and RP2040SIM_DEPS it runs.
 
@@ -30,6 +31,7 @@ RP2040SIM_BENCH_RUNS := cgfs-1core:single-core:plain cgfs:two-core:plain \
                         cgfs-book-1core:single-core:book cgfs-book-bench:two-core:book \
                         cgfs-cube-1core:single-core:cube cgfs-cube:two-core:cube cgfs-cube-te:two-core-te:cubete \
                         cgfs-cube-ili9341-1core:single-core:cube320 cgfs-cube-ili9341:two-core:cube320 \
+                        cgfs-cube-ili9341-fastspi:two-core-fastspi:cube320 \
                         cgfs-rt-1core:single-core:rt cgfs-rt:two-core:rt \
                         cgfs-mesh:two-core:mesh
 # $(call rp2040sim_field,N,RUN): field N of a run (1 image, 2 variant, 3 set)

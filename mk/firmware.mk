@@ -17,7 +17,12 @@
 #   build/firmware/stm32f411/cgfs{,-fixed}.{elf,bin,map}  Cortex-M4F, see below
 #
 # Build options (make VAR=value): FW_PINS (extra -D pin options, e.g.
-# "-DRP2040_PIN_DC=8"), RP2040_SYS_MHZ (125 or 133), RP2040_RAM_TEXT (1, the
+# "-DRP2040_PIN_DC=8"), FW_CLK_MHZ (clk_sys in MHz, 125..300, default 133;
+# above 133 the core voltage is raised and the flash divider kept within the
+# flash's rating: firmware/board/rp2040/board.h; RP2040_SYS_MHZ is its older
+# name), FW_SPI_HZ (a ceiling for the SPI clock in place of the panel's rated
+# clock: a clock the module was tested at, e.g. 62500000; default none),
+# RP2040_RAM_TEXT (1, the
 # default: the renderer core, with the rasterizer's span loops (RAS_HOT in
 # firmware/core/raster/raster_int.h), is copied to SRAM and runs from there
 # instead of through the 16 KB XIP cache, about 156 KB; raster: only the
@@ -30,11 +35,26 @@ ARM_OBJCOPY ?= arm-none-eabi-objcopy
 ARM_SIZE    ?= arm-none-eabi-size
 FW_OUT      := $(BUILD)/firmware
 RP2040_SYS_MHZ ?= 133
+FW_CLK_MHZ ?= $(RP2040_SYS_MHZ)
+FW_SPI_HZ ?=
+ifneq ($(shell [ '$(FW_CLK_MHZ)' -ge 125 ] 2>/dev/null && [ '$(FW_CLK_MHZ)' -le 300 ] && echo ok),ok)
+$(error FW_CLK_MHZ=$(FW_CLK_MHZ): a whole number of MHz, 125..300)
+endif
+ifneq ($(FW_SPI_HZ),)
+ifneq ($(shell echo '$(FW_SPI_HZ)' | grep -Ex '[1-9][0-9]*'),$(FW_SPI_HZ))
+$(error FW_SPI_HZ=$(FW_SPI_HZ): a clock in Hz, e.g. 62500000)
+endif
+endif
 RP2040_RAM_TEXT ?= 1
 RP2040_BOOT2 ?= w25q16jv
 ifeq ($(wildcard firmware/board/rp2040/boot2_$(RP2040_BOOT2).S),)
 $(error RP2040_BOOT2=$(RP2040_BOOT2): no firmware/board/rp2040/boot2_$(RP2040_BOOT2).S (w25q16jv or generic_03h))
 endif
+# boot2's flash divider (its FLASH_DIV) and the flash's rated clock in its
+# read mode (W25Q16JV: 133 MHz for EBh, 50 MHz for 03h), for the board's
+# divider at FW_CLK_MHZ (firmware/board/rp2040/board.h)
+RP2040_BOOT2_FLASH := $(if $(filter generic_03h,$(RP2040_BOOT2)),-DRP2040_BOOT2_DIV=4 -DRP2040_FLASH_MAX_MHZ=50,\
+                      -DRP2040_BOOT2_DIV=2 -DRP2040_FLASH_MAX_MHZ=133)
 FW_PINS     ?=
 FW_EXTRA    ?=
 FW_SCENE_SRCS ?= firmware/app/scenes_builtin.c
@@ -139,7 +159,8 @@ RP_SRCS  := $(RP_DIR)/crt0.c $(RP_DIR)/board.c $(RP_DIR)/fw_board_rp2040.c hal/r
             $(FW_COMMON)
 RP_ASM   := $(RP_DIR)/hwdiv.S
 RP_CFLAGS := -mcpu=cortex-m0plus -mthumb -O2 -g -std=c11 $(WARN) -ffunction-sections -fdata-sections \
-             -ffreestanding -fno-common -DRENDER_HOST_OUTPUTS=0 -DNUM_MODE=1 -DRP2040_SYS_MHZ=$(RP2040_SYS_MHZ) -DFW_STRIP_ROWS=$(FW_STRIP_ROWS) \
+             -ffreestanding -fno-common -DRENDER_HOST_OUTPUTS=0 -DNUM_MODE=1 -DRP2040_SYS_MHZ=$(FW_CLK_MHZ) -DFW_STRIP_ROWS=$(FW_STRIP_ROWS) \
+             $(RP2040_BOOT2_FLASH) $(if $(FW_SPI_HZ),-DRP2040_SPI_HZ=$(FW_SPI_HZ)) \
              $(if $(filter 1 raster,$(RP2040_RAM_TEXT)),-DRAS_RAM_TEXT) \
              $(if $(filter raster,$(RP2040_RAM_TEXT)),-DRP2040_RAM_TEXT_RASTER) \
              $(FW_INC) -I$(RP_DIR) -Ihal/rp2040 $(FW_PINS) $(FW_EXTRA)
@@ -166,7 +187,7 @@ $(FW_OUT)/pico/boot2_crc.S: $(FW_OUT)/pico/boot2.bin tools/uf2/boot2crc.py
 # the image's ram_text directory (on, raster, off; default RP2040_RAM_TEXT's),
 # $(5) = the image's other sources (default RP_SRCS: the scene application).
 # obj-<image>/cflags holds the image's compile flags, rewritten only when they
-# change (RP2040_RAM_TEXT=0, RP2040_SYS_MHZ=125, ...), so that its objects follow.
+# change (RP2040_RAM_TEXT=0, FW_CLK_MHZ=200, ...), so that its objects follow.
 define RP_IMAGE
 $$(shell mkdir -p $(FW_OUT)/pico/obj-$(1) && { printf '%s\n' '$(strip $(RP_CFLAGS) $(2))' | \
           cmp -s - $(FW_OUT)/pico/obj-$(1)/cflags || printf '%s\n' '$(strip $(RP_CFLAGS) $(2))' >$(FW_OUT)/pico/obj-$(1)/cflags; })
@@ -219,6 +240,10 @@ $(call fw_scene_image,cgfs-cube-te,CUBE,-DRP2040_PIN_TE=22 -DFW_FRAMES_PER_SCENE
 FW_ILI320 := -DFW_PANEL=panel_ili9341_320x240 -DFW_WIDTH=320 -DFW_HEIGHT=240 -DFW_SCAN_HZ=70
 $(call fw_scene_image,cgfs-cube-ili9341,CUBE320,$(FW_ILI320) -DFW_FRAMES_PER_SCENE=$(FW_CUBE_FRAMES))
 $(call fw_scene_image,cgfs-cube-ili9341-1core,CUBE320,$(FW_ILI320) $(FW_1CORE_FLAGS) -DFW_FRAMES_PER_SCENE=$(FW_CUBE_FRAMES))
+# And with SPI0 at 62.5 MHz, beyond the ILI9341's rated 10 MHz (8.93 MHz on
+# the RP2040): the clock the common modules are tested at (FW_SPI_HZ).
+$(call fw_scene_image,cgfs-cube-ili9341-fastspi,CUBE320,$(FW_ILI320) $(if $(FW_SPI_HZ),,-DRP2040_SPI_HZ=62500000) \
+    -DFW_FRAMES_PER_SCENE=$(FW_CUBE_FRAMES))
 # And on the ST7735S 1.8" module, 128x160.
 FW_ST7735 := -DFW_PANEL=panel_st7735_128x160 -DFW_WIDTH=128 -DFW_HEIGHT=160
 $(call fw_scene_image,cgfs-cube-st7735,CUBE128,$(FW_ST7735) -DFW_FRAMES_PER_SCENE=$(FW_CUBE_FRAMES))
@@ -274,7 +299,7 @@ $(eval $(call RP_IMAGE,cgfs-check-ili9488,$(FW_CHECK) $(FW_ILI9488),,,$(RP_CHECK
 FW_RP_IMAGES := $(FW_OUT)/pico/cgfs.uf2 $(FW_OUT)/pico/cgfs-1core.uf2 $(FW_OUT)/pico/cgfs-ili9341.uf2 \
                 $(FW_OUT)/pico/cgfs-rot2.uf2 \
                 $(foreach i,cgfs-book cgfs-book-1core cgfs-book-bench cgfs-cube cgfs-cube-1core cgfs-cube-te cgfs-cube-ili9341 \
-                  cgfs-cube-ili9341-1core cgfs-cube-st7735 \
+                  cgfs-cube-ili9341-1core cgfs-cube-ili9341-fastspi cgfs-cube-st7735 \
                   cgfs-cube-st7735-1core cgfs-cube-ssd1351 cgfs-cube-ssd1351-1core \
                   cgfs-cube-gc9a01 cgfs-cube-gc9a01-1core cgfs-book-gc9a01 cgfs-cube-ili9488 \
                   cgfs-cube-ili9488-1core cgfs-book-ssd1351 cgfs-book-ili9488 cgfs-rt cgfs-rt-1core cgfs-mesh \

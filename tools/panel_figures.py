@@ -12,7 +12,9 @@ usage: tools/panel_figures.py BUILD_DIR                  print the table
 For each panel below, its two-core cube image (build/firmware/pico/IMAGE.elf,
 `make firmware`) runs FRAMES frames of each of the three cube scenes
 (`rp2040sim.js --image ... --panel MODULE --frames 30 --json --average`):
-the mean frame rate of each scene (frames after the first send only the
+the SPI clock the image runs its panel at (the boot line's spi_hz: the
+controller's rated write clock, or FW_SPI_HZ's), the mean frame rate of
+each scene (frames after the first send only the
 columns that changed, as on the board), the frames a second the glass shows
 whole at the panel's scan rate (rp2040sim's shown_fps: not torn, and not
 overwritten before a scan pass shows them), and the mean SPI bytes a frame;
@@ -28,8 +30,9 @@ import sys
 
 # module (a PANEL of hal/panels.def), controller, its cube image, bytes a pixel
 PANELS = [
-    ("st7789_240x240", "ST7789", "cgfs-cube", 2),
+    ("st7789_240x240", "ST7789VW", "cgfs-cube", 2),
     ("ili9341_320x240", "ILI9341", "cgfs-cube-ili9341", 2),
+    ("ili9341_320x240", "ILI9341, SPI beyond its rating (`FW_SPI_HZ`)", "cgfs-cube-ili9341-fastspi", 2),
     ("st7735_128x160", "ST7735S", "cgfs-cube-st7735", 2),
     ("ssd1351_128x128", "SSD1351 (OLED, not DCS)", "cgfs-cube-ssd1351", 2),
     ("gc9a01_240x240", "GC9A01 (round)", "cgfs-cube-gc9a01", 2),
@@ -64,16 +67,17 @@ def run(build, module, image):
 
 
 def table(build):
-    head = ("| Panel (`--panel`) | Controller | Size | Bytes a pixel: a whole frame | Board image | "
+    head = ("| Panel (`--panel`) | Controller | Size | Bytes a pixel: a whole frame | Board image | SPI clock | "
             + " | ".join(f"{s.split('/')[1]}: fps sent / shown whole, bus KB a frame" for s in SCENES) + " |")
-    lines = [head, "|" + "---|" * (5 + len(SCENES))]
+    lines = [head, "|" + "---|" * (6 + len(SCENES))]
     for module, ctl, image, bpp in PANELS:
         w, h = map(int, module.rsplit("_", 1)[1].split("x"))
         rows = run(build, module, image)
         cells = [f"{rows[s]['fps']:.0f} / {rows[s]['shown_fps']:.0f}, {rows[s]['spi_bytes'] / 1000:.1f}"
                  for s in SCENES]
+        hz = rows[SCENES[0]].get("spi_hz", 0)
         lines.append(f"| `{module}` | {ctl} | {w}x{h} | {bpp}: {w * h * bpp / 1000:.1f} KB | `{image}.uf2` | "
-                     + " | ".join(cells) + " |")
+                     + f"{hz / 1e6:.4g} MHz | " + " | ".join(cells) + " |")
     return "\n".join(lines) + "\n"
 
 

@@ -85,9 +85,10 @@ static int send_pattern(void)
 int main(void)
 {
     char line[160], uart[160], *p;
-    if (fw_board_init(&hal) != 0) return 1;
+    if (fw_board_init(&hal, FW_PANEL.spi_max_hz) != 0) return 1;
     p = put_str(put_str(line, "boot board="), fw_board_name);
     p = put_u32(put_str(p, " cores=1 cpu_hz="), fw_board_cpu_hz());
+    p = put_u32(put_str(p, " spi_hz="), fw_board_spi_hz());
     p = put_str(put_u32(put_str(p, " size="), FW_WIDTH), "x");
     p = put_u32(p, FW_HEIGHT);
     p = put_str(put_u32(put_str(p, " strip_rows="), FW_STRIP_ROWS), " scenes=1\r\n");

@@ -14,8 +14,11 @@
 extern const char fw_board_name[];
 
 /* Clocks, pins, bus; fills *h (the board's HAL backend, which sends the
- * pixels: every byte to the panel goes through panel.h). 0 on success. */
-int fw_board_init(struct hal *h);
+ * pixels: every byte to the panel goes through panel.h). The bus runs at
+ * the fastest clock the board has not above spi_max_hz, the panel's rated
+ * write clock (struct panel_desc), unless a build option of the board says
+ * otherwise. 0 on success. */
+int fw_board_init(struct hal *h, uint32_t spi_max_hz);
 
 /* Whether to show the scene table once more: 1 on the boards (forever); a
  * host build of the application stops after its passes. */
@@ -47,8 +50,7 @@ void fw_board_wait(void);
 
 /* Core clock in Hz (for cycle figures). */
 uint32_t fw_board_cpu_hz(void);
-
-/* The panel's SPI clock in Hz as the board's HAL runs it. */
+/* The panel's SPI clock in Hz as fw_board_init set it. */
 uint32_t fw_board_spi_hz(void);
 
 /* The panel's tearing-effect output (TE), where the board wires it: waits

@@ -15,7 +15,7 @@
  * k - 1 is on the bus.
  *
  * UART lines (115200 8N1), one per event, parsed by tools/rp2040sim:
- *   boot board=B cores=N cpu_hz=H size=WxH strip_rows=R scenes=S
+ *   boot board=B cores=N cpu_hz=H spi_hz=F size=WxH strip_rows=R scenes=S
  *   begin scene=NAME frame=F t=T   (T: the board's microsecond timer when the
  *                                  frame began, its low 32 bits: the line may
  *                                  leave the board later, fw_board_puts)
@@ -617,12 +617,13 @@ static uint32_t frame(unsigned si, uint16_t f, uint32_t last_us, int dual)
 int main(void)
 {
     char line[160], *p;
-    if (fw_board_init(&hal) != 0) return 1;
+    if (fw_board_init(&hal, FW_PANEL.spi_max_hz) != 0) return 1;
     int dual = fw_board_cores() == 2;
 
     p = put_str(put_str(line, "boot board="), fw_board_name);
     p = put_str(put_u32(put_str(p, " cores="), dual ? 2u : 1u), " cpu_hz=");
     p = put_u32(p, fw_board_cpu_hz());
+    p = put_u32(put_str(p, " spi_hz="), fw_board_spi_hz());
     p = put_str(put_u32(put_str(p, " size="), FW_WIDTH), "x");
     p = put_u32(p, FW_HEIGHT);
     p = put_u32(put_str(p, " strip_rows="), FW_STRIP_ROWS);

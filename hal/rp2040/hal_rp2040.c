@@ -3,8 +3,8 @@
 #include "hal_rp2040.h"
 #include "rp2040_regs.h"
 
-#if RP2040_SPI_CPSDVSR < 2 || RP2040_SPI_CPSDVSR > 254 || (RP2040_SPI_CPSDVSR & 1)
-#error "RP2040_SPI_CPSDVSR must be even, 2..254"
+#if defined(RP2040_SPI_HZ) && !(RP2040_SPI_HZ + 0 > 0)
+#error "RP2040_SPI_HZ must be a clock in Hz, above 0"
 #endif
 
 #define CH RP2040_SPI_DMA_CH
@@ -13,6 +13,8 @@ struct rp2040_bus {
     hal_done_fn done;  /* completion of the transfer in flight */
     void *arg;
     uint8_t bits;      /* current SPI frame size: 8 or 16 */
+    uint32_t cr0;      /* SSPCR0 but for the frame size: SCR, SPH, SPO */
+    uint32_t div;      /* clk_peri / SPI clock: 2 * (1 + SCR) */
     uint32_t peri_hz;  /* clk_peri */
     uint64_t (*now_us)(void);
 };
@@ -25,8 +27,8 @@ static void spi_frame_bits(uint8_t bits)
     /* The frame size is changed with the port idle and disabled. */
     while (REG(SSPSR) & SSPSR_BSY) {}
     REG(SSPCR1) = 0;
-    /* SCR = 0, SPH = 1, SPO = 1 (mode 3), Motorola frames, DSS = bits - 1 */
-    REG(SSPCR0) = (1u << 7) | (1u << 6) | (uint32_t)(bits - 1u);
+    /* SCR, SPH and SPO (the mode), Motorola frames, DSS = bits - 1 */
+    REG(SSPCR0) = bus.cr0 | (uint32_t)(bits - 1u);
     REG(SSPCR1) = SSPCR1_SSE;
     bus.bits = bits;
 }
@@ -121,12 +123,27 @@ static void rp_delay_ms(void *ctx, uint32_t ms)
     while (rp_now_us(ctx) < end) {}
 }
 
-uint32_t hal_rp2040_spi_hz(void) { return bus.peri_hz / RP2040_SPI_CPSDVSR; }
+uint32_t hal_rp2040_spi_hz(void) { return bus.div ? bus.peri_hz / bus.div : 0; }
 
-int hal_rp2040_init(struct hal *h, uint32_t clk_peri_hz, uint64_t (*now_us)(void))
+uint32_t hal_rp2040_spi_div(uint32_t clk_peri_hz, uint32_t max_hz)
 {
+    if (max_hz == 0) return 512;
+    uint32_t n = clk_peri_hz / max_hz;
+    if (n * max_hz < clk_peri_hz) n++;   /* the smallest n with clk_peri / n <= max_hz */
+    n += n & 1u;
+    return n < 2 ? 2 : n > 512 ? 512 : n;
+}
+
+int hal_rp2040_init(struct hal *h, uint32_t clk_peri_hz, uint32_t spi_max_hz, uint64_t (*now_us)(void))
+{
+#ifdef RP2040_SPI_HZ
+    spi_max_hz = RP2040_SPI_HZ;
+#endif
     bus.peri_hz = clk_peri_hz;
     bus.now_us = now_us;
+    bus.div = hal_rp2040_spi_div(clk_peri_hz, spi_max_hz);
+    /* SCR in bits 15:8 (CPSDVSR is 2); SPH = 1, SPO = 1: mode 3 */
+    bus.cr0 = ((bus.div / 2u - 1u) << 8) | (1u << 7) | (1u << 6);
     static const uint8_t sio_pins[] = { RP2040_PIN_CS, RP2040_PIN_DC, RP2040_PIN_RST, RP2040_PIN_BL };
     for (unsigned i = 0; i < sizeof sio_pins; i++) {
         uint32_t bit = 1u << sio_pins[i];
@@ -142,7 +159,7 @@ int hal_rp2040_init(struct hal *h, uint32_t clk_peri_hz, uint64_t (*now_us)(void
     REG(GPIO_CTRL(RP2040_PIN_SCK)) = GPIO_FUNC_SPI;
     REG(GPIO_CTRL(RP2040_PIN_MOSI)) = GPIO_FUNC_SPI;
 
-    REG(SSPCPSR) = RP2040_SPI_CPSDVSR;
+    REG(SSPCPSR) = 2;
     bus.bits = 0;
     spi_frame_bits(8);
     REG(SSPDMACR) = SSPDMACR_TXDMAE;

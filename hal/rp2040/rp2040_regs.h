@@ -69,6 +69,18 @@
 #define PLL_PWR_POSTDIVPD  (1u << 3)
 #define PLL_PWR_VCOPD      (1u << 5)
 
+/* ---- the core's voltage regulator and the XIP SSI (flash clock) ------------ */
+#define VREG_BASE          0x40064000u
+#define VREG_CTRL          (VREG_BASE + 0x0)   /* EN bit 0, HIZ bit 1, VSEL 7:4, ROK bit 12 */
+#define VREG_EN            (1u << 0)
+#define VREG_VSEL(v)       ((uint32_t)(v) << 4)
+#define VREG_ROK           (1u << 12)
+#define XIP_SSI_BASE       0x18000000u
+#define XIP_SSI_SSIENR     (XIP_SSI_BASE + 0x08)
+#define XIP_SSI_BAUDR      (XIP_SSI_BASE + 0x14)
+#define XIP_SSI_SR         (XIP_SSI_BASE + 0x28)
+#define XIP_SSI_SR_BUSY    (1u << 0)
+
 #define WATCHDOG_BASE      0x40058000u
 #define WATCHDOG_TICK      (WATCHDOG_BASE + 0x2c)
 #define WATCHDOG_TICK_EN   (1u << 9)

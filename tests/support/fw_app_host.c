@@ -33,8 +33,9 @@ static int errors;
 
 const char fw_board_name[] = "host";
 
-int fw_board_init(struct hal *h)
+int fw_board_init(struct hal *h, uint32_t spi_max_hz)
 {
+    (void)spi_max_hz;
     uint8_t view;
     const struct emu_module *m = emu_module_find("st7789_240x240", &view);
     emu = calloc(1, sizeof *emu);
@@ -114,6 +115,7 @@ void fw_board_unlock(void) {}
 void fw_board_notify(void) {}
 void fw_board_wait(void) {}
 uint32_t fw_board_cpu_hz(void) { return 133000000u; }
+uint32_t fw_board_spi_hz(void) { return 62500000u; }
 int fw_board_te_wait(uint32_t timeout_us)
 {
     (void)timeout_us;

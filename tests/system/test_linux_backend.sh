@@ -36,7 +36,7 @@ for api in v1 v2; do
   [ -x "$build/shim/$api/shim_linux_panel.so" ] || [ -f "$build/shim/$api/shim_linux_panel.so" ] || {
     fail "linux_backend_$api" "no $build/shim/$api/shim_linux_panel.so"; continue; }
 
-  # ST7789 240x240, the defaults: mode 3, 32 MHz, DC 25, RESET 27, BL 18
+  # ST7789 240x240, the defaults: mode 3, the ST7789VW's 62.5 MHz, DC 25, RESET 27, BL 18
   "$build/host_sim" --scene $scene --out-raw "$tmp/sim.raw" 2>/dev/null
   run_linux $api st7789_240x240 0 25,27,18 --
   rc=$?
@@ -45,10 +45,10 @@ for api in v1 v2; do
   else
     fail "linux_backend_${api}_st7789_glass_equals_sim" "rc $rc, $(cat "$tmp/err" "$tmp/lx.log" 2>/dev/null | head -n 2)"
   fi
-  if grep -q '^mode 3 bits 8 hz 32000000 ' "$tmp/lx.log" 2>/dev/null; then
-    pass "linux_backend_${api}_st7789_defaults_mode3_32mhz"
+  if grep -q '^mode 3 bits 8 hz 62500000 ' "$tmp/lx.log" 2>/dev/null; then
+    pass "linux_backend_${api}_st7789_defaults_mode3_rated_62_5mhz"
   else
-    fail "linux_backend_${api}_st7789_defaults_mode3_32mhz" "$(cat "$tmp/lx.log" 2>/dev/null)"
+    fail "linux_backend_${api}_st7789_defaults_mode3_rated_62_5mhz" "$(cat "$tmp/lx.log" 2>/dev/null)"
   fi
 
   # ILI9341 320x240 upside down, every Pi option given
@@ -87,20 +87,23 @@ for api in v1 v2; do
   fi
 done
 
-# The SPI mode by default is the module's (hal/panel.h, spi_mode), whatever
-# its name: every ST7789 module in mode 3, the ILI9341 in mode 0; the other
+# The SPI mode and clock by default are the module's (hal/panel.h, spi_mode
+# and spi_max_hz, its controller's rated write clock), whatever its name:
+# every ST7789 module in mode 3, the ILI9341 in mode 0; the other
 # controllers (the SSD1351: not DCS; the ILI9488: three bytes a pixel) in
 # mode 0, their streams through the Linux backend as strict as host_sim's.
-for m in st7789_240x320:3 ili9341_240x320:0 ili9341_320x240:0 st7735_128x160:0 ssd1351_128x128:0 \
-         gc9a01_240x240:0 ili9488_320x480:0; do
-  module=${m%:*} want=${m#*:}
+for m in st7789_240x320:3:15151515 ili9341_240x320:0:10000000 ili9341_320x240:0:10000000 \
+         st7735_128x160:0:15151515 ssd1351_128x128:0:20000000 gc9a01_240x240:0:50000000 \
+         ili9488_320x480:0:20000000; do
+  module=${m%%:*} rest=${m#*:}
+  want=${rest%:*} hz=${rest#*:}
   size=${module#*_} ctl=${module%%_*}
   run_linux v1 "$module" 0 25,27,18 -- --panel "$ctl" --size "$size"
   rc=$?
-  if [ $rc -eq 0 ] && grep -q "^mode $want bits 8 .*violation none" "$tmp/lx.log" 2>/dev/null; then
-    pass "linux_backend_default_spi_mode_${module}_$want"
+  if [ $rc -eq 0 ] && grep -q "^mode $want bits 8 hz $hz .*violation none" "$tmp/lx.log" 2>/dev/null; then
+    pass "linux_backend_default_spi_mode_clock_${module}_${want}_$hz"
   else
-    fail "linux_backend_default_spi_mode_${module}_$want" "rc $rc, $(cat "$tmp/err" "$tmp/lx.log" 2>/dev/null | head -n 2)"
+    fail "linux_backend_default_spi_mode_clock_${module}_${want}_$hz" "rc $rc, $(cat "$tmp/err" "$tmp/lx.log" 2>/dev/null | head -n 2)"
   fi
 done
 

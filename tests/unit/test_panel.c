@@ -270,6 +270,13 @@ static void test_find(void)
 #undef PANEL
 #undef GLASS
     check(!bad && !panel_all[n], "panels_def_consistent", "%d of %d PANEL lines disagree with their descriptor", bad, n);
+    /* every descriptor states its bus: a mode 0..3 and its controller's rated
+     * write clock (a serial write cycle of 10 to 1000 ns) */
+    int bus_bad = 0;
+    for (size_t i = 0; panel_all[i]; i++)
+        bus_bad += panel_all[i]->spi_mode > 3 || panel_all[i]->spi_max_hz < PANEL_WRITE_CYCLE_NS(1000) ||
+                   panel_all[i]->spi_max_hz > PANEL_WRITE_CYCLE_NS(10);
+    check(!bus_bad, "panels_state_spi_mode_and_rated_clock", "%d descriptor(s) without a mode or rated clock", bus_bad);
 }
 
 static uint16_t pattern(uint32_t x, uint32_t y)

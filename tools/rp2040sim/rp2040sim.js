@@ -32,7 +32,7 @@
  *                       pass shows it before the next frame's writes do
  *                       (--average: torn_frames, and shown_fps, the frames
  *                       shown whole a second);
- *                       cores: from the firmware's boot line; a two-core
+ *                       cores, spi_hz: from the firmware's boot line; a two-core
  *                       image runs on both emulated cores, dualcore.js)
  *                       first_image_us: for a progressive (ray-traced) frame,
  *                       when its whole-screen preview was on the glass;
@@ -77,8 +77,13 @@
  * handshake (dualcore.js). UART0's transmit FIFO drains at the configured
  * baud rate (uart.js): a firmware that writes more than the line carries
  * waits, as on the board. Time: each instruction advances the clock
- * by its cycles at the current clk_sys; SPI words complete after their bit
- * count at the configured SPI clock, so frame times include transfer time.
+ * by its cycles at the current clk_sys (rp2040js derives it from the PLL
+ * and CLOCKS registers; the firmware's boot line must state the same
+ * cpu_hz); SPI words complete after their bit count at the configured SPI
+ * clock (clk_peri / (CPSDVSR * (1 + SCR))), so frame times include transfer
+ * time. The core voltage regulator is modelled (vreg.js: the voltage must be
+ * raised before clk_sys is), and a change of the XIP SSI's divider after
+ * boot2 changes the cost of a cache miss from then on.
  *
  * Exit status: 0 done; 1 emulator or internal error (cycle limit, firmware
  * error or fault line, any emulator warning); 2 usage; 3 panel protocol violation (one line). */
@@ -89,6 +94,7 @@ const { EmuPanel } = require('./emu_panel.js');
 const { DualCore } = require('./dualcore.js');
 const { XipCache, bootThroughBoot2 } = require('./xip.js');
 const { UartTx } = require('./uart.js');
+const { installVreg } = require('./vreg.js');
 
 const FLASH_BASE = 0x10000000;
 
@@ -195,6 +201,7 @@ function main() {
   /* some parts of the package (SIO) warn on the console instead */
   console.warn = (...a) => { if (!emuWarning) emuWarning = `emulator warning: ${a.join(' ')}`; };
   loadImage(o.image, mcu.flash);
+  installVreg(mcu);
   const xip = new XipCache(mcu);
   const bootProblem = bootThroughBoot2(mcu);
   if (bootProblem) { process.stderr.write(`rp2040sim: ${o.image}: ${bootProblem}\n`); process.exit(1); }
@@ -250,7 +257,7 @@ function main() {
    * from T to the next frame's T; spi_bytes and the XIP figures from the
    * previous frame's last pixel (the first frame: from its first command to
    * the panel after T) to its last; uart_stall over the period. */
-  let uartLine = '', fwError = null, cpuHz = 133e6, cores = 1;
+  let uartLine = '', fwError = null, cpuHz = 133e6, cores = 1, spiHz = 0;
   const frames = [];
   const begins = [];     /* frames begun, waiting for their last pixel */
   const ends = [];       /* frames ended before their line arrived */
@@ -275,7 +282,10 @@ function main() {
       const l = uartLine.replace(/\r$/, '');
       uartLine = '';
       const kv = Object.fromEntries(l.split(' ').slice(1).map((s) => s.split('=')));
-      if (l.startsWith('boot ')) { cpuHz = Number(kv.cpu_hz) || cpuHz; cores = Number(kv.cores) || cores; }
+      if (l.startsWith('boot ')) {
+        cpuHz = Number(kv.cpu_hz) || cpuHz; cores = Number(kv.cores) || cores; spiHz = Number(kv.spi_hz) || spiHz;
+        if (cpuHz !== mcu.clkSys) fwError = `the boot line's cpu_hz=${cpuHz} is not the clk_sys the registers set (${mcu.clkSys} Hz)`;
+      }
       if (l.startsWith('begin ')) {
         const t = beginNs(kv.t);
         /* the previous frame's period, and the firmware's waits for room
@@ -345,7 +355,6 @@ function main() {
     }
   }
   xip.configure();
-  const xipMode = xip.fill;
 
   const t0 = Date.now();
   const maxNs = o.maxCycles / cpuHz * 1e9;
@@ -406,10 +415,10 @@ function main() {
       process.stdout.write(JSON.stringify({
         target: 'rp2040-sim', what: `scene:${f.scene}`, numeric: o.numeric, variant: o.variant, cores,
         frame: f.frame, width: w, height: h,
-        cycles, per: 'frame', cpu_hz: cpuHz, us: Math.round(f.ns / 1000),
+        cycles, per: 'frame', cpu_hz: cpuHz, ...(spiHz ? { spi_hz: spiHz } : {}), us: Math.round(f.ns / 1000),
         period_us: Math.round(f.period_ns / 1000), fps: Number((1e9 / f.period_ns).toFixed(3)),
         uart_stall_cycles: Math.round(f.uart_stall_ns * cpuHz / 1e9), spi_bytes: f.spi_bytes,
-        torn: f.passes > 1, scan_passes: f.passes, shown: f.shown, xip_misses: f.xip_misses, xip_stall_cycles: f.xip_stall_cycles, xip_fill_cycles: xipMode.cycles,
+        torn: f.passes > 1, scan_passes: f.passes, shown: f.shown, xip_misses: f.xip_misses, xip_stall_cycles: f.xip_stall_cycles, xip_fill_cycles: xip.fill.cycles,
         ...(f.first_ns !== undefined ? { first_image_us: Math.round(f.first_ns / 1000) } : {}),
       }) + '\n');
     }
@@ -431,14 +440,14 @@ function main() {
         frame: r.list[0].frame, frames: n, width: w, height: h,
         cycles: Math.round(ns * cpuHz / 1e9), per: 'frame',
         cycles_min: Math.round(Math.min(...cyc)), cycles_max: Math.round(Math.max(...cyc)),
-        cpu_hz: cpuHz, us: Math.round(ns / 1000), period_us: Math.round(period / 1000),
+        cpu_hz: cpuHz, ...(spiHz ? { spi_hz: spiHz } : {}), us: Math.round(ns / 1000), period_us: Math.round(period / 1000),
         fps: Number((1e9 / period).toFixed(3)), uart_stall_cycles: Math.round(stall * cpuHz / 1e9),
         spi_bytes: Math.round(r.list.reduce((a, f) => a + f.spi_bytes, 0) / n),
         torn_frames: r.list.filter((f) => f.passes > 1).length,
         shown_fps: Number((r.list.filter((f) => f.shown).length * 1e9 / (period * n)).toFixed(3)),
         xip_misses: Math.round(r.list.reduce((a, f) => a + f.xip_misses, 0) / n),
         xip_stall_cycles: Math.round(r.list.reduce((a, f) => a + f.xip_stall_cycles, 0) / n),
-        xip_fill_cycles: xipMode.cycles,
+        xip_fill_cycles: xip.fill.cycles,
         ...(r.list[0].first_ns !== undefined
           ? { first_image_us: Math.round(r.list.reduce((a, f) => a + f.first_ns, 0) / n / 1000) } : {}),
       }) + '\n');

@@ -9,7 +9,9 @@
  * non-allocating aliases, the line-fill cost of the 03h and EBh read modes,
  * and the boot ROM's boot2 CRC. uart.js: the transmit FIFO's fill (TXFF,
  * TXFE, BUSY), its drain at the baud rate, the transmit interrupt at its
- * trigger level, and the time counted as waiting.
+ * trigger level, and the time counted as waiting. vreg.js: VREG's reset value,
+ * ROK, the atomic aliases, and a clk_sys raised above what the voltage is for.
+ * The SPI clock from CPSDVSR and SCR, and a miss's cost after BAUDR changes.
  * Prints PASS/FAIL lines (tests/support/run.sh). */
 const { RP2040 } = require('rp2040js');
 const { DualCore } = require('./dualcore.js');
@@ -174,6 +176,9 @@ function launch(t, seq) {
   x.charging = false;
   mcu.readUint32(0x10009000);
   check('xip_dma_not_charged', x.take() === 0, 'charged outside an instruction');
+  /* the firmware's divider for a faster clk_sys: SSIENR 0, BAUDR 6, SSIENR 1 */
+  mcu.writeUint32(0x18000008, 0); mcu.writeUint32(0x18000014, 6); mcu.writeUint32(0x18000008, 1);
+  check('xip_fill_follows_baudr_after_boot', x.fill.cycles === 96 * 6 + 4, `${x.fill.cycles}`);
 }
 
 {
@@ -244,6 +249,41 @@ function launch(t, seq) {
   const waited = mcu.clock.nanos - t0;
   check('uart_stall_counts_waits_only', before === 0 && Math.abs(u.stallNs - waited) < 1 && waited > 0,
         `stall ${before} then ${u.stallNs} for a wait of ${waited} ns`);
+}
+
+{
+  /* the core voltage regulator (vreg.js) and the clocks that follow the
+   * registers: PLL_SYS at 250 MHz (1500/6/1) needs 1.20 V (VSEL 13) first */
+  const { installVreg } = require('./vreg.js');
+  const VREG = 0x40064000, PLL_SYS = 0x40028000, CLK_SYS_CTRL = 0x4000803c;
+  const warns = [];
+  const mcu = new RP2040();
+  mcu.logger = { debug() {}, info() {}, warn(t, m) { warns.push(m); }, error() {} };
+  installVreg(mcu);
+  const v0 = mcu.readUint32(VREG) >>> 0;
+  check('vreg_reset_1v10_enabled_in_regulation', v0 === (0xb1 | 1 << 12), `VREG ${v0.toString(16)}`);
+  const pll250 = () => {
+    mcu.writeUint32(PLL_SYS + 8, 125); mcu.writeUint32(PLL_SYS + 0xc, (6 << 16) | (1 << 12));
+    mcu.writeUint32(PLL_SYS + 4, 0);
+    mcu.writeUint32(CLK_SYS_CTRL, 0); mcu.writeUint32(CLK_SYS_CTRL, 1);
+  };
+  mcu.writeUint32(VREG, 1 | (12 << 4));             /* 1.15 V: too low for 250 MHz */
+  pll250();
+  check('vreg_clock_above_voltage_warns', mcu.clkSys === 250e6 && warns.length === 1 && /250 MHz.*1\.15 V/.test(warns[0]),
+        `clk_sys ${mcu.clkSys}, ${warns.join('; ')}`);
+  mcu.writeUint32(CLK_SYS_CTRL, 0);                 /* back to clk_ref */
+  warns.length = 0;
+  mcu.writeUint32(VREG + 0x2000, 1 << 4);           /* atomic set: VSEL 12 -> 13, 1.20 V */
+  const v1 = mcu.readUint32(VREG) >>> 0;
+  pll250();
+  check('vreg_atomic_set_and_clock_within_voltage', ((v1 >>> 4) & 15) === 13 && (v1 & (1 << 12)) !== 0 &&
+        mcu.clkSys === 250e6 && warns.length === 0, `VREG ${v1.toString(16)}, clk_sys ${mcu.clkSys}, ${warns.join('; ')}`);
+  /* SPI0: clk_peri / (CPSDVSR * (1 + SCR)); 125 MHz / (2 * 7) for the ILI9341's 10 MHz */
+  const SPI0 = 0x4003c000;
+  mcu.clkPeri = 125e6;
+  mcu.writeUint32(SPI0 + 0x10, 2); mcu.writeUint32(SPI0, (6 << 8) | (3 << 6) | 7);
+  check('spi_clock_from_cpsdvsr_and_scr', Math.abs(mcu.spi[0].clockFrequency - 125e6 / 14) < 1,
+        `${mcu.spi[0].clockFrequency} Hz`);
 }
 
 /* The panel's scan (emu_panel.js): a frame written within one pass's blank

@@ -26,7 +26,9 @@
  * * 4 + 4 = 388 cycles; EBh quad continuous read (no instruction, 24-bit
  * address + 8 mode bits, 4 wait cycles) at clk_sys/2: (8 + 4 + 16) * 2 + 4
  * = 60 cycles. Accesses outside a core's instruction (DMA) update the cache
- * and are not charged.
+ * and are not charged. Once configured, a write to the SSI (the firmware
+ * changing the flash's divider for a faster clk_sys) configures it again:
+ * a miss costs what the registers say from then on.
  */
 
 const FLASH_BASE = 0x10000000, FLASH_END = 0x14000000;
@@ -81,6 +83,8 @@ class XipCache {
     mcu.readUint32 = (a) => { a >>>= 0; if (a >= FLASH_BASE && a < FLASH_END) x.access(a); return rd32(a); };
     mcu.readUint16 = (a) => { a >>>= 0; if (a >= FLASH_BASE && a < FLASH_END) x.access(a); return rd16(a); };
     mcu.readUint8 = (a) => { a >>>= 0; if (a >= FLASH_BASE && a < FLASH_END) x.access(a); return rd8(a); };
+    const ssi = mcu.peripherals[0x18000], ssiWrite = ssi.writeUint32.bind(ssi);
+    ssi.writeUint32 = (off, v) => { ssiWrite(off, v); if (x.fill) x.configure(); };
   }
 
   configure() { this.fill = lineFillCycles(this.mcu.peripherals[0x18000]); }

@@ -42,6 +42,20 @@ void board_delay_cycles(uint32_t n)
     for (uint32_t i = n; i; i--) __asm__ volatile("" ::: "memory");
 }
 
+#if RP2040_FLASH_DIV != RP2040_BOOT2_DIV
+/* The XIP SSI's clock divider; from SRAM (.ram_text, in every image), since
+ * the SSI is disabled meanwhile: once the last flash access has left the
+ * SSI, disabled, BAUDR written, enabled again (its other registers, boot2's
+ * read mode, are kept; the flash stays in its continuous-read mode). */
+__attribute__((section(".ram_text"), noinline)) static void xip_set_div(uint32_t div)
+{
+    while (REG(XIP_SSI_SR) & XIP_SSI_SR_BUSY) {}
+    REG(XIP_SSI_SSIENR) = 0;
+    REG(XIP_SSI_BAUDR) = div;
+    REG(XIP_SSI_SSIENR) = 1;
+}
+#endif
+
 static void clocks_init(void)
 {
     REG(CLK_SYS_RESUS_CTRL) = 0;
@@ -59,13 +73,22 @@ static void clocks_init(void)
     REG(CLK_REF_CTRL) = CLK_REF_SRC_XOSC;
     while (!(REG(CLK_REF_SELECTED) & (1u << CLK_REF_SRC_XOSC))) {}
 
-#if RP2040_SYS_MHZ == 133
-    pll_start(PLL_SYS_BASE, RESET_PLL_SYS, 133, 6, 2);  /* VCO 1596 MHz */
-#elif RP2040_SYS_MHZ == 125
-    pll_start(PLL_SYS_BASE, RESET_PLL_SYS, 125, 6, 2);  /* VCO 1500 MHz */
-#else
-#error "RP2040_SYS_MHZ must be 125 or 133"
+#if RP2040_VREG_VSEL != 11
+    /* A faster clk_sys needs the higher core voltage first: the regulator
+     * is told, reports regulation, and gets at least 10 ms to settle
+     * (60,000 iterations of board_delay_cycles, each two cycles or more of
+     * the 12 MHz clk_ref) before anything runs faster. */
+    REG(VREG_CTRL) = VREG_EN | VREG_VSEL(RP2040_VREG_VSEL);
+    while (!(REG(VREG_CTRL) & VREG_ROK)) {}
+    board_delay_cycles(60000);
 #endif
+#if RP2040_FLASH_DIV != RP2040_BOOT2_DIV
+    /* The flash clock too, while clk_sys is still slow (boot2's read mode
+     * is kept: only the divider changes). */
+    xip_set_div(RP2040_FLASH_DIV);
+#endif
+    /* VCO RP2040_SYS_MHZ * P MHz (133: 1596/6/2; 125: 1500/6/2; 200 and 250: 1200 and 1500/6/1) */
+    pll_start(PLL_SYS_BASE, RESET_PLL_SYS, RP2040_PLL_FBDIV, RP2040_PLL_PD1, RP2040_PLL_PD2);
     pll_start(PLL_USB_BASE, RESET_PLL_USB, 125, 6, 2);  /* 125 MHz for clk_peri */
 
     REG(CLK_SYS_DIV) = 1u << 8;

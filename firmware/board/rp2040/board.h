@@ -2,10 +2,19 @@
 /* board.h — what the RP2040 start-up code offers the application.
  *
  * Clocks after board_init(): XOSC 12 MHz -> PLL_SYS -> clk_sys at
- * RP2040_SYS_MHZ (default 133); PLL_USB at 125 MHz -> clk_peri, so SPI0 can
- * run at exactly clk_peri/2 = 62.5 MHz, the ST7789's fastest write clock,
- * whatever clk_sys is. The 1 MHz timer counts from clk_ref = XOSC.
- * UART0 on RP2040_UART_TX (default GP0), 115200 8N1. */
+ * RP2040_SYS_MHZ (default 133, the RP2040's rated clock at the regulator's
+ * reset voltage; make FW_CLK_MHZ=N, 125..300, below); PLL_USB at 125 MHz ->
+ * clk_peri, so SPI0 and UART0 keep their clocks whatever clk_sys is (SPI0 at
+ * clk_peri/2 = 62.5 MHz at most, the ST7789VW's rated write clock). The
+ * 1 MHz timer counts from clk_ref = XOSC. UART0 on RP2040_UART_TX (default
+ * GP0), 115200 8N1.
+ *
+ * Above 133 MHz the core voltage is raised first (VREG VSEL: 1.15 V up to
+ * 200 MHz, 1.20 V up to 250 MHz, 1.30 V, the regulator's highest, up to
+ * 300 MHz), and the XIP flash clock, clk_sys / RP2040_FLASH_DIV, is kept
+ * within the flash's rating (RP2040_FLASH_MAX_MHZ, for boot2's read mode:
+ * mk/firmware.mk): boot2 sets clk_sys / RP2040_BOOT2_DIV, and a larger
+ * divider is written before clk_sys is raised. */
 #ifndef BOARD_H
 #define BOARD_H
 
@@ -14,6 +23,59 @@
 #ifndef RP2040_SYS_MHZ
 #define RP2040_SYS_MHZ 133
 #endif
+#if RP2040_SYS_MHZ < 125 || RP2040_SYS_MHZ > 300
+#error "RP2040_SYS_MHZ (make FW_CLK_MHZ) must be 125..300"
+#endif
+
+/* PLL_SYS: VCO = 12 MHz * FBDIV = RP2040_SYS_MHZ * POSTDIV1 * POSTDIV2, in
+ * 750..1600 MHz; the highest VCO that gives the clock exactly (P, the
+ * product of the post dividers, from the largest down). */
+#define RP2040_PLL_FITS(p) \
+    ((RP2040_SYS_MHZ * (p)) % 12 == 0 && RP2040_SYS_MHZ * (p) >= 750 && RP2040_SYS_MHZ * (p) <= 1600)
+#define RP2040_PLL_P                                                                                    \
+    (RP2040_PLL_FITS(49) ? 49 : RP2040_PLL_FITS(42) ? 42 : RP2040_PLL_FITS(36) ? 36 :                   \
+     RP2040_PLL_FITS(35) ? 35 : RP2040_PLL_FITS(30) ? 30 : RP2040_PLL_FITS(28) ? 28 :                   \
+     RP2040_PLL_FITS(25) ? 25 : RP2040_PLL_FITS(24) ? 24 : RP2040_PLL_FITS(21) ? 21 :                   \
+     RP2040_PLL_FITS(20) ? 20 : RP2040_PLL_FITS(18) ? 18 : RP2040_PLL_FITS(16) ? 16 :                   \
+     RP2040_PLL_FITS(15) ? 15 : RP2040_PLL_FITS(14) ? 14 : RP2040_PLL_FITS(12) ? 12 :                   \
+     RP2040_PLL_FITS(10) ? 10 : RP2040_PLL_FITS(9) ? 9 : RP2040_PLL_FITS(8) ? 8 :                       \
+     RP2040_PLL_FITS(7) ? 7 : RP2040_PLL_FITS(6) ? 6 : RP2040_PLL_FITS(5) ? 5 :                        \
+     RP2040_PLL_FITS(4) ? 4 : RP2040_PLL_FITS(3) ? 3 : RP2040_PLL_FITS(2) ? 2 : 0)
+#if RP2040_PLL_P == 0
+#error "RP2040_SYS_MHZ: no PLL_SYS setting gives this clock exactly (12 MHz * FBDIV / (POSTDIV1 * POSTDIV2))"
+#endif
+#define RP2040_PLL_FBDIV (RP2040_SYS_MHZ * RP2040_PLL_P / 12)
+/* P as POSTDIV1 * POSTDIV2, POSTDIV1 >= POSTDIV2, each 1..7 */
+#define RP2040_PLL_PD1                                                                                  \
+    (RP2040_PLL_P % 7 == 0 ? 7 : RP2040_PLL_P % 6 == 0 ? 6 : RP2040_PLL_P % 5 == 0 ? 5 :                \
+     RP2040_PLL_P % 4 == 0 ? 4 : RP2040_PLL_P % 3 == 0 ? 3 : 2)
+#define RP2040_PLL_PD2 (RP2040_PLL_P / RP2040_PLL_PD1)
+
+/* The core voltage for the clock (VREG VSEL; 11, 1.10 V, is its reset value) */
+#if RP2040_SYS_MHZ <= 133
+#define RP2040_VREG_VSEL 11
+#elif RP2040_SYS_MHZ <= 200
+#define RP2040_VREG_VSEL 12
+#elif RP2040_SYS_MHZ <= 250
+#define RP2040_VREG_VSEL 13
+#else
+#define RP2040_VREG_VSEL 15
+#endif
+
+/* The XIP flash clock: boot2's divider (RP2040_BOOT2_DIV, 2 for w25q16jv's
+ * EBh reads, 4 for generic_03h's 03h reads), raised to the smallest even
+ * one that keeps the flash at or below RP2040_FLASH_MAX_MHZ (133 for EBh,
+ * 50 for 03h: W25Q16JV datasheet, AC electrical characteristics). */
+#ifndef RP2040_BOOT2_DIV
+#define RP2040_BOOT2_DIV 2
+#endif
+#ifndef RP2040_FLASH_MAX_MHZ
+#define RP2040_FLASH_MAX_MHZ 133
+#endif
+#define RP2040_FLASH_DIV_NEED ((RP2040_SYS_MHZ + RP2040_FLASH_MAX_MHZ - 1) / RP2040_FLASH_MAX_MHZ)
+#define RP2040_FLASH_DIV_EVEN (RP2040_FLASH_DIV_NEED + (RP2040_FLASH_DIV_NEED & 1))
+#define RP2040_FLASH_DIV \
+    (RP2040_FLASH_DIV_EVEN > RP2040_BOOT2_DIV ? RP2040_FLASH_DIV_EVEN : RP2040_BOOT2_DIV)
 #define RP2040_PERI_HZ 125000000u
 #ifndef RP2040_UART_TX
 #define RP2040_UART_TX 0

@@ -19,7 +19,10 @@ const char fw_board_name[] = "rp2040";
 
 static uint64_t core1_stack[RP2040_CORE1_STACK / 8];
 
-int fw_board_init(struct hal *h) { return hal_rp2040_init(h, RP2040_PERI_HZ, board_now_us); }
+int fw_board_init(struct hal *h, uint32_t spi_max_hz)
+{
+    return hal_rp2040_init(h, RP2040_PERI_HZ, spi_max_hz, board_now_us);
+}
 
 void fw_board_puts(const char *s) { board_puts(s); }
 

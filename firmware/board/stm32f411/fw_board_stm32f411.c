@@ -7,7 +7,13 @@
 
 const char fw_board_name[] = "stm32f411";
 
-int fw_board_init(struct hal *h) { return hal_stm32f4_init(h, board_apb2_hz, board_now_us); }
+/* The SPI clock is STM32_SPI_BR's (hal_stm32f4.h), whatever the panel's
+ * rated clock. */
+int fw_board_init(struct hal *h, uint32_t spi_max_hz)
+{
+    (void)spi_max_hz;
+    return hal_stm32f4_init(h, board_apb2_hz, board_now_us);
+}
 
 void fw_board_puts(const char *s) { board_puts(s); }
 

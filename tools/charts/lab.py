@@ -109,20 +109,21 @@ class LabQuality:
 QUALITY_SKIP = ("pass=coarse", "supersample=", "adaptive_supersample=", "shortcuts=", "bvh=")
 
 
-def method_key(row, lab_scene, text, keys):
+def method_key(row, lab_scene, text, keys, board=False):
     """The method of a pareto row as tools/quality names it: its options less
     the scene's `apply` ones, with every key of `keys` (the keys the scene's
     variants set) the scene writes and the row does not set added at the
     written value, sorted; None for a row the compiler does not consider (a
-    book-path row of a book scene, another format or strip height, QUALITY_SKIP)."""
+    book-path row of a book scene, another format or strip height, QUALITY_SKIP;
+    board: any format and strip height, as the RP2040 images run them)."""
     q = lab_scene.quality
     opts = [o for o in (row["options"] or "").split() if o]
     if any(a not in opts for a in q.apply):
         return None
-    if int(row["strip"]) != 16 or " Q" in row["variant"] or any(o.startswith(QUALITY_SKIP) for o in opts):
+    if (not board and (int(row["strip"]) != 16 or " Q" in row["variant"])) or any(o.startswith(QUALITY_SKIP) for o in opts):
         return None
     opts = [o for o in opts if o not in q.apply]
-    have = {o.split("=")[0] for o in opts}
+    have = {o.split("=")[0] for o in opts} | {a.split("=")[0] for a in q.apply}
     for k in keys:
         v = scenetext.written(text, k)
         if k not in have and v is not None:

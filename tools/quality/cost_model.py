@@ -7,7 +7,8 @@ speed/accuracy lab's measurements (`make charts`, out/charts/pareto.csv).
       the lab's rows the model and its test need, and each lab scene's work
       (host_sim --stats of the scene text the compiler chooses for, in each
       numeric mode: rays x objects for the ray tracer, pixels written for
-      the rasterizer, the mean over the frames tools/quality checks)
+      the rasterizer, the mean over the frames tools/quality checks), and for
+      a scene that animates each candidate's lowest PSNR over those frames
   cost_model.py model --fixture tests/data/quality/lab.json [--write tools/quality/cost_model.def | --check FILE]
       the model from the fixture: written, or compared with FILE (exit 1
       when it differs)
@@ -41,6 +42,7 @@ import tempfile
 HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, os.path.join(HERE, "..", "charts"))
 import lab  # noqa: E402
+import quality  # noqa: E402
 import scenetext  # noqa: E402
 
 TARGETS = {"m0plus-qemu": "m0plus", "m4f-qemu": "m4f", "rp2040-sim": "rp2040"}
@@ -91,6 +93,8 @@ def make_fixture(args):
         qt = s.quality.text(text)
         work = {n: scene_work(args.host_sim, qt, n) for n in ("fixed", "float", "double")}
         out["scenes"][s.name] = {"class": s.quality.cls, "work": work, "keys": lab.variant_keys(rows, s.name)}
+    for name, ps in quality.frames_psnr(args.host_sim, args.scenes, rows).items():
+        out["scenes"][name]["psnr_frames"] = {k: round(v, 3) for k, v in ps.items()}
     with open(args.out + ".tmp", "w") as f:
         json.dump(out, f, indent=0, sort_keys=True)
         f.write("\n")

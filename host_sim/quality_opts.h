@@ -4,8 +4,8 @@
 #define QUALITY_OPTS_H
 
 struct quality_opts {
-    double min_psnr;           /* --min-psnr DB, 0: not given */
-    int target;                /* --target, 0: not given (QUALITY_*) */
+    double min_psnr; /* --min-psnr DB, 0: not given */
+    int target;      /* --target, 0: not given (QUALITY_*) */
 };
 
 /* Option NAME with VAL into q: 0, 1 when NAME is not one of these, or 2

@@ -12,8 +12,16 @@
 
 /* ---- the cost model (tools/quality/cost_model.def) -------------------------- */
 
-struct base_row { const char *target, *cls, *numeric; double per_work; int scenes; };
-struct method_row { const char *target, *cls, *numeric, *options; double factor; int scenes; };
+struct base_row {
+    const char *target, *cls, *numeric;
+    double per_work;
+    int scenes;
+};
+struct method_row {
+    const char *target, *cls, *numeric, *options;
+    double factor;
+    int scenes;
+};
 
 static const struct base_row base_rows[] = {
 #define QUALITY_BASE(target, cls, numeric, per_work, scenes) { target, cls, numeric, per_work, scenes },
@@ -51,7 +59,9 @@ int quality_parse_psnr(const char *s, double *db)
 
 /* ---- scene text: tokens, blocks, options (tools/charts/scenetext.py) ---------- */
 
-struct tok { size_t a, b; };
+struct tok {
+    size_t a, b;
+};
 
 static int is_punct(char c) { return c == '{' || c == '}' || c == '(' || c == ')' || c == '=' || c == ',' || c == ';'; }
 
@@ -64,7 +74,10 @@ static long tokens(const char *t, size_t n, struct tok **out)
     while (i < n) {
         size_t s = i;
         char c = t[i];
-        if (isspace((unsigned char)c)) { i++; continue; }
+        if (isspace((unsigned char)c)) {
+            i++;
+            continue;
+        }
         if (c == '#' || (c == '/' && i + 1 < n && t[i + 1] == '/')) {
             while (i < n && t[i] != '\n') i++;
             continue;
@@ -252,7 +265,9 @@ static int scene_sets(const char *text, size_t len, const char *renderer, const 
 
 /* ---- renders ------------------------------------------------------------------- */
 
-struct frames { unsigned n, f[4]; };
+struct frames {
+    unsigned n, f[4];
+};
 
 /* Up to four frames: all of them, or 0, n/3, 2n/3, n-1. */
 static void pick_frames(unsigned total, struct frames *fr)
@@ -270,8 +285,8 @@ static void pick_frames(unsigned total, struct frames *fr)
 }
 
 struct render_out {
-    uint8_t *rgb;              /* fr.n frames of w*h*3 */
-    double work;               /* the scene's work a frame (see quality.h) */
+    uint8_t *rgb; /* fr.n frames of w*h*3 */
+    double work;  /* the scene's work a frame (see quality.h) */
     int num_frac;
 };
 
@@ -322,9 +337,7 @@ static int render_text(const struct quality_request *rq, const char *text, size_
         }
         for (unsigned y0 = 0; y0 < h && !rc; y0 += rows) {
             unsigned y1 = y0 + rows < h ? y0 + rows : h;
-            struct render_target t = { .width = (uint16_t)w, .height = (uint16_t)h, .y0 = (uint16_t)y0,
-                                       .y1 = (uint16_t)y1, .rgb565 = fb + (size_t)y0 * w,
-                                       .rgb888 = rgb + (size_t)y0 * w * 3 };
+            struct render_target t = { .width = (uint16_t)w, .height = (uint16_t)h, .y0 = (uint16_t)y0, .y1 = (uint16_t)y1, .rgb565 = fb + (size_t)y0 * w, .rgb888 = rgb + (size_t)y0 * w * 3 };
             if (api->render_strip(&ctx, &t, &st)) {
                 snprintf(msg, msglen, "rows %u..%u of frame %u failed", y0, y1, fr->f[k]);
                 rc = -1;
@@ -346,7 +359,7 @@ struct cand {
     const struct method_row *m;
     double predicted, psnr;
     unsigned worst_frame;
-    int num_frac, failed;      /* failed: did not render (msg) */
+    int num_frac, failed; /* failed: did not render (msg) */
     char msg[200];
 };
 
@@ -467,7 +480,7 @@ int quality_choose(const struct quality_request *rq, struct quality_choice *ch, 
         char val[64];
         if (in.textured && !scene_sets(rq->text, rq->len, renderer, "texture.filter=x", val, sizeof val))
             ref_text = quality_set_option(rq->text, rq->len, renderer, "texture.filter=trilinear", &ref_len);
-        if (in.shadows) {   /* exact hard shadows: the stencil volumes */
+        if (in.shadows) { /* exact hard shadows: the stencil volumes */
             static const char *const vol[] = { "shadows=off", "shadow_volumes=on" };
             for (int k = 0; k < 2; k++) {
                 size_t nl;
@@ -481,7 +494,7 @@ int quality_choose(const struct quality_request *rq, struct quality_choice *ch, 
             if (!ref_text) rc = QUALITY_EINTERNAL, snprintf(err, errlen, "out of memory");
         }
         if (!rc && render_text(rq, ref_text ? ref_text : rq->text, ref_text ? ref_len : rq->len, "double", 1, &fr, &ref,
-                        msg, sizeof msg)) {
+                               msg, sizeof msg)) {
             snprintf(err, errlen, "%s", msg);
             rc = QUALITY_EINPUT;
         }
@@ -593,7 +606,8 @@ int quality_choose(const struct quality_request *rq, struct quality_choice *ch, 
                 else {
                     fmt_db(db, sizeof db, y->psnr);
                     fprintf(rq->report, "quality: the next cheaper, %s (predicted %s), measures %s on frame %u, "
-                                        "below %.1f dB\n", shown(yo), cost, db, y->worst_frame, rq->min_psnr);
+                                        "below %.1f dB\n",
+                            shown(yo), cost, db, y->worst_frame, rq->min_psnr);
                 }
             } else {
                 fprintf(rq->report, "quality: it is the cheapest candidate\n");

@@ -30,7 +30,9 @@
 #include <stddef.h>
 #include <stdio.h>
 
-enum { QUALITY_M0PLUS = 1, QUALITY_M4F = 2, QUALITY_RP2040 = 3 };
+enum { QUALITY_M0PLUS = 1,
+       QUALITY_M4F = 2,
+       QUALITY_RP2040 = 3 };
 
 /* "m0plus", "m4f", "rp2040" for 1..3; NULL otherwise */
 const char *quality_target_name(int target);
@@ -41,30 +43,31 @@ int quality_target_of(const char *name);
 int quality_parse_psnr(const char *s, double *db);
 
 struct quality_request {
-    const char *path;          /* the scene file, for messages */
-    const char *text;          /* its text, len bytes */
+    const char *path; /* the scene file, for messages */
+    const char *text; /* its text, len bytes */
     size_t len;
     unsigned width, height, strip_rows;
-    const char *numeric;       /* the image's: "fixed" (the scene's own format), "float" or "double" */
-    int target;                /* QUALITY_* */
-    double min_psnr;           /* dB */
-    const char *why;           /* where the target comes from, for the report ("--min-psnr", ...) */
-    int line, col;             /* the quality block's place (0: the command line), for messages */
-    FILE *report;              /* the report's lines (NULL: none) */
+    const char *numeric; /* the image's: "fixed" (the scene's own format), "float" or "double" */
+    int target;          /* QUALITY_* */
+    double min_psnr;     /* dB */
+    const char *why;     /* where the target comes from, for the report ("--min-psnr", ...) */
+    int line, col;       /* the quality block's place (0: the command line), for messages */
+    FILE *report;        /* the report's lines (NULL: none) */
 };
 
 struct quality_choice {
-    char *text;                /* the scene text with the chosen options (malloc; quality_free) */
+    char *text; /* the scene text with the chosen options (malloc; quality_free) */
     size_t len;
-    char options[256];         /* the options set, "KEY=VALUE ..." ("" : the scene as written) */
-    double predicted;          /* cost a frame on the target: instructions (m0plus, m4f) or cycles (rp2040) */
-    double psnr;               /* measured, the minimum over the frames checked (INFINITY: identical) */
-    int num_frac;              /* fixed point: the format rendered in; 0 otherwise */
-    int candidates, rendered;  /* candidates considered, and rendered before the choice */
+    char options[256];        /* the options set, "KEY=VALUE ..." ("" : the scene as written) */
+    double predicted;         /* cost a frame on the target: instructions (m0plus, m4f) or cycles (rp2040) */
+    double psnr;              /* measured, the minimum over the frames checked (INFINITY: identical) */
+    int num_frac;             /* fixed point: the format rendered in; 0 otherwise */
+    int candidates, rendered; /* candidates considered, and rendered before the choice */
 };
 
 /* What quality_choose returns besides 0. */
-enum { QUALITY_EINPUT = 2, QUALITY_EINTERNAL = 1 };
+enum { QUALITY_EINPUT = 2,
+       QUALITY_EINTERNAL = 1 };
 
 /* Chooses (above). 0 with *ch filled; QUALITY_EINPUT with one line in err
  * (no candidate meets the target: the best one named; no cost model for the

@@ -450,10 +450,27 @@ int quality_choose(const struct quality_request *rq, struct quality_choice *ch, 
             }
         if (keep) c[nc++].m = m;
     }
-    if (!base || nc == 0) {
+    char book[PART];
+    int line = rq->line ? rq->line : 1, col = rq->line ? rq->col : 1;
+    if (in.kind != SCENE_RAYTRACE && scene_sets(rq->text, rq->len, renderer, "book_exact=x", book, sizeof book) &&
+        strcmp(book, "off") && strcmp(book, "0") && strcmp(book, "false") && strcmp(book, "no")) {
         free(c);
-        snprintf(err, errlen, "%s:1:1: error: no cost model for a %s scene (%s) in %s on %s (tools/quality/cost_model.def)",
-                 rq->path, cls, renderer, rq->numeric, tname);
+        snprintf(err, errlen, "%s:%d:%d: error: the scene sets book_exact = %s: the book's path has no methods to "
+                              "choose (the candidates are the default path's: book_exact = off)",
+                 rq->path, line, col, book);
+        return QUALITY_EINPUT;
+    }
+    if (!base) {
+        free(c);
+        snprintf(err, errlen,
+                 "%s:%d:%d: error: no cost model for a %s scene (%s) in %s on %s (tools/quality/cost_model.def)",
+                 rq->path, line, col, cls, renderer, rq->numeric, tname);
+        return QUALITY_EINPUT;
+    }
+    if (nc == 0) {
+        free(c);
+        snprintf(err, errlen, "%s:%d:%d: error: every candidate method would change %s, which the scene sets",
+                 rq->path, line, col, why_kept);
         return QUALITY_EINPUT;
     }
     struct frames fr;

@@ -55,7 +55,7 @@ TESTS += tests/system/test_scene_fuzz.sh:$(FUZZ_SCENE):$(FUZZ_SECONDS)
 # With an accuracy target (--min-psnr, the scene's quality block) it renders
 # the candidate methods on this host (tools/quality): every core bundle.
 $(SCENEC): $(call obj,host,double,tools/scenec/scenec.c tools/common/file_id.c tools/scene/scene_format.c $(SCENE_PARSER_SRCS)) \
-           $(call obj,host,none,tools/quality/quality.c host_sim/compare.c) $(call core_bundles,host) \
+           $(call obj,host,none,tools/quality/quality.c) $(call core_bundles,host) \
            $(call core_frac_bundles,host)
 	@mkdir -p $(@D)
 	$(Q)$(CC) -Wl,--wrap=fopen -o $@ $^ $(PNG_LIBS) -lm

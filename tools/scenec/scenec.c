@@ -884,6 +884,28 @@ static int choose_methods(struct args *a, char **text, size_t *len, struct scene
         fprintf(stderr, "%s\n", err);
         return rc == QUALITY_EINPUT ? 2 : 1;
     }
+    /* --target-work is the scene's as written: it stays only when the chosen
+       methods need the same work memory on this host (else this host's, an
+       upper bound) */
+    if (a->target_work >= 0 && strcmp(ch.text, *text)) {
+        size_t before = 0, after = 0, sb = 0, sa = 0;
+        void *fs = NULL;
+        if (!core_api_fixed12.scene_parse(a->path, *text, *len, &fs, err, sizeof err)) {
+            before = core_api_fixed12.work_size(fs, (uint16_t)a->width, (uint16_t)a->height, (uint16_t)a->strip);
+            sb = core_api_fixed12.sibling_work_size(fs, (uint16_t)a->width, (uint16_t)a->height, (uint16_t)a->strip);
+            core_api_fixed12.scene_free(fs);
+        }
+        if (!core_api_fixed12.scene_parse(a->path, ch.text, ch.len, &fs, err, sizeof err)) {
+            after = core_api_fixed12.work_size(fs, (uint16_t)a->width, (uint16_t)a->height, (uint16_t)a->strip);
+            sa = core_api_fixed12.sibling_work_size(fs, (uint16_t)a->width, (uint16_t)a->height, (uint16_t)a->strip);
+            core_api_fixed12.scene_free(fs);
+        }
+        if (!before || before != after || sb != sa) {
+            printf("quality: the chosen methods change the work memory (this host's %zu bytes, as written %zu): "
+                   "this host's sizes, an upper bound, instead of --target-work\n", after, before);
+            a->target_work = a->target_sibling = -1;
+        }
+    }
     free(*text);
     *text = ch.text;
     *len = ch.len;

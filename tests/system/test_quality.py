@@ -111,6 +111,15 @@ def main():
                 ok3 = ok3 and "the quality block at" in r3.stdout and "RP2040" in r3.stdout
             report("quality_scenec_compiles_the_choice", bool(ok3), (r3.stdout + r3.stderr)[-300:])
 
+            # the work memory measured on the target for the scene as written does not hold the
+            # chosen methods': this host's (an upper bound) instead
+            r4 = run([scenec, "--target-work", "1000:1000", "-o", outc, BALL])
+            with open(outc[:-1] + "h") as f:
+                h = f.read()
+            ok4 = r4.returncode == 0 and "instead of --target-work" in r4.stdout and \
+                re.search(r"WORK_SIZE +1000\b", h) is None
+            report("quality_scenec_work_of_the_choice", ok4, (r4.stdout + r4.stderr)[-300:])
+
         # every frame checked meets the target: the textured cube's choice for 30 dB on the M0+
         cube = open("firmware/scenes/bench/cube-textured.scene").read()
         c = quality.choose(host_sim, cube, "m0plus", 30)

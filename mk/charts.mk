@@ -29,8 +29,8 @@ TEST_DEPS += $(TEST_NEEDS_test_stability)
 # The scene compiler's choices for accuracy targets (tools/quality): its cost
 # model against the committed lab rows, each lab scene's choices within 10 %
 # of the cheapest candidate meeting the target, the quality block end to end.
-TESTS += tests/system/test_quality.py:$(BUILD)/host_sim:$(SCENEC)
-TEST_DEPS += $(SCENEC)
+TESTS += tests/system/test_quality.py:$(BUILD)/host_sim:$(SCENEC):$(BUILD)/asan/host_sim
+TEST_DEPS += $(SCENEC) $(BUILD)/asan/host_sim
 
 # Accuracy fields of the scene measurements (contract: psnr, ssim, max_err,
 # pct_diff against the double build), added once every bench step has run.

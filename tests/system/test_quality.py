@@ -19,7 +19,9 @@
 - scenec compiles the choice (the emitted options), and host_sim renders the
   same image with the block as with the chosen options written;
 - bad input: the scene format's one-line error and exit status 2, no output.
-usage: test_quality.py HOST_SIM SCENEC
+The lab's choices run on HOST_SIM (the optimised build, as make charts), the
+rest on ASAN_HOST_SIM (default HOST_SIM).
+usage: test_quality.py HOST_SIM SCENEC [ASAN_HOST_SIM]
 """
 import json
 import math
@@ -57,10 +59,11 @@ def no_block(text):
 
 
 def main():
-    if len(sys.argv) != 3:
-        print("usage: test_quality.py HOST_SIM SCENEC", file=sys.stderr)
+    if len(sys.argv) not in (3, 4):
+        print("usage: test_quality.py HOST_SIM SCENEC [ASAN_HOST_SIM]", file=sys.stderr)
         return 2
     host_sim, scenec = sys.argv[1], sys.argv[2]
+    lab_host_sim = host_sim
     os.chdir(ROOT)
 
     r = run([sys.executable, "tools/quality/cost_model.py", "model", "--fixture", FIXTURE,
@@ -70,10 +73,11 @@ def main():
     with open(FIXTURE) as f:
         fx = json.load(f)
     fpsnr = {n: s["psnr_frames"] for n, s in fx["scenes"].items() if "psnr_frames" in s}
-    for e in quality.check(host_sim, "firmware/scenes", fx["rows"], log=None, fpsnr=fpsnr):
+    for e in quality.check(lab_host_sim, "firmware/scenes", fx["rows"], log=None, fpsnr=fpsnr):
         report("quality_choice_%s_%s_%g" % (re.sub(r"\W", "_", e["scene"]), e["target"], e["min_psnr"]), e["ok"],
                e["why"])
 
+    host_sim = sys.argv[3] if len(sys.argv) == 4 else host_sim
     with tempfile.TemporaryDirectory(prefix="cgfs-test-quality-") as tmp:
         with open(BALL) as f:
             ball = f.read()

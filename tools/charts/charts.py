@@ -104,6 +104,18 @@ def pareto(a, outdir):
                             textcoords="offset points", color="crimson", weight="bold")
                 lines.append("%d  %s: %.4g M, %s" % (k, r["variant"], r["cost"] / 1e6,
                                                      "identical" if r["psnr"] is None else "%.1f dB" % r["psnr"]))
+            # the frontier of the methods the scene compiler considers (fixed point in the
+            # scene's own format, 16-row strips: tools/charts/quality.py)
+            cq = quality_frontier(a, scene, t, rows)
+            if cq:
+                xs, ys = [], []
+                for r in cq:
+                    if xs:
+                        xs.append(r["cost"])
+                        ys.append(ys[-1])
+                    xs.append(r["cost"])
+                    ys.append(plot_psnr(r["psnr"]))
+                ax.plot(xs, ys, color="k", lw=0.9, ls="--", zorder=2)
             for r in pts:
                 if r.get("chosen_for"):
                     ax.scatter(r["cost"], plot_psnr(r["psnr"]), s=160, marker="*", facecolors="none",
@@ -125,6 +137,9 @@ def pareto(a, outdir):
         axes[0][0].set_ylabel("PSNR vs double exact (dB; identical at %g)" % IDENTICAL)
         for n, c in NUM_COLOURS.items():
             axes[0][0].scatter([], [], color=c, label=n)
+        axes[0][0].plot([], [], color="k", lw=0.9, ls="--", label="frontier of the compiler's candidates")
+        axes[0][0].scatter([], [], s=160, marker="*", facecolors="none", edgecolors="k",
+                           label="the compiler's choice (>= target dB)")
         axes[0][0].legend(fontsize=7, loc="lower right")
         fig.suptitle("%s, %dx%d: cost against accuracy of every variant; numbered: the Pareto frontier; "
                      "star: the scene compiler's choice for an accuracy target"
@@ -132,6 +147,19 @@ def pareto(a, outdir):
         fig.subplots_adjust(bottom=0.16 + 0.03 * longest)
         save(fig, outdir, "pareto-" + scene.replace("/", "-"))
     return rows
+
+
+def quality_frontier(a, scene, target, rows):
+    """The frontier of the scene compiler's candidates on a target, by cost
+    (the RP2040's: none, its rows are the firmware images')."""
+    s = next((x for x in lab.LAB if x.name == scene and x.quality), None)
+    if s is None or target == "rp2040-sim" or a.lab_scenes:
+        return []
+    with open(os.path.join(a.scenes, scene + ".scene")) as f:
+        text = f.read()
+    cands = list(quality.candidates(rows, s, text, target).values())
+    return sorted((r for r in cands if not any(o["cost"] < r["cost"] and lab.psnr_value(o["psnr"]) >=
+                                                lab.psnr_value(r["psnr"]) for o in cands)), key=lambda r: r["cost"])
 
 
 def quality_choices(a, outdir, rows):

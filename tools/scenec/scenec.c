@@ -622,6 +622,9 @@ static const char help_text[] =
     "                                target's (K = 1024 bytes, M = 1024 K)\n"
     "  --flash-budget N[K|M]         flash the scene's const data may take instead of the\n"
     "                                target's\n"
+    "  --chosen-scene FILE           with an accuracy target: also write the scene text with\n"
+    "                                the chosen options (for the work probe)\n"
+    "  --work-of-choice              --target-work was measured for the chosen options\n"
     "  --min-psnr DB                 choose the scene's methods for this accuracy (PSNR\n"
     "                                against double's exact render, 1..200): the cheapest on\n"
     "                                --target (m0plus, m4f or rp2040; default: the scene's\n"
@@ -645,6 +648,8 @@ struct args {
     int ram_given, flash_given;
     int target_given;             /* --target given */
     double min_psnr;              /* --min-psnr, 0: not given */
+    const char *chosen_scene;     /* --chosen-scene: the scene text with the chosen options */
+    int work_of_choice;           /* --work-of-choice: --target-work is the chosen methods' */
 };
 
 /* --fracs 20,...,12 into a->fracs; 0, or -1 for a malformed list */
@@ -725,10 +730,10 @@ static int parse_args(int argc, char **argv, struct args *a)
     static const int all_fracs[] = { 20, 19, 18, 17, 16, 15, 14, 13, 12 };
     static const char *const with_arg[] = { "--size", "--strip-rows", "--fracs", "--id", "--target-work",
                                             "--deps", "--target", "--ram-budget", "--flash-budget", "--min-psnr",
-                                            "-o", NULL };
+                                            "--chosen-scene", "-o", NULL };
     static const char *const all[] = { "--size", "--strip-rows", "--fracs", "--id", "--target-work",
                                        "--deps", "--target", "--ram-budget", "--flash-budget", "--min-psnr",
-                                       "--allow-wide", "--help", NULL };
+                                       "--chosen-scene", "--work-of-choice", "--allow-wide", "--help", NULL };
     memset(a, 0, sizeof *a);
     a->width = a->height = 240;
     a->strip = 16;
@@ -745,6 +750,10 @@ static int parse_args(int argc, char **argv, struct args *a)
         }
         if (!strcmp(opt, "--allow-wide")) {
             a->allow_wide = 1;
+            continue;
+        }
+        if (!strcmp(opt, "--work-of-choice")) {
+            a->work_of_choice = 1;
             continue;
         }
         int takes = 0;
@@ -826,6 +835,8 @@ static int parse_args(int argc, char **argv, struct args *a)
             }
             a->target = &targets[k];
             a->target_given = 1;
+        } else if (!strcmp(opt, "--chosen-scene")) {
+            a->chosen_scene = val;
         } else if (!strcmp(opt, "--min-psnr")) {
             if (quality_parse_psnr(val, &a->min_psnr))
                 return usage_error("bad --min-psnr '%s' (a PSNR in dB, 1 .. 200)", val);
@@ -887,7 +898,17 @@ static int choose_methods(struct args *a, char **text, size_t *len, struct scene
     /* --target-work is the scene's as written: it stays only when the chosen
        methods need the same work memory on this host (else this host's, an
        upper bound) */
-    if (a->target_work >= 0 && strcmp(ch.text, *text)) {
+    if (a->chosen_scene) {
+        FILE *f = fopen(a->chosen_scene, "w");
+        int bad = !f || fwrite(ch.text, 1, ch.len, f) != ch.len;
+        if (f && fclose(f)) bad = 1;
+        if (bad) {
+            quality_free(&ch);
+            fprintf(stderr, "scenec: cannot write %s\n", a->chosen_scene);
+            return 1;
+        }
+    }
+    if (a->target_work >= 0 && !a->work_of_choice && strcmp(ch.text, *text)) {
         size_t before = 0, after = 0, sb = 0, sa = 0;
         void *fs = NULL;
         if (!core_api_fixed12.scene_parse(a->path, *text, *len, &fs, err, sizeof err)) {

@@ -23,6 +23,8 @@
 #include "core_api.h"
 #include "host_sim/imgio.h"
 #include "host_sim/panel_out.h"
+#include "host_sim/quality_opts.h"
+#include "tools/quality/quality.h"
 #include "host_sim/window.h"
 #include "firmware/app/check_pattern.h"
 #include "firmware/app/font5x7.h"
@@ -96,6 +98,11 @@ static const char usage_text2[] =
     "                                the scene's own format\n"
     "  --max-memory N[K|M|G]         renderer work memory and the scene's textures allowed\n"
     "                                (default 1G)\n"
+    "  --min-psnr DB                 choose the scene's methods: the cheapest on --target that\n"
+    "                                renders within DB of double's exact render (tools/quality;\n"
+    "                                the choice on stderr; the scene's quality block otherwise)\n"
+    "  --target m0plus|m4f|rp2040    the target whose cost --min-psnr minimises (default: the\n"
+    "                                quality block's, else m0plus)\n"
     "  --max-cost N[K|M|G]           a frame's estimated work allowed: the ray tracer's\n"
     "                                ray-object tests, the rasterizer's triangle-strip\n"
     "                                visits and pixels (default 20G; docs/host_sim.md)\n"
@@ -133,6 +140,7 @@ struct opts {
     unsigned long long max_memory;   /* --max-memory: renderer work memory, bytes */
     double max_cost;           /* --max-cost: a frame's estimated work (check_cost) */
     unsigned width, height, frames, strip_rows;
+    struct quality_opts quality;   /* --min-psnr, --target */
 };
 
 static int fail(int code, const char *fmt, ...) __attribute__((format(printf, 2, 3)));
@@ -297,6 +305,8 @@ static int set_option(struct opts *o, const char *name, const char *val)
         o->board_spi_hz = (uint32_t)strtoul(val, NULL, 10);
         o->board_sys_hz = (uint32_t)strtoul(c + 1, NULL, 10);
         o->has_clocks = 1;
+    } else if (!strcmp(name, "--min-psnr") || !strcmp(name, "--target")) {
+        return quality_opts_set(&o->quality, name, val);
     } else if (!strcmp(name, "--inject-fault")) {
         if (!strcmp(val, "signal-in-write")) img_fault_signal_in_write = 1;   /* imgio's, not the panel's */
         else o->fault = val;
@@ -309,7 +319,7 @@ static const char *const option_names[] = {
     "--scene", "--panel", "--size", "--numeric", "--out", "--out-raw", "--out-rgb888",
     "--frames", "--backend", "--compare", "--strip-rows", "--inject-fault", "--num-frac",
     "--loop-frames", "--flush", "--window-scale", "--spi-dev", "--spi-hz", "--spi-mode", "--gpio-chip", "--dc",
-    "--rst", "--bl", "--rotation", "--max-memory", "--max-cost", "--pattern", "--miswire", "--board-clocks", NULL,
+    "--rst", "--bl", "--rotation", "--max-memory", "--max-cost", "--pattern", "--miswire", "--board-clocks", "--min-psnr", "--target", NULL,
     "--stats", "--summary", "--progressive", "--loop", "--fps-overlay", "--window", "--help", NULL,
 };
 
@@ -987,6 +997,46 @@ static int pick_core(struct run_state *r)
     return EXIT_OK;
 }
 
+/* An accuracy target (--min-psnr, --target, the scene's quality block): the
+ * methods chosen (tools/quality), written into the scene's text, which every
+ * core then parses; the report on stderr. */
+static int choose_methods(struct run_state *r)
+{
+    const struct opts *o = r->o;
+    const struct scene_info *in = &r->c->info;
+    double psnr = o->quality.min_psnr ? o->quality.min_psnr : in->quality_psnr;
+    if (!psnr) {
+        if (o->quality.target) return fail(EXIT_USAGE, "--target needs --min-psnr (or a quality block in the scene)");
+        return EXIT_OK;
+    }
+    char why[160];
+    if (o->quality.min_psnr) snprintf(why, sizeof why, "--min-psnr");
+    else snprintf(why, sizeof why, "the quality block at %s:%d:%d", o->scene, in->quality_line, in->quality_col);
+    int target = o->quality.target ? o->quality.target : in->quality_target ? in->quality_target : QUALITY_M0PLUS;
+    struct quality_request rq = { .path = o->scene, .text = scene_text, .len = scene_len, .width = r->w,
+                                  .height = r->h, .strip_rows = r->rows, .numeric = r->numeric, .target = target,
+                                  .min_psnr = psnr, .why = why, .report = stderr,
+                                  .line = o->quality.min_psnr ? 0 : in->quality_line,
+                                  .col = o->quality.min_psnr ? 0 : in->quality_col };
+    struct quality_choice ch;
+    char err[768];
+    int rc = quality_choose(&rq, &ch, err, sizeof err);
+    if (rc) {
+        quality_free(&ch);
+        fprintf(stderr, "%s\n", err);
+        return rc == QUALITY_EINPUT ? EXIT_USAGE : EXIT_INTERNAL;
+    }
+    free(scene_text);
+    scene_text = ch.text;
+    scene_len = ch.len;
+    core_close(r->c);
+    memset(r->c, 0, sizeof *r->c);
+    if ((rc = core_open(r->c, !strcmp(r->numeric, "fixed") ? &core_api_double : core_api_by_name(r->numeric),
+                        o->scene)))
+        return rc;
+    return pick_core(r);
+}
+
 /* The ray tracer's work a frame, estimated before rendering (an upper
  * bound, docs/host_sim.md): rays (pixels x supersample^2, each followed
  * through recursion_depth reflections, each hit with a shadow ray per light)
@@ -1511,7 +1561,8 @@ static int run(const struct opts *o, struct core *c, struct core *ref, struct pa
     r.numeric = o->numeric ? o->numeric : "fixed";
     r.none = !strcmp(r.panel, "none");
     r.rotation = o->rotation;
-    if ((rc = check_usage(&r)) || (rc = open_scene(&r)) || (rc = pick_core(&r)) || (rc = open_panel(&r)) ||
+    if ((rc = check_usage(&r)) || (rc = open_scene(&r)) || (rc = pick_core(&r)) || (rc = choose_methods(&r)) ||
+        (rc = open_panel(&r)) ||
         (rc = setup_frames(&r)) || (rc = run_frames(&r)) || (rc = finish_panel(&r)))
         return rc;
     if (o->compare && (rc = compare_ref(&r))) return rc;

@@ -26,6 +26,12 @@ TEST_NEEDS_test_stability := $(BUILD)/charts/bench/m0plus-qemu/fixed20/bench_fil
                              $(BUILD)/charts/bench/m0plus-qemu/fixed19/bench_file.elf
 TEST_DEPS += $(TEST_NEEDS_test_stability)
 
+# The scene compiler's choices for accuracy targets (tools/quality): its cost
+# model against the committed lab rows, each lab scene's choices within 10 %
+# of the cheapest candidate meeting the target, the quality block end to end.
+TESTS += tests/system/test_quality.py:$(BUILD)/host_sim:$(SCENEC):$(BUILD)/asan/host_sim
+TEST_DEPS += $(SCENEC) $(BUILD)/asan/host_sim
+
 # Accuracy fields of the scene measurements (contract: psnr, ssim, max_err,
 # pct_diff against the double build), added once every bench step has run.
 .PHONY: bench-accuracy

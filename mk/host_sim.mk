@@ -9,6 +9,9 @@
 # scene's ranges call for (tools/scene/scene_format.c).
 
 HOST_SIM_SRCS := host_sim/main.c host_sim/imgio.c host_sim/panel_out.c host_sim/compare.c tools/common/file_id.c
+# --min-psnr, --target and the scene's quality block: methods chosen for an
+# accuracy target (tools/quality, its cost model tools/quality/cost_model.def)
+HOST_SIM_SRCS += host_sim/quality_opts.c tools/quality/quality.c
 # the frame-rate overlay's font (--fps-overlay), shared with the firmware
 HOST_SIM_SRCS += firmware/app/font5x7.c
 # --pattern check: the bring-up pattern of the cgfs-check images

@@ -52,7 +52,11 @@ TESTS += tests/system/test_scene_fuzz.sh:$(FUZZ_SCENE):$(FUZZ_SECONDS)
 # literals) and linked with the NUM_FRAC 12 core bundle for render_work_size
 # (its fallback when the target's is not given). fopen is wrapped: scenec
 # --deps names every file the scene made it read (tools/scenec/scenec.c).
-$(SCENEC): $(call obj,host,double,tools/scenec/scenec.c tools/common/file_id.c tools/scene/scene_format.c $(SCENE_PARSER_SRCS)) $(BUILD)/host/core_fixed12.o
+# With an accuracy target (--min-psnr, the scene's quality block) it renders
+# the candidate methods on this host (tools/quality): every core bundle.
+$(SCENEC): $(call obj,host,double,tools/scenec/scenec.c tools/common/file_id.c tools/scene/scene_format.c $(SCENE_PARSER_SRCS)) \
+           $(call obj,host,none,tools/quality/quality.c) $(call core_bundles,host) \
+           $(call core_frac_bundles,host)
 	@mkdir -p $(@D)
 	$(Q)$(CC) -Wl,--wrap=fopen -o $@ $^ $(PNG_LIBS) -lm
 PROGRAMS += $(SCENEC)

@@ -17,7 +17,9 @@ LAYERS: a directory may include only from the directories listed for it.
     firmware/examples  the core and the HAL
     tools/scene        the parser: the core
     tools/core_api     the per-mode table: the core and the parser
-    tools/scenec       the parser, the core, tools/core_api, tools/common; never host_sim/
+    tools/scenec       the parser, the core, tools/core_api, tools/common, tools/quality;
+                       never host_sim/
+    tools/quality      methods chosen for an accuracy target: the core, the parser, tools/core_api
     tools/common       the host tools' shared helpers: nothing of the project's
     tools/bench        the core and the firmware's scene table
     host_sim, tests    anything below them
@@ -69,7 +71,8 @@ LAYERS = {
     "firmware/examples": (CORE, "hal") + HAL_BACKENDS,
     "tools/scene": (CORE,),
     "tools/core_api": (CORE, "tools/scene"),
-    "tools/scenec": (CORE, "tools/scene", "tools/core_api", "tools/bench", "tools/common"),
+    "tools/scenec": (CORE, "tools/scene", "tools/core_api", "tools/bench", "tools/common", "tools/quality"),
+    "tools/quality": (CORE, "tools/scene", "tools/core_api"),
     "tools/common": (),
     "tools/bench": (CORE, "firmware/app", "tools/scene"),
     "tools/flasher": (),

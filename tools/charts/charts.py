@@ -4,8 +4,12 @@
 
 pareto: the lab (tools/charts/lab.py): every variant of each lab scene, its
 cost on each emulated target against its accuracy versus the double build's
-exact render, the Pareto frontier marked. out/charts/pareto.csv and
-pareto-<scene>.{png,svg}.
+exact render, the Pareto frontier marked, and the variant the scene compiler
+chooses for each of the scene's accuracy targets (tools/charts/quality.py;
+column chosen_for, a star on the chart). out/charts/pareto.csv,
+pareto-<scene>.{png,svg}, quality.csv (the table of choices) and
+quality-lab.json (tools/quality/cost_model.py's fixture, compared with
+tests/data/quality/lab.json).
 
 formats: every scene of firmware/scenes at every fixed-point format Q19.12 …
 Q11.20 against the double build, the format the scene analysis chooses
@@ -20,11 +24,13 @@ import argparse
 import csv
 import math
 import os
+import subprocess
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import hostsim  # noqa: E402
 import lab  # noqa: E402
+import quality  # noqa: E402
 import sweeps  # noqa: E402
 
 import matplotlib  # noqa: E402
@@ -70,7 +76,8 @@ def pareto(a, outdir):
     L = lab.Lab(a.host_sim, a.build, a.jobs, rp2040=not a.no_rp2040, make=a.make)
     rows = L.run(a.scenes, a.lab_scenes.split(",") if a.lab_scenes else None)
     rows.sort(key=lambda r: (r["scene"], lab.TARGETS.index(r["target"]), r["cost"]))
-    write_csv(outdir, "pareto", lab.COLUMNS, rows)
+    choices = quality_choices(a, outdir, rows)
+    write_csv(outdir, "pareto", lab.COLUMNS + ["chosen_for"], rows)
     for scene in sorted({r["scene"] for r in rows}):
         rs = [r for r in rows if r["scene"] == scene]
         targets = [t for t in lab.TARGETS if any(r["target"] == t for r in rs)]
@@ -97,6 +104,29 @@ def pareto(a, outdir):
                             textcoords="offset points", color="crimson", weight="bold")
                 lines.append("%d  %s: %.4g M, %s" % (k, r["variant"], r["cost"] / 1e6,
                                                      "identical" if r["psnr"] is None else "%.1f dB" % r["psnr"]))
+            # the frontier of the methods the scene compiler considers (fixed point in the
+            # scene's own format, 16-row strips: tools/charts/quality.py)
+            cq = quality_frontier(a, scene, t, rows)
+            if cq:
+                xs, ys = [], []
+                for r in cq:
+                    if xs:
+                        xs.append(r["cost"])
+                        ys.append(ys[-1])
+                    xs.append(r["cost"])
+                    ys.append(plot_psnr(r["psnr"]))
+                ax.plot(xs, ys, color="k", lw=0.9, ls="--", zorder=2)
+            for r in pts:
+                if r.get("chosen_for"):
+                    ax.scatter(r["cost"], plot_psnr(r["psnr"]), s=160, marker="*", facecolors="none",
+                               edgecolors="k", linewidths=1.1, zorder=5)
+                    ax.annotate(">= " + " / ".join(r["chosen_for"].split()) + " dB", (r["cost"], plot_psnr(r["psnr"])),
+                                fontsize=7, xytext=(4, -10), textcoords="offset points", color="k")
+            chosen = [c for c in choices if c["scene"] == scene and quality.TARGETS_LAB.get(c["target"]) == t]
+            if chosen:
+                lines.append("")
+                lines += ["* %s >= %g dB: %s" % (c["target"], c["min_psnr"], c["options"] or "as written")
+                          for c in chosen]
             longest = max(longest, len(lines))
             ax.text(0.0, -0.19, "\n".join(lines), transform=ax.transAxes, va="top", ha="left", fontsize=7,
                     family="monospace", color="crimson")
@@ -107,12 +137,58 @@ def pareto(a, outdir):
         axes[0][0].set_ylabel("PSNR vs double exact (dB; identical at %g)" % IDENTICAL)
         for n, c in NUM_COLOURS.items():
             axes[0][0].scatter([], [], color=c, label=n)
+        axes[0][0].plot([], [], color="k", lw=0.9, ls="--", label="frontier of the compiler's candidates")
+        axes[0][0].scatter([], [], s=160, marker="*", facecolors="none", edgecolors="k",
+                           label="the compiler's choice (>= target dB)")
         axes[0][0].legend(fontsize=7, loc="lower right")
-        fig.suptitle("%s, %dx%d: cost against accuracy of every variant; numbered: the Pareto frontier"
+        fig.suptitle("%s, %dx%d: cost against accuracy of every variant; numbered: the Pareto frontier; "
+                     "star: the scene compiler's choice for an accuracy target"
                      % ((scene,) + lab.SIZE), fontsize=11)
         fig.subplots_adjust(bottom=0.16 + 0.03 * longest)
         save(fig, outdir, "pareto-" + scene.replace("/", "-"))
     return rows
+
+
+def quality_frontier(a, scene, target, rows):
+    """The frontier of the scene compiler's candidates on a target, by cost
+    (the RP2040's: none, its rows are the firmware images')."""
+    s = next((x for x in lab.LAB if x.name == scene and x.quality), None)
+    if s is None or target == "rp2040-sim" or a.lab_scenes:
+        return []
+    with open(os.path.join(a.scenes, scene + ".scene")) as f:
+        text = f.read()
+    cands = list(quality.candidates(rows, s, text, target).values())
+    return sorted((r for r in cands if not any(o["cost"] < r["cost"] and lab.psnr_value(o["psnr"]) >=
+                                                lab.psnr_value(r["psnr"]) for o in cands)), key=lambda r: r["cost"])
+
+
+def quality_choices(a, outdir, rows):
+    """The scene compiler's choices for the lab scenes' accuracy targets
+    (tools/charts/quality.py): chosen_for on rows, quality.csv, and the cost
+    model's fixture from this run (quality-lab.json)."""
+    if a.lab_scenes:
+        for r in rows:
+            r["chosen_for"] = ""
+        return []
+    fx = os.path.join(outdir, "quality-lab.json")
+    os.makedirs(outdir, exist_ok=True)
+    write_csv(outdir, "pareto", lab.COLUMNS, rows)
+    cm = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "quality", "cost_model.py")
+    r = subprocess.run([sys.executable, cm, "fixture", "--pareto", os.path.join(outdir, "pareto.csv"), "--host-sim",
+                        a.host_sim, "--scenes", a.scenes, "--out", fx])
+    if r.returncode == 0:
+        same = subprocess.run(["cmp", "-s", fx, "tests/data/quality/lab.json"]).returncode == 0
+        print("charts: %s %s tests/data/quality/lab.json%s" % (
+            fx, "matches" if same else "differs from",
+            "" if same else " (the committed cost model's data: cp %s tests/data/quality/lab.json, then "
+            "tools/quality/cost_model.py model --fixture tests/data/quality/lab.json --write "
+            "tools/quality/cost_model.def and make again)" % fx))
+    choices = quality.check(a.host_sim, a.scenes, rows)
+    write_csv(outdir, "quality", quality.COLUMNS, choices)
+    bad = [c for c in choices if not c["ok"]]
+    print("charts: the scene compiler's choices: %d of %d within %.0f %% of the cheapest candidate that meets the "
+          "target" % (len(choices) - len(bad), len(choices), 100 * (quality.LIMIT - 1)))
+    return choices
 
 
 def formats(a, outdir):

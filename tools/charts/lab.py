@@ -77,8 +77,63 @@ class LabScene:
     label, options); the firmware's frame 0 must equal host_sim's render of
     the variant (same_image)."""
 
-    def __init__(self, name, reference, variants, rp2040=()):
+    def __init__(self, name, reference, variants, rp2040=(), quality=None):
         self.name, self.reference, self.variants, self.rp2040 = name, reference, variants, list(rp2040)
+        self.quality = quality
+
+
+class LabQuality:
+    """What the scene compiler's choice for an accuracy target (tools/quality)
+    is checked on: the scene text it chooses for is the lab's scene with
+    `apply` set (the frame of reference every variant of the lab shares, as
+    written keys that stay) and `remove` taken out (keys the lab varies that
+    the scene writes, so that the compiler may choose them); cls is the
+    scene's class in tools/quality/cost_model.def; base the options of its
+    base method there (the lab variant whose cost per unit of work the class's
+    costs scale from); targets the accuracy targets (dB) marked on the charts
+    and pinned by tests/system/test_quality.py."""
+
+    def __init__(self, cls, targets, apply=(), remove=(), base=()):
+        self.cls, self.targets, self.apply, self.remove = cls, list(targets), list(apply), list(remove)
+        self.base = list(base)
+
+    def text(self, text):
+        for k in self.remove:
+            text = scenetext.remove(text, k)
+        return scenetext.apply(text, self.apply)
+
+
+# rows the cost model leaves out: other formats than the scene's own, other
+# strip heights (the board's RAM decides them), the preview pass, options
+# that compute another image (supersampling) or the same one with more work
+QUALITY_SKIP = ("pass=coarse", "supersample=", "adaptive_supersample=", "shortcuts=", "bvh=")
+
+
+def method_key(row, lab_scene, text, keys, board=False):
+    """The method of a pareto row as tools/quality names it: its options less
+    the scene's `apply` ones, with every key of `keys` (the keys the scene's
+    variants set) the scene writes and the row does not set added at the
+    written value, sorted; None for a row the compiler does not consider (a
+    book-path row of a book scene, another format or strip height, QUALITY_SKIP;
+    board: any format and strip height, as the RP2040 images run them)."""
+    q = lab_scene.quality
+    opts = [o for o in (row["options"] or "").split() if o]
+    if any(a not in opts for a in q.apply):
+        return None
+    if (not board and (int(row["strip"]) != 16 or " Q" in row["variant"])) or any(o.startswith(QUALITY_SKIP) for o in opts):
+        return None
+    opts = [o for o in opts if o not in q.apply]
+    have = {o.split("=")[0] for o in opts} | {a.split("=")[0] for a in q.apply}
+    for k in keys:
+        v = scenetext.written(text, k)
+        if k not in have and v is not None:
+            opts.append("%s=%s" % (k, v))
+    return " ".join(sorted(opts))
+
+
+def variant_keys(rows, scene):
+    """The keys the variants of a scene set (KEY or BLOCK.KEY)."""
+    return sorted({o.split("=")[0] for r in rows if r["scene"] == scene for o in (r["options"] or "").split() if o})
 
 
 RT_EXACT = ["adaptive_subsample=0", "subsample=1", "supersample=1", "adaptive_supersample=off"]
@@ -189,17 +244,24 @@ def shadow_map_variants():
 
 LAB = [
     LabScene("book/raytracer-02", RT_EXACT, rt_variants(False),
-             rp2040=[("cgfs-book-1core", "book", "book/raytracer-02", "", [])]),
+             rp2040=[("cgfs-book-1core", "book", "book/raytracer-02", "", [])],
+             quality=LabQuality("rt", (40, 60, 80))),
     LabScene("book/raytracer-05", RT_EXACT, rt_variants(True),
              rp2040=[("cgfs-rt-1core", "rt", "book/raytracer-05", "", []),
                      ("cgfs-rt-1core", "rt", "bench/raytracer-05-adaptive", "adaptive_subsample=4",
-                      ["adaptive_subsample=4"])]),
+                      ["adaptive_subsample=4"])],
+             quality=LabQuality("rt-reflective", (45, 57, 65))),
     LabScene("book/raster-11", RAS_DEFAULT + RAS_EXACT, raster_book_variants(False),
-             rp2040=[("cgfs-book-1core", "book", "book/raster-11", "book path", [])]),
-    LabScene("book/raster-13", RAS_DEFAULT + RAS_EXACT + ["texture.filter=trilinear"], raster_book_variants(True)),
+             rp2040=[("cgfs-book-1core", "book", "book/raster-11", "book path", [])],
+             quality=LabQuality("lit", (30, 45, 90), apply=RAS_DEFAULT)),
+    LabScene("book/raster-13", RAS_DEFAULT + RAS_EXACT + ["texture.filter=trilinear"], raster_book_variants(True),
+             quality=LabQuality("textured-npot", (20, 25, 60), apply=RAS_DEFAULT, remove=["texture.filter"],
+                                base=["texture.filter=nearest"])),
     LabScene("bench/cube-textured", ["perspective_step=1"], cube_variants(),
-             rp2040=[("cgfs-cube-1core", "cube", "bench/cube-textured", "N=16", [])]),
-    LabScene("demo/ch15-shadow-map", ["shadows=off", "shadow_volumes=on"] + RAS_EXACT, shadow_map_variants()),
+             rp2040=[("cgfs-cube-1core", "cube", "bench/cube-textured", "N=16", [])],
+             quality=LabQuality("textured", (30, 35, 45))),
+    LabScene("demo/ch15-shadow-map", ["shadows=off", "shadow_volumes=on"] + RAS_EXACT, shadow_map_variants(),
+             quality=LabQuality("shadows", (25, 28, 60), remove=["shadow_map_size", "pcf"])),
 ]
 
 # The RP2040 images: which scene set each links (mk/firmware.mk), rp2040sim

@@ -113,6 +113,49 @@ def set_option(text, opt):
     return text
 
 
+def remove(text, opt):
+    """The scene text without KEY (in the renderer block) or BLOCK.KEY (in
+    every BLOCK block): `key = value` taken out where it is given."""
+    block, dot, k = opt.rpartition(".")
+    if not dot:
+        block, k = renderer_block(text), opt
+    toks = _tokens(text)
+    cuts = []
+    for j, e in _blocks(toks, block):
+        depth = 0
+        for i in range(j + 1, e):
+            t = toks[i][2]
+            if t in "{(":
+                depth += 1
+            elif t in "})":
+                depth -= 1
+            elif depth == 0 and t == k and i + 2 < e and toks[i + 1][2] == "=" and toks[i + 2][2] not in "{(":
+                cuts.append((toks[i][0], toks[i + 2][1]))
+    for a, b in reversed(cuts):
+        text = text[:a] + text[b:]
+    return text
+
+
+def written(text, opt):
+    """The value the scene gives KEY (renderer block) or BLOCK.KEY (the first
+    BLOCK block that gives it), or None."""
+    block, dot, k = opt.rpartition(".")
+    if not dot:
+        block, k = renderer_block(text), opt
+    toks = _tokens(text)
+    for j, e in _blocks(toks, block):
+        depth = 0
+        for i in range(j + 1, e):
+            t = toks[i][2]
+            if t in "{(":
+                depth += 1
+            elif t in "})":
+                depth -= 1
+            elif depth == 0 and t == k and i + 2 < e and toks[i + 1][2] == "=":
+                return toks[i + 2][2]
+    return None
+
+
 def apply(text, options):
     """The scene text with every option of the list (or comma-joined string) set."""
     if isinstance(options, str):

@@ -80,6 +80,22 @@ static void info(const void *scene, struct scene_info *out)
         }
     }
     out->texture_bytes = tb;
+    struct scene_quality q;
+    scene_quality(s, &q);
+    out->quality_psnr = q.psnr;
+    out->quality_target = q.target;
+    out->quality_line = q.line;
+    out->quality_col = q.col;
+    out->textured = !rt && s->ntextures > 0;
+    out->npot_texture = 0;
+    for (unsigned t = 0; !rt && t < s->ntextures; t++) {
+        unsigned w = s->textures[t].w, h = s->textures[t].h;
+        if ((w & (w - 1)) || (h & (h - 1))) out->npot_texture = 1;
+    }
+    out->reflective = 0;
+    for (unsigned i = 0; rt && s->rt.recursion_depth && i < s->nobjects; i++)
+        if (num_to_double(s->objects[i].mat.reflective) > 0) out->reflective = 1;
+    out->shadows = !rt && (s->ras.shadow_map || s->ras.shadow_volume);
 }
 
 static size_t work_size(const void *scene, uint16_t w, uint16_t h, uint16_t strip_rows)

@@ -33,6 +33,15 @@ struct scene_info {
     uint16_t shadow_map;       /* chapter 15's shadow map: its side (0: none) */
     /* both: the texels the scene holds, every mip level (host_sim's --max-memory) */
     size_t texture_bytes;
+    /* the scene's quality block (scene_parse.h's struct scene_quality):
+     * psnr 0 when it has none; target 0 none, 1 m0plus, 2 m4f, 3 rp2040;
+     * where the block starts */
+    double quality_psnr;
+    int quality_target, quality_line, quality_col;
+    /* rasterizer: the scene has textures (one of them not a power of two a
+     * side: the span loops leave it to the per-pixel filler), chapter 15's
+     * shadows; ray tracer: reflective objects and reflections traced */
+    uint8_t textured, npot_texture, shadows, reflective;
 };
 
 /* What scene_load, scene_parse and scene_read return besides 0

@@ -109,6 +109,7 @@ struct parser {
     int oom;                /* the failure was an allocation */
     FILE *files[3];         /* files being read (open_file), closed when the parse fails */
     void *scratch[8];       /* a model file's temporary buffers (malloc) */
+    struct scene_quality quality;   /* the quality block (scene_quality) */
 };
 
 static void set_error(struct parser *p, const char *file, int line, int col, const char *fmt, va_list ap)
@@ -2485,6 +2486,20 @@ static void read_kind(struct parser *p, const struct top *t, const struct build 
     }
 }
 
+/* quality { psnr = DB target = m0plus|m4f|rp2040 }: the accuracy the
+ * compiler chooses methods for (tools/quality); the renderers never see it. */
+static void read_quality(struct parser *p, const struct node *n)
+{
+    static const char *const keys[] = { "psnr", "target", NULL };
+    static const char *const targets[] = { "m0plus", "m4f", "rp2040", NULL };
+    const struct node *v[2];
+    fields(p, n, "quality", keys, v);
+    p->quality.psnr = get_num_range(p, need(p, n, v[0], "quality", "psnr"), "quality psnr", 1, 200);
+    p->quality.target = v[1] ? get_choice(p, v[1], "quality target", targets) + 1 : 0;
+    p->quality.line = n->kline;
+    p->quality.col = n->kcol;
+}
+
 static void read_scene(struct parser *p, const struct node *top, struct scene *s, const char *default_name)
 {
     struct top t;
@@ -2493,6 +2508,7 @@ static void read_scene(struct parser *p, const struct node *top, struct scene *s
     b.s = s;
     check_top(p, top, &t, &b);
     read_view(p, &t, s, default_name);
+    if (t.single[TOP_quality]) read_quality(p, t.single[TOP_quality]);
     /* the options: the book's defaults (scene_options.def); depth_bits 0 is chosen from the scene's
        depth range after parsing, unless given */
     set_defaults(&s->rt, rt_option_rows, NROWS(rt_option_rows));
@@ -2565,6 +2581,7 @@ int scene_given_zero(const struct scene *s, int frac, const char *path, char *ms
 struct scene_box {
     struct scene s;          /* first: scene_free() gets this pointer */
     struct arena arena;
+    struct scene_quality quality;
 };
 
 static int parse(const char *file, const char *dir, const char *text, size_t len, struct scene **out, char *err,
@@ -2610,6 +2627,7 @@ static int parse(const char *file, const char *dir, const char *text, size_t len
     if (box->s.kind == SCENE_RASTER && box->s.ras.depth_bits == 0)
         box->s.ras.depth_bits = (uint8_t)scene_depth_bits(&box->s, NULL, NULL, NULL);
     box->arena = p->arena;
+    box->quality = p->quality;
     free(p);
     *out = &box->s;
     return 0;
@@ -2786,6 +2804,11 @@ int scene_load(const char *path, struct scene **out, char *err, size_t errlen)
     /* the scene keeps no pointer into the text */
     free(buf);
     return rc;
+}
+
+void scene_quality(const struct scene *s, struct scene_quality *q)
+{
+    *q = ((const struct scene_box *)s)->quality;
 }
 
 void scene_free(struct scene *s)

@@ -56,6 +56,17 @@ int scene_parse_mem(const char *name, const char *text, size_t len, struct scene
 
 void scene_free(struct scene *s);
 
+/* The scene's quality block (`quality { psnr = DB target = NAME }`): the
+ * accuracy its methods are chosen for (tools/quality, docs/scene-format.md).
+ * psnr 0: no block; target 0: none given, 1 m0plus, 2 m4f, 3 rp2040; line
+ * and col: where the block starts. Of a scene this parser returned. */
+struct scene_quality {
+    double psnr;
+    int target;
+    int line, col;
+};
+void scene_quality(const struct scene *s, struct scene_quality *q);
+
 /* Bits of the default path's depth buffer (near/z) a rasterized scene
  * needs: 16 when a 16-bit step at the farthest depth any instance reaches
  * (far^2 / (near * 65536)) is at most 1/256 of the smallest instance's

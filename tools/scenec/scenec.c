@@ -3,7 +3,7 @@
  *
  *   scenec [--size WxH] [--strip-rows N] [--fracs 20,...,12] [--id NAME]
  *          [--allow-wide] [--target-work BYTES[:SIBLING]] [--deps OUT.d]
- *          [--target NAME] [--ram-budget N[K|M]] [--flash-budget N[K|M]] -o OUT.c SCENE
+ *          [--target NAME] [--ram-budget N[K|M]] [--flash-budget N[K|M]] [--min-psnr DB] -o OUT.c SCENE
  *
  * Writes OUT.c (the scene as const data: models, textures, lights in flash;
  * one static work buffer of exactly render_work_size() bytes) and OUT.h (its
@@ -28,6 +28,11 @@
  * every file it made scenec read (images, model and material files), each of
  * those also a target of its own, so that a file that is gone later asks for
  * a new run instead of stopping make (as cc -MMD -MP).
+ * --min-psnr DB (or the scene's quality block) chooses the scene's methods
+ * first (tools/quality): the cheapest on --target (the block's target, else
+ * m0plus) that renders within DB of the double build's exact render; the
+ * choice is printed and compiled, so the board shows what host_sim shows
+ * with the same target.
  */
 #define _XOPEN_SOURCE 700   /* realpath */
 #include <errno.h>
@@ -45,6 +50,7 @@
 #include "scene_format.h"
 #include "scene_parse.h"
 #include "suggest.h"
+#include "tools/quality/quality.h"
 
 /* the fixed-point core at NUM_FRAC 12 (mk/scene.mk): it loads every scene any
  * format can hold, and the work layout does not depend on NUM_FRAC */
@@ -616,6 +622,14 @@ static const char help_text[] =
     "                                target's (K = 1024 bytes, M = 1024 K)\n"
     "  --flash-budget N[K|M]         flash the scene's const data may take instead of the\n"
     "                                target's\n"
+    "  --chosen-scene FILE           with an accuracy target: also write the scene text with\n"
+    "                                the chosen options (for the work probe)\n"
+    "  --work-of-choice              --target-work was measured for the chosen options\n"
+    "  --min-psnr DB                 choose the scene's methods for this accuracy (PSNR\n"
+    "                                against double's exact render, 1..200): the cheapest on\n"
+    "                                --target (m0plus, m4f or rp2040; default: the scene's\n"
+    "                                quality block's, else m0plus); the scene's quality block\n"
+    "                                does the same without it\n"
     "  -h, --help                    this text\n"
     "exit status: 0 ok, 1 internal or output error, 2 usage or input error (scene errors\n"
     "             as FILE:LINE:COLUMN: error: MESSAGE; a scene no format holds; a\n"
@@ -632,6 +646,10 @@ struct args {
     const struct target *target;
     long long ram_budget, flash_budget;   /* -1: none; from --target unless given */
     int ram_given, flash_given;
+    int target_given;             /* --target given */
+    double min_psnr;              /* --min-psnr, 0: not given */
+    const char *chosen_scene;     /* --chosen-scene: the scene text with the chosen options */
+    int work_of_choice;           /* --work-of-choice: --target-work is the chosen methods' */
 };
 
 /* --fracs 20,...,12 into a->fracs; 0, or -1 for a malformed list */
@@ -711,10 +729,11 @@ static int parse_args(int argc, char **argv, struct args *a)
     /* every format the renderers are checked at (tests/unit/test_scene_fracs.c) */
     static const int all_fracs[] = { 20, 19, 18, 17, 16, 15, 14, 13, 12 };
     static const char *const with_arg[] = { "--size", "--strip-rows", "--fracs", "--id", "--target-work",
-                                            "--deps", "--target", "--ram-budget", "--flash-budget", "-o", NULL };
+                                            "--deps", "--target", "--ram-budget", "--flash-budget", "--min-psnr",
+                                            "--chosen-scene", "-o", NULL };
     static const char *const all[] = { "--size", "--strip-rows", "--fracs", "--id", "--target-work",
-                                       "--deps", "--target", "--ram-budget", "--flash-budget", "--allow-wide",
-                                       "--help", NULL };
+                                       "--deps", "--target", "--ram-budget", "--flash-budget", "--min-psnr",
+                                       "--chosen-scene", "--work-of-choice", "--allow-wide", "--help", NULL };
     memset(a, 0, sizeof *a);
     a->width = a->height = 240;
     a->strip = 16;
@@ -731,6 +750,10 @@ static int parse_args(int argc, char **argv, struct args *a)
         }
         if (!strcmp(opt, "--allow-wide")) {
             a->allow_wide = 1;
+            continue;
+        }
+        if (!strcmp(opt, "--work-of-choice")) {
+            a->work_of_choice = 1;
             continue;
         }
         int takes = 0;
@@ -811,6 +834,12 @@ static int parse_args(int argc, char **argv, struct args *a)
                                    near ? " (did you mean '" : "", near ? near : "", near ? "'?)" : "");
             }
             a->target = &targets[k];
+            a->target_given = 1;
+        } else if (!strcmp(opt, "--chosen-scene")) {
+            a->chosen_scene = val;
+        } else if (!strcmp(opt, "--min-psnr")) {
+            if (quality_parse_psnr(val, &a->min_psnr))
+                return usage_error("bad --min-psnr '%s' (a PSNR in dB, 1 .. 200)", val);
         } else if (!strcmp(opt, "--ram-budget") || !strcmp(opt, "--flash-budget")) {
             long long b = parse_bytes(val);
             if (b < 0) return usage_error("bad %s '%s' (bytes, optionally with K or M: 1..2047M)", opt, val);
@@ -823,8 +852,90 @@ static int parse_args(int argc, char **argv, struct args *a)
     if (!a->outc) return usage_error("-o OUT.c is required (try --help)");
     if (!a->path) return usage_error("a scene file is required (try --help)");
     if (a->strip > a->height) a->strip = a->height;
+    return 0;
+}
+
+/* The budget of --target (or of the quality block's target), unless given. */
+static void set_budget(struct args *a)
+{
     if (!a->ram_given) a->ram_budget = a->target->ram;
     if (!a->flash_given) a->flash_budget = a->target->flash;
+}
+
+/* An accuracy target (--min-psnr, the scene's quality block): the methods
+ * chosen (tools/quality) into *text, the scene parsed again into *s; the
+ * report on stdout. 0, or the exit status after the error's line. */
+static int choose_methods(struct args *a, char **text, size_t *len, struct scene **s)
+{
+    struct scene_quality q;
+    scene_quality(*s, &q);
+    double psnr = a->min_psnr ? a->min_psnr : q.psnr;
+    if (!psnr) return 0;
+    int target = a->target_given ? quality_target_of(a->target->name) : q.target ? q.target : QUALITY_M0PLUS;
+    if (!target) {
+        fprintf(stderr, "scenec: no cost model for --target %s: an accuracy target needs m0plus, m4f or rp2040\n",
+                a->target->name);
+        return 2;
+    }
+    if (!a->target_given)
+        for (size_t k = 0; k < sizeof targets / sizeof targets[0]; k++)
+            if (!strcmp(targets[k].name, quality_target_name(target))) a->target = &targets[k];
+    char why[160];
+    if (a->min_psnr) snprintf(why, sizeof why, "--min-psnr");
+    else snprintf(why, sizeof why, "the quality block at %s:%d:%d", a->path, q.line, q.col);
+    struct quality_request rq = { .path = a->path, .text = *text, .len = *len, .width = (unsigned)a->width,
+                                  .height = (unsigned)a->height, .strip_rows = (unsigned)a->strip,
+                                  .numeric = "fixed", .target = target, .min_psnr = psnr, .why = why,
+                                  .report = stdout, .line = a->min_psnr ? 0 : q.line, .col = a->min_psnr ? 0 : q.col };
+    struct quality_choice ch;
+    char err[768];
+    int rc = quality_choose(&rq, &ch, err, sizeof err);
+    if (rc) {
+        quality_free(&ch);
+        fprintf(stderr, "%s\n", err);
+        return rc == QUALITY_EINPUT ? 2 : 1;
+    }
+    /* --target-work is the scene's as written: it stays only when the chosen
+       methods need the same work memory on this host (else this host's, an
+       upper bound) */
+    if (a->chosen_scene) {
+        FILE *f = fopen(a->chosen_scene, "w");
+        int bad = !f || fwrite(ch.text, 1, ch.len, f) != ch.len;
+        if (f && fclose(f)) bad = 1;
+        if (bad) {
+            quality_free(&ch);
+            fprintf(stderr, "scenec: cannot write %s\n", a->chosen_scene);
+            return 1;
+        }
+    }
+    if (a->target_work >= 0 && !a->work_of_choice && strcmp(ch.text, *text)) {
+        size_t before = 0, after = 0, sb = 0, sa = 0;
+        void *fs = NULL;
+        if (!core_api_fixed12.scene_parse(a->path, *text, *len, &fs, err, sizeof err)) {
+            before = core_api_fixed12.work_size(fs, (uint16_t)a->width, (uint16_t)a->height, (uint16_t)a->strip);
+            sb = core_api_fixed12.sibling_work_size(fs, (uint16_t)a->width, (uint16_t)a->height, (uint16_t)a->strip);
+            core_api_fixed12.scene_free(fs);
+        }
+        if (!core_api_fixed12.scene_parse(a->path, ch.text, ch.len, &fs, err, sizeof err)) {
+            after = core_api_fixed12.work_size(fs, (uint16_t)a->width, (uint16_t)a->height, (uint16_t)a->strip);
+            sa = core_api_fixed12.sibling_work_size(fs, (uint16_t)a->width, (uint16_t)a->height, (uint16_t)a->strip);
+            core_api_fixed12.scene_free(fs);
+        }
+        if (!before || before != after || sb != sa) {
+            printf("quality: the chosen methods change the work memory (this host's %zu bytes, as written %zu): "
+                   "this host's sizes, an upper bound, instead of --target-work\n", after, before);
+            a->target_work = a->target_sibling = -1;
+        }
+    }
+    free(*text);
+    *text = ch.text;
+    *len = ch.len;
+    scene_free(*s);
+    *s = NULL;
+    if ((rc = scene_parse_text(a->path, *text, *len, s, err, sizeof err))) {
+        fprintf(stderr, "%s\n", err);
+        return rc == SCENE_ENOMEM ? 1 : 2;
+    }
     return 0;
 }
 
@@ -1030,11 +1141,12 @@ int main(int argc, char **argv)
         free(text);
         return rc == SCENE_ENOMEM ? 1 : 2;
     }
-    if ((rc = check_outputs(a.outc, a.deps, a.path))) {
+    if ((rc = check_outputs(a.outc, a.deps, a.path)) || (rc = choose_methods(&a, &text, &text_len, &s))) {
         scene_free(s);
         free(text);
         return rc;
     }
+    set_budget(&a);
     char id[256];
     make_id(&a, id, sizeof id);
 

@@ -146,7 +146,7 @@ void ras_tri_cache(struct ras_ctx *rc, const struct ras_instance *in, const stru
          * pixel), so its facing need not be computed */
         const struct ras_pv *pv = rc->def.pv + ri->vbase;
         const struct ras_pv *a = &pv[t->v[0]], *b = &pv[t->v[1]], *c = &pv[t->v[2]];
-        if (a->inside && b->inside && c->inside &&
+        if (ras_pv_in(a) && ras_pv_in(b) && ras_pv_in(c) &&
             num_smul32(b->sx - a->sx, c->sy - a->sy) - num_smul32(b->sy - a->sy, c->sx - a->sx) <= 0) {
             rc->def.tri_flags[gi] = 0;
             return;
@@ -274,7 +274,7 @@ static int screen_corners(const struct ras_ctx *rc, const struct ras_inst *ri, c
                           int front, const struct ras_cv cin[3], int na, struct ras_sv sv[RAS_CLIP_MAX])
 {
     const struct ras_pv *pv = rc->def.pv ? rc->def.pv + ri->vbase : NULL;
-    if (pv && pv[t->v[0]].inside && pv[t->v[1]].inside && pv[t->v[2]].inside) {
+    if (pv && ras_pv_in(&pv[t->v[0]]) && ras_pv_in(&pv[t->v[1]]) && ras_pv_in(&pv[t->v[2]])) {
         /* inside every plane: the clipper would return the corners as they
          * are; their projections were made once this frame */
         for (int k = 0; k < 3; k++) {

@@ -136,11 +136,16 @@ static void instance_vertices(const struct ras_ctx *rc, uint16_t i, uint32_t k0,
         }
         if (rc->def.pv) {
             struct ras_pv *q = &rc->def.pv[vb + k];
-            q->inside = (uint8_t)(ri->visible && ras_point_inside(rc, v->c));
-            if (q->inside) {
-                ras_project_sub(rc, v->c, &q->sx, &q->sy);
-                q->iz = num_recip(v->c.z);
-                q->depth = ras_depth32(rc->def.near_z, v->c.z);
+            int32_t sx, sy;
+            q->sx = RAS_PV_OUT;
+            if (ri->visible && ras_point_inside(rc, v->c)) {
+                ras_project_sub(rc, v->c, &sx, &sy);
+                if (sx > INT16_MIN && sx <= INT16_MAX && sy >= INT16_MIN && sy <= INT16_MAX) {
+                    q->sx = (int16_t)sx;
+                    q->sy = (int16_t)sy;
+                    q->iz = num_recip(v->c.z);
+                    q->depth = ras_depth32(rc->def.near_z, v->c.z);
+                }
             }
         }
     }
@@ -180,7 +185,7 @@ static void instance_triangles(struct ras_ctx *rc, uint16_t i, uint32_t k0, uint
             rc->part_drawn[part]++;
         } else {
             const struct ras_pv *pa = &rc->def.pv[vb + t->v[0]], *pb = &rc->def.pv[vb + t->v[1]], *pc = &rc->def.pv[vb + t->v[2]];
-            const int inside = pa->inside && pb->inside && pc->inside;
+            const int inside = ras_pv_in(pa) && ras_pv_in(pb) && ras_pv_in(pc);
             const int32_t lo = inside ? min3(pa->sy, pb->sy, pc->sy) : 0, hi = inside ? max3(pa->sy, pb->sy, pc->sy) : 0;
             *rr = inside ? sub_rows(rc, lo, hi) : default_tri_rows(rc, a->c, b->c, c->c);
             if (rr->r0 > rr->r1) { rc->def.tri_flags[tb + k] = 0; continue; }
@@ -197,13 +202,14 @@ static void instance_triangles(struct ras_ctx *rc, uint16_t i, uint32_t k0, uint
 }
 
 /* The live triangles of the frame sorted by the bucket of their first row
- * (struct ras_bins), stable; the active list emptied. */
+ * (struct ras_bins), stable, and the last row each bucket reaches. */
 static void bin_triangles(struct ras_ctx *rc)
 {
     struct ras_bins *B = &rc->bins;
     uint16_t *start = B->start;
     const uint32_t nb = B->nbuckets;
     for (uint32_t b = 0; b <= nb; b++) start[b] = 0;
+    for (uint32_t b = 0; b < nb; b++) B->reach[b] = -1;
     for (uint32_t gi = 0; gi < rc->ntris; gi++) {
         struct ras_range r = rc->tri_rows[gi];
         if (r.r0 <= r.r1) start[(uint32_t)r.r0 / rc->strip_rows + 1]++;
@@ -213,13 +219,13 @@ static void bin_triangles(struct ras_ctx *rc)
      * which is bucket b + 1's start */
     for (uint32_t gi = 0; gi < rc->ntris; gi++) {
         struct ras_range r = rc->tri_rows[gi];
-        if (r.r0 <= r.r1) B->order[start[(uint32_t)r.r0 / rc->strip_rows]++] = (uint16_t)gi;
+        if (r.r0 > r.r1) continue;
+        uint32_t b = (uint32_t)r.r0 / rc->strip_rows;
+        B->order[start[b]++] = (uint16_t)gi;
+        if (r.r1 > B->reach[b]) B->reach[b] = r.r1;
     }
     for (uint32_t b = nb; b > 0; b--) start[b] = start[b - 1];
     start[0] = 0;
-    B->nactive = 0;
-    B->next_bucket = 0;
-    B->last_y0 = -1;
 }
 
 int raster_frame_start(void *work, uint16_t frame)

@@ -41,9 +41,16 @@ struct ras_vert { vec3 c; };
 struct ras_proj { num px, py; };
 
 /* A vertex of the default path, projected once per frame: sub-pixel
- * screen position, 1/z and near/z, valid when `inside` (within every
- * clipping plane; triangles of three such corners skip the clipper). */
-struct ras_pv { int32_t sx, sy; num iz; uint32_t depth; uint8_t inside; };
+ * screen position, 1/z and near/z, valid unless sx is RAS_PV_OUT (outside
+ * a clipping plane; triangles of three valid corners skip the clipper).
+ * A vertex inside every plane lies within two pixels of the viewport, so
+ * its position fits 16 bits wherever (render size + 3) << sub_bits stays
+ * below 2^15 (240 pixels at 4 bits: 3,888); one that does not fit is
+ * marked RAS_PV_OUT too and its triangles take the clipper, which returns
+ * such a triangle unchanged and projects it the same way. */
+struct ras_pv { int16_t sx, sy; num iz; uint32_t depth; };
+#define RAS_PV_OUT INT16_MIN
+static inline int ras_pv_in(const struct ras_pv *q) { return q->sx != RAS_PV_OUT; }
 
 /* Per-frame facts of a triangle of the default path (PART1: culled and lit
  * by part 1 of a split preparation, its vertices' lighting in vert_shade1). */
@@ -154,29 +161,26 @@ struct ras_c15 {
  * them, raster_strip.c walks them): each frame, the live triangles
  * (neither culled nor degenerate, with a pixel centre on screen) in order
  * of the bucket of strip_rows rows their first row falls in, stable, so
- * each bucket's run is in the scene's drawing order; per strip, the active
- * list holds, in drawing order, every triangle begun in a bucket up to the
- * strip's last row that has not ended above the strip. Strips taken in
- * increasing order (all of them, or every other one per core) update it;
- * a strip above the last starts it again. off: every triangle of every
- * instance is tested against every strip (the book path, wireframes, more
- * than 65535 triangles). */
+ * each bucket's run is in the scene's drawing order, and per bucket the
+ * last row its triangles reach. A strip merges the runs of the buckets
+ * begun up to its last row that reach it, by triangle index: the scene's
+ * drawing order, with no state from one strip to the next (strips in any
+ * order). off: every triangle of every instance is tested against every
+ * strip (the book path, wireframes, more than 65535 triangles). */
 struct ras_bins {
     uint8_t on;
     uint16_t nbuckets;
     uint16_t *order;         /* live triangles by bucket of their first row (ntris) */
     uint16_t *start;         /* nbuckets + 1: bucket b is order[start[b] .. start[b + 1]) */
-    uint16_t *active;        /* ntris: the strip's triangles, in drawing order */
-    uint32_t nactive;
-    uint32_t next_bucket;    /* buckets [0, next_bucket) are merged into active */
-    int32_t last_y0;         /* the strip the active list was made for; -1: none */
+    int16_t *reach;          /* nbuckets: the last row of bucket b's triangles, -1: none */
+    uint16_t *runs;          /* 2 nbuckets: a strip's runs being merged (cursor, end) */
 };
 
 /* A sibling context's own tables (raster_init_sibling): what its strips
  * write; everything else is its owner's, copied at each frame. */
 struct ras_own {
     uint8_t *depth;
-    uint16_t *active;
+    uint16_t *runs;
     struct ras_fast_state *keep;
     uint8_t *stencil;
     num *vshade;             /* the owner's part-1 vertex lighting (ras_def.vert_shade1) */

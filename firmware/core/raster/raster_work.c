@@ -136,13 +136,13 @@ static uint16_t keep_slots(const struct scene *s, uint32_t ntris)
     return n;
 }
 
-/* The tables a strip writes (its depth buffer, the active triangle list,
+/* The tables a strip writes (its depth buffer, the runs it merges,
  * the set-ups kept between strips, the stencil): the whole of a sibling
  * context's own memory (struct ras_own), the last of an owner's. */
 static void carve_strip_tables(const struct scene *s, uint16_t w, uint16_t strip_rows, uint32_t ntris,
                                struct ras_ctx *rc, struct work_carve *c)
 {
-    rc->bins.active = work_take(c, rc->bins.on ? sizeof(uint16_t) * ntris : 0);
+    rc->bins.runs = work_take(c, rc->bins.on ? sizeof(uint16_t) * 2 * rc->bins.nbuckets : 0);
     rc->fast.nkeep = keep_slots(s, ntris);
     void *keep = work_take(c, sizeof(struct ras_fast_state) * rc->fast.nkeep);
     rc->fast.keep = rc->fast.nkeep ? keep : NULL;
@@ -155,6 +155,12 @@ static void carve_strip_tables(const struct scene *s, uint16_t w, uint16_t strip
 static int bins_on(const struct scene *s, uint32_t ntris)
 {
     return frame_cache(s) && ntris > 0 && ntris <= 0xFFFFu;
+}
+
+/* Its buckets: one a strip_rows rows. */
+static uint16_t bins_count(int on, uint16_t h, uint16_t strip_rows)
+{
+    return (uint16_t)(on && strip_rows ? (h + strip_rows - 1) / strip_rows : 0);
 }
 
 /* Every table of the state, in order, from c (c->base NULL: measuring, rc a
@@ -201,9 +207,10 @@ static int carve(const struct scene *s, uint16_t w, uint16_t h, uint16_t strip_r
     rc->def.vert_lit = (caches & 2) ? vlit : NULL;
     int bins = bins_on(s, ntris);
     rc->bins.on = (uint8_t)bins;
-    rc->bins.nbuckets = (uint16_t)(bins && strip_rows ? (h + strip_rows - 1) / strip_rows : 0);
+    rc->bins.nbuckets = bins_count(bins, h, strip_rows);
     rc->bins.order = work_take(c, bins ? sizeof(uint16_t) * ntris : 0);
     rc->bins.start = work_take(c, bins ? sizeof(uint16_t) * ((size_t)rc->bins.nbuckets + 1) : 0);
+    rc->bins.reach = work_take(c, sizeof(int16_t) * rc->bins.nbuckets);
     uint16_t nspec = spec_exponents(s, NULL, NULL);
     rc->fast.spec_tab = work_take(c, sizeof(uint16_t) * 257 * nspec);
     rc->fast.spec_step = work_take(c, sizeof(uint32_t) * 2 * nspec);
@@ -319,7 +326,6 @@ int raster_init(void *work, size_t work_size, const struct scene *s, uint16_t wi
     memset(rc, 0, sizeof *rc);
     struct work_carve c = { (uint8_t *)rc, 0 };
     if (carve(s, width, height, strip_rows, rc, &c)) return -1;
-    rc->bins.last_y0 = -1;
     rc->s = s;
     rc->w = width;
     rc->h = height;
@@ -370,7 +376,7 @@ static void carve_sibling(const struct scene *s, uint16_t w, uint16_t strip_rows
     void *vs = work_take(c, vl ? sizeof(num) * nverts : 0);
     void *vb = work_take(c, vl ? (nverts + 7) / 8 : 0);
     rc->own.depth = rc->depth;
-    rc->own.active = rc->bins.active;
+    rc->own.runs = rc->bins.runs;
     rc->own.keep = rc->fast.keep;
     rc->own.stencil = rc->c15.stencil;
     rc->own.vshade = vl ? vs : NULL;
@@ -381,9 +387,9 @@ size_t raster_sibling_work_size(const struct scene *s, uint16_t width, uint16_t 
 {
     struct ras_ctx scratch;
     struct work_carve c = { NULL, 0 };
-    (void)height;
     memset(&scratch, 0, sizeof scratch);
     scratch.bins.on = (uint8_t)bins_on(s, scene_count(s, 0));
+    scratch.bins.nbuckets = bins_count(scratch.bins.on, height, strip_rows);
     carve_sibling(s, width, strip_rows, &scratch, &c);
     return c.off + WORK_ALIGN;
 }
@@ -394,13 +400,10 @@ static void sibling_reset(struct ras_ctx *rc, const struct ras_ctx *ow, const st
     rc->owner = ow;
     rc->own = *own;
     rc->depth = own->depth;
-    rc->bins.active = own->active;
+    rc->bins.runs = own->runs;
     rc->fast.keep = own->keep;
     rc->c15.stencil = own->stencil;
     for (uint16_t k = 0; k < rc->fast.nkeep; k++) rc->fast.keep[k].tri = UINT32_MAX;
-    rc->bins.nactive = 0;
-    rc->bins.next_bucket = 0;
-    rc->bins.last_y0 = -1;
 }
 
 int raster_init_sibling(void *work, size_t work_size, const void *owner_work)

@@ -37,6 +37,11 @@ struct ras_inst {
 
 /* A transformed vertex: camera space. */
 struct ras_vert { vec3 c; };
+/* A camera-space vertex transformed again where the frame keeps no table
+ * of them (ras_ctx.verts NULL): direct-mapped by vertex, k the vertex's
+ * index in the frame (UINT32_MAX: empty), one cache per part of a split
+ * preparation. */
+struct ras_vcache { uint32_t k; vec3 c; };
 /* The book's projection of a vertex (the book path and wireframes only). */
 struct ras_proj { num px, py; };
 
@@ -114,6 +119,10 @@ struct ras_def {
                                 preparation (raster_frame_triangles), in the sibling's
                                 work memory; NULL: no sibling */
     uint8_t *vert_lit1;
+    struct ras_vcache *vcache;   /* camera-space vertices of the frame's culling and lighting
+                                    (ras_cam_vertex) where ras_ctx.verts is not kept, */
+    struct ras_vcache *vcache1;  /* and part 1's (the sibling's work memory); NULL: none */
+    uint16_t vcache_mask;        /* entries - 1 */
 };
 
 /* The fast span path's own state (the default path with perspective_step > 1). */
@@ -183,6 +192,7 @@ struct ras_own {
     uint16_t *runs;
     struct ras_fast_state *keep;
     uint8_t *stencil;
+    struct ras_vcache *vcache;   /* the owner's part-1 camera-space vertices (ras_def.vcache1) */
     num *vshade;             /* the owner's part-1 vertex lighting (ras_def.vert_shade1) */
     uint8_t *vlit;
 };
@@ -204,7 +214,8 @@ struct ras_ctx {
     uint32_t tris_in, tris_drawn;
     uint32_t part_in[2], part_drawn[2];  /* the same counted by the parts of the triangles */
     struct ras_inst *inst;
-    struct ras_vert *verts;
+    struct ras_vert *verts;  /* per vertex; NULL where the default path transforms them
+                                again when needed (ras_cam_vertex) */
     struct ras_proj *proj;   /* per vertex; NULL on the default path, which projects in ras_pv */
     struct ras_range *tri_rows, *prim_rows, *line_rows;
     struct ras_light *lights;
@@ -216,6 +227,21 @@ struct ras_ctx {
     const struct ras_ctx *owner;   /* a sibling's owner (raster_init_sibling), NULL: none */
     struct ras_own own;            /* a sibling's own tables */
 };
+
+/* Camera-space position of vertex k of an instance this frame where
+ * ras_ctx.verts is not kept: transformed again from the model (through
+ * cache vc, NULL: none), the same bits (ras_cam_vertex). */
+vec3 ras_cam_vertex_again(const struct ras_ctx *rc, const struct ras_instance *in, const struct ras_inst *ri,
+                          const struct ras_model *m, uint32_t k, struct ras_vcache *vc);
+
+/* Camera-space position of vertex k of an instance this frame: from
+ * ras_ctx.verts where kept, else ras_cam_vertex_again's. */
+static inline vec3 ras_cam_vertex(const struct ras_ctx *rc, const struct ras_instance *in, const struct ras_inst *ri,
+                                  const struct ras_model *m, uint32_t k, struct ras_vcache *vc)
+{
+    if (rc->verts) return rc->verts[ri->vbase + k].c;
+    return ras_cam_vertex_again(rc, in, ri, m, k, vc);
+}
 
 /* The state in the caller's work memory, at its first WORK_ALIGN boundary
  * (raster_work_size counts the slack). */

@@ -99,6 +99,34 @@ static uint16_t spec_exponents(const struct scene *s, int16_t *idx, uint32_t exp
     return n;
 }
 
+static uint32_t scene_count(const struct scene *s, int verts);
+
+/* Camera-space vertices kept a frame (ras_ctx.verts, 12 bytes a vertex in
+ * fixed point): what the book path, wireframes, Phong and chapter 15 read
+ * in every strip. The default path's other shadings read them only in the
+ * frame's culling and lighting and for triangles it clips: for scenes of
+ * more than RAS_CAM_TABLE_VERTS vertices (a mesh whose table would not fit
+ * an RP2040's work memory beside the rest) it transforms them again there
+ * (ras_cam_vertex), through a direct-mapped cache of at most RAS_VCACHE_MAX
+ * vertices per part of the preparation, at the cost of about one more
+ * transform for each vertex of a front face (bench/knot-16k-flat: 6 % of
+ * its frame on the M0+). */
+#define RAS_CAM_TABLE_VERTS 4096
+#define RAS_VCACHE_MAX 256
+static int cam_table(const struct scene *s)
+{
+    return !frame_cache(s) || eff_shading(s) == SHADE_PHONG || ch15_lit(&s->ras) ||
+           scene_count(s, 1) <= RAS_CAM_TABLE_VERTS;
+}
+
+static uint32_t vcache_entries(const struct scene *s, uint32_t nverts)
+{
+    if (cam_table(s) || nverts == 0) return 0;
+    uint32_t n = 1;
+    while (n < nverts && n < RAS_VCACHE_MAX) n *= 2;
+    return n;
+}
+
 static int shade_cache(const struct scene *s)
 {
     return frame_cache(s) && (eff_shading(s) == SHADE_GOURAUD || eff_shading(s) == SHADE_FLAT);
@@ -180,7 +208,12 @@ static int carve(const struct scene *s, uint16_t w, uint16_t h, uint16_t strip_r
     rc->ntris = ntris;
     (void)work_take(c, sizeof(struct ras_ctx));   /* the context itself, first */
     rc->inst = work_take(c, sizeof(struct ras_inst) * s->ninstances);
-    rc->verts = work_take(c, sizeof(struct ras_vert) * nverts);
+    void *verts = work_take(c, cam_table(s) ? sizeof(struct ras_vert) * nverts : 0);
+    rc->verts = cam_table(s) ? verts : NULL;
+    uint32_t nvc = vcache_entries(s, nverts);
+    void *vc = work_take(c, sizeof(struct ras_vcache) * nvc);
+    rc->def.vcache = nvc ? vc : NULL;
+    rc->def.vcache_mask = (uint16_t)(nvc ? nvc - 1 : 0);
     void *proj = work_take(c, frame_cache(s) ? 0 : sizeof(struct ras_proj) * nverts);
     rc->proj = frame_cache(s) ? NULL : proj;
     rc->tri_rows = work_take(c, sizeof(struct ras_range) * ntris);
@@ -375,10 +408,13 @@ static void carve_sibling(const struct scene *s, uint16_t w, uint16_t strip_rows
     int vl = (shade_caches(s) & 2) != 0;
     void *vs = work_take(c, vl ? sizeof(num) * nverts : 0);
     void *vb = work_take(c, vl ? (nverts + 7) / 8 : 0);
+    uint32_t nvc = vcache_entries(s, nverts);
+    void *vc = work_take(c, sizeof(struct ras_vcache) * nvc);
     rc->own.depth = rc->depth;
     rc->own.runs = rc->bins.runs;
     rc->own.keep = rc->fast.keep;
     rc->own.stencil = rc->c15.stencil;
+    rc->own.vcache = nvc ? vc : NULL;
     rc->own.vshade = vl ? vs : NULL;
     rc->own.vlit = vl ? vb : NULL;
 }
@@ -421,6 +457,8 @@ int raster_init_sibling(void *work, size_t work_size, const void *owner_work)
     struct ras_ctx *owm = (struct ras_ctx *)(uintptr_t)ow;
     owm->def.vert_shade1 = own.vshade;
     owm->def.vert_lit1 = own.vlit;
+    owm->def.vcache1 = own.vcache;
+    for (uint32_t k = 0; own.vcache && k <= ow->def.vcache_mask; k++) own.vcache[k].k = UINT32_MAX;
     if (own.vlit) memset(own.vlit, 0, (ow->nverts + 7) / 8);
     sibling_reset(rc, ow, &own);
     return 0;

@@ -167,10 +167,9 @@ static void instance_vertices(const struct ras_ctx *rc, uint16_t i, uint32_t k0,
     }
 }
 
-/* Triangles k0 .. k1 - 1 of instance i, as part `part` of the frame's
- * triangles: each writes only its own entries, its counts in part_in and
- * part_drawn, and the lighting of its vertices in its part's table. */
-static void instance_triangles(struct ras_ctx *rc, uint16_t i, uint32_t k0, uint32_t k1, int part)
+/* Triangle k of instance i (its frame facts kept), as part `part` of the
+ * frame's triangles: the rows the strips visit it on. */
+static struct ras_range instance_triangle(struct ras_ctx *rc, uint16_t i, uint32_t k, int part)
 {
     const struct scene *s = rc->s;
     const struct ras_options *o = &s->ras;
@@ -178,50 +177,59 @@ static void instance_triangles(struct ras_ctx *rc, uint16_t i, uint32_t k0, uint
     const struct ras_model *m = &s->models[in->model];
     struct ras_inst *ri = &rc->inst[i];
     const uint32_t vb = ri->vbase, tb = ri->tbase;
-    for (uint32_t k = k0; k < k1; k++) {
-        const struct ras_triangle *t = &m->tris[k];
-        struct ras_range *rr = &rc->tri_rows[tb + k];
-        rc->part_in[part]++;
-        *rr = no_rows();
-        if (!ri->visible || t->v[0] >= m->nverts || t->v[1] >= m->nverts || t->v[2] >= m->nverts) continue;
-        if (rc->book || o->wireframe) {
-            /* (these paths keep the camera-space table) */
-            const struct ras_vert *a = &rc->verts[vb + t->v[0]], *b = &rc->verts[vb + t->v[1]],
-                                  *c = &rc->verts[vb + t->v[2]];
-            if (o->clip && !ras_triangle_inside(a->c, b->c, c->c)) continue;
-            if (!rc->book && !o->clip && (a->c.z <= rc->def.near_z || b->c.z <= rc->def.near_z || c->c.z <= rc->def.near_z))
-                continue; /* default path, clipping off: never project behind the camera */
-            num ys[3] = { rc->proj[vb + t->v[0]].py, rc->proj[vb + t->v[1]].py, rc->proj[vb + t->v[2]].py }, lo, hi;
-            range3(ys, &lo, &hi);
-            *rr = rows_of_canvas_y(rc, lo, hi);
-            if (rr->r0 > rr->r1) continue;
-            /* counted unless the book's culling will drop it (as ras_book_render_triangle decides) */
-            if (rc->book && !o->wireframe && o->backface_cull &&
-                ras_facing_wide(a->c, ras_face_normal_wide(a->c, b->c, c->c)) <= 0)
-                continue;
-            rc->part_drawn[part]++;
+    const struct ras_triangle *t = &m->tris[k];
+    struct ras_range r = no_rows();
+    if (!ri->visible || t->v[0] >= m->nverts || t->v[1] >= m->nverts || t->v[2] >= m->nverts) return r;
+    if (rc->book || o->wireframe) {
+        /* (these paths keep the camera-space table) */
+        const struct ras_vert *a = &rc->verts[vb + t->v[0]], *b = &rc->verts[vb + t->v[1]],
+                              *c = &rc->verts[vb + t->v[2]];
+        if (o->clip && !ras_triangle_inside(a->c, b->c, c->c)) return r;
+        if (!rc->book && !o->clip && (a->c.z <= rc->def.near_z || b->c.z <= rc->def.near_z || c->c.z <= rc->def.near_z))
+            return r; /* default path, clipping off: never project behind the camera */
+        num ys[3] = { rc->proj[vb + t->v[0]].py, rc->proj[vb + t->v[1]].py, rc->proj[vb + t->v[2]].py }, lo, hi;
+        range3(ys, &lo, &hi);
+        r = rows_of_canvas_y(rc, lo, hi);
+        if (r.r0 > r.r1) return r;
+        /* counted unless the book's culling will drop it (as ras_book_render_triangle decides) */
+        if (rc->book && !o->wireframe && o->backface_cull &&
+            ras_facing_wide(a->c, ras_face_normal_wide(a->c, b->c, c->c)) <= 0)
+            return r;
+        rc->part_drawn[part]++;
+    } else {
+        const struct ras_pv *pa = &rc->def.pv[vb + t->v[0]], *pb = &rc->def.pv[vb + t->v[1]], *pc = &rc->def.pv[vb + t->v[2]];
+        const int inside = ras_pv_in(pa) && ras_pv_in(pb) && ras_pv_in(pc);
+        const int32_t lo = inside ? min3(pa->sy, pb->sy, pc->sy) : 0, hi = inside ? max3(pa->sy, pb->sy, pc->sy) : 0;
+        if (inside) {
+            r = sub_rows(rc, lo, hi);
         } else {
-            const struct ras_pv *pa = &rc->def.pv[vb + t->v[0]], *pb = &rc->def.pv[vb + t->v[1]], *pc = &rc->def.pv[vb + t->v[2]];
-            const int inside = ras_pv_in(pa) && ras_pv_in(pb) && ras_pv_in(pc);
-            const int32_t lo = inside ? min3(pa->sy, pb->sy, pc->sy) : 0, hi = inside ? max3(pa->sy, pb->sy, pc->sy) : 0;
-            if (inside) {
-                *rr = sub_rows(rc, lo, hi);
-            } else {
-                struct ras_vcache *vc = part ? rc->def.vcache1 : rc->def.vcache;
-                *rr = default_tri_rows(rc, ras_cam_vertex(rc, in, ri, m, t->v[0], vc),
-                                       ras_cam_vertex(rc, in, ri, m, t->v[1], vc),
-                                       ras_cam_vertex(rc, in, ri, m, t->v[2], vc));
-            }
-            if (rr->r0 > rr->r1) { rc->def.tri_flags[tb + k] = 0; continue; }
-            ras_tri_cache(rc, in, ri, m, t, tb + k, part);
-            if (!(rc->def.tri_flags[tb + k] & RAS_TRI_LIVE)) continue;   /* culled or degenerate: not drawn */
-            rc->part_drawn[part]++;
-            /* what the strips visit: live triangles only, and those of three
-             * projected corners only on the rows of the pixel centres they span */
-            if (!rc->bins.on) continue;
-            if (!(rc->def.tri_flags[tb + k] & RAS_TRI_LIVE)) *rr = no_rows();
-            else if (inside) *rr = centre_rows(rc, lo, hi);
+            struct ras_vcache *vc = part ? rc->def.vcache1 : rc->def.vcache;
+            r = default_tri_rows(rc, ras_cam_vertex(rc, in, ri, m, t->v[0], vc),
+                                   ras_cam_vertex(rc, in, ri, m, t->v[1], vc),
+                                   ras_cam_vertex(rc, in, ri, m, t->v[2], vc));
         }
+        if (r.r0 > r.r1) { rc->def.tri_flags[tb + k] = 0; return r; }
+        ras_tri_cache(rc, in, ri, m, t, tb + k, part);
+        if (!(rc->def.tri_flags[tb + k] & RAS_TRI_LIVE)) return r;   /* culled or degenerate: not drawn */
+        rc->part_drawn[part]++;
+        /* what the strips visit: live triangles only, and those of three
+         * projected corners only on the rows of the pixel centres they span */
+        if (!rc->bins.on) return r;
+        if (!(rc->def.tri_flags[tb + k] & RAS_TRI_LIVE)) r = no_rows();
+        else if (inside) r = centre_rows(rc, lo, hi);
+    }
+    return r;
+}
+
+/* Triangles k0 .. k1 - 1 of instance i, as part `part` of the frame's
+ * triangles: each writes only its own entries, its counts in part_in and
+ * part_drawn, and the lighting of its vertices in its part's table. */
+static void instance_triangles(struct ras_ctx *rc, uint16_t i, uint32_t k0, uint32_t k1, int part)
+{
+    const uint32_t tb = rc->inst[i].tbase;
+    for (uint32_t k = k0; k < k1; k++) {
+        rc->part_in[part]++;
+        rc->tri_rows[tb + k] = ras_trows_pack(rc, instance_triangle(rc, i, k, part));
     }
 }
 
@@ -235,18 +243,18 @@ static void bin_triangles(struct ras_ctx *rc)
     for (uint32_t b = 0; b <= nb; b++) start[b] = 0;
     for (uint32_t b = 0; b < nb; b++) B->reach[b] = -1;
     for (uint32_t gi = 0; gi < rc->ntris; gi++) {
-        struct ras_range r = rc->tri_rows[gi];
-        if (r.r0 <= r.r1) start[(uint32_t)r.r0 / rc->strip_rows + 1]++;
+        struct ras_trows r = rc->tri_rows[gi];
+        if (r.r0 <= r.r1) start[(uint32_t)ras_trows_first(rc, r) / rc->strip_rows + 1]++;
     }
     for (uint32_t b = 1; b <= nb; b++) start[b] = (uint16_t)(start[b] + start[b - 1]);
     /* start[b] walks bucket b's run; afterwards it holds the run's end,
      * which is bucket b + 1's start */
     for (uint32_t gi = 0; gi < rc->ntris; gi++) {
-        struct ras_range r = rc->tri_rows[gi];
+        struct ras_trows r = rc->tri_rows[gi];
         if (r.r0 > r.r1) continue;
-        uint32_t b = (uint32_t)r.r0 / rc->strip_rows;
+        uint32_t b = (uint32_t)ras_trows_first(rc, r) / rc->strip_rows;
         B->order[start[b]++] = (uint16_t)gi;
-        if (r.r1 > B->reach[b]) B->reach[b] = r.r1;
+        if (ras_trows_last(rc, r) > B->reach[b]) B->reach[b] = (int16_t)ras_trows_last(rc, r);
     }
     for (uint32_t b = nb; b > 0; b--) start[b] = start[b - 1];
     start[0] = 0;

@@ -64,6 +64,7 @@ enum { RAS_TRI_FRONT = 1, RAS_TRI_LIVE = 2, RAS_TRI_PART1 = 4 };
 /* Screen rows a primitive may touch (inclusive); r0 > r1: none. This is the
  * binning of primitives to strips, computed once per frame. */
 struct ras_range { int16_t r0, r1; };
+struct ras_trows { uint8_t r0, r1; };
 
 /* A texture as RGB565 for the fast path (power-of-two sides, nearest):
  * p == NULL when the texture does not qualify. */
@@ -217,7 +218,9 @@ struct ras_ctx {
     struct ras_vert *verts;  /* per vertex; NULL where the default path transforms them
                                 again when needed (ras_cam_vertex) */
     struct ras_proj *proj;   /* per vertex; NULL on the default path, which projects in ras_pv */
-    struct ras_range *tri_rows, *prim_rows, *line_rows;
+    struct ras_trows *tri_rows;  /* per triangle (ras_trows_pack) */
+    uint8_t row_shift;           /* of tri_rows: 0 up to 256 rows, else the least that fits */
+    struct ras_range *prim_rows, *line_rows;
     struct ras_light *lights;
     uint8_t *depth;          /* strip_rows * w entries */
     struct ras_def def;
@@ -241,6 +244,28 @@ static inline vec3 ras_cam_vertex(const struct ras_ctx *rc, const struct ras_ins
 {
     if (rc->verts) return rc->verts[ri->vbase + k].c;
     return ras_cam_vertex_again(rc, in, ri, m, k, vc);
+}
+
+/* A triangle's rows in the frame's table (ras_ctx.tri_rows), a byte each:
+ * its first and last row >> row_shift, so the rows it stands for
+ * (ras_trows_first .. ras_trows_last) include the triangle's, the same rows
+ * up to 256 rows a frame; r0 > r1: none. */
+static inline struct ras_trows ras_trows_pack(const struct ras_ctx *rc, struct ras_range r)
+{
+    struct ras_trows p = { 1, 0 };
+    if (r.r0 <= r.r1) {
+        p.r0 = (uint8_t)((uint32_t)r.r0 >> rc->row_shift);
+        p.r1 = (uint8_t)((uint32_t)r.r1 >> rc->row_shift);
+    }
+    return p;
+}
+static inline int32_t ras_trows_first(const struct ras_ctx *rc, struct ras_trows p)
+{
+    return (int32_t)((uint32_t)p.r0 << rc->row_shift);
+}
+static inline int32_t ras_trows_last(const struct ras_ctx *rc, struct ras_trows p)
+{
+    return (int32_t)((((uint32_t)p.r1 + 1) << rc->row_shift) - 1);
 }
 
 /* The state in the caller's work memory, at its first WORK_ALIGN boundary

@@ -49,6 +49,22 @@ static int rows_hit(struct ras_range r, const struct render_target *t)
     return r.r0 <= r.r1 && r.r1 >= (int)t->y0 && r.r0 < (int)t->y1;
 }
 
+/* The strip's rows y0 .. y1 - 1 as bounds of packed rows (struct ras_trows):
+ * a triangle's rows reach row y0 when r1 >= y0 >> row_shift, and begin
+ * above row y1 when r0 < y1 rounded up >> row_shift. */
+struct trows_strip { uint32_t y0, y1; };
+static struct trows_strip trows_strip(const struct ras_ctx *rc, const struct render_target *t)
+{
+    struct trows_strip b = { (uint32_t)t->y0 >> rc->row_shift,
+                             ((uint32_t)t->y1 + (1u << rc->row_shift) - 1u) >> rc->row_shift };
+    return b;
+}
+
+static int trows_hit(struct ras_trows r, struct trows_strip b)
+{
+    return r.r0 <= r.r1 && r.r1 >= b.y0 && r.r0 < b.y1;
+}
+
 /* RenderInstance, its strip half: the instance's triangles that touch the
  * strip (binned by prepare_instance), each through RenderTriangle. */
 static void render_instance(struct ras_ctx *rc, uint16_t i, const struct render_target *t)
@@ -57,9 +73,10 @@ static void render_instance(struct ras_ctx *rc, uint16_t i, const struct render_
     const struct ras_instance *in = &s->instances[i];
     const struct ras_inst *ri = &rc->inst[i];
     const struct ras_model *m = &s->models[in->model];
+    const struct trows_strip b = trows_strip(rc, t);
     if (!ri->visible) return;
     for (uint16_t k = 0; k < m->ntris; k++) {
-        if (!rows_hit(rc->tri_rows[ri->tbase + k], t)) continue;
+        if (!trows_hit(rc->tri_rows[ri->tbase + k], b)) continue;
         if (rc->book || s->ras.wireframe) ras_book_render_triangle(rc, in, ri, m, &m->tris[k]);
         else ras_default_render_triangle(rc, in, ri, m, &m->tris[k], ri->tbase + k);
     }
@@ -73,8 +90,9 @@ static void render_bins(struct ras_ctx *rc, const struct render_target *t)
 {
     const struct ras_bins *B = &rc->bins;
     const struct scene *s = rc->s;
-    const struct ras_range *rows = rc->tri_rows;
+    const struct ras_trows *rows = rc->tri_rows;
     const int32_t y0 = t->y0;
+    const struct trows_strip tb = trows_strip(rc, t);
     uint16_t *cur = B->runs, *end = B->runs + B->nbuckets;
     uint32_t lastb = ((uint32_t)t->y1 - 1) / rc->strip_rows, n = 0;
     for (uint32_t b = 0; b <= lastb && b < B->nbuckets; b++)
@@ -87,7 +105,7 @@ static void render_bins(struct ras_ctx *rc, const struct render_target *t)
         uint32_t best = UINT32_MAX, bj = 0;
         for (uint32_t j = 0; j < n;) {
             uint32_t c = cur[j];
-            while (c < end[j] && rows[B->order[c]].r1 < y0) c++;
+            while (c < end[j] && rows[B->order[c]].r1 < tb.y0) c++;
             if (c == end[j]) { /* the run is done: the last one takes its place */
                 n--;
                 cur[j] = cur[n];
@@ -100,7 +118,7 @@ static void render_bins(struct ras_ctx *rc, const struct render_target *t)
         }
         if (best == UINT32_MAX) break;
         cur[bj]++;
-        if (!rows_hit(rows[best], t)) continue;
+        if (!trows_hit(rows[best], tb)) continue;
         while (i + 1 < s->ninstances && best >= rc->inst[i + 1].tbase) i++;
         const struct ras_instance *in = &s->instances[i];
         const struct ras_inst *ri = &rc->inst[i];

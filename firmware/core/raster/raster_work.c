@@ -216,7 +216,7 @@ static int carve(const struct scene *s, uint16_t w, uint16_t h, uint16_t strip_r
     rc->def.vcache_mask = (uint16_t)(nvc ? nvc - 1 : 0);
     void *proj = work_take(c, frame_cache(s) ? 0 : sizeof(struct ras_proj) * nverts);
     rc->proj = frame_cache(s) ? NULL : proj;
-    rc->tri_rows = work_take(c, sizeof(struct ras_range) * ntris);
+    rc->tri_rows = work_take(c, sizeof(struct ras_trows) * ntris);
     rc->prim_rows = work_take(c, sizeof(struct ras_range) * s->nprims);
     rc->line_rows = work_take(c, sizeof(struct ras_range) * s->nlines);
     rc->lights = work_take(c, sizeof(struct ras_light) * s->nlights);
@@ -363,6 +363,7 @@ int raster_init(void *work, size_t work_size, const struct scene *s, uint16_t wi
     rc->w = width;
     rc->h = height;
     rc->strip_rows = strip_rows;
+    while (height && ((height - 1u) >> rc->row_shift) > 255u) rc->row_shift++;
     rc->book = s->ras.book_exact;
     rc->depth_bytes = (uint8_t)depth_bytes(s);
     rc->def.affine_from = -1;

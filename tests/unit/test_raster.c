@@ -178,15 +178,20 @@ static void sibling_shares_frame(void)
 static void split_preparation_same_frames(void)
 {
     /* raster-11 also in Gouraud, where its sphere is lit per vertex (the
-     * sibling's part of the triangles lights into its own table) */
-    static const char *const names[] = { "raster-11", "raster-rt-scene", "raster-08", "raster-11" };
+     * sibling's part of the triangles lights into its own table); the
+     * 16,384-triangle knots keep no camera-space table (each part of the
+     * triangles transforms vertices again through its own cache) */
+    static const char *const names[] = { "raster-11", "raster-rt-scene", "raster-08", "raster-11",
+                                         "knot-16k-gouraud", "knot-16k-flat" };
     enum { W = 320, H = 240, R = 16 };
     for (size_t n = 0; n < sizeof names / sizeof names[0]; n++)
         for (int book = 0; book < 2; book++) {
-            int gouraud = n == 3;
-            if (gouraud && book) continue;
-            struct scene *s = book ? book_scene(names[n]) : default_scene(names[n]);
-            if (gouraud) s->ras.shading = SHADE_GOURAUD;
+            int gouraud = n == 3 || n == 4, knot = n >= 4;
+            if ((gouraud || knot) && book) continue;
+            char path[96];
+            snprintf(path, sizeof path, "firmware/scenes/bench/%s.scene", names[n]);
+            struct scene *s = knot ? scene_file(path) : book ? book_scene(names[n]) : default_scene(names[n]);
+            if (n == 3) s->ras.shading = SHADE_GOURAUD;
             size_t ws = render_work_size(s, W, H, R), ss = render_sibling_work_size(s, W, H, R);
             void *w0 = malloc(ws), *w1 = malloc(ss);
             static uint16_t px[W * R], img[W * H];

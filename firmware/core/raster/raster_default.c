@@ -106,11 +106,12 @@ static int fast_describe(struct ras_ctx *rc, const struct ras_def_tri *dt, struc
 /* Camera-space corners, facing and (want_n) shading normals of a triangle
  * of the default path; 0 when it draws nothing (degenerate, or a culled
  * back face). */
-static int tri_facts(const struct ras_ctx *rc, const struct ras_inst *ri, const struct ras_model *m,
-                       const struct ras_triangle *t, vec3 V[3], vec3 N[3], int *front, int want_n)
+static int tri_facts(const struct ras_ctx *rc, const struct ras_instance *in, const struct ras_inst *ri,
+                     const struct ras_model *m, const struct ras_triangle *t, vec3 V[3], vec3 N[3], int *front,
+                     int want_n, struct ras_vcache *vc)
 {
     const struct ras_options *o = &rc->s->ras;
-    for (int k = 0; k < 3; k++) V[k] = rc->verts[ri->vbase + t->v[k]].c;
+    for (int k = 0; k < 3; k++) V[k] = ras_cam_vertex(rc, in, ri, m, t->v[k], vc);
     struct ras_wnormal wf = ras_face_normal_wide(V[0], V[1], V[2]);
     wnum facing = ras_facing_wide(V[0], wf);
     if (facing == 0 && wf.x == 0 && wf.y == 0 && wf.z == 0) return 0; /* degenerate */
@@ -146,13 +147,16 @@ void ras_tri_cache(struct ras_ctx *rc, const struct ras_instance *in, const stru
          * pixel), so its facing need not be computed */
         const struct ras_pv *pv = rc->def.pv + ri->vbase;
         const struct ras_pv *a = &pv[t->v[0]], *b = &pv[t->v[1]], *c = &pv[t->v[2]];
-        if (a->inside && b->inside && c->inside &&
+        if (ras_pv_in(a) && ras_pv_in(b) && ras_pv_in(c) &&
             num_smul32(b->sx - a->sx, c->sy - a->sy) - num_smul32(b->sy - a->sy, c->sx - a->sx) <= 0) {
             rc->def.tri_flags[gi] = 0;
             return;
         }
     }
-    if (!tri_facts(rc, ri, m, t, V, N, &front, !ri->vlit)) { rc->def.tri_flags[gi] = 0; return; }
+    if (!tri_facts(rc, in, ri, m, t, V, N, &front, !ri->vlit, part ? rc->def.vcache1 : rc->def.vcache)) {
+        rc->def.tri_flags[gi] = 0;
+        return;
+    }
     rc->def.tri_flags[gi] = (uint8_t)(RAS_TRI_LIVE | (front ? RAS_TRI_FRONT : 0) | (part ? RAS_TRI_PART1 : 0));
     if (ri->vlit) {
         /* each vertex lit once (per part), by the first live triangle that
@@ -193,18 +197,24 @@ static int resume_kept(struct ras_ctx *rc, uint32_t gi, struct ras_fast_state **
 
 /* Camera-space corners V, facing and normals N of triangle gi, from the
  * frame's cache where it has them (N then only when not shaded from the
- * cache); 0 when it draws nothing. */
-static int corners(const struct ras_ctx *rc, const struct ras_inst *ri, const struct ras_model *m,
-                   const struct ras_triangle *t, uint32_t gi, int cached_shade, vec3 V[3], vec3 N[3], int *front)
+ * cache); 0 when it draws nothing. Where the frame keeps no camera-space
+ * table, a triangle of three projected corners takes none (its pixels need
+ * only the projections: no Phong, no normal map there). */
+static int corners(const struct ras_ctx *rc, const struct ras_instance *in, const struct ras_inst *ri,
+                   const struct ras_model *m, const struct ras_triangle *t, uint32_t gi, int cached_shade, vec3 V[3],
+                   vec3 N[3], int *front)
 {
     *front = 0;
-    if (!rc->def.tri_flags) return tri_facts(rc, ri, m, t, V, N, front, 1);
+    if (!rc->def.tri_flags) return tri_facts(rc, in, ri, m, t, V, N, front, 1, NULL);
     uint8_t f = rc->def.tri_flags[gi];
     if (!(f & RAS_TRI_LIVE)) return 0;
     *front = (f & RAS_TRI_FRONT) != 0;
     /* unshaded triangles need no normals: the corners are all they take */
-    if (!cached_shade && rc->def.shading != SHADE_NONE) return tri_facts(rc, ri, m, t, V, N, front, 1);
-    for (int k = 0; k < 3; k++) V[k] = rc->verts[ri->vbase + t->v[k]].c;
+    if (!cached_shade && rc->def.shading != SHADE_NONE) return tri_facts(rc, in, ri, m, t, V, N, front, 1, NULL);
+    const struct ras_pv *pv = rc->def.pv + ri->vbase;
+    const int need = rc->verts || !ras_pv_in(&pv[t->v[0]]) || !ras_pv_in(&pv[t->v[1]]) || !ras_pv_in(&pv[t->v[2]]);
+    for (int k = 0; k < 3; k++)
+        V[k] = need ? ras_cam_vertex(rc, in, ri, m, t->v[k], NULL) : v3_make(NUM_ZERO, NUM_ZERO, NUM_ZERO);
     return 1;
 }
 
@@ -274,7 +284,7 @@ static int screen_corners(const struct ras_ctx *rc, const struct ras_inst *ri, c
                           int front, const struct ras_cv cin[3], int na, struct ras_sv sv[RAS_CLIP_MAX])
 {
     const struct ras_pv *pv = rc->def.pv ? rc->def.pv + ri->vbase : NULL;
-    if (pv && pv[t->v[0]].inside && pv[t->v[1]].inside && pv[t->v[2]].inside) {
+    if (pv && ras_pv_in(&pv[t->v[0]]) && ras_pv_in(&pv[t->v[1]]) && ras_pv_in(&pv[t->v[2]])) {
         /* inside every plane: the clipper would return the corners as they
          * are; their projections were made once this frame */
         for (int k = 0; k < 3; k++) {
@@ -336,7 +346,7 @@ void ras_default_render_triangle(struct ras_ctx *rc, const struct ras_instance *
         for (int k = 0; k < 3; k++) vsh[k] = vs[ri->vbase + t->v[k]];
         shade = vsh;
     }
-    if (!corners(rc, ri, m, t, gi, shade != NULL, V, N, &front)) return;
+    if (!corners(rc, in, ri, m, t, gi, shade != NULL, V, N, &front)) return;
     struct ras_def_tri dt;
     describe(rc, in, m, t, V, &dt);
     struct ras_cv cin[3];

@@ -107,6 +107,28 @@ static void instance_head(struct ras_ctx *rc, uint16_t i, uint16_t frame, uint32
         }
 }
 
+/* Model point p of instance in to camera space (ApplyTransform). */
+static vec3 cam_point(const struct ras_ctx *rc, const struct ras_instance *in, const struct ras_inst *ri, vec3 p)
+{
+    const struct ras_options *o = &rc->s->ras;
+    if (o->instance_transform) return m4_mul_point(&ri->m, p);
+    vec3 c = v3_add(p, in->position);
+    return o->camera_transform ? m4_mul_point(&rc->cam, c) : c;
+}
+
+vec3 ras_cam_vertex_again(const struct ras_ctx *rc, const struct ras_instance *in, const struct ras_inst *ri,
+                          const struct ras_model *m, uint32_t k, struct ras_vcache *vc)
+{
+    const uint32_t g = ri->vbase + k;
+    if (!vc) return cam_point(rc, in, ri, m->verts[k]);
+    struct ras_vcache *e = &vc[g & rc->def.vcache_mask];
+    if (e->k != g) {
+        e->k = g;
+        e->c = cam_point(rc, in, ri, m->verts[k]);
+    }
+    return e->c;
+}
+
 /* Vertices k0 .. k1 - 1 of instance i (after its instance_head); each
  * vertex writes only its own entries of the frame tables. */
 static void instance_vertices(const struct ras_ctx *rc, uint16_t i, uint32_t k0, uint32_t k1)
@@ -118,17 +140,11 @@ static void instance_vertices(const struct ras_ctx *rc, uint16_t i, uint32_t k0,
     const struct ras_inst *ri = &rc->inst[i];
     const uint32_t vb = ri->vbase;
     for (uint32_t k = k0; k < k1; k++) {
-        struct ras_vert *v = &rc->verts[vb + k];
-        vec3 p = m->verts[k];
-        if (o->instance_transform) {
-            v->c = m4_mul_point(&ri->m, p);
-        } else {
-            v->c = v3_add(p, in->position);
-            if (o->camera_transform) v->c = m4_mul_point(&rc->cam, v->c);
-        }
+        const vec3 c = cam_point(rc, in, ri, m->verts[k]);
+        if (rc->verts) rc->verts[vb + k].c = c;
         if (rc->proj) {
             struct ras_proj *q = &rc->proj[vb + k];
-            ras_project_vertex(rc, v->c, &q->px, &q->py);
+            ras_project_vertex(rc, c, &q->px, &q->py);
             if (o->project_truncate) {
                 q->px = num_from_int(num_to_int(q->px));
                 q->py = num_from_int(num_to_int(q->py));
@@ -136,20 +152,24 @@ static void instance_vertices(const struct ras_ctx *rc, uint16_t i, uint32_t k0,
         }
         if (rc->def.pv) {
             struct ras_pv *q = &rc->def.pv[vb + k];
-            q->inside = (uint8_t)(ri->visible && ras_point_inside(rc, v->c));
-            if (q->inside) {
-                ras_project_sub(rc, v->c, &q->sx, &q->sy);
-                q->iz = num_recip(v->c.z);
-                q->depth = ras_depth32(rc->def.near_z, v->c.z);
+            int32_t sx, sy;
+            q->sx = RAS_PV_OUT;
+            if (ri->visible && ras_point_inside(rc, c)) {
+                ras_project_sub(rc, c, &sx, &sy);
+                if (sx > INT16_MIN && sx <= INT16_MAX && sy >= INT16_MIN && sy <= INT16_MAX) {
+                    q->sx = (int16_t)sx;
+                    q->sy = (int16_t)sy;
+                    q->iz = num_recip(c.z);
+                    q->depth = ras_depth32(rc->def.near_z, c.z);
+                }
             }
         }
     }
 }
 
-/* Triangles k0 .. k1 - 1 of instance i, as part `part` of the frame's
- * triangles: each writes only its own entries, its counts in part_in and
- * part_drawn, and the lighting of its vertices in its part's table. */
-static void instance_triangles(struct ras_ctx *rc, uint16_t i, uint32_t k0, uint32_t k1, int part)
+/* Triangle k of instance i (its frame facts kept), as part `part` of the
+ * frame's triangles: the rows the strips visit it on. */
+static struct ras_range instance_triangle(struct ras_ctx *rc, uint16_t i, uint32_t k, int part)
 {
     const struct scene *s = rc->s;
     const struct ras_options *o = &s->ras;
@@ -157,69 +177,87 @@ static void instance_triangles(struct ras_ctx *rc, uint16_t i, uint32_t k0, uint
     const struct ras_model *m = &s->models[in->model];
     struct ras_inst *ri = &rc->inst[i];
     const uint32_t vb = ri->vbase, tb = ri->tbase;
-    for (uint32_t k = k0; k < k1; k++) {
-        const struct ras_triangle *t = &m->tris[k];
-        struct ras_range *rr = &rc->tri_rows[tb + k];
-        rc->part_in[part]++;
-        *rr = no_rows();
-        if (!ri->visible || t->v[0] >= m->nverts || t->v[1] >= m->nverts || t->v[2] >= m->nverts) continue;
+    const struct ras_triangle *t = &m->tris[k];
+    struct ras_range r = no_rows();
+    if (!ri->visible || t->v[0] >= m->nverts || t->v[1] >= m->nverts || t->v[2] >= m->nverts) return r;
+    if (rc->book || o->wireframe) {
+        /* (these paths keep the camera-space table) */
         const struct ras_vert *a = &rc->verts[vb + t->v[0]], *b = &rc->verts[vb + t->v[1]],
                               *c = &rc->verts[vb + t->v[2]];
-        if (rc->book || o->wireframe) {
-            if (o->clip && !ras_triangle_inside(a->c, b->c, c->c)) continue;
-            if (!rc->book && !o->clip && (a->c.z <= rc->def.near_z || b->c.z <= rc->def.near_z || c->c.z <= rc->def.near_z))
-                continue; /* default path, clipping off: never project behind the camera */
-            num ys[3] = { rc->proj[vb + t->v[0]].py, rc->proj[vb + t->v[1]].py, rc->proj[vb + t->v[2]].py }, lo, hi;
-            range3(ys, &lo, &hi);
-            *rr = rows_of_canvas_y(rc, lo, hi);
-            if (rr->r0 > rr->r1) continue;
-            /* counted unless the book's culling will drop it (as ras_book_render_triangle decides) */
-            if (rc->book && !o->wireframe && o->backface_cull &&
-                ras_facing_wide(a->c, ras_face_normal_wide(a->c, b->c, c->c)) <= 0)
-                continue;
-            rc->part_drawn[part]++;
+        if (o->clip && !ras_triangle_inside(a->c, b->c, c->c)) return r;
+        if (!rc->book && !o->clip && (a->c.z <= rc->def.near_z || b->c.z <= rc->def.near_z || c->c.z <= rc->def.near_z))
+            return r; /* default path, clipping off: never project behind the camera */
+        num ys[3] = { rc->proj[vb + t->v[0]].py, rc->proj[vb + t->v[1]].py, rc->proj[vb + t->v[2]].py }, lo, hi;
+        range3(ys, &lo, &hi);
+        r = rows_of_canvas_y(rc, lo, hi);
+        if (r.r0 > r.r1) return r;
+        /* counted unless the book's culling will drop it (as ras_book_render_triangle decides) */
+        if (rc->book && !o->wireframe && o->backface_cull &&
+            ras_facing_wide(a->c, ras_face_normal_wide(a->c, b->c, c->c)) <= 0)
+            return r;
+        rc->part_drawn[part]++;
+    } else {
+        const struct ras_pv *pa = &rc->def.pv[vb + t->v[0]], *pb = &rc->def.pv[vb + t->v[1]], *pc = &rc->def.pv[vb + t->v[2]];
+        const int inside = ras_pv_in(pa) && ras_pv_in(pb) && ras_pv_in(pc);
+        const int32_t lo = inside ? min3(pa->sy, pb->sy, pc->sy) : 0, hi = inside ? max3(pa->sy, pb->sy, pc->sy) : 0;
+        if (inside) {
+            r = sub_rows(rc, lo, hi);
         } else {
-            const struct ras_pv *pa = &rc->def.pv[vb + t->v[0]], *pb = &rc->def.pv[vb + t->v[1]], *pc = &rc->def.pv[vb + t->v[2]];
-            const int inside = pa->inside && pb->inside && pc->inside;
-            const int32_t lo = inside ? min3(pa->sy, pb->sy, pc->sy) : 0, hi = inside ? max3(pa->sy, pb->sy, pc->sy) : 0;
-            *rr = inside ? sub_rows(rc, lo, hi) : default_tri_rows(rc, a->c, b->c, c->c);
-            if (rr->r0 > rr->r1) { rc->def.tri_flags[tb + k] = 0; continue; }
-            ras_tri_cache(rc, in, ri, m, t, tb + k, part);
-            if (!(rc->def.tri_flags[tb + k] & RAS_TRI_LIVE)) continue;   /* culled or degenerate: not drawn */
-            rc->part_drawn[part]++;
-            /* what the strips visit: live triangles only, and those of three
-             * projected corners only on the rows of the pixel centres they span */
-            if (!rc->bins.on) continue;
-            if (!(rc->def.tri_flags[tb + k] & RAS_TRI_LIVE)) *rr = no_rows();
-            else if (inside) *rr = centre_rows(rc, lo, hi);
+            struct ras_vcache *vc = part ? rc->def.vcache1 : rc->def.vcache;
+            r = default_tri_rows(rc, ras_cam_vertex(rc, in, ri, m, t->v[0], vc),
+                                   ras_cam_vertex(rc, in, ri, m, t->v[1], vc),
+                                   ras_cam_vertex(rc, in, ri, m, t->v[2], vc));
         }
+        if (r.r0 > r.r1) { rc->def.tri_flags[tb + k] = 0; return r; }
+        ras_tri_cache(rc, in, ri, m, t, tb + k, part);
+        if (!(rc->def.tri_flags[tb + k] & RAS_TRI_LIVE)) return r;   /* culled or degenerate: not drawn */
+        rc->part_drawn[part]++;
+        /* what the strips visit: live triangles only, and those of three
+         * projected corners only on the rows of the pixel centres they span */
+        if (!rc->bins.on) return r;
+        if (!(rc->def.tri_flags[tb + k] & RAS_TRI_LIVE)) r = no_rows();
+        else if (inside) r = centre_rows(rc, lo, hi);
+    }
+    return r;
+}
+
+/* Triangles k0 .. k1 - 1 of instance i, as part `part` of the frame's
+ * triangles: each writes only its own entries, its counts in part_in and
+ * part_drawn, and the lighting of its vertices in its part's table. */
+static void instance_triangles(struct ras_ctx *rc, uint16_t i, uint32_t k0, uint32_t k1, int part)
+{
+    const uint32_t tb = rc->inst[i].tbase;
+    for (uint32_t k = k0; k < k1; k++) {
+        rc->part_in[part]++;
+        rc->tri_rows[tb + k] = ras_trows_pack(rc, instance_triangle(rc, i, k, part));
     }
 }
 
 /* The live triangles of the frame sorted by the bucket of their first row
- * (struct ras_bins), stable; the active list emptied. */
+ * (struct ras_bins), stable, and the last row each bucket reaches. */
 static void bin_triangles(struct ras_ctx *rc)
 {
     struct ras_bins *B = &rc->bins;
     uint16_t *start = B->start;
     const uint32_t nb = B->nbuckets;
     for (uint32_t b = 0; b <= nb; b++) start[b] = 0;
+    for (uint32_t b = 0; b < nb; b++) B->reach[b] = -1;
     for (uint32_t gi = 0; gi < rc->ntris; gi++) {
-        struct ras_range r = rc->tri_rows[gi];
-        if (r.r0 <= r.r1) start[(uint32_t)r.r0 / rc->strip_rows + 1]++;
+        struct ras_trows r = rc->tri_rows[gi];
+        if (r.r0 <= r.r1) start[(uint32_t)ras_trows_first(rc, r) / rc->strip_rows + 1]++;
     }
     for (uint32_t b = 1; b <= nb; b++) start[b] = (uint16_t)(start[b] + start[b - 1]);
     /* start[b] walks bucket b's run; afterwards it holds the run's end,
      * which is bucket b + 1's start */
     for (uint32_t gi = 0; gi < rc->ntris; gi++) {
-        struct ras_range r = rc->tri_rows[gi];
-        if (r.r0 <= r.r1) B->order[start[(uint32_t)r.r0 / rc->strip_rows]++] = (uint16_t)gi;
+        struct ras_trows r = rc->tri_rows[gi];
+        if (r.r0 > r.r1) continue;
+        uint32_t b = (uint32_t)ras_trows_first(rc, r) / rc->strip_rows;
+        B->order[start[b]++] = (uint16_t)gi;
+        if (ras_trows_last(rc, r) > B->reach[b]) B->reach[b] = (int16_t)ras_trows_last(rc, r);
     }
     for (uint32_t b = nb; b > 0; b--) start[b] = start[b - 1];
     start[0] = 0;
-    B->nactive = 0;
-    B->next_bucket = 0;
-    B->last_y0 = -1;
 }
 
 int raster_frame_start(void *work, uint16_t frame)
@@ -260,6 +298,11 @@ int raster_frame_start(void *work, uint16_t frame)
     }
 
     for (uint16_t k = 0; k < rc->fast.nkeep; k++) rc->fast.keep[k].tri = UINT32_MAX;
+    /* the caches of camera-space vertices start empty */
+    for (uint32_t k = 0; rc->def.vcache && k <= rc->def.vcache_mask; k++) {
+        rc->def.vcache[k].k = UINT32_MAX;
+        if (rc->def.vcache1) rc->def.vcache1[k].k = UINT32_MAX;
+    }
 
     /* RenderInstance, its frame half: every instance's matrices here, its
      * vertices in raster_frame_vertices, its triangles in raster_frame_triangles */
@@ -331,8 +374,9 @@ int raster_instance_facing(const void *work, uint16_t i, uint32_t *facing, uint3
     for (uint32_t k = 0; k < m->ntris; k++) {
         const struct ras_triangle *t = &m->tris[k];
         if (t->v[0] >= m->nverts || t->v[1] >= m->nverts || t->v[2] >= m->nverts) continue;
-        vec3 a = rc->verts[ri->vbase + t->v[0]].c, b = rc->verts[ri->vbase + t->v[1]].c,
-             c = rc->verts[ri->vbase + t->v[2]].c;
+        const struct ras_instance *in = &s->instances[i];
+        vec3 a = ras_cam_vertex(rc, in, ri, m, t->v[0], NULL), b = ras_cam_vertex(rc, in, ri, m, t->v[1], NULL),
+             c = ras_cam_vertex(rc, in, ri, m, t->v[2], NULL);
         struct ras_wnormal wf = ras_face_normal_wide(a, b, c);
         wnum f = ras_facing_wide(a, wf);
         if (f == 0 && wf.x == 0 && wf.y == 0 && wf.z == 0) continue;   /* degenerate */

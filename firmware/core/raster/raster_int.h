@@ -37,13 +37,25 @@ struct ras_inst {
 
 /* A transformed vertex: camera space. */
 struct ras_vert { vec3 c; };
+/* A camera-space vertex transformed again where the frame keeps no table
+ * of them (ras_ctx.verts NULL): direct-mapped by vertex, k the vertex's
+ * index in the frame (UINT32_MAX: empty), one cache per part of a split
+ * preparation. */
+struct ras_vcache { uint32_t k; vec3 c; };
 /* The book's projection of a vertex (the book path and wireframes only). */
 struct ras_proj { num px, py; };
 
 /* A vertex of the default path, projected once per frame: sub-pixel
- * screen position, 1/z and near/z, valid when `inside` (within every
- * clipping plane; triangles of three such corners skip the clipper). */
-struct ras_pv { int32_t sx, sy; num iz; uint32_t depth; uint8_t inside; };
+ * screen position, 1/z and near/z, valid unless sx is RAS_PV_OUT (outside
+ * a clipping plane; triangles of three valid corners skip the clipper).
+ * A vertex inside every plane lies within two pixels of the viewport, so
+ * its position fits 16 bits wherever (render size + 3) << sub_bits stays
+ * below 2^15 (240 pixels at 4 bits: 3,888); one that does not fit is
+ * marked RAS_PV_OUT too and its triangles take the clipper, which returns
+ * such a triangle unchanged and projects it the same way. */
+struct ras_pv { int16_t sx, sy; num iz; uint32_t depth; };
+#define RAS_PV_OUT INT16_MIN
+static inline int ras_pv_in(const struct ras_pv *q) { return q->sx != RAS_PV_OUT; }
 
 /* Per-frame facts of a triangle of the default path (PART1: culled and lit
  * by part 1 of a split preparation, its vertices' lighting in vert_shade1). */
@@ -52,6 +64,7 @@ enum { RAS_TRI_FRONT = 1, RAS_TRI_LIVE = 2, RAS_TRI_PART1 = 4 };
 /* Screen rows a primitive may touch (inclusive); r0 > r1: none. This is the
  * binning of primitives to strips, computed once per frame. */
 struct ras_range { int16_t r0, r1; };
+struct ras_trows { uint8_t r0, r1; };
 
 /* A texture as RGB565 for the fast path (power-of-two sides, nearest):
  * p == NULL when the texture does not qualify. */
@@ -107,6 +120,10 @@ struct ras_def {
                                 preparation (raster_frame_triangles), in the sibling's
                                 work memory; NULL: no sibling */
     uint8_t *vert_lit1;
+    struct ras_vcache *vcache;   /* camera-space vertices of the frame's culling and lighting
+                                    (ras_cam_vertex) where ras_ctx.verts is not kept, */
+    struct ras_vcache *vcache1;  /* and part 1's (the sibling's work memory); NULL: none */
+    uint16_t vcache_mask;        /* entries - 1 */
 };
 
 /* The fast span path's own state (the default path with perspective_step > 1). */
@@ -154,31 +171,29 @@ struct ras_c15 {
  * them, raster_strip.c walks them): each frame, the live triangles
  * (neither culled nor degenerate, with a pixel centre on screen) in order
  * of the bucket of strip_rows rows their first row falls in, stable, so
- * each bucket's run is in the scene's drawing order; per strip, the active
- * list holds, in drawing order, every triangle begun in a bucket up to the
- * strip's last row that has not ended above the strip. Strips taken in
- * increasing order (all of them, or every other one per core) update it;
- * a strip above the last starts it again. off: every triangle of every
- * instance is tested against every strip (the book path, wireframes, more
- * than 65535 triangles). */
+ * each bucket's run is in the scene's drawing order, and per bucket the
+ * last row its triangles reach. A strip merges the runs of the buckets
+ * begun up to its last row that reach it, by triangle index: the scene's
+ * drawing order, with no state from one strip to the next (strips in any
+ * order). off: every triangle of every instance is tested against every
+ * strip (the book path, wireframes, more than 65535 triangles). */
 struct ras_bins {
     uint8_t on;
     uint16_t nbuckets;
     uint16_t *order;         /* live triangles by bucket of their first row (ntris) */
     uint16_t *start;         /* nbuckets + 1: bucket b is order[start[b] .. start[b + 1]) */
-    uint16_t *active;        /* ntris: the strip's triangles, in drawing order */
-    uint32_t nactive;
-    uint32_t next_bucket;    /* buckets [0, next_bucket) are merged into active */
-    int32_t last_y0;         /* the strip the active list was made for; -1: none */
+    int16_t *reach;          /* nbuckets: the last row of bucket b's triangles, -1: none */
+    uint16_t *runs;          /* 2 nbuckets: a strip's runs being merged (cursor, end) */
 };
 
 /* A sibling context's own tables (raster_init_sibling): what its strips
  * write; everything else is its owner's, copied at each frame. */
 struct ras_own {
     uint8_t *depth;
-    uint16_t *active;
+    uint16_t *runs;
     struct ras_fast_state *keep;
     uint8_t *stencil;
+    struct ras_vcache *vcache;   /* the owner's part-1 camera-space vertices (ras_def.vcache1) */
     num *vshade;             /* the owner's part-1 vertex lighting (ras_def.vert_shade1) */
     uint8_t *vlit;
 };
@@ -200,9 +215,12 @@ struct ras_ctx {
     uint32_t tris_in, tris_drawn;
     uint32_t part_in[2], part_drawn[2];  /* the same counted by the parts of the triangles */
     struct ras_inst *inst;
-    struct ras_vert *verts;
+    struct ras_vert *verts;  /* per vertex; NULL where the default path transforms them
+                                again when needed (ras_cam_vertex) */
     struct ras_proj *proj;   /* per vertex; NULL on the default path, which projects in ras_pv */
-    struct ras_range *tri_rows, *prim_rows, *line_rows;
+    struct ras_trows *tri_rows;  /* per triangle (ras_trows_pack) */
+    uint8_t row_shift;           /* of tri_rows: 0 up to 256 rows, else the least that fits */
+    struct ras_range *prim_rows, *line_rows;
     struct ras_light *lights;
     uint8_t *depth;          /* strip_rows * w entries */
     struct ras_def def;
@@ -212,6 +230,43 @@ struct ras_ctx {
     const struct ras_ctx *owner;   /* a sibling's owner (raster_init_sibling), NULL: none */
     struct ras_own own;            /* a sibling's own tables */
 };
+
+/* Camera-space position of vertex k of an instance this frame where
+ * ras_ctx.verts is not kept: transformed again from the model (through
+ * cache vc, NULL: none), the same bits (ras_cam_vertex). */
+vec3 ras_cam_vertex_again(const struct ras_ctx *rc, const struct ras_instance *in, const struct ras_inst *ri,
+                          const struct ras_model *m, uint32_t k, struct ras_vcache *vc);
+
+/* Camera-space position of vertex k of an instance this frame: from
+ * ras_ctx.verts where kept, else ras_cam_vertex_again's. */
+static inline vec3 ras_cam_vertex(const struct ras_ctx *rc, const struct ras_instance *in, const struct ras_inst *ri,
+                                  const struct ras_model *m, uint32_t k, struct ras_vcache *vc)
+{
+    if (rc->verts) return rc->verts[ri->vbase + k].c;
+    return ras_cam_vertex_again(rc, in, ri, m, k, vc);
+}
+
+/* A triangle's rows in the frame's table (ras_ctx.tri_rows), a byte each:
+ * its first and last row >> row_shift, so the rows it stands for
+ * (ras_trows_first .. ras_trows_last) include the triangle's, the same rows
+ * up to 256 rows a frame; r0 > r1: none. */
+static inline struct ras_trows ras_trows_pack(const struct ras_ctx *rc, struct ras_range r)
+{
+    struct ras_trows p = { 1, 0 };
+    if (r.r0 <= r.r1) {
+        p.r0 = (uint8_t)((uint32_t)r.r0 >> rc->row_shift);
+        p.r1 = (uint8_t)((uint32_t)r.r1 >> rc->row_shift);
+    }
+    return p;
+}
+static inline int32_t ras_trows_first(const struct ras_ctx *rc, struct ras_trows p)
+{
+    return (int32_t)((uint32_t)p.r0 << rc->row_shift);
+}
+static inline int32_t ras_trows_last(const struct ras_ctx *rc, struct ras_trows p)
+{
+    return (int32_t)((((uint32_t)p.r1 + 1) << rc->row_shift) - 1);
+}
 
 /* The state in the caller's work memory, at its first WORK_ALIGN boundary
  * (raster_work_size counts the slack). */

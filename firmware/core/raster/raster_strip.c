@@ -49,6 +49,22 @@ static int rows_hit(struct ras_range r, const struct render_target *t)
     return r.r0 <= r.r1 && r.r1 >= (int)t->y0 && r.r0 < (int)t->y1;
 }
 
+/* The strip's rows y0 .. y1 - 1 as bounds of packed rows (struct ras_trows):
+ * a triangle's rows reach row y0 when r1 >= y0 >> row_shift, and begin
+ * above row y1 when r0 < y1 rounded up >> row_shift. */
+struct trows_strip { uint32_t y0, y1; };
+static struct trows_strip trows_strip(const struct ras_ctx *rc, const struct render_target *t)
+{
+    struct trows_strip b = { (uint32_t)t->y0 >> rc->row_shift,
+                             ((uint32_t)t->y1 + (1u << rc->row_shift) - 1u) >> rc->row_shift };
+    return b;
+}
+
+static int trows_hit(struct ras_trows r, struct trows_strip b)
+{
+    return r.r0 <= r.r1 && r.r1 >= b.y0 && r.r0 < b.y1;
+}
+
 /* RenderInstance, its strip half: the instance's triangles that touch the
  * strip (binned by prepare_instance), each through RenderTriangle. */
 static void render_instance(struct ras_ctx *rc, uint16_t i, const struct render_target *t)
@@ -57,47 +73,58 @@ static void render_instance(struct ras_ctx *rc, uint16_t i, const struct render_
     const struct ras_instance *in = &s->instances[i];
     const struct ras_inst *ri = &rc->inst[i];
     const struct ras_model *m = &s->models[in->model];
+    const struct trows_strip b = trows_strip(rc, t);
     if (!ri->visible) return;
     for (uint16_t k = 0; k < m->ntris; k++) {
-        if (!rows_hit(rc->tri_rows[ri->tbase + k], t)) continue;
+        if (!trows_hit(rc->tri_rows[ri->tbase + k], b)) continue;
         if (rc->book || s->ras.wireframe) ras_book_render_triangle(rc, in, ri, m, &m->tris[k]);
         else ras_default_render_triangle(rc, in, ri, m, &m->tris[k], ri->tbase + k);
     }
 }
 
-/* The active list (struct ras_bins) for strip t: triangles ended above it
- * dropped, the buckets begun up to its last row merged in, drawing order
- * kept. */
-static void bins_advance(struct ras_ctx *rc, const struct render_target *t)
+/* The binned triangles that reach strip t, in drawing order, each through
+ * RenderTriangle: the runs of the buckets begun up to the strip's last row
+ * whose triangles reach down to it (ras_bins.reach), the triangles ended
+ * above it skipped, merged by index (each run is in drawing order). */
+static void render_bins(struct ras_ctx *rc, const struct render_target *t)
 {
-    struct ras_bins *B = &rc->bins;
-    const struct ras_range *rows = rc->tri_rows;
+    const struct ras_bins *B = &rc->bins;
+    const struct scene *s = rc->s;
+    const struct ras_trows *rows = rc->tri_rows;
     const int32_t y0 = t->y0;
-    if (y0 < B->last_y0 || B->last_y0 < 0) { B->nactive = 0; B->next_bucket = 0; }
-    B->last_y0 = y0;
-    uint16_t *act = B->active;
-    uint32_t n = 0;
-    for (uint32_t k = 0; k < B->nactive; k++)
-        if (rows[act[k]].r1 >= y0) act[n++] = act[k];
-    uint32_t lastb = ((uint32_t)t->y1 - 1) / rc->strip_rows;
-    for (; B->next_bucket <= lastb && B->next_bucket < B->nbuckets; B->next_bucket++) {
-        const uint16_t *seg = B->order + B->start[B->next_bucket], *end = B->order + B->start[B->next_bucket + 1];
-        uint32_t add = 0;
-        for (const uint16_t *p = seg; p < end; p++) add += rows[*p].r1 >= y0;
-        if (!add) continue;
-        /* merge from the back: both runs are in drawing order */
-        uint32_t i = n, o = n + add, left = add;
-        const uint16_t *p = end;
-        while (left) {
-            uint16_t g = *--p;
-            if (rows[g].r1 < y0) continue;
-            while (i > 0 && act[i - 1] > g) act[--o] = act[--i];
-            act[--o] = g;
-            left--;
+    const struct trows_strip tb = trows_strip(rc, t);
+    uint16_t *cur = B->runs, *end = B->runs + B->nbuckets;
+    uint32_t lastb = ((uint32_t)t->y1 - 1) / rc->strip_rows, n = 0;
+    for (uint32_t b = 0; b <= lastb && b < B->nbuckets; b++)
+        if (B->reach[b] >= y0 && B->start[b] < B->start[b + 1]) {
+            cur[n] = B->start[b];
+            end[n++] = B->start[b + 1];
         }
-        n += add;
+    uint16_t i = 0;
+    while (n) {
+        uint32_t best = UINT32_MAX, bj = 0;
+        for (uint32_t j = 0; j < n;) {
+            uint32_t c = cur[j];
+            while (c < end[j] && rows[B->order[c]].r1 < tb.y0) c++;
+            if (c == end[j]) { /* the run is done: the last one takes its place */
+                n--;
+                cur[j] = cur[n];
+                end[j] = end[n];
+                continue;
+            }
+            cur[j] = (uint16_t)c;
+            if (B->order[c] < best) { best = B->order[c]; bj = j; }
+            j++;
+        }
+        if (best == UINT32_MAX) break;
+        cur[bj]++;
+        if (!trows_hit(rows[best], tb)) continue;
+        while (i + 1 < s->ninstances && best >= rc->inst[i + 1].tbase) i++;
+        const struct ras_instance *in = &s->instances[i];
+        const struct ras_inst *ri = &rc->inst[i];
+        const struct ras_model *m = &s->models[in->model];
+        ras_default_render_triangle(rc, in, ri, m, &m->tris[best - ri->tbase], best);
     }
-    B->nactive = n;
 }
 
 /* RenderScene for one strip: every instance, in the scene's order; with
@@ -109,22 +136,9 @@ static void render_scene(struct ras_ctx *rc, const struct render_target *t)
         if (pass == 1) { ras_shadow_volumes(rc); continue; }
         rc->cur.depth_only = (uint8_t)(pass == 0);
         rc->cur.depth_func = (uint8_t)(rc->c15.sv_on && pass == 2 ? RAS_DEPTH_EQUAL : RAS_DEPTH_LESS_WRITE);
-        if (!rc->bins.on) {
+        if (rc->bins.on) render_bins(rc, t);
+        else
             for (uint16_t i = 0; i < rc->s->ninstances; i++) render_instance(rc, i, t);
-            continue;
-        }
-        /* the binned triangles, in drawing order: instance by instance */
-        const struct scene *s = rc->s;
-        uint16_t i = 0;
-        for (uint32_t k = 0; k < rc->bins.nactive; k++) {
-            uint32_t gi = rc->bins.active[k];
-            if (!rows_hit(rc->tri_rows[gi], t)) continue;
-            while (i + 1 < s->ninstances && gi >= rc->inst[i + 1].tbase) i++;
-            const struct ras_instance *in = &s->instances[i];
-            const struct ras_inst *ri = &rc->inst[i];
-            const struct ras_model *m = &s->models[in->model];
-            ras_default_render_triangle(rc, in, ri, m, &m->tris[gi - ri->tbase], gi);
-        }
     }
 }
 
@@ -170,7 +184,6 @@ int raster_strip(void *work, struct render_target *t, struct render_stats *st)
         ras_project_vertex(rc, s->lines[i].b, &bx, &by);
         ras_draw_line(rc, ax, ay, bx, by, s->lines[i].color);
     }
-    if (rc->bins.on) bins_advance(rc, t);
     render_scene(rc, t);
     rc->cur.depth_only = 0;
     rc->cur.depth_func = RAS_DEPTH_LESS_WRITE;

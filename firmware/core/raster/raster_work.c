@@ -99,6 +99,34 @@ static uint16_t spec_exponents(const struct scene *s, int16_t *idx, uint32_t exp
     return n;
 }
 
+static uint32_t scene_count(const struct scene *s, int verts);
+
+/* Camera-space vertices kept a frame (ras_ctx.verts, 12 bytes a vertex in
+ * fixed point): what the book path, wireframes, Phong and chapter 15 read
+ * in every strip. The default path's other shadings read them only in the
+ * frame's culling and lighting and for triangles it clips: for scenes of
+ * more than RAS_CAM_TABLE_VERTS vertices (a mesh whose table would not fit
+ * an RP2040's work memory beside the rest) it transforms them again there
+ * (ras_cam_vertex), through a direct-mapped cache of at most RAS_VCACHE_MAX
+ * vertices per part of the preparation, at the cost of about one more
+ * transform for each vertex of a front face (bench/knot-16k-flat: 6 % of
+ * its frame on the M0+). */
+#define RAS_CAM_TABLE_VERTS 4096
+#define RAS_VCACHE_MAX 256
+static int cam_table(const struct scene *s)
+{
+    return !frame_cache(s) || eff_shading(s) == SHADE_PHONG || ch15_lit(&s->ras) ||
+           scene_count(s, 1) <= RAS_CAM_TABLE_VERTS;
+}
+
+static uint32_t vcache_entries(const struct scene *s, uint32_t nverts)
+{
+    if (cam_table(s) || nverts == 0) return 0;
+    uint32_t n = 1;
+    while (n < nverts && n < RAS_VCACHE_MAX) n *= 2;
+    return n;
+}
+
 static int shade_cache(const struct scene *s)
 {
     return frame_cache(s) && (eff_shading(s) == SHADE_GOURAUD || eff_shading(s) == SHADE_FLAT);
@@ -136,13 +164,13 @@ static uint16_t keep_slots(const struct scene *s, uint32_t ntris)
     return n;
 }
 
-/* The tables a strip writes (its depth buffer, the active triangle list,
+/* The tables a strip writes (its depth buffer, the runs it merges,
  * the set-ups kept between strips, the stencil): the whole of a sibling
  * context's own memory (struct ras_own), the last of an owner's. */
 static void carve_strip_tables(const struct scene *s, uint16_t w, uint16_t strip_rows, uint32_t ntris,
                                struct ras_ctx *rc, struct work_carve *c)
 {
-    rc->bins.active = work_take(c, rc->bins.on ? sizeof(uint16_t) * ntris : 0);
+    rc->bins.runs = work_take(c, rc->bins.on ? sizeof(uint16_t) * 2 * rc->bins.nbuckets : 0);
     rc->fast.nkeep = keep_slots(s, ntris);
     void *keep = work_take(c, sizeof(struct ras_fast_state) * rc->fast.nkeep);
     rc->fast.keep = rc->fast.nkeep ? keep : NULL;
@@ -155,6 +183,12 @@ static void carve_strip_tables(const struct scene *s, uint16_t w, uint16_t strip
 static int bins_on(const struct scene *s, uint32_t ntris)
 {
     return frame_cache(s) && ntris > 0 && ntris <= 0xFFFFu;
+}
+
+/* Its buckets: one a strip_rows rows. */
+static uint16_t bins_count(int on, uint16_t h, uint16_t strip_rows)
+{
+    return (uint16_t)(on && strip_rows ? (h + strip_rows - 1) / strip_rows : 0);
 }
 
 /* Every table of the state, in order, from c (c->base NULL: measuring, rc a
@@ -174,10 +208,15 @@ static int carve(const struct scene *s, uint16_t w, uint16_t h, uint16_t strip_r
     rc->ntris = ntris;
     (void)work_take(c, sizeof(struct ras_ctx));   /* the context itself, first */
     rc->inst = work_take(c, sizeof(struct ras_inst) * s->ninstances);
-    rc->verts = work_take(c, sizeof(struct ras_vert) * nverts);
+    void *verts = work_take(c, cam_table(s) ? sizeof(struct ras_vert) * nverts : 0);
+    rc->verts = cam_table(s) ? verts : NULL;
+    uint32_t nvc = vcache_entries(s, nverts);
+    void *vc = work_take(c, sizeof(struct ras_vcache) * nvc);
+    rc->def.vcache = nvc ? vc : NULL;
+    rc->def.vcache_mask = (uint16_t)(nvc ? nvc - 1 : 0);
     void *proj = work_take(c, frame_cache(s) ? 0 : sizeof(struct ras_proj) * nverts);
     rc->proj = frame_cache(s) ? NULL : proj;
-    rc->tri_rows = work_take(c, sizeof(struct ras_range) * ntris);
+    rc->tri_rows = work_take(c, sizeof(struct ras_trows) * ntris);
     rc->prim_rows = work_take(c, sizeof(struct ras_range) * s->nprims);
     rc->line_rows = work_take(c, sizeof(struct ras_range) * s->nlines);
     rc->lights = work_take(c, sizeof(struct ras_light) * s->nlights);
@@ -201,9 +240,10 @@ static int carve(const struct scene *s, uint16_t w, uint16_t h, uint16_t strip_r
     rc->def.vert_lit = (caches & 2) ? vlit : NULL;
     int bins = bins_on(s, ntris);
     rc->bins.on = (uint8_t)bins;
-    rc->bins.nbuckets = (uint16_t)(bins && strip_rows ? (h + strip_rows - 1) / strip_rows : 0);
+    rc->bins.nbuckets = bins_count(bins, h, strip_rows);
     rc->bins.order = work_take(c, bins ? sizeof(uint16_t) * ntris : 0);
     rc->bins.start = work_take(c, bins ? sizeof(uint16_t) * ((size_t)rc->bins.nbuckets + 1) : 0);
+    rc->bins.reach = work_take(c, sizeof(int16_t) * rc->bins.nbuckets);
     uint16_t nspec = spec_exponents(s, NULL, NULL);
     rc->fast.spec_tab = work_take(c, sizeof(uint16_t) * 257 * nspec);
     rc->fast.spec_step = work_take(c, sizeof(uint32_t) * 2 * nspec);
@@ -319,11 +359,11 @@ int raster_init(void *work, size_t work_size, const struct scene *s, uint16_t wi
     memset(rc, 0, sizeof *rc);
     struct work_carve c = { (uint8_t *)rc, 0 };
     if (carve(s, width, height, strip_rows, rc, &c)) return -1;
-    rc->bins.last_y0 = -1;
     rc->s = s;
     rc->w = width;
     rc->h = height;
     rc->strip_rows = strip_rows;
+    while (height && ((height - 1u) >> rc->row_shift) > 255u) rc->row_shift++;
     rc->book = s->ras.book_exact;
     rc->depth_bytes = (uint8_t)depth_bytes(s);
     rc->def.affine_from = -1;
@@ -369,10 +409,13 @@ static void carve_sibling(const struct scene *s, uint16_t w, uint16_t strip_rows
     int vl = (shade_caches(s) & 2) != 0;
     void *vs = work_take(c, vl ? sizeof(num) * nverts : 0);
     void *vb = work_take(c, vl ? (nverts + 7) / 8 : 0);
+    uint32_t nvc = vcache_entries(s, nverts);
+    void *vc = work_take(c, sizeof(struct ras_vcache) * nvc);
     rc->own.depth = rc->depth;
-    rc->own.active = rc->bins.active;
+    rc->own.runs = rc->bins.runs;
     rc->own.keep = rc->fast.keep;
     rc->own.stencil = rc->c15.stencil;
+    rc->own.vcache = nvc ? vc : NULL;
     rc->own.vshade = vl ? vs : NULL;
     rc->own.vlit = vl ? vb : NULL;
 }
@@ -381,9 +424,9 @@ size_t raster_sibling_work_size(const struct scene *s, uint16_t width, uint16_t 
 {
     struct ras_ctx scratch;
     struct work_carve c = { NULL, 0 };
-    (void)height;
     memset(&scratch, 0, sizeof scratch);
     scratch.bins.on = (uint8_t)bins_on(s, scene_count(s, 0));
+    scratch.bins.nbuckets = bins_count(scratch.bins.on, height, strip_rows);
     carve_sibling(s, width, strip_rows, &scratch, &c);
     return c.off + WORK_ALIGN;
 }
@@ -394,13 +437,10 @@ static void sibling_reset(struct ras_ctx *rc, const struct ras_ctx *ow, const st
     rc->owner = ow;
     rc->own = *own;
     rc->depth = own->depth;
-    rc->bins.active = own->active;
+    rc->bins.runs = own->runs;
     rc->fast.keep = own->keep;
     rc->c15.stencil = own->stencil;
     for (uint16_t k = 0; k < rc->fast.nkeep; k++) rc->fast.keep[k].tri = UINT32_MAX;
-    rc->bins.nactive = 0;
-    rc->bins.next_bucket = 0;
-    rc->bins.last_y0 = -1;
 }
 
 int raster_init_sibling(void *work, size_t work_size, const void *owner_work)
@@ -418,6 +458,8 @@ int raster_init_sibling(void *work, size_t work_size, const void *owner_work)
     struct ras_ctx *owm = (struct ras_ctx *)(uintptr_t)ow;
     owm->def.vert_shade1 = own.vshade;
     owm->def.vert_lit1 = own.vlit;
+    owm->def.vcache1 = own.vcache;
+    for (uint32_t k = 0; own.vcache && k <= ow->def.vcache_mask; k++) own.vcache[k].k = UINT32_MAX;
     if (own.vlit) memset(own.vlit, 0, (ow->nverts + 7) / 8);
     sibling_reset(rc, ow, &own);
     return 0;

@@ -88,6 +88,7 @@ struct rt_obj_cache {
      * = px_x0, .y = co.z (x vh) - px_cxd, .z = px_x2 - co.y (x vh) */
     int32_t px_row;
     int64_t px_b, px_x0, px_x2, px_cxd;
+    uint8_t near_ok;      /* rt_near_c_ok of c_cam: near roots beyond a limit found before the square root */
 };
 
 /* Bounding-sphere hierarchy node: a leaf holds items [first, first+count). */

@@ -97,7 +97,7 @@ struct sphere_quad {
  * the row's parts of b and CO x D once a row per sphere (rt_obj_cache),
  * then three products a pixel instead of nine; the same integers, so the
  * same bits as rt_quad_solve. */
-static int sphere_quad_row(struct rt_obj_cache *oc, const struct rt_ray *ray, struct sphere_quad *k)
+static int sphere_quad_row(struct rt_obj_cache *oc, const struct rt_ray *ray, struct sphere_quad *k, num limit)
 {
 #if NUM_MODE == NUM_MODE_FIXED
     vec3 co = oc->co_cam;
@@ -110,16 +110,21 @@ static int sphere_quad_row(struct rt_obj_cache *oc, const struct rt_ray *ray, st
     }
     int64_t bx = oc->px_b - num_smul32(co.x, ray->dx.x);
     if (k->c > 0 && bx <= 0) return 0;
+    /* the near root certainly beyond the limit (rt_near_beyond) */
+    if (oc->near_ok && rt_near_beyond(bx, k->cm, k->a, limit)) return 0;
     return rt_quad_solve_x(bx, rt_mag64(oc->px_x0), rt_mag64(num_smul32(co.z, ray->dx.x) - oc->px_cxd),
                            rt_mag64(oc->px_x2 - num_smul32(co.y, ray->dx.x)), k->a, &oc->qs, &k->k);
 #else
-    (void)oc; (void)ray; (void)k;
+    (void)oc; (void)ray; (void)k; (void)limit;
     return 0;
 #endif
 }
 
+/* limit: 0 may also mean that the near root is certainly above it (then
+ * sphere_first_hit's answer is "no hit" whatever the roots); NUM_MAX for
+ * the roots themselves. */
 static int sphere_quad(const struct rt_state *rt, int16_t obj, struct rt_ray *ray, struct sphere_quad *k,
-                       int coarse_done)
+                       int coarse_done, num limit)
 {
     const struct rt_object *o = &rt->s->objects[obj];
     const struct rt_obj_cache *oc = &rt->oc[obj];
@@ -145,7 +150,7 @@ static int sphere_quad(const struct rt_state *rt, int16_t obj, struct rt_ray *ra
         k->cm = cam ? oc->cm_cam : rt_quad_near_num(k->c, ray->dxm);   /* dxm is the height */
         k->ts = NUM_ONE;
         /* the row parts are a cache in the work memory, which is never const */
-        if (cam && ray->dxrow >= 0) return sphere_quad_row((struct rt_obj_cache *)oc, ray, k);
+        if (cam && ray->dxrow >= 0) return sphere_quad_row((struct rt_obj_cache *)oc, ray, k, limit);
         dir = &ray->dx;
     } else {
         rt_ray_exact(ray);
@@ -237,7 +242,7 @@ int rt_intersect_ray_sphere(const struct rt_state *rt, int16_t obj, struct rt_ra
         return 1;
     }
     struct sphere_quad k;
-    if (!sphere_quad(rt, obj, ray, &k, 0)) return 0;
+    if (!sphere_quad(rt, obj, ray, &k, 0, NUM_MAX)) return 0;
     if (k.k.q == 0) { *t1 = *t2 = NUM_ZERO; return 1; }
     num ra = quad_far(rt, obj, ray, &k);
     num rc = quad_near(&k);
@@ -267,7 +272,7 @@ static int sphere_first_hit(const struct rt_state *rt, int16_t obj, struct rt_ra
         return 0;   /* the other root, 0, is never above t_min */
     }
     struct sphere_quad k;
-    if (!sphere_quad(rt, obj, ray, &k, coarse_done)) return 0;
+    if (!sphere_quad(rt, obj, ray, &k, coarse_done, limit)) return 0;
     if (k.k.q == 0) {
         t1 = t2 = NUM_ZERO;
     } else if (k.c > 0 && k.k.disc_pos) {

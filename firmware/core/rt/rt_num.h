@@ -622,6 +622,51 @@ RT_ALWAYS_INLINE int rt_quad_solve_x(int64_t bx, uint64_t x0, uint64_t x1, uint6
 }
 #endif
 
+/* ---- a near root beyond the limit, decided before the square root -----
+ *
+ * From outside (c > 0) with b > 0 the near root is c / q, q = b + h, h the
+ * computed sqrt of the discriminant. When c >= |CO|^2 2^-16 (exactly, at 2F
+ * bits) and a >= 2^28, h <= b: rt_quad_solve_x's truncations raise its
+ * discriminant above b^2 - a c by at most E <= 2^-25 |CO x D'|^2 (kx > 0)
+ * + 2^e, with |CO x D'|^2 <= a |CO|^2, and 2^e <= max(1, a 2^-30)
+ * max(1, r^2 2^-30) (r^2 < |CO|^2), both below a c; so its h^2 <= b^2. Then
+ * q <= Qu = floor((2 bx + 2^(F-1)) / 2^F) (bx: b at 2F bits), and the
+ * rounded near root n / q (wnum_div: halves up, saturating; or, for
+ * q >= 2^32, both shifted by sh with q >= 2^(31+sh), rt_quad_near_m) is
+ * above a limit 0 <= L < 2^30 whenever n 2^F >= (L + 1) Qu: the shifts' half
+ * units cost at most q (L 2^-32 + 2^(F-32)) < q / 2 of the half unit L + 1
+ * has over L + 1/2. rt_near_c_ok checks the first condition from c and
+ * dot = CO.CO in wnum (each within 2 units of the exact values at F bits):
+ * c >= ((dot + 2) >> 16) + 3 implies it. Fixed point only. */
+static inline int rt_near_c_ok(wnum c, wnum dot)
+{
+#if NUM_MODE == NUM_MODE_FIXED
+    return dot >= 0 && dot < ((wnum)1 << 60) && c >= ((dot + 2) >> 16) + 3;
+#else
+    (void)c; (void)dot;
+    return 0;
+#endif
+}
+
+#if NUM_MODE == NUM_MODE_FIXED
+/* 1 only when the near root n / q of the quadratic with b = bx (2F bits),
+ * a = aq, c and |CO|^2 passing rt_near_c_ok is certainly above limit. */
+static inline int rt_near_beyond(int64_t bx, wnum n, wnum aq, num limit)
+{
+    if (NUM_FRAC > 20 || limit < 0 || limit >= ((num)1 << 30) || bx < ((int64_t)1 << NUM_FRAC) ||
+        bx >= ((int64_t)1 << 60) || n <= 0 ||
+        n >= ((wnum)1 << (62 - NUM_FRAC)) || aq < ((wnum)1 << 28))
+        return 0;
+    /* Qu < 2^(61-F) (bx < 2^60); above 2^31 both sides are divided by 2^s,
+     * Qu rounded up: floor(n 2^F / 2^s) >= (L + 1) (floor(Qu / 2^s) + 1)
+     * implies the unscaled test */
+    uint64_t qu = ((uint64_t)bx * 2u + (1u << (NUM_FRAC - 1))) >> NUM_FRAC;
+    int sh = qu >> 31 ? rt_bitlen64(qu) - 31 : 0;
+    uint32_t qs = (uint32_t)(qu >> sh) + (sh > 0);
+    return ((uint64_t)n << NUM_FRAC) >> sh >= num_umul32((uint32_t)limit + 1u, qs);
+}
+#endif
+
 RT_ALWAYS_INLINE int rt_quad_solve(vec3 co, vec3 d, wnum aq, wnum c, const struct rt_qsphere *sp, struct rt_quad *k)
 {
 #if NUM_MODE == NUM_MODE_FIXED

@@ -534,6 +534,8 @@ static inline num rt_tile_eps(num r, num colen)
 struct rt_qsphere {
 #if NUM_MODE == NUM_MODE_FIXED
     uint64_t r2x;
+    uint32_t r2s;         /* r2x >> kr, below 2^31 (rt_quad_solve_x's factor) */
+    int32_t kr;
 #else
     uint8_t none;
 #endif
@@ -544,6 +546,9 @@ static inline struct rt_qsphere rt_qsphere_make(num r)
     struct rt_qsphere q;
 #if NUM_MODE == NUM_MODE_FIXED
     q.r2x = (uint64_t)num_smul32(r, r);
+    int lr = q.r2x ? 64 - num_clz64(q.r2x) : 0;
+    q.kr = lr > 31 ? lr - 31 : 0;
+    q.r2s = (uint32_t)(q.r2x >> q.kr);
 #else
     (void)r;
     q.none = 1;
@@ -605,9 +610,9 @@ RT_ALWAYS_INLINE int rt_quad_solve_x(int64_t bx, uint64_t x0, uint64_t x1, uint6
     uint32_t s0 = (uint32_t)(x0 >> kx), s1 = (uint32_t)(x1 >> kx), s2 = (uint32_t)(x2 >> kx);
     uint64_t xx = num_umul32(s0, s0) + num_umul32(s1, s1) + num_umul32(s2, s2);
     /* a r^2 at scale 2^(ka + kr), both factors below 2^31 */
-    int la = rt_bitlen64(ax), lr = rt_bitlen64(sp->r2x);
-    int ka = la > 31 ? la - 31 : 0, kr = lr > 31 ? lr - 31 : 0;
-    uint64_t ar = num_umul32((uint32_t)(ax >> ka), (uint32_t)(sp->r2x >> kr));
+    int la = rt_bitlen64(ax);
+    int ka = la > 31 ? la - 31 : 0, kr = sp->kr;
+    uint64_t ar = num_umul32((uint32_t)(ax >> ka), sp->r2s);
     int e = 2 * kx > ka + kr ? 2 * kx : ka + kr;
     ar = rt_shr64(ar, e - ka - kr);
     xx = rt_shr64(xx, e - 2 * kx);

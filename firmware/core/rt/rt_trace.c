@@ -134,9 +134,8 @@ vec3 rt_far_point(const struct rt_ray *ray)
 
 /* CanvasToViewport for canvas point (x, y) (num, sub-pixel allowed), then
  * the camera rotation. */
-static vec3 rotate_direction(const struct rt_state *rt, vec3 d)
+static vec3 rotate_turned(const struct rt_state *rt, vec3 d)
 {
-    if (!rt->cam_rotated) return d;
     /* D'[i] = ((0 + D.x*M[i][0]) + D.y*M[i][1]) + D.z*M[i][2], the demo's order */
     vec3 r;
     const mat3 *m = &rt->cam_rot;
@@ -144,6 +143,12 @@ static vec3 rotate_direction(const struct rt_state *rt, vec3 d)
     r.y = num_add(num_add(num_add(NUM_ZERO, num_mul(d.x, m->m[1][0])), num_mul(d.y, m->m[1][1])), num_mul(d.z, m->m[1][2]));
     r.z = num_add(num_add(num_add(NUM_ZERO, num_mul(d.x, m->m[2][0])), num_mul(d.y, m->m[2][1])), num_mul(d.z, m->m[2][2]));
     return r;
+}
+
+/* The common case, a camera not turned, without a call. */
+static inline vec3 rotate_direction(const struct rt_state *rt, vec3 d)
+{
+    return rt->cam_rotated ? rotate_turned(rt, d) : d;
 }
 
 static vec3 canvas_to_viewport(const struct rt_state *rt, num x, num y)

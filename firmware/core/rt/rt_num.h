@@ -62,8 +62,10 @@ static inline int num_rt_reference_mode(void)
  * ARMv6-M). */
 #if defined(__GNUC__) || defined(__clang__)
 #define RT_ALWAYS_INLINE static inline __attribute__((always_inline))
+#define RT_NOINLINE __attribute__((noinline))
 #else
 #define RT_ALWAYS_INLINE static inline
+#define RT_NOINLINE
 #endif
 
 /* A point in both coarse units (fixed: raw >> 12 and raw >> (F - 10)). */

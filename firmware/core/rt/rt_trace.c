@@ -224,8 +224,9 @@ static int16_t *tile_list(struct rt_state *rt, int tc)
 }
 
 /* The lists of tile row tr: every tile column's items (book order), for
- * the rows it serves and one more either side (sub-pixel samples). */
-static void tile_lists(struct rt_state *rt, int32_t tr)
+ * the rows it serves and one more either side (sub-pixel samples). Not
+ * inlined: prim_list, once a pixel, stays a small function. */
+static RT_NOINLINE void tile_lists(struct rt_state *rt, int32_t tr)
 {
     const struct scene *s = rt->s;
     int r0 = tile_first_row(tr) - 1, r1 = tile_last_row(tr) + 1;
@@ -263,9 +264,11 @@ static void prim_list(struct rt_state *rt, int col, int row)
     if (row < 0) row = 0;
     if (row >= rt->h) row = rt->h - 1;
     int32_t tr = rt->tile_row;
-    if (tr < 0 || row < tile_first_row(tr) || row > tile_last_row(tr)) tile_lists(rt, row / RT_TILE);
-    int tc = col / RT_TILE;
-    rt->prim_items = tile_list(rt, tc);
+    /* tr < 0, or row outside [tile_first_row(tr), tile_last_row(tr)] */
+    if (tr < 0 || (uint32_t)(row - tile_first_row(tr)) > (uint32_t)(RT_TILE - 1 + RT_MAX_ADAPT))
+        tile_lists(rt, row / RT_TILE);
+    unsigned tc = (unsigned)col / RT_TILE;
+    rt->prim_items = tile_list(rt, (int)tc);
     rt->prim_n = rt->tile_n[tc];
 }
 

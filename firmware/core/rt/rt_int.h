@@ -196,7 +196,7 @@ static inline struct rt_state *rt_state_of(void *work) { return (struct rt_state
 
 /* rt_intersect.c */
 struct rt_ray rt_make_ray(vec3 o, vec3 d, int16_t origin, uint8_t from_camera);
-void rt_ray_init(struct rt_ray *r, vec3 o, vec3 d, int16_t origin, uint8_t from_camera);
+void rt_ray_init(struct rt_ray *r, const vec3 *o, const vec3 *d, int16_t origin, uint8_t from_camera);
 /* Computes the exact tests' forms of the direction (once per ray). */
 void rt_ray_exact(struct rt_ray *r);
 /* The book's IntersectRaySphere: its two roots (the book's order); 0 for a

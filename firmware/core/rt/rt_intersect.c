@@ -21,10 +21,14 @@
 /* The ray, with a copy of its direction scaled by a power of two for the
  * robust tests: D' = D / 2^k with D'.D' in [0.25, 4), and tscale = 2^-k,
  * which turns a root t' along D' into t along D. */
-void rt_ray_init(struct rt_ray *r, vec3 o, vec3 d, int16_t origin, uint8_t from_camera)
+void rt_ray_init(struct rt_ray *r, const vec3 *op, const vec3 *dp, int16_t origin, uint8_t from_camera)
 {
-    r->o = o;
-    r->d = d;
+    /* by components: a struct copy here becomes a memcpy call on ARMv6-M */
+    vec3 o, d;
+    o.x = op->x; o.y = op->y; o.z = op->z;
+    d.x = dp->x; d.y = dp->y; d.z = dp->z;
+    r->o.x = o.x; r->o.y = o.y; r->o.z = o.z;
+    r->d.x = d.x; r->d.y = d.y; r->d.z = d.z;
     rt_cdir_set(&r->cd, o, d);
     r->origin = origin;
     r->from_camera = from_camera;
@@ -42,7 +46,7 @@ void rt_ray_init(struct rt_ray *r, vec3 o, vec3 d, int16_t origin, uint8_t from_
 struct rt_ray rt_make_ray(vec3 o, vec3 d, int16_t origin, uint8_t from_camera)
 {
     struct rt_ray r;
-    rt_ray_init(&r, o, d, origin, from_camera);
+    rt_ray_init(&r, &o, &d, origin, from_camera);
     return r;
 }
 

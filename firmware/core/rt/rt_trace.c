@@ -99,7 +99,8 @@ static rgb trace_ray(struct rt_state *rt, struct rt_ray *ray, num t_min, num t_m
     rgb out = local;
     if (r > 0) {
         struct rt_ray rr;
-        rt_ray_init(&rr, p, reflect_ray(v, n), hit.surf, 0);
+        vec3 rd = reflect_ray(v, n);
+        rt_ray_init(&rr, &p, &rd, hit.surf, 0);
         rgb reflected = trace_ray(rt, &rr, s->rt.epsilon, NUM_MAX, depth - 1, NULL);
         out = colour_add(s, colour_scale(s, local, num_sub(NUM_ONE, r)), colour_scale(s, reflected, r));
     }
@@ -110,7 +111,7 @@ static rgb trace_ray(struct rt_state *rt, struct rt_ray *ray, num t_min, num t_m
         if (!rt_refract(ray->d, n, m->refraction > 0 ? m->refraction : NUM_ONE, &dir))
             dir = reflect_ray(v, n);
         struct rt_ray tr_ray;
-        rt_ray_init(&tr_ray, p, dir, hit.surf, 0);
+        rt_ray_init(&tr_ray, &p, &dir, hit.surf, 0);
         rgb seen = trace_ray(rt, &tr_ray, s->rt.epsilon, NUM_MAX, depth - 1, NULL);
         out = colour_add(s, colour_scale(s, out, num_sub(NUM_ONE, tr)), colour_scale(s, seen, tr));
     }
@@ -309,7 +310,7 @@ static rgb trace_primary(struct rt_state *rt, vec3 d, int col, int row, struct r
     struct rt_ray ray;
     prim->item = -1;
     prim->shadow = 0;
-    rt_ray_init(&ray, rt->cam_pos, d, -1, 1);
+    rt_ray_init(&ray, &rt->cam_pos, &d, -1, 1);
     if (col >= 0 && !rt->book && (!rt->cam_rotated || rt->cam_q29)) exact_dir(rt, &ray, col, row);
     rt->n.primary_rays++;
     rgb c = trace_ray(rt, &ray, rt->s->rt.t_min_primary, NUM_MAX, rt->depth, prim);

@@ -175,7 +175,7 @@ static int sphere_quad(const struct rt_state *rt, int16_t obj, struct rt_ray *ra
 static num quad_near(const struct sphere_quad *k)
 {
     if (k->m) return rt_quad_near_m(k->cm, &k->k);
-    return scale_t(wnum_div(k->c, k->k.q), k->ts);
+    return scale_t(rt_wdiv(k->c, k->k.q), k->ts);
 }
 
 /* The near root's fraction (rt_frac): c m / q along an exact direction. */

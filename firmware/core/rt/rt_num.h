@@ -813,6 +813,26 @@ static inline wnum rt_exact_sq(num v)
 #endif
 }
 
+/* wnum_div(a, b), bit for bit, with its common case inline: fixed point,
+ * a >= 0, 0 < b < 2^32 and a 2^F < 2^63, the rounded quotient below 2^31
+ * (halves up, as div_round_signed in num.c); anything else, saturation
+ * included, goes to wnum_div. */
+static inline num rt_wdiv(wnum a, wnum b)
+{
+#if NUM_MODE == NUM_MODE_FIXED
+    if (a >= 0 && b > 0 && b <= (wnum)UINT32_MAX && a < ((wnum)1 << (63 - NUM_FRAC))) {
+        uint64_t n = (uint64_t)a << NUM_FRAC;
+        uint32_t d = (uint32_t)b, rm;
+        if ((n >> 32) < d) {
+            uint64_t q = num_udiv64_32(n, d, &rm);
+            if (rm >= d - rm) q++;
+            if (q <= (uint64_t)INT32_MAX) return (num)q;
+        }
+    }
+#endif
+    return wnum_div(a, b);
+}
+
 /* c m, the numerator of the near root c m / q along D of a quadratic
  * solved along D m (|c m| < 2^61 raw: m <= 1024 and |CO| in the format). */
 static inline wnum rt_quad_near_num(wnum c, int32_t m)
@@ -832,8 +852,8 @@ static inline num rt_quad_near_m(wnum n, const struct rt_quad *k)
 #if NUM_MODE == NUM_MODE_FIXED
     /* q to 32 bits (n then stays within the fast path: n / q = t < 2^(31-F)) */
     int sh = rt_bitlen64(rt_mag64(k->q)) - 32;
-    if (sh <= 0) return wnum_div(n, k->q);
-    return wnum_div(rt_shr_round(n, sh), rt_shr_round(k->q, sh));
+    if (sh <= 0) return rt_wdiv(n, k->q);
+    return rt_wdiv(rt_shr_round(n, sh), rt_shr_round(k->q, sh));
 #else
     return wnum_div(n, k->q);
 #endif
@@ -862,7 +882,7 @@ static inline num rt_quad_far(const struct rt_quad *k, wnum aq)
     int lq = rt_bitlen64(rt_mag64(k->qx)), la = rt_bitlen64((uint64_t)aq);
     int sh = la - 32 > lq - (62 - NUM_FRAC) ? la - 32 : lq - (62 - NUM_FRAC);
     if (sh < 0) sh = 0;
-    return wnum_div(rt_shr_round(k->qx, sh), (wnum)((uint64_t)aq >> sh));
+    return rt_wdiv(rt_shr_round(k->qx, sh), (wnum)((uint64_t)aq >> sh));
 #else
     return wnum_div(k->q, aq);
 #endif

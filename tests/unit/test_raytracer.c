@@ -289,7 +289,7 @@ static void test_csg_planes_triangles(void)
                 check(!got, name, "unexpected hit at %g", got ? dd(hit.t) : 0.0);
             } else {
                 vec3 pnt = v3_make(NUM_ZERO, NUM_ZERO, got ? hit.t : NUM_ZERO);
-                vec3 n = got ? rt_hit_normal(rt, &hit, pnt) : v3_make(NUM_ZERO, NUM_ZERO, NUM_ZERO);
+                vec3 n = got ? rt_hit_normal(rt, &hit, &pnt) : v3_make(NUM_ZERO, NUM_ZERO, NUM_ZERO);
                 check(got && fabs(dd(hit.t) - cases[i].want) < 1e-3 && hit.surf == cases[i].surf &&
                           fabs(dd(n.z) - cases[i].nz) < 1e-3,
                       name, "got %d t=%g surf %d nz %g", got, got ? dd(hit.t) : 0.0, hit.surf, dd(n.z));
@@ -315,12 +315,14 @@ static void test_csg_planes_triangles(void)
     struct rt_hit hit;
     struct rt_ray down = rt_make_ray(v3_make(NUM_ZERO, NUM_ZERO, NUM_ZERO), v3_make(NUM_ZERO, NUM_C(-0.5), NUM_ONE), -1, 0);
     int got = rt_closest_intersection(rt, &down, NUM_C(0.5), NUM_MAX, &hit, 0);
-    vec3 n = rt_hit_normal(rt, &hit, v3_make(NUM_ZERO, NUM_C(-1.0), NUM_C(2.0)));
+    vec3 at = v3_make(NUM_ZERO, NUM_C(-1.0), NUM_C(2.0));
+    vec3 n = rt_hit_normal(rt, &hit, &at);
     check(got && hit.item == 0 && fabs(dd(hit.t) - 2.0) < 1e-4 && dd(n.y) > 0.999, "plane_hit_y_minus_1",
           "got %d item %d t=%g", got, hit.item, dd(hit.t));
     struct rt_ray fwd = rt_make_ray(v3_make(NUM_ZERO, NUM_ZERO, NUM_ZERO), v3_make(NUM_C(0.05), NUM_C(0.05), NUM_ONE), -1, 0);
     got = rt_closest_intersection(rt, &fwd, NUM_C(0.5), NUM_MAX, &hit, 0);
-    n = rt_hit_normal(rt, &hit, v3_make(NUM_C(0.2), NUM_C(0.2), NUM_C(4.0)));
+    at = v3_make(NUM_C(0.2), NUM_C(0.2), NUM_C(4.0));
+    n = rt_hit_normal(rt, &hit, &at);
     check(got && hit.item == 1 && fabs(dd(hit.t) - 4.0) < 1e-4 && dd(n.z) < -0.999, "triangle_hit_facing_viewer",
           "got %d item %d t=%g nz=%g", got, hit.item, dd(hit.t), dd(n.z));
     struct rt_ray side = rt_make_ray(v3_make(NUM_ZERO, NUM_ZERO, NUM_ZERO), v3_make(NUM_C(0.3), NUM_C(0.2), NUM_ONE), -1, 0);

@@ -211,7 +211,7 @@ int rt_closest_intersection(struct rt_state *rt, struct rt_ray *ray, num t_min, 
 /* Whether `item` is hit with t_min < t < t_max. */
 int rt_item_hit(struct rt_state *rt, int16_t item, struct rt_ray *ray, num t_min, num t_max,
                 struct rt_hit *hit);
-vec3 rt_hit_normal(const struct rt_state *rt, const struct rt_hit *hit, vec3 p);
+vec3 rt_hit_normal(const struct rt_state *rt, const struct rt_hit *hit, const vec3 *p);
 vec3 rt_far_point(const struct rt_ray *ray);
 
 /* rt_scene.c: the bounding-sphere hierarchy over rt->items (planes aside,

@@ -592,12 +592,12 @@ int rt_closest_intersection(struct rt_state *rt, struct rt_ray *ray, num t_min, 
     return found;
 }
 
-vec3 rt_hit_normal(const struct rt_state *rt, const struct rt_hit *hit, vec3 p)
+vec3 rt_hit_normal(const struct rt_state *rt, const struct rt_hit *hit, const vec3 *p)
 {
     const struct rt_object *o = &rt->s->objects[hit->surf];
     vec3 n;
     if (o->shape == RT_SPHERE) {
-        n = v3_sub(p, o->center);
+        n = v3_sub(*p, o->center);
         if (rt->book) {
             n = v3_scale(n, num_div(NUM_ONE, v3_len(n)));  /* N * (1/|N|), as the demos */
         } else {

@@ -79,7 +79,7 @@ static rgb trace_ray(struct rt_state *rt, struct rt_ray *ray, num t_min, num t_m
         num *m = &rt->hit_probe[hit.surf];
         *m = num_max(*m, v3_len(p));
     }
-    vec3 n = rt_hit_normal(rt, &hit, p);
+    vec3 n = rt_hit_normal(rt, &hit, &p);
     vec3 v = v3_neg(ray->d);
     rgb local;
     if (s->rt.unlit) {

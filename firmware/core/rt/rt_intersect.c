@@ -55,7 +55,7 @@ void rt_ray_exact(struct rt_ray *r)
     if (r->exact) return;
     r->exact = 1;
     vec3 d = r->d;
-    wnum a = v3_dot_wide(d, d);
+    wnum a, aq = rt_dot_self2(d, &a);   /* a = v3_dot_wide(d, d), aq = rt_quad_a(d, a) */
     r->a = a;
     /* find k from a alone (a/4 per halving), then scale once: exact */
     num ts = NUM_ONE;
@@ -68,15 +68,15 @@ void rt_ray_exact(struct rt_ray *r)
     if (k > 0) {
         ts = wnum_to_num_shr(wnum_from_num(NUM_ONE), k);
         d = v3_scale(d, ts);
-        a = v3_dot_wide(d, d);
+        aq = rt_dot_self2(d, &a);
     } else if (k < 0) {
         ts = num_mul_int(NUM_ONE, 1 << -k);
         d = v3_scale(d, ts);
-        a = v3_dot_wide(d, d);
+        aq = rt_dot_self2(d, &a);
     }
     r->ds = d;
     r->as = a;
-    r->aq = rt_quad_a(d, a);
+    r->aq = aq;
     r->tscale = ts;
 }
 

@@ -595,6 +595,22 @@ static inline wnum rt_quad_a(vec3 d, wnum as)
 #endif
 }
 
+/* D.D both as v3_dot_wide forms it (*w: each square rounded to F bits,
+ * num_mul_round) and as rt_quad_a does (returned), from one set of exact
+ * products in fixed point. */
+static inline wnum rt_dot_self2(vec3 d, wnum *w)
+{
+#if NUM_MODE == NUM_MODE_FIXED
+    int64_t x = num_smul32(d.x, d.x), y = num_smul32(d.y, d.y), z = num_smul32(d.z, d.z);
+    int64_t h = (int64_t)1 << (NUM_FRAC - 1);
+    *w = ((x + h) >> NUM_FRAC) + ((y + h) >> NUM_FRAC) + ((z + h) >> NUM_FRAC);
+    return x + y + z;
+#else
+    *w = v3_dot_wide(d, d);
+    return rt_quad_a(d, *w);
+#endif
+}
+
 /* Solves the quadratic of CO and D' (aq = rt_quad_a(D'), c in wnum): 0 when
  * the discriminant is negative or when c > 0 and b <= 0 (both roots at or
  * behind the origin, outside the sphere). */

@@ -671,11 +671,12 @@ static inline int rt_near_c_ok(wnum c, wnum dot)
 #endif
 }
 
-#if NUM_MODE == NUM_MODE_FIXED
 /* 1 only when the near root n / q of the quadratic with b = bx (2F bits),
- * a = aq, c and |CO|^2 passing rt_near_c_ok is certainly above limit. */
+ * a = aq, c and |CO|^2 passing rt_near_c_ok is certainly above limit (0 in
+ * floating modes). */
 static inline int rt_near_beyond(int64_t bx, wnum n, wnum aq, num limit)
 {
+#if NUM_MODE == NUM_MODE_FIXED
     if (NUM_FRAC > 20 || limit < 0 || limit >= ((num)1 << 30) || bx < ((int64_t)1 << NUM_FRAC) ||
         bx >= ((int64_t)1 << 60) || n <= 0 ||
         n >= ((wnum)1 << (62 - NUM_FRAC)) || aq < ((wnum)1 << 28))
@@ -687,8 +688,11 @@ static inline int rt_near_beyond(int64_t bx, wnum n, wnum aq, num limit)
     int sh = qu >> 31 ? rt_bitlen64(qu) - 31 : 0;
     uint32_t qs = (uint32_t)(qu >> sh) + (sh > 0);
     return ((uint64_t)n << NUM_FRAC) >> sh >= num_umul32((uint32_t)limit + 1u, qs);
-}
+#else
+    (void)bx; (void)n; (void)aq; (void)limit;
+    return 0;
 #endif
+}
 
 RT_ALWAYS_INLINE int rt_quad_solve(vec3 co, vec3 d, wnum aq, wnum c, const struct rt_qsphere *sp, struct rt_quad *k)
 {

@@ -86,8 +86,12 @@ static rgb pixel(struct rt_state *rt, int col, int row, int have_left, int have_
         }
         return c;
     }
-    rt->row_item[col] = pr.item;
-    rt->row_c[col] = c;
+    /* the notes a subsampled row decides by (nothing else reads a plain
+     * pixel's) */
+    if (rt->subsample > 1) {
+        rt->row_item[col] = pr.item;
+        rt->row_c[col] = c;
+    }
     return c;
 }
 

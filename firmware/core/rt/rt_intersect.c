@@ -32,13 +32,7 @@ void rt_ray_init(struct rt_ray *r, const vec3 *op, const vec3 *dp, int16_t origi
     rt_cdir_set(&r->cd, o, d);
     r->origin = origin;
     r->from_camera = from_camera;
-    r->exact = 0;
-    r->a = r->as = r->aq = 0;   /* set by rt_ray_exact */
-    /* by components: a struct copy here becomes a memcpy call on ARMv6-M */
-    r->ds.x = d.x;
-    r->ds.y = d.y;
-    r->ds.z = d.z;
-    r->tscale = NUM_ONE;
+    r->exact = 0;   /* a, ds, as, aq and tscale: set by rt_ray_exact before any use */
     r->dxm = 0;
     r->dxrow = -1;
 }

@@ -42,10 +42,12 @@ int rt_refract(vec3 d, vec3 n, num ior, vec3 *out)
 /* Colour x weight and colour + colour, in 32-bit arithmetic when the
  * scene's format analysis proved colour intermediates in range
  * (SCENE_FITS_COLOUR: same bits, no saturation checks). */
+static RT_NOINLINE rgb colour_scale_sat(rgb c, num k) { return rgb_scale(c, k); }
+/* the proven case inline, the saturating one a call (code size) */
 RT_ALWAYS_INLINE rgb colour_scale(const struct scene *s, rgb c, num k)
 {
     if (s->fits & SCENE_FITS_COLOUR) return rgb_make(num_mul_fit(c.r, k), num_mul_fit(c.g, k), num_mul_fit(c.b, k));
-    return rgb_scale(c, k);
+    return colour_scale_sat(c, k);
 }
 static inline rgb colour_add(const struct scene *s, rgb a, rgb b)
 {

@@ -289,7 +289,7 @@ static void test_csg_planes_triangles(void)
                 check(!got, name, "unexpected hit at %g", got ? dd(hit.t) : 0.0);
             } else {
                 vec3 pnt = v3_make(NUM_ZERO, NUM_ZERO, got ? hit.t : NUM_ZERO);
-                vec3 n = got ? rt_hit_normal(rt, &hit, pnt) : v3_make(NUM_ZERO, NUM_ZERO, NUM_ZERO);
+                vec3 n = got ? rt_hit_normal(rt, &hit, &pnt) : v3_make(NUM_ZERO, NUM_ZERO, NUM_ZERO);
                 check(got && fabs(dd(hit.t) - cases[i].want) < 1e-3 && hit.surf == cases[i].surf &&
                           fabs(dd(n.z) - cases[i].nz) < 1e-3,
                       name, "got %d t=%g surf %d nz %g", got, got ? dd(hit.t) : 0.0, hit.surf, dd(n.z));
@@ -315,12 +315,14 @@ static void test_csg_planes_triangles(void)
     struct rt_hit hit;
     struct rt_ray down = rt_make_ray(v3_make(NUM_ZERO, NUM_ZERO, NUM_ZERO), v3_make(NUM_ZERO, NUM_C(-0.5), NUM_ONE), -1, 0);
     int got = rt_closest_intersection(rt, &down, NUM_C(0.5), NUM_MAX, &hit, 0);
-    vec3 n = rt_hit_normal(rt, &hit, v3_make(NUM_ZERO, NUM_C(-1.0), NUM_C(2.0)));
+    vec3 at = v3_make(NUM_ZERO, NUM_C(-1.0), NUM_C(2.0));
+    vec3 n = rt_hit_normal(rt, &hit, &at);
     check(got && hit.item == 0 && fabs(dd(hit.t) - 2.0) < 1e-4 && dd(n.y) > 0.999, "plane_hit_y_minus_1",
           "got %d item %d t=%g", got, hit.item, dd(hit.t));
     struct rt_ray fwd = rt_make_ray(v3_make(NUM_ZERO, NUM_ZERO, NUM_ZERO), v3_make(NUM_C(0.05), NUM_C(0.05), NUM_ONE), -1, 0);
     got = rt_closest_intersection(rt, &fwd, NUM_C(0.5), NUM_MAX, &hit, 0);
-    n = rt_hit_normal(rt, &hit, v3_make(NUM_C(0.2), NUM_C(0.2), NUM_C(4.0)));
+    at = v3_make(NUM_C(0.2), NUM_C(0.2), NUM_C(4.0));
+    n = rt_hit_normal(rt, &hit, &at);
     check(got && hit.item == 1 && fabs(dd(hit.t) - 4.0) < 1e-4 && dd(n.z) < -0.999, "triangle_hit_facing_viewer",
           "got %d item %d t=%g nz=%g", got, hit.item, dd(hit.t), dd(n.z));
     struct rt_ray side = rt_make_ray(v3_make(NUM_ZERO, NUM_ZERO, NUM_ZERO), v3_make(NUM_C(0.3), NUM_C(0.2), NUM_ONE), -1, 0);
@@ -564,6 +566,49 @@ static void test_coarse_rejection(void)
           "coarse_sphere_rejection_only_certain_misses",
           "%ld of %ld claimed misses hit, %ld of %ld negative claims wrong (%ld rays)", wrong, rejected, negwrong,
           negclaims, total);
+
+    /* rt_near_beyond: a near root it claims beyond the limit is beyond it
+     * (or the quadratic has no root); spheres of radii 0.01 .. 5000 seen
+     * from outside, directions of lengths 1/4 .. 2^9 with multipliers m of
+     * 1 .. 1024 (exact primary directions) or none, limits around the root */
+    long nwrong = 0, nclaims = 0, ntried = 0;
+    for (int k = 0; k < 40000; k++) {
+        double r = exp(log(0.01) + urand(&st) * (log(5000.0) - log(0.01)));
+        double dist = r * (1.0 + exp((urand(&st) - 0.9) * 12)) + 0.01;
+        if (dist > 12000) dist = 12000;
+        double u[3], len = 0;
+        for (int i = 0; i < 3; i++) { u[i] = urand(&st) - 0.5; len += u[i] * u[i]; }
+        len = sqrt(len);
+        vec3 co = v3_make(num_from_double(u[0] / len * dist), num_from_double(u[1] / len * dist),
+                          num_from_double(u[2] / len * dist));
+        /* towards the centre, off by up to about the sphere's angle */
+        double dl = exp((urand(&st) - 0.3) * 6), spread = 2.5 * r / dist;
+        int32_t m = k % 2 ? 1 + (int32_t)(urand(&st) * 1024) : 0;
+        vec3 d = v3_make(num_from_double((-u[0] / len + (urand(&st) - 0.5) * spread) * dl),
+                         num_from_double((-u[1] / len + (urand(&st) - 0.5) * spread) * dl),
+                         num_from_double((-u[2] / len + (urand(&st) - 0.5) * spread) * dl));
+        num rn = num_from_double(r);
+        struct rt_qsphere qs = rt_qsphere_make(rn);
+        wnum dot = v3_dot_wide(co, co), c = wnum_sub(dot, num_mul_wide(rn, rn));
+        wnum aq = rt_quad_a(d, v3_dot_wide(d, d));
+        struct rt_quad q;
+        wnum n = m ? rt_quad_near_num(c, m) : c;
+        int got = rt_quad_solve(co, d, aq, c, &qs, &q) && q.q != 0;
+        num t = got ? (m ? rt_quad_near_m(n, &q) : wnum_div(c, q.q)) : NUM_MAX;
+        int64_t l64 = got && k % 4 && t < NUM_MAX - 8 ? (int64_t)t + (int64_t)(urand(&st) * 9) - 4 : 0;
+        num lim = l64 > 0 ? (num)l64 : num_from_double(urand(&st) * 40);
+        if (!rt_near_c_ok(c, dot)) continue;
+        ntried++;
+        /* b at 2F bits, exactly as rt_quad_solve forms it (fixed point: only
+         * there does rt_near_c_ok pass) */
+        int64_t bx = -((int64_t)co.x * (int64_t)d.x + (int64_t)co.y * (int64_t)d.y + (int64_t)co.z * (int64_t)d.z);
+        if (c > 0 && bx > 0 && rt_near_beyond(bx, n, aq, lim)) {
+            nclaims++;
+            if (got && t <= lim) nwrong++;
+        }
+    }
+    check(nwrong == 0 && (!fixed || nclaims * 20 > ntried), "near_root_beyond_only_certain",
+          "%ld of %ld claims wrong (%ld tried)", nwrong, nclaims, ntried);
 
     /* rt_div_at_most is num_div(a, b) <= t; the zero threshold of powers */
     long bad = 0;

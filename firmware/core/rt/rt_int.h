@@ -88,6 +88,7 @@ struct rt_obj_cache {
      * = px_x0, .y = co.z (x vh) - px_cxd, .z = px_x2 - co.y (x vh) */
     int32_t px_row;
     int64_t px_b, px_x0, px_x2, px_cxd;
+    uint8_t near_ok;      /* rt_near_c_ok of c_cam: near roots beyond a limit found before the square root */
 };
 
 /* Bounding-sphere hierarchy node: a leaf holds items [first, first+count). */
@@ -195,7 +196,7 @@ static inline struct rt_state *rt_state_of(void *work) { return (struct rt_state
 
 /* rt_intersect.c */
 struct rt_ray rt_make_ray(vec3 o, vec3 d, int16_t origin, uint8_t from_camera);
-void rt_ray_init(struct rt_ray *r, vec3 o, vec3 d, int16_t origin, uint8_t from_camera);
+void rt_ray_init(struct rt_ray *r, const vec3 *o, const vec3 *d, int16_t origin, uint8_t from_camera);
 /* Computes the exact tests' forms of the direction (once per ray). */
 void rt_ray_exact(struct rt_ray *r);
 /* The book's IntersectRaySphere: its two roots (the book's order); 0 for a
@@ -210,7 +211,7 @@ int rt_closest_intersection(struct rt_state *rt, struct rt_ray *ray, num t_min, 
 /* Whether `item` is hit with t_min < t < t_max. */
 int rt_item_hit(struct rt_state *rt, int16_t item, struct rt_ray *ray, num t_min, num t_max,
                 struct rt_hit *hit);
-vec3 rt_hit_normal(const struct rt_state *rt, const struct rt_hit *hit, vec3 p);
+vec3 rt_hit_normal(const struct rt_state *rt, const struct rt_hit *hit, const vec3 *p);
 vec3 rt_far_point(const struct rt_ray *ray);
 
 /* rt_scene.c: the bounding-sphere hierarchy over rt->items (planes aside,

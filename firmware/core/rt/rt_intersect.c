@@ -21,20 +21,18 @@
 /* The ray, with a copy of its direction scaled by a power of two for the
  * robust tests: D' = D / 2^k with D'.D' in [0.25, 4), and tscale = 2^-k,
  * which turns a root t' along D' into t along D. */
-void rt_ray_init(struct rt_ray *r, vec3 o, vec3 d, int16_t origin, uint8_t from_camera)
+void rt_ray_init(struct rt_ray *r, const vec3 *op, const vec3 *dp, int16_t origin, uint8_t from_camera)
 {
-    r->o = o;
-    r->d = d;
+    /* by components: a struct copy here becomes a memcpy call on ARMv6-M */
+    vec3 o, d;
+    o.x = op->x; o.y = op->y; o.z = op->z;
+    d.x = dp->x; d.y = dp->y; d.z = dp->z;
+    r->o.x = o.x; r->o.y = o.y; r->o.z = o.z;
+    r->d.x = d.x; r->d.y = d.y; r->d.z = d.z;
     rt_cdir_set(&r->cd, o, d);
     r->origin = origin;
     r->from_camera = from_camera;
-    r->exact = 0;
-    r->a = r->as = r->aq = 0;   /* set by rt_ray_exact */
-    /* by components: a struct copy here becomes a memcpy call on ARMv6-M */
-    r->ds.x = d.x;
-    r->ds.y = d.y;
-    r->ds.z = d.z;
-    r->tscale = NUM_ONE;
+    r->exact = 0;   /* a, ds, as, aq and tscale: set by rt_ray_exact before any use */
     r->dxm = 0;
     r->dxrow = -1;
 }
@@ -42,7 +40,7 @@ void rt_ray_init(struct rt_ray *r, vec3 o, vec3 d, int16_t origin, uint8_t from_
 struct rt_ray rt_make_ray(vec3 o, vec3 d, int16_t origin, uint8_t from_camera)
 {
     struct rt_ray r;
-    rt_ray_init(&r, o, d, origin, from_camera);
+    rt_ray_init(&r, &o, &d, origin, from_camera);
     return r;
 }
 
@@ -51,7 +49,7 @@ void rt_ray_exact(struct rt_ray *r)
     if (r->exact) return;
     r->exact = 1;
     vec3 d = r->d;
-    wnum a = v3_dot_wide(d, d);
+    wnum a, aq = rt_dot_self2(d, &a);   /* a = v3_dot_wide(d, d), aq = rt_quad_a(d, a) */
     r->a = a;
     /* find k from a alone (a/4 per halving), then scale once: exact */
     num ts = NUM_ONE;
@@ -64,15 +62,15 @@ void rt_ray_exact(struct rt_ray *r)
     if (k > 0) {
         ts = wnum_to_num_shr(wnum_from_num(NUM_ONE), k);
         d = v3_scale(d, ts);
-        a = v3_dot_wide(d, d);
+        aq = rt_dot_self2(d, &a);
     } else if (k < 0) {
         ts = num_mul_int(NUM_ONE, 1 << -k);
         d = v3_scale(d, ts);
-        a = v3_dot_wide(d, d);
+        aq = rt_dot_self2(d, &a);
     }
     r->ds = d;
     r->as = a;
-    r->aq = rt_quad_a(d, a);
+    r->aq = aq;
     r->tscale = ts;
 }
 
@@ -97,7 +95,7 @@ struct sphere_quad {
  * the row's parts of b and CO x D once a row per sphere (rt_obj_cache),
  * then three products a pixel instead of nine; the same integers, so the
  * same bits as rt_quad_solve. */
-static int sphere_quad_row(struct rt_obj_cache *oc, const struct rt_ray *ray, struct sphere_quad *k)
+static int sphere_quad_row(struct rt_obj_cache *oc, const struct rt_ray *ray, struct sphere_quad *k, num limit)
 {
 #if NUM_MODE == NUM_MODE_FIXED
     vec3 co = oc->co_cam;
@@ -110,16 +108,21 @@ static int sphere_quad_row(struct rt_obj_cache *oc, const struct rt_ray *ray, st
     }
     int64_t bx = oc->px_b - num_smul32(co.x, ray->dx.x);
     if (k->c > 0 && bx <= 0) return 0;
+    /* the near root certainly beyond the limit (rt_near_beyond) */
+    if (oc->near_ok && rt_near_beyond(bx, k->cm, k->a, limit)) return 0;
     return rt_quad_solve_x(bx, rt_mag64(oc->px_x0), rt_mag64(num_smul32(co.z, ray->dx.x) - oc->px_cxd),
                            rt_mag64(oc->px_x2 - num_smul32(co.y, ray->dx.x)), k->a, &oc->qs, &k->k);
 #else
-    (void)oc; (void)ray; (void)k;
+    (void)oc; (void)ray; (void)k; (void)limit;
     return 0;
 #endif
 }
 
+/* limit: 0 may also mean that the near root is certainly above it (then
+ * sphere_first_hit's answer is "no hit" whatever the roots); NUM_MAX for
+ * the roots themselves. */
 static int sphere_quad(const struct rt_state *rt, int16_t obj, struct rt_ray *ray, struct sphere_quad *k,
-                       int coarse_done)
+                       int coarse_done, num limit)
 {
     const struct rt_object *o = &rt->s->objects[obj];
     const struct rt_obj_cache *oc = &rt->oc[obj];
@@ -145,7 +148,7 @@ static int sphere_quad(const struct rt_state *rt, int16_t obj, struct rt_ray *ra
         k->cm = cam ? oc->cm_cam : rt_quad_near_num(k->c, ray->dxm);   /* dxm is the height */
         k->ts = NUM_ONE;
         /* the row parts are a cache in the work memory, which is never const */
-        if (cam && ray->dxrow >= 0) return sphere_quad_row((struct rt_obj_cache *)oc, ray, k);
+        if (cam && ray->dxrow >= 0) return sphere_quad_row((struct rt_obj_cache *)oc, ray, k, limit);
         dir = &ray->dx;
     } else {
         rt_ray_exact(ray);
@@ -166,7 +169,7 @@ static int sphere_quad(const struct rt_state *rt, int16_t obj, struct rt_ray *ra
 static num quad_near(const struct sphere_quad *k)
 {
     if (k->m) return rt_quad_near_m(k->cm, &k->k);
-    return scale_t(wnum_div(k->c, k->k.q), k->ts);
+    return scale_t(rt_wdiv(k->c, k->k.q), k->ts);
 }
 
 /* The near root's fraction (rt_frac): c m / q along an exact direction. */
@@ -237,7 +240,7 @@ int rt_intersect_ray_sphere(const struct rt_state *rt, int16_t obj, struct rt_ra
         return 1;
     }
     struct sphere_quad k;
-    if (!sphere_quad(rt, obj, ray, &k, 0)) return 0;
+    if (!sphere_quad(rt, obj, ray, &k, 0, NUM_MAX)) return 0;
     if (k.k.q == 0) { *t1 = *t2 = NUM_ZERO; return 1; }
     num ra = quad_far(rt, obj, ray, &k);
     num rc = quad_near(&k);
@@ -267,7 +270,7 @@ static int sphere_first_hit(const struct rt_state *rt, int16_t obj, struct rt_ra
         return 0;   /* the other root, 0, is never above t_min */
     }
     struct sphere_quad k;
-    if (!sphere_quad(rt, obj, ray, &k, coarse_done)) return 0;
+    if (!sphere_quad(rt, obj, ray, &k, coarse_done, limit)) return 0;
     if (k.k.q == 0) {
         t1 = t2 = NUM_ZERO;
     } else if (k.c > 0 && k.k.disc_pos) {
@@ -583,12 +586,12 @@ int rt_closest_intersection(struct rt_state *rt, struct rt_ray *ray, num t_min, 
     return found;
 }
 
-vec3 rt_hit_normal(const struct rt_state *rt, const struct rt_hit *hit, vec3 p)
+vec3 rt_hit_normal(const struct rt_state *rt, const struct rt_hit *hit, const vec3 *p)
 {
     const struct rt_object *o = &rt->s->objects[hit->surf];
     vec3 n;
     if (o->shape == RT_SPHERE) {
-        n = v3_sub(p, o->center);
+        n = v3_sub(*p, o->center);
         if (rt->book) {
             n = v3_scale(n, num_div(NUM_ONE, v3_len(n)));  /* N * (1/|N|), as the demos */
         } else {

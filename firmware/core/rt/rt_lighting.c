@@ -86,7 +86,7 @@ num rt_compute_lighting(struct rt_state *rt, vec3 p, vec3 n, int unit_normal, ve
                 sr.exact = 1;
                 sr.dxm = 0;
             } else {
-                rt_ray_init(&sr, p, l, origin, 0);
+                rt_ray_init(&sr, &p, &l, origin, 0);
             }
             if (in_shadow(rt, &sr, t_max, k)) {
                 if (shadow_bits && k < 7) *shadow_bits |= (uint8_t)(1u << k);

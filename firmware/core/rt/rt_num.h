@@ -62,8 +62,10 @@ static inline int num_rt_reference_mode(void)
  * ARMv6-M). */
 #if defined(__GNUC__) || defined(__clang__)
 #define RT_ALWAYS_INLINE static inline __attribute__((always_inline))
+#define RT_NOINLINE __attribute__((noinline))
 #else
 #define RT_ALWAYS_INLINE static inline
+#define RT_NOINLINE
 #endif
 
 /* A point in both coarse units (fixed: raw >> 12 and raw >> (F - 10)). */
@@ -534,6 +536,8 @@ static inline num rt_tile_eps(num r, num colen)
 struct rt_qsphere {
 #if NUM_MODE == NUM_MODE_FIXED
     uint64_t r2x;
+    uint32_t r2s;         /* r2x >> kr, below 2^31 (rt_quad_solve_x's factor) */
+    int32_t kr;
 #else
     uint8_t none;
 #endif
@@ -544,6 +548,9 @@ static inline struct rt_qsphere rt_qsphere_make(num r)
     struct rt_qsphere q;
 #if NUM_MODE == NUM_MODE_FIXED
     q.r2x = (uint64_t)num_smul32(r, r);
+    int lr = q.r2x ? 64 - num_clz64(q.r2x) : 0;
+    q.kr = lr > 31 ? lr - 31 : 0;
+    q.r2s = (uint32_t)(q.r2x >> q.kr);
 #else
     (void)r;
     q.none = 1;
@@ -588,6 +595,22 @@ static inline wnum rt_quad_a(vec3 d, wnum as)
 #endif
 }
 
+/* D.D both as v3_dot_wide forms it (*w: each square rounded to F bits,
+ * num_mul_round) and as rt_quad_a does (returned), from one set of exact
+ * products in fixed point. */
+static inline wnum rt_dot_self2(vec3 d, wnum *w)
+{
+#if NUM_MODE == NUM_MODE_FIXED
+    int64_t x = num_smul32(d.x, d.x), y = num_smul32(d.y, d.y), z = num_smul32(d.z, d.z);
+    int64_t h = (int64_t)1 << (NUM_FRAC - 1);
+    *w = ((x + h) >> NUM_FRAC) + ((y + h) >> NUM_FRAC) + ((z + h) >> NUM_FRAC);
+    return x + y + z;
+#else
+    *w = v3_dot_wide(d, d);
+    return rt_quad_a(d, *w);
+#endif
+}
+
 /* Solves the quadratic of CO and D' (aq = rt_quad_a(D'), c in wnum): 0 when
  * the discriminant is negative or when c > 0 and b <= 0 (both roots at or
  * behind the origin, outside the sphere). */
@@ -605,9 +628,9 @@ RT_ALWAYS_INLINE int rt_quad_solve_x(int64_t bx, uint64_t x0, uint64_t x1, uint6
     uint32_t s0 = (uint32_t)(x0 >> kx), s1 = (uint32_t)(x1 >> kx), s2 = (uint32_t)(x2 >> kx);
     uint64_t xx = num_umul32(s0, s0) + num_umul32(s1, s1) + num_umul32(s2, s2);
     /* a r^2 at scale 2^(ka + kr), both factors below 2^31 */
-    int la = rt_bitlen64(ax), lr = rt_bitlen64(sp->r2x);
-    int ka = la > 31 ? la - 31 : 0, kr = lr > 31 ? lr - 31 : 0;
-    uint64_t ar = num_umul32((uint32_t)(ax >> ka), (uint32_t)(sp->r2x >> kr));
+    int la = rt_bitlen64(ax);
+    int ka = la > 31 ? la - 31 : 0, kr = sp->kr;
+    uint64_t ar = num_umul32((uint32_t)(ax >> ka), sp->r2s);
     int e = 2 * kx > ka + kr ? 2 * kx : ka + kr;
     ar = rt_shr64(ar, e - ka - kr);
     xx = rt_shr64(xx, e - 2 * kx);
@@ -621,6 +644,55 @@ RT_ALWAYS_INLINE int rt_quad_solve_x(int64_t bx, uint64_t x0, uint64_t x1, uint6
     return 1;
 }
 #endif
+
+/* ---- a near root beyond the limit, decided before the square root -----
+ *
+ * From outside (c > 0) with b > 0 the near root is c / q, q = b + h, h the
+ * computed sqrt of the discriminant. When c >= |CO|^2 2^-16 (exactly, at 2F
+ * bits) and a >= 2^28, h <= b: rt_quad_solve_x's truncations raise its
+ * discriminant above b^2 - a c by at most E <= 2^-25 |CO x D'|^2 (kx > 0)
+ * + 2^e, with |CO x D'|^2 <= a |CO|^2, and 2^e <= max(1, a 2^-30)
+ * max(1, r^2 2^-30) (r^2 < |CO|^2), both below a c; so its h^2 <= b^2. Then
+ * q <= Qu = floor((2 bx + 2^(F-1)) / 2^F) (bx: b at 2F bits), and the
+ * rounded near root n / q (wnum_div: halves up, saturating; or, for
+ * q >= 2^32, both shifted by sh with q >= 2^(31+sh), rt_quad_near_m) is
+ * above a limit 0 <= L < 2^30 whenever n 2^F >= (L + 1) Qu: the shifts' half
+ * units cost at most q (L 2^-32 + 2^(F-32)) < q / 2 of the half unit L + 1
+ * has over L + 1/2. rt_near_c_ok checks the first condition from c and
+ * dot = CO.CO in wnum (each within 2 units of the exact values at F bits):
+ * c >= ((dot + 2) >> 16) + 3 implies it. Fixed point only. */
+static inline int rt_near_c_ok(wnum c, wnum dot)
+{
+#if NUM_MODE == NUM_MODE_FIXED
+    return dot >= 0 && dot < ((wnum)1 << 60) && c >= ((dot + 2) >> 16) + 3;
+#else
+    (void)c; (void)dot;
+    return 0;
+#endif
+}
+
+/* 1 only when the near root n / q of the quadratic with b = bx (2F bits),
+ * a = aq, c and |CO|^2 passing rt_near_c_ok is certainly above limit (0 in
+ * floating modes). */
+static inline int rt_near_beyond(int64_t bx, wnum n, wnum aq, num limit)
+{
+#if NUM_MODE == NUM_MODE_FIXED
+    if (NUM_FRAC > 20 || limit < 0 || limit >= ((num)1 << 30) || bx < ((int64_t)1 << NUM_FRAC) ||
+        bx >= ((int64_t)1 << 60) || n <= 0 ||
+        n >= ((wnum)1 << (62 - NUM_FRAC)) || aq < ((wnum)1 << 28))
+        return 0;
+    /* Qu < 2^(61-F) (bx < 2^60); above 2^31 both sides are divided by 2^s,
+     * Qu rounded up: floor(n 2^F / 2^s) >= (L + 1) (floor(Qu / 2^s) + 1)
+     * implies the unscaled test */
+    uint64_t qu = ((uint64_t)bx * 2u + (1u << (NUM_FRAC - 1))) >> NUM_FRAC;
+    int sh = qu >> 31 ? rt_bitlen64(qu) - 31 : 0;
+    uint32_t qs = (uint32_t)(qu >> sh) + (sh > 0);
+    return ((uint64_t)n << NUM_FRAC) >> sh >= num_umul32((uint32_t)limit + 1u, qs);
+#else
+    (void)bx; (void)n; (void)aq; (void)limit;
+    return 0;
+#endif
+}
 
 RT_ALWAYS_INLINE int rt_quad_solve(vec3 co, vec3 d, wnum aq, wnum c, const struct rt_qsphere *sp, struct rt_quad *k)
 {
@@ -761,6 +833,26 @@ static inline wnum rt_exact_sq(num v)
 #endif
 }
 
+/* wnum_div(a, b), bit for bit, with its common case inline: fixed point,
+ * a >= 0, 0 < b < 2^32 and a 2^F < 2^63, the rounded quotient below 2^31
+ * (halves up, as div_round_signed in num.c); anything else, saturation
+ * included, goes to wnum_div. */
+static inline num rt_wdiv(wnum a, wnum b)
+{
+#if NUM_MODE == NUM_MODE_FIXED
+    if (a >= 0 && b > 0 && b <= (wnum)UINT32_MAX && a < ((wnum)1 << (63 - NUM_FRAC))) {
+        uint64_t n = (uint64_t)a << NUM_FRAC;
+        uint32_t d = (uint32_t)b, rm;
+        if ((n >> 32) < d) {
+            uint64_t q = num_udiv64_32(n, d, &rm);
+            if (rm >= d - rm) q++;
+            if (q <= (uint64_t)INT32_MAX) return (num)q;
+        }
+    }
+#endif
+    return wnum_div(a, b);
+}
+
 /* c m, the numerator of the near root c m / q along D of a quadratic
  * solved along D m (|c m| < 2^61 raw: m <= 1024 and |CO| in the format). */
 static inline wnum rt_quad_near_num(wnum c, int32_t m)
@@ -780,8 +872,8 @@ static inline num rt_quad_near_m(wnum n, const struct rt_quad *k)
 #if NUM_MODE == NUM_MODE_FIXED
     /* q to 32 bits (n then stays within the fast path: n / q = t < 2^(31-F)) */
     int sh = rt_bitlen64(rt_mag64(k->q)) - 32;
-    if (sh <= 0) return wnum_div(n, k->q);
-    return wnum_div(rt_shr_round(n, sh), rt_shr_round(k->q, sh));
+    if (sh <= 0) return rt_wdiv(n, k->q);
+    return rt_wdiv(rt_shr_round(n, sh), rt_shr_round(k->q, sh));
 #else
     return wnum_div(n, k->q);
 #endif
@@ -810,7 +902,7 @@ static inline num rt_quad_far(const struct rt_quad *k, wnum aq)
     int lq = rt_bitlen64(rt_mag64(k->qx)), la = rt_bitlen64((uint64_t)aq);
     int sh = la - 32 > lq - (62 - NUM_FRAC) ? la - 32 : lq - (62 - NUM_FRAC);
     if (sh < 0) sh = 0;
-    return wnum_div(rt_shr_round(k->qx, sh), (wnum)((uint64_t)aq >> sh));
+    return rt_wdiv(rt_shr_round(k->qx, sh), (wnum)((uint64_t)aq >> sh));
 #else
     return wnum_div(k->q, aq);
 #endif

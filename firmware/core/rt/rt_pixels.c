@@ -47,17 +47,20 @@ static rgb supersample(struct rt_state *rt, num x, num y, int n, int *hit)
     return rgb_scale(sum, num_from_ratio(1, n * n));
 }
 
+/* The canvas point of pixel (col, row), for its sub-pixel samples (a
+ * plain pixel takes its direction from the tables). */
+static num canvas_x(const struct rt_state *rt, int col) { return num_from_int(col - rt->w / 2); }
+static num canvas_y(const struct rt_state *rt, int row) { return num_from_int(rt->h / 2 - 1 - row); }
+
 /* One pixel: plain, fixed supersampling, or adaptive (refine edges only).
  * The centre sample's colour and object are kept in the row notes (a
  * supersampled pixel's object as RT_ITEM_SS_*), and rt->px_covered says
  * whether the pixel shows an object. */
 static rgb pixel(struct rt_state *rt, int col, int row, int have_left, int have_up, uint8_t *probe)
 {
-    num x = num_from_int(col - rt->w / 2);
-    num y = num_from_int(rt->h / 2 - 1 - row);
     if (rt->ss > 1 && !rt->ss_adaptive) {
         int hit;
-        rgb c = supersample(rt, x, y, rt->ss, &hit);
+        rgb c = supersample(rt, canvas_x(rt, col), canvas_y(rt, row), rt->ss, &hit);
         rt->row_item[col] = hit ? RT_ITEM_SS_HIT : RT_ITEM_SS_NONE;
         rt->px_covered = (uint8_t)hit;
         return c;
@@ -78,13 +81,17 @@ static rgb pixel(struct rt_state *rt, int col, int row, int have_left, int have_
         rt->row_c[col] = c;
         if (edge) {
             int hit;
-            c = supersample(rt, x, y, n, &hit);
+            c = supersample(rt, canvas_x(rt, col), canvas_y(rt, row), n, &hit);
             rt->px_covered = (uint8_t)hit;
         }
         return c;
     }
-    rt->row_item[col] = pr.item;
-    rt->row_c[col] = c;
+    /* the notes a subsampled row decides by (nothing else reads a plain
+     * pixel's) */
+    if (rt->subsample > 1) {
+        rt->row_item[col] = pr.item;
+        rt->row_c[col] = c;
+    }
     return c;
 }
 

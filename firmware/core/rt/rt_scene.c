@@ -61,6 +61,7 @@ void rt_frame_constants(struct rt_state *rt)
             /* the near root's numerator along exact pixel directions (rt_exact_comp: multiplier h) */
             oc->cm_cam = rt->book ? 0 : rt_quad_near_num(oc->c_cam, rt->h);
             oc->px_row = -1;   /* the camera may have moved: no row parts */
+            oc->near_ok = (uint8_t)(!rt->book && rt_near_c_ok(oc->c_cam, v3_dot_wide(oc->co_cam, oc->co_cam)));
         } else if (o->shape == RT_TRIANGLE) {
             oc->e1 = v3_sub(o->p[1], o->p[0]);
             oc->e2 = v3_sub(o->p[2], o->p[0]);

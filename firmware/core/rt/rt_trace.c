@@ -42,10 +42,12 @@ int rt_refract(vec3 d, vec3 n, num ior, vec3 *out)
 /* Colour x weight and colour + colour, in 32-bit arithmetic when the
  * scene's format analysis proved colour intermediates in range
  * (SCENE_FITS_COLOUR: same bits, no saturation checks). */
-static inline rgb colour_scale(const struct scene *s, rgb c, num k)
+static RT_NOINLINE rgb colour_scale_sat(rgb c, num k) { return rgb_scale(c, k); }
+/* the proven case inline, the saturating one a call (code size) */
+RT_ALWAYS_INLINE rgb colour_scale(const struct scene *s, rgb c, num k)
 {
     if (s->fits & SCENE_FITS_COLOUR) return rgb_make(num_mul_fit(c.r, k), num_mul_fit(c.g, k), num_mul_fit(c.b, k));
-    return rgb_scale(c, k);
+    return colour_scale_sat(c, k);
 }
 static inline rgb colour_add(const struct scene *s, rgb a, rgb b)
 {
@@ -79,7 +81,7 @@ static rgb trace_ray(struct rt_state *rt, struct rt_ray *ray, num t_min, num t_m
         num *m = &rt->hit_probe[hit.surf];
         *m = num_max(*m, v3_len(p));
     }
-    vec3 n = rt_hit_normal(rt, &hit, p);
+    vec3 n = rt_hit_normal(rt, &hit, &p);
     vec3 v = v3_neg(ray->d);
     rgb local;
     if (s->rt.unlit) {
@@ -99,7 +101,8 @@ static rgb trace_ray(struct rt_state *rt, struct rt_ray *ray, num t_min, num t_m
     rgb out = local;
     if (r > 0) {
         struct rt_ray rr;
-        rt_ray_init(&rr, p, reflect_ray(v, n), hit.surf, 0);
+        vec3 rd = reflect_ray(v, n);
+        rt_ray_init(&rr, &p, &rd, hit.surf, 0);
         rgb reflected = trace_ray(rt, &rr, s->rt.epsilon, NUM_MAX, depth - 1, NULL);
         out = colour_add(s, colour_scale(s, local, num_sub(NUM_ONE, r)), colour_scale(s, reflected, r));
     }
@@ -110,7 +113,7 @@ static rgb trace_ray(struct rt_state *rt, struct rt_ray *ray, num t_min, num t_m
         if (!rt_refract(ray->d, n, m->refraction > 0 ? m->refraction : NUM_ONE, &dir))
             dir = reflect_ray(v, n);
         struct rt_ray tr_ray;
-        rt_ray_init(&tr_ray, p, dir, hit.surf, 0);
+        rt_ray_init(&tr_ray, &p, &dir, hit.surf, 0);
         rgb seen = trace_ray(rt, &tr_ray, s->rt.epsilon, NUM_MAX, depth - 1, NULL);
         out = colour_add(s, colour_scale(s, out, num_sub(NUM_ONE, tr)), colour_scale(s, seen, tr));
     }
@@ -134,9 +137,8 @@ vec3 rt_far_point(const struct rt_ray *ray)
 
 /* CanvasToViewport for canvas point (x, y) (num, sub-pixel allowed), then
  * the camera rotation. */
-static vec3 rotate_direction(const struct rt_state *rt, vec3 d)
+static vec3 rotate_turned(const struct rt_state *rt, vec3 d)
 {
-    if (!rt->cam_rotated) return d;
     /* D'[i] = ((0 + D.x*M[i][0]) + D.y*M[i][1]) + D.z*M[i][2], the demo's order */
     vec3 r;
     const mat3 *m = &rt->cam_rot;
@@ -144,6 +146,12 @@ static vec3 rotate_direction(const struct rt_state *rt, vec3 d)
     r.y = num_add(num_add(num_add(NUM_ZERO, num_mul(d.x, m->m[1][0])), num_mul(d.y, m->m[1][1])), num_mul(d.z, m->m[1][2]));
     r.z = num_add(num_add(num_add(NUM_ZERO, num_mul(d.x, m->m[2][0])), num_mul(d.y, m->m[2][1])), num_mul(d.z, m->m[2][2]));
     return r;
+}
+
+/* The common case, a camera not turned, without a call. */
+static inline vec3 rotate_direction(const struct rt_state *rt, vec3 d)
+{
+    return rt->cam_rotated ? rotate_turned(rt, d) : d;
 }
 
 static vec3 canvas_to_viewport(const struct rt_state *rt, num x, num y)
@@ -219,8 +227,9 @@ static int16_t *tile_list(struct rt_state *rt, int tc)
 }
 
 /* The lists of tile row tr: every tile column's items (book order), for
- * the rows it serves and one more either side (sub-pixel samples). */
-static void tile_lists(struct rt_state *rt, int32_t tr)
+ * the rows it serves and one more either side (sub-pixel samples). Not
+ * inlined: prim_list, once a pixel, stays a small function. */
+static RT_NOINLINE void tile_lists(struct rt_state *rt, int32_t tr)
 {
     const struct scene *s = rt->s;
     int r0 = tile_first_row(tr) - 1, r1 = tile_last_row(tr) + 1;
@@ -258,9 +267,11 @@ static void prim_list(struct rt_state *rt, int col, int row)
     if (row < 0) row = 0;
     if (row >= rt->h) row = rt->h - 1;
     int32_t tr = rt->tile_row;
-    if (tr < 0 || row < tile_first_row(tr) || row > tile_last_row(tr)) tile_lists(rt, row / RT_TILE);
-    int tc = col / RT_TILE;
-    rt->prim_items = tile_list(rt, tc);
+    /* tr < 0, or row outside [tile_first_row(tr), tile_last_row(tr)] */
+    if (tr < 0 || (uint32_t)(row - tile_first_row(tr)) > (uint32_t)(RT_TILE - 1 + RT_MAX_ADAPT))
+        tile_lists(rt, row / RT_TILE);
+    unsigned tc = (unsigned)col / RT_TILE;
+    rt->prim_items = tile_list(rt, (int)tc);
     rt->prim_n = rt->tile_n[tc];
 }
 
@@ -301,7 +312,7 @@ static rgb trace_primary(struct rt_state *rt, vec3 d, int col, int row, struct r
     struct rt_ray ray;
     prim->item = -1;
     prim->shadow = 0;
-    rt_ray_init(&ray, rt->cam_pos, d, -1, 1);
+    rt_ray_init(&ray, &rt->cam_pos, &d, -1, 1);
     if (col >= 0 && !rt->book && (!rt->cam_rotated || rt->cam_q29)) exact_dir(rt, &ray, col, row);
     rt->n.primary_rays++;
     rgb c = trace_ray(rt, &ray, rt->s->rt.t_min_primary, NUM_MAX, rt->depth, prim);

@@ -15,6 +15,7 @@
 #include <stdint.h>
 #include "check_pattern.h"
 #include "fw_board.h"
+#include "fw_text.h"
 #include "panel.h"
 
 #ifndef FW_WIDTH
@@ -48,24 +49,6 @@ static uint16_t strip[2][FW_WIDTH * FW_STRIP_ROWS];
 static struct check_layout layout;
 static struct hal hal;
 static struct panel panel;
-
-static char *put_str(char *p, const char *s)
-{
-    while (*s) *p++ = *s++;
-    return p;
-}
-
-static char *put_u32(char *p, uint32_t v)
-{
-    char tmp[10];
-    int n = 0;
-    do {
-        tmp[n++] = (char)('0' + v % 10u);
-        v /= 10u;
-    } while (v);
-    while (n) *p++ = tmp[--n];
-    return p;
-}
 
 /* The whole pattern, one window, strip by strip; 0 or the panel's error. */
 static int send_pattern(void)

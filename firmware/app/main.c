@@ -47,6 +47,7 @@
 #include <stddef.h>
 #include <stdint.h>
 #include "fw_board.h"
+#include "fw_text.h"
 #include "fw_scenes.h"
 #include "font5x7.h"
 #include "panel.h"
@@ -270,24 +271,6 @@ static int scene_init(struct render_ctx *c, unsigned si, unsigned core)
 }
 
 /* ---- text helpers (no printf: it would cost more flash than the app) ---- */
-
-static char *put_str(char *p, const char *s)
-{
-    while (*s) *p++ = *s++;
-    return p;
-}
-
-static char *put_u32(char *p, uint32_t v)
-{
-    char tmp[10];
-    int n = 0;
-    do {
-        tmp[n++] = (char)('0' + v % 10u);
-        v /= 10u;
-    } while (v);
-    while (n) *p++ = tmp[--n];
-    return p;
-}
 
 /* "X.Y" frames per second from a frame time in microseconds. */
 static char *put_fps(char *p, uint32_t us)

@@ -322,7 +322,7 @@ rc4=$?
 "$sc" --target rp2050 -o "$t/bud/x.c" "$S" >/dev/null 2>>"$t/err"
 rc5=$?
 if [ $rc -eq 2 ] && [ $rc2 -eq 2 ] && [ $rc3 -eq 2 ] && [ $rc4 -eq 0 ] && [ $rc5 -eq 2 ] && [ "$(wc -l <"$t/err")" -eq 4 ] &&
-   grep -q "knot-16k-gouraud.scene: needs [0-9]* bytes of RAM at 240x240 (renderer work memory [0-9]* + [0-9]* of a second core's context), over the rp2040 RAM budget of 229448 bytes (--ram-budget or --target to change it)" "$t/err" &&
+   grep -q "knot-16k-gouraud.scene: needs [0-9]* bytes of RAM at 240x240 (renderer work memory [0-9]* + [0-9]* of a second core's context), over the rp2040 RAM budget of 228896 bytes (--ram-budget or --target to change it)" "$t/err" &&
    grep -q "raytracer-02.scene: needs [0-9]* bytes of RAM .*, over the RAM budget of 4096 bytes (--ram-budget)" "$t/err" &&
    grep -q "raster-11.scene: needs [0-9]* bytes of flash (the scene's const data, 0 of them textures), over the flash budget of 1024 bytes (--flash-budget)" "$t/err" &&
    grep -q "unknown --target 'rp2050' (did you mean 'rp2040'?)" "$t/err" &&

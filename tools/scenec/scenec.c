@@ -580,11 +580,11 @@ struct target {
 };
 static const struct target targets[] = {
     /* 264 KB SRAM: the largest share a two-core board image leaves to its
-       two work buffers (docs/firmware.md: 229,448 bytes with
-       RP2040_RAM_TEXT=0, 162,416 with raster, about 70,400 with the whole
+       two work buffers (docs/firmware.md: 228,896 bytes with
+       RP2040_RAM_TEXT=0, 160,496 with raster, about 59,000 with the whole
        core in SRAM; make image checks the image's own figure); 2 MB flash
        less 256 KB for the firmware (175 KB: boot2, vectors, code) */
-    { "rp2040", 229448, 2048 * 1024 - 256 * 1024, 1, "RP2040 board image, two cores" },
+    { "rp2040", 228896, 2048 * 1024 - 256 * 1024, 1, "RP2040 board image, two cores" },
     /* qemu's mps2-an385 and mps2-an386 as tools/bench/mps2.ld lays them
        out: 4 MB of code, 4 MB of RAM, 512 KB of each kept for the image */
     { "m0plus", 4096 * 1024 - 512 * 1024, 4096 * 1024 - 512 * 1024, 0, "emulated Cortex-M0+, mps2-an385" },

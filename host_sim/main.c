@@ -1009,13 +1009,10 @@ static int choose_methods(struct run_state *r)
         if (o->quality.target) return fail(EXIT_USAGE, "--target needs --min-psnr (or a quality block in the scene)");
         return EXIT_OK;
     }
-    char why[160];
-    if (o->quality.min_psnr) snprintf(why, sizeof why, "--min-psnr");
-    else snprintf(why, sizeof why, "the quality block at %s:%d:%d", o->scene, in->quality_line, in->quality_col);
     int target = o->quality.target ? o->quality.target : in->quality_target ? in->quality_target : QUALITY_M0PLUS;
     struct quality_request rq = { .path = o->scene, .text = scene_text, .len = scene_len, .width = r->w,
                                   .height = r->h, .strip_rows = r->rows, .numeric = r->numeric, .target = target,
-                                  .min_psnr = psnr, .why = why, .report = stderr,
+                                  .min_psnr = psnr, .report = stderr,
                                   .line = o->quality.min_psnr ? 0 : in->quality_line,
                                   .col = o->quality.min_psnr ? 0 : in->quality_col };
     struct quality_choice ch;

@@ -15,6 +15,7 @@
 #include <stdint.h>
 #include "check_pattern.h"
 #include "fw_board.h"
+#include "fw_start.h"
 #include "fw_text.h"
 #include "panel.h"
 
@@ -69,23 +70,8 @@ int main(void)
 {
     char line[160], uart[160], *p;
     if (fw_board_init(&hal, FW_PANEL.spi_max_hz) != 0) return 1;
-    p = put_str(put_str(line, "boot board="), fw_board_name);
-    p = put_u32(put_str(p, " cores=1 cpu_hz="), fw_board_cpu_hz());
-    p = put_u32(put_str(p, " spi_hz="), fw_board_spi_hz());
-    p = put_str(put_u32(put_str(p, " size="), FW_WIDTH), "x");
-    p = put_u32(p, FW_HEIGHT);
-    p = put_str(put_u32(put_str(p, " strip_rows="), FW_STRIP_ROWS), " scenes=1\r\n");
-    *p = 0;
-    fw_board_puts(line);
-
-    if (panel_init(&panel, &FW_PANEL, &hal, FW_ROTATION) != 0) {
-        fw_board_puts("error panel_init failed\r\n");
-        return 1;
-    }
-    if (panel.width != FW_WIDTH || panel.height != FW_HEIGHT) {
-        fw_board_puts("error the panel in this rotation is not FW_WIDTH x FW_HEIGHT\r\n");
-        return 1;
-    }
+    fw_boot_line(1, FW_WIDTH, FW_HEIGHT, FW_STRIP_ROWS, 1);
+    if (fw_panel_start(&panel, &FW_PANEL, &hal, FW_ROTATION, FW_WIDTH, FW_HEIGHT) != 0) return 1;
     const struct check_settings s = {
         .panel = FW_PANEL.name,
         .width = FW_WIDTH,

@@ -2,6 +2,7 @@
 /* check_pattern.c — the bring-up pattern (check_pattern.h). */
 #include "check_pattern.h"
 #include "font5x7.h"
+#include "fw_text.h"
 
 static const uint16_t bars[8] = { 0xffffu, 0xffe0u, 0x07ffu, 0x07e0u, 0xf81fu, 0xf800u, 0x001fu, 0x0000u };
 
@@ -17,13 +18,9 @@ static void put_s(struct text *t, const char *s)
 
 static void put_u(struct text *t, uint32_t v)
 {
-    char tmp[10];
-    int n = 0;
-    do {
-        tmp[n++] = (char)('0' + v % 10u);
-        v /= 10u;
-    } while (v);
-    while (n && t->p < t->end) *t->p++ = tmp[--n];
+    char tmp[11];
+    *put_u32(tmp, v) = 0;
+    put_s(t, tmp);
 }
 
 /* hz in MHz with up to two decimals (62.5, 133, 20.83), "?" for 0 */

@@ -47,6 +47,7 @@
 #include <stddef.h>
 #include <stdint.h>
 #include "fw_board.h"
+#include "fw_start.h"
 #include "fw_text.h"
 #include "fw_scenes.h"
 #include "font5x7.h"
@@ -599,29 +600,11 @@ static uint32_t frame(unsigned si, uint16_t f, uint32_t last_us, int dual)
 
 int main(void)
 {
-    char line[160], *p;
     if (fw_board_init(&hal, FW_PANEL.spi_max_hz) != 0) return 1;
     int dual = fw_board_cores() == 2;
 
-    p = put_str(put_str(line, "boot board="), fw_board_name);
-    p = put_str(put_u32(put_str(p, " cores="), dual ? 2u : 1u), " cpu_hz=");
-    p = put_u32(p, fw_board_cpu_hz());
-    p = put_u32(put_str(p, " spi_hz="), fw_board_spi_hz());
-    p = put_str(put_u32(put_str(p, " size="), FW_WIDTH), "x");
-    p = put_u32(p, FW_HEIGHT);
-    p = put_u32(put_str(p, " strip_rows="), FW_STRIP_ROWS);
-    p = put_str(put_u32(put_str(p, " scenes="), fw_scene_count), "\r\n");
-    *p = 0;
-    fw_board_puts(line);
-
-    if (panel_init(&panel, &FW_PANEL, &hal, FW_ROTATION) != 0) {
-        fw_board_puts("error panel_init failed\r\n");
-        return 1;
-    }
-    if (panel.width != FW_WIDTH || panel.height != FW_HEIGHT) {
-        fw_board_puts("error the panel in this rotation is not FW_WIDTH x FW_HEIGHT\r\n");
-        return 1;
-    }
+    fw_boot_line(dual ? 2u : 1u, FW_WIDTH, FW_HEIGHT, FW_STRIP_ROWS, fw_scene_count);
+    if (fw_panel_start(&panel, &FW_PANEL, &hal, FW_ROTATION, FW_WIDTH, FW_HEIGHT) != 0) return 1;
     /* a board that wires TE: the controller's TE output on, frames synchronised to it */
     te_sync = fw_board_te_wait(0) >= 0 && panel_tear_effect(&panel) == 0;
     if (dual && fw_board_core1_start(core1_main) != 0) {

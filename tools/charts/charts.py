@@ -72,6 +72,18 @@ def plot_psnr(p):
     return IDENTICAL if p is None else min(float(p), IDENTICAL)
 
 
+def frontier_steps(front):
+    """The staircase through frontier points sorted by cost: (xs, ys) for ax.plot."""
+    xs, ys = [], []
+    for r in front:
+        if xs:
+            xs.append(r["cost"])
+            ys.append(ys[-1])
+        xs.append(r["cost"])
+        ys.append(plot_psnr(r["psnr"]))
+    return xs, ys
+
+
 def pareto(a, outdir):
     L = lab.Lab(a.host_sim, a.build, a.jobs, rp2040=not a.no_rp2040, make=a.make)
     rows = L.run(a.scenes, a.lab_scenes.split(",") if a.lab_scenes else None)
@@ -90,14 +102,7 @@ def pareto(a, outdir):
                            color=NUM_COLOURS[r["numeric"]], edgecolors="k" if r["frontier"] else "none",
                            zorder=3, alpha=1 if r["frontier"] else 0.5)
             front = sorted((r for r in pts if r["frontier"]), key=lambda r: r["cost"])
-            xs, ys = [], []
-            for r in front:
-                if xs:
-                    xs.append(r["cost"])
-                    ys.append(ys[-1])
-                xs.append(r["cost"])
-                ys.append(plot_psnr(r["psnr"]))
-            ax.plot(xs, ys, color="crimson", lw=1.2, zorder=2, label="Pareto frontier")
+            ax.plot(*frontier_steps(front), color="crimson", lw=1.2, zorder=2, label="Pareto frontier")
             lines = []
             for k, r in enumerate(front, 1):
                 ax.annotate(str(k), (r["cost"], plot_psnr(r["psnr"])), fontsize=7.5, xytext=(3, 3),
@@ -108,14 +113,7 @@ def pareto(a, outdir):
             # scene's own format, 16-row strips: tools/charts/quality.py)
             cq = quality_frontier(a, scene, t, rows)
             if cq:
-                xs, ys = [], []
-                for r in cq:
-                    if xs:
-                        xs.append(r["cost"])
-                        ys.append(ys[-1])
-                    xs.append(r["cost"])
-                    ys.append(plot_psnr(r["psnr"]))
-                ax.plot(xs, ys, color="k", lw=0.9, ls="--", zorder=2)
+                ax.plot(*frontier_steps(cq), color="k", lw=0.9, ls="--", zorder=2)
             for r in pts:
                 if r.get("chosen_for"):
                     ax.scatter(r["cost"], plot_psnr(r["psnr"]), s=160, marker="*", facecolors="none",

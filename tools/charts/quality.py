@@ -32,6 +32,7 @@ LIMIT = 1.10   # a choice may cost this much more than the cheapest candidate th
 
 
 def frames_checked(n):
+    """The frames tools/quality renders (quality.c pick_frames)."""
     n = max(n, 1)
     return list(range(n)) if n <= 4 else [0, n // 3, 2 * n // 3, n - 1]
 

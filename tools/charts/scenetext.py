@@ -113,14 +113,9 @@ def set_option(text, opt):
     return text
 
 
-def remove(text, opt):
-    """The scene text without KEY (in the renderer block) or BLOCK.KEY (in
-    every BLOCK block): `key = value` taken out where it is given."""
-    block, dot, k = opt.rpartition(".")
-    if not dot:
-        block, k = renderer_block(text), opt
-    toks = _tokens(text)
-    cuts = []
+def _top_keys(toks, block, k):
+    """Token indices of `k = value` at the top level of every BLOCK block,
+    in order."""
     for j, e in _blocks(toks, block):
         depth = 0
         for i in range(j + 1, e):
@@ -129,8 +124,18 @@ def remove(text, opt):
                 depth += 1
             elif t in "})":
                 depth -= 1
-            elif depth == 0 and t == k and i + 2 < e and toks[i + 1][2] == "=" and toks[i + 2][2] not in "{(":
-                cuts.append((toks[i][0], toks[i + 2][1]))
+            elif depth == 0 and t == k and i + 2 < e and toks[i + 1][2] == "=":
+                yield i
+
+
+def remove(text, opt):
+    """The scene text without KEY (in the renderer block) or BLOCK.KEY (in
+    every BLOCK block): `key = value` taken out where it is given."""
+    block, dot, k = opt.rpartition(".")
+    if not dot:
+        block, k = renderer_block(text), opt
+    toks = _tokens(text)
+    cuts = [(toks[i][0], toks[i + 2][1]) for i in _top_keys(toks, block, k) if toks[i + 2][2] not in "{("]
     for a, b in reversed(cuts):
         text = text[:a] + text[b:]
     return text
@@ -143,16 +148,8 @@ def written(text, opt):
     if not dot:
         block, k = renderer_block(text), opt
     toks = _tokens(text)
-    for j, e in _blocks(toks, block):
-        depth = 0
-        for i in range(j + 1, e):
-            t = toks[i][2]
-            if t in "{(":
-                depth += 1
-            elif t in "})":
-                depth -= 1
-            elif depth == 0 and t == k and i + 2 < e and toks[i + 1][2] == "=":
-                return toks[i + 2][2]
+    for i in _top_keys(toks, block, k):
+        return toks[i + 2][2]
     return None
 
 

@@ -49,12 +49,6 @@ TARGETS = {"m0plus-qemu": "m0plus", "m4f-qemu": "m4f", "rp2040-sim": "rp2040"}
 COLS = ["scene", "variant", "target", "cost", "psnr", "frontier", "unit", "numeric", "format", "options", "strip"]
 
 
-def frames_checked(n):
-    """The frames tools/quality renders (quality.c pick_frames)."""
-    n = max(n, 1)
-    return list(range(n)) if n <= 4 else [0, n // 3, 2 * n // 3, n - 1]
-
-
 def scene_work(host_sim, text, numeric):
     """Mean work a frame over the frames checked (quality.c render_text)."""
     toks = scenetext._tokens(text)
@@ -63,24 +57,16 @@ def scene_work(host_sim, text, numeric):
         path = os.path.join(tmp, "s.scene")
         with open(path, "w") as f:
             f.write(text)
-        frames = _scene_frames(text)
+        frames = quality.scene_frames(text)
         r = subprocess.run([host_sim, "--scene", path, "--panel", "none", "--size", "240x240", "--stats",
                             "--numeric", numeric, "--frames", str(frames)], capture_output=True, text=True, check=True)
     stats = [json.loads(line) for line in r.stdout.splitlines() if line.startswith("{")]
-    pick = frames_checked(frames)
+    pick = quality.frames_checked(frames)
     ws = []
     for st in stats:
         if st["frame"] in pick:
             ws.append(st["rays"] * max(objs, 1) if st["rays"] else st["pixels_written"])
     return sum(ws) / len(ws)
-
-
-def _scene_frames(text):
-    toks = scenetext._tokens(text)
-    for i, (_, _, t) in enumerate(toks):
-        if t == "frames" and i + 2 < len(toks) and toks[i + 1][2] == "=":
-            return int(toks[i + 2][2])
-    return 1
 
 
 def make_fixture(args):

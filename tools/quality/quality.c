@@ -527,10 +527,14 @@ int quality_choose(const struct quality_request *rq, struct quality_choice *ch, 
             rc = QUALITY_EINPUT;
         }
     }
-    if (rq->report && !rc)
+    if (rq->report && !rc) {
+        char why[160]; /* where the target comes from */
+        if (rq->line) snprintf(why, sizeof why, "the quality block at %s:%d:%d", rq->path, rq->line, rq->col);
+        else snprintf(why, sizeof why, "--min-psnr");
         fprintf(rq->report,
                 "quality: %s, at least %.1f dB (%s): %d candidate methods (%s scene, %s), frames checked:", tname,
-                rq->min_psnr, rq->why, nc, cls, rq->numeric);
+                rq->min_psnr, why, nc, cls, rq->numeric);
+    }
     if (rq->report && !rc) {
         for (unsigned k = 0; k < fr.n; k++) fprintf(rq->report, "%s %u", k ? "," : "", fr.f[k]);
         fprintf(rq->report, " of %u, %ux%u, against double with the exact methods%s%s%s\n", in.frames ? in.frames : 1,

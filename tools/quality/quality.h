@@ -50,8 +50,7 @@ struct quality_request {
     const char *numeric; /* the image's: "fixed" (the scene's own format), "float" or "double" */
     int target;          /* QUALITY_* */
     double min_psnr;     /* dB */
-    const char *why;     /* where the target comes from, for the report ("--min-psnr", ...) */
-    int line, col;       /* the quality block's place (0: the command line), for messages */
+    int line, col;       /* the quality block's place (0: the command line, --min-psnr), for messages */
     FILE *report;        /* the report's lines (NULL: none) */
 };
 

@@ -880,12 +880,9 @@ static int choose_methods(struct args *a, char **text, size_t *len, struct scene
     if (!a->target_given)
         for (size_t k = 0; k < sizeof targets / sizeof targets[0]; k++)
             if (!strcmp(targets[k].name, quality_target_name(target))) a->target = &targets[k];
-    char why[160];
-    if (a->min_psnr) snprintf(why, sizeof why, "--min-psnr");
-    else snprintf(why, sizeof why, "the quality block at %s:%d:%d", a->path, q.line, q.col);
     struct quality_request rq = { .path = a->path, .text = *text, .len = *len, .width = (unsigned)a->width,
                                   .height = (unsigned)a->height, .strip_rows = (unsigned)a->strip,
-                                  .numeric = "fixed", .target = target, .min_psnr = psnr, .why = why,
+                                  .numeric = "fixed", .target = target, .min_psnr = psnr,
                                   .report = stdout, .line = a->min_psnr ? 0 : q.line, .col = a->min_psnr ? 0 : q.col };
     struct quality_choice ch;
     char err[768];

@@ -7,7 +7,7 @@
 # + a small API), each keeping only its raster_api_<mode> symbol (the
 # Makefile's bundle).
 
-RASTER_TEST_SRCS := tools/scene/scene_parse.c
+RASTER_TEST_SRCS := tools/scene/scene_parse.c tools/scene/scene_depth.c
 
 $(foreach v,$(VARIANTS),$(foreach m,$(NUM_MODES),$(foreach p,test_raster_book test_raster,$(call program,\
     $(BUILD)/$(v)/tests/$(p)_$(m),$(call obj,$(v),$(m),tests/unit/$(p).c $(RASTER_TEST_SRCS)) $(call core_lib,$(v),$(m)),$(v)))))

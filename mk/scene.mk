@@ -2,7 +2,7 @@
 # Scene files: the parser's tests (per numeric mode), its fuzz target, and
 # the scene compiler (tools/scenec).
 
-SCENE_PARSER_SRCS := tools/scene/scene_parse.c $(CORE_NUM_SRCS) firmware/core/mipmap.c
+SCENE_PARSER_SRCS := tools/scene/scene_parse.c tools/scene/scene_depth.c $(CORE_NUM_SRCS) firmware/core/mipmap.c
 
 # PNG textures (libpng, WITH_PNG) in every host build of the parser; the
 # images that parse scenes on an emulated MCU (the work probe, bench_file)

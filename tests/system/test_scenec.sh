@@ -92,7 +92,7 @@ for frac in $(awk '{ print $3 }' "$work/list" | sort -u); do
   srcs=$(awk -v f="$frac" -v d="$work" '$3 == f { print d "/" $2 ".c" }' "$work/list")
   if ! $hostcc -std=c11 -D_POSIX_C_SOURCE=200809L -O1 -g -Wall -Wextra -Werror -fsanitize=address,undefined \
        -DNUM_MODE=1 -DNUM_FRAC="$frac" -I. -Ifirmware/core -Itools/scene -Itests/support -I"$work" \
-       -o "$work/fields$frac" tests/unit/scenec_fields.c "$tab" $srcs tools/scene/scene_parse.c firmware/core/num/*.c \
+       -o "$work/fields$frac" tests/unit/scenec_fields.c "$tab" $srcs tools/scene/scene_parse.c tools/scene/scene_depth.c firmware/core/num/*.c \
        firmware/core/mipmap.c -lm 2>"$work/fields$frac.err"; then
     echo "FAIL scenec_fields_frac$frac: $(head -n 3 "$work/fields$frac.err")"
     continue

@@ -260,10 +260,66 @@ static void test_bad(void)
     check(rc == SCENE_EIO && !strncmp(err, "/nonexistent/x.scene:1:1: error: cannot open file", 49), name, "%s", err);
 }
 
+/* The automatic depth bits (tools/scene/scene_depth.c): two squares `gap`
+ * apart at distance z, tilted 30 degrees (tools/scene/gen_sweep.py's depth
+ * sweep). */
+static int depth_choice(double z, double gap, const char *opts, struct scene_depth_facts *f)
+{
+    char text[2048], err[600];
+    double h = 0.9 * z;
+    snprintf(text, sizeof text,
+             "renderer = rasterizer\ncanvas { width = 240 height = 240 }\nviewport { width = 1 height = 1 d = 1 }\n"
+             "rasterizer { book_exact = off clip = split shading = none %s }\n"
+             "model { name = far color = (0, 0, 255) vertices { (%g, %g, %g) (%g, %g, %g) (%g, %g, %g) (%g, %g, %g) }\n"
+             "  triangles { (0, 2, 1) (0, 3, 2) } }\n"
+             "model { name = near color = (255, 0, 0) vertices { (%g, %g, 0) (%g, %g, 0) (%g, %g, 0) (%g, %g, 0) }\n"
+             "  triangles { (0, 2, 1) (0, 3, 2) } }\n"
+             "instance { model = far transform { rotation { x = 30 } translation = (0, 0, %g) } }\n"
+             "instance { model = near transform { rotation { x = 30 } translation = (0, 0, %g) } }\n",
+             opts, -h, -h, gap, h, -h, gap, h, h, gap, -h, h, gap, -h, -h, h, -h, h, h, -h, h, z, z);
+    struct scene *s = NULL;
+    if (scene_parse_mem("depth.scene", text, strlen(text), &s, err, sizeof err)) {
+        check(0, "depth_parse", "%s", err);
+        return -1;
+    }
+    int bits = s->ras.depth_bits, again = scene_depth_bits(s, f);
+    if (!strstr(opts, "depth_bits"))
+        check(bits == again, "depth_parse_same", "parse %d, scene_depth_bits %d", bits, again);
+    scene_free(s);
+    return bits;
+}
+
+static void test_depth_bits(void)
+{
+    struct scene_depth_facts f;
+    /* far from each other: both rules say 16 */
+    int b = depth_choice(10, 1, "depth = on", &f);
+    check(b == 16 && !f.range_wants32 && !f.overlap_wants32 && f.overlap_checked, "depth_bits_apart", "%d", b);
+    /* 0.01 apart at z = 40: the range rule alone says 16 (the radius grows with
+       z); near/z of the two differs by about 0.01/z^2 = 0.4 of a 16-bit step */
+    b = depth_choice(40, 0.01, "depth = on", &f);
+    check(b == 32 && !f.range_wants32 && f.overlap_wants32, "depth_bits_close_overlap", "%d range %d pixels %ld",
+          b, f.range_wants32, f.close_pixels);
+    check(f.gap_min * 65536 > 0.2 && f.gap_min * 65536 < 0.6, "depth_bits_gap", "%g steps", f.gap_min * 65536);
+    /* the same 0.01 at z = 3: 17 steps apart */
+    b = depth_choice(3, 0.01, "depth = on", &f);
+    check(b == 16 && f.close_pixels == 0, "depth_bits_close_near", "%d, %ld pixels", b, f.close_pixels);
+    /* coplanar (a tie in either format): not a reason for 32 bits */
+    b = depth_choice(40, 0, "depth = on", &f);
+    check(b == 16 && f.close_pixels == 0, "depth_bits_coplanar", "%d, %ld pixels", b, f.close_pixels);
+    /* as the scene asks */
+    b = depth_choice(40, 0.01, "depth = on depth_bits = 16", &f);
+    check(b == 16, "depth_bits_asked", "%d", b);
+    /* depth off: no overlap measured */
+    b = depth_choice(40, 0.01, "depth = off", &f);
+    check(!f.overlap_checked, "depth_bits_depth_off", "%d", b);
+}
+
 int main(void)
 {
     test_book();
     test_exact_values();
     test_bad();
+    test_depth_bits();
     return check_exit();
 }

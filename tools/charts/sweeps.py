@@ -143,7 +143,7 @@ SWEEPS = [
            Series("auto (the parser's choice)", {})],
           "bleed", "near square lost: the far one or nothing shows (% of pixels)", lambda v: v == 0, 0,
           {"16-bit": [(20.18, True), (24.0, False)], "32-bit": [(5166.0, True), (6144.0, False)],
-           "auto (the parser's choice)": [(20.18, True), (24.0, False), (57.08, False), (67.88, True),
+           "auto (the parser's choice)": [(20.18, True), (24.0, True), (57.08, True), (67.88, True),
                                           (5166.0, True), (6144.0, False)]},
           size="32x32", note="fails where any pixel of the near square is lost"),
     Sweep("slope", "Perspective step N against the slope of a textured wall (nearest, 120x120)",

@@ -2624,8 +2624,14 @@ static int parse(const char *file, const char *dir, const char *text, size_t len
     const char *dot = strrchr(base, '.');
     const char *dname = dup_str(p, base, dot && dot != base ? (size_t)(dot - base) : strlen(base));
     read_scene(p, top, &box->s, dname);
-    if (box->s.kind == SCENE_RASTER && box->s.ras.depth_bits == 0)
-        box->s.ras.depth_bits = (uint8_t)scene_depth_bits(&box->s, NULL, NULL, NULL);
+    if (box->s.kind == SCENE_RASTER && box->s.ras.depth_bits == 0) {
+        int bits = scene_depth_bits(&box->s, NULL);
+        if (bits < 0) {
+            p->oom = 1;
+            fail_at(p, 1, 1, "out of memory (the depth analysis)");
+        }
+        box->s.ras.depth_bits = (uint8_t)bits;
+    }
     box->arena = p->arena;
     box->quality = p->quality;
     free(p);
@@ -2636,42 +2642,6 @@ static int parse(const char *file, const char *dir, const char *text, size_t len
 int scene_parse_mem(const char *name, const char *text, size_t len, struct scene **out, char *err, size_t errlen)
 {
     return parse(name, NULL, text, len, out, err, errlen);
-}
-
-static double dist3(vec3 v)
-{
-    double x = num_to_double(v.x), y = num_to_double(v.y), z = num_to_double(v.z);
-    return sqrt(x * x + y * y + z * z);
-}
-
-static double reach3(const struct scene_anim *a, int frames)
-{
-    return dist3(a->move_per_frame) * (frames > 1 ? frames - 1 : 0);
-}
-
-int scene_depth_bits(const struct scene *s, double *far_out, double *step_out, double *rmin_out)
-{
-    double cam_reach = reach3(&s->camera_anim, s->frames), far = 0, rmin = 1e300;
-    for (int i = 0; i < s->ninstances; i++) {
-        const struct ras_instance *in = &s->instances[i];
-        if (in->model >= s->nmodels) continue;
-        const struct ras_model *m = &s->models[in->model];
-        double sc = fabs(num_to_double(in->scale)), vmax = 0;
-        for (int k = 0; k < m->nverts; k++)
-            if (dist3(m->verts[k]) > vmax) vmax = dist3(m->verts[k]);
-        vec3 rel = v3_sub(in->position, s->camera.position);
-        double f = dist3(rel) + reach3(&in->anim, s->frames) + cam_reach + sc * vmax;
-        if (f > far) far = f;
-        double r = sc * num_to_double(m->bound_radius);
-        if (r > 0 && r < rmin) rmin = r;
-    }
-    double near = num_to_double(s->projection_d);
-    double step = near > 0 ? far * far / (near * 65536.0) : 1e300;
-    if (far_out) *far_out = far;
-    if (step_out) *step_out = step;
-    if (rmin_out) *rmin_out = rmin;
-    if (s->ninstances == 0) return 16;
-    return step <= rmin / 256 ? 16 : 32;
 }
 
 #ifdef HAVE_POSIX_FILES

@@ -68,11 +68,28 @@ struct scene_quality {
 void scene_quality(const struct scene *s, struct scene_quality *q);
 
 /* Bits of the default path's depth buffer (near/z) a rasterized scene
- * needs: 16 when a 16-bit step at the farthest depth any instance reaches
- * (far^2 / (near * 65536)) is at most 1/256 of the smallest instance's
- * bounding radius, else 32. *far, *step16 and *rmin (any may be NULL)
- * receive the three quantities. Scenes without instances: 16. */
-int scene_depth_bits(const struct scene *s, double *far, double *step16, double *rmin);
+ * needs (tools/scene/scene_depth.c): 32 when either
+ *  - range: a 16-bit step at the farthest depth any instance reaches
+ *    (far^2 / (near * 65536)) is more than 1/256 of the smallest instance's
+ *    bounding radius, or
+ *  - overlap: on a checked frame more than 1/4096 of the canvas's pixels
+ *    show a surface with another one behind it less than two 16-bit steps
+ *    of near/z away (and at least 2^-30),
+ * else 16. Scenes without instances: 16. *facts (may be NULL) receives the
+ * figures of both rules. -1: no memory for the overlap's grid (at most
+ * 256 x 256 x 16 bytes). */
+struct scene_depth_facts {
+    double far, step16, rmin;   /* the range rule's figures */
+    int range_wants32;
+    int overlap_checked;        /* 0: not measured (no instances, no memory) */
+    int frames_checked, grid_w, grid_h;
+    long close_pixels;          /* the most close pixels on one checked frame */
+    int close_frame;            /* that frame */
+    long close_limit;           /* more than this: 32 bits */
+    double gap_min;             /* the smallest close gap seen (near/z units) */
+    int overlap_wants32;
+};
+int scene_depth_bits(const struct scene *s, struct scene_depth_facts *facts);
 
 /* Values given in the scene whose 0 means something else (a light's
  * intensity, a material's reflectivity or transparency, a sphere's radius,

@@ -972,12 +972,23 @@ static int analyse(const struct args *a, const struct scene *s, struct scene_for
                fits & SCENE_FITS_COLOUR ? " colour intermediates" : "",
                fits & SCENE_FITS_HIT ? ", hit points D t" : "");
     if (s->kind == SCENE_RASTER && s->ninstances && !s->ras.book_exact && s->ras.depth_test) {
-        double far, step, rmin;
-        int bits = scene_depth_bits(s, &far, &step, &rmin);
+        struct scene_depth_facts f;
+        int bits = scene_depth_bits(s, &f);
+        if (bits < 0) {
+            fprintf(stderr, "scenec: out of memory (the depth analysis)\n");
+            return 2;
+        }
         printf("  depth buffer: %d bits a pixel%s: a 16-bit step of near/z at the farthest depth %.3g is %.3g,\n"
                "    %s 1/256 of the smallest instance radius (%.3g)\n",
-               s->ras.depth_bits, s->ras.depth_bits == bits ? " (chosen)" : " (as the scene asks)", far, step,
-               step <= rmin / 256 ? "within" : "more than", rmin);
+               s->ras.depth_bits, s->ras.depth_bits == bits ? " (chosen)" : " (as the scene asks)", f.far, f.step16,
+               f.range_wants32 ? "more than" : "within", f.rmin);
+        if (f.overlap_checked)
+            printf("    overlapping surfaces less than two 16-bit steps apart: at most %ld pixels a frame (frame %d;"
+                   " %d frames checked at %dx%d), %s the limit %ld\n",
+                   f.close_pixels, f.close_frame, f.frames_checked, f.grid_w, f.grid_h,
+                   f.overlap_wants32 ? "over" : "within", f.close_limit);
+        if (f.overlap_checked && f.close_pixels)
+            printf("    the closest such gap: %.3g of near/z (%.2f 16-bit steps)\n", f.gap_min, f.gap_min * 65536.0);
     }
     return 0;
 }

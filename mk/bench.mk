@@ -49,6 +49,15 @@ BENCH_SMOKE_IMAGES := $(foreach t,$(BENCH_TARGETS),$(BUILD)/bench/$(t)/fixed/smo
 TEST_DEPS += $(BENCH_SMOKE_IMAGES)
 TESTS     += tools/bench/run.py:--smoke:$(subst $(eval) ,:,$(BENCH_SMOKE_IMAGES))
 
+# Every scene row's accuracy is that of its own image (tools/bench/accuracy.py
+# checks host_sim's frame against the image's frame_checksum): the rules on
+# rows the test makes, and two images through run.py and accuracy.py (the
+# book scenes' default paths and trilinear variant, a scene of 10 frames).
+BENCH_ACC_IMAGES := $(BUILD)/bench/m0plus-qemu/fixed/raster.elf $(BUILD)/bench/m0plus-qemu/fixed/scene-cube-flat.elf
+TESTS     += tests/system/test_bench_accuracy.py:$(BUILD)/host_sim \
+             tests/system/test_bench_accuracy.py:$(BUILD)/host_sim:$(subst $(eval) ,:,$(BENCH_ACC_IMAGES))
+TEST_DEPS += $(BUILD)/host_sim $(BENCH_ACC_IMAGES)
+
 .PHONY: bench bench-qemu
 bench: bench-qemu
 # (the recipe expands BENCH_IMAGES after every mk/*.mk has added to it)

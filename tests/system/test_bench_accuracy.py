@@ -139,6 +139,10 @@ def rules(host_sim, tmp):
                        text=True)
     check(p.returncode == 1 and len(p.stderr.strip().splitlines()) == 1 and "Traceback" not in p.stderr,
           "bench_accuracy_missing_file", "exit %d: %s" % (p.returncode, p.stderr.strip()))
+    p = subprocess.run([sys.executable, ACCURACY, path, os.path.join(tmp, "no_host_sim")], capture_output=True,
+                       text=True)
+    check(p.returncode == 1 and len(p.stderr.strip().splitlines()) == 1 and "Traceback" not in p.stderr,
+          "bench_accuracy_missing_host_sim", "exit %d: %s" % (p.returncode, p.stderr.strip()))
 
 
 def images(host_sim, elves, tmp):

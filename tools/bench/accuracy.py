@@ -182,11 +182,15 @@ def main():
         sys.exit("usage: accuracy.py RESULTS.jsonl HOST_SIM [SCENES_DIR]")
     results, host_sim = sys.argv[1], sys.argv[2]
     scenes = sys.argv[3] if len(sys.argv) > 3 else "firmware/scenes"
+    if not (os.path.isfile(host_sim) and os.access(host_sim, os.X_OK)):
+        sys.exit("accuracy.py: %s: no such program (make build/host_sim)" % host_sim)
     try:
         with open(results) as f:
             lines = [json.loads(l) for l in f if l.strip()]
     except (OSError, ValueError) as e:
         sys.exit("accuracy.py: %s: %s" % (results, e))
+    if not all(isinstance(l, dict) for l in lines):
+        sys.exit("accuracy.py: %s: a line is not a JSON object" % results)
     measured, renders, errors = add_accuracy(lines, host_sim, scenes)
     fd, tmp = tempfile.mkstemp(prefix=".accuracy-", suffix=".jsonl", dir=os.path.dirname(os.path.abspath(results)))
     try:

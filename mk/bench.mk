@@ -11,7 +11,9 @@
 #   BENCH_IMAGES += $(BUILD)/bench/TARGET/MODE/NAME.elf
 # SOURCES are C files (the renderer core, a main); one of them defines
 # int bench_main(void) and reports with bench_report() from tools/bench/bench.h,
-# e.g. bench_report("scene:book/raytracer-05", NUM_NAME, "strip16", instr * 1000, "frame").
+# e.g. bench_report("scene:book/raytracer-05", NUM_NAME, "strip16", instr * 1000, "frame"),
+# a scene row followed by bench_frame_line() (the frame's checksum and what was
+# rendered: tools/bench/accuracy.py measures the row's accuracy on that frame).
 # The start-up code, semihosting and linker script are added here. `make bench`
 # runs every image of BENCH_IMAGES and rewrites its lines of
 # $(BUILD)/bench/results.jsonl (other lines are kept).

@@ -701,15 +701,30 @@ static int flush_strip(struct panel_out *po, struct live *l, unsigned w, unsigne
     return 0;
 }
 
+/* FNV-1a (32-bit) of n RGB565 pixels continued from h, each pixel's low
+ * byte first (--out-raw's byte order): the frame checksum of --stats, the
+ * one the benchmark images print (tools/bench/bench.h). */
+static uint32_t fnv1a_565(uint32_t h, const uint16_t *px, size_t n)
+{
+    for (size_t i = 0; i < n; i++) {
+        h = (h ^ (px[i] & 0xFFu)) * 16777619u;
+        h = (h ^ (uint32_t)(px[i] >> 8)) * 16777619u;
+    }
+    return h;
+}
+
 /* Renders every strip of frame f into strip (and rgb, a full-frame buffer,
  * if not NULL) and sends each to the panel; adds the times spent to
- * *render_us and *flush_us. */
+ * *render_us and *flush_us; *sum (if not NULL) receives the checksum of the
+ * frame's pixels as the renderer wrote them (before an --fps-overlay). */
 static int send_strips(struct core *c, struct panel_out *po, uint16_t *strip, uint8_t *rgb, unsigned f,
-                       struct render_stats *rs, uint64_t *render_us, uint64_t *flush_us, struct live *l)
+                       struct render_stats *rs, uint64_t *render_us, uint64_t *flush_us, struct live *l,
+                       uint32_t *sum)
 {
     unsigned w = c->ctx.width, h = c->ctx.height, rows = c->ctx.strip_rows;
     char err[512];
     int rc;
+    if (sum) *sum = 2166136261u;
     for (unsigned y0 = 0; y0 < h; y0 += rows) {
         unsigned y1 = y0 + rows < h ? y0 + rows : h;
         struct render_target t = { .width = (uint16_t)w, .height = (uint16_t)h,
@@ -720,6 +735,7 @@ static int send_strips(struct core *c, struct panel_out *po, uint16_t *strip, ui
             return fail(EXIT_INTERNAL, "renderer failed on rows %u..%u of frame %u", y0, y1, f);
         uint64_t t1 = now_us();
         *render_us += t1 - t0;
+        if (sum) *sum = fnv1a_565(*sum, strip, (size_t)(y1 - y0) * w);
         if (l && l->overlay)
             font5x7_draw(strip, (int)w, (int)y0, (int)y1, 2, 2, 2, l->overlay, 0xffff, 0x0000);
         if ((rc = flush_strip(po, l, w, y0, y1, strip, err, sizeof err))) return fail(rc, "%s", err);
@@ -821,6 +837,7 @@ struct frame_meas {
     unsigned long coarse_rays;
     uint64_t spi0, bus0;       /* the panel's counters before the frame */
     uint32_t sat0;             /* the core's saturations before it */
+    uint32_t checksum;         /* FNV-1a of the frame's pixels (send_strips) */
     struct render_stats rs;
 };
 
@@ -1181,13 +1198,15 @@ static int render_frame(struct run_state *r, unsigned fi, struct frame_meas *m)
     if (r->o->progressive && c->api->set_pass(&c->ctx, RENDER_PASS_COARSE) == 0) {
         struct render_stats cs = { 0 };
         uint64_t coarse_flush_us = 0;
-        if ((rc = send_strips(c, *r->pp, r->b->strip, NULL, fi, &cs, &m->coarse_us, &coarse_flush_us, &r->lv)))
+        if ((rc = send_strips(c, *r->pp, r->b->strip, NULL, fi, &cs, &m->coarse_us, &coarse_flush_us, &r->lv,
+                              NULL)))
             return rc;
         m->coarse_rays = cs.rays;
         m->render_us += m->coarse_us;
         c->api->set_pass(&c->ctx, RENDER_PASS_FULL);
     }
-    return send_strips(c, *r->pp, r->b->strip, r->b->rgb, fi, &m->rs, &m->render_us, &m->flush_us, &r->lv);
+    return send_strips(c, *r->pp, r->b->strip, r->b->rgb, fi, &m->rs, &m->render_us, &m->flush_us, &r->lv,
+                       &m->checksum);
 }
 
 /* --stats: frame f's JSON object; after the last frame, with --compare,
@@ -1213,6 +1232,7 @@ static void print_frame_stats(const struct run_state *r, unsigned f, const struc
            (unsigned long long)(panel_out_spi_bytes(po) - m->spi0),
            (unsigned long)m->rs.triangles_in, (unsigned long)m->rs.triangles_drawn,
            (unsigned long)m->rs.rays, (unsigned long)(uint32_t)(*c->api->saturations - m->sat0));
+    printf(",\"checksum\":%lu", (unsigned long)m->checksum);
     if (r->o->progressive)
         printf(",\"coarse_us\":%llu,\"coarse_rays\":%lu", (unsigned long long)m->coarse_us, m->coarse_rays);
     if (!(r->o->compare && f + 1 == r->frames)) printf("}\n");

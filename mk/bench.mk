@@ -11,7 +11,9 @@
 #   BENCH_IMAGES += $(BUILD)/bench/TARGET/MODE/NAME.elf
 # SOURCES are C files (the renderer core, a main); one of them defines
 # int bench_main(void) and reports with bench_report() from tools/bench/bench.h,
-# e.g. bench_report("scene:book/raytracer-05", NUM_NAME, "strip16", instr * 1000, "frame").
+# e.g. bench_report("scene:book/raytracer-05", NUM_NAME, "strip16", instr * 1000, "frame"),
+# a scene row followed by bench_frame_line() (the frame's checksum and what was
+# rendered: tools/bench/accuracy.py measures the row's accuracy on that frame).
 # The start-up code, semihosting and linker script are added here. `make bench`
 # runs every image of BENCH_IMAGES and rewrites its lines of
 # $(BUILD)/bench/results.jsonl (other lines are kept).
@@ -48,6 +50,15 @@ $(foreach t,$(BENCH_TARGETS),$(call bench_image,smoke,$(t),fixed,$(BENCH_NUM_SRC
 BENCH_SMOKE_IMAGES := $(foreach t,$(BENCH_TARGETS),$(BUILD)/bench/$(t)/fixed/smoke.elf)
 TEST_DEPS += $(BENCH_SMOKE_IMAGES)
 TESTS     += tools/bench/run.py:--smoke:$(subst $(eval) ,:,$(BENCH_SMOKE_IMAGES))
+
+# Every scene row's accuracy is that of its own image (tools/bench/accuracy.py
+# checks host_sim's frame against the image's frame_checksum): the rules on
+# rows the test makes, and two images through run.py and accuracy.py (the
+# book scenes' default paths and trilinear variant, a scene of 10 frames).
+BENCH_ACC_IMAGES := $(BUILD)/bench/m0plus-qemu/fixed/raster.elf $(BUILD)/bench/m0plus-qemu/fixed/scene-cube-flat.elf
+TESTS     += tests/system/test_bench_accuracy.py:$(BUILD)/host_sim \
+             tests/system/test_bench_accuracy.py:$(BUILD)/host_sim:$(subst $(eval) ,:,$(BENCH_ACC_IMAGES))
+TEST_DEPS += $(BUILD)/host_sim $(BENCH_ACC_IMAGES)
 
 .PHONY: bench bench-qemu
 bench: bench-qemu

@@ -36,7 +36,7 @@ test_jobs  = $(if $(filter -j%,$(MAKEFLAGS)),,-j$(TEST_JOBS))
 TESTS_TARGET_ONLY := node:% tools/bench/run.py:% tests/system/test_rp2040sim% tests/system/test_scenec.sh:% \
                      tests/system/test_softfloat.sh:% tests/system/test_examples.sh:% tests/system/test_stability.py:% \
                      tests/system/test_obj_mcu.sh:% tests/system/test_stm32_qemu.sh:% \
-                     tests/system/test_fw_docs.sh:%
+                     tests/system/test_fw_docs.sh:% tests/system/test_bench_accuracy.py:%.elf
 TESTS_HOST = $(filter-out $(TESTS_TARGET_ONLY),$(TESTS))
 
 CHECK_SEL = $(foreach t,$(TESTS),$(if $(findstring $(T),$(call test_name,$(t))),$(t)))

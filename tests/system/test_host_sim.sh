@@ -209,7 +209,7 @@ stats_check() {
   python3 - "$1" "$2" <<'PY'
 import json, sys
 want = ["scene", "numeric", "width", "height", "frame", "render_us", "pixels_written",
-        "spi_bytes", "triangles_in", "triangles_drawn", "rays", "saturations"]
+        "spi_bytes", "triangles_in", "triangles_drawn", "rays", "saturations", "checksum"]
 lines = open(sys.argv[1]).read().splitlines()
 n = int(sys.argv[2])
 if len(lines) != n:
@@ -227,6 +227,19 @@ run --scene "$scene" --panel none --size 32x24 --stats
 if [ "$rc" -eq 0 ] && msg=$(stats_check "$tmp/o" 1 2>&1); then pass stats_json; else fail stats_json "exit $rc: $msg"; fi
 run --scene "$scene" --panel none --size 32x24 --stats --frames 3
 if [ "$rc" -eq 0 ] && msg=$(stats_check "$tmp/o" 3 2>&1); then pass stats_frames; else fail stats_frames "exit $rc: $msg"; fi
+# "checksum": FNV-1a of the frame's RGB565 pixels, low byte first: the sum
+# the benchmark images print, of the same bytes --out-raw writes
+run --scene "$scene" --panel none --size 32x24 --stats --frames 2 --out-raw "$tmp/sum.raw"
+if [ "$rc" -eq 0 ] && msg=$(python3 - "$tmp/o" "$tmp/sum.raw" 2>&1 <<'PY'
+import json, sys
+last = json.loads(open(sys.argv[1]).read().splitlines()[-1])
+h = 2166136261
+for c in open(sys.argv[2], "rb").read():
+    h = ((h ^ c) * 16777619) & 0xFFFFFFFF
+if last.get("checksum") != h:
+    sys.exit("checksum %r, FNV-1a of --out-raw %d" % (last.get("checksum"), h))
+PY
+); then pass stats_checksum; else fail stats_checksum "exit $rc: $msg"; fi
 run --scene "$scene" --panel none --size 32x24 --stats --numeric double --compare fixed
 if [ "$rc" -eq 0 ] && msg=$(stats_check "$tmp/o" 1 2>&1) &&
    python3 -c 'import json,sys; o=json.loads(open(sys.argv[1]).read()); assert "psnr" in o and "max_err" in o' "$tmp/o"

@@ -6,8 +6,10 @@
  * Renders frame 0 at FW_WIDTH x FW_HEIGHT in strips of FW_STRIP_ROWS rows
  * into one strip buffer and reports
  *   BENCH scene:<name> <numeric> strip<R> <milli-instructions> frame
- * plus a checksum of the frame (so fixed and float can be told apart). Only
- * render_strip() is timed; the checksum between strips is not counted. */
+ * followed by what it rendered (bench_frame_line: the frame's checksum, the
+ * scene as written, size, strips, the image's format), so that the row's
+ * accuracy is measured on the same frame. Only render_strip() is timed; the
+ * checksum between strips is not counted. */
 #include "bench.h"
 #include "fw_scenes.h"
 #include "render.h"
@@ -22,6 +24,12 @@
 #define FW_STRIP_ROWS 8
 #endif
 
+#if NUM_MODE == NUM_MODE_FIXED
+#define IMAGE_FRAC NUM_FRAC   /* the image's format (its scenes' coarsest) */
+#else
+#define IMAGE_FRAC 0
+#endif
+
 #define STR2(x) #x
 #define STR(x) STR2(x)
 
@@ -33,7 +41,7 @@ int bench_main(void)
     for (unsigned si = 0; si < fw_scene_count; si++) {
         const struct fw_scene *fs = &fw_scenes[si];
         struct render_ctx ctx;
-        uint32_t sum = 0;
+        uint32_t sum = BENCH_FNV_INIT;
         uint64_t n = 0;
         if (render_init(&ctx, fs->scene, FW_WIDTH, FW_HEIGHT, FW_STRIP_ROWS, fs->work[0],
                         fs->work_size[0]) != 0 ||
@@ -51,16 +59,16 @@ int bench_main(void)
             uint64_t t0 = bench_now();
             if (render_strip(&ctx, &t, &st) != 0) rc = 1;
             n += bench_now() - t0;
-            for (unsigned i = 0; i < (unsigned)(t.y1 - t.y0) * FW_WIDTH; i++)
-                sum = (sum << 5 | sum >> 27) ^ strip[i];
+            sum = bench_fnv565(sum, strip, (uint32_t)(t.y1 - t.y0) * FW_WIDTH);
         }
         char what[80] = "scene:", *p = what + 6;
         for (const char *s = fs->name; *s && p < what + sizeof what - 1; s++) *p++ = *s;
         *p = 0;
         bench_report(what, NUM_NAME, "strip" STR(FW_STRIP_ROWS), n * 1000u, "frame");
-        bench_puts("checksum ");
-        bench_put_u64(sum);
-        bench_puts("\n");
+        const struct bench_frame bf = { .scene = fs->name, .options = "", .checksum = sum,
+                                        .width = FW_WIDTH, .height = FW_HEIGHT, .strip_rows = FW_STRIP_ROWS,
+                                        .frames = 1, .num_frac = IMAGE_FRAC };
+        bench_frame_line(&bf);
     }
     return rc;
 }

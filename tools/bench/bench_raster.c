@@ -8,7 +8,9 @@
  * tools/scenec (build/scenes/book/raster-1{1,3}.c). A first, unmeasured
  * pass with the target's `written` map counts the drawn pixels; the
  * measured pass includes render_init (mip chain), render_begin_frame
- * (transforms, binning) and every strip (background fill included).
+ * (transforms, binning) and every strip (background fill included); the
+ * checksum of its frame (not measured) and what it rendered follow each row
+ * (bench_frame_line), the scene file's options each variant sets included.
  * Figures are instructions, not cycles. */
 #include <string.h>
 #include "bench.h"
@@ -20,14 +22,24 @@
 #define H 240
 #define STRIP 16
 
+#if NUM_MODE == NUM_MODE_FIXED
+#define IMAGE_FRAC NUM_FRAC
+#else
+#define IMAGE_FRAC 0
+#endif
+
 static uint64_t work[96 * 1024];      /* 768 KiB: the default path's mip chain of a 400x400 texture */
 static uint16_t strip_px[W * STRIP];
 static uint8_t strip_written[W * STRIP];
 
+static uint32_t frame_sum;            /* bench_fnv565 of the last frame */
+
 /* One frame of s; *pixels (if not null) receives the drawn pixel count.
- * Returns instructions, or 0 on failure. */
+ * Returns instructions (the checksum not counted), or 0 on failure. */
 static uint64_t frame(const struct scene *s, uint32_t *pixels)
 {
+    uint64_t skip = 0;
+    frame_sum = BENCH_FNV_INIT;
     struct render_ctx ctx;
     size_t need = render_work_size(s, W, H, STRIP);
     if (need == 0 || need > sizeof work) return 0;
@@ -43,22 +55,17 @@ static uint64_t frame(const struct scene *s, uint32_t *pixels)
         if (render_strip(&ctx, &t, &st) != 0) return 0;
         if (pixels)
             for (int k = 0; k < (t.y1 - t.y0) * W; k++) *pixels += strip_written[k];
+        uint64_t t1 = bench_now();
+        frame_sum = bench_fnv565(frame_sum, strip_px, (uint32_t)(t.y1 - t.y0) * W);
+        skip += bench_now() - t1;
     }
-    return bench_now() - t0;
+    return bench_now() - t0 - skip;
 }
 
-/* The image's format after each fixed-point line (accuracy.py measures the
- * row's accuracy at it). */
-static void frac_line(void)
-{
-#if NUM_MODE == NUM_MODE_FIXED
-    bench_puts("BENCHX num_frac=");
-    bench_put_u64(NUM_FRAC);
-    bench_puts("\n");
-#endif
-}
-
-static int measure(const char *what, const char *variant, const struct scene *s)
+/* The variant of scene file `scene` with `options` set (bench.h's terms):
+ * what accuracy.py renders on the host. */
+static int measure(const char *what, const char *variant, const struct scene *s, const char *scene,
+                   const char *options)
 {
     uint32_t px = 0;
     uint64_t instr = frame(s, &px) ? frame(s, NULL) : 0;
@@ -70,14 +77,18 @@ static int measure(const char *what, const char *variant, const struct scene *s)
         bench_puts("\n");
         return 1;
     }
+    const struct bench_frame bf = { .scene = scene, .options = options, .checksum = frame_sum, .width = W,
+                                    .height = H, .strip_rows = STRIP, .frames = 1, .num_frac = IMAGE_FRAC };
     bench_report(what, NUM_NAME, variant, instr * 1000, "frame");
-    frac_line();
+    bench_frame_line(&bf);
     bench_report(what, NUM_NAME, variant, instr * 1000 / px, "pixel");
-    frac_line();
+    bench_frame_line(&bf);
     return 0;
 }
 
-/* The default path of a book scene: what real rasterizers add. */
+/* The default path of a book scene: what real rasterizers add (in the
+ * scene file's terms, DEFAULT_PATH). */
+#define DEFAULT_PATH "book_exact=off,truncate=off,clip=split"
 static struct scene default_path(const struct scene *book)
 {
     struct scene s = *book;
@@ -92,11 +103,11 @@ static struct ras_texture tex13[4];
 int bench_main(void)
 {
     int bad = 0;
-    bad |= measure("scene:book/raster-11", "book", &scene_book_raster_11);
+    bad |= measure("scene:book/raster-11", "book", &scene_book_raster_11, "book/raster-11", "");
     struct scene s11 = default_path(&scene_book_raster_11);
-    bad |= measure("scene:book/raster-11", "default", &s11);
+    bad |= measure("scene:book/raster-11", "default", &s11, "book/raster-11", DEFAULT_PATH);
 
-    bad |= measure("scene:book/raster-13", "book", &scene_book_raster_13);
+    bad |= measure("scene:book/raster-13", "book", &scene_book_raster_13, "book/raster-13", "");
     struct scene s13 = default_path(&scene_book_raster_13);
     if (s13.ntextures > 4) return 1;
     for (uint16_t i = 0; i < s13.ntextures; i++) {
@@ -106,6 +117,7 @@ int bench_main(void)
         tex13[i].mip = NULL;
     }
     s13.textures = tex13;
-    bad |= measure("scene:book/raster-13", "default-trilinear", &s13);
+    bad |= measure("scene:book/raster-13", "default-trilinear", &s13, "book/raster-13",
+                   DEFAULT_PATH ",texture.filter=trilinear");
     return bad;
 }

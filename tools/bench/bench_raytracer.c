@@ -22,19 +22,14 @@
 
 static uint64_t work[4096];          /* 32 KiB: ample for these scenes */
 static uint16_t strip_px[W * STRIP];
-static uint32_t frame_sum;           /* FNV-1a of the last frame's RGB565 pixels */
+static uint32_t frame_sum;           /* bench_fnv565 of the last frame's RGB565 pixels */
+static int frame_w, frame_h;         /* its size */
 
-/* FNV-1a over the pixels of a strip, low byte first (host_sim --out-raw's
- * byte order): the image measured is the image the host renders. */
-static void sum_strip(const uint16_t *px, uint32_t n)
-{
-    uint32_t h = frame_sum;
-    for (uint32_t i = 0; i < n; i++) {
-        h = (h ^ (px[i] & 0xFFu)) * 16777619u;
-        h = (h ^ (px[i] >> 8)) * 16777619u;
-    }
-    frame_sum = h;
-}
+#if NUM_MODE == NUM_MODE_FIXED
+#define IMAGE_FRAC NUM_FRAC
+#else
+#define IMAGE_FRAC 0
+#endif
 
 /* One frame of s at w x h; returns instructions, or 0 on failure. With
  * coarse_only, only the progressive display's first pass (the preview of
@@ -45,7 +40,9 @@ static uint64_t frame_pass(const struct scene *s, int w, int h, int coarse_only)
     size_t need = render_work_size(s, (uint16_t)w, (uint16_t)h, STRIP);
     if (need > sizeof work) return 0;
     uint64_t t0 = bench_now(), skip = 0;
-    frame_sum = 2166136261u;
+    frame_sum = BENCH_FNV_INIT;
+    frame_w = w;
+    frame_h = h;
     if (render_init(&ctx, s, (uint16_t)w, (uint16_t)h, STRIP, work, sizeof work) != 0) return 0;
     render_begin_frame(&ctx, 0);
     if (coarse_only && render_set_pass(&ctx, RENDER_PASS_COARSE) != 0) return 0;
@@ -56,7 +53,7 @@ static uint64_t frame_pass(const struct scene *s, int w, int h, int coarse_only)
                                    .y1 = (uint16_t)(y + STRIP < h ? y + STRIP : h), .rgb565 = strip_px };
         if (render_strip(&ctx, &t, &st) != 0) return 0;
         uint64_t t1 = bench_now();
-        sum_strip(strip_px, (uint32_t)w * (t.y1 - t.y0));
+        frame_sum = bench_fnv565(frame_sum, strip_px, (uint32_t)w * (t.y1 - t.y0));
         skip += bench_now() - t1;        /* the checksum is not measured */
     }
     return bench_now() - t0 - skip;
@@ -64,7 +61,9 @@ static uint64_t frame_pass(const struct scene *s, int w, int h, int coarse_only)
 
 static uint64_t frame(const struct scene *s, int w, int h) { return frame_pass(s, w, h, 0); }
 
-static int report(const char *what, const char *variant, uint64_t instr)
+/* The row of the frame just rendered: scene file `scene` with `options`
+ * set (bench.h's terms; NULL: not an image of it), for accuracy.py. */
+static int report(const char *what, const char *variant, uint64_t instr, const char *scene, const char *options)
 {
     if (!instr) {
         bench_puts("FAIL bench_raytracer: ");
@@ -73,23 +72,28 @@ static int report(const char *what, const char *variant, uint64_t instr)
         return 1;
     }
     bench_report(what, NUM_NAME, variant, instr * 1000, "frame");
-    bench_puts("BENCHX checksum=");
-    bench_put_u64(frame_sum);
-#if NUM_MODE == NUM_MODE_FIXED
-    /* the image's format: its accuracy is measured at it (accuracy.py) */
-    bench_puts(" num_frac=");
-    bench_put_u64(NUM_FRAC);
-#endif
-    bench_puts("\n");
+    const struct bench_frame bf = { .scene = scene, .options = options, .checksum = frame_sum,
+                                    .width = (uint16_t)frame_w, .height = (uint16_t)frame_h, .strip_rows = STRIP,
+                                    .frames = 1, .num_frac = IMAGE_FRAC };
+    bench_frame_line(&bf);
     return 0;
 }
 
+/* The scene the first row renders, as the scene file states it (the
+ * profile images change it: their rows have no accuracy) */
+#if defined(BENCH_RT_PROFILE_02) || defined(BENCH_RT_ADAPT) || defined(BENCH_RT_THRESH)
+#define BASE_OPTIONS NULL
+#else
+#define BASE_OPTIONS ""
+#endif
+
 #ifndef BENCH_RT_QUICK
-/* One frame of raytracer-05 with s's options as set, reported as `variant`;
- * the options go back to base afterwards. */
-static int rt05(struct scene *s, const struct rt_options *base, const char *variant)
+/* One frame of raytracer-05 with s's options as set (`options` in the scene
+ * file's terms), reported as `variant`; the options go back to base
+ * afterwards. */
+static int rt05(struct scene *s, const struct rt_options *base, const char *variant, const char *options)
 {
-    int r = report("scene:book/raytracer-05", variant, frame(s, W, H));
+    int r = report("scene:book/raytracer-05", variant, frame(s, W, H), "book/raytracer-05", options);
     s->rt = *base;
     return r;
 }
@@ -111,45 +115,46 @@ int bench_main(void)
 #ifdef BENCH_RT_THRESH
     s->rt.adaptive_threshold = BENCH_RT_THRESH;
 #endif
-    bad |= report("scene:book/raytracer-05", "strip16", frame(s, W, H));
+    bad |= report("scene:book/raytracer-05", "strip16", frame(s, W, H), "book/raytracer-05", BASE_OPTIONS);
 #ifndef BENCH_RT_QUICK
-    /* KEY=VALUE variants are scene options (tools/bench/accuracy.py measures
-     * each one's accuracy with that option set) */
+    /* each variant's options as the scene file writes them (accuracy.py
+     * measures its accuracy with them set); the coarse pass is no image */
     const struct rt_options base = s->rt;
-    bad |= report("scene:book/raytracer-05", "coarse_pass", frame_pass(s, W, H, 1));
+    bad |= report("scene:book/raytracer-05", "coarse_pass", frame_pass(s, W, H, 1), "book/raytracer-05", NULL);
     s->rt.adaptive_subsample = 2;
-    bad |= rt05(s, &base, "adaptive_subsample=2");
+    bad |= rt05(s, &base, "adaptive_subsample=2", "adaptive_subsample=2");
     s->rt.adaptive_subsample = 4;
-    bad |= rt05(s, &base, "adaptive_subsample=4");
+    bad |= rt05(s, &base, "adaptive_subsample=4", "adaptive_subsample=4");
     s->rt.adaptive_subsample = 8;
-    bad |= rt05(s, &base, "adaptive_subsample=8");
+    bad |= rt05(s, &base, "adaptive_subsample=8", "adaptive_subsample=8");
     /* the real-time option at its cheapest setting above 55 dB */
     s->rt.adaptive_subsample = 4;
     s->rt.adaptive_threshold = 7;
-    bad |= rt05(s, &base, "adaptive_subsample=4,adaptive_threshold=7");
+    bad |= rt05(s, &base, "adaptive_subsample=4,adaptive_threshold=7",
+                "adaptive_subsample=4,adaptive_threshold=7");
     s->rt.no_shortcuts = 1;
-    bad |= rt05(s, &base, "shortcuts=off");
+    bad |= rt05(s, &base, "shortcuts=off", "shortcuts=off");
     s->rt.no_frame_cache = 1;
-    bad |= rt05(s, &base, "frame_cache=off");
+    bad |= rt05(s, &base, "frame_cache=off", "frame_cache=off");
     s->rt.shadow_any_hit = 1;
-    bad |= rt05(s, &base, "shadow_any_hit=on");
+    bad |= rt05(s, &base, "shadow_any_hit=on", "shadow_any_hit=on");
     s->rt.shadow_any_hit = s->rt.shadow_cache = 1;
-    bad |= rt05(s, &base, "shadow_any_hit+cache");
+    bad |= rt05(s, &base, "shadow_any_hit+cache", "shadow_any_hit=on,shadow_cache=on");
     s->rt.subsample = 2;
-    bad |= rt05(s, &base, "subsample=2");
+    bad |= rt05(s, &base, "subsample=2", "subsample=2");
     s->rt.supersample = 2;
-    bad |= rt05(s, &base, "supersample=2");
+    bad |= rt05(s, &base, "supersample=2", "supersample=2");
     s->rt.adaptive_ss = 1;
-    bad |= rt05(s, &base, "adaptive_supersample=on");
+    bad |= rt05(s, &base, "adaptive_supersample=on", "adaptive_supersample=on");
     static struct scene s02, grid;
     s02 = scene_book_raytracer_02;
-    bad |= report("scene:book/raytracer-02", "strip16", frame(&s02, W, H));
+    bad |= report("scene:book/raytracer-02", "strip16", frame(&s02, W, H), "book/raytracer-02", "");
     /* many objects: 8x8 spheres on a plane, 80x80 */
     grid = scene_bench_grid64;
     struct scene *g = &grid;
-    bad |= report("scene:grid64@80x80", "plain", frame(g, 80, 80));
+    bad |= report("scene:grid64@80x80", "plain", frame(g, 80, 80), "bench/grid64", "");
     g->rt.bvh = 1;
-    bad |= report("scene:grid64@80x80", "bvh", frame(g, 80, 80));
+    bad |= report("scene:grid64@80x80", "bvh", frame(g, 80, 80), "bench/grid64", "bvh=on");
 #endif
     return bad;
 }

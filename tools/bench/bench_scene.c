@@ -16,10 +16,12 @@
  *   per "init"   render_init once
  *   per "triangle" the frame average / the scene's triangles (scenes of
  *                at least 1,000 triangles: the meshes)
- * with pixels=P (average drawn pixels a frame) and frames=F, for the scene
- * as written (variant "default") and for each other method of the
- * rasterizer's default path: "perspective_step=1" (the exact per-pixel
- * path), 8, 16, 32 and, for Phong scenes, "lighting=exact", "lighting=vertex". */
+ * with pixels=P (average drawn pixels a frame) and what was rendered
+ * (bench_frame_line: frames=F, the checksum of the measured pass's last
+ * frame, the options the variant sets), for the scene as written (variant
+ * "default") and for each other method of the rasterizer's default path:
+ * "perspective_step=1" (the exact per-pixel path, with lighting = exact),
+ * 8, 16, 32 and, for Phong scenes, "lighting=exact", "lighting=vertex". */
 #include <string.h>
 #include "bench.h"
 #include "render.h"
@@ -32,10 +34,20 @@
 static uint64_t work[64 * 1024 / 8 * 16];  /* 1 MiB (the meshes' scenes) */
 static uint16_t strip_px[W * STRIP];
 static uint8_t strip_written[W * STRIP];
+static uint32_t frame_sum;    /* bench_fnv565 of the last frame */
+static uint64_t sum_instr;    /* instructions spent on it (not measured) */
 
-/* Frame f of s into ctx; *pixels (if not null) gains its drawn pixels. */
-static int frame(struct render_ctx *ctx, uint16_t f, uint32_t *pixels)
+#if NUM_MODE == NUM_MODE_FIXED
+#define IMAGE_FRAC NUM_FRAC
+#else
+#define IMAGE_FRAC 0
+#endif
+
+/* Frame f of s into ctx; *pixels (if not null) gains its drawn pixels;
+ * with sum, frame_sum becomes its checksum. */
+static int frame(struct render_ctx *ctx, uint16_t f, uint32_t *pixels, int sum)
 {
+    frame_sum = BENCH_FNV_INIT;
     if (render_begin_frame(ctx, f) != 0) return -1;
     struct render_stats st;
     memset(&st, 0, sizeof st);
@@ -46,22 +58,28 @@ static int frame(struct render_ctx *ctx, uint16_t f, uint32_t *pixels)
         if (render_strip(ctx, &t, &st) != 0) return -1;
         if (pixels)
             for (int k = 0; k < (t.y1 - t.y0) * W; k++) *pixels += strip_written[k];
+        if (sum) {
+            uint64_t a = bench_now();
+            frame_sum = bench_fnv565(frame_sum, strip_px, (uint32_t)(t.y1 - t.y0) * W);
+            sum_instr += bench_now() - a;
+        }
     }
     return 0;
 }
 
-static void report(const char *variant, const char *per, uint64_t milli, uint32_t pixels, uint32_t frames)
+static void report(const char *variant, const char *per, uint64_t milli, uint32_t pixels,
+                   const struct bench_frame *bf)
 {
     bench_report(BENCH_WHAT, NUM_NAME, variant, milli, per);
     bench_puts("BENCHX pixels=");
     bench_put_u64(pixels);
-    bench_puts(" frames=");
-    bench_put_u64(frames);
     bench_puts("\n");
+    bench_frame_line(bf);
 }
 
-/* The scene with one method changed, measured and reported. */
-static int measure(const struct scene *s, const char *variant)
+/* The scene with one method changed (`options`, in the scene file's terms),
+ * measured and reported. */
+static int measure(const struct scene *s, const char *variant, const char *options)
 {
     struct render_ctx ctx;
     size_t need = render_work_size(s, W, H, STRIP);
@@ -72,28 +90,32 @@ static int measure(const struct scene *s, const char *variant)
     uint64_t init = bench_now() - t0;
     uint32_t px = 0;
     for (uint16_t f = 0; f < frames; f++)
-        if (frame(&ctx, f, &px) != 0) { bench_puts("FAIL bench_scene: frame\n"); return 1; }
+        if (frame(&ctx, f, &px, 0) != 0) { bench_puts("FAIL bench_scene: frame\n"); return 1; }
     uint64_t total = 0;
     for (uint16_t f = 0; f < frames; f++) {
+        sum_instr = 0;
         uint64_t a = bench_now();
-        frame(&ctx, f, NULL);
-        total += bench_now() - a;
+        frame(&ctx, f, NULL, f + 1 == frames);   /* the last frame's checksum */
+        total += bench_now() - a - sum_instr;
     }
     uint32_t avg_px = (px + frames / 2) / frames;
-    report(variant, "frame", total * 1000 / frames, avg_px, frames);
-    report(variant, "pixel", avg_px ? total * 1000 / frames / avg_px : 0, avg_px, frames);
-    report(variant, "init", init * 1000, avg_px, frames);
+    const struct bench_frame bf = { .scene = BENCH_WHAT + 6 /* "scene:" */, .options = options,
+                                    .checksum = frame_sum, .width = W, .height = H, .strip_rows = STRIP,
+                                    .frames = frames, .num_frac = IMAGE_FRAC };
+    report(variant, "frame", total * 1000 / frames, avg_px, &bf);
+    report(variant, "pixel", avg_px ? total * 1000 / frames / avg_px : 0, avg_px, &bf);
+    report(variant, "init", init * 1000, avg_px, &bf);
     uint32_t tris = 0;
     for (uint16_t i = 0; s->kind == SCENE_RASTER && i < s->ninstances; i++)
         if (s->instances[i].model < s->nmodels) tris += s->models[s->instances[i].model].ntris;
-    if (tris >= 1000) report(variant, "triangle", total * 1000 / frames / tris, avg_px, frames);
+    if (tris >= 1000) report(variant, "triangle", total * 1000 / frames / tris, avg_px, &bf);
     return 0;
 }
 
 int bench_main(void)
 {
     const struct scene *s = &BENCH_SCENE;
-    int bad = measure(s, "default");
+    int bad = measure(s, "default", "");
 #ifdef BENCH_DEFAULT_ONLY
     return bad;   /* (for profiling: the scene as written only) */
 #endif
@@ -101,19 +123,21 @@ int bench_main(void)
     static const uint8_t steps[] = { 1, 8, 16, 32 };
     static const char *const step_names[] = { "perspective_step=1", "perspective_step=8", "perspective_step=16",
                                               "perspective_step=32" };
+    static const char *const step_options[] = { "perspective_step=1,lighting=exact", "perspective_step=8",
+                                                "perspective_step=16", "perspective_step=32" };
     struct scene v = *s;
     for (unsigned k = 0; k < sizeof steps; k++) {
         if (steps[k] == (s->ras.persp_step ? s->ras.persp_step : 16)) continue;   /* the default row */
         v.ras.persp_step = steps[k];
         v.ras.lighting = steps[k] == 1 ? RAS_LIGHT_EXACT : s->ras.lighting;
-        bad |= measure(&v, step_names[k]);
+        bad |= measure(&v, step_names[k], step_options[k]);
     }
     if (s->ras.shading == SHADE_PHONG) {
         v = *s;
         v.ras.lighting = RAS_LIGHT_EXACT;
-        bad |= measure(&v, "lighting=exact");
+        bad |= measure(&v, "lighting=exact", "lighting=exact");
         v.ras.lighting = RAS_LIGHT_VERTEX;
-        bad |= measure(&v, "lighting=vertex");
+        bad |= measure(&v, "lighting=vertex", "lighting=vertex");
     }
     return bad;
 }

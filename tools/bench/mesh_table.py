@@ -4,7 +4,8 @@
 scenes of firmware/scenes/bench/ (tools/bench/bench_scene.c), millions of
 instructions a frame and instructions a triangle on the emulated Cortex-M0+
 and M4F, fixed and float (qemu instruction counts, not cycles), with the PSNR
-of the fixed and float images against double exact (tools/bench/accuracy.py).
+of the M0+ fixed and float images against double exact (tools/bench/accuracy.py:
+of the last frame they render, whose checksum the rows carry).
 
 Usage: mesh_table.py [build/bench/results.jsonl]
 """

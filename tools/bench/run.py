@@ -9,8 +9,10 @@ instruction = 1 ns of virtual time) and semihosting; the image prints
     BENCH <what> <numeric> <variant> <milli-instructions> <per>
 lines, each turned into one JSON line of the results file; a line
     BENCHX key=value ...
-right after one adds integer fields to it (pixels=, frames=). Lines of the
-same (target, what, numeric, variant) already in the file are replaced.
+right after one adds fields to it, integers where the value is one
+(pixels=, frames=, frame_checksum=, ...), else strings (scene=, options=,
+which may be empty: tools/bench/bench.h). Lines of the same (target, what,
+numeric, variant) already in the file are replaced.
 
   run.py [--out FILE] [--timeout S] IMAGE.elf...   benchmark
   run.py --smoke IMAGE.elf                           boot test: passes the
@@ -57,11 +59,11 @@ def parse(target, elf, out):
     for line in out.splitlines():
         f = line.split()
         if f and f[0] == "BENCHX" and recs:
-            # extra integer fields of the line before: BENCHX key=value ...
+            # extra fields of the line before: BENCHX key=value ...
             for kv in f[1:]:
-                k, _, v = kv.partition("=")
-                if k and v.lstrip("-").isdigit():
-                    recs[-1][k] = int(v)
+                k, eq, v = kv.partition("=")
+                if k and eq:
+                    recs[-1][k] = int(v) if v.lstrip("-").isdigit() else v
             continue
         if len(f) != 6 or f[0] != "BENCH":
             continue

@@ -63,6 +63,40 @@ void bench_report(const char *what, const char *numeric, const char *variant, ui
     bench_puts("\n");
 }
 
+uint32_t bench_fnv565(uint32_t h, const uint16_t *px, uint32_t n)
+{
+    for (uint32_t i = 0; i < n; i++) {
+        h = (h ^ (px[i] & 0xFFu)) * 16777619u;
+        h = (h ^ (uint32_t)(px[i] >> 8)) * 16777619u;
+    }
+    return h;
+}
+
+void bench_frame_line(const struct bench_frame *f)
+{
+    bench_puts("BENCHX frame_checksum=");
+    bench_put_u64(f->checksum);
+    bench_puts(" scene=");
+    bench_puts(f->scene);
+    if (f->options) {
+        bench_puts(" options=");
+        bench_puts(f->options);
+    }
+    bench_puts(" width=");
+    bench_put_u64(f->width);
+    bench_puts(" height=");
+    bench_put_u64(f->height);
+    bench_puts(" strip_rows=");
+    bench_put_u64(f->strip_rows);
+    bench_puts(" frames=");
+    bench_put_u64(f->frames);
+    if (f->num_frac) {
+        bench_puts(" num_frac=");
+        bench_put_u64(f->num_frac);
+    }
+    bench_puts("\n");
+}
+
 int bench_cmdline(char *buf, unsigned len)
 {
     struct { char *p; uint32_t n; } blk = { buf, len };

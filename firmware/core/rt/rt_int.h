@@ -89,6 +89,7 @@ struct rt_obj_cache {
     int32_t px_row;
     int64_t px_b, px_x0, px_x2, px_cxd;
     uint8_t near_ok;      /* rt_near_c_ok of c_cam: near roots beyond a limit found before the square root */
+    struct rt_ivsphere ivs;   /* its per-frame part of the row intervals (rt_num.h) */
 };
 
 /* Bounding-sphere hierarchy node: a leaf holds items [first, first+count). */
@@ -177,6 +178,14 @@ struct rt_state {
     int32_t tile_row;            /* tile row the lists hold (-1: none) */
     const int16_t *prim_items;   /* the traced primary ray's list (NULL: every item) */
     uint16_t prim_n;
+    /* primary rays' candidate intervals (rt_iv_row): per slot (a row modulo
+     * RT_IV_ROWS, its row in iv_tag, -1 none) and object the columns
+     * [lo, hi] whose rays may meet the sphere; RT_IV_TODO: not yet formed,
+     * INT16_MIN: not proven (the coarse test decides) */
+    int16_t *iv;                 /* RT_IV_ROWS * nobjects * 2 */
+    int32_t *iv_tag;             /* RT_IV_ROWS */
+    int16_t *prim_iv;            /* the traced primary ray's row (NULL: none) */
+    int16_t prim_col;            /* ... and its column */
     struct rt_counters n;
 };
 
@@ -185,6 +194,11 @@ struct rt_state {
  * subsampling's blocks reach that far past a tile's edge), and are proven
  * for one row and one column more on every side (sub-pixel samples). */
 #define RT_TILE 16
+
+/* Rows of candidate intervals kept (those a tile row's adaptive blocks
+ * visit out of order), and the mark of an interval not yet formed. */
+#define RT_IV_ROWS (RT_TILE + RT_MAX_ADAPT + 2)
+#define RT_IV_TODO INT16_MAX
 
 /* A CSG item's index into scene.csg (items past the objects are CSGs). */
 #define CSG_ITEM(rt, item) ((item) - (int16_t)(rt)->s->nobjects)
@@ -213,6 +227,9 @@ int rt_item_hit(struct rt_state *rt, int16_t item, struct rt_ray *ray, num t_min
                 struct rt_hit *hit);
 vec3 rt_hit_normal(const struct rt_state *rt, const struct rt_hit *hit, const vec3 *p);
 vec3 rt_far_point(const struct rt_ray *ray);
+/* The interval of object obj in the traced primary ray's row (rt->dx_row)
+ * into e[0], e[1] (rt_state.iv). */
+void rt_row_interval(const struct rt_state *rt, int16_t obj, int16_t *e);
 
 /* rt_scene.c: the bounding-sphere hierarchy over rt->items (planes aside,
  * unbounded); the per-frame object constants (after the camera moved). */

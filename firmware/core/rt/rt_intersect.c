@@ -532,6 +532,8 @@ int rt_closest_intersection(struct rt_state *rt, struct rt_ray *ray, num t_min, 
         uint16_t nitems = rt->nitems;
         if (ray->from_camera && rt->prim_items) { items = rt->prim_items; nitems = rt->prim_n; }
         int cam = ray->from_camera && rt->cached;   /* the camera's coarse forms (rt_ccam) */
+        /* a primary ray along its row's exact directions: the candidate intervals */
+        int16_t *iv = ray->from_camera ? rt->prim_iv : NULL;
         for (uint16_t i = 0; i < nitems; i++) {
             int16_t item = items[i];
             if (item == rt->skip_item) continue;
@@ -541,9 +543,17 @@ int rt_closest_intersection(struct rt_state *rt, struct rt_ray *ray, num t_min, 
                 /* the common outcome first, without the calls: a certain
                  * miss (the ray's own sphere takes sphere_first_hit's path) */
                 int other = item != ray->origin;
-                if (other && (cam ? rt_coarse_cam_miss(&ray->cd, &rt->oc[item].ccam)
-                                  : rt_coarse_sphere_miss(&ray->cd, &rt->oc[item].cs)))
+                if (iv) {
+                    /* outside its interval, certainly a miss; inside, the
+                     * coarse test seldom rejects (only where not proven) */
+                    int16_t *e = iv + 2 * item;
+                    if (e[0] == RT_IV_TODO) rt_row_interval(rt, item, e);
+                    if (rt->prim_col < e[0] || rt->prim_col > e[1]) continue;
+                    if (e[0] == INT16_MIN && rt_coarse_cam_miss(&ray->cd, &rt->oc[item].ccam)) continue;
+                } else if (other && (cam ? rt_coarse_cam_miss(&ray->cd, &rt->oc[item].ccam)
+                                         : rt_coarse_sphere_miss(&ray->cd, &rt->oc[item].cs))) {
                     continue;
+                }
                 if (!sphere_item_hit(rt, item, ray, t_min, limit, hit, other)) continue;
                 limit = hit->t;
                 found = 1;
@@ -584,6 +594,22 @@ int rt_closest_intersection(struct rt_state *rt, struct rt_ray *ray, num t_min, 
         }
     }
     return found;
+}
+
+void rt_row_interval(const struct rt_state *rt, int16_t obj, int16_t *e)
+{
+    const struct rt_obj_cache *oc = &rt->oc[obj];
+    int32_t half = rt->w / 2, lo, hi;
+    if (!rt_iv_row(&oc->ivs, oc->c_cam, rt->dx_y, rt->dx_z, rt->dx_yz, -half, rt->w - 1 - half, &lo, &hi)) {
+        e[0] = INT16_MIN;
+        e[1] = INT16_MAX;
+    } else if (lo > hi) {
+        e[0] = 1;   /* no column */
+        e[1] = 0;
+    } else {
+        e[0] = (int16_t)(lo + half);
+        e[1] = (int16_t)(hi + half);
+    }
 }
 
 vec3 rt_hit_normal(const struct rt_state *rt, const struct rt_hit *hit, const vec3 *p)

@@ -275,6 +275,22 @@ static void prim_list(struct rt_state *rt, int col, int row)
     rt->prim_n = rt->tile_n[tc];
 }
 
+/* The traced primary ray's candidate intervals (rt_state.iv): its row's
+ * slot, claimed with every interval still to form when it holds another
+ * row (they are formed on first use, rt_row_interval). */
+static void row_iv(struct rt_state *rt, int col, int row)
+{
+    unsigned slot = (unsigned)row % RT_IV_ROWS;
+    uint16_t n = rt->s->nobjects;
+    int16_t *iv = rt->iv + (size_t)slot * 2 * n;
+    if (rt->iv_tag[slot] != row) {
+        rt->iv_tag[slot] = row;
+        for (uint16_t i = 0; i < n; i++) iv[2 * i] = RT_IV_TODO;
+    }
+    rt->prim_iv = iv;
+    rt->prim_col = (int16_t)col;
+}
+
 /* A primary ray through pixel (col, row) with the camera not turned, or
  * turned by the scene's own rotation: its exact direction (x vh, y vh, d h)
  * (rt_exact_comp in rt_num.h), the row's part once a row; turned by the
@@ -296,6 +312,7 @@ static void exact_dir(struct rt_state *rt, struct rt_ray *ray, int col, int row)
         ray->dx.z = rt->dx_z;
         ray->dxa = rt->dx_yz + rt_exact_sq(vx);
         ray->dxrow = row;
+        if (rt->tiles && rt->cached) row_iv(rt, col, row);
     } else if (rt_exact_turn(rt->cam_q29, rt->dx_turn, vx, &ray->dx)) {
         ray->dxa = rt_exact_sq(ray->dx.x) + rt_exact_sq(ray->dx.y) + rt_exact_sq(ray->dx.z);
     } else {
@@ -317,6 +334,7 @@ static rgb trace_primary(struct rt_state *rt, vec3 d, int col, int row, struct r
     rt->n.primary_rays++;
     rgb c = trace_ray(rt, &ray, rt->s->rt.t_min_primary, NUM_MAX, rt->depth, prim);
     rt->prim_items = NULL;
+    rt->prim_iv = NULL;
     return c;
 }
 

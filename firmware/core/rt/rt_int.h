@@ -31,6 +31,7 @@ struct rt_ray {
     int16_t origin;
     uint8_t from_camera;  /* O is the camera: per-frame sphere constants apply */
     uint8_t exact;        /* a, ds, as, tscale computed */
+    uint8_t cd_todo;      /* cd not yet formed (rt_ray_cd) */
 };
 
 /* A near root as the fraction n / d it was rounded from (an exact primary
@@ -211,6 +212,14 @@ static inline struct rt_state *rt_state_of(void *work) { return (struct rt_state
 /* rt_intersect.c */
 struct rt_ray rt_make_ray(vec3 o, vec3 d, int16_t origin, uint8_t from_camera);
 void rt_ray_init(struct rt_ray *r, const vec3 *o, const vec3 *d, int16_t origin, uint8_t from_camera);
+/* A primary ray from the camera whose coarse direction is formed on first
+ * use (rt_ray_cd): along its row's candidate intervals few spheres need it. */
+void rt_ray_init_primary(struct rt_ray *r, const vec3 *o, const vec3 *d);
+void rt_ray_cd_now(struct rt_ray *r);
+static inline void rt_ray_cd(struct rt_ray *r)
+{
+    if (r->cd_todo) rt_ray_cd_now(r);
+}
 /* Computes the exact tests' forms of the direction (once per ray). */
 void rt_ray_exact(struct rt_ray *r);
 /* The book's IntersectRaySphere: its two roots (the book's order); 0 for a

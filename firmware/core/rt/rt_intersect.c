@@ -21,20 +21,38 @@
 /* The ray, with a copy of its direction scaled by a power of two for the
  * robust tests: D' = D / 2^k with D'.D' in [0.25, 4), and tscale = 2^-k,
  * which turns a root t' along D' into t along D. */
-void rt_ray_init(struct rt_ray *r, const vec3 *op, const vec3 *dp, int16_t origin, uint8_t from_camera)
+static inline void ray_fill(struct rt_ray *r, const vec3 *op, const vec3 *dp, int16_t origin, uint8_t from_camera)
 {
     /* by components: a struct copy here becomes a memcpy call on ARMv6-M */
-    vec3 o, d;
-    o.x = op->x; o.y = op->y; o.z = op->z;
-    d.x = dp->x; d.y = dp->y; d.z = dp->z;
-    r->o.x = o.x; r->o.y = o.y; r->o.z = o.z;
-    r->d.x = d.x; r->d.y = d.y; r->d.z = d.z;
-    rt_cdir_set(&r->cd, o, d);
+    r->o.x = op->x; r->o.y = op->y; r->o.z = op->z;
+    r->d.x = dp->x; r->d.y = dp->y; r->d.z = dp->z;
     r->origin = origin;
     r->from_camera = from_camera;
     r->exact = 0;   /* a, ds, as, aq and tscale: set by rt_ray_exact before any use */
     r->dxm = 0;
     r->dxrow = -1;
+}
+
+void rt_ray_init(struct rt_ray *r, const vec3 *op, const vec3 *dp, int16_t origin, uint8_t from_camera)
+{
+    vec3 o, d;
+    o.x = op->x; o.y = op->y; o.z = op->z;
+    d.x = dp->x; d.y = dp->y; d.z = dp->z;
+    ray_fill(r, &o, &d, origin, from_camera);
+    rt_cdir_set(&r->cd, o, d);
+    r->cd_todo = 0;
+}
+
+void rt_ray_init_primary(struct rt_ray *r, const vec3 *op, const vec3 *dp)
+{
+    ray_fill(r, op, dp, -1, 1);
+    r->cd_todo = 1;
+}
+
+void rt_ray_cd_now(struct rt_ray *r)
+{
+    r->cd_todo = 0;
+    rt_cdir_set(&r->cd, r->o, r->d);
 }
 
 struct rt_ray rt_make_ray(vec3 o, vec3 d, int16_t origin, uint8_t from_camera)
@@ -129,7 +147,10 @@ static int sphere_quad(const struct rt_state *rt, int16_t obj, struct rt_ray *ra
     int cam = ray->from_camera && rt->cached;
     /* certain misses, decided in 32-bit arithmetic (rt_num.h): the test
      * below would return 0 too (coarse_done: the caller has tried it) */
-    if (rt->shortcuts && !coarse_done && rt_coarse_sphere_miss(&ray->cd, &oc->cs)) return 0;
+    if (rt->shortcuts && !coarse_done) {
+        rt_ray_cd(ray);
+        if (rt_coarse_sphere_miss(&ray->cd, &oc->cs)) return 0;
+    }
     vec3 co;
     if (cam) {   /* by components: a struct copy here becomes a memcpy call on ARMv6-M */
         co.x = oc->co_cam.x;
@@ -262,6 +283,7 @@ static int sphere_first_hit(const struct rt_state *rt, int16_t obj, struct rt_ra
     num t1, t2;
     fr->n = fr->d = 0;
     if (ray->origin == obj) {
+        rt_ray_cd(ray);
         if (rt_coarse_dot_negative(&ray->cd, &rt->oc[obj].cs.c)) return 0;
         wnum b = sphere_self_b(rt, obj, ray);
         if (b <= 0) return 0;
@@ -519,6 +541,38 @@ static int bound_hit(struct rt_state *rt, vec3 c, num r, struct rt_ray *ray)
     return wnum_sub(wnum_mul(b, b), wnum_mul(a, cc)) >= 0;
 }
 
+/* rt_closest_intersection of a primary ray along its row's candidate
+ * intervals (rt->prim_iv): outside its interval a sphere is certainly
+ * missed; inside, the coarse test seldom rejects and is skipped where the
+ * interval is proven. */
+static int closest_prim(struct rt_state *rt, struct rt_ray *ray, num t_min, num limit, struct rt_hit *hit,
+                        const int16_t *items, uint16_t nitems)
+{
+    const struct rt_object *objs = rt->s->objects;
+    int16_t *iv = rt->prim_iv, nobj = (int16_t)rt->s->nobjects, col = rt->prim_col, skip = rt->skip_item;
+    int found = 0;
+    for (uint16_t i = 0; i < nitems; i++) {
+        int16_t item = items[i];
+        if (item == skip) continue;
+        if (item < nobj && objs[item].shape == RT_SPHERE) {
+            rt->n.tests++;
+            int16_t *e = iv + 2 * item;
+            if (e[0] == RT_IV_TODO) rt_row_interval(rt, item, e);
+            if (col < e[0] || col > e[1]) continue;
+            if (e[0] == INT16_MIN) {
+                rt_ray_cd(ray);
+                if (rt_coarse_cam_miss(&ray->cd, &rt->oc[item].ccam)) continue;
+            }
+            if (!sphere_item_hit(rt, item, ray, t_min, limit, hit, 1)) continue;
+        } else if (!rt_item_hit(rt, item, ray, t_min, limit, hit)) {
+            continue;
+        }
+        limit = hit->t;
+        found = 1;
+    }
+    return found;
+}
+
 int rt_closest_intersection(struct rt_state *rt, struct rt_ray *ray, num t_min, num t_max,
                             struct rt_hit *hit, int any_hit)
 {
@@ -531,9 +585,10 @@ int rt_closest_intersection(struct rt_state *rt, struct rt_ray *ray, num t_min, 
         const int16_t *items = rt->items;
         uint16_t nitems = rt->nitems;
         if (ray->from_camera && rt->prim_items) { items = rt->prim_items; nitems = rt->prim_n; }
-        int cam = ray->from_camera && rt->cached;   /* the camera's coarse forms (rt_ccam) */
         /* a primary ray along its row's exact directions: the candidate intervals */
-        int16_t *iv = ray->from_camera ? rt->prim_iv : NULL;
+        if (ray->from_camera && rt->prim_iv && !any_hit && rt->shortcuts)
+            return closest_prim(rt, ray, t_min, limit, hit, items, nitems);
+        int cam = ray->from_camera && rt->cached;   /* the camera's coarse forms (rt_ccam) */
         for (uint16_t i = 0; i < nitems; i++) {
             int16_t item = items[i];
             if (item == rt->skip_item) continue;
@@ -543,17 +598,9 @@ int rt_closest_intersection(struct rt_state *rt, struct rt_ray *ray, num t_min, 
                 /* the common outcome first, without the calls: a certain
                  * miss (the ray's own sphere takes sphere_first_hit's path) */
                 int other = item != ray->origin;
-                if (iv) {
-                    /* outside its interval, certainly a miss; inside, the
-                     * coarse test seldom rejects (only where not proven) */
-                    int16_t *e = iv + 2 * item;
-                    if (e[0] == RT_IV_TODO) rt_row_interval(rt, item, e);
-                    if (rt->prim_col < e[0] || rt->prim_col > e[1]) continue;
-                    if (e[0] == INT16_MIN && rt_coarse_cam_miss(&ray->cd, &rt->oc[item].ccam)) continue;
-                } else if (other && (cam ? rt_coarse_cam_miss(&ray->cd, &rt->oc[item].ccam)
-                                         : rt_coarse_sphere_miss(&ray->cd, &rt->oc[item].cs))) {
+                if (other && (cam ? rt_coarse_cam_miss(&ray->cd, &rt->oc[item].ccam)
+                                  : rt_coarse_sphere_miss(&ray->cd, &rt->oc[item].cs)))
                     continue;
-                }
                 if (!sphere_item_hit(rt, item, ray, t_min, limit, hit, other)) continue;
                 limit = hit->t;
                 found = 1;

@@ -329,8 +329,9 @@ static rgb trace_primary(struct rt_state *rt, vec3 d, int col, int row, struct r
     struct rt_ray ray;
     prim->item = -1;
     prim->shadow = 0;
-    rt_ray_init(&ray, &rt->cam_pos, &d, -1, 1);
+    rt_ray_init_primary(&ray, &rt->cam_pos, &d);
     if (col >= 0 && !rt->book && (!rt->cam_rotated || rt->cam_q29)) exact_dir(rt, &ray, col, row);
+    if (!rt->prim_iv) rt_ray_cd_now(&ray);   /* no intervals: the coarse tests decide */
     rt->n.primary_rays++;
     rgb c = trace_ray(rt, &ray, rt->s->rt.t_min_primary, NUM_MAX, rt->depth, prim);
     rt->prim_items = NULL;

@@ -185,6 +185,7 @@ struct rt_state {
      * INT16_MIN: not proven (the coarse test decides) */
     int16_t *iv;                 /* RT_IV_ROWS * nobjects * 2 */
     int32_t *iv_tag;             /* RT_IV_ROWS */
+    int16_t *dx_iv;              /* row dx_row's (NULL: none) */
     int16_t *prim_iv;            /* the traced primary ray's row (NULL: none) */
     int16_t prim_col;            /* ... and its column */
     struct rt_counters n;

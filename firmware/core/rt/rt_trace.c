@@ -275,11 +275,13 @@ static void prim_list(struct rt_state *rt, int col, int row)
     rt->prim_n = rt->tile_n[tc];
 }
 
-/* The traced primary ray's candidate intervals (rt_state.iv): its row's
- * slot, claimed with every interval still to form when it holds another
- * row (they are formed on first use, rt_row_interval). */
-static void row_iv(struct rt_state *rt, int col, int row)
+/* Row row's candidate intervals (rt_state.iv): its slot, claimed with
+ * every interval still to form when it holds another row (they are formed
+ * on first use, rt_row_interval); NULL without the tile lists or the
+ * per-frame constants. */
+static int16_t *row_iv(struct rt_state *rt, int row)
 {
+    if (!rt->tiles || !rt->cached) return NULL;
     unsigned slot = (unsigned)row % RT_IV_ROWS;
     uint16_t n = rt->s->nobjects;
     int16_t *iv = rt->iv + (size_t)slot * 2 * n;
@@ -287,8 +289,7 @@ static void row_iv(struct rt_state *rt, int col, int row)
         rt->iv_tag[slot] = row;
         for (uint16_t i = 0; i < n; i++) iv[2 * i] = RT_IV_TODO;
     }
-    rt->prim_iv = iv;
-    rt->prim_col = (int16_t)col;
+    return iv;
 }
 
 /* A primary ray through pixel (col, row) with the camera not turned, or
@@ -303,6 +304,7 @@ static void exact_dir(struct rt_state *rt, struct rt_ray *ray, int col, int row)
                               rt_exact_comp(rt->d, rt->h, &rt->dx_z));
         if (rt->dx_ok && rt->cam_rotated) rt_exact_turn_row(rt->cam_q29, rt->dx_y, rt->dx_z, rt->dx_turn);
         else if (rt->dx_ok) rt->dx_yz = rt_exact_sq(rt->dx_y) + rt_exact_sq(rt->dx_z);
+        rt->dx_iv = rt->dx_ok && !rt->cam_rotated ? row_iv(rt, row) : NULL;
     }
     num vx;
     if (!rt->dx_ok || !rt_exact_comp(rt->vh, col - rt->w / 2, &vx)) return;
@@ -312,7 +314,8 @@ static void exact_dir(struct rt_state *rt, struct rt_ray *ray, int col, int row)
         ray->dx.z = rt->dx_z;
         ray->dxa = rt->dx_yz + rt_exact_sq(vx);
         ray->dxrow = row;
-        if (rt->tiles && rt->cached) row_iv(rt, col, row);
+        rt->prim_iv = rt->dx_iv;
+        rt->prim_col = (int16_t)col;
     } else if (rt_exact_turn(rt->cam_q29, rt->dx_turn, vx, &ray->dx)) {
         ray->dxa = rt_exact_sq(ray->dx.x) + rt_exact_sq(ray->dx.y) + rt_exact_sq(ray->dx.z);
     } else {

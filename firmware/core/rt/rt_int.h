@@ -180,11 +180,12 @@ struct rt_state {
     const int16_t *prim_items;   /* the traced primary ray's list (NULL: every item) */
     uint16_t prim_n;
     /* primary rays' candidate intervals (rt_iv_row): per slot (a row modulo
-     * RT_IV_ROWS, its row in iv_tag, -1 none) and object the columns
-     * [lo, hi] whose rays may meet the sphere; RT_IV_TODO: not yet formed,
+     * iv_rows, its row in iv_tag, -1 none) and object the columns [lo, hi]
+     * whose rays may meet the sphere; RT_IV_TODO: not yet formed,
      * INT16_MIN: not proven (the coarse test decides) */
-    int16_t *iv;                 /* RT_IV_ROWS * nobjects * 2 */
-    int32_t *iv_tag;             /* RT_IV_ROWS */
+    int16_t *iv;                 /* iv_rows * nobjects * 2 */
+    int32_t *iv_tag;             /* iv_rows */
+    uint8_t iv_rows;             /* 1, or B + 2 with adaptive subsampling */
     int16_t *dx_iv;              /* row dx_row's (NULL: none) */
     int16_t *prim_iv;            /* the traced primary ray's row (NULL: none) */
     int16_t prim_col;            /* ... and its column */
@@ -197,9 +198,7 @@ struct rt_state {
  * for one row and one column more on every side (sub-pixel samples). */
 #define RT_TILE 16
 
-/* Rows of candidate intervals kept (those a tile row's adaptive blocks
- * visit out of order), and the mark of an interval not yet formed. */
-#define RT_IV_ROWS (RT_TILE + RT_MAX_ADAPT + 2)
+/* The mark of a candidate interval not yet formed. */
 #define RT_IV_TODO INT16_MAX
 
 /* A CSG item's index into scene.csg (items past the objects are CSGs). */

@@ -43,7 +43,7 @@ void rt_light_constants(struct rt_state *rt)
 void rt_frame_constants(struct rt_state *rt)
 {
     const struct scene *s = rt->s;
-    for (int k = 0; k < RT_IV_ROWS; k++) rt->iv_tag[k] = -1;   /* the camera may have moved */
+    for (int k = 0; k < rt->iv_rows; k++) rt->iv_tag[k] = -1;   /* the camera may have moved */
     for (uint16_t i = 0; i < s->nobjects; i++) {
         const struct rt_object *o = &s->objects[i];
         struct rt_obj_cache *oc = &rt->oc[i];

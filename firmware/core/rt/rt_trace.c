@@ -282,7 +282,7 @@ static void prim_list(struct rt_state *rt, int col, int row)
 static int16_t *row_iv(struct rt_state *rt, int row)
 {
     if (!rt->tiles || !rt->cached) return NULL;
-    unsigned slot = (unsigned)row % RT_IV_ROWS;
+    unsigned slot = (unsigned)row % rt->iv_rows;
     uint16_t n = rt->s->nobjects;
     int16_t *iv = rt->iv + (size_t)slot * 2 * n;
     if (rt->iv_tag[slot] != row) {

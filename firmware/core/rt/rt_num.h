@@ -775,91 +775,12 @@ static inline int rt_div_near_unit(num x, int32_t e, num *out)
  * 128-bit arithmetic; the columns outside [lo, hi] skip the sphere. So do
  * all when c > 0 and b <= 0 at both ends (b is linear in k: behind the
  * camera). Range: |CO_i| < 2^30, |Y|, |Z|, |v k| < 2^28, v < 2^20 and |k| <=
- * 2^10 keep every sum and product below 2^126. Fixed point only. */
+ * 2^10 keep every sum and product below 2^126. Fixed point only; the
+ * functions are in rt_intersect.c. */
 #if NUM_MODE == NUM_MODE_FIXED
 struct rt_s128 {
     uint64_t lo, hi;      /* two's complement */
 };
-
-static inline struct rt_s128 rt_s128_add(struct rt_s128 a, struct rt_s128 b)
-{
-    struct rt_s128 r;
-    r.lo = a.lo + b.lo;
-    r.hi = a.hi + b.hi + (r.lo < a.lo);
-    return r;
-}
-
-static inline struct rt_s128 rt_s128_neg(struct rt_s128 a)
-{
-    struct rt_s128 r;
-    r.lo = 0u - a.lo;
-    r.hi = 0u - a.hi - (a.lo != 0);
-    return r;
-}
-
-static inline int rt_s128_isneg(struct rt_s128 a) { return (a.hi >> 63) != 0; }
-static inline int rt_s128_le0(struct rt_s128 a) { return rt_s128_isneg(a) || (a.hi == 0 && a.lo == 0); }
-
-static inline struct rt_s128 rt_s128_from64(int64_t v)
-{
-    struct rt_s128 r;
-    r.lo = (uint64_t)v;
-    r.hi = v < 0 ? ~(uint64_t)0 : 0u;
-    return r;
-}
-
-/* a b for unsigned 64-bit a, b. */
-static inline struct rt_s128 rt_u128_mul64(uint64_t a, uint64_t b)
-{
-    uint32_t a0 = (uint32_t)a, a1 = (uint32_t)(a >> 32), b0 = (uint32_t)b, b1 = (uint32_t)(b >> 32);
-    uint64_t p00 = num_umul32(a0, b0), p01 = num_umul32(a0, b1), p10 = num_umul32(a1, b0);
-    uint64_t mid = (p00 >> 32) + (uint32_t)p01 + (uint32_t)p10;   /* < 3 2^32 */
-    struct rt_s128 r;
-    r.lo = (mid << 32) | (uint32_t)p00;
-    r.hi = num_umul32(a1, b1) + (p01 >> 32) + (p10 >> 32) + (mid >> 32);
-    return r;
-}
-
-/* a b for signed 64-bit a, b. */
-static inline struct rt_s128 rt_s128_mul64(int64_t a, int64_t b)
-{
-    struct rt_s128 r = rt_u128_mul64(rt_mag64(a), rt_mag64(b));
-    return (a < 0) != (b < 0) ? rt_s128_neg(r) : r;
-}
-
-/* x k, |x k| < 2^127, |k| < 2^31. */
-static inline struct rt_s128 rt_s128_mul32(struct rt_s128 x, int32_t k)
-{
-    int neg = rt_s128_isneg(x) != (k < 0);
-    if (rt_s128_isneg(x)) x = rt_s128_neg(x);
-    uint32_t m = k < 0 ? 0u - (uint32_t)k : (uint32_t)k;
-    uint64_t p0 = num_umul32((uint32_t)x.lo, m);
-    uint64_t p1 = num_umul32((uint32_t)(x.lo >> 32), m) + (p0 >> 32);
-    uint64_t p2 = num_umul32((uint32_t)x.hi, m) + (p1 >> 32);
-    uint32_t p3 = (uint32_t)(x.hi >> 32) * m + (uint32_t)(p2 >> 32);
-    struct rt_s128 r;
-    r.lo = (p1 << 32) | (uint32_t)p0;
-    r.hi = ((uint64_t)p3 << 32) | (uint32_t)p2;
-    return neg ? rt_s128_neg(r) : r;
-}
-
-/* Bit length of |x|. */
-static inline int rt_s128_bits(struct rt_s128 x)
-{
-    if (rt_s128_isneg(x)) x = rt_s128_neg(x);
-    return x.hi ? 64 + rt_bitlen64(x.hi) : rt_bitlen64(x.lo);
-}
-
-/* x / 2^s rounded toward minus infinity, into int64 (the caller keeps
- * |x| / 2^s below 2^62; 0 <= s < 128). */
-static inline int64_t rt_s128_shr(struct rt_s128 x, int s)
-{
-    uint64_t lo;
-    if (s == 0) lo = x.lo;
-    else if (s < 64) lo = (x.lo >> s) | (x.hi << (64 - s));
-    else lo = (uint64_t)((int64_t)x.hi >> (s - 64 > 63 ? 63 : s - 64));
-    return (int64_t)lo;
-}
 #endif
 
 /* A sphere's per-frame part of the row intervals (A, r^2 + T - CO.x^2, R0,
@@ -877,107 +798,16 @@ struct rt_ivsphere {
 #endif
 };
 
-static inline struct rt_ivsphere rt_ivsphere_make(vec3 co, uint64_t r2x, num v)
-{
-    struct rt_ivsphere iv = { 0 };
-#if NUM_MODE == NUM_MODE_FIXED
-    const int32_t lim = (int32_t)1 << 30;
-    if (co.x <= -lim || co.x >= lim || co.y <= -lim || co.y >= lim || co.z <= -lim || co.z >= lim ||
-        v <= 0 || v >= (1 << 20) || r2x >= ((uint64_t)1 << 62))
-        return iv;
-    uint64_t cx2 = (uint64_t)num_smul32(co.x, co.x), cy2 = (uint64_t)num_smul32(co.y, co.y),
-             cz2 = (uint64_t)num_smul32(co.z, co.z);
-    uint64_t rt = r2x + ((cx2 + cy2 + cz2) >> 25) + (r2x >> 60) + 3;   /* r^2 + T < 2^63 */
-    int64_t ayz = (int64_t)rt - (int64_t)(cy2 + cz2);                  /* both < 2^63 */
-    if (ayz >= 0) return iv;   /* not concave in k: no interval */
-    iv.a = rt_s128_mul64((int64_t)num_umul32((uint32_t)v, (uint32_t)v), ayz);
-    iv.rc = (int64_t)rt - (int64_t)cx2;
-    iv.r0 = (r2x >> 30) + ((uint64_t)1 << 34) + 1;
-    iv.vcx = num_smul32(v, co.x);
-    iv.v = v;
-    iv.cy = co.y;
-    iv.cz = co.z;
-    iv.ok = 1;
-#else
-    (void)co; (void)r2x; (void)v;
-#endif
-    return iv;
-}
-
-#if NUM_MODE == NUM_MODE_FIXED
-/* g(k) <= 0 and the condition on its slope (side < 0: A (2k - 1) + 2B >= 0,
- * every k' <= k at or below; side > 0: A (2k + 1) + 2B <= 0, every k' >= k). */
-static inline int rt_iv_proven(const struct rt_ivsphere *iv, struct rt_s128 b2, struct rt_s128 c, int32_t k, int side)
-{
-    struct rt_s128 ak = rt_s128_mul32(iv->a, k);
-    struct rt_s128 slope = rt_s128_add(rt_s128_add(ak, ak), b2);   /* A 2k + 2B */
-    if (side < 0) {
-        slope = rt_s128_add(slope, rt_s128_neg(iv->a));
-        if (rt_s128_isneg(slope)) return 0;
-    } else {
-        slope = rt_s128_add(slope, iv->a);
-        if (!rt_s128_le0(slope)) return 0;
-    }
-    return rt_s128_le0(rt_s128_add(rt_s128_mul32(rt_s128_add(ak, b2), k), c));   /* (A k + 2B) k + C */
-}
-#endif
+/* The sphere's part from CO (camera - centre), r^2 at 2F bits and v = Vh
+ * (rt_intersect.c). */
+struct rt_ivsphere rt_ivsphere_make(vec3 co, uint64_t r2x, num v);
 
 /* The columns k in [kmin, kmax] of the row (Y, Z; yz = Y^2 + Z^2 at 2F
  * bits) whose rays may meet the sphere (c = CO.CO - r^2 as the test takes
  * it): 1 and [*lo, *hi] (lo > hi: none), or 0 when not proven (every column
  * tries it). */
-static inline int rt_iv_row(const struct rt_ivsphere *iv, wnum c, num y, num z, wnum yz, int32_t kmin, int32_t kmax,
-                            int32_t *lo, int32_t *hi)
-{
-#if NUM_MODE == NUM_MODE_FIXED
-    const int32_t lim = (int32_t)1 << 28;
-    int32_t km = kmax > -kmin ? kmax : -kmin;
-    if (!iv->ok || y <= -lim || y >= lim || z <= -lim || z >= lim || km > 1024 || iv->v * km >= lim) return 0;
-    int64_t p = num_smul32(iv->cy, y) + num_smul32(iv->cz, z);      /* |.| < 2^59 */
-    int64_t x0 = num_smul32(iv->cy, z) - num_smul32(iv->cz, y);
-    struct rt_s128 b2 = rt_s128_mul64(iv->vcx, p);
-    b2 = rt_s128_add(b2, b2);
-    struct rt_s128 cc = rt_s128_add(rt_s128_mul64(yz, iv->rc), rt_s128_neg(rt_u128_mul64(rt_mag64(x0), rt_mag64(x0))));
-    cc = rt_s128_add(cc, rt_s128_from64((int64_t)iv->r0));
-    /* approximate roots: A, 2B, C scaled alike to below 2^20, 2^31, 2^40
-     * (|k| <= 2^10) */
-    int m = rt_s128_bits(iv->a) + 20, mb = rt_s128_bits(b2) + 9, mc = rt_s128_bits(cc);
-    if (mb > m) m = mb;
-    if (mc > m) m = mc;
-    int s = m > 40 ? m - 40 : 0;
-    int64_t as = rt_s128_shr(iv->a, s), bs = rt_s128_shr(b2, s), cs = rt_s128_shr(cc, s);
-    if (as >= 0) return 0;
-    /* (2B)^2 / 4 - A C, each below 2^60 */
-    int64_t disc = (bs / 2) * (bs / 2) - as * cs;
-    int64_t kl, kr;
-    if (disc < 0) {
-        kl = kr = (bs / 2) / -as;
-    } else {
-        int64_t h = (int64_t)num_isqrt64((uint64_t)disc, 0);
-        kl = (-(bs / 2) + h) / as - 1;
-        kr = (-(bs / 2) - h) / as + 1;
-    }
-    int32_t l = kmin, r = kmax;
-    if (kl >= kmin) {
-        int32_t k = kl > kmax ? kmax : (int32_t)kl;
-        for (int i = 0; i < 4 && k >= kmin; i++, k--)
-            if (rt_iv_proven(iv, b2, cc, k, -1)) { l = k + 1; break; }
-    }
-    if (kr <= kmax) {
-        int32_t k = kr < kmin ? kmin : (int32_t)kr;
-        for (int i = 0; i < 4 && k <= kmax; i++, k++)
-            if (rt_iv_proven(iv, b2, cc, k, 1)) { r = k - 1; break; }
-    }
-    /* behind: c > 0 and b = -P - v CO.x k <= 0 at both ends (b linear in k) */
-    if (l <= r && c > 0 && -p - iv->vcx * l <= 0 && -p - iv->vcx * r <= 0) r = l - 1;
-    *lo = l;
-    *hi = r;
-    return 1;
-#else
-    (void)iv; (void)c; (void)y; (void)z; (void)yz; (void)kmin; (void)kmax; (void)lo; (void)hi;
-    return 0;
-#endif
-}
+int rt_iv_row(const struct rt_ivsphere *iv, wnum c, num y, num z, wnum yz, int32_t kmin, int32_t kmax,
+              int32_t *lo, int32_t *hi);
 
 /* ---- primary rays along their exact directions ---------------------------
  *

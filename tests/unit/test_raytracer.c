@@ -494,6 +494,61 @@ static void test_tiles_same_image(void)
     free(b);
 }
 
+/* The primary rays' row intervals (rt_iv_row): along a row of exact
+ * directions, every column outside the proven interval is a miss of the
+ * exact test (rt_quad_solve, which also rejects a sphere behind the
+ * camera), for spheres of radii 0.01 .. 5000 in and around the view (some
+ * behind, some holding the camera), viewports and distances d of 0.5 .. 1.5
+ * and 240 or 600 rows; most rows get an interval, and a tight one. */
+#if NUM_MODE == NUM_MODE_FIXED
+static void test_row_intervals(void)
+{
+    uint32_t st = 777;
+    long wrong = 0, proven = 0, rows = 0, loose = 0, inside = 0;
+    for (int k = 0; k < 4000; k++) {
+        int h = k % 3 ? 240 : 600, w = k % 5 ? h : h * 4 / 3;
+        num vh = k % 4 ? NUM_ONE : num_from_double(0.5 + urand(&st)), dd = k % 4 ? NUM_ONE : num_from_double(0.5 + urand(&st));
+        double r = exp(log(0.01) + urand(&st) * (log(5000.0) - log(0.01)));
+        double dist = k % 13 == 0 ? r * urand(&st) : r * (1.0 + exp((urand(&st) - 0.6) * 12)) + 0.01;
+        if (dist > 12000) dist = 12000;
+        double u[3] = { (urand(&st) - 0.5) * 1.6, (urand(&st) - 0.5) * 1.6, k % 7 == 0 ? -1.0 : 1.0 }, len = 0;
+        for (int i = 0; i < 3; i++) len += u[i] * u[i];
+        len = sqrt(len);
+        vec3 co = v3_make(num_from_double(-u[0] / len * dist), num_from_double(-u[1] / len * dist),
+                          num_from_double(-u[2] / len * dist));
+        num rn = num_from_double(r);
+        /* the centre's row, give or take the sphere's own size */
+        double cy = u[1] / u[2] * num_to_double(dd) / num_to_double(vh) * h;
+        double spread = (r / dist * 1.5 + 0.01) * num_to_double(dd) / num_to_double(vh) * h + 3;
+        int row = (int)(h / 2 - 1 - cy + (urand(&st) - 0.5) * 2 * spread);
+        if (row < 0) row = 0;
+        if (row > h - 1) row = h - 1;
+        num y, z;
+        if (!rt_exact_comp(vh, h / 2 - 1 - row, &y) || !rt_exact_comp(dd, h, &z)) continue;
+        wnum yz = rt_exact_sq(y) + rt_exact_sq(z);
+        struct rt_qsphere qs = rt_qsphere_make(rn);
+        wnum c = wnum_sub(v3_dot_wide(co, co), num_mul_wide(rn, rn));
+        struct rt_ivsphere ivs = rt_ivsphere_make(co, qs.r2x, vh);
+        int32_t lo, hi;
+        rows++;
+        if (!rt_iv_row(&ivs, c, y, z, yz, -(w / 2), w - 1 - w / 2, &lo, &hi)) continue;
+        proven++;
+        for (int32_t col = -(w / 2); col <= w - 1 - w / 2; col++) {
+            num x;
+            if (!rt_exact_comp(vh, col, &x)) continue;
+            struct rt_quad q;
+            int hit = rt_quad_solve(co, v3_make(x, y, z), yz + rt_exact_sq(x), c, &qs, &q);
+            if (col < lo || col > hi) wrong += hit;
+            else inside++, loose += !hit;
+        }
+    }
+    printf("# row intervals: %ld of %ld rows proven, %ld of %ld columns inside miss\n", proven, rows, loose, inside);
+    check(wrong == 0 && proven * 10 > rows * 6 && loose * 20 < inside, "row_intervals_only_certain_misses",
+          "%ld hits outside the intervals; %ld of %ld rows proven, %ld of %ld columns inside miss", wrong, proven,
+          rows, loose, inside);
+}
+#endif
+
 /* The coarse sphere rejection (rt_num.h) against the exact robust test on
  * rays aimed just past random spheres of radii 0.01 .. 5000: every claimed
  * miss is a miss of the exact test, and a claimed negative b is one. */
@@ -791,6 +846,9 @@ int main(int argc, char **argv)
     test_shortcuts_same_image();
     test_tiles_same_image();
     test_coarse_rejection();
+#if NUM_MODE == NUM_MODE_FIXED
+    test_row_intervals();
+#endif
     test_ch5_scene();
     test_hit_reach();
     return check_exit();

@@ -581,7 +581,7 @@ struct target {
 static const struct target targets[] = {
     /* 264 KB SRAM: the largest share a two-core board image leaves to its
        two work buffers (docs/firmware.md: 228,896 bytes with
-       RP2040_RAM_TEXT=0, 160,496 with raster, about 59,000 with the whole
+       RP2040_RAM_TEXT=0, 160,496 with raster, about 52,900 with the whole
        core in SRAM; make image checks the image's own figure); 2 MB flash
        less 256 KB for the firmware (175 KB: boot2, vectors, code) */
     { "rp2040", 228896, 2048 * 1024 - 256 * 1024, 1, "RP2040 board image, two cores" },

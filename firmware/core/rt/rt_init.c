@@ -56,6 +56,11 @@ static void carve(const struct scene *s, uint16_t width, uint16_t height, struct
     rt->ntc = (uint16_t)ntc;
     rt->tile_items = work_take(c, sizeof(int16_t) * ntc * nitem1);
     rt->tile_n = work_take(c, sizeof(uint16_t) * ntc);
+    /* one row, or an adaptive block's rows (visited out of order) and one more */
+    size_t ivr = ab ? ab + 2u : 1u;
+    rt->iv_rows = (uint8_t)ivr;
+    rt->iv = work_take(c, sizeof(int16_t) * 2 * ivr * nobj1);
+    rt->iv_tag = work_take(c, sizeof(int32_t) * ivr);
 }
 
 size_t rt_work_size(const struct scene *s, uint16_t width, uint16_t height)
@@ -103,6 +108,7 @@ static void init_options(struct rt_state *rt)
     rt->tiles = rt->shortcuts && !o->bvh;
     rt->tile_row = -1;
     rt->prim_items = NULL;
+    rt->prim_iv = NULL;
 }
 
 /* The render size's viewport: height kept, width follows the render size

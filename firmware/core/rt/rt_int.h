@@ -31,6 +31,7 @@ struct rt_ray {
     int16_t origin;
     uint8_t from_camera;  /* O is the camera: per-frame sphere constants apply */
     uint8_t exact;        /* a, ds, as, tscale computed */
+    uint8_t cd_todo;      /* cd not yet formed (rt_ray_cd) */
 };
 
 /* A near root as the fraction n / d it was rounded from (an exact primary
@@ -89,6 +90,7 @@ struct rt_obj_cache {
     int32_t px_row;
     int64_t px_b, px_x0, px_x2, px_cxd;
     uint8_t near_ok;      /* rt_near_c_ok of c_cam: near roots beyond a limit found before the square root */
+    struct rt_ivsphere ivs;   /* its per-frame part of the row intervals (rt_num.h) */
 };
 
 /* Bounding-sphere hierarchy node: a leaf holds items [first, first+count). */
@@ -177,6 +179,16 @@ struct rt_state {
     int32_t tile_row;            /* tile row the lists hold (-1: none) */
     const int16_t *prim_items;   /* the traced primary ray's list (NULL: every item) */
     uint16_t prim_n;
+    /* primary rays' candidate intervals (rt_iv_row): per slot (a row modulo
+     * iv_rows, its row in iv_tag, -1 none) and object the columns [lo, hi]
+     * whose rays may meet the sphere; RT_IV_TODO: not yet formed,
+     * INT16_MIN: not proven (the coarse test decides) */
+    int16_t *iv;                 /* iv_rows * nobjects * 2 */
+    int32_t *iv_tag;             /* iv_rows */
+    uint8_t iv_rows;             /* 1, or B + 2 with adaptive subsampling */
+    int16_t *dx_iv;              /* row dx_row's (NULL: none) */
+    int16_t *prim_iv;            /* the traced primary ray's row (NULL: none) */
+    int16_t prim_col;            /* ... and its column */
     struct rt_counters n;
 };
 
@@ -185,6 +197,9 @@ struct rt_state {
  * subsampling's blocks reach that far past a tile's edge), and are proven
  * for one row and one column more on every side (sub-pixel samples). */
 #define RT_TILE 16
+
+/* The mark of a candidate interval not yet formed. */
+#define RT_IV_TODO INT16_MAX
 
 /* A CSG item's index into scene.csg (items past the objects are CSGs). */
 #define CSG_ITEM(rt, item) ((item) - (int16_t)(rt)->s->nobjects)
@@ -197,6 +212,14 @@ static inline struct rt_state *rt_state_of(void *work) { return (struct rt_state
 /* rt_intersect.c */
 struct rt_ray rt_make_ray(vec3 o, vec3 d, int16_t origin, uint8_t from_camera);
 void rt_ray_init(struct rt_ray *r, const vec3 *o, const vec3 *d, int16_t origin, uint8_t from_camera);
+/* A primary ray from the camera whose coarse direction is formed on first
+ * use (rt_ray_cd): along its row's candidate intervals few spheres need it. */
+void rt_ray_init_primary(struct rt_ray *r, const vec3 *o, const vec3 *d);
+void rt_ray_cd_now(struct rt_ray *r);
+static inline void rt_ray_cd(struct rt_ray *r)
+{
+    if (r->cd_todo) rt_ray_cd_now(r);
+}
 /* Computes the exact tests' forms of the direction (once per ray). */
 void rt_ray_exact(struct rt_ray *r);
 /* The book's IntersectRaySphere: its two roots (the book's order); 0 for a
@@ -213,6 +236,9 @@ int rt_item_hit(struct rt_state *rt, int16_t item, struct rt_ray *ray, num t_min
                 struct rt_hit *hit);
 vec3 rt_hit_normal(const struct rt_state *rt, const struct rt_hit *hit, const vec3 *p);
 vec3 rt_far_point(const struct rt_ray *ray);
+/* The interval of object obj in the traced primary ray's row (rt->dx_row)
+ * into e[0], e[1] (rt_state.iv). */
+void rt_row_interval(const struct rt_state *rt, int16_t obj, int16_t *e);
 
 /* rt_scene.c: the bounding-sphere hierarchy over rt->items (planes aside,
  * unbounded); the per-frame object constants (after the camera moved). */

@@ -21,20 +21,38 @@
 /* The ray, with a copy of its direction scaled by a power of two for the
  * robust tests: D' = D / 2^k with D'.D' in [0.25, 4), and tscale = 2^-k,
  * which turns a root t' along D' into t along D. */
-void rt_ray_init(struct rt_ray *r, const vec3 *op, const vec3 *dp, int16_t origin, uint8_t from_camera)
+static inline void ray_fill(struct rt_ray *r, const vec3 *op, const vec3 *dp, int16_t origin, uint8_t from_camera)
 {
     /* by components: a struct copy here becomes a memcpy call on ARMv6-M */
-    vec3 o, d;
-    o.x = op->x; o.y = op->y; o.z = op->z;
-    d.x = dp->x; d.y = dp->y; d.z = dp->z;
-    r->o.x = o.x; r->o.y = o.y; r->o.z = o.z;
-    r->d.x = d.x; r->d.y = d.y; r->d.z = d.z;
-    rt_cdir_set(&r->cd, o, d);
+    r->o.x = op->x; r->o.y = op->y; r->o.z = op->z;
+    r->d.x = dp->x; r->d.y = dp->y; r->d.z = dp->z;
     r->origin = origin;
     r->from_camera = from_camera;
     r->exact = 0;   /* a, ds, as, aq and tscale: set by rt_ray_exact before any use */
     r->dxm = 0;
     r->dxrow = -1;
+}
+
+void rt_ray_init(struct rt_ray *r, const vec3 *op, const vec3 *dp, int16_t origin, uint8_t from_camera)
+{
+    vec3 o, d;
+    o.x = op->x; o.y = op->y; o.z = op->z;
+    d.x = dp->x; d.y = dp->y; d.z = dp->z;
+    ray_fill(r, &o, &d, origin, from_camera);
+    rt_cdir_set(&r->cd, o, d);
+    r->cd_todo = 0;
+}
+
+void rt_ray_init_primary(struct rt_ray *r, const vec3 *op, const vec3 *dp)
+{
+    ray_fill(r, op, dp, -1, 1);
+    r->cd_todo = 1;
+}
+
+void rt_ray_cd_now(struct rt_ray *r)
+{
+    r->cd_todo = 0;
+    rt_cdir_set(&r->cd, r->o, r->d);
 }
 
 struct rt_ray rt_make_ray(vec3 o, vec3 d, int16_t origin, uint8_t from_camera)
@@ -129,7 +147,10 @@ static int sphere_quad(const struct rt_state *rt, int16_t obj, struct rt_ray *ra
     int cam = ray->from_camera && rt->cached;
     /* certain misses, decided in 32-bit arithmetic (rt_num.h): the test
      * below would return 0 too (coarse_done: the caller has tried it) */
-    if (rt->shortcuts && !coarse_done && rt_coarse_sphere_miss(&ray->cd, &oc->cs)) return 0;
+    if (rt->shortcuts && !coarse_done) {
+        rt_ray_cd(ray);
+        if (rt_coarse_sphere_miss(&ray->cd, &oc->cs)) return 0;
+    }
     vec3 co;
     if (cam) {   /* by components: a struct copy here becomes a memcpy call on ARMv6-M */
         co.x = oc->co_cam.x;
@@ -262,6 +283,7 @@ static int sphere_first_hit(const struct rt_state *rt, int16_t obj, struct rt_ra
     num t1, t2;
     fr->n = fr->d = 0;
     if (ray->origin == obj) {
+        rt_ray_cd(ray);
         if (rt_coarse_dot_negative(&ray->cd, &rt->oc[obj].cs.c)) return 0;
         wnum b = sphere_self_b(rt, obj, ray);
         if (b <= 0) return 0;
@@ -519,6 +541,38 @@ static int bound_hit(struct rt_state *rt, vec3 c, num r, struct rt_ray *ray)
     return wnum_sub(wnum_mul(b, b), wnum_mul(a, cc)) >= 0;
 }
 
+/* rt_closest_intersection of a primary ray along its row's candidate
+ * intervals (rt->prim_iv): outside its interval a sphere is certainly
+ * missed; inside, the coarse test seldom rejects and is skipped where the
+ * interval is proven. */
+static int closest_prim(struct rt_state *rt, struct rt_ray *ray, num t_min, num limit, struct rt_hit *hit,
+                        const int16_t *items, uint16_t nitems)
+{
+    const struct rt_object *objs = rt->s->objects;
+    int16_t *iv = rt->prim_iv, nobj = (int16_t)rt->s->nobjects, col = rt->prim_col, skip = rt->skip_item;
+    int found = 0;
+    for (uint16_t i = 0; i < nitems; i++) {
+        int16_t item = items[i];
+        if (item == skip) continue;
+        if (item < nobj && objs[item].shape == RT_SPHERE) {
+            rt->n.tests++;
+            int16_t *e = iv + 2 * item;
+            if (e[0] == RT_IV_TODO) rt_row_interval(rt, item, e);
+            if (col < e[0] || col > e[1]) continue;
+            if (e[0] == INT16_MIN) {
+                rt_ray_cd(ray);
+                if (rt_coarse_cam_miss(&ray->cd, &rt->oc[item].ccam)) continue;
+            }
+            if (!sphere_item_hit(rt, item, ray, t_min, limit, hit, 1)) continue;
+        } else if (!rt_item_hit(rt, item, ray, t_min, limit, hit)) {
+            continue;
+        }
+        limit = hit->t;
+        found = 1;
+    }
+    return found;
+}
+
 int rt_closest_intersection(struct rt_state *rt, struct rt_ray *ray, num t_min, num t_max,
                             struct rt_hit *hit, int any_hit)
 {
@@ -531,6 +585,9 @@ int rt_closest_intersection(struct rt_state *rt, struct rt_ray *ray, num t_min, 
         const int16_t *items = rt->items;
         uint16_t nitems = rt->nitems;
         if (ray->from_camera && rt->prim_items) { items = rt->prim_items; nitems = rt->prim_n; }
+        /* a primary ray along its row's exact directions: the candidate intervals */
+        if (ray->from_camera && rt->prim_iv && !any_hit && rt->shortcuts)
+            return closest_prim(rt, ray, t_min, limit, hit, items, nitems);
         int cam = ray->from_camera && rt->cached;   /* the camera's coarse forms (rt_ccam) */
         for (uint16_t i = 0; i < nitems; i++) {
             int16_t item = items[i];
@@ -584,6 +641,202 @@ int rt_closest_intersection(struct rt_state *rt, struct rt_ray *ray, num t_min, 
         }
     }
     return found;
+}
+
+/* ---- primary rays' candidate intervals (rt_num.h, rt_iv_row) ---------- */
+
+#if NUM_MODE == NUM_MODE_FIXED
+static inline struct rt_s128 rt_s128_add(struct rt_s128 a, struct rt_s128 b)
+{
+    struct rt_s128 r;
+    r.lo = a.lo + b.lo;
+    r.hi = a.hi + b.hi + (r.lo < a.lo);
+    return r;
+}
+
+static inline struct rt_s128 rt_s128_neg(struct rt_s128 a)
+{
+    struct rt_s128 r;
+    r.lo = 0u - a.lo;
+    r.hi = 0u - a.hi - (a.lo != 0);
+    return r;
+}
+
+static inline int rt_s128_isneg(struct rt_s128 a) { return (a.hi >> 63) != 0; }
+static inline int rt_s128_le0(struct rt_s128 a) { return rt_s128_isneg(a) || (a.hi == 0 && a.lo == 0); }
+
+static inline struct rt_s128 rt_s128_from64(int64_t v)
+{
+    struct rt_s128 r;
+    r.lo = (uint64_t)v;
+    r.hi = v < 0 ? ~(uint64_t)0 : 0u;
+    return r;
+}
+
+/* a b for unsigned 64-bit a, b (calls: code size; a few a row and sphere). */
+static RT_NOINLINE struct rt_s128 rt_u128_mul64(uint64_t a, uint64_t b)
+{
+    uint32_t a0 = (uint32_t)a, a1 = (uint32_t)(a >> 32), b0 = (uint32_t)b, b1 = (uint32_t)(b >> 32);
+    uint64_t p00 = num_umul32(a0, b0), p01 = num_umul32(a0, b1), p10 = num_umul32(a1, b0);
+    uint64_t mid = (p00 >> 32) + (uint32_t)p01 + (uint32_t)p10;   /* < 3 2^32 */
+    struct rt_s128 r;
+    r.lo = (mid << 32) | (uint32_t)p00;
+    r.hi = num_umul32(a1, b1) + (p01 >> 32) + (p10 >> 32) + (mid >> 32);
+    return r;
+}
+
+/* a b for signed 64-bit a, b. */
+static inline struct rt_s128 rt_s128_mul64(int64_t a, int64_t b)
+{
+    struct rt_s128 r = rt_u128_mul64(rt_mag64(a), rt_mag64(b));
+    return (a < 0) != (b < 0) ? rt_s128_neg(r) : r;
+}
+
+/* x k, |x k| < 2^127, |k| < 2^31. */
+static RT_NOINLINE struct rt_s128 rt_s128_mul32(struct rt_s128 x, int32_t k)
+{
+    int neg = rt_s128_isneg(x) != (k < 0);
+    if (rt_s128_isneg(x)) x = rt_s128_neg(x);
+    uint32_t m = k < 0 ? 0u - (uint32_t)k : (uint32_t)k;
+    uint64_t p0 = num_umul32((uint32_t)x.lo, m);
+    uint64_t p1 = num_umul32((uint32_t)(x.lo >> 32), m) + (p0 >> 32);
+    uint64_t p2 = num_umul32((uint32_t)x.hi, m) + (p1 >> 32);
+    uint32_t p3 = (uint32_t)(x.hi >> 32) * m + (uint32_t)(p2 >> 32);
+    struct rt_s128 r;
+    r.lo = (p1 << 32) | (uint32_t)p0;
+    r.hi = ((uint64_t)p3 << 32) | (uint32_t)p2;
+    return neg ? rt_s128_neg(r) : r;
+}
+
+/* Bit length of |x|. */
+static inline int rt_s128_bits(struct rt_s128 x)
+{
+    if (rt_s128_isneg(x)) x = rt_s128_neg(x);
+    return x.hi ? 64 + rt_bitlen64(x.hi) : rt_bitlen64(x.lo);
+}
+
+/* x / 2^s rounded toward minus infinity, into int64 (the caller keeps
+ * |x| / 2^s below 2^62; 0 <= s < 128). */
+static inline int64_t rt_s128_shr(struct rt_s128 x, int s)
+{
+    uint64_t lo;
+    if (s == 0) lo = x.lo;
+    else if (s < 64) lo = (x.lo >> s) | (x.hi << (64 - s));
+    else lo = (uint64_t)((int64_t)x.hi >> (s - 64 > 63 ? 63 : s - 64));
+    return (int64_t)lo;
+}
+
+/* g(k) <= 0 and the condition on its slope (side < 0: A (2k - 1) + 2B >= 0,
+ * every k' <= k at or below; side > 0: A (2k + 1) + 2B <= 0, every k' >= k). */
+static RT_NOINLINE int rt_iv_proven(const struct rt_ivsphere *iv, struct rt_s128 b2, struct rt_s128 c, int32_t k, int side)
+{
+    struct rt_s128 ak = rt_s128_mul32(iv->a, k);
+    struct rt_s128 slope = rt_s128_add(rt_s128_add(ak, ak), b2);   /* A 2k + 2B */
+    if (side < 0) {
+        slope = rt_s128_add(slope, rt_s128_neg(iv->a));
+        if (rt_s128_isneg(slope)) return 0;
+    } else {
+        slope = rt_s128_add(slope, iv->a);
+        if (!rt_s128_le0(slope)) return 0;
+    }
+    return rt_s128_le0(rt_s128_add(rt_s128_mul32(rt_s128_add(ak, b2), k), c));   /* (A k + 2B) k + C */
+}
+#endif
+
+struct rt_ivsphere rt_ivsphere_make(vec3 co, uint64_t r2x, num v)
+{
+    struct rt_ivsphere iv = { 0 };
+#if NUM_MODE == NUM_MODE_FIXED
+    const int32_t lim = (int32_t)1 << 30;
+    if (co.x <= -lim || co.x >= lim || co.y <= -lim || co.y >= lim || co.z <= -lim || co.z >= lim ||
+        v <= 0 || v >= (1 << 20) || r2x >= ((uint64_t)1 << 62))
+        return iv;
+    uint64_t cx2 = (uint64_t)num_smul32(co.x, co.x), cy2 = (uint64_t)num_smul32(co.y, co.y),
+             cz2 = (uint64_t)num_smul32(co.z, co.z);
+    uint64_t rt = r2x + ((cx2 + cy2 + cz2) >> 25) + (r2x >> 60) + 3;   /* r^2 + T < 2^63 */
+    int64_t ayz = (int64_t)rt - (int64_t)(cy2 + cz2);                  /* both < 2^63 */
+    if (ayz >= 0) return iv;   /* not concave in k: no interval */
+    iv.a = rt_s128_mul64((int64_t)num_umul32((uint32_t)v, (uint32_t)v), ayz);
+    iv.rc = (int64_t)rt - (int64_t)cx2;
+    iv.r0 = (r2x >> 30) + ((uint64_t)1 << 34) + 1;
+    iv.vcx = num_smul32(v, co.x);
+    iv.v = v;
+    iv.cy = co.y;
+    iv.cz = co.z;
+    iv.ok = 1;
+#else
+    (void)co; (void)r2x; (void)v;
+#endif
+    return iv;
+}
+
+int rt_iv_row(const struct rt_ivsphere *iv, wnum c, num y, num z, wnum yz, int32_t kmin, int32_t kmax, int32_t *lo,
+              int32_t *hi)
+{
+#if NUM_MODE == NUM_MODE_FIXED
+    const int32_t lim = (int32_t)1 << 28;
+    int32_t km = kmax > -kmin ? kmax : -kmin;
+    if (!iv->ok || y <= -lim || y >= lim || z <= -lim || z >= lim || km > 1024 || iv->v * km >= lim) return 0;
+    int64_t p = num_smul32(iv->cy, y) + num_smul32(iv->cz, z);      /* |.| < 2^59 */
+    int64_t x0 = num_smul32(iv->cy, z) - num_smul32(iv->cz, y);
+    struct rt_s128 b2 = rt_s128_mul64(iv->vcx, p);
+    b2 = rt_s128_add(b2, b2);
+    struct rt_s128 cc = rt_s128_add(rt_s128_mul64(yz, iv->rc), rt_s128_neg(rt_u128_mul64(rt_mag64(x0), rt_mag64(x0))));
+    cc = rt_s128_add(cc, rt_s128_from64((int64_t)iv->r0));
+    /* approximate roots: A, 2B, C scaled alike to below 2^20, 2^31, 2^40
+     * (|k| <= 2^10) */
+    int m = rt_s128_bits(iv->a) + 20, mb = rt_s128_bits(b2) + 9, mc = rt_s128_bits(cc);
+    if (mb > m) m = mb;
+    if (mc > m) m = mc;
+    int s = m > 40 ? m - 40 : 0;
+    int64_t as = rt_s128_shr(iv->a, s), bs = rt_s128_shr(b2, s), cs = rt_s128_shr(cc, s);
+    if (as >= 0) return 0;
+    /* (2B)^2 / 4 - A C, each below 2^60 */
+    int64_t disc = (bs / 2) * (bs / 2) - as * cs;
+    int64_t kl, kr;
+    if (disc < 0) {
+        kl = kr = (bs / 2) / -as;
+    } else {
+        int64_t h = (int64_t)num_isqrt64((uint64_t)disc, 0);
+        kl = (-(bs / 2) + h) / as - 1;
+        kr = (-(bs / 2) - h) / as + 1;
+    }
+    int32_t l = kmin, r = kmax;
+    if (kl >= kmin) {
+        int32_t k = kl > kmax ? kmax : (int32_t)kl;
+        for (int i = 0; i < 4 && k >= kmin; i++, k--)
+            if (rt_iv_proven(iv, b2, cc, k, -1)) { l = k + 1; break; }
+    }
+    if (kr <= kmax) {
+        int32_t k = kr < kmin ? kmin : (int32_t)kr;
+        for (int i = 0; i < 4 && k <= kmax; i++, k++)
+            if (rt_iv_proven(iv, b2, cc, k, 1)) { r = k - 1; break; }
+    }
+    /* behind: c > 0 and b = -P - v CO.x k <= 0 at both ends (b linear in k) */
+    if (l <= r && c > 0 && -p - iv->vcx * l <= 0 && -p - iv->vcx * r <= 0) r = l - 1;
+    *lo = l;
+    *hi = r;
+    return 1;
+#else
+    (void)iv; (void)c; (void)y; (void)z; (void)yz; (void)kmin; (void)kmax; (void)lo; (void)hi;
+    return 0;
+#endif
+}
+
+void rt_row_interval(const struct rt_state *rt, int16_t obj, int16_t *e)
+{
+    const struct rt_obj_cache *oc = &rt->oc[obj];
+    int32_t half = rt->w / 2, lo, hi;
+    if (!rt_iv_row(&oc->ivs, oc->c_cam, rt->dx_y, rt->dx_z, rt->dx_yz, -half, rt->w - 1 - half, &lo, &hi)) {
+        e[0] = INT16_MIN;
+        e[1] = INT16_MAX;
+    } else if (lo > hi) {
+        e[0] = 1;   /* no column */
+        e[1] = 0;
+    } else {
+        e[0] = (int16_t)(lo + half);
+        e[1] = (int16_t)(hi + half);
+    }
 }
 
 vec3 rt_hit_normal(const struct rt_state *rt, const struct rt_hit *hit, const vec3 *p)

@@ -84,6 +84,7 @@ num rt_compute_lighting(struct rt_state *rt, vec3 p, vec3 n, int unit_normal, ve
                 sr.origin = origin;
                 sr.from_camera = 0;
                 sr.exact = 1;
+                sr.cd_todo = 0;
                 sr.dxm = 0;
             } else {
                 rt_ray_init(&sr, &p, &l, origin, 0);

@@ -750,6 +750,65 @@ static inline int rt_div_near_unit(num x, int32_t e, num *out)
 #endif
 }
 
+/* ---- primary rays' exact candidate intervals, per row and sphere ---------
+ *
+ * Along a row of exact primary directions D = (v k, Y, Z) (v = Vh raw, k the
+ * canvas column, rt_exact_comp) the sphere test of rt_quad_solve_x reports
+ * a miss when a r^2 < |CO x D|^2 after its truncations: s_i = |x_i| >> kx
+ * loses less than 2^(kx+1) sum |x_i| of |CO x D|^2 (at 2^-2kx), a and r^2
+ * only lose, and the final shifts one unit of 2^e, e = max(2 kx, ka + kr).
+ * With 2^kx <= max |x_i| 2^-29 (kx > 0), 2^ka <= max(1, a 2^-30), 2^kr <=
+ * max(1, r^2 2^-30) and |CO x D|^2 <= |CO|^2 a, that is at most
+ *   E = a (|CO|^2 2^-25 + r^2 2^-60 + 2^-30) + r^2 2^-30 + 2^34,
+ * so the test misses wherever
+ *   g(k) = a (r^2 + T) + R0 - |CO x D|^2 <= 0
+ * (T = floor(|CO|^2 2^-25) + floor(r^2 2^-60) + 3, R0 = floor(r^2 2^-30) +
+ * 2^34 + 1; every quantity an exact integer at 2F or 4F fraction bits). g is
+ * a quadratic in k: g = A k^2 + 2 B k + C with
+ *   A = v^2 (r^2 + T - CO.y^2 - CO.z^2)            (per frame)
+ *   B = v CO.x P, P = CO.y Y + CO.z Z              (per row)
+ *   C = (Y^2 + Z^2)(r^2 + T - CO.x^2) - (CO.y Z - CO.z Y)^2 + R0,
+ * and for A < 0 concave: g(p) <= 0 with g(p) >= g(p - 1) (A (2p - 1) + 2B
+ * >= 0) puts every k <= p at or below g(p), and g(p) <= 0 with g(p + 1) <=
+ * g(p) every k >= p. The roots are found approximately (64-bit, the three
+ * coefficients scaled alike), then proven by those two conditions in exact
+ * 128-bit arithmetic; the columns outside [lo, hi] skip the sphere. So do
+ * all when c > 0 and b <= 0 at both ends (b is linear in k: behind the
+ * camera). Range: |CO_i| < 2^30, |Y|, |Z|, |v k| < 2^28, v < 2^20 and |k| <=
+ * 2^10 keep every sum and product below 2^126. Fixed point only; the
+ * functions are in rt_intersect.c. */
+#if NUM_MODE == NUM_MODE_FIXED
+struct rt_s128 {
+    uint64_t lo, hi;      /* two's complement */
+};
+#endif
+
+/* A sphere's per-frame part of the row intervals (A, r^2 + T - CO.x^2, R0,
+ * v CO.x); ok 0: none (every column tries the sphere). */
+struct rt_ivsphere {
+#if NUM_MODE == NUM_MODE_FIXED
+    struct rt_s128 a;
+    int64_t rc;
+    uint64_t r0;
+    int64_t vcx;
+    int32_t v, cy, cz;
+    uint8_t ok;
+#else
+    uint8_t ok;
+#endif
+};
+
+/* The sphere's part from CO (camera - centre), r^2 at 2F bits and v = Vh
+ * (rt_intersect.c). */
+struct rt_ivsphere rt_ivsphere_make(vec3 co, uint64_t r2x, num v);
+
+/* The columns k in [kmin, kmax] of the row (Y, Z; yz = Y^2 + Z^2 at 2F
+ * bits) whose rays may meet the sphere (c = CO.CO - r^2 as the test takes
+ * it): 1 and [*lo, *hi] (lo > hi: none), or 0 when not proven (every column
+ * tries it). */
+int rt_iv_row(const struct rt_ivsphere *iv, wnum c, num y, num z, wnum yz, int32_t kmin, int32_t kmax,
+              int32_t *lo, int32_t *hi);
+
 /* ---- primary rays along their exact directions ---------------------------
  *
  * A pixel's primary direction is D = (x Vw / W, y Vh / H, d) with

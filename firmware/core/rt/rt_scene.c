@@ -43,9 +43,11 @@ void rt_light_constants(struct rt_state *rt)
 void rt_frame_constants(struct rt_state *rt)
 {
     const struct scene *s = rt->s;
+    for (int k = 0; k < rt->iv_rows; k++) rt->iv_tag[k] = -1;   /* the camera may have moved */
     for (uint16_t i = 0; i < s->nobjects; i++) {
         const struct rt_object *o = &s->objects[i];
         struct rt_obj_cache *oc = &rt->oc[i];
+        oc->ivs.ok = 0;
         oc->r2 = num_mul_wide(o->radius, o->radius);
         oc->cs = rt_csphere_make(o->center, o->radius);
         struct rt_cpt cam = rt_cpt_make(rt->cam_pos);
@@ -62,6 +64,9 @@ void rt_frame_constants(struct rt_state *rt)
             oc->cm_cam = rt->book ? 0 : rt_quad_near_num(oc->c_cam, rt->h);
             oc->px_row = -1;   /* the camera may have moved: no row parts */
             oc->near_ok = (uint8_t)(!rt->book && rt_near_c_ok(oc->c_cam, v3_dot_wide(oc->co_cam, oc->co_cam)));
+#if NUM_MODE == NUM_MODE_FIXED
+            oc->ivs = rt_ivsphere_make(oc->co_cam, oc->qs.r2x, rt->vh);
+#endif
         } else if (o->shape == RT_TRIANGLE) {
             oc->e1 = v3_sub(o->p[1], o->p[0]);
             oc->e2 = v3_sub(o->p[2], o->p[0]);

@@ -275,6 +275,23 @@ static void prim_list(struct rt_state *rt, int col, int row)
     rt->prim_n = rt->tile_n[tc];
 }
 
+/* Row row's candidate intervals (rt_state.iv): its slot, claimed with
+ * every interval still to form when it holds another row (they are formed
+ * on first use, rt_row_interval); NULL without the tile lists or the
+ * per-frame constants. */
+static int16_t *row_iv(struct rt_state *rt, int row)
+{
+    if (!rt->tiles || !rt->cached) return NULL;
+    unsigned slot = (unsigned)row % rt->iv_rows;
+    uint16_t n = rt->s->nobjects;
+    int16_t *iv = rt->iv + (size_t)slot * 2 * n;
+    if (rt->iv_tag[slot] != row) {
+        rt->iv_tag[slot] = row;
+        for (uint16_t i = 0; i < n; i++) iv[2 * i] = RT_IV_TODO;
+    }
+    return iv;
+}
+
 /* A primary ray through pixel (col, row) with the camera not turned, or
  * turned by the scene's own rotation: its exact direction (x vh, y vh, d h)
  * (rt_exact_comp in rt_num.h), the row's part once a row; turned by the
@@ -287,6 +304,7 @@ static void exact_dir(struct rt_state *rt, struct rt_ray *ray, int col, int row)
                               rt_exact_comp(rt->d, rt->h, &rt->dx_z));
         if (rt->dx_ok && rt->cam_rotated) rt_exact_turn_row(rt->cam_q29, rt->dx_y, rt->dx_z, rt->dx_turn);
         else if (rt->dx_ok) rt->dx_yz = rt_exact_sq(rt->dx_y) + rt_exact_sq(rt->dx_z);
+        rt->dx_iv = rt->dx_ok && !rt->cam_rotated ? row_iv(rt, row) : NULL;
     }
     num vx;
     if (!rt->dx_ok || !rt_exact_comp(rt->vh, col - rt->w / 2, &vx)) return;
@@ -296,6 +314,8 @@ static void exact_dir(struct rt_state *rt, struct rt_ray *ray, int col, int row)
         ray->dx.z = rt->dx_z;
         ray->dxa = rt->dx_yz + rt_exact_sq(vx);
         ray->dxrow = row;
+        rt->prim_iv = rt->dx_iv;
+        rt->prim_col = (int16_t)col;
     } else if (rt_exact_turn(rt->cam_q29, rt->dx_turn, vx, &ray->dx)) {
         ray->dxa = rt_exact_sq(ray->dx.x) + rt_exact_sq(ray->dx.y) + rt_exact_sq(ray->dx.z);
     } else {
@@ -312,11 +332,13 @@ static rgb trace_primary(struct rt_state *rt, vec3 d, int col, int row, struct r
     struct rt_ray ray;
     prim->item = -1;
     prim->shadow = 0;
-    rt_ray_init(&ray, &rt->cam_pos, &d, -1, 1);
+    rt_ray_init_primary(&ray, &rt->cam_pos, &d);
     if (col >= 0 && !rt->book && (!rt->cam_rotated || rt->cam_q29)) exact_dir(rt, &ray, col, row);
+    if (!rt->prim_iv) rt_ray_cd_now(&ray);   /* no intervals: the coarse tests decide */
     rt->n.primary_rays++;
     rgb c = trace_ray(rt, &ray, rt->s->rt.t_min_primary, NUM_MAX, rt->depth, prim);
     rt->prim_items = NULL;
+    rt->prim_iv = NULL;
     return c;
 }
 

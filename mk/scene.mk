@@ -89,6 +89,10 @@ scenes: $(SCENE_CSRCS)
 scenes-report: $(SCENE_CSRCS) $(SCENE_PROBE)
 	$(Q)tests/system/test_scenec.sh $(SCENEC) $(BUILD) --report
 
+# A core without some renderer features refuses the scenes that need them
+# (firmware/core/scene_features.def; the test compiles its own core).
+TESTS += tests/system/test_features.sh
+
 TEST_NEEDS_test_scenec := $(SCENEC) $(SCENE_PROBE) $(BUILD)/asan/tests/test_scene_fracs
 TEST_DEPS += $(TEST_NEEDS_test_scenec)
 TESTS += tests/system/test_scenec.sh:$(SCENEC):$(BUILD)

@@ -371,7 +371,7 @@ firmware-stm32f411: deps-firmware
 
 firmware: firmware-pico firmware-stm32f411
 	$(Q)$(ARM_SIZE) $(FW_RP_IMAGES:.uf2=.elf) $(FW_ST_IMAGES:.bin=.elf) $(FW_EXTRA_ELFS)
-	@echo "RAM and flash each compiled scene needs (240x240, 16-row strips; tools/scenec):"
+	@echo "RAM, flash and renderer code each compiled scene needs (240x240, 16-row strips; tools/scenec):"
 	$(Q)$(MAKE) --no-print-directory scenes-report
 
 # ---- the renderer core alone on the qemu benchmark boards (mk/bench.mk) ----------

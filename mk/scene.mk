@@ -85,7 +85,9 @@ $(SCENE_PROBE): $(SCENE_PROBE_OBJS) tools/bench/mps2.ld
 -include $(SCENE_PROBE_OBJS:.o=.d)
 .PHONY: scenes scenes-report
 scenes: $(SCENE_CSRCS)
-# RAM and flash per compiled scene, as the ARM compiler lays them out.
+# RAM and flash per compiled scene, as the ARM compiler lays them out, and
+# the renderer code an image of it alone carries with its features
+# (tools/scenec/scene_code.sh; its objects kept in $(BUILD)/scenes/code).
 scenes-report: $(SCENE_CSRCS) $(SCENE_PROBE)
 	$(Q)tests/system/test_scenec.sh $(SCENEC) $(BUILD) --report
 

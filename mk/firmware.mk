@@ -25,7 +25,9 @@
 # RP2040_RAM_TEXT (1, the
 # default: the renderer core, with the rasterizer's span loops (RAS_HOT in
 # firmware/core/raster/raster_int.h), is copied to SRAM and runs from there
-# instead of through the 16 KB XIP cache, about 156 KB; raster: only the
+# instead of through the 16 KB XIP cache: about 168 KB for the whole core,
+# 64 KB for the cube scenes' features (an image of a scene set carries only
+# what its scenes need, below); raster: only the
 # rasterizer's default path and the numeric layer, about 64 KB, which leaves
 # a mesh room for its work memory; 0: everything from flash), FW_SCENE_SRCS
 # (the scene table; default the built-in placeholder), FW_EXTRA (more -D flags).
@@ -77,9 +79,14 @@ FW_INC       := -I. -Ifirmware/core -Ifirmware/app -Ihal -I$(FW_OUT)/scenes
 #   cube  FW_CUBE_SCENES: small3dlib's cube workload (firmware/scenes/bench)
 #   rt    FW_RT_SCENES: the ray tracer's benchmark (raytracer-05, exact and with
 #         its real-time option)
+# Each image of a set is compiled with the renderer features its scenes
+# need and no others (fw_<set>_features.h, tools/scenec/features.sh, from
+# the scenes' headers: firmware/core/scene_features.def), so that the code no
+# scene of the set reaches is left out of flash and SRAM.
 # $(call fw_scene_set,SET,set) with FW_<SET>_SCENES set defines FW_<SET>_SRCS
 # (the scenes' sources and their table fw_scenes_<set>.c), FW_<SET>_FRAC_H
-# and FW_<SET>_FRAC_FLAGS (the -include of it).
+# and FW_<SET>_FRAC_FLAGS (the -include of it and of FW_<SET>_FEAT_H, the
+# features).
 FW_BOOK_SCENES ?= book/raytracer-02 book/raster-11
 FW_CUBE_SCENES ?= bench/cube-textured bench/cube-gouraud bench/cube-flat
 FW_RT_SCENES   ?= book/raytracer-05 bench/raytracer-05-adaptive
@@ -123,7 +130,12 @@ FW_$(1)_LIST   := $(FW_OUT)/scenes/fw_$(2)_scenes.list
 FW_$(1)_FRAC_H := $(FW_OUT)/scenes/fw_$(2)_num_frac.h
 FW_$(1)_SRCS   := $(foreach n,$(FW_$(1)_SCENES),$(FW_OUT)/scenes/$(call fw_scene_id,$(n))$(3).c) \
                   $(FW_OUT)/scenes/fw_scenes_$(2).c
+FW_$(1)_FEAT_H := $(FW_OUT)/scenes/fw_$(2)_features.h
 FW_$(1)_FRAC_FLAGS := -include $(FW_OUT)/scenes/fw_$(2)_num_frac.h
+FW_$(1)_FEAT_FLAGS := -include $(FW_OUT)/scenes/fw_$(2)_features.h
+$(FW_OUT)/scenes/fw_$(2)_features.h: $(call fw_scene_h,$(FW_$(1)_SCENES),$(3)) tools/scenec/features.sh \
+                                     $(FW_OUT)/scenes/fw_$(2)_scenes.list
+	$(Q)tools/scenec/features.sh $$@ $(call fw_scene_h,$(FW_$(1)_SCENES),$(3))
 $$(shell mkdir -p $(FW_OUT)/scenes && { echo '$(FW_$(1)_SCENES)' | cmp -s - $(FW_OUT)/scenes/fw_$(2)_scenes.list || \
           echo '$(FW_$(1)_SCENES)' >$(FW_OUT)/scenes/fw_$(2)_scenes.list; })
 $(FW_OUT)/scenes/fw_scenes_$(2).c: $(call fw_scene_h,$(FW_$(1)_SCENES),$(3)) firmware/app/scene_table.sh \
@@ -218,9 +230,9 @@ $(eval $(call RP_IMAGE,cgfs-ili9341,-DFW_PANEL=panel_ili9341_320x240 -DFW_WIDTH=
 # The ST7789 upside down (FW_ROTATION=2: the module mounted the other way).
 $(eval $(call RP_IMAGE,cgfs-rot2,-DFW_ROTATION=2,$(FW_SCENE_SRCS)))
 # fw_scene_image(IMAGE,SET,FLAGS[,RAM_TEXT_DIR]): an image of the scene set
-# SET (its table, its format), built with FLAGS.
-fw_scene_image = $(eval $(call RP_IMAGE,$(1),$(3) $(FW_$(2)_FRAC_FLAGS),$(FW_$(2)_SRCS),$(4)))\
-    $(eval $(call fw_frac_objs,$(FW_OUT)/pico/obj-$(1),$(RP_SRCS) $(FW_$(2)_SRCS)): $(FW_$(2)_FRAC_H))
+# SET (its table, its format, its features), built with FLAGS.
+fw_scene_image = $(eval $(call RP_IMAGE,$(1),$(3) $(FW_$(2)_FRAC_FLAGS) $(FW_$(2)_FEAT_FLAGS),$(FW_$(2)_SRCS),$(4)))\
+    $(eval $(call fw_frac_objs,$(FW_OUT)/pico/obj-$(1),$(RP_SRCS) $(FW_$(2)_SRCS)): $(FW_$(2)_FRAC_H) $(FW_$(2)_FEAT_H))
 FW_1CORE_FLAGS := -DRP2040_SINGLE_CORE=1 -DFW_WORK_CORES=1
 # The book scenes: for the board, and for the emulator (one core, one frame
 # per scene so that a run reaches every scene quickly).
@@ -333,7 +345,8 @@ ST_LDFLAGS := $(ST_CPU) --specs=nano.specs -nostartfiles -T $(ST_DIR)/stm32f411.
 define ST_IMAGE
 $(FW_OUT)/stm32f411/obj-$(1)/%.o: %.c
 	@mkdir -p $$(@D)
-	$$(Q)$$(ARM_CC) $$(ST_CFLAGS) -DNUM_MODE=$$(NUM_MODE_$(2)) $(if $(filter fixed,$(2)),$(FW_BOOK_FRAC_FLAGS)) $(3) -MMD -MP -c $$< -o $$@
+	$$(Q)$$(ARM_CC) $$(ST_CFLAGS) -DNUM_MODE=$$(NUM_MODE_$(2)) $(if $(filter fixed,$(2)),$(FW_BOOK_FRAC_FLAGS)) \
+		$(FW_BOOK_FEAT_FLAGS) $(3) -MMD -MP -c $$< -o $$@
 $(FW_OUT)/stm32f411/$(1).elf: $(patsubst %.c,$(FW_OUT)/stm32f411/obj-$(1)/%.o,$(ST_SRCS)) $(ST_DIR)/stm32f411.ld
 	$$(Q)$$(ARM_CC) $$(ST_LDFLAGS) -Wl,-Map=$(FW_OUT)/stm32f411/$(1).map \
 		$$(filter %.o,$$^) -lm -lc -lgcc -o $$@
@@ -344,7 +357,8 @@ $(eval $(call ST_IMAGE,cgfs,$(STM32_NUM_MODE)))
 $(eval $(call ST_IMAGE,cgfs-fixed,fixed))
 # tests only (tests/system/test_stm32_qemu.sh): faults right after board_init
 $(eval $(call ST_IMAGE,cgfs-fault-test,$(STM32_NUM_MODE),-DSTM32_TEST_FAULT=1))
-$(call fw_frac_objs,$(FW_OUT)/stm32f411/obj-cgfs-fixed,$(ST_SRCS)): $(FW_BOOK_FRAC_H)
+$(call fw_frac_objs,$(FW_OUT)/stm32f411/obj-cgfs-fixed,$(ST_SRCS)): $(FW_BOOK_FRAC_H) $(FW_BOOK_FEAT_H)
+$(foreach i,cgfs cgfs-fault-test,$(call fw_frac_objs,$(FW_OUT)/stm32f411/obj-$(i),$(ST_SRCS))): $(FW_BOOK_FEAT_H)
 ifeq ($(STM32_NUM_MODE),fixed)
 $(call fw_frac_objs,$(FW_OUT)/stm32f411/obj-cgfs,$(ST_SRCS)): $(FW_BOOK_FRAC_H)
 endif
@@ -357,7 +371,7 @@ firmware-stm32f411: deps-firmware
 
 firmware: firmware-pico firmware-stm32f411
 	$(Q)$(ARM_SIZE) $(FW_RP_IMAGES:.uf2=.elf) $(FW_ST_IMAGES:.bin=.elf) $(FW_EXTRA_ELFS)
-	@echo "RAM and flash each compiled scene needs (240x240, 16-row strips; tools/scenec):"
+	@echo "RAM, flash and renderer code each compiled scene needs (240x240, 16-row strips; tools/scenec):"
 	$(Q)$(MAKE) --no-print-directory scenes-report
 
 # ---- the renderer core alone on the qemu benchmark boards (mk/bench.mk) ----------
@@ -382,6 +396,6 @@ TEST_DEPS += $(TEST_NEEDS_test_stm32_qemu)
 # docs/firmware.md against the build: its memory figures (tools/fw_sizes.py),
 # the image `make flash` writes.
 TEST_NEEDS_test_fw_docs := $(foreach i,cgfs-book cgfs-book-1core cgfs-cube cgfs-cube-1core cgfs-cube-ili9341 cgfs-rt \
-                              cgfs cgfs-check,$(FW_OUT)/pico/$(i).elf) $(FW_OUT)/stm32f411/cgfs.elf $(FW_OUT)/stm32f411/cgfs-fixed.elf
+                              cgfs-mesh cgfs cgfs-check,$(FW_OUT)/pico/$(i).elf) $(FW_OUT)/stm32f411/cgfs.elf $(FW_OUT)/stm32f411/cgfs-fixed.elf
 TEST_DEPS += $(TEST_NEEDS_test_fw_docs)
 TESTS     += tests/system/test_fw_docs.sh:$(BUILD)

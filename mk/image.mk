@@ -19,7 +19,9 @@
 #      the scene made scenec read (textures, models), so that a change to any
 #      of them compiles the scene again;
 #   2. num_frac.h (the coarsest format among the scenes, as the scene sets'
-#      fw_<set>_num_frac.h) and the table fw_scenes.c (firmware/app/scene_table.sh);
+#      fw_<set>_num_frac.h), fw_features.h (the renderer features the scenes
+#      need, tools/scenec/features.sh: the rest of the core is left out) and
+#      the table fw_scenes.c (firmware/app/scene_table.sh);
 #   3. the check, before the scenes are compiled for the board and before the
 #      image is linked: budget.elf is the image with the built-in
 #      placeholder table instead of the scenes (the same objects otherwise),
@@ -130,13 +132,17 @@ $(IMG)/fw_scenes.c: $(IMG_C:.c=.h) firmware/app/scene_table.sh $(IMG)/scenes.lis
 FW_IMG_SRCS       := $(IMG_C) $(IMG)/fw_scenes.c
 FW_IMG_FRAC_H     := $(IMG)/num_frac.h
 FW_IMG_FRAC_FLAGS := -include $(FW_IMG_FRAC_H)
+FW_IMG_FEAT_H     := $(IMG)/fw_features.h
+FW_IMG_FEAT_FLAGS := -include $(FW_IMG_FEAT_H)
+$(FW_IMG_FEAT_H): $(IMG_C:.c=.h) tools/scenec/features.sh
+	$(Q)tools/scenec/features.sh $@ $(IMG_C:.c=.h) || { rm -f $(IMG_OUTS); exit 2; }
 $(call fw_scene_image,$(NAME),IMG,$(IMG_FLAGS))
 
 # 3. the check: the image with the placeholder table (firmware/app/scenes_builtin.c)
 ARM_NM ?= arm-none-eabi-nm
 IMG_BUDGET_OBJS := $(patsubst %.c,$(IMG_OBJ)/%.o,$(RP_SRCS) firmware/app/scenes_builtin.c) \
                    $(patsubst %.S,$(IMG_OBJ)/%.o,$(RP_ASM)) $(IMG_OBJ)/boot2_crc.o
-$(IMG_OBJ)/firmware/app/scenes_builtin.o: $(FW_IMG_FRAC_H)
+$(IMG_OBJ)/firmware/app/scenes_builtin.o: $(FW_IMG_FRAC_H) $(FW_IMG_FEAT_H)
 $(IMG)/budget.elf: $(IMG_BUDGET_OBJS) $(RP_DIR)/rp2040.ld \
                    $(RP_DIR)/ram_text/$(RP_RAM_TEXT_DIR)/ram_text.ld
 	$(Q)$(ARM_CC) $(RP_LDFLAGS) $(filter %.o,$^) -lc -lgcc -o $@

@@ -85,9 +85,15 @@ $(SCENE_PROBE): $(SCENE_PROBE_OBJS) tools/bench/mps2.ld
 -include $(SCENE_PROBE_OBJS:.o=.d)
 .PHONY: scenes scenes-report
 scenes: $(SCENE_CSRCS)
-# RAM and flash per compiled scene, as the ARM compiler lays them out.
+# RAM and flash per compiled scene, as the ARM compiler lays them out, and
+# the renderer code an image of it alone carries with its features
+# (tools/scenec/scene_code.sh; its objects kept in $(BUILD)/scenes/code).
 scenes-report: $(SCENE_CSRCS) $(SCENE_PROBE)
 	$(Q)tests/system/test_scenec.sh $(SCENEC) $(BUILD) --report
+
+# A core without some renderer features refuses the scenes that need them
+# (firmware/core/scene_features.def; the test compiles its own core).
+TESTS += tests/system/test_features.sh
 
 TEST_NEEDS_test_scenec := $(SCENEC) $(SCENE_PROBE) $(BUILD)/asan/tests/test_scene_fracs
 TEST_DEPS += $(TEST_NEEDS_test_scenec)

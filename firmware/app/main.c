@@ -615,7 +615,12 @@ int main(void)
     do {
         for (unsigned si = 0; si < fw_scene_count; si++) {
             if (scene_init(&ctx[0], si, 0) != 0) {
-                say("error scene=", fw_scenes[si].name, " work memory too small\r\n");
+                /* (an image's scenes need only what it has: tools/scenec/features.sh) */
+                if (RENDER_FEATURES_BUILT != RENDER_FEATURES_ALL &&
+                    (render_features(fw_scenes[si].scene) & ~RENDER_FEATURES_BUILT))
+                    say("error scene=", fw_scenes[si].name, " needs a renderer feature this image left out\r\n");
+                else
+                    say("error scene=", fw_scenes[si].name, " work memory too small\r\n");
                 continue;
             }
             uint32_t last = 0;

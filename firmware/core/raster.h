@@ -55,6 +55,8 @@
 
 /* ---- the entry points behind render.h -------------------------------- */
 
+/* The features (scene_features.def) the scene's frames may reach: render_features's. */
+uint32_t raster_features(const struct scene *s);
 /* Work memory for this scene at this size with strips of strip_rows rows;
  * 0 for a scene it cannot lay out (an instance of a missing model). */
 size_t raster_work_size(const struct scene *s, uint16_t width, uint16_t height, uint16_t strip_rows);

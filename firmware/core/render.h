@@ -37,9 +37,17 @@ struct render_ctx {
  * strips of at most strip_rows rows. */
 size_t render_work_size(const struct scene *s, uint16_t width, uint16_t height, uint16_t strip_rows);
 
-/* 0 on success; -1 if work_size is too small or the size is invalid. */
+/* 0 on success; -1 if work_size is too small, the size is invalid or the
+ * scene needs a feature this build left out (render_features). */
 int render_init(struct render_ctx *ctx, const struct scene *s, uint16_t width, uint16_t height,
                 uint16_t strip_rows, void *work, size_t work_size);
+
+/* The renderer features the scene needs (scene_features.def: a mask of
+ * RENDER_F(NAME) bits): every path, loop and table any frame of it may
+ * reach. Those a build has are RENDER_FEATURES_BUILT (scene_features.h); a scene
+ * with render_features(s) & ~RENDER_FEATURES_BUILT is refused by
+ * render_init. */
+uint32_t render_features(const struct scene *s);
 
 /* A sibling context: another core rendering other strips of the frames
  * `owner` (an initialised context, not itself a sibling) prepares. For a

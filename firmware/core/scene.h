@@ -20,6 +20,7 @@
 
 #include <stdint.h>
 #include "num.h"
+#include "scene_features.h"
 
 enum scene_kind { SCENE_RAYTRACE = 0, SCENE_RASTER = 1 };
 

@@ -17,14 +17,16 @@
 #   - refused, one line "image NAME: ..." and no image left: a scene scenec
 #     refuses, a scene over the RP2040's flash (a 1024x1024 texture: 3 MB), a
 #     missing scene file, a bad NAME, no SCENES, an unknown PANEL,
-#     and a scene whose work memory does not fit (a sphere of 64 divisions),
+#     and a scene whose work memory does not fit (three spheres of 64 divisions),
 #     with the bytes it needs and the bytes the image has, before the scene
 #     is compiled for the board and the image linked.
+#   - the image carries only the renderer features its scenes need
+#     (fw_features.h: the cubes need neither the ray tracer nor chapter 15),
+#     and a scene's C does not compile into an image without its features;
 #   - a mesh (the 4,096-triangle knot of firmware/scenes/bench/, its OBJ
-#     next to it): refused with the whole core in SRAM (the default), built
-#     with RP2040_RAM_TEXT=raster (the rasterizer's default path in SRAM),
-#     core 1 a sibling of core 0's context; its frame 0 on both emulated
-#     cores equals host_sim's.
+#     next to it): built with the core its features need in SRAM (the
+#     default RP2040_RAM_TEXT), core 1 a sibling of core 0's context; its
+#     frame 0 on both emulated cores equals host_sim's.
 # ~60 s (two cores). usage: test_image.sh BUILD_DIR
 set -u
 b=${1:-build}
@@ -83,6 +85,24 @@ if [ -n "$other" ] && [ -n "$end" ] && [ -n "$w0" ] && [ -n "$w1" ] && \
   pass "image_check_budget_equals_the_linked_image (core 0 $((0x$w0)) bytes of work, core 1 $((0x$w1)))"
 else
   fail image_check_budget_equals_the_linked_image "check: '$other', image: ${end:-?} - 0x20000000 - ${w0:-?} - ${w1:-?}"
+fi
+
+# ---- the features --------------------------------------------------------------
+f=$set_dir/fw_features.h
+if grep -q '^#define FW_FEATURE_RAYTRACER 0$' "$f" && grep -q '^#define FW_FEATURE_RAS_CH15 0$' "$f" &&
+   grep -q '^#define FW_FEATURE_RAS_FAST 1$' "$f" && ! printf '%s\n' "$syms" | grep -q ' rt_render_strip$'; then
+  pass image_carries_only_its_features
+else
+  fail image_carries_only_its_features "$(cat "$f" 2>&1 | tr '\n' ' ')"
+fi
+# a scene's C against an image's features without one it needs: an #error naming it
+if arm-none-eabi-gcc -mcpu=cortex-m0plus -mthumb -std=c11 -DNUM_MODE=1 -DNUM_FRAC=12 -DFW_FEATURE_RAS_FAST=0 -Ifirmware/core \
+     -c "$set_dir/s1_flat.c" -o "$t/s1.o" 2>"$t/ferr"; then
+  fail image_scene_refuses_a_core_without_its_features "compiled"
+elif grep -q 'needs the renderer feature RAS_FAST' "$t/ferr"; then
+  pass image_scene_refuses_a_core_without_its_features
+else
+  fail image_scene_refuses_a_core_without_its_features "$(head -n 2 "$t/ferr")"
 fi
 
 # ---- on the emulated board ----------------------------------------------------
@@ -180,6 +200,8 @@ light { type = ambient intensity = 0.2 }
 light { type = directional intensity = 0.8 direction = (-1, 0, 1) }
 model { name = m generate = sphere divs = 64 color = (0, 255, 0) }
 instance { model = m transform { translation = (0, 0, 3) } }
+instance { model = m transform { translation = (-1, 0, 4) } }
+instance { model = m transform { translation = (1, 0, 4) } }
 EOF
 refused image_refuses_a_scene_that_does_not_fit \
   "^image $name: scene big.scene needs [0-9]* bytes of work on core 0 and [0-9]* on core 1, the RP2040 two-core image has [0-9]*\$" \
@@ -195,17 +217,10 @@ fi
 # ---- a mesh ---------------------------------------------------------------------
 mkdir -p "$t/mesh"
 cp firmware/scenes/bench/knot-4k-gouraud.scene firmware/scenes/bench/knot-4k.obj "$t/mesh/"
-if mk SCENES="$t/mesh/knot-4k-gouraud.scene" >"$t/r" 2>&1; then
-  fail image_mesh_refused_with_the_whole_core_in_sram "built: $(tail -n 1 "$t/r")"
-elif grep -q "^image $name: scene knot-4k-gouraud.scene needs [0-9]* bytes of work on core 0 and [0-9]* on core 1" "$t/r"; then
-  pass image_mesh_refused_with_the_whole_core_in_sram
+if ! mk SCENES="$t/mesh/knot-4k-gouraud.scene" >"$t/r" 2>&1; then
+  fail image_mesh_builds_with_its_features_in_sram "$(grep "^image" "$t/r" | head -n 1)"
 else
-  fail image_mesh_refused_with_the_whole_core_in_sram "$(grep "^image" "$t/r" | head -n 1)"
-fi
-if ! mk SCENES="$t/mesh/knot-4k-gouraud.scene" RP2040_RAM_TEXT=raster >"$t/r" 2>&1; then
-  fail image_mesh_builds_with_ram_text_raster "$(grep "^image" "$t/r" | head -n 1)"
-else
-  pass image_mesh_builds_with_ram_text_raster
+  pass "image_mesh_builds_with_its_features_in_sram ($(sed -n 's/.*the RP2040 two-core image has \([0-9]*\).*/\1/p;s/.* \([0-9]*\) bytes of RAM, .*/\1/p' "$t/r" | head -n 1))"
   frac=$(sed -n 's/^#define NUM_FRAC \([0-9][0-9]*\)$/\1/p' "$set_dir/num_frac.h")
   e=$(sim 1 "$t/knot")
   "$b/host_sim" --scene "$t/mesh/knot-4k-gouraud.scene" --size 240x240 --numeric fixed --num-frac "$frac" \

@@ -81,7 +81,7 @@ LAYERS = {
 }
 
 PUBLIC_CORE = {"render.h", "strip.h", "scene.h", "num.h", "raytracer.h", "raster.h", "mipmap.h",
-               "scene_options.def"}
+               "scene_options.def", "scene_features.h", "scene_features.def"}
 
 # The core's parts: (path or folder/ prefix, part); the first match applies.
 CORE_PARTS = (
@@ -89,7 +89,7 @@ CORE_PARTS = (
     ("raytracer.h", "rt"), ("rt/", "rt"),
     ("raster.h", "raster"), ("raster/", "raster"),
     ("strip.h", "strip"), ("work.h", "strip"),
-    ("scene.h", "scene"), ("scene_options.def", "scene"),
+    ("scene.h", "scene"), ("scene_options.def", "scene"), ("scene_features.h", "scene"), ("scene_features.def", "scene"),
     ("mipmap.h", "mipmap"), ("mipmap.c", "mipmap"),
     ("num.h", "num"), ("num/", "num"),
 )

@@ -10,6 +10,12 @@
 # double build (test_scene_fracs). A scene whose numbers cannot fit fails
 # with the object and quantity named.
 #   tests/system/test_scenec.sh SCENEC BUILD [--report]
+# --report (make scenes-report): one line a scene instead, its format, the
+# flash of its const data, its work memory (.bss of the compiled scene; the
+# target's render_work_size and this host's), the renderer code an image of
+# it alone carries (tools/scenec/scene_code.sh: the core with only its
+# features) and those features (firmware/core/scene_features.def: the
+# renderer, paths and span loops its options choose).
 set -u
 scenec=$1
 build=$2
@@ -20,7 +26,8 @@ work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 cc=arm-none-eabi-gcc
 command -v $cc >/dev/null 2>&1 || cc=""
-[ -n "$report" ] && printf '%-28s %8s %10s %10s %10s %10s %8s\n' scene num_frac flash_B ram_B target_B host_B slack
+[ -n "$report" ] && printf '%-28s %8s %10s %10s %10s %10s %8s %8s  %s\n' scene num_frac flash_B work_B target_B host_B \
+  slack code_B features
 pairs=""
 for f in $(find firmware/scenes -name '*.scene' | sort); do
   name=${f#firmware/scenes/}; name=${name%.scene}
@@ -67,7 +74,10 @@ for f in $(find firmware/scenes -name '*.scene' | sort); do
   exact=$target; [ "$exact" -lt 1 ] && exact=1
   slack=$(awk -v b="$bss" -v n="$exact" 'BEGIN { printf "%.1f%%", (b - n) * 100 / n }')
   if [ -n "$report" ]; then
-    printf '%-28s %8s %10s %10s %10s %10s %8s\n' "$name" "$frac" "$flash" "$bss" "$target" "$host" "$slack"
+    code=$(tools/scenec/scene_code.sh "$build/scenes/code" "${out%.c}.h" "$frac" 2>&1) || code="?"
+    feats=$(sed -n 's/.* features=\([^ ]*\).*/\1/p' "$work/$id.log" | tr 'A-Z' 'a-z')
+    printf '%-28s %8s %10s %10s %10s %10s %8s %8s  %s\n' "$name" "$frac" "$flash" "$bss" "$target" "$host" "$slack" \
+      "${code#code=}" "$feats"
     continue
   fi
   if [ "$bss" -ge "$exact" ] && [ $((bss * 10)) -le $((exact * 11)) ] && [ "$data" -eq 0 ]; then

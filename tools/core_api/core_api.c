@@ -162,8 +162,10 @@ static int instance_facing(const struct render_ctx *ctx, uint16_t i, uint32_t *f
     return raster_instance_facing(ctx->work, i, facing, culled);
 }
 
+static uint32_t features(const void *scene) { return render_features(scene); }
+
 const struct core_api API = {
     NUM_NAME, load, parse_text, read_text, free_scene, info, work_size, init, render_begin_frame, render_strip,
     &num_saturations, API_FRAC, format, exact_methods, render_set_pass, set_fits, decision_probe, move_camera,
-    sibling_work_size, instance_facing,
+    sibling_work_size, instance_facing, features,
 };

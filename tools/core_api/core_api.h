@@ -98,6 +98,9 @@ struct core_api {
      * its model's name: 0, or -1 (a ray-traced scene, no such instance). */
     int (*instance_facing)(const struct render_ctx *ctx, uint16_t i, uint32_t *facing, uint32_t *culled,
                            const char **model);
+    /* render_features (render.h): the features (firmware/core/scene_features.def)
+     * a loaded scene needs */
+    uint32_t (*features)(const void *scene);
 };
 
 extern const struct core_api core_api_fixed, core_api_float, core_api_double;

@@ -117,6 +117,13 @@ static size_t flash_bytes;      /* const data emitted, by sizeof of what we emit
 static size_t texture_bytes;    /* of which the textures' texels (every mip level) */
 static const char *outh_path;   /* OUT.h (NULL in the dry run) */
 static int target_work_given;   /* the work size is the target's (--target-work) */
+static uint32_t scene_features; /* render_features of the scene (work_sizes) */
+
+/* The renderer features' names (firmware/core/scene_features.def), by bit. */
+static const char *const feature_names[] = {
+#define FEATURE(name, doc) #name,
+#include "scene_features.def"
+};
 
 /* With out NULL nothing is written: a dry run that only adds up
  * flash_bytes (the budget check before anything is written). */
@@ -439,7 +446,14 @@ static void emit_scene(const struct scene *s, const char *id, const char *src, i
     emit("#include \"scene.h\"\n#include \"%s\"\n\n", hb);
     /* a coarser format (smaller NUM_FRAC) holds every range this one does */
     emit("#if NUM_MODE == NUM_MODE_FIXED && NUM_FRAC > %d\n", frac);
-    emit("#error \"scene %s was checked for NUM_FRAC <= %d\"\n#endif\n\n", id, frac);
+    emit("#error \"scene %s was checked for NUM_FRAC <= %d\"\n#endif\n", id, frac);
+    /* a core compiled without a feature the scene needs (an image's
+     * features header of other scenes) */
+    for (int k = 0; k < RENDER_FEATURE_COUNT; k++)
+        if (scene_features >> k & 1u)
+            emit("#if !FW_FEATURE_%s\n#error \"scene %s needs the renderer feature %s (firmware/core/scene_features.def)\"\n"
+                 "#endif\n", feature_names[k], id, feature_names[k]);
+    emit("\n");
     emit_lights(s);
     emit_objects(s);
     emit_textures(s);
@@ -582,7 +596,8 @@ static const struct target targets[] = {
     /* 264 KB SRAM: the largest share a two-core board image leaves to its
        two work buffers (docs/firmware.md: 228,896 bytes with
        RP2040_RAM_TEXT=0, 160,496 with raster, about 52,900 with the whole
-       core in SRAM; make image checks the image's own figure); 2 MB flash
+       core in SRAM, more with only the code an image's scenes need; make
+       image checks the image's own figure); 2 MB flash
        less 256 KB for the firmware (175 KB: boot2, vectors, code) */
     { "rp2040", 228896, 2048 * 1024 - 256 * 1024, 1, "RP2040 board image, two cores" },
     /* qemu's mps2-an385 and mps2-an386 as tools/bench/mps2.ld lays them
@@ -1006,6 +1021,7 @@ static int work_sizes(const struct args *a, const char *text, size_t len, size_t
         return 2;
     }
     *host_work = core_api_fixed12.work_size(fs, (uint16_t)a->width, (uint16_t)a->height, (uint16_t)a->strip);
+    scene_features = core_api_fixed12.features(fs);
     size_t host_sibling = core_api_fixed12.sibling_work_size(fs, (uint16_t)a->width, (uint16_t)a->height,
                                                              (uint16_t)a->strip);
     core_api_fixed12.scene_free(fs);
@@ -1041,7 +1057,13 @@ static void write_header(FILE *h, const struct args *a, const char *id, int frac
                "#define SCENE_%s_STRIP_ROWS %d\n#define SCENE_%s_WORK_SIZE  %zu\n#define SCENE_%s_STRIP_BYTES %zu\n"
                "#define SCENE_%s_SIBLING_WORK_SIZE %zu\n\n",
             ID, frac, ID, a->width, ID, a->height, ID, a->strip, ID, work, ID, strip_bytes, ID, sibling);
-    fprintf(h, "extern const struct scene scene_%s;\nextern uint8_t scene_%s_work[];\n\n#endif\n", id, id);
+    /* the renderer features it needs: one line each (0 or 1), which an
+     * image's header merges over its scenes (tools/scenec/features.sh) */
+    fprintf(h, "/* the renderer features it needs (firmware/core/scene_features.def, render_features) */\n");
+    fprintf(h, "#define SCENE_%s_FEATURES 0x%08lxu\n", ID, (unsigned long)scene_features);
+    for (int k = 0; k < RENDER_FEATURE_COUNT; k++)
+        fprintf(h, "#define SCENE_%s_FEATURE_%s %d\n", ID, feature_names[k], (int)(scene_features >> k & 1u));
+    fprintf(h, "\nextern const struct scene scene_%s;\nextern uint8_t scene_%s_work[];\n\n#endif\n", id, id);
 }
 
 /* OUT.h, then OUT.c, each complete before either replaces the old one: 0,
@@ -1188,8 +1210,14 @@ int main(int argc, char **argv)
            "    %s\n",
            work, a.target_work >= 0 ? "the target's render_work_size" : "this host's render_work_size, an upper bound",
            host_work, strip_bytes, a.width, a.height, a.strip, sibling, a.outc, flash_bytes, texture_bytes, budget);
-    printf("scenec-summary id=%s num_frac=%d work=%zu host_work=%zu target=%d strip=%zu sibling=%zu flash=%zu\n", id,
-           frac, work, host_work, a.target_work >= 0, strip_bytes, sibling, flash_bytes);
+    char feats[600] = "";
+    for (int k = 0, n = 0; k < RENDER_FEATURE_COUNT; k++)
+        if (scene_features >> k & 1u)
+            n += snprintf(feats + n, sizeof feats - (size_t)n, "%s%s", n ? "," : "", feature_names[k]);
+    printf("  renderer features: %s (firmware/core/scene_features.def)\n", feats[0] ? feats : "none");
+    printf("scenec-summary id=%s num_frac=%d work=%zu host_work=%zu target=%d strip=%zu sibling=%zu flash=%zu "
+           "features=%s\n", id, frac, work, host_work, a.target_work >= 0, strip_bytes, sibling, flash_bytes,
+           feats[0] ? feats : "none");
     scene_free(s);
     return 0;
 }

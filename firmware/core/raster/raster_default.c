@@ -49,7 +49,9 @@ static int levels_memo(struct ras_ctx *rc, rgb c, struct ras_fast_tri *ft)
 static int fast_describe(struct ras_ctx *rc, const struct ras_def_tri *dt, struct ras_fast_tri *ft, ptrdiff_t inst)
 {
     const struct ras_options *o = &rc->s->ras;
-    if (!rc->fast.on || rc->cur.depth_only || rc->cur.depth_func != RAS_DEPTH_LESS_WRITE || dt->nmap >= 0) return 0;
+    if (!FW_FEATURE_RAS_FAST || !rc->fast.on || rc->cur.depth_only || rc->cur.depth_func != RAS_DEPTH_LESS_WRITE ||
+        dt->nmap >= 0)
+        return 0;
     int gour = dt->shading == SHADE_GOURAUD, phong = dt->shading == SHADE_PHONG;
     if (phong && (!rc->fast.phong || !rc->fast.fp.ok || rc->fast.inst_spec[inst] == -2)) return 0;
     ft->ai_i = dt->ai_i;
@@ -185,7 +187,8 @@ void ras_tri_cache(struct ras_ctx *rc, const struct ras_instance *in, const stru
 static int resume_kept(struct ras_ctx *rc, uint32_t gi, struct ras_fast_state **slot)
 {
     *slot = NULL;
-    if (!rc->fast.keep || rc->cur.depth_only || rc->cur.depth_func != RAS_DEPTH_LESS_WRITE) return 0;
+    if (!FW_FEATURE_RAS_FAST || !rc->fast.keep || rc->cur.depth_only || rc->cur.depth_func != RAS_DEPTH_LESS_WRITE)
+        return 0;
     *slot = &rc->fast.keep[gi & (rc->fast.nkeep - 1u)];
     uint32_t drawn;
     if ((*slot)->tri == gi && ras_fast_resume(rc, *slot, &drawn)) {

@@ -180,7 +180,7 @@ static struct ras_range instance_triangle(struct ras_ctx *rc, uint16_t i, uint32
     const struct ras_triangle *t = &m->tris[k];
     struct ras_range r = no_rows();
     if (!ri->visible || t->v[0] >= m->nverts || t->v[1] >= m->nverts || t->v[2] >= m->nverts) return r;
-    if (rc->book || o->wireframe) {
+    if (FW_FEATURE_RAS_BOOK && (rc->book || o->wireframe)) {
         /* (these paths keep the camera-space table) */
         const struct ras_vert *a = &rc->verts[vb + t->v[0]], *b = &rc->verts[vb + t->v[1]],
                               *c = &rc->verts[vb + t->v[2]];
@@ -196,7 +196,7 @@ static struct ras_range instance_triangle(struct ras_ctx *rc, uint16_t i, uint32
             ras_facing_wide(a->c, ras_face_normal_wide(a->c, b->c, c->c)) <= 0)
             return r;
         rc->part_drawn[part]++;
-    } else {
+    } else if (FW_FEATURE_RAS_DEFAULT) {
         const struct ras_pv *pa = &rc->def.pv[vb + t->v[0]], *pb = &rc->def.pv[vb + t->v[1]], *pc = &rc->def.pv[vb + t->v[2]];
         const int inside = ras_pv_in(pa) && ras_pv_in(pb) && ras_pv_in(pc);
         const int32_t lo = inside ? min3(pa->sy, pb->sy, pc->sy) : 0, hi = inside ? max3(pa->sy, pb->sy, pc->sy) : 0;
@@ -393,8 +393,8 @@ int raster_frame_finish(void *work)
     rc->tris_in = rc->part_in[0] + rc->part_in[1];
     rc->tris_drawn = rc->part_drawn[0] + rc->part_drawn[1];
     if (rc->bins.on) bin_triangles(rc);
-    if (rc->fast.phong) ras_fphong_frame(rc);
-    ras_ch15_frame(rc);
+    if (FW_FEATURE_RAS_FAST_PHONG && rc->fast.phong) ras_fphong_frame(rc);
+    if (FW_FEATURE_RAS_CH15) ras_ch15_frame(rc);
     return 0;
 }
 

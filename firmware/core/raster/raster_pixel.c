@@ -55,7 +55,7 @@ void ras_default_pixel(struct ras_ctx *rc, int col, int row, const num *a, num z
         num cy = num_sub(num_from_int(rc->h / 2 - row), NUM_HALF);
         vec3 p = v3_make(ras_mul_div(cx, z, rc->unproj), ras_mul_div(cy, z, rc->unproj), z);
         vec3 n = v3_make(a[dt->ai_n], a[dt->ai_n + 1], a[dt->ai_n + 2]);
-        if (dt->nmap >= 0 || rc->c15.sm_on || rc->c15.sv_on || rc->c15.env_on) {
+        if (FW_FEATURE_RAS_CH15 && (dt->nmap >= 0 || rc->c15.sm_on || rc->c15.sv_on || rc->c15.env_on)) {
             ras_put(rc, col, row, ch15_pixel(rc, dt, col, row, p, n, a, c));
             return;
         }

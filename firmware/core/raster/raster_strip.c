@@ -77,8 +77,8 @@ static void render_instance(struct ras_ctx *rc, uint16_t i, const struct render_
     if (!ri->visible) return;
     for (uint16_t k = 0; k < m->ntris; k++) {
         if (!trows_hit(rc->tri_rows[ri->tbase + k], b)) continue;
-        if (rc->book || s->ras.wireframe) ras_book_render_triangle(rc, in, ri, m, &m->tris[k]);
-        else ras_default_render_triangle(rc, in, ri, m, &m->tris[k], ri->tbase + k);
+        if (FW_FEATURE_RAS_BOOK && (rc->book || s->ras.wireframe)) ras_book_render_triangle(rc, in, ri, m, &m->tris[k]);
+        else if (FW_FEATURE_RAS_DEFAULT) ras_default_render_triangle(rc, in, ri, m, &m->tris[k], ri->tbase + k);
     }
 }
 
@@ -133,10 +133,10 @@ static void render_bins(struct ras_ctx *rc, const struct render_target *t)
 static void render_scene(struct ras_ctx *rc, const struct render_target *t)
 {
     for (int pass = rc->c15.sv_on ? 0 : 2; pass < 3; pass++) {
-        if (pass == 1) { ras_shadow_volumes(rc); continue; }
+        if (pass == 1) { if (FW_FEATURE_RAS_CH15) ras_shadow_volumes(rc); continue; }
         rc->cur.depth_only = (uint8_t)(pass == 0);
         rc->cur.depth_func = (uint8_t)(rc->c15.sv_on && pass == 2 ? RAS_DEPTH_EQUAL : RAS_DEPTH_LESS_WRITE);
-        if (rc->bins.on) render_bins(rc, t);
+        if (FW_FEATURE_RAS_DEFAULT && rc->bins.on) render_bins(rc, t);
         else
             for (uint16_t i = 0; i < rc->s->ninstances; i++) render_instance(rc, i, t);
     }
@@ -160,7 +160,7 @@ int raster_strip(void *work, struct render_target *t, struct render_stats *st)
     if (t->written) memset(t->written, 0, npx);
     if (rc->depth_bytes) ras_fill_zero(rc->depth, (size_t)rc->depth_bytes * rc->w * (size_t)(t->y1 - t->y0));
 
-    for (uint16_t i = 0; i < s->nprims; i++) {
+    for (uint16_t i = 0; FW_FEATURE_RAS_2D && i < s->nprims; i++) {
         if (!rows_hit(rc->prim_rows[i], t)) continue;
         const struct prim2d *p = &s->prims[i];
         num x[3], y[3];
@@ -177,7 +177,7 @@ int raster_strip(void *work, struct render_target *t, struct render_stats *st)
         default: break;
         }
     }
-    for (uint16_t i = 0; i < s->nlines; i++) {
+    for (uint16_t i = 0; FW_FEATURE_RAS_2D && i < s->nlines; i++) {
         if (!rows_hit(rc->line_rows[i], t)) continue;
         num ax, ay, bx, by;
         ras_project_vertex(rc, s->lines[i].a, &ax, &ay);

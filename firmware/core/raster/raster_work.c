@@ -375,12 +375,59 @@ int raster_init(void *work, size_t work_size, const struct scene *s, uint16_t wi
     /* fast Phong's specular tables, one per exponent, and each instance's */
     uint32_t exps[RAS_SPEC_MAX];
     uint16_t nspec = spec_exponents(s, rc->fast.inst_spec, exps);
-    for (uint16_t k = 0; k < nspec; k++)
+    for (uint16_t k = 0; FW_FEATURE_RAS_FAST_PHONG && k < nspec; k++)
         ras_spec_table(rc->fast.spec_tab + 257 * k, exps[k], rc->fast.spec_step + 2 * k);
     init_viewport(rc);
     init_textures(rc);
-    ras_ch15_init(rc);
+    if (FW_FEATURE_RAS_CH15) ras_ch15_init(rc);
     return 0;
+}
+
+/* ---- the features a scene needs (scene_features.def) ---- */
+
+/* The span loops instance i's triangles take (fast_describe in
+ * raster_default.c, from the scene's choices above): 0 when they take the
+ * exact path. */
+static uint32_t instance_spans(const struct scene *s, const struct ras_instance *in)
+{
+    const struct ras_options *o = &s->ras;
+    const int sh = eff_shading(s);
+    const int tex = in->texture >= 0 && in->texture < s->ntextures && in->model < s->nmodels &&
+                    s->models[in->model].has_uvs;
+    if (sh == SHADE_PHONG) {
+        if (!phong_fast(s)) return 0;
+        return tex ? RENDER_F(SPAN_PHONG_TEX) : RENDER_F(SPAN_PHONG_CONST);
+    }
+    if (tex) {
+        /* (a nearest texture whose RGB565 copy tex565_size refuses takes
+         * the exact path: its loops counted all the same) */
+        if (s->textures[in->texture].filter != TEX_NEAREST || !o->perspective_uv || sh == SHADE_FLAT) return 0;
+        return sh == SHADE_GOURAUD ? RENDER_F(SPAN_LI_TEX) : RENDER_F(SPAN_NONE_TEX);
+    }
+    return sh == SHADE_GOURAUD ? RENDER_F(SPAN_RGB_CONST) : RENDER_F(SPAN_NONE_CONST);
+}
+
+uint32_t raster_features(const struct scene *s)
+{
+    const struct ras_options *o = &s->ras;
+    uint32_t f = RENDER_F(RASTER);
+    if (s->nprims || s->nlines) f |= RENDER_F(RAS_2D);
+    if (!s->ninstances) return f;
+    if (!frame_cache(s)) return f | RENDER_F(RAS_BOOK);
+    f |= RENDER_F(RAS_DEFAULT);
+    int nmap = 0;
+    for (uint16_t i = 0; i < s->ninstances; i++) nmap |= s->instances[i].normal_map >= 0;
+    if (ch15_lit(o) || (nmap && eff_shading(s) == SHADE_PHONG)) f |= RENDER_F(RAS_CH15);
+    if (!fast_path(s)) return f;
+    f |= RENDER_F(RAS_FAST);
+    if (phong_fast(s)) f |= RENDER_F(RAS_FAST_PHONG);
+    uint32_t spans = 0;
+    for (uint16_t i = 0; i < s->ninstances; i++) spans |= instance_spans(s, &s->instances[i]);
+    if (spans) {
+        const int db = depth_bytes(s);
+        f |= spans | (db == 0 ? RENDER_F(SPAN_Z0) : db == 2 ? RENDER_F(SPAN_Z2) : RENDER_F(SPAN_Z4));
+    }
+    return f;
 }
 
 /* ---- a sibling context: another core's strips of the owner's frames ---- */

@@ -37,6 +37,18 @@
 #define SPAN_SRC SPAN_SRC_TEX
 #define SPAN_TAG phong_tex
 #include "raster_span_depths.h"
+#define SPAN_SHADE SPAN_SHADE_NONE      /* texture, bilinear, unlit */
+#define SPAN_SRC SPAN_SRC_TEXBL
+#define SPAN_TAG none_texbl
+#include "raster_span_depths.h"
+#define SPAN_SHADE SPAN_SHADE_LI        /* texture, bilinear, Gouraud */
+#define SPAN_SRC SPAN_SRC_TEXBL
+#define SPAN_TAG li_texbl
+#include "raster_span_depths.h"
+#define SPAN_SHADE SPAN_SHADE_PHONG     /* texture, bilinear, fast Phong */
+#define SPAN_SRC SPAN_SRC_TEXBL
+#define SPAN_TAG phong_texbl
+#include "raster_span_depths.h"
 
 #define SPAN_ROW(shade, src, tag) \
     [SPAN_SHADE_##shade][SPAN_SRC_##src] = { span_##tag##_z0, span_##tag##_z2, span_##tag##_z4 }
@@ -48,4 +60,7 @@ const span_fn SPAN_TABLE[SPAN_SHADES][SPAN_SRCS][SPAN_DEPTHS] = {
     SPAN_ROW(NONE, TEX, none_tex),
     SPAN_ROW(LI, TEX, li_tex),
     SPAN_ROW(PHONG, TEX, phong_tex),
+    SPAN_ROW(NONE, TEXBL, none_texbl),
+    SPAN_ROW(LI, TEXBL, li_texbl),
+    SPAN_ROW(PHONG, TEXBL, phong_texbl),
 };

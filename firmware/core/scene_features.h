@@ -64,6 +64,15 @@ typedef char render_features_fit[RENDER_FEATURE_COUNT <= 31 ? 1 : -1];
 #ifndef FW_FEATURE_SPAN_PHONG_TEX
 #define FW_FEATURE_SPAN_PHONG_TEX 1
 #endif
+#ifndef FW_FEATURE_SPAN_NONE_TEXBL
+#define FW_FEATURE_SPAN_NONE_TEXBL 1
+#endif
+#ifndef FW_FEATURE_SPAN_LI_TEXBL
+#define FW_FEATURE_SPAN_LI_TEXBL 1
+#endif
+#ifndef FW_FEATURE_SPAN_PHONG_TEXBL
+#define FW_FEATURE_SPAN_PHONG_TEXBL 1
+#endif
 #ifndef FW_FEATURE_SPAN_Z0
 #define FW_FEATURE_SPAN_Z0 1
 #endif

@@ -279,6 +279,20 @@ run --scene "$r6" --panel none --size 240x240 --stats --numeric double --compare
 b=$(sed -n 's/.*"psnr":\([0-9.a-z]*\).*/\1/p' "$tmp/o")
 [ "$rc" -eq 0 ] && [ -n "$a" ] && [ "$a" = "$b" ] && pass num_frac_compare_fixed ||
   fail num_frac_compare_fixed "psnr '$a' vs '$b'"
+# bilinear textures on the fast path (bench/cube-bilinear): close to the
+# double build's exact bilinear sampling at perspective_step 8 (54.2 dB on
+# frame 0 when written), and the exact path (step 1) closer still
+cb=firmware/scenes/bench/cube-bilinear.scene
+sed 's/uv = perspective/uv = perspective perspective_step = 8/' "$cb" >"$tmp/cb8.scene"
+run --scene "$tmp/cb8.scene" --panel none --size 240x240 --stats --compare double
+a=$(sed -n 's/.*"psnr":\([0-9.a-z]*\).*/\1/p' "$tmp/o")
+[ "$rc" -eq 0 ] && awk -v p="$a" 'BEGIN { exit !(p + 0 >= 52) }' && pass bilinear_fast_psnr ||
+  fail bilinear_fast_psnr "exit $rc, psnr '$a' (want >= 52 dB)"
+sed 's/filter = bilinear/filter = nearest/' "$tmp/cb8.scene" >"$tmp/cn8.scene"
+run --scene "$tmp/cn8.scene" --panel none --size 240x240 --stats --compare double
+b=$(sed -n 's/.*"psnr":\([0-9.a-z]*\).*/\1/p' "$tmp/o")
+[ "$rc" -eq 0 ] && awk -v a="$a" -v b="$b" 'BEGIN { exit !(a + 0 > b + 10) }' && pass bilinear_fast_beats_nearest ||
+  fail bilinear_fast_beats_nearest "bilinear '$a' dB, nearest '$b' dB"
 # --compare double on a ray-traced scene counts the primary decisions (item
 # hit, lights shadowed) that differ from double's, and how many double takes
 # too with its camera moved by the format's resolution: raytracer-02 at

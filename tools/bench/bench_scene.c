@@ -21,7 +21,8 @@
  * frame, the options the variant sets), for the scene as written (variant
  * "default") and for each other method of the rasterizer's default path:
  * "perspective_step=1" (the exact per-pixel path, with lighting = exact),
- * 8, 16, 32 and, for Phong scenes, "lighting=exact", "lighting=vertex". */
+ * 4 (textured scenes), 8, 16, 32 and, for Phong scenes, "lighting=exact",
+ * "lighting=vertex". */
 #include <string.h>
 #include "bench.h"
 #include "render.h"
@@ -120,14 +121,15 @@ int bench_main(void)
     return bad;   /* (for profiling: the scene as written only) */
 #endif
     if (s->kind != SCENE_RASTER || s->ninstances == 0 || s->ras.book_exact) return bad;
-    static const uint8_t steps[] = { 1, 8, 16, 32 };
-    static const char *const step_names[] = { "perspective_step=1", "perspective_step=8", "perspective_step=16",
-                                              "perspective_step=32" };
-    static const char *const step_options[] = { "perspective_step=1,lighting=exact", "perspective_step=8",
-                                                "perspective_step=16", "perspective_step=32" };
+    static const uint8_t steps[] = { 1, 4, 8, 16, 32 };
+    static const char *const step_names[] = { "perspective_step=1", "perspective_step=4", "perspective_step=8",
+                                              "perspective_step=16", "perspective_step=32" };
+    static const char *const step_options[] = { "perspective_step=1,lighting=exact", "perspective_step=4",
+                                                "perspective_step=8", "perspective_step=16", "perspective_step=32" };
     struct scene v = *s;
     for (unsigned k = 0; k < sizeof steps; k++) {
         if (steps[k] == (s->ras.persp_step ? s->ras.persp_step : 16)) continue;   /* the default row */
+        if (steps[k] == 4 && s->ntextures == 0) continue;                          /* (textured scenes only) */
         v.ras.persp_step = steps[k];
         v.ras.lighting = steps[k] == 1 ? RAS_LIGHT_EXACT : s->ras.lighting;
         bad |= measure(&v, step_names[k], step_options[k]);

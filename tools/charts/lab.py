@@ -212,7 +212,7 @@ def raster_book_variants(textured):
 def cube_variants():
     v = [Variant("N=16"), *[Variant("N=16", "fixed", f) for f in FRACS], Variant("N=16", "float"),
          Variant("N=16", "double")]
-    for n in (8, 32):
+    for n in (4, 8, 32):
         v.append(Variant("N=%d" % n, options=["perspective_step=%d" % n]))
     v += [Variant("exact N=1", options=["perspective_step=1"]),
           Variant("exact N=1", "float", options=["perspective_step=1"]),
@@ -223,6 +223,9 @@ def cube_variants():
           Variant("N=16 subpixel_bits=2", options=["subpixel_bits=2"]),
           Variant("N=16 subpixel_bits=8", options=["subpixel_bits=8"]),
           Variant("bilinear", options=["texture.filter=bilinear"]),
+          *[Variant("bilinear N=%d" % n, options=["texture.filter=bilinear", "perspective_step=%d" % n])
+            for n in (4, 8)],
+          Variant("bilinear exact N=1", options=["texture.filter=bilinear", "perspective_step=1"]),
           Variant("N=16", strip=8), Variant("N=16", strip=240)]
     return v
 

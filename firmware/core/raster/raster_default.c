@@ -44,7 +44,7 @@ static int levels_memo(struct ras_ctx *rc, rgb c, struct ras_fast_tri *ft)
 
 /* The fast span loops' description of a triangle; 0 when it needs the
  * exact per-pixel path (chapter 15 passes and normal maps, Phong without
- * fast Phong, filtered or non-power-of-two textures, screen-linear uv,
+ * fast Phong, trilinear or non-power-of-two textures, screen-linear uv,
  * textures under flat shading). */
 static int fast_describe(struct ras_ctx *rc, const struct ras_def_tri *dt, struct ras_fast_tri *ft, ptrdiff_t inst)
 {
@@ -74,15 +74,17 @@ static int fast_describe(struct ras_ctx *rc, const struct ras_def_tri *dt, struc
         const struct ras_tex565 *t5 = &rc->fast.tex565[dt->tex];
         if (!t5->p || !o->perspective_uv || dt->shading == SHADE_FLAT) return 0;
         ft->shade = (uint8_t)(phong ? SPAN_SHADE_PHONG : (gour ? SPAN_SHADE_LI : SPAN_SHADE_NONE));
-        ft->src = SPAN_SRC_TEX;
+        int bl = rc->s->textures[dt->tex].filter == TEX_BILINEAR;
+        ft->src = bl ? SPAN_SRC_TEXBL : SPAN_SRC_TEX;
         ft->tex = t5->p;
         ft->wlog2 = t5->wlog2;
         ft->wmask = (1u << t5->wlog2) - 1;
         ft->hmask = (1u << t5->hlog2) - 1;
-        /* u = 1 maps to the last texel's far edge less 2^-16: nearest with
-         * clamping for u, v in [0, 1], repeating outside */
-        ft->uscale = (int32_t)((1u << t5->wlog2) * 65536u - 1u);
-        ft->vscale = (int32_t)((1u << t5->hlog2) * 65536u - 1u);
+        /* nearest: u = 1 maps to the last texel's far edge less 2^-16,
+         * clamping for u, v in [0, 1], repeating outside; bilinear: u times
+         * the width (its loop clamps the texel indices) */
+        ft->uscale = (int32_t)((1u << t5->wlog2) * 65536u - (bl ? 0u : 1u));
+        ft->vscale = (int32_t)((1u << t5->hlog2) * 65536u - (bl ? 0u : 1u));
         return 1;
     }
     if (gour) {

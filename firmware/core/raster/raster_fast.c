@@ -294,7 +294,7 @@ static int fast_attrs(const struct ras_ctx *rc, const struct ras_sv *const vv[3]
     if (shade != SPAN_SHADE_NONE || ft->src != SPAN_SRC_CONST) {
         persp_weights(pp, vv, area);
         if (shade == SPAN_SHADE_PHONG && !attrs_phong(pp, &na, vv, ft)) return -1;
-        if (ft->src == SPAN_SRC_TEX && !attrs_uv(pp, &na, vv, ft)) return -1;
+        if (ft->src != SPAN_SRC_CONST && !attrs_uv(pp, &na, vv, ft)) return -1;
         if ((shade == SPAN_SHADE_RGB || shade == SPAN_SHADE_LI) && !attrs_gouraud(pp, &na, vv, ft, &shade))
             return -1;
         pp->na = na;

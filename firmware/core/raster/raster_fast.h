@@ -13,6 +13,9 @@
  *                            lit per pixel (raster_fphong.c)
  *   src    SPAN_SRC_CONST    the triangle's colour
  *          SPAN_SRC_TEX      RGB565 texels, nearest, power-of-two sides
+ *          SPAN_SRC_TEXBL    RGB565 texels, bilinear (5-bit weights in the
+ *                            channels spread over one word), clamped at the
+ *                            edges, power-of-two sides
  *   depth  0 (no test), 2 or 4 bytes an entry
  *   out    the board's outputs (RGB565) or also the host's (rgb888, written
  *          map, pixels written): ras_span_board or ras_span_host
@@ -32,7 +35,8 @@
 #define SPAN_SHADES 4
 #define SPAN_SRC_CONST 0
 #define SPAN_SRC_TEX 1
-#define SPAN_SRCS 2
+#define SPAN_SRC_TEXBL 2
+#define SPAN_SRCS 3
 #define SPAN_DEPTHS 3            /* 0, 2, 4 bytes an entry: index 0, 1, 2 */
 
 /* x / 2^n rounded toward minus infinity: >> on a negative int32_t, which

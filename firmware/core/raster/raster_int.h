@@ -68,7 +68,9 @@ struct ras_trows { uint8_t r0, r1; };
 
 /* A texture as RGB565 for the fast path (power-of-two sides, nearest):
  * p == NULL when the texture does not qualify. */
-struct ras_tex565 { const uint16_t *p; uint8_t wlog2, hlog2; };
+/* The fast path's copy of a texture: RGB565 texels (nearest), or 0x00RRGGBB
+ * words (bilinear, which blends the 8-bit channels) */
+struct ras_tex565 { const void *p; uint8_t wlog2, hlog2; };
 
 /* Mip chain of a texture, built in work memory when the scene has none. */
 #define RAS_MIP_MAX 12   /* levels used: 2048 texels a side down to 1 */
@@ -373,7 +375,7 @@ struct ras_fast_tri {
     uint16_t c565;           /* flat: the colour */
     uint8_t c888[3];         /* flat: the colour before quantisation (host output) */
     uint32_t kr, kg, kb;     /* Gouraud (saturating): colour in RGB565 levels, Q10 */
-    const uint16_t *tex;     /* textured: RGB565 texels */
+    const void *tex;         /* textured: RGB565 texels, or 0x00RRGGBB words (bilinear) */
     uint32_t wmask, hmask, wlog2;
     int32_t uscale, vscale;  /* u, v to 16.16 texel coordinates */
     int ai_i, ai_uv;         /* attribute slots of intensity and u, v in ras_sv.a */

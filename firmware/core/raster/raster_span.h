@@ -3,7 +3,7 @@
  * combination of its parameters (raster_fast.h) with these macros set:
  *   SPAN_NAME   function name
  *   SPAN_SHADE  SPAN_SHADE_NONE, _RGB, _LI, _PHONG
- *   SPAN_SRC    SPAN_SRC_CONST, SPAN_SRC_TEX
+ *   SPAN_SRC    SPAN_SRC_CONST, SPAN_SRC_TEX, SPAN_SRC_TEXBL
  *   SPAN_DEPTH  0 (no depth test), 2 (16-bit entries), 4 (32-bit entries)
  *   SPAN_HOST   1: also the host's outputs (rgb888, written map) and the
  *               count of pixels written
@@ -19,7 +19,7 @@
 #endif
 /* attribute slots: Phong's normal and position, u and v, then the intensity or the levels */
 #define SPAN_A_UV (SPAN_SHADE == SPAN_SHADE_PHONG ? 6 : 0)
-#define SPAN_A_SH (SPAN_A_UV + (SPAN_SRC == SPAN_SRC_TEX ? 2 : 0))
+#define SPAN_A_SH (SPAN_A_UV + (SPAN_SRC != SPAN_SRC_CONST ? 2 : 0))
 #if SPAN_SHADE == SPAN_SHADE_RGB
 #define SPAN_NA (SPAN_A_SH + 3)
 #elif SPAN_SHADE == SPAN_SHADE_LI
@@ -71,6 +71,9 @@ RAS_HOT static uint32_t SPAN_NAME(const struct ftri *T, const struct frow *R)
      * times twice the width, each masked to its integer bits */
     const uint8_t *tex = (const uint8_t *)T->ft->tex;
     const uint32_t um = T->ft->wmask << 1, vm = T->ft->hmask << (T->ft->wlog2 + 1), vs = T->ft->wlog2 + 1;
+#elif SPAN_SRC == SPAN_SRC_TEXBL
+    const uint32_t *tex = (const uint32_t *)T->ft->tex;
+    const uint32_t wm = T->ft->wmask, hm = T->ft->hmask, wl = T->ft->wlog2;
 #endif
     while (n > 0) {
         int32_t m = n;
@@ -96,6 +99,10 @@ RAS_HOT static uint32_t SPAN_NAME(const struct ftri *T, const struct frow *R)
 #if SPAN_SRC == SPAN_SRC_TEX
         uint32_t u = (uint32_t)cur[SPAN_A_UV] << 1, v = (uint32_t)cur[SPAN_A_UV + 1] << vs;
         const uint32_t du = (uint32_t)d[SPAN_A_UV] << 1, dv = (uint32_t)d[SPAN_A_UV + 1] << vs;
+#elif SPAN_SRC == SPAN_SRC_TEXBL
+        /* texel units in Q16 less half a texel: the texel centres at integers */
+        uint32_t u = (uint32_t)cur[SPAN_A_UV] - 0x8000u, v = (uint32_t)cur[SPAN_A_UV + 1] - 0x8000u;
+        const uint32_t du = (uint32_t)d[SPAN_A_UV], dv = (uint32_t)d[SPAN_A_UV + 1];
 #endif
 #if SPAN_SHADE == SPAN_SHADE_PHONG
         int32_t at[6];
@@ -160,6 +167,13 @@ RAS_HOT static uint32_t SPAN_NAME(const struct ftri *T, const struct frow *R)
                 uint16_t c = pack565_sat((kr * ii + (1u << 21)) >> 22, (kg * ii + (1u << 21)) >> 22,
                                          (kb * ii + (1u << 21)) >> 22);
 #endif
+#elif SPAN_SRC == SPAN_SRC_TEXBL
+                /* the blended 8-bit channels, lit, then their RGB565 levels */
+                uint32_t t8 = span_bilinear(tex, u, v, wl, wm, hm);
+#if SPAN_SHADE != SPAN_SHADE_NONE
+                t8 = light888(t8, SPAN_LIGHT);
+#endif
+                uint16_t c = pack888_565(t8);
 #else /* SPAN_SRC_TEX */
                 uint16_t c = *(const uint16_t *)(const void *)(tex + (((v >> 16) & vm) | ((u >> 16) & um)));
 #if SPAN_SHADE != SPAN_SHADE_NONE
@@ -179,6 +193,10 @@ RAS_HOT static uint32_t SPAN_NAME(const struct ftri *T, const struct frow *R)
                     o888[0] = T->ft->c888[0];
                     o888[1] = T->ft->c888[1];
                     o888[2] = T->ft->c888[2];
+#elif SPAN_SRC == SPAN_SRC_TEXBL
+                    o888[0] = (uint8_t)(t8 >> 16);
+                    o888[1] = (uint8_t)(t8 >> 8);
+                    o888[2] = (uint8_t)t8;
 #else
                     span_565_to_888(c, o888);
 #endif
@@ -194,7 +212,7 @@ RAS_HOT static uint32_t SPAN_NAME(const struct ftri *T, const struct frow *R)
             zp++;
             z += dz;
 #endif
-#if SPAN_SRC == SPAN_SRC_TEX
+#if SPAN_SRC != SPAN_SRC_CONST
             u += du;
             v += dv;
 #endif

@@ -53,6 +53,24 @@
 #define SPAN_TAG phong_tex
 #include "raster_span_depths.h"
 #endif
+#if FW_FEATURE_SPAN_NONE_TEXBL
+#define SPAN_SHADE SPAN_SHADE_NONE      /* texture, bilinear, unlit */
+#define SPAN_SRC SPAN_SRC_TEXBL
+#define SPAN_TAG none_texbl
+#include "raster_span_depths.h"
+#endif
+#if FW_FEATURE_SPAN_LI_TEXBL
+#define SPAN_SHADE SPAN_SHADE_LI        /* texture, bilinear, Gouraud */
+#define SPAN_SRC SPAN_SRC_TEXBL
+#define SPAN_TAG li_texbl
+#include "raster_span_depths.h"
+#endif
+#if FW_FEATURE_SPAN_PHONG_TEXBL
+#define SPAN_SHADE SPAN_SHADE_PHONG     /* texture, bilinear, fast Phong */
+#define SPAN_SRC SPAN_SRC_TEXBL
+#define SPAN_TAG phong_texbl
+#include "raster_span_depths.h"
+#endif
 
 /* a loop of a depth size the image left out (scene_features.def): no entry */
 #if FW_FEATURE_SPAN_Z0
@@ -94,8 +112,18 @@ const span_fn SPAN_TABLE[SPAN_SHADES][SPAN_SRCS][SPAN_DEPTHS] = {
 #if FW_FEATURE_SPAN_PHONG_TEX
     SPAN_ROW(PHONG, TEX, phong_tex),
 #endif
+#if FW_FEATURE_SPAN_NONE_TEXBL
+    SPAN_ROW(NONE, TEXBL, none_texbl),
+#endif
+#if FW_FEATURE_SPAN_LI_TEXBL
+    SPAN_ROW(LI, TEXBL, li_texbl),
+#endif
+#if FW_FEATURE_SPAN_PHONG_TEXBL
+    SPAN_ROW(PHONG, TEXBL, phong_texbl),
+#endif
 #if !(FW_FEATURE_SPAN_NONE_CONST || FW_FEATURE_SPAN_RGB_CONST || FW_FEATURE_SPAN_PHONG_CONST || \
-      FW_FEATURE_SPAN_NONE_TEX || FW_FEATURE_SPAN_LI_TEX || FW_FEATURE_SPAN_PHONG_TEX)
+      FW_FEATURE_SPAN_NONE_TEX || FW_FEATURE_SPAN_LI_TEX || FW_FEATURE_SPAN_PHONG_TEX || \
+      FW_FEATURE_SPAN_NONE_TEXBL || FW_FEATURE_SPAN_LI_TEXBL || FW_FEATURE_SPAN_PHONG_TEXBL)
     { { NULL } },
 #endif
 };

@@ -25,6 +25,66 @@ static inline void span_565_to_888(uint16_t c, uint8_t *o)
     o[2] = (uint8_t)(b << 3 | b >> 2);
 }
 
+/* (a * (256 - f) + b * f) / 256 in each 8-bit channel of two 0x00RRGGBB
+ * texels, rounded: R and B side by side with 8 spare bits each, G alone */
+static inline uint32_t lerp888(uint32_t a, uint32_t b, uint32_t f)
+{
+    uint32_t rb = (((a & 0xFF00FFu) * (256u - f) + (b & 0xFF00FFu) * f + 0x800080u) >> 8) & 0xFF00FFu;
+    uint32_t g = (((a & 0xFF00u) * (256u - f) + (b & 0xFF00u) * f + 0x8000u) >> 8) & 0xFF00u;
+    return rb | g;
+}
+
+/* Bilinear texel (0x00RRGGBB) at (u, v), texel units in Q16 with the texel
+ * centres at integers (two's complement in a uint32_t), weights the top 8
+ * bits of the fractions; texel indices clamped to the texture (wm, hm its
+ * sides less 1, wl log2 of its width), as the exact path clamps. */
+static inline uint32_t span_bilinear(const uint32_t *tex, uint32_t u, uint32_t v, uint32_t wl, uint32_t wm,
+                                     uint32_t hm)
+{
+    int32_t x = asr32((int32_t)u, 16), y = asr32((int32_t)v, 16);
+    uint32_t fx = (u >> 8) & 255u, fy = (v >> 8) & 255u;
+    uint32_t t00, t10, t01, t11;
+    if ((uint32_t)x < wm && (uint32_t)y < hm) {   /* both columns and rows inside */
+        const uint32_t *p = tex + ((uint32_t)y << wl) + (uint32_t)x;
+        t00 = p[0];
+        t10 = p[1];
+        p += wm + 1;
+        t01 = p[0];
+        t11 = p[1];
+    } else {
+        uint32_t x0 = x < 0 ? 0 : ((uint32_t)x > wm ? wm : (uint32_t)x);
+        uint32_t x1 = x < 0 ? 0 : ((uint32_t)x >= wm ? wm : (uint32_t)x + 1);
+        uint32_t y0 = y < 0 ? 0 : ((uint32_t)y > hm ? hm : (uint32_t)y);
+        uint32_t y1 = y < 0 ? 0 : ((uint32_t)y >= hm ? hm : (uint32_t)y + 1);
+        t00 = tex[(y0 << wl) + x0];
+        t10 = tex[(y0 << wl) + x1];
+        t01 = tex[(y1 << wl) + x0];
+        t11 = tex[(y1 << wl) + x1];
+    }
+    return lerp888(lerp888(t00, t10, fx), lerp888(t01, t11, fx), fy);
+}
+
+/* Each 8-bit channel of 0x00RRGGBB times intensity ii (Q12), rounded,
+ * clamped to 255. */
+static inline uint32_t light888(uint32_t t, uint32_t ii)
+{
+    uint32_t r = ((t >> 16) * ii + (1u << 11)) >> 12, g = (((t >> 8) & 255u) * ii + (1u << 11)) >> 12,
+             b = ((t & 255u) * ii + (1u << 11)) >> 12;
+    return (r > 255 ? 255u : r) << 16 | (g > 255 ? 255u : g) << 8 | (b > 255 ? 255u : b);
+}
+
+/* round(c * L / 255) of an 8-bit channel (rgb_to_565's rounding) */
+static inline uint32_t level8(uint32_t c, uint32_t L)
+{
+    return ((c * L + 127u) * 0x8081u) >> 23;
+}
+
+/* RGB565 of 0x00RRGGBB, each channel rounded to its level */
+static inline uint16_t pack888_565(uint32_t t)
+{
+    return (uint16_t)(level8(t >> 16, 31) << 11 | level8((t >> 8) & 255u, 63) << 5 | level8(t & 255u, 31));
+}
+
 /* 2^30 / (s * 64) at the middle of each of the 256 intervals of s in
  * [256, 512): round(2^30 / ((256 + i + 0.5) * 64)). */
 static const uint16_t rcp_tab[256] = {

@@ -43,14 +43,15 @@ static int log2_exact(uint32_t v)
     return -1;
 }
 
-/* Bytes of the RGB565 copy of texture t the fast path samples: nearest
- * filtering, power-of-two sides, at most 2^15 texels (a byte offset of 16
- * bits); 0 when it does not qualify. */
+/* Bytes of the copy of texture t the fast path samples: nearest (RGB565,
+ * 2 bytes a texel) or bilinear (0x00RRGGBB, 4 bytes) filtering,
+ * power-of-two sides, at most 2^15 texels (a byte offset of 16 bits); 0
+ * when it does not qualify. */
 static size_t tex565_size(const struct scene *s, const struct ras_texture *t)
 {
-    if (!fast_path(s) || t->filter != TEX_NEAREST || !t->rgb) return 0;
+    if (!fast_path(s) || (t->filter != TEX_NEAREST && t->filter != TEX_BILINEAR) || !t->rgb) return 0;
     if (log2_exact(t->w) < 0 || log2_exact(t->h) < 0 || log2_exact(t->w) + log2_exact(t->h) > 15) return 0;
-    return (size_t)t->w * t->h * 2;
+    return (size_t)t->w * t->h * (t->filter == TEX_BILINEAR ? 4 : 2);
 }
 
 
@@ -335,15 +336,24 @@ static void init_textures(struct ras_ctx *rc)
         size_t n = tex565_size(s, tx);
         rc->fast.tex565[i].p = NULL;
         if (!n) continue;
-        uint16_t *d = (uint16_t *)(void *)tm;
-        for (size_t k = 0; k < (size_t)tx->w * tx->h; k++) {
-            const uint8_t *c = tx->rgb + 3 * k;
-            /* round(c * L / 255), as rgb_to_565 rounds an integral channel */
-            uint32_t r = ((uint32_t)c[0] * 62 + 255) / 510, g = ((uint32_t)c[1] * 126 + 255) / 510,
-                     b = ((uint32_t)c[2] * 62 + 255) / 510;
-            d[k] = (uint16_t)(r << 11 | g << 5 | b);
+        if (tx->filter == TEX_BILINEAR) {
+            uint32_t *d = (uint32_t *)(void *)tm;
+            for (size_t k = 0; k < (size_t)tx->w * tx->h; k++) {
+                const uint8_t *c = tx->rgb + 3 * k;
+                d[k] = (uint32_t)c[0] << 16 | (uint32_t)c[1] << 8 | c[2];
+            }
+            rc->fast.tex565[i].p = d;
+        } else {
+            uint16_t *d = (uint16_t *)(void *)tm;
+            for (size_t k = 0; k < (size_t)tx->w * tx->h; k++) {
+                const uint8_t *c = tx->rgb + 3 * k;
+                /* round(c * L / 255), as rgb_to_565 rounds an integral channel */
+                uint32_t r = ((uint32_t)c[0] * 62 + 255) / 510, g = ((uint32_t)c[1] * 126 + 255) / 510,
+                         b = ((uint32_t)c[2] * 62 + 255) / 510;
+                d[k] = (uint16_t)(r << 11 | g << 5 | b);
+            }
+            rc->fast.tex565[i].p = d;
         }
-        rc->fast.tex565[i].p = d;
         rc->fast.tex565[i].wlog2 = (uint8_t)log2_exact(tx->w);
         rc->fast.tex565[i].hlog2 = (uint8_t)log2_exact(tx->h);
         tm += work_round(n);
@@ -370,7 +380,7 @@ int raster_init(void *work, size_t work_size, const struct scene *s, uint16_t wi
     rc->def.sub_bits = s->ras.subpixel_bits ? (s->ras.subpixel_bits > 8 ? 8 : s->ras.subpixel_bits) : RAS_SUBPIXEL_BITS;
     rc->def.shading = (uint8_t)eff_shading(s);
     rc->fast.on = (uint8_t)fast_path(s);
-    rc->fast.persp_log2 = (uint8_t)(s->ras.persp_step == 8 ? 3 : (s->ras.persp_step == 32 ? 5 : 4));
+    rc->fast.persp_log2 = (uint8_t)(s->ras.persp_step == 2 ? 1 : s->ras.persp_step == 4 ? 2 : s->ras.persp_step == 8 ? 3 : (s->ras.persp_step == 32 ? 5 : 4));
     rc->fast.phong = (uint8_t)phong_fast(s);
     /* fast Phong's specular tables, one per exponent, and each instance's */
     uint32_t exps[RAS_SPEC_MAX];
@@ -394,14 +404,18 @@ static uint32_t instance_spans(const struct scene *s, const struct ras_instance 
     const int sh = eff_shading(s);
     const int tex = in->texture >= 0 && in->texture < s->ntextures && in->model < s->nmodels &&
                     s->models[in->model].has_uvs;
+    const int bl = tex && s->textures[in->texture].filter == TEX_BILINEAR;
     if (sh == SHADE_PHONG) {
         if (!phong_fast(s)) return 0;
-        return tex ? RENDER_F(SPAN_PHONG_TEX) : RENDER_F(SPAN_PHONG_CONST);
+        if (!tex) return RENDER_F(SPAN_PHONG_CONST);
+        return bl ? RENDER_F(SPAN_PHONG_TEXBL) : RENDER_F(SPAN_PHONG_TEX);
     }
     if (tex) {
-        /* (a nearest texture whose RGB565 copy tex565_size refuses takes
-         * the exact path: its loops counted all the same) */
-        if (s->textures[in->texture].filter != TEX_NEAREST || !o->perspective_uv || sh == SHADE_FLAT) return 0;
+        /* (a nearest or bilinear texture whose copy tex565_size refuses
+         * takes the exact path: its loops counted all the same) */
+        if ((!bl && s->textures[in->texture].filter != TEX_NEAREST) || !o->perspective_uv || sh == SHADE_FLAT)
+            return 0;
+        if (bl) return sh == SHADE_GOURAUD ? RENDER_F(SPAN_LI_TEXBL) : RENDER_F(SPAN_NONE_TEXBL);
         return sh == SHADE_GOURAUD ? RENDER_F(SPAN_LI_TEX) : RENDER_F(SPAN_NONE_TEX);
     }
     return sh == SHADE_GOURAUD ? RENDER_F(SPAN_RGB_CONST) : RENDER_F(SPAN_NONE_CONST);

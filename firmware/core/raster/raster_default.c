@@ -5,7 +5,6 @@
  * each triangle of the clipped fan through the fast span loops
  * (raster_fast.c) or the exact per-pixel fill (ras_fill_triangle with
  * ras_default_pixel). */
-#include <string.h>
 #include "raster_fast.h"
 #include "num/num_int.h"
 
@@ -99,7 +98,9 @@ static int fast_describe(struct ras_ctx *rc, const struct ras_def_tri *dt, struc
         m->valid = 1;
     }
     ft->c565 = m->c565;
-    memcpy(ft->c888, m->c888, 3);
+    ft->c888[0] = m->c888[0];
+    ft->c888[1] = m->c888[1];
+    ft->c888[2] = m->c888[2];
     return 1;
 }
 
@@ -153,7 +154,9 @@ void ras_tri_cache(struct ras_ctx *rc, const struct ras_instance *in, const stru
             return;
         }
     }
-    if (!tri_facts(rc, in, ri, m, t, V, N, &front, !ri->vlit, part ? rc->def.vcache1 : rc->def.vcache)) {
+    /* (the normals only for the lighting of a triangle kept below) */
+    if (!tri_facts(rc, in, ri, m, t, V, N, &front, !ri->vlit && rc->def.tri_shade,
+                   part ? rc->def.vcache1 : rc->def.vcache)) {
         rc->def.tri_flags[gi] = 0;
         return;
     }

@@ -102,7 +102,7 @@ static void fedge_init(struct fedge *e, int32_t a, int32_t b, int32_t w, int32_t
 /* Everything a triangle's rows need, kept between strips (struct
  * ras_fast_state is this, opaque to the rest of the rasterizer). */
 struct fstate {
-    struct ras_fast_tri ftc;     /* the triangle's description (T.ft points here) */
+    struct ras_fast_tri ftc;     /* the triangle's description, where T.ft points once kept */
     struct ftri T;
     struct fedge fe[3];          /* (row bounds by division: scan == 0) */
     int32_t wr[3], a[3], b[3];   /* edge values at (c0, row), steps per column and row */
@@ -298,14 +298,13 @@ static int attrs_gouraud(struct fpersp *pp, int *na, const struct ras_sv *const 
     return persp_attr(pp, (*na)++, li[0], li[1], li[2]);
 }
 
-/* The triangle's description copied into S and its span constants, the
+/* The triangle's description (the caller's ft, copied into S only when
+ * the set-up is kept: ras_fast_fill) and its span constants, the
  * attributes in raster_fast.h's order. Returns 1, or -1 when an attribute
  * does not fit the span formats. */
 static int fast_attrs(const struct ras_ctx *rc, const struct ras_sv *const vv[3], const struct ras_fast_tri *ft,
                       int32_t area, struct fstate *S)
 {
-    S->ftc = *ft;
-    ft = &S->ftc;
     struct ftri *Tp = &S->T;
     struct fpersp *pp = &Tp->pp;
     int na = 0, shade = ft->shade;
@@ -483,7 +482,13 @@ int32_t ras_fast_fill(struct ras_ctx *rc, const struct ras_sv *v0, const struct 
         if (keep) S->row = -1;
         return r;
     }
-    return (int32_t)fast_run(rc, S);
+    uint32_t drawn = fast_run(rc, S);
+    if (keep && S->row <= S->last) {
+        /* continued in the next strip: its own copy of the description */
+        S->ftc = *ft;
+        S->T.ft = &S->ftc;
+    }
+    return (int32_t)drawn;
 }
 
 int ras_fast_resume(struct ras_ctx *rc, struct ras_fast_state *keep, uint32_t *drawn)

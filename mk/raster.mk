@@ -75,3 +75,21 @@ $(patsubst %.c,$(BUILD)/bench/$(2)/$(3)/scene-$(1).objs/%.o,tools/bench/bench_sc
 endef
 $(foreach n,$(BENCH_SCENE_NAMES),$(foreach t,$(BENCH_TARGETS),$(foreach m,fixed float,\
   $(eval $(call BENCH_SCENE_IMAGE,$(n),$(t),$(m))))))
+
+# The same images measuring the scene as written only (no method variants):
+# $(BUILD)/bench/TARGET/MODE/scene-NAME-default.elf, not part of `make bench`;
+# quick to run with tools/bench/run.py and to profile. `make profile-mesh`:
+# instructions per function of bench/knot-4k-flat and knot-4k-gouraud (M0+,
+# fixed, its 10 frames measured twice) from a qemu block trace (tools/bench/profile.py).
+define BENCH_SCENE_DEFAULT_IMAGE
+$$(call bench_image,scene-$(1)-default,$(2),$(3),tools/bench/bench_scene.c $(BUILD)/scenes/bench/$(1).c $(CORE_SRCS),\
+  -I$(BUILD)/scenes -DBENCH_SCENE_H='"bench/$(1).h"' -DBENCH_SCENE=scene_bench_$(subst -,_,$(1)) -DBENCH_DEFAULT_ONLY \
+  -DBENCH_WHAT='"scene:bench/$(1)"' $$$$(if $$$$(filter fixed,$(3)),-DNUM_FRAC=$$$$(call bench_scene_frac,$(1))))
+$(patsubst %.c,$(BUILD)/bench/$(2)/$(3)/scene-$(1)-default.objs/%.o,tools/bench/bench_scene.c $(BENCH_RUNTIME) $(CORE_SRCS)): \
+  $(BUILD)/scenes/bench/$(1).c
+endef
+$(foreach n,$(BENCH_SCENE_NAMES),$(foreach t,$(BENCH_TARGETS),$(foreach m,fixed float,\
+  $(eval $(call BENCH_SCENE_DEFAULT_IMAGE,$(n),$(t),$(m))))))
+.PHONY: profile-mesh
+profile-mesh: $(foreach n,knot-4k-flat knot-4k-gouraud,$(BUILD)/bench/m0plus-qemu/fixed/scene-$(n)-default.elf)
+	$(Q)for f in $^; do echo "$$f"; $(PYTHON) tools/bench/profile.py --top 30 $$f || exit 1; done

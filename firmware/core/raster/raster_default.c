@@ -5,7 +5,6 @@
  * each triangle of the clipped fan through the fast span loops
  * (raster_fast.c) or the exact per-pixel fill (ras_fill_triangle with
  * ras_default_pixel). */
-#include <string.h>
 #include "raster_fast.h"
 #include "num/num_int.h"
 
@@ -103,7 +102,9 @@ static int fast_describe(struct ras_ctx *rc, const struct ras_def_tri *dt, struc
         m->valid = 1;
     }
     ft->c565 = m->c565;
-    memcpy(ft->c888, m->c888, 3);
+    ft->c888[0] = m->c888[0];
+    ft->c888[1] = m->c888[1];
+    ft->c888[2] = m->c888[2];
     return 1;
 }
 
@@ -143,21 +144,32 @@ void ras_tri_cache(struct ras_ctx *rc, const struct ras_instance *in, const stru
                       const struct ras_model *m, const struct ras_triangle *t, uint32_t gi, int part)
 {
     vec3 V[3], N[3];
-    int front = 0;
-    if (rc->s->ras.backface_cull) {
-        /* three projected corners whose area on screen, in the order a front
-         * face is drawn, is not positive: whichever way the triangle faces,
-         * it draws nothing (a back face is culled, a front face covers no
-         * pixel), so its facing need not be computed */
-        const struct ras_pv *pv = rc->def.pv + ri->vbase;
-        const struct ras_pv *a = &pv[t->v[0]], *b = &pv[t->v[1]], *c = &pv[t->v[2]];
-        if (ras_pv_in(a) && ras_pv_in(b) && ras_pv_in(c) &&
-            num_smul32(b->sx - a->sx, c->sy - a->sy) - num_smul32(b->sy - a->sy, c->sx - a->sx) <= 0) {
+    int front = 0, known = 0;
+    struct ras_vcache *vc = part ? rc->def.vcache1 : rc->def.vcache;
+    const int want_n = !ri->vlit && rc->def.tri_shade;   /* (normals only for the lighting kept below) */
+    const struct ras_pv *pv = rc->def.pv + ri->vbase;
+    const struct ras_pv *a = &pv[t->v[0]], *b = &pv[t->v[1]], *c = &pv[t->v[2]];
+    if (ras_pv_in(a) && ras_pv_in(b) && ras_pv_in(c)) {
+        /* |differences| < 2^16 (ras_pv): the products in 32 x 32 -> 64 bits */
+        const int32_t d1x = b->sx - a->sx, d1y = b->sy - a->sy, d2x = c->sx - a->sx, d2y = c->sy - a->sy;
+        const int64_t area = num_smul32(d1x, d2y) - num_smul32(d1y, d2x);
+        /* three projected corners whose area on screen, in the order a
+         * front face is drawn, is not positive: whichever way the triangle
+         * faces, it draws nothing (a back face is culled, a front face
+         * covers no pixel), so its facing need not be computed */
+        if (rc->s->ras.backface_cull && area <= 0) {
             rc->def.tri_flags[gi] = 0;
             return;
         }
+        /* one whose area is clear of every rounding is a front face by the
+         * camera-space test too (raster_num.h): that test is not made */
+        const int32_t L = (d1x < 0 ? -d1x : d1x) + (d1y < 0 ? -d1y : d1y) + (d2x < 0 ? -d2x : d2x) +
+                          (d2y < 0 ? -d2y : d2y);
+        known = !want_n && ras_front_known(&rc->def.front, area - 2 * (int64_t)L - 24, a->iz, b->iz, c->iz);
     }
-    if (!tri_facts(rc, in, ri, m, t, V, N, &front, !ri->vlit, part ? rc->def.vcache1 : rc->def.vcache)) {
+    if (known) {
+        front = 1;
+    } else if (!tri_facts(rc, in, ri, m, t, V, N, &front, want_n, vc)) {
         rc->def.tri_flags[gi] = 0;
         return;
     }
@@ -172,7 +184,8 @@ void ras_tri_cache(struct ras_ctx *rc, const struct ras_instance *in, const stru
             uint8_t bit = (uint8_t)(1u << (v & 7));
             if (lit[v >> 3] & bit) continue;
             lit[v >> 3] |= bit;
-            shade[v] = ras_compute_illumination(rc, V[k], ras_corner_normal(ri, t->n[k]), in->specular);
+            const vec3 p = known ? ras_cam_vertex(rc, in, ri, m, t->v[k], vc) : V[k];
+            shade[v] = ras_compute_illumination(rc, p, ras_corner_normal(ri, t->n[k]), in->specular);
         }
         return;
     }

@@ -102,10 +102,12 @@ static void fedge_init(struct fedge *e, int32_t a, int32_t b, int32_t w, int32_t
 /* Everything a triangle's rows need, kept between strips (struct
  * ras_fast_state is this, opaque to the rest of the rasterizer). */
 struct fstate {
-    struct ras_fast_tri ftc;     /* the triangle's description (T.ft points here) */
+    struct ras_fast_tri ftc;     /* the triangle's description, where T.ft points once kept */
     struct ftri T;
-    struct fedge fe[3];
+    struct fedge fe[3];          /* (row bounds by division: scan == 0) */
     int32_t wr[3], a[3], b[3];   /* edge values at (c0, row), steps per column and row */
+    int32_t wb[3];               /* (scan) wr + the top-left rule's bias: covered when all >= 0 */
+    int scan;                    /* a narrow box: each row's span found by stepping across it */
     int64_t zrow, gy16;          /* depth plane at (c0, row), Q32.16 */
     int32_t gxq;                 /* column gradient gxq * 2^16 + gxf */
     uint32_t gxf, dz;
@@ -114,20 +116,19 @@ struct fstate {
 };
 typedef char ras_fast_state_fits[sizeof(struct fstate) <= sizeof(struct ras_fast_state) ? 1 : -1];
 
-/* The box, the edge functions and their row bounds of triangle v0 v1 v2
- * (area > 0) for rows from the strip's first on, into S; *rtop = the box's
- * top row. Returns 1, 0 (nothing to draw) or -1 (the exact path's triangle). */
-static int fast_edges(const struct ras_ctx *rc, const struct ras_sv *v0, const struct ras_sv *v1,
-                      const struct ras_sv *v2, struct fstate *S, int32_t *rtop)
+/* The edge functions and their row bounds of triangle v0 v1 v2 (area > 0,
+ * box its sub-pixel box, at most 2^14 a side) for rows from the strip's
+ * first on, into S; *rtop = the box's top row. Returns 1 or 0 (nothing to
+ * draw). */
+#define RAS_SCAN_MAX 160
+static int fast_edges(const struct ras_ctx *rc, const int32_t box[4], const struct ras_sv *v0,
+                      const struct ras_sv *v1, const struct ras_sv *v2, struct fstate *S, int32_t *rtop)
 {
     const struct render_target *t = rc->cur.t;
     int sb = rc->def.sub_bits;
-    int32_t box[4];
-    ras_sub_box(v0, v1, v2, box);
+    /* (32-bit edge arithmetic: the caller took corners within 2^14 sub-pixel
+     * units of each other, 1024 pixels at 4 sub-pixel bits) */
     const int32_t minx = box[0], miny = box[1], maxx = box[2], maxy = box[3];
-    /* 32-bit edge arithmetic: corners within 2^14 sub-pixel units of each
-     * other (1024 pixels at 4 sub-pixel bits); larger ones take the exact path */
-    if ((int64_t)maxx - minx > (1 << 14) || (int64_t)maxy - miny > (1 << 14)) return -1;
     int32_t half = (int32_t)1 << (sb - 1), one = (int32_t)1 << sb;
     /* the box's columns; its rows those of the pixel centres within it (the
      * depth plane is taken at the row above, rtop, in every case) */
@@ -143,15 +144,20 @@ static int fast_edges(const struct ras_ctx *rc, const struct ras_sv *v0, const s
      * value inside the box is below 2^29 in magnitude */
     int32_t px = (c0 << sb) + half, py = (r0 << sb) + half;
     const struct ras_sv *ea[3] = { v1, v2, v0 }, *eb[3] = { v2, v0, v1 };
+    /* a box of few pixels a row (for the rows left) finds each row's span
+     * by stepping the edge values across it, cheaper than the divisions
+     * that bound it (the same columns either way) */
+    S->scan = (c1 - c0 + 2) * (r1 - r0 + 1) <= RAS_SCAN_MAX;
     for (int i = 0; i < 3; i++) {
         int32_t dx = eb[i]->x - ea[i]->x, dy = eb[i]->y - ea[i]->y;
         int32_t bias = (dy < 0 || (dy == 0 && dx > 0)) ? 0 : -1;
-        /* ras_edge's value, its two products in 32 x 32 -> 64 bits (the
-         * pixel lies in the box: every difference below 2^15) */
-        S->wr[i] = (int32_t)(num_smul32(dx, py - ea[i]->y) - num_smul32(dy, px - ea[i]->x));
+        /* ras_edge's value in 32 bits: the pixel lies within a pixel of the
+         * box, so |dx|, |dy| <= 2^14 and the other factors < 2^14 + 2^9 */
+        S->wr[i] = dx * (py - ea[i]->y) - dy * (px - ea[i]->x);
         S->a[i] = -dy * one;
         S->b[i] = dx * one;
-        fedge_init(&S->fe[i], S->a[i], S->b[i], S->wr[i], bias);
+        S->wb[i] = S->wr[i] + bias;
+        if (!S->scan) fedge_init(&S->fe[i], S->a[i], S->b[i], S->wr[i], bias);
     }
     S->c0 = c0;
     S->kmax = c1 - c0;
@@ -167,11 +173,29 @@ static int fast_edges(const struct ras_ctx *rc, const struct ras_sv *v0, const s
 /* dd * w, a depth difference (|dd| < 2^32) times an edge value or step
  * (|w| < 2^31): one 32 x 32 -> 64 product when dd fits 32 bits, as it does
  * across a small triangle (the same value either way). */
-static int64_t mul_dw(int64_t dd, int64_t w)
+static int64_t mul_dw(int64_t dd, int32_t w)
 {
-    if (dd >= -INT32_MAX && dd <= INT32_MAX && w >= -INT32_MAX && w <= INT32_MAX)
-        return num_smul32((int32_t)dd, (int32_t)w);
+    if (dd >= -INT32_MAX && dd <= INT32_MAX) return num_smul32((int32_t)dd, w);
     return dd * w;
+}
+
+/* Division by a triangle's doubled area d > 0, exact: floor(n / d) and the
+ * remainder in [0, d). m = floor((2^32 - 1) / d) is made at the first |n| <
+ * 2^32 (0: not yet); for those the estimate |n| m / 2^32 is below |n| / d
+ * by less than 1, so one step up at most corrects it; larger n take
+ * ras_floordiv. */
+struct adiv { uint32_t d, m; };
+static int64_t adiv_floor(struct adiv *A, int64_t n, int64_t *rem)
+{
+    uint64_t un = n < 0 ? (uint64_t)0 - (uint64_t)n : (uint64_t)n;
+    if (un > UINT32_MAX) return ras_floordiv(n, A->d, rem);
+    if (A->m == 0) A->m = 0xFFFFFFFFu / A->d;
+    uint32_t x = (uint32_t)un, q = (uint32_t)(num_umul32(x, A->m) >> 32), r = x - q * A->d;
+    if (r >= A->d) { r -= A->d; q++; }
+    if (n >= 0) { *rem = r; return q; }
+    if (r == 0) { *rem = 0; return -(int64_t)q; }
+    *rem = A->d - r;
+    return -(int64_t)q - 1;
 }
 
 static int fast_depth(const struct ras_sv *v0, const struct ras_sv *v1, const struct ras_sv *v2,
@@ -179,19 +203,21 @@ static int fast_depth(const struct ras_sv *v0, const struct ras_sv *v1, const st
 {
     const int32_t *wr = S->wr, *a = S->a, *b = S->b;
     const int32_t r0 = S->row;
+    struct adiv A = { (uint32_t)area, 0 };
     int64_t dd1 = (int64_t)v1->depth - v0->depth, dd2 = (int64_t)v2->depth - v0->depth, rem, f;
-    /* edge values at (c0, the box's top row): linear in the row */
-    int64_t w1t = wr[1] - num_smul32(r0 - rtop, b[1]), w2t = wr[2] - num_smul32(r0 - rtop, b[2]);
-    int64_t q = ras_floordiv(mul_dw(dd1, w1t) + mul_dw(dd2, w2t), area, &rem);
-    int64_t zrow = ((int64_t)v0->depth + q) * 65536 + ras_floordiv(rem << 16, area, &f);
-    q = ras_floordiv(mul_dw(dd1, a[1]) + mul_dw(dd2, a[2]), area, &rem);
+    /* edge values at (c0, the box's top row): linear in the row (within a
+     * pixel of the box, so below 2^30 in magnitude) */
+    int32_t w1t = wr[1] - (r0 - rtop) * b[1], w2t = wr[2] - (r0 - rtop) * b[2];
+    int64_t q = adiv_floor(&A, mul_dw(dd1, w1t) + mul_dw(dd2, w2t), &rem);
+    int64_t zrow = ((int64_t)v0->depth + q) * 65536 + adiv_floor(&A, rem << 16, &f);
+    q = adiv_floor(&A, mul_dw(dd1, a[1]) + mul_dw(dd2, a[2]), &rem);
     if (q > INT32_MAX || q < -INT32_MAX) return -1;
     S->gxq = (int32_t)q;
-    S->gxf = (uint32_t)ras_floordiv(rem << 16, area, &f);
+    S->gxf = (uint32_t)adiv_floor(&A, rem << 16, &f);
     S->dz = (uint32_t)(int32_t)(q + (q < 0 && rem != 0));      /* toward zero */
-    q = ras_floordiv(mul_dw(dd1, b[1]) + mul_dw(dd2, b[2]), area, &rem);
+    q = adiv_floor(&A, mul_dw(dd1, b[1]) + mul_dw(dd2, b[2]), &rem);
     if (q > INT32_MAX || q < -INT32_MAX) return -1;
-    S->gy16 = q * 65536 + ras_floordiv(rem << 16, area, &f);
+    S->gy16 = q * 65536 + adiv_floor(&A, rem << 16, &f);
     S->zrow = zrow + S->gy16 * (r0 - rtop);
     return 1;
 }
@@ -272,14 +298,13 @@ static int attrs_gouraud(struct fpersp *pp, int *na, const struct ras_sv *const 
     return persp_attr(pp, (*na)++, li[0], li[1], li[2]);
 }
 
-/* The triangle's description copied into S and its span constants, the
+/* The triangle's description (the caller's ft, copied into S only when
+ * the set-up is kept: ras_fast_fill) and its span constants, the
  * attributes in raster_fast.h's order. Returns 1, or -1 when an attribute
  * does not fit the span formats. */
 static int fast_attrs(const struct ras_ctx *rc, const struct ras_sv *const vv[3], const struct ras_fast_tri *ft,
                       int32_t area, struct fstate *S)
 {
-    S->ftc = *ft;
-    ft = &S->ftc;
     struct ftri *Tp = &S->T;
     struct fpersp *pp = &Tp->pp;
     int na = 0, shade = ft->shade;
@@ -309,12 +334,16 @@ static int fast_attrs(const struct ras_ctx *rc, const struct ras_sv *const vv[3]
 static int fast_setup(const struct ras_ctx *rc, const struct ras_sv *v0, const struct ras_sv *v1,
                       const struct ras_sv *v2, const struct ras_fast_tri *ft, struct fstate *S)
 {
-    int64_t area64 = ras_edge(v0->x, v0->y, v1->x, v1->y, v2->x, v2->y);
-    if (area64 <= 0) return 0;
+    int32_t box[4];
+    ras_sub_box(v0, v1, v2, box);
+    if ((int64_t)box[2] - box[0] > (1 << 14) || (int64_t)box[3] - box[1] > (1 << 14))
+        return ras_edge(v0->x, v0->y, v1->x, v1->y, v2->x, v2->y) <= 0 ? 0 : -1;
+    /* twice the area: differences of at most 2^14, products below 2^28 */
+    const int32_t area = (v1->x - v0->x) * (v2->y - v0->y) - (v1->y - v0->y) * (v2->x - v0->x);
+    if (area <= 0) return 0;
     int32_t rtop;
-    int r = fast_edges(rc, v0, v1, v2, S, &rtop);
+    int r = fast_edges(rc, box, v0, v1, v2, S, &rtop);
     if (r <= 0) return r;
-    int32_t area = (int32_t)area64;
     S->depth = rc->depth_bytes != 0;
     S->zrow = S->gy16 = 0;
     S->gxq = 0;
@@ -323,10 +352,18 @@ static int fast_setup(const struct ras_ctx *rc, const struct ras_sv *v0, const s
     const struct ras_sv *const vv[3] = { v0, v1, v2 };
     return fast_attrs(rc, vv, ft, area, S);
 }
+/* fast_rows is compiled once for each way of bounding the rows (scan a
+ * constant there), so the division's rows pay nothing for the other way. */
+#if defined(__GNUC__) || defined(__clang__)
+#define RAS_ALWAYS_INLINE static inline __attribute__((always_inline))
+#else
+#define RAS_ALWAYS_INLINE static inline
+#endif
+
 /* Rows of S from S->row to the strip's end (or the triangle's last row),
- * S left at the next row. Returns the pixels written (host outputs) or
- * drawn (board). */
-static uint32_t fast_run(const struct ras_ctx *rc, struct fstate *S)
+ * S left at the next row; scan is S->scan. Returns the pixels written
+ * (host outputs) or drawn (board). */
+RAS_ALWAYS_INLINE uint32_t fast_rows(const struct ras_ctx *rc, struct fstate *S, const int scan)
 {
     const struct render_target *t = rc->cur.t;
     const struct ftri *Tp = &S->T;
@@ -356,11 +393,29 @@ static uint32_t fast_run(const struct ras_ctx *rc, struct fstate *S)
     for (int32_t r = r0; r <= r1; r++) {
         int32_t lo = 0, hi = kmax;
         int empty = 0;
-        for (int i = 0; i < 3; i++) {
-            if (fe[i].kind > 0) { if (fe[i].q > lo) lo = fe[i].q; }
-            else if (fe[i].kind < 0) { if (fe[i].q < hi) hi = fe[i].q; }
-            else if (fe[i].n < 0) empty = 1;
-        }
+        if (scan) {
+            /* the covered columns: every edge value (bias included) >= 0 */
+            int32_t e0 = S->wb[0], e1 = S->wb[1], e2 = S->wb[2], k = 0;
+            while (k <= kmax && ((uint32_t)e0 | (uint32_t)e1 | (uint32_t)e2) >> 31) {
+                e0 += a[0];
+                e1 += a[1];
+                e2 += a[2];
+                k++;
+            }
+            lo = k;
+            while (k <= kmax && !(((uint32_t)e0 | (uint32_t)e1 | (uint32_t)e2) >> 31)) {
+                e0 += a[0];
+                e1 += a[1];
+                e2 += a[2];
+                k++;
+            }
+            hi = k - 1;
+        } else
+            for (int i = 0; i < 3; i++) {
+                if (fe[i].kind > 0) { if (fe[i].q > lo) lo = fe[i].q; }
+                else if (fe[i].kind < 0) { if (fe[i].q < hi) hi = fe[i].q; }
+                else if (fe[i].n < 0) empty = 1;
+            }
         if (!empty && lo <= hi) {
             int32_t L = c0 + lo;
             size_t idx = (size_t)(r - t->y0) * rc->w + (size_t)L;
@@ -392,6 +447,13 @@ static uint32_t fast_run(const struct ras_ctx *rc, struct fstate *S)
             total += extra ? wrote : (uint32_t)R.n;
         }
         zrow += gy16;
+        if (scan) {
+            for (int i = 0; i < 3; i++) {
+                wr[i] += b[i];
+                S->wb[i] += b[i];
+            }
+            continue;
+        }
         for (int i = 0; i < 3; i++) {
             wr[i] += b[i];
             struct fedge *e = &fe[i];
@@ -406,6 +468,11 @@ static uint32_t fast_run(const struct ras_ctx *rc, struct fstate *S)
     return total;
 }
 
+static uint32_t fast_run(const struct ras_ctx *rc, struct fstate *S)
+{
+    return S->scan ? fast_rows(rc, S, 1) : fast_rows(rc, S, 0);
+}
+
 int32_t ras_fast_fill(struct ras_ctx *rc, const struct ras_sv *v0, const struct ras_sv *v1, const struct ras_sv *v2,
                       const struct ras_fast_tri *ft, struct ras_fast_state *keep)
 {
@@ -415,7 +482,13 @@ int32_t ras_fast_fill(struct ras_ctx *rc, const struct ras_sv *v0, const struct 
         if (keep) S->row = -1;
         return r;
     }
-    return (int32_t)fast_run(rc, S);
+    uint32_t drawn = fast_run(rc, S);
+    if (keep && S->row <= S->last) {
+        /* continued in the next strip: its own copy of the description */
+        S->ftc = *ft;
+        S->T.ft = &S->ftc;
+    }
+    return (int32_t)drawn;
 }
 
 int ras_fast_resume(struct ras_ctx *rc, struct ras_fast_state *keep, uint32_t *drawn)

@@ -210,13 +210,12 @@ static struct ras_range instance_triangle(struct ras_ctx *rc, uint16_t i, uint32
         }
         if (r.r0 > r.r1) { rc->def.tri_flags[tb + k] = 0; return r; }
         ras_tri_cache(rc, in, ri, m, t, tb + k, part);
-        if (!(rc->def.tri_flags[tb + k] & RAS_TRI_LIVE)) return r;   /* culled or degenerate: not drawn */
+        /* what the strips visit: live triangles only (a culled or
+         * degenerate one draws nothing), and those of three projected
+         * corners only on the rows of the pixel centres they span */
+        if (!(rc->def.tri_flags[tb + k] & RAS_TRI_LIVE)) return no_rows();
         rc->part_drawn[part]++;
-        /* what the strips visit: live triangles only, and those of three
-         * projected corners only on the rows of the pixel centres they span */
-        if (!rc->bins.on) return r;
-        if (!(rc->def.tri_flags[tb + k] & RAS_TRI_LIVE)) r = no_rows();
-        else if (inside) r = centre_rows(rc, lo, hi);
+        if (rc->bins.on && inside) r = centre_rows(rc, lo, hi);
     }
     return r;
 }

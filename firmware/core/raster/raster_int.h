@@ -108,6 +108,7 @@ struct ras_def {
     num near_z;              /* near clipping plane (camera space z) */
     num side_x, side_y;      /* side planes: |x| <= side_x*z, |y| <= side_y*z */
     num side_xk, side_yk;    /* sqrt(1 + side^2): a side plane's value over the distance */
+    struct ras_front front;  /* front faces known from the screen (raster_num.h) */
     struct ras_mips *mips;   /* per texture */
     uint8_t *mip_mem;        /* the chains the scene has not: raster_work.c's, texture by texture */
     /* per frame: projected vertices, triangle flags and the lighting of

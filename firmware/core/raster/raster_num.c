@@ -140,6 +140,62 @@ uint32_t ras_depth32(num near_z, num z)
     return RAS_DIV64_32 ? num_udiv64_32(n, (uint32_t)z, 0) : (uint32_t)(n / (uint32_t)z);
 }
 
+/* Corners a, b, c inside every plane, at depths z >= near: the
+ * camera-space test's value f = -a . ((b - a) x (c - a)) is, exactly,
+ * D = A_e z_a z_b z_c / (S^2 u^2), A_e the exact projection's doubled area
+ * on screen (S = 2^sub_bits sub-pixel units a pixel, u = unproj), so
+ * D > 0 when A_e > 0. Its computed form rounds each of the normal's six
+ * products and the three products with a to within ulp/2 = 2^-F/2, with no
+ * saturation while the coordinates stay small (iz_min, below), so
+ * |f - D| <= ulp (2 (|a.x| + |a.y| + z_a) + 3); with |a.x| + |a.y| <= z_a
+ * (W + H + 16) / (2u) (the side planes, two pixels out, and their roundings) the screen area
+ * that error stands for is at most
+ *   S^2 ulp (2u^2 + u (W + H + 16) + 3u^2 / near) / (z_b z_c) <= g 2^-2F (iz_b + 1)(iz_c + 1).
+ * The snapped corners lie within e = 1/2 + S ulp (1/(2 near) + 1) <= 1
+ * unit of the exact projection (ras_project_sub), which moves the area by
+ * at most 2 e L + 24 e^2. So A > 2L + 24 + that bound gives A_e > the
+ * error's area, D > |f - D| and f > 0. */
+void ras_front_init(struct ras_front *fb, num unproj, num near_z, int32_t w, int32_t h, int sub_bits)
+{
+    const int F = NUM_FRAC;
+    fb->g = 0;
+    fb->iz_min = NUM_MAX;
+    fb->frac = F;
+    if (F < 8 || unproj <= 0 || near_z <= 0 || sub_bits < 1 || sub_bits > 8) return;
+    const uint64_t S = (uint64_t)1 << sub_bits, nr = (uint64_t)near_z, half = (uint64_t)1 << (F - 1);
+    const uint64_t u = (uint64_t)(unproj >> F) + 1, wh = (uint64_t)w + (uint64_t)h + 16;
+    /* e <= 1: S (2^(F-1) / near + 1) <= 2^(F-1), in num's bits */
+    if (u > (1u << 16) || S * ((half + nr - 1) / nr + 1) > half) return;
+    const uint64_t t = 2 * u * u + u * wh + ((3 * u * u) << F) / nr + 1;
+    if (t > ((uint64_t)1 << 40)) return;
+    const uint64_t g = ((S * S * t) >> F) + 1;
+    if (g >= ((uint64_t)1 << 31)) return;
+    /* coordinates below c = min(NUM_MAX / 4, 2^((55 + 2F) / 3)) in num's
+     * bits: their differences do not saturate, nor do the test's wide
+     * products (3 c (2 (2c)^2 2^-F) 2^-F < 2^60). |x|, |y|, z <= z (1 +
+     * (W + H + 16) / (2u)) < c for z < z_lim, so 1/z above 2^2F / z_lim */
+    const uint64_t ud = (uint64_t)(unproj >> F);
+    const int cb = (55 + 2 * F) / 3;
+    const uint64_t c = cb >= 29 ? (uint64_t)NUM_MAX / 4 : (uint64_t)1 << cb;
+    const uint64_t zlim = c * 2 * ud / (2 * ud + wh);
+    if (ud == 0 || zlim == 0) return;
+    const uint64_t izl = (((uint64_t)1 << (2 * F)) / zlim) + 2;
+    if (izl > (uint64_t)NUM_MAX) return;
+    fb->iz_min = (num)izl;
+    fb->g = (uint32_t)g;
+}
+
+int ras_front_known(const struct ras_front *fb, int64_t margin, num iza, num izb, num izc)
+{
+    if (fb->g == 0 || margin <= 0 || iza < fb->iz_min || izb < fb->iz_min || izc < fb->iz_min) return 0;
+    const int F = fb->frac;
+    /* g (iz_b + 1)(iz_c + 1) 2^-2F, rounded up */
+    uint64_t p = (num_umul32((uint32_t)izb + 1u, (uint32_t)izc + 1u) >> F) + 1;
+    if (p >> 31) return 0;
+    uint64_t bound = (num_umul32((uint32_t)p, fb->g) >> F) + 1;
+    return (uint64_t)margin > bound;
+}
+
 int32_t ras_num_to_fix(num a, int32_t scale)
 {
     /* a * scale in Q.NUM_FRAC, exact in 64 bits; rounded half away from zero */
@@ -223,6 +279,19 @@ uint32_t ras_depth32(num near_z, num z)
 #endif
 }
 
+void ras_front_init(struct ras_front *fb, num unproj, num near_z, int32_t w, int32_t h, int sub_bits)
+{
+    (void)unproj; (void)near_z; (void)w; (void)h; (void)sub_bits;
+    fb->g = 0;
+    fb->iz_min = 0;
+    fb->frac = 0;
+}
+
+int ras_front_known(const struct ras_front *fb, int64_t margin, num iza, num izb, num izc)
+{
+    (void)fb; (void)margin; (void)iza; (void)izb; (void)izc;
+    return 0;
+}
 
 int32_t ras_num_to_fix(num a, int32_t scale)
 {

@@ -64,6 +64,19 @@ int64_t ras_floordiv(int64_t n, int64_t d, int64_t *rem);
  * Fixed point: exact from the Q15.16 inputs. float: 24 significant bits. */
 uint32_t ras_depth32(num near_z, num z);
 
+/* A front face known from the screen: triangle a b c of three projected
+ * corners (inside every plane, z >= near) whose doubled area on screen
+ * A (sub-pixel units) exceeds 2L + 24 + g (iz_b + 1)(iz_c + 1) 2^-2F (L:
+ * the sum of its edges' |dx| + |dy| on screen, iz 1/z in num's bits) is
+ * one by the camera-space test too, whatever that test's roundings
+ * (raster_num.c derives the bound). Fixed point only: g = 0 (never known)
+ * in the floating modes, whose roundings are relative. */
+struct ras_front { uint32_t g; num iz_min; int frac; };
+void ras_front_init(struct ras_front *fb, num unproj, num near_z, int32_t w, int32_t h, int sub_bits);
+/* 1 when margin = A - 2L - 24 (> 0) passes the bound for corners at 1/z
+ * iza, izb, izc; 0 when unknown. */
+int ras_front_known(const struct ras_front *fb, int64_t margin, num iza, num izb, num izc);
+
 /* round(a * scale) as an integer (halves away from zero), saturated to
  * +-(2^31 - 1): a num turned into the integer formats of the fast span
  * path (raster_fast.c). Exact in fixed point; float and double round the

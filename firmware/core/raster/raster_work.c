@@ -317,6 +317,7 @@ static void init_viewport(struct ras_ctx *rc)
     rc->def.side_y = num_div(num_add(num_mul(rc->vh, NUM_HALF), num_div_int(num_mul_int(rc->vh, 2), rc->h)), rc->d);
     rc->def.side_xk = side_k(rc->def.side_x);
     rc->def.side_yk = side_k(rc->def.side_y);
+    ras_front_init(&rc->def.front, rc->unproj, rc->def.near_z, rc->w, rc->h, rc->def.sub_bits);
 }
 
 /* Each texture's mip chain (default path) and RGB565 copy (fast path), in

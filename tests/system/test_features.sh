@@ -13,7 +13,7 @@ trap 'rm -rf "$t"' EXIT
 if $cc -std=c11 -D_POSIX_C_SOURCE=200809L -O1 -g -Wall -Wextra -Werror -pedantic -fsanitize=address,undefined \
      -fno-sanitize-recover=all -DNUM_MODE=1 -DNUM_FRAC=16 -DFW_FEATURE_RAYTRACER=0 -DFW_FEATURE_RAS_FAST=0 \
      -I. -Ifirmware/core -Itools/scene -Itests/support -o "$t/test_features" tests/unit/test_features.c \
-     tools/scene/scene_parse.c $(find firmware/core -name '*.c' | sort) -lm 2>"$t/err"; then
+     tools/scene/scene_parse.c tools/scene/scene_depth.c $(find firmware/core -name '*.c' | sort) -lm 2>"$t/err"; then
   echo "PASS features_core_builds_without_some"
   "$t/test_features" firmware/scenes/bench/cube-flat.scene=1 firmware/scenes/bench/phong.scene=1 \
     firmware/scenes/book/raytracer-02.scene=1 firmware/scenes/book/raster-06.scene=0 \

@@ -15,7 +15,7 @@
  *    2^-30 are left out: surfaces that close (coplanar, or meeting at an
  *    intersection line's very pixels) are ties in 32 bits as well.
  * The overlap is measured in double on the scene's canvas (at most 256
- * pixels a side): every instance's triangles transformed as the renderer
+ * pixels a side; 128, 64 or 32 where that much memory is not there): every instance's triangles transformed as the renderer
  * does (scene_anim), clipped at the near plane z = d, back faces dropped
  * when the scene culls, and at each pixel centre strictly inside a
  * triangle near/z interpolated (it is affine on the screen); per pixel the
@@ -30,6 +30,7 @@
 
 #define DEPTH_FRAMES_CHECKED 16
 #define DEPTH_GRID_MAX 256
+#define DEPTH_GRID_MIN 32       /* the coarsest grid tried when memory is short */
 #define DEPTH_GAP_STEPS16 2.0   /* the overlap rule's gap, in 16-bit steps */
 #define DEPTH_GAP_TIE 0x1p-30   /* smaller gaps: ties whatever the bits */
 #define DEPTH_PIXELS_SHARE 4096 /* more than pixels / this: 32 bits */
@@ -234,13 +235,19 @@ static int overlap(const struct scene *s, struct scene_depth_facts *f)
            vh = num_to_double(s->viewport_h);
     int cw = s->canvas_w, ch = s->canvas_h;
     if (!(near > 0) || !(vw > 0) || !(vh > 0) || cw <= 0 || ch <= 0) return 0;
-    double k = cw > ch ? (double)DEPTH_GRID_MAX / cw : (double)DEPTH_GRID_MAX / ch;
-    if (k > 1) k = 1;
-    struct grid g = { .w = (int)ceil(cw * k), .h = (int)ceil(ch * k), .near = near };
+    /* a coarser grid where the memory is short (a big scene parsed on an
+       emulated MCU): the share of close pixels is about the same */
+    struct grid g = { .near = near };
+    for (int side = DEPTH_GRID_MAX; !g.best; side /= 2) {
+        if (side < DEPTH_GRID_MIN) return -1;
+        double k = cw > ch ? (double)side / cw : (double)side / ch;
+        if (k > 1) k = 1;
+        g.w = (int)ceil(cw * k);
+        g.h = (int)ceil(ch * k);
+        g.best = malloc(sizeof(double) * 2 * (size_t)g.w * (size_t)g.h);
+    }
     g.sx = g.w / vw;
     g.sy = g.h / vh;
-    g.best = malloc(sizeof(double) * 2 * (size_t)g.w * (size_t)g.h);
-    if (!g.best) return -1;
     int frames = s->frames > 0 ? s->frames : 1;
     int n = frames <= DEPTH_FRAMES_CHECKED ? frames : DEPTH_FRAMES_CHECKED;
     f->overlap_checked = 1;

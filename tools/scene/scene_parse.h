@@ -76,8 +76,8 @@ void scene_quality(const struct scene *s, struct scene_quality *q);
  *    show a surface with another one behind it less than two 16-bit steps
  *    of near/z away (and at least 2^-30),
  * else 16. Scenes without instances: 16. *facts (may be NULL) receives the
- * figures of both rules. -1: no memory for the overlap's grid (at most
- * 256 x 256 x 16 bytes). */
+ * figures of both rules. -1: no memory for the overlap's grid (256 x 256
+ * x 16 bytes at most, down to 32 x 32 where memory is short). */
 struct scene_depth_facts {
     double far, step16, rmin;   /* the range rule's figures */
     int range_wants32;

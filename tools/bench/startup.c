@@ -72,28 +72,26 @@ uint32_t bench_fnv565(uint32_t h, const uint16_t *px, uint32_t n)
     return h;
 }
 
+static void put_field(const char *key, uint64_t v)
+{
+    bench_puts(key);
+    bench_put_u64(v);
+}
+
 void bench_frame_line(const struct bench_frame *f)
 {
-    bench_puts("BENCHX frame_checksum=");
-    bench_put_u64(f->checksum);
+    put_field("BENCHX frame_checksum=", f->checksum);
     bench_puts(" scene=");
     bench_puts(f->scene);
     if (f->options) {
         bench_puts(" options=");
         bench_puts(f->options);
     }
-    bench_puts(" width=");
-    bench_put_u64(f->width);
-    bench_puts(" height=");
-    bench_put_u64(f->height);
-    bench_puts(" strip_rows=");
-    bench_put_u64(f->strip_rows);
-    bench_puts(" frames=");
-    bench_put_u64(f->frames);
-    if (f->num_frac) {
-        bench_puts(" num_frac=");
-        bench_put_u64(f->num_frac);
-    }
+    put_field(" width=", f->width);
+    put_field(" height=", f->height);
+    put_field(" strip_rows=", f->strip_rows);
+    put_field(" frames=", f->frames);
+    if (f->num_frac) put_field(" num_frac=", f->num_frac);
     bench_puts("\n");
 }
 

@@ -278,8 +278,7 @@ int scene_depth_bits(const struct scene *s, struct scene_depth_facts *facts)
         if (in->model >= s->nmodels) continue;
         const struct ras_model *m = &s->models[in->model];
         double sc = fabs(num_to_double(in->scale)), vmax = 0;
-        for (int k = 0; k < m->nverts; k++)
-            if (dist3(m->verts[k]) > vmax) vmax = dist3(m->verts[k]);
+        for (int k = 0; k < m->nverts; k++) vmax = fmax(vmax, dist3(m->verts[k]));
         vec3 rel = v3_sub(in->position, s->camera.position);
         double far = dist3(rel) + reach3(&in->anim, s->frames) + cam_reach + sc * vmax;
         if (far > f.far) f.far = far;

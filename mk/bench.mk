@@ -60,8 +60,20 @@ TESTS     += tests/system/test_bench_accuracy.py:$(BUILD)/host_sim \
              tests/system/test_bench_accuracy.py:$(BUILD)/host_sim:$(subst $(eval) ,:,$(BENCH_ACC_IMAGES))
 TEST_DEPS += $(BUILD)/host_sim $(BENCH_ACC_IMAGES)
 
+# The measured tables of README.md and docs/*.md come from results.jsonl
+# (tools/bench/doc_tables.py: each between comments naming its generator).
+# `make bench` ends by listing the tables its figures made stale;
+# `make bench-tables` rewrites them.
+TESTS     += tests/system/test_doc_tables.py
+.PHONY: bench-tables bench-tables-check
+bench-tables:
+	$(Q)$(PYTHON) tools/bench/doc_tables.py $(BUILD)/bench/results.jsonl
+bench-tables-check: bench-accuracy
+	$(Q)$(PYTHON) tools/bench/doc_tables.py --check $(BUILD)/bench/results.jsonl || \
+		echo "make bench-tables rewrites the stale tables above"
+
 .PHONY: bench bench-qemu
-bench: bench-qemu
+bench: bench-qemu bench-tables-check
 # (the recipe expands BENCH_IMAGES after every mk/*.mk has added to it)
 bench-qemu:
 	$(Q)tools/deps.sh bench || true

@@ -7,7 +7,10 @@ with the PSNR of the fixed and float images against double exact
 (tools/bench/accuracy.py), and the ray-traced scenes on the emulated RP2040
 (cycles and frame time, one and two cores).
 
-Usage: rt_table.py [build/bench/results.jsonl]
+Usage: rt_table.py [--summary] [build/bench/results.jsonl]
+  --summary  the README's table instead: the book's two ray-traced scenes and
+             raytracer-05's adaptive option, millions of instructions a frame
+             and PSNR against double per target and numeric mode
 """
 import json
 import sys
@@ -42,9 +45,37 @@ def psnr(r):
     return "exact" if r["psnr"] is None else "%.1f" % r["psnr"]
 
 
+SUMMARY = [(("scene:book/raytracer-02", "strip16"), "raytracer-02"),
+           (("scene:book/raytracer-05", "strip16"), "raytracer-05"),
+           (("scene:book/raytracer-05", "adaptive_subsample=4"), "raytracer-05, `adaptive_subsample = 4`")]
+
+
+def summary(fr):
+    print("| ray-traced scene (240x240) | M0+ fixed | M0+ float | M4F fixed | M4F float |")
+    print("|---|---|---|---|---|")
+    for key, name in SUMMARY:
+        v = fr.get(key)
+        if v is None:
+            sys.exit("rt_table.py: no %s `%s` rows (make bench)" % key)
+        cells = []
+        for t in TARGETS:
+            r = v.get(t)
+            p = psnr(r)
+            cells.append("" if r is None else "%.0f M" % (r["instructions"] / 1e6) + ("" if not p else ", exact" if p == "exact" else ", %s dB" % p))
+        print("| %s | %s |" % (name, " | ".join(cells)))
+    return 0
+
+
 def main():
-    rows = load(sys.argv[1] if len(sys.argv) > 1 else "build/bench/results.jsonl")
+    args = sys.argv[1:]
+    short = "--summary" in args
+    args = [a for a in args if a != "--summary"]
+    rows = load(args[0] if args else "build/bench/results.jsonl")
     fr = frame_rows(rows)
+    if not fr:
+        sys.exit("rt_table.py: no bench_raytracer rows (make bench)")
+    if short:
+        return summary(fr)
     print("| scene, variant | M0+ fixed | M0+ float | M4F fixed | M4F float | PSNR fixed / float |")
     print("|---|---|---|---|---|---|")
     for (what, variant), v in fr.items():

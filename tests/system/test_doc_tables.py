@@ -112,7 +112,7 @@ def main():
         for i, line in enumerate(lines):
             m = begin.match(line)
             if not m:
-                if "<!--" in line and "bench-table" in line:
+                if line.startswith("<!--") and "bench-table" in line:
                     check(line == "<!-- end bench-table -->", "%s:%d: a bench-table comment is well formed"
                           % (name, i + 1), line)
                 continue

@@ -8,8 +8,9 @@ configuration (tools/bench/bench.h), host_sim renders that configuration,
 and the two checksums must agree. With HOST_SIM alone, the rules on rows
 made here (host_sim's own checksums standing in for an image's): a row
 measured on its own frame, a variant named otherwise than KEY=VALUE, a
-scene's last frame of several; and the rows that must get no accuracy (the
-checksum of another variant's frame, no checksum, no options, a stale PSNR
+scene's last frame of several; the emulated RP2040's rows (their frame, the first of an
+averaged run; none for a built-in pattern); and the rows that must get no
+accuracy (the checksum of another variant's frame, no checksum, no options, a stale PSNR
 of an earlier run), accuracy.py then exiting 1. With benchmark images, each
 runs in qemu through tools/bench/run.py and accuracy.py, and every row must
 carry a frame_checksum, and every row that states its options a PSNR
@@ -78,6 +79,14 @@ def row(variant, scene, options, checksum, size=(48, 48), frames=1, **extra):
     return r
 
 
+def board(variant, scene, checksum, frame=0, **extra):
+    r = {"target": "rp2040-sim", "what": "scene:" + scene, "numeric": "fixed", "variant": variant, "cores": 2,
+         "frame": frame, "width": 48, "height": 48, "cycles": 1, "per": "frame", "num_frac": 16,
+         "frame_checksum": checksum}
+    r.update(extra)
+    return r
+
+
 def rules(host_sim, tmp):
     """accuracy.py on rows made here."""
     r11 = host_checksum(host_sim, "book/raster-11", "48x48", num_frac=16)
@@ -98,6 +107,11 @@ def rules(host_sim, tmp):
         row("perspective_step=8", "bench/cube-flat", "perspective_step=8", cube0, frames=3),
         {"target": "m0plus-qemu", "what": "op:num_mul", "numeric": "fixed", "variant": "x", "instructions": 9.0,
          "per": "op"},
+        # the emulated RP2040's rows (rp2040sim --json): the scene as written up to the row's frame
+        board("two-core", "bench/cube-flat", cube0, frames=10),
+        board("single-core", "bench/cube-flat", cube2, frame=2),
+        board("two-core-te", "bench/cube-flat", cube2),
+        board("two-core", "builtin/pattern", 12345),
     ]
     path = os.path.join(tmp, "rules.jsonl")
     with open(path, "w") as f:
@@ -124,14 +138,25 @@ def rules(host_sim, tmp):
     check("psnr" not in f0, "bench_accuracy_last_frame_only", json.dumps(f0))
     check("frame 2 " in by[("scene:bench/cube-flat", "default")].get("accuracy_of", ""),
           "bench_accuracy_of_names_frame", by[("scene:bench/cube-flat", "default")].get("accuracy_of"))
-    check(by[("op:num_mul", "x")] == rows[-1], "bench_accuracy_op_rows_untouched", json.dumps(by[("op:num_mul", "x")]))
+    check(by[("op:num_mul", "x")] == rows[-5], "bench_accuracy_op_rows_untouched", json.dumps(by[("op:num_mul", "x")]))
+    # a board row averaged over 10 frames is its first frame's (frame 0), not the 10th
+    b = by[("scene:bench/cube-flat", "two-core")]
+    check(not own_frame(b) and "frame 0 " in b.get("accuracy_of", ""), "bench_accuracy_board_first_frame",
+          json.dumps(b))
+    b = by[("scene:bench/cube-flat", "single-core")]
+    check(not own_frame(b) and "frame 2 " in b.get("accuracy_of", ""), "bench_accuracy_board_frame", json.dumps(b))
+    b = by[("scene:bench/cube-flat", "two-core-te")]
+    check("psnr" not in b and "another frame" in b.get("accuracy_error", ""), "bench_accuracy_board_other_frame",
+          json.dumps(b))
+    b = by[("scene:builtin/pattern", "two-core")]
+    check("psnr" not in b and "accuracy_error" not in b, "bench_accuracy_board_no_scene_file", json.dumps(b))
 
     # only rows measured on their own frames: exit 0
     good = [r for r in got if "accuracy_error" not in r]
     with open(path, "w") as f:
         f.writelines(json.dumps(r) + "\n" for r in good)
     p, again = accuracy(path, host_sim)
-    check(p.returncode == 0 and all(not own_frame(r) for r in again if "options" in r),
+    check(p.returncode == 0 and all(not own_frame(r) for r in again if "options" in r or "psnr" in r),
           "bench_accuracy_all_own_exit_0", "exit %d: %s" % (p.returncode, p.stderr.strip()))
 
     # bad input: one line, exit status 1, no traceback

@@ -7,7 +7,8 @@
 # bit for bit. F is the image's format: its core is built at the coarsest
 # NUM_FRAC among the scenes it links (fw_book_num_frac.h, mk/firmware.mk), so
 # a scene whose own format is finer (raster-11: Q12.19) is rendered by the
-# image, and here, at that coarser one. ~45 s of emulation (1.6 G cycles).
+# image, and here, at that coarser one. The --json row's frame_checksum
+# must be host_sim --stats' checksum of that frame. ~45 s of emulation (1.6 G cycles).
 # usage: test_rp2040sim_book.sh BUILD_DIR
 set -u
 b=${1:-build}
@@ -37,6 +38,15 @@ for s in $scenes; do
     echo "PASS $name"
   else
     echo "FAIL $name: $(cmp "$t/host-$i.raw" "$t/pico/frame-$i.raw" 2>&1 | head -n 1)"
+  fi
+  # the row's frame_checksum (tools/bench/accuracy.py measures board rows by it) is host_sim's
+  psum=$(sed -n "$((i + 1))p" "$t/json" | sed -n 's/.*"frame_checksum":\([0-9][0-9]*\).*/\1/p')
+  hsum=$("$b/host_sim" --scene "firmware/scenes/$s.scene" --size 240x240 --numeric fixed --num-frac "$frac" \
+         --panel none --stats 2>/dev/null | sed -n 's/.*"checksum":\([0-9][0-9]*\).*/\1/p' | tail -n 1)
+  if [ -n "$psum" ] && [ "$psum" = "$hsum" ]; then
+    echo "PASS rp2040sim_frame_checksum_$(basename "$s")"
+  else
+    echo "FAIL rp2040sim_frame_checksum_$(basename "$s"): rp2040sim '$psum', host_sim '$hsum'"
   fi
   i=$((i + 1))
 done

@@ -23,7 +23,11 @@ A row whose image rendered another frame than host_sim's (the checksums
 differ) gets no accuracy and `accuracy_error` instead, as does a row that
 states options but no checksum; each is named on stderr and the exit status
 is 1 (after the file is written). A row that states no options (a pass of
-the progressive display, the emulated RP2040's frames) gets no accuracy.
+the progressive display) gets no accuracy. A row of the emulated RP2040
+(tools/rp2040sim --json) whose `what` is a scene file gets the accuracy of
+that scene as written at the row's format, up to its `frame` (with
+--average, the run's first frame), checked against its frame_checksum the
+same way.
 Accuracy fields from an earlier run are dropped first. The file is
 rewritten atomically.
 usage: accuracy.py RESULTS.jsonl HOST_SIM [SCENES_DIR]
@@ -114,6 +118,20 @@ def row_name(l):
     return "%s %s %s %s %s" % (l.get("target"), l.get("what"), l.get("numeric"), l.get("variant"), l.get("per"))
 
 
+def board_spec(l, scenes):
+    """What an emulated RP2040 row (tools/rp2040sim --json) showed, when its
+    scene is a scene file: the scene as written (the board images compile
+    their scenes as written), up to the row's frame (with --average the
+    run's first, the one without the fps overlay). None: no accuracy."""
+    if l.get("target") != "rp2040-sim" or "frame_checksum" not in l:
+        return None
+    scene = l["what"][len("scene:"):]
+    if not os.path.exists(os.path.join(scenes, scene + ".scene")):
+        return None
+    return {"scene": scene, "options": "", "frames": int(l.get("frame", 0)) + 1, "width": l["width"],
+            "height": l["height"]}
+
+
 def describe(l, frames):
     opts = l["options"]
     return "%s %s, frame %d at %dx%d, vs double exact" % (
@@ -133,30 +151,31 @@ def add_accuracy(lines, host_sim, scenes, log=print):
         m = re.search(r"@(\d+)x(\d+)$", what)
         l.setdefault("width", int(m.group(1)) if m else 240)
         l.setdefault("height", int(m.group(2)) if m else 240)
-        if "options" not in l:
+        spec = board_spec(l, scenes) if "options" not in l else l
+        if spec is None:
             continue
         numeric = l.get("numeric", "fixed")
         err = None
         if not isinstance(l.get("frame_checksum"), int):
             err = "no frame_checksum: the frame it rendered is not known"
-        elif not isinstance(l.get("scene"), str) or not l["scene"]:
+        elif not isinstance(spec.get("scene"), str) or not spec["scene"]:
             err = "no scene"
         elif numeric not in ("fixed", "float", "double"):
             err = "numeric mode '%s' has no host build" % numeric
-        path = os.path.join(scenes, str(l.get("scene")) + ".scene")
+        path = os.path.join(scenes, str(spec.get("scene")) + ".scene")
         if not err and not os.path.exists(path):
             err = "%s: no such scene file" % path
         if err:
             l["accuracy_error"] = err
             errors.append("%s: %s" % (row_name(l), err))
             continue
-        frames = l.get("frames") or 1
+        frames = spec.get("frames") or 1
         frac = l.get("num_frac") if numeric == "fixed" else None
-        key = (path, numeric, l["width"], l["height"], l["options"], frac, frames, l.get("strip_rows"))
+        key = (path, numeric, l["width"], l["height"], spec["options"], frac, frames, spec.get("strip_rows"))
         if key not in cache:
             try:
-                cache[key] = compare_variant(host_sim, path, numeric, l["width"], l["height"], l["options"], frac,
-                                             frames, l.get("strip_rows"))
+                cache[key] = compare_variant(host_sim, path, numeric, l["width"], l["height"], spec["options"], frac,
+                                             frames, spec.get("strip_rows"))
             except (RuntimeError, ValueError, OSError) as e:
                 cache[key] = str(e) or type(e).__name__
         s = cache[key]
@@ -164,7 +183,7 @@ def add_accuracy(lines, host_sim, scenes, log=print):
             err = "host_sim: %s" % s
         elif s.get("checksum") != l["frame_checksum"]:
             err = "host_sim rendered another frame (checksum %s, the image's %d): %s" % (
-                s.get("checksum"), l["frame_checksum"], describe(l, frames))
+                s.get("checksum"), l["frame_checksum"], describe(spec, frames))
         if err:
             l["accuracy_error"] = err
             errors.append("%s: %s" % (row_name(l), err))
@@ -172,7 +191,7 @@ def add_accuracy(lines, host_sim, scenes, log=print):
         for k in FIELDS:
             l[k] = s.get(k)
         l["accuracy_checksum"] = s["checksum"]
-        l["accuracy_of"] = describe(l, frames)
+        l["accuracy_of"] = describe(spec, frames)
         measured += 1
     return measured, len(cache), errors
 

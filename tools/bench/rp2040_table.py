@@ -5,7 +5,10 @@ the rows `make bench-rp2040` appends to results.jsonl (target rp2040-sim,
 240x240): per scene, one core and two cores, the frame's cycles (from its
 begin line to its last pixel) and its rate (fps: from its begin line to the
 next frame's), or for a ray-traced benchmark frame its time in seconds; the
-XIP cache misses and the cycles waiting on the UART of the two-core frame.
+XIP cache misses and the cycles waiting on the UART of the two-core frame;
+the PSNR against double exact of the frame the board showed (the two-core
+image's, tools/bench/accuracy.py: of the frame whose checksum the row
+carries, the first of an averaged run).
 
 Usage: rp2040_table.py [build/bench/results.jsonl]
 """
@@ -46,8 +49,8 @@ def main(argv):
             if (r.get("target") == "rp2040-sim" and r.get("width", 240) == 240 and
                     r.get("variant") in ("single-core", "two-core")):
                 rows[(r["what"], r["cores"] if r["variant"] != "single-core" else 1)] = r
-    print("| scene | one core | two cores | XIP misses (two cores) | UART wait (two cores) |")
-    print("|---|---|---|---|---|")
+    print("| scene | one core | two cores | XIP misses (two cores) | UART wait (two cores) | PSNR |")
+    print("|---|---|---|---|---|---|")
     first = True
     for scene, note in SCENES:
         one, two = rows.get((f"scene:{scene}", 1)), rows.get((f"scene:{scene}", 2))
@@ -56,7 +59,10 @@ def main(argv):
         xip = f"{two['xip_misses']:,}" if two and two.get("xip_misses", 0) >= 100 else ""
         wait = two.get("uart_stall_cycles") if two else None
         wait = "" if wait is None else "0" if wait == 0 else f"{wait / 1e6:.2f} M cycles"
-        print(f"| {scene}{note} | {cell(one, scene, first)} | {cell(two, scene, False)} | {xip} | {wait} |")
+        shown = two if two is not None and "psnr" in two else one
+        psnr = "" if shown is None or "psnr" not in shown else "exact" if shown["psnr"] is None else \
+            f"{shown['psnr']:.1f} dB"
+        print(f"| {scene}{note} | {cell(one, scene, first)} | {cell(two, scene, False)} | {xip} | {wait} | {psnr} |")
         first = False
     # the cubes against the panel's scan: frames sent, shown whole, torn
     cubes = [s for s, _ in SCENES if s.startswith("bench/cube-")]

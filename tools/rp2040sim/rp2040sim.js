@@ -38,10 +38,15 @@
  *                       when its whole-screen preview was on the glass;
  *                       xip_misses, xip_stall_cycles: XIP cache misses in the
  *                       frame and the cycles they cost (xip.js), at
- *                       xip_fill_cycles per miss in boot2's read mode
+ *                       xip_fill_cycles per miss in boot2's read mode;
+ *                       frame_checksum: FNV-1a of the frame on the glass at
+ *                       its last pixel, RGB565 as little-endian bytes (as
+ *                       the benchmark images and host_sim --stats sum theirs)
  *   --average           with --json: one object per run of consecutive frames
  *                       of a scene instead, their mean (frame = the first,
- *                       frames = how many, cycles_min, cycles_max)
+ *                       frames = how many, cycles_min, cycles_max;
+ *                       frame_checksum of the first, the one drawn without
+ *                       the fps overlay)
  *   --numeric MODE      the image's numeric mode, for --json (default fixed)
  *   --variant TEXT      the image's method choices, for --json (default single-core)
  *   --core1-speed F     core 1 runs F times as fast as core 0 (default 1; tests:
@@ -177,6 +182,18 @@ function writePpm(file, px, w, h) {
     body[3 * i + 2] = (b << 3) | (b >> 2);
   }
   fs.writeFileSync(file, Buffer.concat([head, body]));
+}
+
+/* FNV-1a of a frame's RGB565 pixels as little-endian bytes (the sum the
+ * benchmark images print, tools/bench/startup.c bench_fnv565, and host_sim
+ * --stats gives). */
+function fnv565(px) {
+  let h = 2166136261;
+  for (let i = 0; i < px.length; i++) {
+    h = Math.imul(h ^ (px[i] & 0xff), 16777619);
+    h = Math.imul(h ^ (px[i] >>> 8), 16777619);
+  }
+  return h >>> 0;
 }
 
 function rawLE(px) {
@@ -420,6 +437,7 @@ function main() {
         uart_stall_cycles: Math.round(f.uart_stall_ns * cpuHz / 1e9), spi_bytes: f.spi_bytes,
         torn: f.passes > 1, scan_passes: f.passes, shown: f.shown, xip_misses: f.xip_misses, xip_stall_cycles: f.xip_stall_cycles, xip_fill_cycles: xip.fill.cycles,
         ...(f.first_ns !== undefined ? { first_image_us: Math.round(f.first_ns / 1000) } : {}),
+        frame_checksum: fnv565(f.px),
       }) + '\n');
     }
   });
@@ -437,7 +455,7 @@ function main() {
       const stall = r.list.reduce((a, f) => a + f.uart_stall_ns, 0) / n;
       process.stdout.write(JSON.stringify({
         target: 'rp2040-sim', what: `scene:${r.scene}`, numeric: o.numeric, variant: o.variant, cores,
-        frame: r.list[0].frame, frames: n, width: w, height: h,
+        frame: r.list[0].frame, frames: n, width: w, height: h, frame_checksum: fnv565(r.list[0].px),
         cycles: Math.round(ns * cpuHz / 1e9), per: 'frame',
         cycles_min: Math.round(Math.min(...cyc)), cycles_max: Math.round(Math.max(...cyc)),
         cpu_hz: cpuHz, ...(spiHz ? { spi_hz: spiHz } : {}), us: Math.round(ns / 1000), period_us: Math.round(period / 1000),

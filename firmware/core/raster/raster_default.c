@@ -322,9 +322,7 @@ static int screen_corners(const struct ras_ctx *rc, const struct ras_inst *ri, c
     for (int k = 0; k < n; k++) {
         /* back faces (culling off) are drawn with their corners reversed */
         const struct ras_cv *c = &poly[front ? k : n - 1 - k];
-        ras_project_sub(rc, c->p, &sv[k].x, &sv[k].y);
-        sv[k].iz = num_recip(c->p.z);
-        sv[k].depth = ras_depth32(rc->def.near_z, c->p.z);
+        ras_project_sub_depth(rc, c->p, &sv[k].x, &sv[k].y, &sv[k].iz, &sv[k].depth);
         for (int j = 0; j < na; j++) sv[k].a[j] = c->a[j];
     }
     return n;

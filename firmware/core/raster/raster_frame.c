@@ -153,14 +153,16 @@ static void instance_vertices(const struct ras_ctx *rc, uint16_t i, uint32_t k0,
         if (rc->def.pv) {
             struct ras_pv *q = &rc->def.pv[vb + k];
             int32_t sx, sy;
+            num iz;
+            uint32_t depth;
             q->sx = RAS_PV_OUT;
             if (ri->visible && ras_point_inside(rc, c)) {
-                ras_project_sub(rc, c, &sx, &sy);
+                ras_project_sub_depth(rc, c, &sx, &sy, &iz, &depth);
                 if (sx > INT16_MIN && sx <= INT16_MAX && sy >= INT16_MIN && sy <= INT16_MAX) {
                     q->sx = (int16_t)sx;
                     q->sy = (int16_t)sy;
-                    q->iz = num_recip(c.z);
-                    q->depth = ras_depth32(rc->def.near_z, c.z);
+                    q->iz = iz;
+                    q->depth = depth;
                 }
             }
         }

@@ -425,6 +425,9 @@ void ras_project_vertex(const struct ras_ctx *rc, vec3 v, num *x, num *y);
 /* The default path's projection: screen position of a camera-space point
  * inside the clip volume in sub-pixel units (y down). */
 void ras_project_sub(const struct ras_ctx *rc, vec3 p, int32_t *sx, int32_t *sy);
+/* ras_project_sub with num_recip(p.z) and ras_depth32(near_z, p.z), the
+ * same bits, the four divisions by p.z made as one (ras_div_depth). */
+void ras_project_sub_depth(const struct ras_ctx *rc, vec3 p, int32_t *sx, int32_t *sy, num *iz, uint32_t *depth);
 /* Scene canvas to render canvas (2D primitives): v*h/canvas_h, one rounding. */
 num ras_scale_canvas(const struct ras_ctx *rc, num v);
 /* A model-space corner normal in camera space (the instance's rotations). */

@@ -111,9 +111,9 @@ static void instance_head(struct ras_ctx *rc, uint16_t i, uint16_t frame, uint32
 static vec3 cam_point(const struct ras_ctx *rc, const struct ras_instance *in, const struct ras_inst *ri, vec3 p)
 {
     const struct ras_options *o = &rc->s->ras;
-    if (o->instance_transform) return m4_mul_point(&ri->m, p);
+    if (o->instance_transform) return ras_mul_point(&ri->m, p);
     vec3 c = v3_add(p, in->position);
-    return o->camera_transform ? m4_mul_point(&rc->cam, c) : c;
+    return o->camera_transform ? ras_mul_point(&rc->cam, c) : c;
 }
 
 vec3 ras_cam_vertex_again(const struct ras_ctx *rc, const struct ras_instance *in, const struct ras_inst *ri,

@@ -140,6 +140,21 @@ uint32_t ras_depth32(num near_z, num z)
     return RAS_DIV64_32 ? num_udiv64_32(n, (uint32_t)z, 0) : (uint32_t)(n / (uint32_t)z);
 }
 
+vec3 ras_mul_point(const mat4 *m, vec3 p)
+{
+    /* vec.c's m4_mul_point: each row summed from column 0, the translation
+     * last (its first sum 0 + a product is the product: num_mul never
+     * gives INT32_MIN) */
+    vec3 r;
+    r.x = num_add(num_add(num_add(num_mul(m->m[0][0], p.x), num_mul(m->m[0][1], p.y)), num_mul(m->m[0][2], p.z)),
+                  m->m[0][3]);
+    r.y = num_add(num_add(num_add(num_mul(m->m[1][0], p.x), num_mul(m->m[1][1], p.y)), num_mul(m->m[1][2], p.z)),
+                  m->m[1][3]);
+    r.z = num_add(num_add(num_add(num_mul(m->m[2][0], p.x), num_mul(m->m[2][1], p.y)), num_mul(m->m[2][2], p.z)),
+                  m->m[2][3]);
+    return r;
+}
+
 /* wnum_div(a, z) for z > 0 by the prepared z: its path for a numerator
  * |a| 2^F below 2^63 and a quotient that does not saturate (the same
  * rounding, halves away from zero), wnum_div itself otherwise. */
@@ -296,6 +311,8 @@ num ras_project(num x, num d, num z, num cw, num vw)
     return num_div(x * d * cw, z * vw);
 #endif
 }
+
+vec3 ras_mul_point(const mat4 *m, vec3 p) { return m4_mul_point(m, p); }
 
 void ras_div_depth(num x, num y, num z, num unproj, num near_z, num *X, num *Y, num *iz, uint32_t *depth)
 {

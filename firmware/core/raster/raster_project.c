@@ -121,5 +121,5 @@ num ras_scale_canvas(const struct ras_ctx *rc, num v)
 /* A model-space corner normal in camera space (the instance's rotations). */
 vec3 ras_corner_normal(const struct ras_inst *ri, vec3 n)
 {
-    return m4_mul_point(&ri->nmat, n);
+    return ras_mul_point(&ri->nmat, n);
 }

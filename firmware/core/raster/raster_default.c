@@ -202,7 +202,8 @@ void ras_tri_cache(struct ras_ctx *rc, const struct ras_instance *in, const stru
 static int resume_kept(struct ras_ctx *rc, uint32_t gi, struct ras_fast_state **slot)
 {
     *slot = NULL;
-    if (!FW_FEATURE_RAS_FAST || !rc->fast.keep || rc->cur.depth_only || rc->cur.depth_func != RAS_DEPTH_LESS_WRITE)
+    /* (keep_on: slots there, nkeep > 0) */
+    if (!FW_FEATURE_RAS_FAST || !rc->fast.keep_on || rc->cur.depth_only || rc->cur.depth_func != RAS_DEPTH_LESS_WRITE)
         return 0;
     *slot = &rc->fast.keep[gi & (rc->fast.nkeep - 1u)];
     uint32_t drawn;

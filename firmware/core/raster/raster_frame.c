@@ -393,6 +393,12 @@ int raster_frame_finish(void *work)
     if (rc->owner) return -1;
     rc->tris_in = rc->part_in[0] + rc->part_in[1];
     rc->tris_drawn = rc->part_drawn[0] + rc->part_drawn[1];
+    /* a strip's triangles take slots i mod nkeep: with many more of them
+     * than slots, a set-up kept for the next strip is all but never found
+     * there, and keeping it costs a copy (on: at most 2 nkeep triangles a
+     * strip, strips counted as h / strip_rows rounded up) */
+    rc->fast.keep_on = (uint8_t)(rc->fast.nkeep && (uint64_t)rc->tris_drawn * rc->strip_rows <=
+                                                       (uint64_t)2u * rc->fast.nkeep * (rc->h + rc->strip_rows - 1u));
     if (rc->bins.on) bin_triangles(rc);
     if (FW_FEATURE_RAS_FAST_PHONG && rc->fast.phong) ras_fphong_frame(rc);
     if (FW_FEATURE_RAS_CH15) ras_ch15_frame(rc);

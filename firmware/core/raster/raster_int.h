@@ -135,6 +135,9 @@ struct ras_fast {
     uint8_t persp_log2;      /* a reciprocal every 2^persp_log2 pixels */
     uint8_t phong;           /* Phong by fast Phong (lighting = fast) */
     uint16_t nkeep;          /* kept set-ups, a power of two (triangle i in slot i % nkeep) */
+    uint8_t keep_on;         /* the slots used this frame: its strips draw at most
+                                2 nkeep triangles each on average (raster_frame_finish);
+                                more, and the next strip's triangles take the slots first */
     struct ras_tex565 *tex565;   /* per texture */
     uint8_t *tex_mem;            /* the RGB565 copies, texture by texture */
     struct ras_fast_state *keep; /* triangle set-ups kept between strips */

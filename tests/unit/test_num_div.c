@@ -8,7 +8,8 @@
  * 128-bit division, the product and sum of wide integers with a clamp after
  * every step (the former v3_dot_wide). Checked:
  *   num_rcp16       its two bounds on every value of dn >> 9 (exhaustive)
- *   num_udiv64_32   quotient and remainder, every divisor magnitude
+ *   num_udiv64_32   quotient and remainder, every divisor magnitude (and
+ *                   num_udiv64_32_pre, by a prepared divisor, alike)
  *   num_div, num_recip, num_from_ratio, num_div_int, wnum_div
  *                   correctly rounded (halves away from 0), saturation and
  *                   the saturation counter as the definitions give them
@@ -65,7 +66,7 @@ static void test_rcp16(void)
 
 static void test_udiv(void)
 {
-    long bad = 0;
+    long bad = 0, badp = 0;
     uint64_t bn = 0;
     uint32_t bd = 0;
     for (long i = 0; i < 4000000; i++) {
@@ -83,13 +84,21 @@ static void test_udiv(void)
         if ((n >> 32) >= d) n = ((uint64_t)d << 32) - 1;
         uint32_t r, q = num_udiv64_32(n, d, &r);
         if (q != n / d || r != n % d || num_udiv64_32(n, d, 0) != q) { bad++; bn = n; bd = d; }
+        const struct num_udiv_pre p = num_udiv_pre_make(d);
+        q = num_udiv64_32_pre(n, &p, &r);
+        if (q != n / d || r != n % d || num_udiv64_32_pre(n, &p, 0) != q) { badp++; bn = n; bd = d; }
     }
     for (uint32_t d = 1; d < 70000; d++) { /* small divisors, largest quotients */
         uint64_t n = ((uint64_t)d << 32) - 1 - (rng() % d);
         uint32_t r, q = num_udiv64_32(n, d, &r);
         if (q != n / d || r != n % d) { bad++; bn = n; bd = d; }
+        const struct num_udiv_pre p = num_udiv_pre_make(d);
+        q = num_udiv64_32_pre(n, &p, &r);
+        if (q != n / d || r != n % d) { badp++; bn = n; bd = d; }
     }
     check(bad == 0, "num_udiv64_32_matches_division", "%ld mismatches, e.g. %llu / %u", bad,
+          (unsigned long long)bn, bd);
+    check(badp == 0, "num_udiv64_32_pre_matches_division", "%ld mismatches, e.g. %llu / %u", badp,
           (unsigned long long)bn, bd);
 }
 

@@ -148,6 +148,47 @@ static inline int num_clz64(uint64_t x)
  * stepped to the exact value by its remainder. */
 uint32_t num_udiv64_32(uint64_t n, uint32_t d, uint32_t *rem);
 
+/* A divisor d != 0 prepared for num_udiv64_32_pre, which divides by it
+ * with two products instead of a division: dn = d 2^s in [2^31, 2^32) and
+ * v = floor((2^64 - 1) / dn) - 2^32 (one num_udiv64_32: the numerator
+ * (2^32 - 1 - dn) 2^32 + 2^32 - 1 has its high word below dn). */
+struct num_udiv_pre { uint32_t d, dn, v; uint8_t s; };
+static inline struct num_udiv_pre num_udiv_pre_make(uint32_t d)
+{
+    struct num_udiv_pre p;
+    p.d = d;
+    p.s = (uint8_t)num_clz32(d);
+    p.dn = d << p.s;
+    p.v = num_udiv64_32((uint64_t)~p.dn << 32 | 0xFFFFFFFFu, p.dn, 0);
+    return p;
+}
+
+/* num_udiv64_32(n, p->d, rem), the same quotient and remainder (n <
+ * d 2^32). With N = n 2^s = Nh 2^32 + Nl and V = 2^32 + v <= 2^64 / dn,
+ * the estimate q = floor(Nh V / 2^32) = Nh + mulhi(Nh, v) is never above
+ * N / dn, and N / dn - Nh V / 2^32 = Nl / dn + Nh (2^64 / dn - V) / 2^32
+ * < 2 + (1 + 2^-31) (Nl < 2^32 <= 2 dn; 2^64 / dn - V < 1 + 1 / dn;
+ * Nh < 2^32): q is at most 3 below the quotient, which the remainder
+ * N - q dn (< 4 dn < 2^34) steps up to. */
+static inline uint32_t num_udiv64_32_pre(uint64_t n, const struct num_udiv_pre *p, uint32_t *rem)
+{
+    /* in 32-bit halves (ARMv6-M has no 64-bit shifts or compares):
+     * N = nh 2^32 + nl, the remainder rh 2^32 + rl */
+    const uint32_t s = p->s, dn = p->dn, hi = (uint32_t)(n >> 32), lo = (uint32_t)n;
+    const uint32_t nh = s ? hi << s | lo >> (32 - s) : hi, nl = lo << s;
+    uint32_t q = nh + num_mulhi32(nh, p->v);
+    const uint64_t qd = num_umul32(q, dn);
+    const uint32_t ql = (uint32_t)qd;
+    uint32_t rl = nl - ql, rh = nh - (uint32_t)(qd >> 32) - (nl < ql);
+    while (rh || rl >= dn) {
+        rh -= rl < dn;
+        rl -= dn;
+        q++;
+    }
+    if (rem) *rem = rl >> s;
+    return q;
+}
+
 /* For dn in [2^31, 2^32): rh with 2^32 + rh 2^16 <= 2^64 / dn <
  * 2^32 + rh 2^16 + 2^17 (rh < 2^16; depends on dn >> 9 only). Table seed
  * and one Newton-Raphson step in 32x32->32 multiplies. */

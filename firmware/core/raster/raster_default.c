@@ -202,7 +202,8 @@ void ras_tri_cache(struct ras_ctx *rc, const struct ras_instance *in, const stru
 static int resume_kept(struct ras_ctx *rc, uint32_t gi, struct ras_fast_state **slot)
 {
     *slot = NULL;
-    if (!FW_FEATURE_RAS_FAST || !rc->fast.keep || rc->cur.depth_only || rc->cur.depth_func != RAS_DEPTH_LESS_WRITE)
+    /* (keep_on: slots there, nkeep > 0) */
+    if (!FW_FEATURE_RAS_FAST || !rc->fast.keep_on || rc->cur.depth_only || rc->cur.depth_func != RAS_DEPTH_LESS_WRITE)
         return 0;
     *slot = &rc->fast.keep[gi & (rc->fast.nkeep - 1u)];
     uint32_t drawn;
@@ -322,9 +323,7 @@ static int screen_corners(const struct ras_ctx *rc, const struct ras_inst *ri, c
     for (int k = 0; k < n; k++) {
         /* back faces (culling off) are drawn with their corners reversed */
         const struct ras_cv *c = &poly[front ? k : n - 1 - k];
-        ras_project_sub(rc, c->p, &sv[k].x, &sv[k].y);
-        sv[k].iz = num_recip(c->p.z);
-        sv[k].depth = ras_depth32(rc->def.near_z, c->p.z);
+        ras_project_sub_depth(rc, c->p, &sv[k].x, &sv[k].y, &sv[k].iz, &sv[k].depth);
         for (int j = 0; j < na; j++) sv[k].a[j] = c->a[j];
     }
     return n;

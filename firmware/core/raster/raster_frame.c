@@ -111,9 +111,9 @@ static void instance_head(struct ras_ctx *rc, uint16_t i, uint16_t frame, uint32
 static vec3 cam_point(const struct ras_ctx *rc, const struct ras_instance *in, const struct ras_inst *ri, vec3 p)
 {
     const struct ras_options *o = &rc->s->ras;
-    if (o->instance_transform) return m4_mul_point(&ri->m, p);
+    if (o->instance_transform) return ras_mul_point(&ri->m, p);
     vec3 c = v3_add(p, in->position);
-    return o->camera_transform ? m4_mul_point(&rc->cam, c) : c;
+    return o->camera_transform ? ras_mul_point(&rc->cam, c) : c;
 }
 
 vec3 ras_cam_vertex_again(const struct ras_ctx *rc, const struct ras_instance *in, const struct ras_inst *ri,
@@ -153,14 +153,16 @@ static void instance_vertices(const struct ras_ctx *rc, uint16_t i, uint32_t k0,
         if (rc->def.pv) {
             struct ras_pv *q = &rc->def.pv[vb + k];
             int32_t sx, sy;
+            num iz;
+            uint32_t depth;
             q->sx = RAS_PV_OUT;
             if (ri->visible && ras_point_inside(rc, c)) {
-                ras_project_sub(rc, c, &sx, &sy);
+                ras_project_sub_depth(rc, c, &sx, &sy, &iz, &depth);
                 if (sx > INT16_MIN && sx <= INT16_MAX && sy >= INT16_MIN && sy <= INT16_MAX) {
                     q->sx = (int16_t)sx;
                     q->sy = (int16_t)sy;
-                    q->iz = num_recip(c.z);
-                    q->depth = ras_depth32(rc->def.near_z, c.z);
+                    q->iz = iz;
+                    q->depth = depth;
                 }
             }
         }
@@ -391,6 +393,12 @@ int raster_frame_finish(void *work)
     if (rc->owner) return -1;
     rc->tris_in = rc->part_in[0] + rc->part_in[1];
     rc->tris_drawn = rc->part_drawn[0] + rc->part_drawn[1];
+    /* a strip's triangles take slots i mod nkeep: with many more of them
+     * than slots, a set-up kept for the next strip is all but never found
+     * there, and keeping it costs a copy (on: at most 2 nkeep triangles a
+     * strip, strips counted as h / strip_rows rounded up) */
+    rc->fast.keep_on = (uint8_t)(rc->fast.nkeep && (uint64_t)rc->tris_drawn * rc->strip_rows <=
+                                                       (uint64_t)2u * rc->fast.nkeep * (rc->h + rc->strip_rows - 1u));
     if (rc->bins.on) bin_triangles(rc);
     if (FW_FEATURE_RAS_FAST_PHONG && rc->fast.phong) ras_fphong_frame(rc);
     if (FW_FEATURE_RAS_CH15) ras_ch15_frame(rc);

@@ -135,6 +135,9 @@ struct ras_fast {
     uint8_t persp_log2;      /* a reciprocal every 2^persp_log2 pixels */
     uint8_t phong;           /* Phong by fast Phong (lighting = fast) */
     uint16_t nkeep;          /* kept set-ups, a power of two (triangle i in slot i % nkeep) */
+    uint8_t keep_on;         /* the slots used this frame: its strips draw at most
+                                2 nkeep triangles each on average (raster_frame_finish);
+                                more, and the next strip's triangles take the slots first */
     struct ras_tex565 *tex565;   /* per texture */
     uint8_t *tex_mem;            /* the RGB565 copies, texture by texture */
     struct ras_fast_state *keep; /* triangle set-ups kept between strips */
@@ -425,6 +428,9 @@ void ras_project_vertex(const struct ras_ctx *rc, vec3 v, num *x, num *y);
 /* The default path's projection: screen position of a camera-space point
  * inside the clip volume in sub-pixel units (y down). */
 void ras_project_sub(const struct ras_ctx *rc, vec3 p, int32_t *sx, int32_t *sy);
+/* ras_project_sub with num_recip(p.z) and ras_depth32(near_z, p.z), the
+ * same bits, the four divisions by p.z made as one (ras_div_depth). */
+void ras_project_sub_depth(const struct ras_ctx *rc, vec3 p, int32_t *sx, int32_t *sy, num *iz, uint32_t *depth);
 /* Scene canvas to render canvas (2D primitives): v*h/canvas_h, one rounding. */
 num ras_scale_canvas(const struct ras_ctx *rc, num v);
 /* A model-space corner normal in camera space (the instance's rotations). */

@@ -140,6 +140,59 @@ uint32_t ras_depth32(num near_z, num z)
     return RAS_DIV64_32 ? num_udiv64_32(n, (uint32_t)z, 0) : (uint32_t)(n / (uint32_t)z);
 }
 
+vec3 ras_mul_point(const mat4 *m, vec3 p)
+{
+    /* vec.c's m4_mul_point: each row summed from column 0, the translation
+     * last (its first sum 0 + a product is the product: num_mul never
+     * gives INT32_MIN) */
+    vec3 r;
+    r.x = num_add(num_add(num_add(num_mul(m->m[0][0], p.x), num_mul(m->m[0][1], p.y)), num_mul(m->m[0][2], p.z)),
+                  m->m[0][3]);
+    r.y = num_add(num_add(num_add(num_mul(m->m[1][0], p.x), num_mul(m->m[1][1], p.y)), num_mul(m->m[1][2], p.z)),
+                  m->m[1][3]);
+    r.z = num_add(num_add(num_add(num_mul(m->m[2][0], p.x), num_mul(m->m[2][1], p.y)), num_mul(m->m[2][2], p.z)),
+                  m->m[2][3]);
+    return r;
+}
+
+/* wnum_div(a, z) for z > 0 by the prepared z: its path for a numerator
+ * |a| 2^F below 2^63 and a quotient that does not saturate (the same
+ * rounding, halves away from zero), wnum_div itself otherwise. */
+static num wdiv_pre(wnum a, num z, const struct num_udiv_pre *p)
+{
+    const uint64_t ua = a < 0 ? (uint64_t)0 - (uint64_t)a : (uint64_t)a;
+    if (ua < ((uint64_t)1 << (63 - NUM_FRAC))) {
+        const uint64_t n = ua << NUM_FRAC;
+        if ((n >> 32) < p->d) {
+            uint32_t rm;
+            const uint32_t q = num_udiv64_32_pre(n, p, &rm);
+            if (q < (uint32_t)INT32_MAX || (q == (uint32_t)INT32_MAX && rm < p->d - rm)) {
+                const num r = (num)q + (rm >= p->d - rm);
+                return a < 0 ? -r : r;
+            }
+        }
+    }
+    return wnum_div(a, wnum_from_num(z));
+}
+
+void ras_div_depth(num x, num y, num z, num unproj, num near_z, num *X, num *Y, num *iz, uint32_t *depth)
+{
+    if (z <= 0) {
+        *X = wnum_div(num_mul_wide(x, unproj), wnum_from_num(z));
+        *Y = wnum_div(num_mul_wide(y, unproj), wnum_from_num(z));
+        *iz = num_recip(z);
+        *depth = ras_depth32(near_z, z);
+        return;
+    }
+    const struct num_udiv_pre p = num_udiv_pre_make((uint32_t)z);
+    *X = wdiv_pre(num_mul_wide(x, unproj), z, &p);
+    *Y = wdiv_pre(num_mul_wide(y, unproj), z, &p);
+    *iz = wdiv_pre(wnum_from_num(NUM_ONE), z, &p);   /* num_div(1, z): wnum_div's rounding of 2^F 2^F / z */
+    /* 0 < near < z: the quotient fits 32 bits */
+    *depth = near_z <= 0 || z <= near_z ? ras_depth32(near_z, z)
+                                        : num_udiv64_32_pre((uint64_t)(uint32_t)near_z << 32, &p, 0);
+}
+
 /* Corners a, b, c inside every plane, at depths z >= near: the
  * camera-space test's value f = -a . ((b - a) x (c - a)) is, exactly,
  * D = A_e z_a z_b z_c / (S^2 u^2), A_e the exact projection's doubled area
@@ -257,6 +310,16 @@ num ras_project(num x, num d, num z, num cw, num vw)
 #else
     return num_div(x * d * cw, z * vw);
 #endif
+}
+
+vec3 ras_mul_point(const mat4 *m, vec3 p) { return m4_mul_point(m, p); }
+
+void ras_div_depth(num x, num y, num z, num unproj, num near_z, num *X, num *Y, num *iz, uint32_t *depth)
+{
+    *X = wnum_div(num_mul_wide(x, unproj), wnum_from_num(z));
+    *Y = wnum_div(num_mul_wide(y, unproj), wnum_from_num(z));
+    *iz = num_recip(z);
+    *depth = ras_depth32(near_z, z);
 }
 
 uint32_t ras_depth32(num near_z, num z)

@@ -64,6 +64,17 @@ int64_t ras_floordiv(int64_t n, int64_t d, int64_t *rem);
  * Fixed point: exact from the Q15.16 inputs. float: 24 significant bits. */
 uint32_t ras_depth32(num near_z, num z);
 
+/* m4_mul_point(m, p), the same bits; fixed point with num.h's inline
+ * operations (vec.c's are calls: nine products and twelve sums a point). */
+vec3 ras_mul_point(const mat4 *m, vec3 p);
+
+/* The divisions of a vertex's projection by its depth z > 0: X and Y =
+ * x * unproj / z and y * unproj / z with the products kept wide (as
+ * ras_mul_div), iz = 1/z (num_recip) and depth = ras_depth32(near_z, z),
+ * the same bits as those calls. Fixed point divides once: z prepared as a
+ * reciprocal (num_udiv_pre) serves the four. */
+void ras_div_depth(num x, num y, num z, num unproj, num near_z, num *X, num *Y, num *iz, uint32_t *depth);
+
 /* A front face known from the screen: triangle a b c of three projected
  * corners (inside every plane, z >= near) whose doubled area on screen
  * A (sub-pixel units) exceeds 2L + 24 + g (iz_b + 1)(iz_c + 1) 2^-2F (L:

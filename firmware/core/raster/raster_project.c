@@ -89,16 +89,26 @@ num ras_mul_div(num x, num z, num unproj)
 
 /* Screen position of a camera-space point inside the clip volume, in
  * sub-pixel units (y down): the default path's projection. */
-void ras_project_sub(const struct ras_ctx *rc, vec3 p, int32_t *sx, int32_t *sy)
+static void project_sub_xy(const struct ras_ctx *rc, num X, num Y, int32_t *sx, int32_t *sy)
 {
-    num X = ras_mul_div(p.x, rc->unproj, p.z);
-    num Y = ras_mul_div(p.y, rc->unproj, p.z);
     num fx = num_add(num_from_int(rc->w / 2), X);
     num fy = num_sub(num_from_int(rc->h / 2), Y);
     int sb = rc->def.sub_bits;
     /* integer and fraction apart, so Q15.16 never holds pixels << 8 */
     *sx = (int32_t)((uint32_t)num_floor_int(fx) << sb) + num_floor_int(num_add(num_mul_int(num_frac(fx), 1 << sb), NUM_HALF));
     *sy = (int32_t)((uint32_t)num_floor_int(fy) << sb) + num_floor_int(num_add(num_mul_int(num_frac(fy), 1 << sb), NUM_HALF));
+}
+
+void ras_project_sub(const struct ras_ctx *rc, vec3 p, int32_t *sx, int32_t *sy)
+{
+    project_sub_xy(rc, ras_mul_div(p.x, rc->unproj, p.z), ras_mul_div(p.y, rc->unproj, p.z), sx, sy);
+}
+
+void ras_project_sub_depth(const struct ras_ctx *rc, vec3 p, int32_t *sx, int32_t *sy, num *iz, uint32_t *depth)
+{
+    num X, Y;
+    ras_div_depth(p.x, p.y, p.z, rc->unproj, rc->def.near_z, &X, &Y, iz, depth);
+    project_sub_xy(rc, X, Y, sx, sy);
 }
 
 /* Scene canvas to render canvas: v*h/canvas_h with one rounding (exact at
@@ -111,5 +121,5 @@ num ras_scale_canvas(const struct ras_ctx *rc, num v)
 /* A model-space corner normal in camera space (the instance's rotations). */
 vec3 ras_corner_normal(const struct ras_inst *ri, vec3 n)
 {
-    return m4_mul_point(&ri->nmat, n);
+    return ras_mul_point(&ri->nmat, n);
 }

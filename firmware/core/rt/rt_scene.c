@@ -54,6 +54,11 @@ void rt_frame_constants(struct rt_state *rt)
         oc->ccam = rt_ccam_make(&oc->cs, &cam);
         oc->qs = rt_qsphere_make(o->radius);
         oc->rrcp = num_recip_make(o->radius);
+        oc->rpow2 = -1;
+#if NUM_MODE == NUM_MODE_FIXED
+        for (int k = 0; k < 31 - NUM_FRAC; k++)
+            if (o->radius == (num)(NUM_ONE_RAW << k)) oc->rpow2 = (int8_t)k;
+#endif
         if (o->shape == RT_SPHERE) {
             oc->co_cam = v3_sub(rt->cam_pos, o->center);
             if (rt->book)

@@ -140,6 +140,8 @@ struct rt_state {
     struct rt_ray *light_ray;  /* per light: directional lights' shadow-ray direction (rt_light_constants) */
     num *light_len;            /* per light: |L| of directional lights */
     struct num_divisor *light_div; /* per light: the same, as a divisor */
+    uint16_t amb_k;            /* the lights before the first non-ambient one ... */
+    num amb_i;                 /* ... and their intensities' sum, in the lighting's order */
     rgb *row_c;                /* one row of colours (subsampling/adaptive) */
     int16_t *row_item;
     num *col_x;                /* viewport x of each column's centre */

@@ -37,17 +37,23 @@ num num_mul_recip(num a, const struct num_recip *v)
 
 num v3_div_len(num x, vec3 v)
 {
-    uint32_t u[3];
-    int sh = num_prescale3(v, u);
-    if (u[0] == 0 && u[1] == 0 && u[2] == 0) return num_div(x, NUM_ZERO);
+    uint32_t u0 = uabs32(v.x), u1 = uabs32(v.y), u2 = uabs32(v.z);
+    uint32_t mx = u0 > u1 ? u0 : u1;
+    if (u2 > mx) mx = u2;
+    if (mx == 0) return num_div(x, NUM_ZERO);
     if (x == 0) return 0;
-    uint64_t s = num_sumsq3(u);                       /* in [2^58, 3 * 2^60) */
+    /* num_prescale3's shift, unrolled: the largest in [2^29, 2^30) */
+    int sh = num_clz32(mx) - 2;
+    if (sh >= 0) { u0 <<= sh; u1 <<= sh; u2 <<= sh; }
+    else { sh = -1; u0 >>= 1; u1 >>= 1; u2 >>= 1; }
+    uint64_t s = num_umul32(u0, u0) + num_umul32(u1, u1) + num_umul32(u2, u2);   /* in [2^58, 3 * 2^60) */
     /* t = s 4^z in [2^62, 2^64); y = num_rsqrt_q30(t / 2^32) ~ 2^46 / sqrt(t / 2^32)
      * (2^-17.4), one more Newton step as num_rsqrt takes it (2^-27 with the
      * truncations). 1 / sqrt(s) = y 2^(z - 62), so x / |v| in raw units is
      * x 2^(F + sh) / sqrt(s) = x y 2^(F + sh + z - 62); the shift is >= 11. */
-    int z = num_clz64(s) >> 1;
-    uint32_t xh = (uint32_t)((s << (2 * z)) >> 32);
+    uint32_t sh32 = (uint32_t)(s >> 32);             /* >= 2^26 */
+    int z = sh32 >> 30 ? 0 : sh32 >> 28 ? 1 : 2;     /* num_clz64(s) >> 1 */
+    uint32_t xh = z ? sh32 << (2 * z) | (uint32_t)s >> (32 - 2 * z) : sh32;
     uint32_t y = num_rsqrt_q30(xh);
     uint32_t w = num_mulhi32(xh, num_mulhi32(y, y));
     if (w <= (1u << 28)) y += num_mulhi32(y, ((1u << 28) - w) << 3);

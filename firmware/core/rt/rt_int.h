@@ -83,6 +83,8 @@ struct rt_obj_cache {
     struct rt_ccam ccam;  /* ... for the camera's rays (rt_num.h) */
     struct rt_qsphere qs; /* the sphere for the robust test's quadratic (rt_num.h) */
     struct num_recip rrcp;   /* radius, for the normals (P - C) / r */
+    int8_t rpow2;         /* fixed point: s >= 0 when the radius is 2^s exactly (rrcp's
+                           * quotient is then P - C rounded by a shift), else -1 */
     /* exact primary directions (x vh, y vh, d h) from the camera: CO x D
      * and -CO.D at 2F fraction bits are linear in x, so a row's part is
      * kept (row px_row; -1: none): -CO.D = px_b + -co.x (x vh), (CO x D).x
@@ -138,6 +140,8 @@ struct rt_state {
     struct rt_ray *light_ray;  /* per light: directional lights' shadow-ray direction (rt_light_constants) */
     num *light_len;            /* per light: |L| of directional lights */
     struct num_divisor *light_div; /* per light: the same, as a divisor */
+    uint16_t amb_k;            /* the lights before the first non-ambient one ... */
+    num amb_i;                 /* ... and their intensities' sum, in the lighting's order */
     rgb *row_c;                /* one row of colours (subsampling/adaptive) */
     int16_t *row_item;
     num *col_x;                /* viewport x of each column's centre */

@@ -839,6 +839,17 @@ void rt_row_interval(const struct rt_state *rt, int16_t obj, int16_t *e)
     }
 }
 
+#if NUM_MODE == NUM_MODE_FIXED
+/* a / 2^s, s > 0, |a| rounded half up and signed as a: num_mul_recip's
+ * result for the divisor 2^s (multiplier 2^31, shift 31 + s) */
+static inline num rt_div_pow2(num a, int s)
+{
+    uint32_t u = a < 0 ? 0u - (uint32_t)a : (uint32_t)a;
+    uint32_t q = ((u >> (s - 1)) + 1u) >> 1;
+    return a < 0 ? -(num)q : (num)q;
+}
+#endif
+
 vec3 rt_hit_normal(const struct rt_state *rt, const struct rt_hit *hit, const vec3 *p)
 {
     const struct rt_object *o = &rt->s->objects[hit->surf];
@@ -851,7 +862,19 @@ vec3 rt_hit_normal(const struct rt_state *rt, const struct rt_hit *hit, const ve
             /* divide by r: 1/r in the format is too coarse in Q15.16 for
              * r = 5000; by its 31-bit reciprocal (num_mul_recip: within
              * half an ulp plus 2^-31 of the quotient) */
-            const struct num_recip *r = &rt->oc[hit->surf].rrcp;
+            const struct rt_obj_cache *oc = &rt->oc[hit->surf];
+#if NUM_MODE == NUM_MODE_FIXED
+            if (oc->rpow2 >= 0) {
+                /* r = 2^s exactly: num_mul_recip's multiplier is 2^31, so its
+                 * quotient is |a| / 2^s rounded half up, signed as a (|a| <
+                 * 2^31: v3_sub never gives INT32_MIN); s = 0 leaves P - C */
+                if (oc->rpow2 > 0)
+                    n = v3_make(rt_div_pow2(n.x, oc->rpow2), rt_div_pow2(n.y, oc->rpow2),
+                                rt_div_pow2(n.z, oc->rpow2));
+                return hit->flip ? v3_neg(n) : n;
+            }
+#endif
+            const struct num_recip *r = &oc->rrcp;
             n = v3_make(num_mul_recip(n.x, r), num_mul_recip(n.y, r), num_mul_recip(n.z, r));
         }
     } else if (o->shape == RT_PLANE) {

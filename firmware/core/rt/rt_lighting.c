@@ -42,7 +42,7 @@ num rt_compute_lighting(struct rt_state *rt, vec3 p, vec3 n, int unit_normal, ve
 {
     const struct scene *sc = rt->s;
     const struct rt_options *o = &sc->rt;
-    num i = NUM_ZERO;
+    num i = rt->amb_i;   /* the leading ambient lights (rt_light_constants) */
     /* |N| and |V| as the demos compute them, each once and only if a term
      * needs it */
     num len_n = NUM_ZERO, len_v = NUM_ZERO;
@@ -54,7 +54,7 @@ num rt_compute_lighting(struct rt_state *rt, vec3 p, vec3 n, int unit_normal, ve
         len_v = v3_len(v);
         have_n = have_v = 1;
     }
-    for (uint16_t k = 0; k < sc->nlights; k++) {
+    for (uint16_t k = rt->amb_k; k < sc->nlights; k++) {
         const struct scene_light *lt = &sc->lights[k];
         if (lt->type == LIGHT_AMBIENT) {
             i = num_add(i, lt->intensity);

@@ -31,6 +31,12 @@ static void item_bound(const struct rt_state *rt, int16_t item, vec3 *c, num *r)
 void rt_light_constants(struct rt_state *rt)
 {
     const struct scene *s = rt->s;
+    /* rt_compute_lighting starts from the leading ambient lights' sum (the
+     * same num_add steps from zero) */
+    rt->amb_k = 0;
+    rt->amb_i = NUM_ZERO;
+    while (rt->amb_k < s->nlights && s->lights[rt->amb_k].type == LIGHT_AMBIENT)
+        rt->amb_i = num_add(rt->amb_i, s->lights[rt->amb_k++].intensity);
     for (uint16_t k = 0; k < s->nlights; k++)
         if (s->lights[k].type == LIGHT_DIRECTIONAL) {
             rt->light_ray[k] = rt_make_ray(v3_make(NUM_ZERO, NUM_ZERO, NUM_ZERO), s->lights[k].v, -1, 0);
@@ -54,6 +60,11 @@ void rt_frame_constants(struct rt_state *rt)
         oc->ccam = rt_ccam_make(&oc->cs, &cam);
         oc->qs = rt_qsphere_make(o->radius);
         oc->rrcp = num_recip_make(o->radius);
+        oc->rpow2 = -1;
+#if NUM_MODE == NUM_MODE_FIXED
+        for (int k = 0; k < 31 - NUM_FRAC; k++)
+            if (o->radius == (num)(NUM_ONE_RAW << k)) oc->rpow2 = (int8_t)k;
+#endif
         if (o->shape == RT_SPHERE) {
             oc->co_cam = v3_sub(rt->cam_pos, o->center);
             if (rt->book)

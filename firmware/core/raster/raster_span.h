@@ -72,8 +72,11 @@ RAS_HOT static uint32_t SPAN_NAME(const struct ftri *T, const struct frow *R)
     const uint8_t *tex = (const uint8_t *)T->ft->tex;
     const uint32_t um = T->ft->wmask << 1, vm = T->ft->hmask << (T->ft->wlog2 + 1), vs = T->ft->wlog2 + 1;
 #elif SPAN_SRC == SPAN_SRC_TEXBL
+    /* the bordered texels' rows (words) and the coordinates' range */
     const uint32_t *tex = (const uint32_t *)T->ft->tex;
-    const uint32_t wm = T->ft->wmask, hm = T->ft->hmask, wl = T->ft->wlog2;
+    const uint32_t row = (T->ft->wmask + 3u) * 2u;
+    const int32_t umax = (int32_t)((T->ft->wmask + 1u) << 16), vmax = (int32_t)((T->ft->hmask + 1u) << 16);
+    span_clamp_uv(cur + SPAN_A_UV, umax, vmax);
 #endif
     while (n > 0) {
         int32_t m = n;
@@ -84,12 +87,18 @@ RAS_HOT static uint32_t SPAN_NAME(const struct ftri *T, const struct frow *R)
             w1 += T->sa1;
             w2 += T->sa2;
             persp_at(&T->pp, SPAN_NA, w1, w2, nxt);
+#if SPAN_SRC == SPAN_SRC_TEXBL
+            span_clamp_uv(nxt + SPAN_A_UV, umax, vmax);
+#endif
             for (int j = 0; j < SPAN_NA; j++) d[j] = asr32(nxt[j] - cur[j], T->slog);
         } else if (n > 1) {     /* the rest, to the span's last pixel */
             int32_t k = n - 1;
             w1 += k * T->a1;
             w2 += k * T->a2;
             persp_at(&T->pp, SPAN_NA, w1, w2, nxt);
+#if SPAN_SRC == SPAN_SRC_TEXBL
+            span_clamp_uv(nxt + SPAN_A_UV, umax, vmax);
+#endif
             for (int j = 0; j < SPAN_NA; j++)
                 d[j] = (int32_t)(num_smul32(nxt[j] - cur[j], (int32_t)fast_inv_tab[k]) >> 16);
         } else {
@@ -100,8 +109,9 @@ RAS_HOT static uint32_t SPAN_NAME(const struct ftri *T, const struct frow *R)
         uint32_t u = (uint32_t)cur[SPAN_A_UV] << 1, v = (uint32_t)cur[SPAN_A_UV + 1] << vs;
         const uint32_t du = (uint32_t)d[SPAN_A_UV] << 1, dv = (uint32_t)d[SPAN_A_UV + 1] << vs;
 #elif SPAN_SRC == SPAN_SRC_TEXBL
-        /* texel units in Q16 less half a texel: the texel centres at integers */
-        uint32_t u = (uint32_t)cur[SPAN_A_UV] - 0x8000u, v = (uint32_t)cur[SPAN_A_UV + 1] - 0x8000u;
+        /* texel units in Q16 of the bordered texture (one texel more) less
+         * half a texel, plus half a 16th: span_bilinear */
+        uint32_t u = (uint32_t)cur[SPAN_A_UV] + 0x8800u, v = (uint32_t)cur[SPAN_A_UV + 1] + 0x8800u;
         const uint32_t du = (uint32_t)d[SPAN_A_UV], dv = (uint32_t)d[SPAN_A_UV + 1];
 #endif
 #if SPAN_SHADE == SPAN_SHADE_PHONG
@@ -168,12 +178,17 @@ RAS_HOT static uint32_t SPAN_NAME(const struct ftri *T, const struct frow *R)
                                          (kb * ii + (1u << 21)) >> 22);
 #endif
 #elif SPAN_SRC == SPAN_SRC_TEXBL
-                /* the blended 8-bit channels, lit, then their RGB565 levels */
-                uint32_t t8 = span_bilinear(tex, u, v, wl, wm, hm);
+                /* the blended texel; lit: its 8-bit channels lit, then their levels */
+                uint32_t tg, trb = span_bilinear(tex, u, v, row, &tg);
 #if SPAN_SHADE != SPAN_SHADE_NONE
-                t8 = light888(t8, SPAN_LIGHT);
-#endif
+                uint32_t t8 = light888(span_bl_888(trb, tg), SPAN_LIGHT);
                 uint16_t c = pack888_565(t8);
+#else
+                uint16_t c = span_bl_565(trb, tg);
+#if SPAN_HOST
+                uint32_t t8 = span_bl_888(trb, tg);
+#endif
+#endif
 #else /* SPAN_SRC_TEX */
                 uint16_t c = *(const uint16_t *)(const void *)(tex + (((v >> 16) & vm) | ((u >> 16) & um)));
 #if SPAN_SHADE != SPAN_SHADE_NONE

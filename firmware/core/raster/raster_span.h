@@ -153,6 +153,73 @@ RAS_HOT static uint32_t SPAN_NAME(const struct ftri *T, const struct frow *R)
                 :
                 : "r8", "r9", "r10", "r11", "r12", "cc", "memory");
         }
+#elif SPAN_SHADE == SPAN_SHADE_NONE && SPAN_SRC == SPAN_SRC_TEXBL && SPAN_DEPTH == 2 && !SPAN_HOST && \
+    defined(__ARM_ARCH_6M__) && defined(__GNUC__)
+        {
+            /* ARMv6-M: the loop below by hand (the same operations as the C
+             * loop, so the same bits): the depth entry at a fixed offset
+             * from the pixel; pe, z, u, v, the texels and their row in
+             * r8..r12 and lr, the steps on the stack */
+            uint32_t st[9] = { (uint32_t)(uintptr_t)pe, z, u, v, (uint32_t)(uintptr_t)tex, row * 4u, dz, du, dv };
+            uint16_t *px0 = px;
+            uint32_t off = (uint32_t)(uintptr_t)zp - (uint32_t)(uintptr_t)px;
+            uint32_t a0 = (uint32_t)(uintptr_t)st, t1, t2, t3, t4, t5;
+            __asm__ volatile(
+                ".syntax unified\n\t"
+                "ldr %[t1], [%[a0], #32]\n\t push {%[t1]}\n\t"
+                "ldr %[t1], [%[a0], #28]\n\t push {%[t1]}\n\t"
+                "ldr %[t1], [%[a0], #24]\n\t push {%[t1]}\n\t"
+                "push {%[a0]}\n\t"
+                "ldr %[t1], [%[a0], #0]\n\t mov r8, %[t1]\n\t"
+                "ldr %[t1], [%[a0], #4]\n\t mov r11, %[t1]\n\t"
+                "ldr %[t1], [%[a0], #8]\n\t mov r9, %[t1]\n\t"
+                "ldr %[t1], [%[a0], #12]\n\t mov r10, %[t1]\n\t"
+                "ldr %[t1], [%[a0], #16]\n\t mov r12, %[t1]\n\t"
+                "ldr %[t1], [%[a0], #20]\n\t mov lr, %[t1]\n\t"
+                "cmp %[px], r8\n\t beq 3f\n"
+                "1:\n\t"
+                /* depth */
+                "mov %[a0], r11\n\t lsrs %[a0], %[a0], #16\n\t ldrh %[t1], [%[px], %[off]]\n\t"
+                "cmp %[a0], %[t1]\n\t bls 2f\n\t strh %[a0], [%[px], %[off]]\n\t"
+                /* t3 = the texels' address, a0 = fx, t1 = fy */
+                "mov %[t1], r10\n\t lsrs %[t3], %[t1], #16\n\t mov %[t4], lr\n\t muls %[t3], %[t4], %[t3]\n\t"
+                "mov %[a0], r9\n\t lsrs %[t4], %[a0], #16\n\t lsls %[t4], %[t4], #3\n\t adds %[t3], %[t3], %[t4]\n\t"
+                "add %[t3], r12\n\t"
+                "lsls %[a0], %[a0], #16\n\t lsrs %[a0], %[a0], #28\n\t lsls %[t1], %[t1], #16\n\t lsrs %[t1], %[t1], #28\n\t"
+                /* green: g0 (t2), g1, their blend: the level in t2 */
+                "ldr %[t2], [%[t3], #4]\n\t ldr %[t4], [%[t3], #12]\n\t subs %[t4], %[t4], %[t2]\n\t"
+                "muls %[t4], %[a0], %[t4]\n\t lsls %[t2], %[t2], #4\n\t adds %[t2], %[t2], %[t4]\n\t"
+                "add %[t3], lr\n\t"
+                "ldr %[t4], [%[t3], #4]\n\t ldr %[t5], [%[t3], #12]\n\t subs %[t5], %[t5], %[t4]\n\t"
+                "muls %[t5], %[a0], %[t5]\n\t lsls %[t4], %[t4], #4\n\t adds %[t4], %[t4], %[t5]\n\t"
+                "subs %[t4], %[t4], %[t2]\n\t muls %[t4], %[t1], %[t4]\n\t lsls %[t2], %[t2], #4\n\t"
+                "adds %[t2], %[t2], %[t4]\n\t lsrs %[t2], %[t2], #26\n\t"
+                /* R and B: rb1 (t4), rb0 (t5), their blend (t5) */
+                "ldr %[t4], [%[t3], #0]\n\t ldr %[t5], [%[t3], #8]\n\t subs %[t5], %[t5], %[t4]\n\t"
+                "muls %[t5], %[a0], %[t5]\n\t lsls %[t4], %[t4], #4\n\t adds %[t4], %[t4], %[t5]\n\t"
+                "mov %[t5], lr\n\t subs %[t3], %[t3], %[t5]\n\t"
+                "ldr %[t5], [%[t3], #0]\n\t ldr %[t3], [%[t3], #8]\n\t subs %[t3], %[t3], %[t5]\n\t"
+                "muls %[t3], %[a0], %[t3]\n\t lsls %[t5], %[t5], #4\n\t adds %[t5], %[t5], %[t3]\n\t"
+                "subs %[t4], %[t4], %[t5]\n\t muls %[t4], %[t1], %[t4]\n\t lsls %[t5], %[t5], #4\n\t"
+                "adds %[t5], %[t5], %[t4]\n\t"
+                /* RGB565 */
+                "lsls %[t4], %[t5], #16\n\t lsrs %[t4], %[t4], #27\n\t lsls %[t4], %[t4], #6\n\t"
+                "orrs %[t4], %[t2]\n\t lsls %[t4], %[t4], #5\n\t lsrs %[t5], %[t5], #27\n\t orrs %[t4], %[t5]\n\t"
+                "strh %[t4], [%[px]]\n"
+                "2:\n\t adds %[px], #2\n\t"
+                "ldr %[t1], [sp, #4]\n\t add r11, %[t1]\n\t"
+                "ldr %[t1], [sp, #8]\n\t add r9, %[t1]\n\t"
+                "ldr %[t1], [sp, #12]\n\t add r10, %[t1]\n\t"
+                "cmp %[px], r8\n\t bne 1b\n"
+                "3:\n\t pop {%[a0]}\n\t add sp, #12\n\t mov %[t1], r11\n\t str %[t1], [%[a0], #4]\n\t"
+                ".syntax divided\n"
+                : [px] "+l"(px), [a0] "+l"(a0), [t1] "=&l"(t1), [t2] "=&l"(t2), [t3] "=&l"(t3), [t4] "=&l"(t4),
+                  [t5] "=&l"(t5)
+                : [off] "l"(off)
+                : "r8", "r9", "r10", "r11", "r12", "lr", "cc", "memory");
+            z = st[1];
+            zp += px - px0;
+        }
 #else
         for (; px != pe; px++) {
 #if SPAN_DEPTH == 2

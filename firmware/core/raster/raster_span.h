@@ -77,6 +77,9 @@ RAS_HOT static uint32_t SPAN_NAME(const struct ftri *T, const struct frow *R)
     const uint32_t row = (T->ft->wmask + 3u) * 2u;
     const int32_t umax = (int32_t)((T->ft->wmask + 1u) << 16), vmax = (int32_t)((T->ft->hmask + 1u) << 16);
     span_clamp_uv(cur + SPAN_A_UV, umax, vmax);
+#if SPAN_SHADE == SPAN_SHADE_NONE && SPAN_DEPTH == 2 && !SPAN_HOST && defined(__ARM_ARCH_6M__) && defined(__GNUC__)
+    uint32_t ast[5] = { dz, (uint32_t)(uintptr_t)tex, row * 4u, 0, 0 };   /* (the loop by hand below) */
+#endif
 #endif
     while (n > 0) {
         int32_t m = n;
@@ -159,23 +162,21 @@ RAS_HOT static uint32_t SPAN_NAME(const struct ftri *T, const struct frow *R)
             /* ARMv6-M: the loop below by hand (the same operations as the C
              * loop, so the same bits): the depth entry at a fixed offset
              * from the pixel; pe, z, u, v, the texels and their row in
-             * r8..r12 and lr, the steps on the stack */
-            uint32_t st[9] = { (uint32_t)(uintptr_t)pe, z, u, v, (uint32_t)(uintptr_t)tex, row * 4u, dz, du, dv };
+             * r8..r12 and lr, the steps on the stack (ast: dz, the
+             * texels, their row in bytes, du, dv) */
             uint16_t *px0 = px;
             uint32_t off = (uint32_t)(uintptr_t)zp - (uint32_t)(uintptr_t)px;
-            uint32_t a0 = (uint32_t)(uintptr_t)st, t1, t2, t3, t4, t5;
+            uint32_t t1 = (uint32_t)(uintptr_t)pe, t2 = z, t3 = u, t4 = v, t5 = (uint32_t)(uintptr_t)ast, a0;
+            ast[3] = du;
+            ast[4] = dv;
             __asm__ volatile(
                 ".syntax unified\n\t"
-                "ldr %[t1], [%[a0], #32]\n\t push {%[t1]}\n\t"
-                "ldr %[t1], [%[a0], #28]\n\t push {%[t1]}\n\t"
-                "ldr %[t1], [%[a0], #24]\n\t push {%[t1]}\n\t"
-                "push {%[a0]}\n\t"
-                "ldr %[t1], [%[a0], #0]\n\t mov r8, %[t1]\n\t"
-                "ldr %[t1], [%[a0], #4]\n\t mov r11, %[t1]\n\t"
-                "ldr %[t1], [%[a0], #8]\n\t mov r9, %[t1]\n\t"
-                "ldr %[t1], [%[a0], #12]\n\t mov r10, %[t1]\n\t"
-                "ldr %[t1], [%[a0], #16]\n\t mov r12, %[t1]\n\t"
-                "ldr %[t1], [%[a0], #20]\n\t mov lr, %[t1]\n\t"
+                "mov r8, %[t1]\n\t mov r11, %[t2]\n\t mov r9, %[t3]\n\t mov r10, %[t4]\n\t"
+                "ldr %[t1], [%[t5], #16]\n\t push {%[t1]}\n\t"
+                "ldr %[t1], [%[t5], #12]\n\t push {%[t1]}\n\t"
+                "ldr %[t1], [%[t5], #0]\n\t push {%[t1]}\n\t"
+                "ldr %[t1], [%[t5], #4]\n\t mov r12, %[t1]\n\t"
+                "ldr %[t1], [%[t5], #8]\n\t mov lr, %[t1]\n\t"
                 "cmp %[px], r8\n\t beq 3f\n"
                 "1:\n\t"
                 /* depth */
@@ -207,17 +208,17 @@ RAS_HOT static uint32_t SPAN_NAME(const struct ftri *T, const struct frow *R)
                 "orrs %[t4], %[t2]\n\t lsls %[t4], %[t4], #5\n\t lsrs %[t5], %[t5], #27\n\t orrs %[t4], %[t5]\n\t"
                 "strh %[t4], [%[px]]\n"
                 "2:\n\t adds %[px], #2\n\t"
-                "ldr %[t1], [sp, #4]\n\t add r11, %[t1]\n\t"
-                "ldr %[t1], [sp, #8]\n\t add r9, %[t1]\n\t"
-                "ldr %[t1], [sp, #12]\n\t add r10, %[t1]\n\t"
+                "ldr %[t1], [sp, #0]\n\t add r11, %[t1]\n\t"
+                "ldr %[t1], [sp, #4]\n\t add r9, %[t1]\n\t"
+                "ldr %[t1], [sp, #8]\n\t add r10, %[t1]\n\t"
                 "cmp %[px], r8\n\t bne 1b\n"
-                "3:\n\t pop {%[a0]}\n\t add sp, #12\n\t mov %[t1], r11\n\t str %[t1], [%[a0], #4]\n\t"
+                "3:\n\t add sp, #12\n\t mov %[t2], r11\n\t"
                 ".syntax divided\n"
-                : [px] "+l"(px), [a0] "+l"(a0), [t1] "=&l"(t1), [t2] "=&l"(t2), [t3] "=&l"(t3), [t4] "=&l"(t4),
-                  [t5] "=&l"(t5)
+                : [px] "+l"(px), [a0] "=&l"(a0), [t1] "+l"(t1), [t2] "+l"(t2), [t3] "+l"(t3), [t4] "+l"(t4),
+                  [t5] "+l"(t5)
                 : [off] "l"(off)
                 : "r8", "r9", "r10", "r11", "r12", "lr", "cc", "memory");
-            z = st[1];
+            z = t2;
             zp += px - px0;
         }
 #else

@@ -53,9 +53,12 @@ TESTS     += tools/bench/run.py:--smoke:$(subst $(eval) ,:,$(BENCH_SMOKE_IMAGES)
 
 # Every scene row's accuracy is that of its own image (tools/bench/accuracy.py
 # checks host_sim's frame against the image's frame_checksum): the rules on
-# rows the test makes, and two images through run.py and accuracy.py (the
-# book scenes' default paths and trilinear variant, a scene of 10 frames).
-BENCH_ACC_IMAGES := $(BUILD)/bench/m0plus-qemu/fixed/raster.elf $(BUILD)/bench/m0plus-qemu/fixed/scene-cube-flat.elf
+# rows the test makes, and three images through run.py and accuracy.py (the
+# book scenes' default paths and trilinear variant, a scene of 10 frames, and
+# the bilinear cube, whose board loop is ARMv6-M assembly on the M0+: its
+# frame must be the host's C loop's).
+BENCH_ACC_IMAGES := $(BUILD)/bench/m0plus-qemu/fixed/raster.elf $(BUILD)/bench/m0plus-qemu/fixed/scene-cube-flat.elf \
+                    $(BUILD)/bench/m0plus-qemu/fixed/scene-cube-bilinear-default.elf
 TESTS     += tests/system/test_bench_accuracy.py:$(BUILD)/host_sim \
              tests/system/test_bench_accuracy.py:$(BUILD)/host_sim:$(subst $(eval) ,:,$(BENCH_ACC_IMAGES))
 TEST_DEPS += $(BUILD)/host_sim $(BENCH_ACC_IMAGES)

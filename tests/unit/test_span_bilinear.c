@@ -1,10 +1,12 @@
 /* SPDX-License-Identifier: MIT */
-/* test_span_bilinear.c — the fast path's bilinear texel blend
- * (raster_span_lib.h: lerp888, span_bilinear, pack888_565) against a
- * direct computation: every channel's blend rounded as the formula says,
- * texel centres giving their texel, indices clamped at the edges, the
- * RGB565 levels rounded as rgb_to_565 rounds. */
+/* test_span_bilinear.c — the fast path's bilinear texels (raster_texture.c:
+ * ras_texbl_build) and their blend (raster_span_lib.h: span_bilinear,
+ * span_bl_565, span_bl_888) against a direct computation: texel centres
+ * giving their texel, RGB565 levels rounded as rgb_to_565 rounds, blends
+ * within one 8-bit step of the exact blend with the 4-bit weights, the
+ * border clamping at the edges. */
 #include <stdio.h>
+#include <stdlib.h>
 #include "check.h"
 #include "raster/raster_span_lib.h"
 
@@ -14,49 +16,89 @@ static uint32_t lcg(uint32_t *s)
     return *s >> 8;
 }
 
-/* one channel: round((a * (256 - f) + b * f) / 256) */
-static uint32_t ref_lerp(uint32_t a, uint32_t b, uint32_t f)
-{
-    return (a * (256 - f) + b * f + 128) / 256;
-}
+enum { W = 8, H = 4 };
+static uint8_t img[W * H * 3];
+static uint32_t tex[(W + 2) * (H + 2) * 2];
+static const uint32_t ROW = (W + 2) * 2;
 
-static uint32_t chan(uint32_t t, int k) { return (t >> (16 - 8 * k)) & 255u; }
+/* the span's coordinates of texture point (x, y) in texels, Q16 */
+static uint32_t cu(int32_t q16) { return (uint32_t)q16 + 0x8800u; }
+
+static uint32_t texel(int x, int y, int k)
+{
+    x = x < 0 ? 0 : (x > W - 1 ? W - 1 : x);
+    y = y < 0 ? 0 : (y > H - 1 ? H - 1 : y);
+    return img[3 * (y * W + x) + k];
+}
 
 int main(void)
 {
     uint32_t s = 1, bad = 0;
-    for (int i = 0; i < 200000; i++) {
-        uint32_t a = lcg(&s) & 0xFFFFFFu, b = lcg(&s) & 0xFFFFFFu, f = lcg(&s) & 255u, r = lerp888(a, b, f);
-        for (int k = 0; k < 3; k++) bad += chan(r, k) != ref_lerp(chan(a, k), chan(b, k), f);
-        bad += (r >> 24) != 0;
-    }
-    check(bad == 0, "lerp888_every_channel", "%u channels off", bad);
+    for (int i = 0; i < W * H * 3; i++) img[i] = (uint8_t)lcg(&s);
+    img[0] = img[1] = img[2] = 255;     /* the extremes */
+    img[3] = img[4] = img[5] = 0;
+    struct ras_texture t = { 0 };
+    t.w = W;
+    t.h = H;
+    t.rgb = img;
+    t.filter = TEX_BILINEAR;
+    check(ras_texbl_size(W, H) == sizeof tex, "texbl_size", "%zu", ras_texbl_size(W, H));
+    ras_texbl_build(&t, tex);
 
-    /* a 4x4 texture: centres (integers in this coordinate) give their texel */
-    uint32_t tex[16];
-    for (int i = 0; i < 16; i++) tex[i] = lcg(&s) & 0xFFFFFFu;
-    bad = 0;
-    for (int y = 0; y < 4; y++)
-        for (int x = 0; x < 4; x++) bad += span_bilinear(tex, (uint32_t)x << 16, (uint32_t)y << 16, 2, 3, 3) != tex[y * 4 + x];
+    /* centres give their texel: the levels rounded as rgb_to_565 rounds,
+     * 8-bit channels within one step (R and B kept in 249 steps) */
+    for (int y = 0; y < H; y++)
+        for (int x = 0; x < W; x++) {
+            uint32_t g, rb = span_bilinear(tex, cu(x * 65536 + 32768), cu(y * 65536 + 32768), ROW, &g);
+            uint32_t c8 = span_bl_888(rb, g), want = texel(x, y, 0) << 16 | texel(x, y, 1) << 8 | texel(x, y, 2);
+            uint32_t r5 = (texel(x, y, 0) * 62 + 255) / 510, g6 = (texel(x, y, 1) * 126 + 255) / 510,
+                     b5 = (texel(x, y, 2) * 62 + 255) / 510;
+            for (int k = 0; k < 3; k++) {
+                int d = (int)((c8 >> (16 - 8 * k)) & 255u) - (int)((want >> (16 - 8 * k)) & 255u);
+                bad += d > 1 || d < -1 || (k == 1 && d != 0);
+            }
+            bad += span_bl_565(rb, g) != (r5 << 11 | g6 << 5 | b5);
+        }
     check(bad == 0, "bilinear_centres", "%u texels off", bad);
 
-    /* half way between texels (1,1) and (2,1): their rounded mean */
-    uint32_t m = span_bilinear(tex, 0x18000u, 0x10000u, 2, 3, 3), want = 0;
-    for (int k = 0; k < 3; k++) want |= ref_lerp(chan(tex[5], k), chan(tex[6], k), 128) << (16 - 8 * k);
-    check(m == want, "bilinear_half", "%06x, want %06x", m, want);
+    /* anywhere (the edges' clamp included): within one 8-bit step of the
+     * exact blend with the weights rounded to 16ths */
+    bad = 0;
+    for (int i = 0; i < 100000; i++) {
+        int32_t u = (int32_t)(lcg(&s) % ((W << 16) + 1)), v = (int32_t)(lcg(&s) % ((H << 16) + 1));
+        uint32_t g, rb = span_bilinear(tex, cu(u), cu(v), ROW, &g), c8 = span_bl_888(rb, g);
+        int32_t us = u - 32768 + 2048, vs = v - 32768 + 2048;   /* centres at integers, rounded 16ths */
+        int x = (int)((us + 65536) >> 16) - 1, y = (int)((vs + 65536) >> 16) - 1;
+        double fx = (double)(((us + 65536) >> 12) & 15) / 16, fy = (double)(((vs + 65536) >> 12) & 15) / 16;
+        for (int k = 0; k < 3; k++) {
+            double top = texel(x, y, k) * (1 - fx) + texel(x + 1, y, k) * fx;
+            double bot = texel(x, y + 1, k) * (1 - fx) + texel(x + 1, y + 1, k) * fx;
+            double want = top * (1 - fy) + bot * fy, got = (c8 >> (16 - 8 * k)) & 255u;
+            bad += got > want + 1.0 || got < want - 1.0;
+        }
+    }
+    check(bad == 0, "bilinear_blend", "%u channels off by more than one step", bad);
 
-    /* outside: indices clamped, as the exact path clamps u, v to [0, 1] */
-    check(span_bilinear(tex, (uint32_t)-0x8000, (uint32_t)-0x8000, 2, 3, 3) == tex[0], "bilinear_clamp_low", "%06x",
-          span_bilinear(tex, (uint32_t)-0x8000, (uint32_t)-0x8000, 2, 3, 3));
-    check(span_bilinear(tex, 0x38000u, 0x38000u, 2, 3, 3) == tex[15], "bilinear_clamp_high", "%06x",
-          span_bilinear(tex, 0x38000u, 0x38000u, 2, 3, 3));
-    check(span_bilinear(tex, (uint32_t)-0x50000, 0x20000u, 2, 3, 3) == tex[8], "bilinear_clamp_far", "%06x",
-          span_bilinear(tex, (uint32_t)-0x50000, 0x20000u, 2, 3, 3));
-    /* along the right edge between rows 1 and 2: the edge column's blend */
-    m = span_bilinear(tex, 0x38000u, 0x18000u, 2, 3, 3);
-    want = 0;
-    for (int k = 0; k < 3; k++) want |= ref_lerp(chan(tex[7], k), chan(tex[11], k), 128) << (16 - 8 * k);
-    check(m == want, "bilinear_edge_column", "%06x, want %06x", m, want);
+    /* half way between texels (1,1) and (2,1): their mean */
+    {
+        uint32_t g, rb = span_bilinear(tex, cu(2 * 65536), cu(65536 + 32768), ROW, &g), c8 = span_bl_888(rb, g);
+        for (int k = 0; k < 3; k++) {
+            double want = (texel(1, 1, k) + texel(2, 1, k)) / 2.0, got = (c8 >> (16 - 8 * k)) & 255u;
+            bad += got > want + 1.0 || got < want - 1.0;
+        }
+        check(bad == 0, "bilinear_half", "%06x", (unsigned)c8);
+    }
+
+    /* the corners of the texture (u, v = 0 or the side): the corner texels */
+    {
+        uint32_t g, rb = span_bilinear(tex, cu(0), cu(0), ROW, &g);
+        check(span_bl_888(rb, g) == 0xFFFFFFu && span_bl_565(rb, g) == 0xFFFF, "bilinear_clamp_low", "%06x",
+              (unsigned)span_bl_888(rb, g));
+        rb = span_bilinear(tex, cu(W << 16), cu(H << 16), ROW, &g);
+        uint32_t want = texel(W - 1, H - 1, 0) << 16 | texel(W - 1, H - 1, 1) << 8 | texel(W - 1, H - 1, 2);
+        check(span_bl_888(rb, g) == want, "bilinear_clamp_high", "%06x, want %06x", (unsigned)span_bl_888(rb, g),
+              (unsigned)want);
+    }
 
     /* RGB565 levels: round(c * L / 255) for every 8-bit value */
     bad = 0;

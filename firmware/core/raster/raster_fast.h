@@ -13,8 +13,9 @@
  *                            lit per pixel (raster_fphong.c)
  *   src    SPAN_SRC_CONST    the triangle's colour
  *          SPAN_SRC_TEX      RGB565 texels, nearest, power-of-two sides
- *          SPAN_SRC_TEXBL    RGB565 texels, bilinear (5-bit weights in the
- *                            channels spread over one word), clamped at the
+ *          SPAN_SRC_TEXBL    bilinear: texels of two words (R and B in one,
+ *                            G in the other, ras_texbl_build) blended with
+ *                            4-bit weights, a border for the clamp at the
  *                            edges, power-of-two sides
  *   depth  0 (no test), 2 or 4 bytes an entry
  *   out    the board's outputs (RGB565) or also the host's (rgb888, written

@@ -72,8 +72,14 @@ RAS_HOT static uint32_t SPAN_NAME(const struct ftri *T, const struct frow *R)
     const uint8_t *tex = (const uint8_t *)T->ft->tex;
     const uint32_t um = T->ft->wmask << 1, vm = T->ft->hmask << (T->ft->wlog2 + 1), vs = T->ft->wlog2 + 1;
 #elif SPAN_SRC == SPAN_SRC_TEXBL
+    /* the bordered texels' rows (words) and the coordinates' range */
     const uint32_t *tex = (const uint32_t *)T->ft->tex;
-    const uint32_t wm = T->ft->wmask, hm = T->ft->hmask, wl = T->ft->wlog2;
+    const uint32_t row = (T->ft->wmask + 3u) * 2u;
+    const int32_t umax = (int32_t)((T->ft->wmask + 1u) << 16), vmax = (int32_t)((T->ft->hmask + 1u) << 16);
+    span_clamp_uv(cur + SPAN_A_UV, umax, vmax);
+#if SPAN_SHADE == SPAN_SHADE_NONE && SPAN_DEPTH == 2 && !SPAN_HOST && defined(__ARM_ARCH_6M__) && defined(__GNUC__)
+    uint32_t ast[5] = { dz, (uint32_t)(uintptr_t)tex, row * 4u, 0, 0 };   /* (the loop by hand below) */
+#endif
 #endif
     while (n > 0) {
         int32_t m = n;
@@ -84,12 +90,18 @@ RAS_HOT static uint32_t SPAN_NAME(const struct ftri *T, const struct frow *R)
             w1 += T->sa1;
             w2 += T->sa2;
             persp_at(&T->pp, SPAN_NA, w1, w2, nxt);
+#if SPAN_SRC == SPAN_SRC_TEXBL
+            span_clamp_uv(nxt + SPAN_A_UV, umax, vmax);
+#endif
             for (int j = 0; j < SPAN_NA; j++) d[j] = asr32(nxt[j] - cur[j], T->slog);
         } else if (n > 1) {     /* the rest, to the span's last pixel */
             int32_t k = n - 1;
             w1 += k * T->a1;
             w2 += k * T->a2;
             persp_at(&T->pp, SPAN_NA, w1, w2, nxt);
+#if SPAN_SRC == SPAN_SRC_TEXBL
+            span_clamp_uv(nxt + SPAN_A_UV, umax, vmax);
+#endif
             for (int j = 0; j < SPAN_NA; j++)
                 d[j] = (int32_t)(num_smul32(nxt[j] - cur[j], (int32_t)fast_inv_tab[k]) >> 16);
         } else {
@@ -100,8 +112,9 @@ RAS_HOT static uint32_t SPAN_NAME(const struct ftri *T, const struct frow *R)
         uint32_t u = (uint32_t)cur[SPAN_A_UV] << 1, v = (uint32_t)cur[SPAN_A_UV + 1] << vs;
         const uint32_t du = (uint32_t)d[SPAN_A_UV] << 1, dv = (uint32_t)d[SPAN_A_UV + 1] << vs;
 #elif SPAN_SRC == SPAN_SRC_TEXBL
-        /* texel units in Q16 less half a texel: the texel centres at integers */
-        uint32_t u = (uint32_t)cur[SPAN_A_UV] - 0x8000u, v = (uint32_t)cur[SPAN_A_UV + 1] - 0x8000u;
+        /* texel units in Q16 of the bordered texture (one texel more) less
+         * half a texel, plus half a 16th: span_bilinear */
+        uint32_t u = (uint32_t)cur[SPAN_A_UV] + 0x8800u, v = (uint32_t)cur[SPAN_A_UV + 1] + 0x8800u;
         const uint32_t du = (uint32_t)d[SPAN_A_UV], dv = (uint32_t)d[SPAN_A_UV + 1];
 #endif
 #if SPAN_SHADE == SPAN_SHADE_PHONG
@@ -143,6 +156,71 @@ RAS_HOT static uint32_t SPAN_NAME(const struct ftri *T, const struct frow *R)
                 :
                 : "r8", "r9", "r10", "r11", "r12", "cc", "memory");
         }
+#elif SPAN_SHADE == SPAN_SHADE_NONE && SPAN_SRC == SPAN_SRC_TEXBL && SPAN_DEPTH == 2 && !SPAN_HOST && \
+    defined(__ARM_ARCH_6M__) && defined(__GNUC__)
+        {
+            /* ARMv6-M: the loop below by hand (the same operations as the C
+             * loop, so the same bits): the depth entry at a fixed offset
+             * from the pixel; pe, z, u, v, the texels and their row in
+             * r8..r12 and lr, the steps on the stack (ast: dz, the
+             * texels, their row in bytes, du, dv) */
+            uint16_t *px0 = px;
+            uint32_t off = (uint32_t)(uintptr_t)zp - (uint32_t)(uintptr_t)px;
+            uint32_t t1 = (uint32_t)(uintptr_t)pe, t2 = z, t3 = u, t4 = v, t5 = (uint32_t)(uintptr_t)ast, a0;
+            ast[3] = du;
+            ast[4] = dv;
+            __asm__ volatile(
+                ".syntax unified\n\t"
+                "mov r8, %[t1]\n\t mov r11, %[t2]\n\t mov r9, %[t3]\n\t mov r10, %[t4]\n\t"
+                "ldr %[t1], [%[t5], #16]\n\t push {%[t1]}\n\t"
+                "ldr %[t1], [%[t5], #12]\n\t push {%[t1]}\n\t"
+                "ldr %[t1], [%[t5], #0]\n\t push {%[t1]}\n\t"
+                "ldr %[t1], [%[t5], #4]\n\t mov r12, %[t1]\n\t"
+                "ldr %[t1], [%[t5], #8]\n\t mov lr, %[t1]\n\t"
+                "cmp %[px], r8\n\t beq 3f\n"
+                "1:\n\t"
+                /* depth */
+                "mov %[a0], r11\n\t lsrs %[a0], %[a0], #16\n\t ldrh %[t1], [%[px], %[off]]\n\t"
+                "cmp %[a0], %[t1]\n\t bls 2f\n\t strh %[a0], [%[px], %[off]]\n\t"
+                /* t3 = the texels' address, a0 = fx, t1 = fy */
+                "mov %[t1], r10\n\t lsrs %[t3], %[t1], #16\n\t mov %[t4], lr\n\t muls %[t3], %[t4], %[t3]\n\t"
+                "mov %[a0], r9\n\t lsrs %[t4], %[a0], #16\n\t lsls %[t4], %[t4], #3\n\t adds %[t3], %[t3], %[t4]\n\t"
+                "add %[t3], r12\n\t"
+                "lsls %[a0], %[a0], #16\n\t lsrs %[a0], %[a0], #28\n\t lsls %[t1], %[t1], #16\n\t lsrs %[t1], %[t1], #28\n\t"
+                /* green: g0 (t2), g1, their blend: the level in t2 */
+                "ldr %[t2], [%[t3], #4]\n\t ldr %[t4], [%[t3], #12]\n\t subs %[t4], %[t4], %[t2]\n\t"
+                "muls %[t4], %[a0], %[t4]\n\t lsls %[t2], %[t2], #4\n\t adds %[t2], %[t2], %[t4]\n\t"
+                "add %[t3], lr\n\t"
+                "ldr %[t4], [%[t3], #4]\n\t ldr %[t5], [%[t3], #12]\n\t subs %[t5], %[t5], %[t4]\n\t"
+                "muls %[t5], %[a0], %[t5]\n\t lsls %[t4], %[t4], #4\n\t adds %[t4], %[t4], %[t5]\n\t"
+                "subs %[t4], %[t4], %[t2]\n\t muls %[t4], %[t1], %[t4]\n\t lsls %[t2], %[t2], #4\n\t"
+                "adds %[t2], %[t2], %[t4]\n\t lsrs %[t2], %[t2], #26\n\t"
+                /* R and B: rb1 (t4), rb0 (t5), their blend (t5) */
+                "ldr %[t4], [%[t3], #0]\n\t ldr %[t5], [%[t3], #8]\n\t subs %[t5], %[t5], %[t4]\n\t"
+                "muls %[t5], %[a0], %[t5]\n\t lsls %[t4], %[t4], #4\n\t adds %[t4], %[t4], %[t5]\n\t"
+                "mov %[t5], lr\n\t subs %[t3], %[t3], %[t5]\n\t"
+                "ldr %[t5], [%[t3], #0]\n\t ldr %[t3], [%[t3], #8]\n\t subs %[t3], %[t3], %[t5]\n\t"
+                "muls %[t3], %[a0], %[t3]\n\t lsls %[t5], %[t5], #4\n\t adds %[t5], %[t5], %[t3]\n\t"
+                "subs %[t4], %[t4], %[t5]\n\t muls %[t4], %[t1], %[t4]\n\t lsls %[t5], %[t5], #4\n\t"
+                "adds %[t5], %[t5], %[t4]\n\t"
+                /* RGB565 */
+                "lsls %[t4], %[t5], #16\n\t lsrs %[t4], %[t4], #27\n\t lsls %[t4], %[t4], #6\n\t"
+                "orrs %[t4], %[t2]\n\t lsls %[t4], %[t4], #5\n\t lsrs %[t5], %[t5], #27\n\t orrs %[t4], %[t5]\n\t"
+                "strh %[t4], [%[px]]\n"
+                "2:\n\t adds %[px], #2\n\t"
+                "ldr %[t1], [sp, #0]\n\t add r11, %[t1]\n\t"
+                "ldr %[t1], [sp, #4]\n\t add r9, %[t1]\n\t"
+                "ldr %[t1], [sp, #8]\n\t add r10, %[t1]\n\t"
+                "cmp %[px], r8\n\t bne 1b\n"
+                "3:\n\t add sp, #12\n\t mov %[t2], r11\n\t"
+                ".syntax divided\n"
+                : [px] "+l"(px), [a0] "=&l"(a0), [t1] "+l"(t1), [t2] "+l"(t2), [t3] "+l"(t3), [t4] "+l"(t4),
+                  [t5] "+l"(t5)
+                : [off] "l"(off)
+                : "r8", "r9", "r10", "r11", "r12", "lr", "cc", "memory");
+            z = t2;
+            zp += px - px0;
+        }
 #else
         for (; px != pe; px++) {
 #if SPAN_DEPTH == 2
@@ -168,12 +246,17 @@ RAS_HOT static uint32_t SPAN_NAME(const struct ftri *T, const struct frow *R)
                                          (kb * ii + (1u << 21)) >> 22);
 #endif
 #elif SPAN_SRC == SPAN_SRC_TEXBL
-                /* the blended 8-bit channels, lit, then their RGB565 levels */
-                uint32_t t8 = span_bilinear(tex, u, v, wl, wm, hm);
+                /* the blended texel; lit: its 8-bit channels lit, then their levels */
+                uint32_t tg, trb = span_bilinear(tex, u, v, row, &tg);
 #if SPAN_SHADE != SPAN_SHADE_NONE
-                t8 = light888(t8, SPAN_LIGHT);
-#endif
+                uint32_t t8 = light888(span_bl_888(trb, tg), SPAN_LIGHT);
                 uint16_t c = pack888_565(t8);
+#else
+                uint16_t c = span_bl_565(trb, tg);
+#if SPAN_HOST
+                uint32_t t8 = span_bl_888(trb, tg);
+#endif
+#endif
 #else /* SPAN_SRC_TEX */
                 uint16_t c = *(const uint16_t *)(const void *)(tex + (((v >> 16) & vm) | ((u >> 16) & um)));
 #if SPAN_SHADE != SPAN_SHADE_NONE

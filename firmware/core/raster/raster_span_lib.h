@@ -25,43 +25,49 @@ static inline void span_565_to_888(uint16_t c, uint8_t *o)
     o[2] = (uint8_t)(b << 3 | b >> 2);
 }
 
-/* (a * (256 - f) + b * f) / 256 in each 8-bit channel of two 0x00RRGGBB
- * texels, rounded: R and B side by side with 8 spare bits each, G alone */
-static inline uint32_t lerp888(uint32_t a, uint32_t b, uint32_t f)
+/* Bilinear texel at (u, v) of ras_texbl_build's texels tex (rows of
+ * `row` words): u, v in texel units, Q16, of the bordered texture less half
+ * a texel plus half a 16th (the texel centres at integers, the weights
+ * rounded), both >= 0 (the clamp at the segment's ends). Weights of 4 bits
+ * across and down; each step a + (b - a) * f on whole words (their fields
+ * stay apart: every blend of them is a sum with non-negative weights).
+ * *g gets the green word, the result is the R/B word (ras_texbl_build). */
+static inline uint32_t span_bilinear(const uint32_t *tex, uint32_t u, uint32_t v, uint32_t row, uint32_t *g)
 {
-    uint32_t rb = (((a & 0xFF00FFu) * (256u - f) + (b & 0xFF00FFu) * f + 0x800080u) >> 8) & 0xFF00FFu;
-    uint32_t g = (((a & 0xFF00u) * (256u - f) + (b & 0xFF00u) * f + 0x8000u) >> 8) & 0xFF00u;
-    return rb | g;
+    const uint32_t *p = tex + (v >> 16) * row + ((u >> 16) << 1);
+    const uint32_t fx = (u >> 12) & 15u, fy = (v >> 12) & 15u;
+    uint32_t rb0 = (p[0] << 4) + (p[2] - p[0]) * fx, g0 = (p[1] << 4) + (p[3] - p[1]) * fx;
+    p += row;
+    uint32_t rb1 = (p[0] << 4) + (p[2] - p[0]) * fx, g1 = (p[1] << 4) + (p[3] - p[1]) * fx;
+    *g = (g0 << 4) + (g1 - g0) * fy;
+    return (rb0 << 4) + (rb1 - rb0) * fy;
 }
 
-/* Bilinear texel (0x00RRGGBB) at (u, v), texel units in Q16 with the texel
- * centres at integers (two's complement in a uint32_t), weights the top 8
- * bits of the fractions; texel indices clamped to the texture (wm, hm its
- * sides less 1, wl log2 of its width), as the exact path clamps. */
-static inline uint32_t span_bilinear(const uint32_t *tex, uint32_t u, uint32_t v, uint32_t wl, uint32_t wm,
-                                     uint32_t hm)
+/* u, v clamped to [0, umax], [0, vmax] (the texture's sides, Q16): the
+ * bordered texels hold every texel a pixel between two such points reads */
+static inline void span_clamp_uv(int32_t *uv, int32_t umax, int32_t vmax)
 {
-    int32_t x = asr32((int32_t)u, 16), y = asr32((int32_t)v, 16);
-    uint32_t fx = (u >> 8) & 255u, fy = (v >> 8) & 255u;
-    uint32_t t00, t10, t01, t11;
-    if ((uint32_t)x < wm && (uint32_t)y < hm) {   /* both columns and rows inside */
-        const uint32_t *p = tex + ((uint32_t)y << wl) + (uint32_t)x;
-        t00 = p[0];
-        t10 = p[1];
-        p += wm + 1;
-        t01 = p[0];
-        t11 = p[1];
-    } else {
-        uint32_t x0 = x < 0 ? 0 : ((uint32_t)x > wm ? wm : (uint32_t)x);
-        uint32_t x1 = x < 0 ? 0 : ((uint32_t)x >= wm ? wm : (uint32_t)x + 1);
-        uint32_t y0 = y < 0 ? 0 : ((uint32_t)y > hm ? hm : (uint32_t)y);
-        uint32_t y1 = y < 0 ? 0 : ((uint32_t)y >= hm ? hm : (uint32_t)y + 1);
-        t00 = tex[(y0 << wl) + x0];
-        t10 = tex[(y0 << wl) + x1];
-        t01 = tex[(y1 << wl) + x0];
-        t11 = tex[(y1 << wl) + x1];
-    }
-    return lerp888(lerp888(t00, t10, fx), lerp888(t01, t11, fx), fy);
+    uv[0] = uv[0] < 0 ? 0 : (uv[0] > umax ? umax : uv[0]);
+    uv[1] = uv[1] < 0 ? 0 : (uv[1] > vmax ? vmax : uv[1]);
+}
+
+/* RGB565 of a blended texel: the levels in the fields' top bits */
+static inline uint16_t span_bl_565(uint32_t rb, uint32_t g)
+{
+    return (uint16_t)(((rb << 16) >> 27) << 11 | (g >> 26) << 5 | rb >> 27);
+}
+
+/* 0x00RRGGBB of a blended texel (the fields back to 8-bit channels, rounded:
+ * R, B (F - 896) * 255 / 63488 (their texels' half step of 1/8 level
+ * added back), at most 255; G (F - 2^25) * 255 / (63 * 2^26)) */
+static inline uint32_t span_bl_888(uint32_t rb, uint32_t g)
+{
+    uint32_t r = (((rb & 0xFFFFu) - 896u) * 33692u + (1u << 22)) >> 23;
+    uint32_t b = (((rb >> 16) - 896u) * 33692u + (1u << 22)) >> 23;
+    r = r > 255 ? 255 : r;
+    b = b > 255 ? 255 : b;
+    uint32_t gg = (((g - (1u << 25)) >> 12) * 4145u + (1u << 23)) >> 24;
+    return r << 16 | gg << 8 | b;
 }
 
 /* Each 8-bit channel of 0x00RRGGBB times intensity ii (Q12), rounded,

@@ -44,14 +44,14 @@ static int log2_exact(uint32_t v)
 }
 
 /* Bytes of the copy of texture t the fast path samples: nearest (RGB565,
- * 2 bytes a texel) or bilinear (0x00RRGGBB, 4 bytes) filtering,
+ * 2 bytes a texel) or bilinear (ras_texbl_size: 8 bytes a texel, a border) filtering,
  * power-of-two sides, at most 2^15 texels (a byte offset of 16 bits); 0
  * when it does not qualify. */
 static size_t tex565_size(const struct scene *s, const struct ras_texture *t)
 {
     if (!fast_path(s) || (t->filter != TEX_NEAREST && t->filter != TEX_BILINEAR) || !t->rgb) return 0;
     if (log2_exact(t->w) < 0 || log2_exact(t->h) < 0 || log2_exact(t->w) + log2_exact(t->h) > 15) return 0;
-    return (size_t)t->w * t->h * (t->filter == TEX_BILINEAR ? 4 : 2);
+    return t->filter == TEX_BILINEAR ? ras_texbl_size(t->w, t->h) : (size_t)t->w * t->h * 2;
 }
 
 
@@ -338,12 +338,8 @@ static void init_textures(struct ras_ctx *rc)
         rc->fast.tex565[i].p = NULL;
         if (!n) continue;
         if (tx->filter == TEX_BILINEAR) {
-            uint32_t *d = (uint32_t *)(void *)tm;
-            for (size_t k = 0; k < (size_t)tx->w * tx->h; k++) {
-                const uint8_t *c = tx->rgb + 3 * k;
-                d[k] = (uint32_t)c[0] << 16 | (uint32_t)c[1] << 8 | c[2];
-            }
-            rc->fast.tex565[i].p = d;
+            ras_texbl_build(tx, (uint32_t *)(void *)tm);
+            rc->fast.tex565[i].p = tm;
         } else {
             uint16_t *d = (uint16_t *)(void *)tm;
             for (size_t k = 0; k < (size_t)tx->w * tx->h; k++) {

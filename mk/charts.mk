@@ -32,6 +32,22 @@ TEST_DEPS += $(TEST_NEEDS_test_stability)
 TESTS += tests/system/test_quality.py:$(BUILD)/host_sim:$(SCENEC):$(BUILD)/asan/host_sim
 TEST_DEPS += $(SCENEC) $(BUILD)/asan/host_sim
 
+# The cost model refitted in one command: the lab's variants the model and
+# its checks use, measured on the emulators (cached as make charts' runs are),
+# into tests/data/quality/lab.json; the model tools/quality/cost_model.def
+# fitted on it; its predictions on the held-out scenes and leave one out
+# ($(OUT)/charts/cost-model-validate.csv).
+.PHONY: cost-model
+cost-model: $(BUILD)/host_sim
+	$(Q)tools/deps.sh bench
+	$(Q)$(CHARTS_PY) tools/quality/cost_model.py measure --host-sim $(BUILD)/host_sim --build $(BUILD) \
+		--scenes firmware/scenes --jobs $(CHARTS_JOBS) --make "$(MAKE)" --out tests/data/quality/lab.json
+	$(Q)$(CHARTS_PY) tools/quality/cost_model.py model --fixture tests/data/quality/lab.json \
+		--write tools/quality/cost_model.def
+	$(Q)mkdir -p $(OUT)/charts
+	$(Q)$(CHARTS_PY) tools/quality/cost_model.py validate --fixture tests/data/quality/lab.json \
+		--csv $(OUT)/charts/cost-model-validate.csv
+
 # Accuracy fields of the scene measurements (contract: psnr, ssim, max_err,
 # pct_diff against the double build), added once every bench step has run.
 .PHONY: bench-accuracy

@@ -91,11 +91,14 @@ class LabQuality:
     scene's class in tools/quality/cost_model.def; base the options of its
     base method there (the lab variant whose cost per unit of work the class's
     costs scale from); targets the accuracy targets (dB) marked on the charts
-    and pinned by tests/system/test_quality.py."""
+    and pinned by tests/system/test_quality.py; fit: whether the cost model is
+    fitted on the scene (False: a held-out scene, measured only to check the
+    model's predictions and the compiler's choices on a scene it was not
+    fitted on; tools/quality/cost_model.py validate)."""
 
-    def __init__(self, cls, targets, apply=(), remove=(), base=()):
+    def __init__(self, cls, targets, apply=(), remove=(), base=(), fit=True):
         self.cls, self.targets, self.apply, self.remove = cls, list(targets), list(apply), list(remove)
-        self.base = list(base)
+        self.base, self.fit = list(base), fit
 
     def text(self, text):
         for k in self.remove:
@@ -129,6 +132,31 @@ def method_key(row, lab_scene, text, keys, board=False):
         if k not in have and v is not None:
             opts.append("%s=%s" % (k, v))
     return " ".join(sorted(opts))
+
+
+def quality_variant(v, lab_scene):
+    """Whether the cost model or the compiler's checks use variant v of the
+    scene (the lab with quality_only measures no other): any numeric mode at
+    the scene's own format, 16-row strips, an option the compiler considers,
+    with the scene's `apply` options (or the options of one of its RP2040
+    variants, whose M0+ instructions give rho)."""
+    q = lab_scene.quality
+    if not q or v.frac is not None or v.strip != 16 or v.coarse or any(o.startswith(QUALITY_SKIP) for o in v.options):
+        return False
+    return all(a in v.options for a in q.apply) or any(sorted(v.options) == sorted(r[4]) for r in lab_scene.rp2040)
+
+
+def quality_row(row, lab_scene):
+    """Whether the cost model's fixture keeps a pareto row (quality_variant's
+    rows, and every RP2040 row)."""
+    if not lab_scene or not lab_scene.quality:
+        return False
+    if row["target"] == "rp2040-sim":
+        return True
+    opts = [o for o in (row["options"] or "").split() if o]
+    v = Variant("", row["numeric"], 0 if " Q" in row["variant"] else None,
+                [o for o in opts if o != "pass=coarse"], int(row["strip"]), "pass=coarse" in opts)
+    return quality_variant(v, lab_scene)
 
 
 def variant_keys(rows, scene):
@@ -209,6 +237,34 @@ def raster_book_variants(textured):
     return v
 
 
+def lit_variants():
+    """A lit scene's methods on the default path, every one with its shading
+    written (the cost model's predictions are checked on each; the compiler
+    keeps the shading the scene writes)."""
+    p = "shading=phong"
+    return [ras_default("fast Phong N=16", p), ras_default("fast Phong N=8", p, "perspective_step=8"),
+            ras_default("fast Phong N=32", p, "perspective_step=32"),
+            ras_default("exact N=1", p, *RAS_EXACT), ras_default("exact Phong N=16", p, "lighting=exact"),
+            ras_default("vertex lighting", p, "lighting=vertex"), ras_default("Gouraud", "shading=gouraud"),
+            ras_default("flat", "shading=flat"), ras_default("fast Phong N=16 depth_bits=16", p, "depth_bits=16"),
+            ras_default("fast Phong N=16 depth_bits=32", p, "depth_bits=32"),
+            ras_default("fast Phong N=16 subpixel_bits=2", p, "subpixel_bits=2"),
+            ras_default("fast Phong N=16 subpixel_bits=8", p, "subpixel_bits=8")]
+
+
+def textured_variants():
+    """A textured scene's methods (cube_variants'), the filter written in each
+    (a held-out scene whose own filters are taken out)."""
+    v = []
+    for c in cube_variants():
+        if c.numeric != "fixed" or c.frac is not None or c.strip != 16:
+            continue
+        o = c.options if any(x.startswith("texture.filter=") for x in c.options) else \
+            ["texture.filter=nearest"] + c.options
+        v.append(Variant(c.label, options=o))
+    return v
+
+
 def cube_variants():
     v = [Variant("N=16"), *[Variant("N=16", "fixed", f) for f in FRACS], Variant("N=16", "float"),
          Variant("N=16", "double")]
@@ -265,6 +321,22 @@ LAB = [
              quality=LabQuality("textured", (30, 35, 45))),
     LabScene("demo/ch15-shadow-map", ["shadows=off", "shadow_volumes=on"] + RAS_EXACT, shadow_map_variants(),
              quality=LabQuality("shadows", (25, 28, 60), remove=["shadow_map_size", "pcf"])),
+    # held out: not fitted on, the model's predictions and the compiler's choices checked on them
+    # (tools/quality/cost_model.py validate, tests/system/test_quality.py); fixed point only
+    LabScene("book/raytracer-04", RT_EXACT, [v for v in rt_variants(False) if v.numeric == "fixed"],
+             quality=LabQuality("rt", (40, 64, 66), fit=False)),
+    LabScene("book/raytracer-06", RT_EXACT, [v for v in rt_variants(True) if v.numeric == "fixed"],
+             quality=LabQuality("rt-reflective", (45, 55, 57), fit=False)),
+    LabScene("book/raster-rt-scene", RAS_DEFAULT + RAS_EXACT, lit_variants(),
+             quality=LabQuality("lit", (25, 45, 90), apply=RAS_DEFAULT, base=["shading=phong"],
+                                fit=False)),
+    LabScene("bench/cube-gouraud", RAS_DEFAULT + RAS_EXACT, lit_variants(),
+             quality=LabQuality("lit", (30, 35, 40), apply=RAS_DEFAULT, base=["shading=phong"],
+                                fit=False)),
+    LabScene("demo/spinning-crate", ["perspective_step=1", "lighting=exact", "texture.filter=trilinear"],
+             textured_variants(),
+             quality=LabQuality("textured", (20, 40, 43), remove=["texture.filter"], base=["texture.filter=nearest"],
+                                fit=False)),
 ]
 
 # The RP2040 images: which scene set each links (mk/firmware.mk), rp2040sim
@@ -465,9 +537,12 @@ class Lab:
         return int(m.group(1))
 
     # ---- the whole lab --------------------------------------------------------------
-    def run(self, scenes_dir, only=None):
+    def run(self, scenes_dir, only=None, quality_only=False, numerics=None):
+        """quality_only: only the variants the cost model and the compiler's
+        checks use (quality_variant), of the scenes with a LabQuality;
+        numerics: only variants in these numeric modes (None: all)."""
         rows = []
-        scenes = [s for s in LAB if not only or s.name in only]
+        scenes = [s for s in LAB if (not only or s.name in only) and (s.quality or not quality_only)]
         rp = {}
         if self.want_rp2040:
             imgs = sorted({r[0] for s in scenes for r in s.rp2040})
@@ -479,7 +554,8 @@ class Lab:
                 text = f.read()
             ref_text = scenetext.apply(text, s.reference)
             own = self.accuracy(text, ref_text, "fixed", None, 16)["num_frac"]
-            variants = list(s.variants)
+            variants = [v for v in s.variants if (not quality_only or quality_variant(v, s)) and
+                        (not numerics or v.numeric in numerics)]
             own_of = {}
 
             def own_frac(vt):
@@ -509,9 +585,14 @@ class Lab:
         modes = lambda v, acc: "fixed%d" % acc["num_frac"] if v.numeric == "fixed" else v.numeric  # noqa: E731
         self.build_elves([(t, modes(v, acc)) for (_, v, _, _, acc, _) in plan for t in MACHINES])
         jobs = [(p, t) for p in plan for t in MACHINES]
+        # fixed point first (the boards' mode), the slow float and double runs last; rows in plan order
+        order = sorted(range(len(jobs)), key=lambda i: ("fixed", "float", "double").index(jobs[i][0][1].numeric))
         with concurrent.futures.ThreadPoolExecutor(max_workers=self.jobs) as ex:
-            costs = list(ex.map(lambda j: self.cost(j[1], modes(j[0][1], j[0][4]), j[0][3], j[0][1].strip,
-                                                    coarse=j[0][1].coarse), jobs))
+            done = list(ex.map(lambda i: self.cost(jobs[i][1], modes(jobs[i][0][1], jobs[i][0][4]), jobs[i][0][3],
+                                                   jobs[i][0][1].strip, coarse=jobs[i][0][1].coarse), order))
+        costs = [None] * len(jobs)
+        for i, c in zip(order, done):
+            costs[i] = c
         for ((s, v, name, vt, acc, img), target), c in zip(jobs, costs):
             if "error" in c:
                 self.log("lab: %s %s on %s: %s" % (s.name, name, target, c["error"]))

@@ -31,10 +31,14 @@ TARGETS_LAB = dict(TARGETS)
 LIMIT = 1.10   # a choice may cost this much more than the cheapest candidate that meets the target
 
 
+FRAMES = 16   # quality.c QUALITY_FRAMES
+
+
 def frames_checked(n):
-    """The frames tools/quality renders (quality.c pick_frames)."""
+    """The frames tools/quality renders (quality.c pick_frames): every one up
+    to FRAMES, else FRAMES evenly spaced, the first and the last among them."""
     n = max(n, 1)
-    return list(range(n)) if n <= 4 else [0, n // 3, 2 * n // 3, n - 1]
+    return list(range(n)) if n <= FRAMES else [i * (n - 1) // (FRAMES - 1) for i in range(FRAMES)]
 
 
 def scene_frames(text):

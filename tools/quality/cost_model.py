@@ -46,7 +46,18 @@ import quality  # noqa: E402
 import scenetext  # noqa: E402
 
 TARGETS = {"m0plus-qemu": "m0plus", "m4f-qemu": "m4f", "rp2040-sim": "rp2040"}
-COLS = ["scene", "variant", "target", "cost", "psnr", "frontier", "unit", "numeric", "format", "options", "strip"]
+COLS = ["scene", "variant", "target", "cost", "psnr", "unit", "numeric", "format", "options", "strip"]
+# A held-out scene's predictions (cost_model.py validate). What decides the
+# choice is the order of the candidates' costs (the scene's work and the
+# class's cost per unit of work scale them all alike): two candidates the
+# model orders by more than ORDER_GAP are measured in that order, or within
+# ORDER_GAP of each other. The costs themselves (error = predicted /
+# measured - 1) are held within COST_BOUND[class] either way: the reach of a
+# model whose unit of work is pixels written or rays x objects alone (the
+# lights, specular highlights, triangle counts and shadow rays of a scene are
+# not in it; docs/charts.md, "Held-out scenes").
+ORDER_GAP = 1.25
+COST_BOUND = {"rt": 2.0, "rt-reflective": 2.0, "lit": 8.0, "textured": 16.0}
 
 
 def scene_work(host_sim, text, numeric):
@@ -71,14 +82,34 @@ def scene_work(host_sim, text, numeric):
 
 def make_fixture(args):
     with open(args.pareto) as f:
-        rows = [{k: r[k] for k in COLS} for r in csv.DictReader(f)]
+        rows = list(csv.DictReader(f))
+    write_fixture(args, rows)
+
+
+def measure(args):
+    """The lab's variants the model and its checks use, measured (lab.Lab,
+    quality_only: the emulators, each run cached under BUILD/charts/cache),
+    into the fixture."""
+    L = lab.Lab(args.host_sim, args.build, jobs=args.jobs, make=args.make)
+    rows = L.run(args.scenes, quality_only=True, numerics=args.numeric.split(",") if args.numeric else None)
+    cell = lambda k, v: ("inf" if k.startswith("psnr") else "") if v is None else str(v)  # noqa: E731 (charts.cell)
+    write_fixture(args, [{k: cell(k, r.get(k)) for k in COLS} for r in rows])
+
+
+def write_fixture(args, rows):
+    labs = {s.name: s for s in lab.LAB}
+    rows = [{k: r[k] for k in COLS} for r in rows if lab.quality_row(r, labs.get(r["scene"]))]
     out = {"scenes": {}, "rows": rows}
     for s in lab.LAB:
+        if not s.quality:
+            continue
         with open(os.path.join(args.scenes, s.name + ".scene")) as f:
             text = f.read()
         qt = s.quality.text(text)
-        work = {n: scene_work(args.host_sim, qt, n) for n in ("fixed", "float", "double")}
-        out["scenes"][s.name] = {"class": s.quality.cls, "work": work, "keys": lab.variant_keys(rows, s.name)}
+        modes = ("fixed", "float", "double") if s.quality.fit else ("fixed",)
+        work = {n: scene_work(args.host_sim, qt, n) for n in modes}
+        out["scenes"][s.name] = {"class": s.quality.cls, "work": work, "keys": lab.variant_keys(rows, s.name),
+                                 "fit": s.quality.fit}
     for name, ps in quality.frames_psnr(args.host_sim, args.scenes, rows).items():
         out["scenes"][name]["psnr_frames"] = {k: round(v, 3) for k, v in ps.items()}
     with open(args.out + ".tmp", "w") as f:
@@ -133,11 +164,15 @@ def rho(fx, by, texts):
     return gmean(rs), len(rs)
 
 
-def model(fx, scenes_dir):
-    by, texts = keyed_rows(fx, scenes_dir)
+def fit(fx, by, texts, scenes):
+    """The model's terms fitted on `scenes` (names): base {(target, class,
+    numeric): [per_work of each scene]}, meth {(target, class, numeric,
+    method key): [factor of each scene]}."""
     labs = {s.name: s for s in lab.LAB}
     base, meth = {}, {}
     for (scene, t, n, k), cost in sorted(by.items()):
+        if scene not in scenes:
+            continue
         s = labs[scene]
         info = fx["scenes"][scene]
         bk = base_key(s, texts[scene], info["keys"])
@@ -148,6 +183,17 @@ def model(fx, scenes_dir):
         if k == bk:
             base.setdefault((t, cls, n), []).append(b / info["work"][n])
         meth.setdefault((t, cls, n, k), []).append(cost / b)
+    return base, meth
+
+
+def fitted(fx):
+    """The scenes the model is fitted on (not held out)."""
+    return {n for n, i in fx["scenes"].items() if i.get("fit", True)}
+
+
+def model(fx, scenes_dir):
+    by, texts = keyed_rows(fx, scenes_dir)
+    base, meth = fit(fx, by, texts, fitted(fx))
     r, nr = rho(fx, by, texts)
     lines = ["/* SPDX-License-Identifier: MIT */",
              "/* cost_model.def — the scene compiler's cost model (tools/quality/quality.h), written by",
@@ -174,6 +220,80 @@ def model(fx, scenes_dir):
     return "\n".join(lines)
 
 
+def predictions(fx, by, texts, scene, base, meth):
+    """{(target, method key): (predicted, measured, factor predicted,
+    factor measured)} of a scene's fixed-point rows on the M0+ and M4F, from
+    the terms base, meth (fit's)."""
+    labs = {s.name: s for s in lab.LAB}
+    info = fx["scenes"][scene]
+    cls, n = info["class"], "fixed"
+    bk = base_key(labs[scene], texts[scene], info["keys"])
+    out = {}
+    for (sc, t, nn, k), cost in sorted(by.items()):
+        if sc != scene or nn != n or (t, cls, n) not in base or (t, cls, n, k) not in meth:
+            continue
+        b = by.get((scene, t, n, bk))
+        f = gmean(meth[(t, cls, n, k)])
+        out[(t, k)] = (gmean(base[(t, cls, n)]) * info["work"][n] * f, cost, f, cost / b if b else None)
+    return out
+
+
+def validate(fx, scenes_dir, log=print):
+    """The model's predictions on the scenes it is not fitted on: each held-out
+    scene from the committed model (fitted on the others), and every scene
+    of a class with two or more from the model fitted on its class's other
+    scenes (leave one out). A list of dicts (scene, target, method, predicted,
+    measured, error = predicted / measured - 1, factor_error, how, ok)."""
+    by, texts = keyed_rows(fx, scenes_dir)
+    fit_on = fitted(fx)
+    base, meth = fit(fx, by, texts, fit_on)
+    out = []
+    labs = {s.name for s in lab.LAB}
+    for scene, info in sorted(fx["scenes"].items()):
+        if scene not in labs:
+            continue
+        runs = []
+        if scene not in fit_on:
+            runs.append(("held out", base, meth))
+        others = {o for o, i in fx["scenes"].items() if o != scene and i["class"] == info["class"]}
+        if others:
+            runs.append(("leave one out",) + fit(fx, by, texts, others))
+        for how, b, m in runs:
+            ps = predictions(fx, by, texts, scene, b, m)
+            for (t, k), (pred, meas, fp, fm) in sorted(ps.items()):
+                e = {"scene": scene, "class": info["class"], "how": how, "target": t, "method": k,
+                     "predicted": pred, "measured": meas, "error": pred / meas - 1,
+                     "factor_error": fp / fm - 1 if fm else None}
+                cb = COST_BOUND.get(info["class"], 2.0)
+                e["ok"] = how != "held out" or 1 / cb <= pred / meas <= cb
+                # the order: no candidate predicted cheaper by more than ORDER_GAP is measured dearer by more
+                e["inversions"] = sorted(k2 for (t2, k2), (p2, m2, _, _) in ps.items() if t2 == t and
+                                         pred * ORDER_GAP < p2 and meas > m2 * ORDER_GAP)
+                e["ok"] = e["ok"] and (how != "held out" or not e["inversions"])
+                out.append(e)
+    if log:
+        log("cost_model: predictions on scenes the model is not fitted on (error = predicted / measured - 1; "
+            "factor: the method's cost over the base method's); held out: no two candidates ordered by more than "
+            "x%.2f measured the other way by more than x%.2f, every cost within %s" % (
+                ORDER_GAP, ORDER_GAP, ", ".join("x%g (%s)" % (b, c) for c, b in sorted(COST_BOUND.items()))))
+        groups = {}
+        for e in out:
+            groups.setdefault((e["how"], e["scene"], e["target"]), []).append(e)
+        for (how, scene, t), es in sorted(groups.items()):
+            worst = max(es, key=lambda e: abs(math.log(1 + e["error"])))
+            fe = [e for e in es if e["factor_error"] is not None]
+            wf = max(fe, key=lambda e: abs(math.log(1 + e["factor_error"]))) if fe else None
+            base_e = [e for e in es if e["factor_error"] is not None and abs(e["factor_error"]) < 1e-12]
+            inv = sum(len(e["inversions"]) for e in es)
+            log("  %-13s %-21s %-6s %2d methods: base %+6.1f %%, worst %+6.1f %% (%s), worst factor %s, %d "
+                "inversions%s" % (
+                how, scene, t, len(es), 100 * base_e[0]["error"] if base_e else float("nan"), 100 * worst["error"],
+                worst["method"] or "(as written)",
+                "%+.1f %% (%s)" % (100 * wf["factor_error"], wf["method"] or "(as written)") if wf else "-", inv,
+                "" if all(e["ok"] for e in es) else "  OUT OF BOUNDS"))
+    return out
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     sub = ap.add_subparsers(dest="cmd", required=True)
@@ -182,6 +302,18 @@ def main():
     a.add_argument("--host-sim", required=True)
     a.add_argument("--scenes", default="firmware/scenes")
     a.add_argument("--out", required=True)
+    m = sub.add_parser("measure")
+    m.add_argument("--host-sim", required=True)
+    m.add_argument("--build", default="build")
+    m.add_argument("--scenes", default="firmware/scenes")
+    m.add_argument("--jobs", type=int, default=2)
+    m.add_argument("--make", default="make")
+    m.add_argument("--out", required=True)
+    m.add_argument("--numeric", default="", help="only these numeric modes (comma-separated; default: all)")
+    v = sub.add_parser("validate")
+    v.add_argument("--fixture", required=True)
+    v.add_argument("--scenes", default="firmware/scenes")
+    v.add_argument("--csv")
     b = sub.add_parser("model")
     b.add_argument("--fixture", required=True)
     b.add_argument("--scenes", default="firmware/scenes")
@@ -191,8 +323,22 @@ def main():
     args = ap.parse_args()
     if args.cmd == "fixture":
         return make_fixture(args)
+    if args.cmd == "measure":
+        return measure(args)
     with open(args.fixture) as f:
         fx = json.load(f)
+    if args.cmd == "validate":
+        es = validate(fx, args.scenes)
+        if args.csv:
+            with open(args.csv, "w", newline="") as f:
+                w = csv.DictWriter(f, ["scene", "class", "how", "target", "method", "predicted", "measured", "error",
+                                       "factor_error", "inversions", "ok"])
+                w.writeheader()
+                w.writerows(es)
+        bad = [e for e in es if not e["ok"]]
+        print("cost_model: %d held-out predictions, %d out of bounds" %
+              (sum(1 for e in es if e["how"] == "held out"), len(bad)))
+        return 1 if bad else 0
     text = model(fx, args.scenes)
     if args.write:
         with open(args.write + ".tmp", "w") as f:

@@ -264,23 +264,24 @@ static int scene_sets(const char *text, size_t len, const char *renderer, const 
 
 /* ---- renders ------------------------------------------------------------------- */
 
+#define QUALITY_FRAMES 16
+
 struct frames {
-    unsigned n, f[4];
+    unsigned n, f[QUALITY_FRAMES];
 };
 
-/* Up to four frames: all of them, or 0, n/3, 2n/3, n-1. */
+/* Every frame of a scene of up to QUALITY_FRAMES, else QUALITY_FRAMES
+ * evenly spaced ones, the first and the last among them. */
 static void pick_frames(unsigned total, struct frames *fr)
 {
-    if (total <= 4) {
+    if (total <= QUALITY_FRAMES) {
         fr->n = total ? total : 1;
         for (unsigned i = 0; i < fr->n; i++) fr->f[i] = i;
         return;
     }
-    fr->n = 4;
-    fr->f[0] = 0;
-    fr->f[1] = total / 3;
-    fr->f[2] = 2 * total / 3;
-    fr->f[3] = total - 1;
+    fr->n = QUALITY_FRAMES;
+    for (unsigned i = 0; i < QUALITY_FRAMES; i++)
+        fr->f[i] = (unsigned)((unsigned long long)i * (total - 1) / (QUALITY_FRAMES - 1));
 }
 
 struct render_out {

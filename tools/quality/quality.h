@@ -19,8 +19,8 @@
  *               numeric mode against the double build with the exact methods
  *               (perspective_step 1, exact lighting, trilinear filtering where
  *               the scene does not set a filter, one ray a pixel), over up to
- *               four frames (all of a scene's frames up to four, else 0, n/3,
- *               2n/3 and n-1): the minimum PSNR.
+ *               16 frames (all of a scene's frames up to 16, else 16 evenly
+ *               spaced, the first and the last among them): the minimum PSNR.
  * Candidates are tried cheapest first; the first that meets the target on
  * every frame checked is the choice. Host programs only (allocates).
  */

@@ -329,6 +329,35 @@ static int screen_corners(const struct ras_ctx *rc, const struct ras_inst *ri, c
     return n;
 }
 
+/* The triangle's description, attributes and corners on screen (sv,
+ * clockwise) where its three corners are projected and its pixels need no
+ * camera-space position (no Phong, so no normal map either) and its
+ * lighting is the frame's (shade) or none: what corners, describe,
+ * attributes and screen_corners give, without the camera-space corners.
+ * Returns the attribute count. */
+static int projected_corners(const struct ras_ctx *rc, const struct ras_instance *in, const struct ras_model *m,
+                             const struct ras_triangle *t, int front, const struct ras_pv *pv, const num *shade,
+                             struct ras_def_tri *dt, struct ras_sv sv[3])
+{
+    describe(rc, in, m, t, NULL, dt);
+    const int sh = dt->shading, uv = dt->tex >= 0;
+    int na = 0;
+    if (sh == SHADE_GOURAUD) dt->ai_i = na++;
+    if (uv) { dt->ai_uv = na; na += 2; }
+    if (sh == SHADE_FLAT) dt->flat_i = shade[0];
+    for (int k = 0; k < 3; k++) {
+        const int c = front ? k : 2 - k;
+        const struct ras_pv *q = &pv[t->v[c]];
+        sv[k].x = q->sx;
+        sv[k].y = q->sy;
+        sv[k].iz = q->iz;
+        sv[k].depth = q->depth;
+        if (sh == SHADE_GOURAUD) sv[k].a[dt->ai_i] = shade[c];
+        if (uv) { sv[k].a[dt->ai_uv] = t->uv[c].u; sv[k].a[dt->ai_uv + 1] = t->uv[c].v; }
+    }
+    return na;
+}
+
 /* Trilinear filtering's level of detail for fan triangle a b c: texels^2
  * per pixel at depth 1/iz_eff. */
 static void trilinear_lod(const struct ras_ctx *rc, const struct ras_texture *tx, struct ras_def_tri *dt,
@@ -363,14 +392,24 @@ void ras_default_render_triangle(struct ras_ctx *rc, const struct ras_instance *
         for (int k = 0; k < 3; k++) vsh[k] = vs[ri->vbase + t->v[k]];
         shade = vsh;
     }
-    if (!corners(rc, in, ri, m, t, gi, shade != NULL, V, N, &front)) return;
     struct ras_def_tri dt;
-    describe(rc, in, m, t, V, &dt);
-    struct ras_cv cin[3];
-    int na = attributes(rc, &dt, t, V, N, shade, cin);
     struct ras_sv sv[RAS_CLIP_MAX];
-    int n = screen_corners(rc, ri, t, front, cin, na, sv);
-    if (n < 3) return;
+    int n, na;
+    const struct ras_pv *pv = rc->def.pv ? rc->def.pv + ri->vbase : NULL;
+    if (rc->def.tri_flags && pv && rc->def.shading != SHADE_PHONG && (shade || rc->def.shading == SHADE_NONE) &&
+        ras_pv_in(&pv[t->v[0]]) && ras_pv_in(&pv[t->v[1]]) && ras_pv_in(&pv[t->v[2]])) {
+        const uint8_t f = rc->def.tri_flags[gi];
+        if (!(f & RAS_TRI_LIVE)) return;
+        na = projected_corners(rc, in, m, t, (f & RAS_TRI_FRONT) != 0, pv, shade, &dt, sv);
+        n = 3;
+    } else {
+        if (!corners(rc, in, ri, m, t, gi, shade != NULL, V, N, &front)) return;
+        describe(rc, in, m, t, V, &dt);
+        struct ras_cv cin[3];
+        na = attributes(rc, &dt, t, V, N, shade, cin);
+        n = screen_corners(rc, ri, t, front, cin, na, sv);
+        if (n < 3) return;
+    }
     const struct ras_texture *tx = dt.tex >= 0 ? &rc->s->textures[dt.tex] : NULL;
     int uv = dt.tex >= 0 || dt.nmap >= 0;
     struct ras_fast_tri ft;

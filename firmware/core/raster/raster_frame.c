@@ -171,13 +171,10 @@ static void instance_vertices(const struct ras_ctx *rc, uint16_t i, uint32_t k0,
 
 /* Triangle k of instance i (its frame facts kept), as part `part` of the
  * frame's triangles: the rows the strips visit it on. */
-static struct ras_range instance_triangle(struct ras_ctx *rc, uint16_t i, uint32_t k, int part)
+static struct ras_range instance_triangle(struct ras_ctx *rc, const struct ras_instance *in, const struct ras_model *m,
+                                          const struct ras_inst *ri, uint32_t k, int part)
 {
-    const struct scene *s = rc->s;
-    const struct ras_options *o = &s->ras;
-    const struct ras_instance *in = &s->instances[i];
-    const struct ras_model *m = &s->models[in->model];
-    struct ras_inst *ri = &rc->inst[i];
+    const struct ras_options *o = &rc->s->ras;
     const uint32_t vb = ri->vbase, tb = ri->tbase;
     const struct ras_triangle *t = &m->tris[k];
     struct ras_range r = no_rows();
@@ -227,11 +224,13 @@ static struct ras_range instance_triangle(struct ras_ctx *rc, uint16_t i, uint32
  * part_drawn, and the lighting of its vertices in its part's table. */
 static void instance_triangles(struct ras_ctx *rc, uint16_t i, uint32_t k0, uint32_t k1, int part)
 {
-    const uint32_t tb = rc->inst[i].tbase;
-    for (uint32_t k = k0; k < k1; k++) {
-        rc->part_in[part]++;
-        rc->tri_rows[tb + k] = ras_trows_pack(rc, instance_triangle(rc, i, k, part));
-    }
+    const struct ras_instance *in = &rc->s->instances[i];
+    const struct ras_model *m = &rc->s->models[in->model];
+    const struct ras_inst *ri = &rc->inst[i];
+    const uint32_t tb = ri->tbase;
+    struct ras_trows *rows = rc->tri_rows;
+    rc->part_in[part] += k1 - k0;
+    for (uint32_t k = k0; k < k1; k++) rows[tb + k] = ras_trows_pack(rc, instance_triangle(rc, in, m, ri, k, part));
 }
 
 /* The live triangles of the frame sorted by the bucket of their first row

@@ -138,6 +138,7 @@ HAL_SRCS := hal/dcs.c $(sort $(wildcard hal/panel*.c))
 # (TARGET 1: measured by the work probe) or of this host (TARGET 0: an upper
 # bound for the target); BUDGET names the board whose RAM and flash budget
 # the scene must fit (scenec --target; empty: scenec's default, m0plus).
+# SCENEC_FLAGS: more options (a target-specific variable: mk/firmware.mk's).
 SCENEC      := $(BUILD)/scenec
 SCENE_PROBE := $(BUILD)/scenes/work_probe.elf
 # The .c and the .h are one grouped target (GNU make 4.3): whatever includes
@@ -146,7 +147,7 @@ define SCENEC_RULE
 $(1) $(patsubst %.c,%.h,$(1)) &: firmware/scenes/$(2).scene $(SCENEC) $(if $(filter 1,$(6)),$(SCENE_PROBE))
 	@mkdir -p $(dir $(1))
 	$(Q)$(if $(filter 1,$(6)),tw=$$$$(tools/scenec/target_work.sh $(SCENE_PROBE) $$< $(subst x, ,$(3)) $(4)) || exit 2;) \
-	$(SCENEC) --size $(3) --strip-rows $(4) $(if $(5),--id $(5)) $(if $(filter 1,$(6)),--target-work $$$$tw) $(if $(7),--target $(7)) \
+	$(SCENEC) --size $(3) --strip-rows $(4) $(if $(5),--id $(5)) $(if $(filter 1,$(6)),--target-work $$$$tw) $(if $(7),--target $(7)) $$(SCENEC_FLAGS) \
 		-o $(1) $$< >$(patsubst %.c,%.log,$(1)) || { cat $(patsubst %.c,%.log,$(1)); exit 2; }
 endef
 scenec_rule = $(eval $(call SCENEC_RULE,$(strip $(1)),$(strip $(2)),$(strip $(3)),$(strip $(4)),$(strip $(5)),$(strip $(6)),$(strip $(7))))

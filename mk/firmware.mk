@@ -92,6 +92,12 @@ FW_CUBE_SCENES ?= bench/cube-textured bench/cube-gouraud bench/cube-flat
 FW_RT_SCENES   ?= book/raytracer-05 bench/raytracer-05-adaptive
 FW_MESH_SCENES ?= bench/knot-4k-gouraud bench/knot-4k-flat bench/knot-4k-textured
 FW_STRIP_ROWS  ?= 8
+# Where the rasterizer's fast path finds its texels (scenec --fast-textures):
+# ram (render_init makes them in work memory) or flash (scenec writes them
+# as const data). A change takes effect on scenes compiled after it (remove
+# $(FW_OUT)/scenes/ to compile them again).
+FW_FAST_TEXTURES ?= ram
+$(FW_OUT)/scenes/%.c $(FW_OUT)/scenes/%.h: SCENEC_FLAGS = --fast-textures $(FW_FAST_TEXTURES)
 fw_scene_id     = $(subst -,_,$(subst /,_,$(1)))
 fw_scene_h      = $(foreach n,$(1),$(FW_OUT)/scenes/$(call fw_scene_id,$(n))$(2).h)
 # once per scene of all the sets (book/raytracer-02 -> book_raytracer_02.c)

@@ -17,7 +17,7 @@ $(foreach v,$(VARIANTS),$(foreach m,$(NUM_MODES),$(call bundle,$(BUILD)/$(v)/ras
 $(foreach v,$(VARIANTS),$(call program,$(BUILD)/$(v)/tests/test_raster_modes,\
     $(call obj,$(v),none,tests/unit/test_raster_modes.c) $(foreach m,$(NUM_MODES),$(BUILD)/$(v)/raster_api_$(m).o),$(v)))
 
-# The fast path's bilinear texels and blend (raster_texture.c, raster_span_lib.h) against their formula.
+# The fast path's bilinear texels and blend (mipmap.c, raster_span_lib.h) against their formula.
 $(call program,$(BUILD)/asan/tests/test_span_bilinear,$(call obj,asan,fixed,tests/unit/test_span_bilinear.c) $(call core_lib,asan,fixed),asan)
 
 RASTER_TESTS := $(BUILD)/asan/tests/test_span_bilinear \

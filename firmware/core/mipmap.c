@@ -28,3 +28,29 @@ void mip_next(const uint8_t *src, unsigned w, unsigned h, uint8_t *dst)
         }
     }
 }
+
+void mip_fast_rgb565(const uint8_t *rgb, unsigned w, unsigned h, uint16_t *d)
+{
+    for (size_t k = 0; k < (size_t)w * h; k++) {
+        const uint8_t *c = rgb + 3 * k;
+        /* round(c * L / 255), as rgb_to_565 rounds an integral channel */
+        uint32_t r = ((uint32_t)c[0] * 62 + 255) / 510, g = ((uint32_t)c[1] * 126 + 255) / 510,
+                 b = ((uint32_t)c[2] * 62 + 255) / 510;
+        d[k] = (uint16_t)(r << 11 | g << 5 | b);
+    }
+}
+
+void mip_fast_bilinear(const uint8_t *rgb, unsigned w, unsigned h, uint32_t *d)
+{
+    const unsigned W = w + 2u, H = h + 2u;
+    for (unsigned y = 0; y < H; y++)
+        for (unsigned x = 0; x < W; x++) {
+            unsigned sx = x == 0 ? 0 : (x > w ? w - 1u : x - 1u), sy = y == 0 ? 0 : (y > h ? h - 1u : y - 1u);
+            const uint8_t *c = rgb + 3 * ((size_t)sy * w + sx);
+            /* x / 255 as (x * 0x8081) >> 23 (x < 2^16), (x * 0x80808081) >> 39 (x < 2^32) */
+            uint32_t r = ((uint32_t)c[0] * 248u * 0x8081u >> 23) + 4u, b = ((uint32_t)c[2] * 248u * 0x8081u >> 23) + 4u;
+            uint32_t g = (uint32_t)(((uint64_t)(((uint32_t)c[1] * 63u << 18) + 127u) * 0x80808081u) >> 39) + (1u << 17);
+            d[2 * ((size_t)y * W + x)] = b << 16 | r;
+            d[2 * ((size_t)y * W + x) + 1] = g;
+        }
+}

@@ -122,6 +122,10 @@ struct ras_texture {
     uint8_t filter;       /* enum tex_filter */
     uint8_t mip_levels;   /* >1 when mipmaps are present (level i at mip[i]) */
     const uint8_t *const *mip;
+    /* the fast path's texels made by scenec (--fast-textures flash): RGB565
+     * (nearest) or mip_fast_bilinear's words (bilinear), mipmap.h; NULL:
+     * render_init makes them in work memory */
+    const void *fast;
 };
 
 struct ras_instance {

@@ -1,6 +1,6 @@
 /* SPDX-License-Identifier: MIT */
-/* test_span_bilinear.c — the fast path's bilinear texels (raster_texture.c:
- * ras_texbl_build) and their blend (raster_span_lib.h: span_bilinear,
+/* test_span_bilinear.c — the fast path's bilinear texels (mipmap.c:
+ * mip_fast_bilinear) and their blend (raster_span_lib.h: span_bilinear,
  * span_bl_565, span_bl_888) against a direct computation: texel centres
  * giving their texel, RGB565 levels rounded as rgb_to_565 rounds, blends
  * within one 8-bit step of the exact blend with the 4-bit weights, the
@@ -8,6 +8,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include "check.h"
+#include "mipmap.h"
 #include "raster/raster_span_lib.h"
 
 static uint32_t lcg(uint32_t *s)
@@ -37,13 +38,8 @@ int main(void)
     for (int i = 0; i < W * H * 3; i++) img[i] = (uint8_t)lcg(&s);
     img[0] = img[1] = img[2] = 255;     /* the extremes */
     img[3] = img[4] = img[5] = 0;
-    struct ras_texture t = { 0 };
-    t.w = W;
-    t.h = H;
-    t.rgb = img;
-    t.filter = TEX_BILINEAR;
-    check(ras_texbl_size(W, H) == sizeof tex, "texbl_size", "%zu", ras_texbl_size(W, H));
-    ras_texbl_build(&t, tex);
+    check(mip_fast_bilinear_size(W, H) == sizeof tex, "texbl_size", "%zu", mip_fast_bilinear_size(W, H));
+    mip_fast_bilinear(img, W, H, tex);
 
     /* centres give their texel: the levels rounded as rgb_to_565 rounds,
      * 8-bit channels within one step (R and B kept in 249 steps) */

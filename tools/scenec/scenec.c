@@ -3,7 +3,8 @@
  *
  *   scenec [--size WxH] [--strip-rows N] [--fracs 20,...,12] [--id NAME]
  *          [--allow-wide] [--target-work BYTES[:SIBLING]] [--deps OUT.d]
- *          [--target NAME] [--ram-budget N[K|M]] [--flash-budget N[K|M]] [--min-psnr DB] -o OUT.c SCENE
+ *          [--target NAME] [--ram-budget N[K|M]] [--flash-budget N[K|M]] [--min-psnr DB]
+ *          [--fast-textures ram|flash] -o OUT.c SCENE
  *
  * Writes OUT.c (the scene as const data: models, textures, lights in flash;
  * one static work buffer of exactly render_work_size() bytes) and OUT.h (its
@@ -33,6 +34,10 @@
  * m0plus) that renders within DB of the double build's exact render; the
  * choice is printed and compiled, so the board shows what host_sim shows
  * with the same target.
+ * --fast-textures flash writes the texels the rasterizer's fast path samples
+ * (mipmap.h: RGB565 for nearest textures, mip_fast_bilinear's words for
+ * bilinear ones) as const data too, which render_init then uses instead of
+ * making them in work memory: less RAM, more flash (default ram).
  */
 #define _XOPEN_SOURCE 700   /* realpath */
 #include <errno.h>
@@ -47,6 +52,7 @@
 #include <unistd.h>
 #include "../common/file_id.h"
 #include "core_api.h"
+#include "mipmap.h"
 #include "scene_format.h"
 #include "scene_parse.h"
 #include "suggest.h"
@@ -116,6 +122,7 @@ static void tmp_discard(void)
 static size_t flash_bytes;      /* const data emitted, by sizeof of what we emit */
 static size_t texture_bytes;    /* of which the textures' texels (every mip level) */
 static const char *outh_path;   /* OUT.h (NULL in the dry run) */
+static int fast_in_flash;       /* --fast-textures flash */
 static int target_work_given;   /* the work size is the target's (--target-work) */
 static uint32_t scene_features; /* render_features of the scene (work_sizes) */
 
@@ -276,6 +283,14 @@ static void emit_objects(const struct scene *s)
     }
 }
 
+/* Whether texture x's fast texels are written here (--fast-textures flash;
+ * the work memory they would take is left out: work_sizes). */
+static int fast_tex(const struct ras_texture *x)
+{
+    return fast_in_flash && (x->filter == TEX_NEAREST || x->filter == TEX_BILINEAR) && x->rgb &&
+           mip_fast_sides(x->w, x->h);
+}
+
 static void emit_textures(const struct scene *s)
 {
     for (int t = 0; t < s->ntextures; t++) {
@@ -292,6 +307,28 @@ static void emit_textures(const struct scene *s)
             w = w > 1 ? w / 2 : 1;
             h = h > 1 ? h / 2 : 1;
         }
+        if (fast_tex(x)) {
+            if (x->filter == TEX_BILINEAR) {
+                size_t n = mip_fast_bilinear_size(x->w, x->h) / 4;
+                uint32_t *d = malloc(n * 4);
+                if (d) mip_fast_bilinear(x->rgb, x->w, x->h, d);
+                emit("static const uint32_t tex%d_fast[%zu] = {", t, n);
+                for (size_t k = 0; out && d && k < n; k++) emit("%s0x%08x,", k % 8 ? "" : "\n   ", (unsigned)d[k]);
+                free(d);
+                flash_bytes += n * 4;
+                texture_bytes += n * 4;
+            } else {
+                size_t n = (size_t)x->w * x->h;
+                uint16_t *d = malloc(n * 2);
+                if (d) mip_fast_rgb565(x->rgb, x->w, x->h, d);
+                emit("static const uint16_t tex%d_fast[%zu] = {", t, n);
+                for (size_t k = 0; out && d && k < n; k++) emit("%s0x%04x,", k % 12 ? "" : "\n   ", (unsigned)d[k]);
+                free(d);
+                flash_bytes += n * 2;
+                texture_bytes += n * 2;
+            }
+            emit("\n};\n");
+        }
         if (x->mip_levels > 1) {
             emit("static const uint8_t *const tex%d_mip[%d] = {", t, x->mip_levels);
             for (int l = 0; l < x->mip_levels; l++) emit(" tex%d_level%d,", t, l);
@@ -306,8 +343,10 @@ static void emit_textures(const struct scene *s)
             const struct ras_texture *x = &s->textures[t];
             emit("    { .w = %d, .h = %d, .rgb = tex%d_level0, .filter = %d, .mip_levels = %d, .mip = ", x->w, x->h,
                  t, x->filter, x->mip_levels);
-            if (x->mip_levels > 1) emit("tex%d_mip },\n", t);
-            else emit("0 },\n");
+            if (x->mip_levels > 1) emit("tex%d_mip", t);
+            else emit("0");
+            if (fast_tex(x)) emit(", .fast = tex%d_fast", t);
+            emit(" },\n");
         }
         emit("};\n\n");
         flash_bytes += s->ntextures * sizeof(struct ras_texture);
@@ -640,6 +679,9 @@ static const char help_text[] =
     "  --chosen-scene FILE           with an accuracy target: also write the scene text with\n"
     "                                the chosen options (for the work probe)\n"
     "  --work-of-choice              --target-work was measured for the chosen options\n"
+    "  --fast-textures ram|flash     where the fast path's texels are: made in work memory\n"
+    "                                by render_init (ram, the default) or written here as\n"
+    "                                const data (flash)\n"
     "  --min-psnr DB                 choose the scene's methods for this accuracy (PSNR\n"
     "                                against double's exact render, 1..200): the cheapest on\n"
     "                                --target (m0plus, m4f or rp2040; default: the scene's\n"
@@ -745,10 +787,11 @@ static int parse_args(int argc, char **argv, struct args *a)
     static const int all_fracs[] = { 20, 19, 18, 17, 16, 15, 14, 13, 12 };
     static const char *const with_arg[] = { "--size", "--strip-rows", "--fracs", "--id", "--target-work",
                                             "--deps", "--target", "--ram-budget", "--flash-budget", "--min-psnr",
-                                            "--chosen-scene", "-o", NULL };
+                                            "--chosen-scene", "--fast-textures", "-o", NULL };
     static const char *const all[] = { "--size", "--strip-rows", "--fracs", "--id", "--target-work",
                                        "--deps", "--target", "--ram-budget", "--flash-budget", "--min-psnr",
-                                       "--chosen-scene", "--work-of-choice", "--allow-wide", "--help", NULL };
+                                       "--chosen-scene", "--work-of-choice", "--allow-wide", "--fast-textures",
+                                       "--help", NULL };
     memset(a, 0, sizeof *a);
     a->width = a->height = 240;
     a->strip = 16;
@@ -825,6 +868,10 @@ static int parse_args(int argc, char **argv, struct args *a)
             }
         } else if (!strcmp(opt, "--id")) {
             a->idarg = val;
+        } else if (!strcmp(opt, "--fast-textures")) {
+            if (strcmp(val, "ram") && strcmp(val, "flash"))
+                return usage_error("bad --fast-textures '%s' (ram or flash)", val);
+            fast_in_flash = !strcmp(val, "flash");
         } else if (!strcmp(opt, "--target-work")) {
             char *colon = strchr(val, ':');
             if (colon) *colon = 0;
@@ -1021,6 +1068,13 @@ static int work_sizes(const struct args *a, const char *text, size_t len, size_t
         return 2;
     }
     *host_work = core_api_fixed12.work_size(fs, (uint16_t)a->width, (uint16_t)a->height, (uint16_t)a->strip);
+    size_t fast_copies = 0;   /* the work the fast texels in flash save (the same bytes on the target) */
+    if (fast_in_flash) {
+        core_api_fixed12.mark_fast_textures(fs);
+        size_t w = core_api_fixed12.work_size(fs, (uint16_t)a->width, (uint16_t)a->height, (uint16_t)a->strip);
+        fast_copies = *host_work - w;
+        *host_work = w;
+    }
     scene_features = core_api_fixed12.features(fs);
     size_t host_sibling = core_api_fixed12.sibling_work_size(fs, (uint16_t)a->width, (uint16_t)a->height,
                                                              (uint16_t)a->strip);
@@ -1031,8 +1085,8 @@ static int work_sizes(const struct args *a, const char *text, size_t len, size_t
                         "stale or for another scene\n", a->path, a->target_sibling, host_sibling);
         return 2;
     }
-    *work = a->target_work >= 0 ? (size_t)a->target_work : *host_work;
-    if (a->target_work > (long)*host_work) {
+    *work = a->target_work >= 0 ? (size_t)a->target_work - fast_copies : *host_work;
+    if (a->target_work >= 0 && (size_t)a->target_work - fast_copies > *host_work) {
         /* the target's structures are never larger than the host's */
         fprintf(stderr, "%s:1:1: error: --target-work %ld exceeds this host's work size %zu; the probe image is "
                         "stale or for another scene\n", a->path, a->target_work, *host_work);

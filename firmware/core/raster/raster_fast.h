@@ -14,7 +14,7 @@
  *   src    SPAN_SRC_CONST    the triangle's colour
  *          SPAN_SRC_TEX      RGB565 texels, nearest, power-of-two sides
  *          SPAN_SRC_TEXBL    bilinear: texels of two words (R and B in one,
- *                            G in the other, ras_texbl_build) blended with
+ *                            G in the other, mip_fast_bilinear) blended with
  *                            4-bit weights, a border for the clamp at the
  *                            edges, power-of-two sides
  *   depth  0 (no test), 2 or 4 bytes an entry

@@ -489,9 +489,5 @@ rgb ras_sample(const struct ras_ctx *rc, int tex, num u, num v, num lod);
 num ras_log2(num x);
 size_t ras_mips_size(const struct ras_texture *t);
 void ras_mips_build(const struct ras_texture *t, struct ras_mips *m, uint8_t *mem);
-/* The fast path's bilinear texels (raster_texture.c): ras_texbl_size bytes
- * for a w x h texture, written by ras_texbl_build. */
-size_t ras_texbl_size(unsigned w, unsigned h);
-void ras_texbl_build(const struct ras_texture *t, uint32_t *d);
 
 #endif

@@ -25,13 +25,13 @@ static inline void span_565_to_888(uint16_t c, uint8_t *o)
     o[2] = (uint8_t)(b << 3 | b >> 2);
 }
 
-/* Bilinear texel at (u, v) of ras_texbl_build's texels tex (rows of
+/* Bilinear texel at (u, v) of mip_fast_bilinear's texels tex (rows of
  * `row` words): u, v in texel units, Q16, of the bordered texture less half
  * a texel plus half a 16th (the texel centres at integers, the weights
  * rounded), both >= 0 (the clamp at the segment's ends). Weights of 4 bits
  * across and down; each step a + (b - a) * f on whole words (their fields
  * stay apart: every blend of them is a sum with non-negative weights).
- * *g gets the green word, the result is the R/B word (ras_texbl_build). */
+ * *g gets the green word, the result is the R/B word (mip_fast_bilinear). */
 static inline uint32_t span_bilinear(const uint32_t *tex, uint32_t u, uint32_t v, uint32_t row, uint32_t *g)
 {
     const uint32_t *p = tex + (v >> 16) * row + ((u >> 16) << 1);

@@ -118,35 +118,6 @@ void ras_mips_build(const struct ras_texture *t, struct ras_mips *m, uint8_t *me
     }
 }
 
-/* The fast path's bilinear texels (SPAN_SRC_TEXBL, raster_span_lib.h's
- * span_bilinear): the texture with a border of one texel on each side
- * (a copy of its edge: the clamped addressing), row by row, (w + 2) texels
- * a row, two words a texel:
- *   word 0  R in bits 0..15, B in bits 16..31: each floor(c * 248 / 255) + 4
- *           (its RGB565 level in eighths, plus half a level's 1/256: a
- *           texel's own level rounded as rgb_to_565 rounds)
- *   word 1  G: round(c * 63 * 2^18 / 255) + 2^17
- * Blended with weights of 4 bits across and 4 down (256 in all), each field
- * stays in its 16 (or 32) bits and ends with the level in its top bits,
- * rounded (R, B: bits 11..15 of their half; G: bits 26..31). */
-size_t ras_texbl_size(unsigned w, unsigned h) { return (size_t)(w + 2) * (h + 2) * 8; }
-
-void ras_texbl_build(const struct ras_texture *t, uint32_t *d)
-{
-    const unsigned W = t->w + 2u, H = t->h + 2u;
-    for (unsigned y = 0; y < H; y++)
-        for (unsigned x = 0; x < W; x++) {
-            unsigned sx = x == 0 ? 0 : (x > t->w ? t->w - 1u : x - 1u);
-            unsigned sy = y == 0 ? 0 : (y > t->h ? t->h - 1u : y - 1u);
-            const uint8_t *c = t->rgb + 3 * ((size_t)sy * t->w + sx);
-            /* x / 255 as (x * 0x8081) >> 23 (x < 2^16), (x * 0x80808081) >> 39 (x < 2^32) */
-            uint32_t r = ((uint32_t)c[0] * 248u * 0x8081u >> 23) + 4u, b = ((uint32_t)c[2] * 248u * 0x8081u >> 23) + 4u;
-            uint32_t g = (uint32_t)(((uint64_t)(((uint32_t)c[1] * 63u << 18) + 127u) * 0x80808081u) >> 39) + (1u << 17);
-            d[2 * ((size_t)y * W + x)] = b << 16 | r;
-            d[2 * ((size_t)y * W + x) + 1] = g;
-        }
-}
-
 rgb ras_sample(const struct ras_ctx *rc, int tex, num u, num v, num lod)
 {
     const struct ras_texture *t = &rc->s->textures[tex];

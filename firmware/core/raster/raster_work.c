@@ -6,6 +6,7 @@
 #include <string.h>
 #include "raster_int.h"
 #include "work.h"
+#include "mipmap.h"
 
 /* Bytes of depth a pixel; none unless triangles are depth-tested (2D
  * primitives and 3D lines never are, so scenes of those need no buffer). */
@@ -44,14 +45,20 @@ static int log2_exact(uint32_t v)
 }
 
 /* Bytes of the copy of texture t the fast path samples: nearest (RGB565,
- * 2 bytes a texel) or bilinear (ras_texbl_size: 8 bytes a texel, a border) filtering,
+ * 2 bytes a texel) or bilinear (mip_fast_bilinear_size: 8 bytes a texel, a border) filtering,
  * power-of-two sides, at most 2^15 texels (a byte offset of 16 bits); 0
  * when it does not qualify. */
 static size_t tex565_size(const struct scene *s, const struct ras_texture *t)
 {
     if (!fast_path(s) || (t->filter != TEX_NEAREST && t->filter != TEX_BILINEAR) || !t->rgb) return 0;
     if (log2_exact(t->w) < 0 || log2_exact(t->h) < 0 || log2_exact(t->w) + log2_exact(t->h) > 15) return 0;
-    return t->filter == TEX_BILINEAR ? ras_texbl_size(t->w, t->h) : (size_t)t->w * t->h * 2;
+    return t->filter == TEX_BILINEAR ? mip_fast_bilinear_size(t->w, t->h) : (size_t)t->w * t->h * 2;
+}
+
+/* Of which work memory: none when scenec made them (t->fast, in flash). */
+static size_t tex565_work(const struct scene *s, const struct ras_texture *t)
+{
+    return t->fast ? 0 : tex565_size(s, t);
 }
 
 
@@ -227,7 +234,7 @@ static int carve(const struct scene *s, uint16_t w, uint16_t h, uint16_t strip_r
         for (uint16_t i = 0; i < s->ntextures; i++) (void)work_take(c, ras_mips_size(&s->textures[i]));
     rc->fast.tex565 = work_take(c, sizeof(struct ras_tex565) * s->ntextures);
     rc->fast.tex_mem = c->base ? c->base + c->off : NULL;   /* the RGB565 copies, the same way */
-    for (uint16_t i = 0; i < s->ntextures; i++) (void)work_take(c, tex565_size(s, &s->textures[i]));
+    for (uint16_t i = 0; i < s->ntextures; i++) (void)work_take(c, tex565_work(s, &s->textures[i]));
     void *pv = work_take(c, frame_cache(s) ? sizeof(struct ras_pv) * nverts : 0);
     void *flags = work_take(c, frame_cache(s) ? ntris : 0);
     int caches = shade_caches(s);
@@ -337,23 +344,16 @@ static void init_textures(struct ras_ctx *rc)
         size_t n = tex565_size(s, tx);
         rc->fast.tex565[i].p = NULL;
         if (!n) continue;
-        if (tx->filter == TEX_BILINEAR) {
-            ras_texbl_build(tx, (uint32_t *)(void *)tm);
-            rc->fast.tex565[i].p = tm;
-        } else {
-            uint16_t *d = (uint16_t *)(void *)tm;
-            for (size_t k = 0; k < (size_t)tx->w * tx->h; k++) {
-                const uint8_t *c = tx->rgb + 3 * k;
-                /* round(c * L / 255), as rgb_to_565 rounds an integral channel */
-                uint32_t r = ((uint32_t)c[0] * 62 + 255) / 510, g = ((uint32_t)c[1] * 126 + 255) / 510,
-                         b = ((uint32_t)c[2] * 62 + 255) / 510;
-                d[k] = (uint16_t)(r << 11 | g << 5 | b);
-            }
-            rc->fast.tex565[i].p = d;
-        }
+        if (tx->fast)
+            rc->fast.tex565[i].p = tx->fast;
+        else if (tx->filter == TEX_BILINEAR)
+            mip_fast_bilinear(tx->rgb, tx->w, tx->h, (uint32_t *)(void *)tm);
+        else
+            mip_fast_rgb565(tx->rgb, tx->w, tx->h, (uint16_t *)(void *)tm);
+        if (!tx->fast) rc->fast.tex565[i].p = tm;
         rc->fast.tex565[i].wlog2 = (uint8_t)log2_exact(tx->w);
         rc->fast.tex565[i].hlog2 = (uint8_t)log2_exact(tx->h);
-        tm += work_round(n);
+        tm += work_round(tex565_work(s, tx));
     }
 }
 

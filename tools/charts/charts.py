@@ -175,6 +175,9 @@ def quality_choices(a, outdir, rows):
     r = subprocess.run([sys.executable, cm, "fixture", "--pareto", os.path.join(outdir, "pareto.csv"), "--host-sim",
                         a.host_sim, "--scenes", a.scenes, "--out", fx])
     if r.returncode == 0:
+        # the model's predictions on the held-out scenes, from this run's rows
+        subprocess.run([sys.executable, cm, "validate", "--fixture", fx, "--scenes", a.scenes, "--csv",
+                        os.path.join(outdir, "cost-model-validate.csv")])
         same = subprocess.run(["cmp", "-s", fx, "tests/data/quality/lab.json"]).returncode == 0
         print("charts: %s %s tests/data/quality/lab.json%s" % (
             fx, "matches" if same else "differs from",

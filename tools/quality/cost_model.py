@@ -57,7 +57,7 @@ COLS = ["scene", "variant", "target", "cost", "psnr", "unit", "numeric", "format
 # lights, specular highlights, triangle counts and shadow rays of a scene are
 # not in it; docs/charts.md, "Held-out scenes").
 ORDER_GAP = 1.25
-COST_BOUND = {"rt": 2.0, "rt-reflective": 2.0, "lit": 8.0, "textured": 16.0}
+COST_BOUND = {"rt": 2.0, "rt-reflective": 2.0, "lit": 8.0, "textured": 3.0}
 
 
 def scene_work(host_sim, text, numeric):
@@ -191,9 +191,55 @@ def fitted(fx):
     return {n for n, i in fx["scenes"].items() if i.get("fit", True)}
 
 
+# Textured classes: a pixel's lighting is not in their unit of work, so a
+# scene shaded otherwise than the class's fitted scenes has the lit class's
+# per-pixel lighting added (or taken out) a unit of work, whatever the
+# method: the lit class's cost per unit of work times (its factor for the
+# scene's shading - its factor for the class's; no shading counts as flat,
+# whose lighting is per triangle).
+SHADED_CLASSES = ("textured", "textured-npot")
+
+
+def shading_of(text):
+    return scenetext.written(text, "shading") or "none"
+
+
+def class_shading(fx, texts, scenes):
+    """{class: the shading its scenes among `scenes` write} of the textured
+    classes whose scenes agree."""
+    seen = {}
+    for name in scenes:
+        cls = fx["scenes"][name]["class"]
+        if cls in SHADED_CLASSES:
+            seen.setdefault(cls, set()).add(shading_of(texts[name]))
+    return {c: next(iter(v)) for c, v in seen.items() if len(v) == 1}
+
+
+def lighting(base, meth, shade, t, cls, n, shading):
+    """What a unit of work costs more (or less) for the scene's shading
+    (quality.c lighting_per_work)."""
+    cs = shade.get(cls)
+    if cls not in SHADED_CLASSES or cs is None or cs == shading or (t, "lit", n) not in base:
+        return 0.0
+    lit = ("m0plus" if t == "rp2040" else t, "lit", n)
+    f = {s: meth.get(lit + ("shading=%s" % ("flat" if s == "none" else s),)) for s in (shading, cs)}
+    if None in f.values():
+        return 0.0
+    return gmean(base[(t, "lit", n)]) * (gmean(f[shading]) - gmean(f[cs]))
+
+
+def predicted(base, meth, shade, t, cls, n, shading, work, factor):
+    """A method's predicted cost (quality.c): (the class's cost per unit of
+    work x the method's factor + lighting) x work, at least a tenth of the
+    first term."""
+    pw = gmean(base[(t, cls, n)]) * factor
+    return max(pw + lighting(base, meth, shade, t, cls, n, shading), 0.1 * pw) * work
+
+
 def model(fx, scenes_dir):
     by, texts = keyed_rows(fx, scenes_dir)
     base, meth = fit(fx, by, texts, fitted(fx))
+    shade = class_shading(fx, texts, fitted(fx))
     r, nr = rho(fx, by, texts)
     lines = ["/* SPDX-License-Identifier: MIT */",
              "/* cost_model.def — the scene compiler's cost model (tools/quality/quality.h), written by",
@@ -205,10 +251,13 @@ def model(fx, scenes_dir):
              " *   mean over `scenes` lab scenes; rp2040: the M0+'s times rho = %.4f (%d variants measured on both)." % (r, nr),
              " * QUALITY_METHOD(target, class, numeric, options, factor, scenes): a candidate method, its cost",
              " *   over the base method's (geometric mean over `scenes` lab scenes); the RP2040 takes the M0+'s.",
+             " * QUALITY_SHADING(class, shading): the shading the class's lab scenes write (textured classes:",
+             " *   a scene shaded otherwise has the lit class's per-pixel lighting added or taken out, whatever",
+             " *   the method).",
              " */",
              "#ifndef QUALITY_BASE", "#define QUALITY_BASE(target, cls, numeric, per_work, scenes)", "#endif",
              "#ifndef QUALITY_METHOD", "#define QUALITY_METHOD(target, cls, numeric, options, factor, scenes)",
-             "#endif", ""]
+             "#endif", "#ifndef QUALITY_SHADING", "#define QUALITY_SHADING(cls, shading)", "#endif", ""]
     for (t, cls, n), xs in sorted(base.items()):
         lines.append('QUALITY_BASE("%s", "%s", "%s", %.6g, %d)' % (t, cls, n, gmean(xs), len(xs)))
         if t == "m0plus" and n == "fixed":
@@ -216,11 +265,14 @@ def model(fx, scenes_dir):
     lines.append("")
     for (t, cls, n, k), xs in sorted(meth.items()):
         lines.append('QUALITY_METHOD("%s", "%s", "%s", "%s", %.6g, %d)' % (t, cls, n, k, gmean(xs), len(xs)))
-    lines += ["", "#undef QUALITY_BASE", "#undef QUALITY_METHOD", ""]
+    lines.append("")
+    for cls, sh in sorted(shade.items()):
+        lines.append('QUALITY_SHADING("%s", "%s")' % (cls, sh))
+    lines += ["", "#undef QUALITY_BASE", "#undef QUALITY_METHOD", "#undef QUALITY_SHADING", ""]
     return "\n".join(lines)
 
 
-def predictions(fx, by, texts, scene, base, meth):
+def predictions(fx, by, texts, scene, base, meth, shade):
     """{(target, method key): (predicted, measured, factor predicted,
     factor measured)} of a scene's fixed-point rows on the M0+ and M4F, from
     the terms base, meth (fit's)."""
@@ -234,7 +286,8 @@ def predictions(fx, by, texts, scene, base, meth):
             continue
         b = by.get((scene, t, n, bk))
         f = gmean(meth[(t, cls, n, k)])
-        out[(t, k)] = (gmean(base[(t, cls, n)]) * info["work"][n] * f, cost, f, cost / b if b else None)
+        out[(t, k)] = (predicted(base, meth, shade, t, cls, n, shading_of(texts[scene]), info["work"][n], f), cost, f,
+                       cost / b if b else None)
     return out
 
 
@@ -254,12 +307,14 @@ def validate(fx, scenes_dir, log=print):
             continue
         runs = []
         if scene not in fit_on:
-            runs.append(("held out", base, meth))
+            runs.append(("held out", base, meth, class_shading(fx, texts, fit_on)))
         others = {o for o, i in fx["scenes"].items() if o != scene and i["class"] == info["class"]}
         if others:
-            runs.append(("leave one out",) + fit(fx, by, texts, others))
-        for how, b, m in runs:
-            ps = predictions(fx, by, texts, scene, b, m)
+            # the class's other scenes, and the lit class (whose lighting a textured one borrows) as fitted
+            b, m = fit(fx, by, texts, others | {o for o in fit_on if fx["scenes"][o]["class"] == "lit"})
+            runs.append(("leave one out", b, m, class_shading(fx, texts, others)))
+        for how, b, m, sh in runs:
+            ps = predictions(fx, by, texts, scene, b, m, sh)
             for (t, k), (pred, meas, fp, fm) in sorted(ps.items()):
                 e = {"scene": scene, "class": info["class"], "how": how, "target": t, "method": k,
                      "predicted": pred, "measured": meas, "error": pred / meas - 1,

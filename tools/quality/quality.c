@@ -30,7 +30,54 @@ static const struct method_row method_rows[] = {
 #define QUALITY_METHOD(target, cls, numeric, options, factor, scenes) { target, cls, numeric, options, factor, scenes },
 #include "cost_model.def"
 };
+struct shading_row {
+    const char *cls, *shading;
+};
+static const struct shading_row shading_rows[] = {
+#define QUALITY_SHADING(cls, shading) { cls, shading },
+#include "cost_model.def"
+};
 #define NROWS(a) (sizeof(a) / sizeof((a)[0]))
+
+static const struct base_row *base_row(const char *target, const char *cls, const char *numeric)
+{
+    for (size_t i = 0; i < NROWS(base_rows); i++)
+        if (!strcmp(base_rows[i].target, target) && !strcmp(base_rows[i].cls, cls) &&
+            !strcmp(base_rows[i].numeric, numeric))
+            return &base_rows[i];
+    return NULL;
+}
+
+static const struct method_row *method_row(const char *target, const char *cls, const char *numeric,
+                                           const char *options)
+{
+    for (size_t i = 0; i < NROWS(method_rows); i++)
+        if (!strcmp(method_rows[i].target, target) && !strcmp(method_rows[i].cls, cls) &&
+            !strcmp(method_rows[i].numeric, numeric) && !strcmp(method_rows[i].options, options))
+            return &method_rows[i];
+    return NULL;
+}
+
+/* What a unit of work costs more (or less) for a scene shaded `shading`
+ * (cost_model.py lighting): a textured class's lab scenes are shaded one
+ * way (QUALITY_SHADING); a scene shaded otherwise has the lit class's
+ * per-pixel lighting added or taken out, whatever the method: the lit
+ * class's cost per unit of work times its factor for the scene's shading
+ * less its factor for the class's (none counts as flat, lit per triangle).
+ * mt: the target of the method rows. */
+static double lighting_per_work(const struct base_row *base, const char *mt, const char *shading)
+{
+    const char *cs = NULL;
+    for (size_t i = 0; i < NROWS(shading_rows); i++)
+        if (!strcmp(shading_rows[i].cls, base->cls)) cs = shading_rows[i].shading;
+    if (!cs || !strcmp(cs, shading)) return 0;
+    char a[80], b[80]; /* "shading=" and a value (PART bytes, below) */
+    snprintf(a, sizeof a, "shading=%s", strcmp(shading, "none") ? shading : "flat");
+    snprintf(b, sizeof b, "shading=%s", strcmp(cs, "none") ? cs : "flat");
+    const struct base_row *lit = base_row(base->target, "lit", base->numeric);
+    const struct method_row *fa = method_row(mt, "lit", base->numeric, a), *fb = method_row(mt, "lit", base->numeric, b);
+    return lit && fa && fb ? lit->per_work * (fa->factor - fb->factor) : 0;
+}
 
 static const char *const target_names[] = { "m0plus", "m4f", "rp2040" };
 
@@ -433,11 +480,7 @@ int quality_choose(const struct quality_request *rq, struct quality_choice *ch, 
     const char *cls = class_of(&in), *renderer = in.kind == SCENE_RAYTRACE ? "raytracer" : "rasterizer";
     /* the model's rows: RP2040 runs Cortex-M0+ code (its methods' factors are the M0+'s) */
     const char *mt = rq->target == QUALITY_RP2040 ? "m0plus" : tname;
-    const struct base_row *base = NULL;
-    for (size_t i = 0; i < NROWS(base_rows); i++)
-        if (!strcmp(base_rows[i].target, tname) && !strcmp(base_rows[i].cls, cls) &&
-            !strcmp(base_rows[i].numeric, rq->numeric))
-            base = &base_rows[i];
+    const struct base_row *base = base_row(tname, cls, rq->numeric);
     size_t nm = NROWS(method_rows);
     struct cand *c = calloc(nm, sizeof *c);
     if (!c) return snprintf(err, errlen, "out of memory"), QUALITY_EINTERNAL;
@@ -500,7 +543,13 @@ int quality_choose(const struct quality_request *rq, struct quality_choice *ch, 
         rc = QUALITY_EINPUT;
     }
     double work = got.work;
-    for (int i = 0; i < nc; i++) c[i].predicted = base->per_work * work * c[i].m->factor;
+    char shading[PART] = "none";
+    if (in.kind != SCENE_RAYTRACE) scene_sets(rq->text, rq->len, renderer, "shading=x", shading, sizeof shading);
+    double light = base ? lighting_per_work(base, mt, shading) : 0;
+    for (int i = 0; i < nc; i++) { /* cost_model.py predicted */
+        double pw = base->per_work * c[i].m->factor;
+        c[i].predicted = (pw + light > 0.1 * pw ? pw + light : 0.1 * pw) * work;
+    }
     qsort(c, (size_t)nc, sizeof *c, by_cost);
     /* the reference: double, exact methods, trilinear where the scene sets no filter */
     char *ref_text = NULL;

@@ -14,7 +14,9 @@
  *               times the scene's work (host render of the scene as written:
  *               rays times objects for the ray tracer, pixels written for the
  *               rasterizer) times the method's factor against the class's
- *               base method;
+ *               base method (a textured scene shaded otherwise than its
+ *               class's lab scenes: the lit class's per-pixel lighting added
+ *               to each unit of work, or taken out);
  *   accuracy    measured: each candidate rendered on the host in the image's
  *               numeric mode against the double build with the exact methods
  *               (perspective_step 1, exact lighting, trilinear filtering where

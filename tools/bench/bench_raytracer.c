@@ -86,6 +86,11 @@ static int report(const char *what, const char *variant, uint64_t instr, const c
 #else
 #define BASE_OPTIONS ""
 #endif
+#ifdef BENCH_RT_PROFILE_02
+#define BASE_SCENE "book/raytracer-02"
+#else
+#define BASE_SCENE "book/raytracer-05"
+#endif
 
 #ifndef BENCH_RT_QUICK
 /* One frame of raytracer-05 with s's options as set (`options` in the scene
@@ -115,7 +120,7 @@ int bench_main(void)
 #ifdef BENCH_RT_THRESH
     s->rt.adaptive_threshold = BENCH_RT_THRESH;
 #endif
-    bad |= report("scene:book/raytracer-05", "strip16", frame(s, W, H), "book/raytracer-05", BASE_OPTIONS);
+    bad |= report("scene:" BASE_SCENE, "strip16", frame(s, W, H), BASE_SCENE, BASE_OPTIONS);
 #ifndef BENCH_RT_QUICK
     /* each variant's options as the scene file writes them (accuracy.py
      * measures its accuracy with them set); the coarse pass is no image */

@@ -13,7 +13,7 @@
  *
  * Also the texels the rasterizer's fast path samples (raster/raster_span.h):
  * made in work memory by render_init, or by scenec as const data in flash
- * (struct ras_texture's `fast`). */
+ * (struct scene's `tex_fast`). */
 #ifndef MIPMAP_H
 #define MIPMAP_H
 

@@ -122,10 +122,6 @@ struct ras_texture {
     uint8_t filter;       /* enum tex_filter */
     uint8_t mip_levels;   /* >1 when mipmaps are present (level i at mip[i]) */
     const uint8_t *const *mip;
-    /* the fast path's texels made by scenec (--fast-textures flash): RGB565
-     * (nearest) or mip_fast_bilinear's words (bilinear), mipmap.h; NULL:
-     * render_init makes them in work memory */
-    const void *fast;
 };
 
 struct ras_instance {
@@ -212,6 +208,10 @@ struct scene {
     const struct ras_model *models;
     const struct ras_instance *instances;
     const struct ras_texture *textures;
+    /* per texture, the fast path's texels made by scenec (--fast-textures
+     * flash): RGB565 (nearest) or mip_fast_bilinear's words (bilinear),
+     * mipmap.h; NULL (or no array): render_init makes them in work memory */
+    const void *const *tex_fast;
     const struct prim2d *prims;
     const struct line3d *lines;
     struct ras_options ras;

@@ -1,6 +1,5 @@
 /* SPDX-License-Identifier: MIT */
 /* core_api.c — the per-mode table (compiled once per NUM_MODE). */
-#include "mipmap.h"
 #include "core_api.h"
 #include "scene_format.h"
 #include "scene_parse.h"
@@ -165,17 +164,14 @@ static int instance_facing(const struct render_ctx *ctx, uint16_t i, uint32_t *f
 
 static uint32_t features(const void *scene) { return render_features(scene); }
 
-static void mark_fast_textures(void *scene)
+static void set_tex_fast(void *scene, const void *const *marks)
 {
     struct scene *s = scene;
-    struct ras_texture *t = (struct ras_texture *)(uintptr_t)s->textures;   /* (the parser's, in the heap) */
-    for (uint16_t i = 0; i < s->ntextures; i++)
-        if ((t[i].filter == TEX_NEAREST || t[i].filter == TEX_BILINEAR) && t[i].rgb && mip_fast_sides(t[i].w, t[i].h))
-            t[i].fast = t[i].rgb;
+    s->tex_fast = marks;
 }
 
 const struct core_api API = {
     NUM_NAME, load, parse_text, read_text, free_scene, info, work_size, init, render_begin_frame, render_strip,
     &num_saturations, API_FRAC, format, exact_methods, render_set_pass, set_fits, decision_probe, move_camera,
-    sibling_work_size, instance_facing, features, mark_fast_textures,
+    sibling_work_size, instance_facing, features, set_tex_fast,
 };

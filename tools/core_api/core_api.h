@@ -101,11 +101,12 @@ struct core_api {
     /* render_features (render.h): the features (firmware/core/scene_features.def)
      * a loaded scene needs */
     uint32_t (*features)(const void *scene);
-    /* the scene's nearest and bilinear textures marked as having their fast
-     * texels in flash (scenec --fast-textures flash, struct ras_texture's
-     * `fast`): render_work_size then leaves their copies out. The marks
-     * point at no texels: for sizes only, never rendered with. */
-    void (*mark_fast_textures)(void *scene);
+    /* the scene's textures given fast texels (struct scene's tex_fast,
+     * scenec --fast-textures flash: one entry per texture, NULL or not):
+     * render_work_size then leaves their copies out. scenec's marks point
+     * at no texels: for sizes only, never rendered with; the array stays
+     * the caller's. */
+    void (*set_tex_fast)(void *scene, const void *const *marks);
 };
 
 extern const struct core_api core_api_fixed, core_api_float, core_api_double;

@@ -291,6 +291,13 @@ static int fast_tex(const struct ras_texture *x)
            mip_fast_sides(x->w, x->h);
 }
 
+static int any_fast_tex(const struct scene *s)
+{
+    for (int t = 0; t < s->ntextures; t++)
+        if (fast_tex(&s->textures[t])) return 1;
+    return 0;
+}
+
 static void emit_textures(const struct scene *s)
 {
     for (int t = 0; t < s->ntextures; t++) {
@@ -343,13 +350,19 @@ static void emit_textures(const struct scene *s)
             const struct ras_texture *x = &s->textures[t];
             emit("    { .w = %d, .h = %d, .rgb = tex%d_level0, .filter = %d, .mip_levels = %d, .mip = ", x->w, x->h,
                  t, x->filter, x->mip_levels);
-            if (x->mip_levels > 1) emit("tex%d_mip", t);
-            else emit("0");
-            if (fast_tex(x)) emit(", .fast = tex%d_fast", t);
-            emit(" },\n");
+            if (x->mip_levels > 1) emit("tex%d_mip },\n", t);
+            else emit("0 },\n");
         }
         emit("};\n\n");
         flash_bytes += s->ntextures * sizeof(struct ras_texture);
+        if (any_fast_tex(s)) {
+            emit("static const void *const tex_fast[%d] = {", s->ntextures);
+            for (int t = 0; t < s->ntextures; t++)
+                if (fast_tex(&s->textures[t])) emit(" tex%d_fast,", t);
+                else emit(" 0,");
+            emit(" };\n\n");
+            flash_bytes += s->ntextures * sizeof(void *);
+        }
     }
 }
 
@@ -472,6 +485,7 @@ static void emit_scene_struct(const struct scene *s, const char *id, unsigned fi
     emit("    .models = %s, .instances = %s, .textures = %s, .prims = %s, .lines = %s,\n",
          s->nmodels ? "models" : "0", s->ninstances ? "instances" : "0", s->ntextures ? "textures" : "0",
          s->nprims ? "prims" : "0", s->nlines ? "lines" : "0");
+    if (any_fast_tex(s)) emit("    .tex_fast = tex_fast,\n");
     emit_members("    .ras = { ", ras_members, sizeof ras_members / sizeof ras_members[0], &s->ras);
     emit("};\n\n");
     flash_bytes += sizeof(struct scene) + strlen(s->name) + 1;
@@ -1058,8 +1072,8 @@ static int analyse(const struct args *a, const struct scene *s, struct scene_for
 /* The renderer's work memory: *work the target's (--target-work) or else the
  * fixed-point core's on this host, *host_work the latter; *sibling the same
  * of the second core's context. 0, or 2. */
-static int work_sizes(const struct args *a, const char *text, size_t len, size_t *work, size_t *host_work,
-                      size_t *sibling)
+static int work_sizes(const struct args *a, const struct scene *s, const char *text, size_t len, size_t *work,
+                      size_t *host_work, size_t *sibling)
 {
     char err[600];
     void *fs = NULL;
@@ -1069,9 +1083,19 @@ static int work_sizes(const struct args *a, const char *text, size_t len, size_t
     }
     *host_work = core_api_fixed12.work_size(fs, (uint16_t)a->width, (uint16_t)a->height, (uint16_t)a->strip);
     size_t fast_copies = 0;   /* the work the fast texels in flash save (the same bytes on the target) */
-    if (fast_in_flash) {
-        core_api_fixed12.mark_fast_textures(fs);
+    if (fast_in_flash && s->ntextures) {
+        static const char mark;   /* (a non-NULL entry: the texture's texels are in flash) */
+        const void **marks = calloc(s->ntextures, sizeof *marks);
+        if (!marks) {
+            core_api_fixed12.scene_free(fs);
+            fprintf(stderr, "scenec: out of memory\n");
+            return 1;
+        }
+        for (int i = 0; i < s->ntextures; i++) marks[i] = fast_tex(&s->textures[i]) ? &mark : NULL;
+        core_api_fixed12.set_tex_fast(fs, marks);
         size_t w = core_api_fixed12.work_size(fs, (uint16_t)a->width, (uint16_t)a->height, (uint16_t)a->strip);
+        core_api_fixed12.set_tex_fast(fs, NULL);
+        free(marks);
         fast_copies = *host_work - w;
         *host_work = w;
     }
@@ -1238,7 +1262,7 @@ int main(int argc, char **argv)
     struct scene_format F;
     size_t work = 0, host_work = 0, sibling = 0;
     rc = analyse(&a, s, &F);
-    if (!rc) rc = work_sizes(&a, text, text_len, &work, &host_work, &sibling);
+    if (!rc) rc = work_sizes(&a, s, text, text_len, &work, &host_work, &sibling);
     free(text);
     if (!rc && scene_given_zero(s, F.num_frac, a.path, err, sizeof err)) {
         fprintf(stderr, "%s\n", err);

@@ -75,7 +75,9 @@ RAS_HOT static uint32_t SPAN_NAME(const struct ftri *T, const struct frow *R)
     /* the bordered texels' rows (words) and the coordinates' range */
     const uint32_t *tex = (const uint32_t *)T->ft->tex;
     const uint32_t row = (T->ft->wmask + 3u) * 2u;
-    const int32_t umax = (int32_t)((T->ft->wmask + 1u) << 16), vmax = (int32_t)((T->ft->hmask + 1u) << 16);
+    /* (at most 2^30: no attribute the fast path takes is larger) */
+    const int32_t umax = T->ft->wmask < 0x4000u ? (int32_t)((T->ft->wmask + 1u) << 16) : 0x40000000,
+                  vmax = T->ft->hmask < 0x4000u ? (int32_t)((T->ft->hmask + 1u) << 16) : 0x40000000;
     span_clamp_uv(cur + SPAN_A_UV, umax, vmax);
 #if SPAN_SHADE == SPAN_SHADE_NONE && SPAN_DEPTH == 2 && !SPAN_HOST && defined(__ARM_ARCH_6M__) && defined(__GNUC__)
     uint32_t ast[5] = { dz, (uint32_t)(uintptr_t)tex, row * 4u, 0, 0 };   /* (the loop by hand below) */

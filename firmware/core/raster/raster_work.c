@@ -55,10 +55,13 @@ static size_t tex565_size(const struct scene *s, const struct ras_texture *t)
     return t->filter == TEX_BILINEAR ? mip_fast_bilinear_size(t->w, t->h) : (size_t)t->w * t->h * 2;
 }
 
-/* Of which work memory: none when scenec made them (t->fast, in flash). */
-static size_t tex565_work(const struct scene *s, const struct ras_texture *t)
+/* Texture i's texels made by scenec (in flash), or NULL. */
+static const void *tex_fast(const struct scene *s, uint16_t i) { return s->tex_fast ? s->tex_fast[i] : NULL; }
+
+/* Of which work memory: none when scenec made them. */
+static size_t tex565_work(const struct scene *s, uint16_t i)
 {
-    return t->fast ? 0 : tex565_size(s, t);
+    return tex_fast(s, i) ? 0 : tex565_size(s, &s->textures[i]);
 }
 
 
@@ -234,7 +237,7 @@ static int carve(const struct scene *s, uint16_t w, uint16_t h, uint16_t strip_r
         for (uint16_t i = 0; i < s->ntextures; i++) (void)work_take(c, ras_mips_size(&s->textures[i]));
     rc->fast.tex565 = work_take(c, sizeof(struct ras_tex565) * s->ntextures);
     rc->fast.tex_mem = c->base ? c->base + c->off : NULL;   /* the RGB565 copies, the same way */
-    for (uint16_t i = 0; i < s->ntextures; i++) (void)work_take(c, tex565_work(s, &s->textures[i]));
+    for (uint16_t i = 0; i < s->ntextures; i++) (void)work_take(c, tex565_work(s, i));
     void *pv = work_take(c, frame_cache(s) ? sizeof(struct ras_pv) * nverts : 0);
     void *flags = work_take(c, frame_cache(s) ? ntris : 0);
     int caches = shade_caches(s);
@@ -344,16 +347,16 @@ static void init_textures(struct ras_ctx *rc)
         size_t n = tex565_size(s, tx);
         rc->fast.tex565[i].p = NULL;
         if (!n) continue;
-        if (tx->fast)
-            rc->fast.tex565[i].p = tx->fast;
+        if (tex_fast(s, i))
+            rc->fast.tex565[i].p = tex_fast(s, i);
         else if (tx->filter == TEX_BILINEAR)
             mip_fast_bilinear(tx->rgb, tx->w, tx->h, (uint32_t *)(void *)tm);
         else
             mip_fast_rgb565(tx->rgb, tx->w, tx->h, (uint16_t *)(void *)tm);
-        if (!tx->fast) rc->fast.tex565[i].p = tm;
+        if (!tex_fast(s, i)) rc->fast.tex565[i].p = tm;
         rc->fast.tex565[i].wlog2 = (uint8_t)log2_exact(tx->w);
         rc->fast.tex565[i].hlog2 = (uint8_t)log2_exact(tx->h);
-        tm += work_round(tex565_work(s, tx));
+        tm += work_round(tex565_work(s, i));
     }
 }
 

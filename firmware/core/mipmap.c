@@ -33,9 +33,10 @@ void mip_fast_rgb565(const uint8_t *rgb, unsigned w, unsigned h, uint16_t *d)
 {
     for (size_t k = 0; k < (size_t)w * h; k++) {
         const uint8_t *c = rgb + 3 * k;
-        /* round(c * L / 255), as rgb_to_565 rounds an integral channel */
-        uint32_t r = ((uint32_t)c[0] * 62 + 255) / 510, g = ((uint32_t)c[1] * 126 + 255) / 510,
-                 b = ((uint32_t)c[2] * 62 + 255) / 510;
+        /* round(c * L / 255), as rgb_to_565 rounds an integral channel: x / 255
+         * as (x * 0x8081) >> 23 (x < 2^16), no division */
+        uint32_t r = ((uint32_t)c[0] * 31 + 127) * 0x8081u >> 23, g = ((uint32_t)c[1] * 63 + 127) * 0x8081u >> 23,
+                 b = ((uint32_t)c[2] * 31 + 127) * 0x8081u >> 23;
         d[k] = (uint16_t)(r << 11 | g << 5 | b);
     }
 }

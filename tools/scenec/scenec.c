@@ -298,6 +298,35 @@ static int any_fast_tex(const struct scene *s)
     return 0;
 }
 
+/* A texture's fast-path texels as const data (scenec --fast-textures
+ * flash): two words a texel for bilinear filtering, RGB565 otherwise. */
+static int emit_oom;   /* a buffer could not be had: the output is refused */
+static void emit_fast_texels(const struct ras_texture *x, int t)
+{
+    int bl = x->filter == TEX_BILINEAR;
+    size_t size = bl ? mip_fast_bilinear_size(x->w, x->h) : (size_t)x->w * x->h * 2;
+    size_t esz = bl ? 4 : 2, n = size / esz;
+    flash_bytes += size;
+    texture_bytes += size;
+    if (!out) return;
+    void *d = malloc(size);
+    if (!d) {
+        emit_oom = 1;
+        return;
+    }
+    if (bl)
+        mip_fast_bilinear(x->rgb, x->w, x->h, d);
+    else
+        mip_fast_rgb565(x->rgb, x->w, x->h, d);
+    emit("static const uint%d_t tex%d_fast[%zu] = {", bl ? 32 : 16, t, n);
+    for (size_t k = 0; k < n; k++) {
+        unsigned v = bl ? (unsigned)((const uint32_t *)d)[k] : ((const uint16_t *)d)[k];
+        emit(bl ? "%s0x%08x," : "%s0x%04x,", k % (bl ? 8 : 12) ? "" : "\n   ", v);
+    }
+    emit("\n};\n");
+    free(d);
+}
+
 static void emit_textures(const struct scene *s)
 {
     for (int t = 0; t < s->ntextures; t++) {
@@ -314,28 +343,7 @@ static void emit_textures(const struct scene *s)
             w = w > 1 ? w / 2 : 1;
             h = h > 1 ? h / 2 : 1;
         }
-        if (fast_tex(x)) {
-            if (x->filter == TEX_BILINEAR) {
-                size_t n = mip_fast_bilinear_size(x->w, x->h) / 4;
-                uint32_t *d = malloc(n * 4);
-                if (d) mip_fast_bilinear(x->rgb, x->w, x->h, d);
-                emit("static const uint32_t tex%d_fast[%zu] = {", t, n);
-                for (size_t k = 0; out && d && k < n; k++) emit("%s0x%08x,", k % 8 ? "" : "\n   ", (unsigned)d[k]);
-                free(d);
-                flash_bytes += n * 4;
-                texture_bytes += n * 4;
-            } else {
-                size_t n = (size_t)x->w * x->h;
-                uint16_t *d = malloc(n * 2);
-                if (d) mip_fast_rgb565(x->rgb, x->w, x->h, d);
-                emit("static const uint16_t tex%d_fast[%zu] = {", t, n);
-                for (size_t k = 0; out && d && k < n; k++) emit("%s0x%04x,", k % 12 ? "" : "\n   ", (unsigned)d[k]);
-                free(d);
-                flash_bytes += n * 2;
-                texture_bytes += n * 2;
-            }
-            emit("\n};\n");
-        }
+        if (fast_tex(x)) emit_fast_texels(x, t);
         if (x->mip_levels > 1) {
             emit("static const uint8_t *const tex%d_mip[%d] = {", t, x->mip_levels);
             for (int l = 0; l < x->mip_levels; l++) emit(" tex%d_level%d,", t, l);
@@ -1177,8 +1185,15 @@ static int write_outputs(const struct args *a, const struct scene *s, const char
         return 1;
     }
     target_work_given = a->target_work >= 0;
+    emit_oom = 0;
     emit_scene(s, id, a->path, frac, fits, a->width, a->height, a->strip);
     int cerr = ferror(out);
+    if (emit_oom) {
+        fclose(out);
+        fprintf(stderr, "scenec: out of memory (a texture's fast texels)\n");
+        tmp_discard();
+        return 1;
+    }
     if (fclose(out) || cerr || rename(tmp_path[0], outh) || (tmp_live[0] = 0, rename(tmp_path[1], a->outc))) {
         fprintf(stderr, "scenec: error writing %s\n", a->outc);
         tmp_discard();

@@ -50,6 +50,16 @@ int64_t ras_floordiv(int64_t n, int64_t d, int64_t *rem)
     return qs;
 }
 
+/* ras_div_depth's four quotients by z, each its own division (float and
+ * double; fixed point where z has no prepared reciprocal) */
+static void div_depth_plain(num x, num y, num z, num unproj, num near_z, num *X, num *Y, num *iz, uint32_t *depth)
+{
+    *X = wnum_div(num_mul_wide(x, unproj), wnum_from_num(z));
+    *Y = wnum_div(num_mul_wide(y, unproj), wnum_from_num(z));
+    *iz = num_recip(z);
+    *depth = ras_depth32(near_z, z);
+}
+
 #if NUM_MODE == NUM_MODE_FIXED
 
 void ras_interp_init(struct ras_interp *it, num i0, num d0, num i1, num d1)
@@ -178,10 +188,7 @@ static num wdiv_pre(wnum a, num z, const struct num_udiv_pre *p)
 void ras_div_depth(num x, num y, num z, num unproj, num near_z, num *X, num *Y, num *iz, uint32_t *depth)
 {
     if (z <= 0) {
-        *X = wnum_div(num_mul_wide(x, unproj), wnum_from_num(z));
-        *Y = wnum_div(num_mul_wide(y, unproj), wnum_from_num(z));
-        *iz = num_recip(z);
-        *depth = ras_depth32(near_z, z);
+        div_depth_plain(x, y, z, unproj, near_z, X, Y, iz, depth);
         return;
     }
     const struct num_udiv_pre p = num_udiv_pre_make((uint32_t)z);
@@ -316,10 +323,7 @@ vec3 ras_mul_point(const mat4 *m, vec3 p) { return m4_mul_point(m, p); }
 
 void ras_div_depth(num x, num y, num z, num unproj, num near_z, num *X, num *Y, num *iz, uint32_t *depth)
 {
-    *X = wnum_div(num_mul_wide(x, unproj), wnum_from_num(z));
-    *Y = wnum_div(num_mul_wide(y, unproj), wnum_from_num(z));
-    *iz = num_recip(z);
-    *depth = ras_depth32(near_z, z);
+    div_depth_plain(x, y, z, unproj, near_z, X, Y, iz, depth);
 }
 
 uint32_t ras_depth32(num near_z, num z)

@@ -347,19 +347,23 @@ static void init_textures(struct ras_ctx *rc)
         size_t n = tex565_size(s, tx);
         rc->fast.tex565[i].p = NULL;
         if (!n) continue;
-        if (tex_fast(s, i))
-            rc->fast.tex565[i].p = tex_fast(s, i);
-        else if (tx->filter == TEX_BILINEAR) {
-            /* (only in an image with a bilinear span loop: render_init refuses
-             * a scene whose loops it lacks) */
-            if (FW_FEATURE_SPAN_NONE_TEXBL || FW_FEATURE_SPAN_LI_TEXBL || FW_FEATURE_SPAN_PHONG_TEXBL)
-                mip_fast_bilinear(tx->rgb, tx->w, tx->h, (uint32_t *)(void *)tm);
-        } else if (FW_FEATURE_SPAN_NONE_TEX || FW_FEATURE_SPAN_LI_TEX || FW_FEATURE_SPAN_PHONG_TEX)
-            mip_fast_rgb565(tx->rgb, tx->w, tx->h, (uint16_t *)(void *)tm);
-        if (!tex_fast(s, i)) rc->fast.tex565[i].p = tm;
+        const void *made = tex_fast(s, i);   /* by scenec, in flash: no copy */
+        if (made) {
+            rc->fast.tex565[i].p = made;
+        } else {
+            /* (the builders only in an image with their span loops:
+             * render_init refuses a scene whose loops it lacks) */
+            if (tx->filter == TEX_BILINEAR) {
+                if (FW_FEATURE_SPAN_NONE_TEXBL || FW_FEATURE_SPAN_LI_TEXBL || FW_FEATURE_SPAN_PHONG_TEXBL)
+                    mip_fast_bilinear(tx->rgb, tx->w, tx->h, (uint32_t *)(void *)tm);
+            } else if (FW_FEATURE_SPAN_NONE_TEX || FW_FEATURE_SPAN_LI_TEX || FW_FEATURE_SPAN_PHONG_TEX) {
+                mip_fast_rgb565(tx->rgb, tx->w, tx->h, (uint16_t *)(void *)tm);
+            }
+            rc->fast.tex565[i].p = tm;
+            tm += work_round(n);
+        }
         rc->fast.tex565[i].wlog2 = (uint8_t)log2_exact(tx->w);
         rc->fast.tex565[i].hlog2 = (uint8_t)log2_exact(tx->h);
-        tm += work_round(tex565_work(s, i));
     }
 }
 

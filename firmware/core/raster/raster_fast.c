@@ -111,6 +111,11 @@ struct fstate {
     int64_t zrow, gy16;          /* depth plane at (c0, row), Q32.16 */
     int32_t gxq;                 /* column gradient gxq * 2^16 + gxf */
     uint32_t gxf, dz;
+    /* z32: the same plane in 32-bit words, zrow = zhi * 2^16 + zfrac and
+     * gy16 = gyq * 2^16 + gyf (modulo 2^48; fractions below 2^16), where
+     * every span's depths are proven to lie in [1, 2^32 - 2] */
+    int z32;
+    uint32_t zhi, zfrac, gyq, gyf;
     int32_t c0, kmax, row, last; /* box column, width - 1, next row, last row */
     int shade, src, depth;       /* the span loop: raster_fast.h */
 };
@@ -198,6 +203,27 @@ static int64_t adiv_floor(struct adiv *A, int64_t n, int64_t *rem)
     return -(int64_t)q - 1;
 }
 
+/* The plane's 32-bit form (struct fstate's z32) when the corners' depths
+ * lie in [2, 2^32 - 2]. A covered pixel's centre lies in the triangle, where
+ * the exact plane is a mean of the corners' depths; the stepped Q32.16
+ * value is below it by less than 2^16 (one truncation at the top row, one
+ * per row and one per column, fewer than 2^15 in all), so a span's first
+ * depth is at least the smallest corner's - 1, its last (stepped by the
+ * column gradient truncated toward zero) between that and the exact value
+ * at its last pixel, less at most 1: every one in [1, 2^32 - 2], where the
+ * 64-bit row's clamp never applies and the low 32 bits are the value. */
+static void depth_words(struct fstate *S, uint32_t d0, uint32_t d1, uint32_t d2)
+{
+    uint32_t lo = d0 < d1 ? d0 : d1, hi = d0 < d1 ? d1 : d0;
+    if (d2 < lo) lo = d2;
+    if (d2 > hi) hi = d2;
+    S->z32 = lo >= 2 && hi <= UINT32_MAX - 1;
+    S->zhi = (uint32_t)((uint64_t)S->zrow >> 16);
+    S->zfrac = (uint32_t)S->zrow & 0xFFFFu;
+    S->gyq = (uint32_t)((uint64_t)S->gy16 >> 16);
+    S->gyf = (uint32_t)S->gy16 & 0xFFFFu;
+}
+
 static int fast_depth(const struct ras_sv *v0, const struct ras_sv *v1, const struct ras_sv *v2,
                       int32_t area, int32_t rtop, struct fstate *S)
 {
@@ -219,6 +245,7 @@ static int fast_depth(const struct ras_sv *v0, const struct ras_sv *v1, const st
     if (q > INT32_MAX || q < -INT32_MAX) return -1;
     S->gy16 = q * 65536 + adiv_floor(&A, rem << 16, &f);
     S->zrow = zrow + S->gy16 * (r0 - rtop);
+    depth_words(S, v0->depth, v1->depth, v2->depth);
     return 1;
 }
 
@@ -348,6 +375,8 @@ static int fast_setup(const struct ras_ctx *rc, const struct ras_sv *v0, const s
     S->zrow = S->gy16 = 0;
     S->gxq = 0;
     S->gxf = S->dz = 0;
+    S->z32 = 0;
+    S->zhi = S->zfrac = S->gyq = S->gyf = 0;
     if (S->depth && fast_depth(v0, v1, v2, area, rtop, S) < 0) return -1;
     const struct ras_sv *const vv[3] = { v0, v1, v2 };
     return fast_attrs(rc, vv, ft, area, S);
@@ -373,7 +402,9 @@ RAS_ALWAYS_INLINE uint32_t fast_rows(const struct ras_ctx *rc, struct fstate *S,
     const int64_t gy16 = S->gy16;
     const int32_t gxq = S->gxq, c0 = S->c0, kmax = S->kmax;
     const uint32_t gxf = S->gxf, dz = S->dz;
-    const int depth = S->depth;
+    const int depth = S->depth, z32 = S->z32;
+    uint32_t zhi = S->zhi, zfrac = S->zfrac;
+    const uint32_t gyq = S->gyq, gyf = S->gyf;
     int32_t r0 = S->row, r1 = S->last < (int32_t)t->y1 - 1 ? S->last : (int32_t)t->y1 - 1;
     const int di = rc->depth_bytes == 0 ? 0 : (rc->depth_bytes == 2 ? 1 : 2);
 #if RENDER_HOST_OUTPUTS
@@ -426,7 +457,11 @@ RAS_ALWAYS_INLINE uint32_t fast_rows(const struct ras_ctx *rc, struct fstate *S,
                 R.rgb888 = t->rgb888 ? t->rgb888 + 3 * idx : NULL;
                 R.written = t->written ? t->written + idx : NULL;
             }
-            if (depth) {
+            if (z32) {
+                /* the plane's integer part at column lo, modulo 2^32
+                 * (depth_words: the value itself) */
+                R.z = zhi + (uint32_t)lo * (uint32_t)gxq + ((zfrac + (uint32_t)lo * gxf) >> 16);
+            } else if (depth) {
                 /* lo * gx16 as two 32-bit products (lo < 2^14, gxf < 2^16) */
                 int64_t zs = (zrow + num_smul32(lo, gxq) * 65536 + (int64_t)((uint32_t)lo * gxf)) >> 16;
                 int64_t ze = zs + num_smul32(R.n - 1, (int32_t)dz);
@@ -446,7 +481,12 @@ RAS_ALWAYS_INLINE uint32_t fast_rows(const struct ras_ctx *rc, struct fstate *S,
             uint32_t wrote = fn(Tp, &R);
             total += extra ? wrote : (uint32_t)R.n;
         }
-        zrow += gy16;
+        if (z32) {
+            zfrac += gyf;
+            zhi += gyq + (zfrac >> 16);
+            zfrac &= 0xFFFFu;
+        } else
+            zrow += gy16;
         if (scan) {
             for (int i = 0; i < 3; i++) {
                 wr[i] += b[i];
@@ -464,6 +504,8 @@ RAS_ALWAYS_INLINE uint32_t fast_rows(const struct ras_ctx *rc, struct fstate *S,
         }
     }
     S->zrow = zrow;
+    S->zhi = zhi;
+    S->zfrac = zfrac;
     S->row = r1 + 1;
     return total;
 }

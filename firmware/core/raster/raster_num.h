@@ -68,12 +68,40 @@ uint32_t ras_depth32(num near_z, num z);
  * operations (vec.c's are calls: nine products and twelve sums a point). */
 vec3 ras_mul_point(const mat4 *m, vec3 p);
 
+/* The range of a model's coordinates: the least and greatest of each axis
+ * (ok 0: none known; fixed point only, and only for at least one point). */
+struct ras_box { num lo[3], hi[3]; uint8_t ok; };
+void ras_box_of(struct ras_box *b, const vec3 *v, uint32_t n);
+/* *out: the range of ras_mul_point(m, p)'s components over the points p
+ * of box b, exactly (each rounded product is monotonic in p); 1 when no
+ * product or sum of ras_mul_point saturates for any of those points, so
+ * that ras_mul_point_fit gives its bits there; 0 (and out->ok 0) when one
+ * may, or b is not known. */
+int ras_box_transform(const mat4 *m, const struct ras_box *b, struct ras_box *out);
+/* ras_mul_point(m, p) for a point of a box ras_box_transform accepted with
+ * m: the same bits in 32-bit arithmetic, without the saturation checks. */
+vec3 ras_mul_point_fit(const mat4 *m, vec3 p);
+
 /* The divisions of a vertex's projection by its depth z > 0: X and Y =
  * x * unproj / z and y * unproj / z with the products kept wide (as
  * ras_mul_div), iz = 1/z (num_recip) and depth = ras_depth32(near_z, z),
  * the same bits as those calls. Fixed point divides once: z prepared as a
  * reciprocal (num_udiv_pre) serves the four. */
 void ras_div_depth(num x, num y, num z, num unproj, num near_z, num *X, num *Y, num *iz, uint32_t *depth);
+
+/* A canvas coordinate f (pixels) in sub-pixel units, 0 < sb <= 8: floor(f)
+ * 2^sb + floor(frac(f) 2^sb + 1/2), num_floor_int, num_frac, num_mul_int
+ * and num_add's bits (raster_project.c's form); fixed point in integers
+ * where frac(f) 2^sb + 1/2 cannot saturate. */
+static inline int32_t ras_sub_pos(num f, int sb)
+{
+#if NUM_MODE == NUM_MODE_FIXED && NUM_FRAC <= 22
+    return (int32_t)((uint32_t)(f >> NUM_FRAC) << sb) +
+           (int32_t)(((((uint32_t)f & (NUM_ONE_RAW - 1u)) << sb) + (NUM_ONE_RAW >> 1)) >> NUM_FRAC);
+#else
+    return (int32_t)((uint32_t)num_floor_int(f) << sb) + num_floor_int(num_add(num_mul_int(num_frac(f), 1 << sb), NUM_HALF));
+#endif
+}
 
 /* A front face known from the screen: triangle a b c of three projected
  * corners (inside every plane, z >= near) whose doubled area on screen

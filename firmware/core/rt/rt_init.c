@@ -107,6 +107,7 @@ static void init_options(struct rt_state *rt)
     rt->corner_row[0] = rt->corner_row[1] = -1;
     rt->tiles = rt->shortcuts && !o->bvh;
     rt->tile_row = -1;
+    rt->bg_row = -1;
     rt->prim_items = NULL;
     rt->prim_iv = NULL;
 }
@@ -208,6 +209,7 @@ int rt_begin_frame(void *work, uint16_t frame)
     rt->pass = RENDER_PASS_FULL;
     rt->corner_row[0] = rt->corner_row[1] = -1;
     rt->tile_row = -1;           /* the camera may have moved */
+    rt->bg_row = -1;
     rt_frame_constants(rt);
     return 0;
 }

@@ -193,6 +193,14 @@ struct rt_state {
     int16_t *dx_iv;              /* row dx_row's (NULL: none) */
     int16_t *prim_iv;            /* the traced primary ray's row (NULL: none) */
     int16_t prim_col;            /* ... and its column */
+    /* a run of primary rays certainly missing everything: row bg_row's
+     * columns [bg_lo, bg_hi] (-1: none), where every candidate's interval
+     * left the ray at bg_lo out and begins after bg_hi, inside bg_lo's tile
+     * (closest_prim); its rays take the background without a test
+     * (rt_trace_pixel), counted as the bg_tests tests they skip */
+    int32_t bg_row;
+    int16_t bg_lo, bg_hi;
+    uint16_t bg_tests;
     struct rt_counters n;
 };
 

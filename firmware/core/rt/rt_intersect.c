@@ -550,7 +550,10 @@ static int closest_prim(struct rt_state *rt, struct rt_ray *ray, num t_min, num 
 {
     const struct rt_object *objs = rt->s->objects;
     int16_t *iv = rt->prim_iv, nobj = (int16_t)rt->s->nobjects, col = rt->prim_col, skip = rt->skip_item;
-    int found = 0;
+    int found = 0, tried = 0;
+    /* the background run's last column (rt_state.bg_*): the tile's last
+     * one (its list), then before every later interval */
+    int16_t run = rt->prim_items ? (int16_t)(col / RT_TILE * RT_TILE + RT_TILE - 1) : INT16_MAX;
     for (uint16_t i = 0; i < nitems; i++) {
         int16_t item = items[i];
         if (item == skip) continue;
@@ -558,17 +561,31 @@ static int closest_prim(struct rt_state *rt, struct rt_ray *ray, num t_min, num 
             rt->n.tests++;
             int16_t *e = iv + 2 * item;
             if (e[0] == RT_IV_TODO) rt_row_interval(rt, item, e);
-            if (col < e[0] || col > e[1]) continue;
+            if (col < e[0]) {
+                if (e[0] <= run) run = (int16_t)(e[0] - 1);
+                continue;
+            }
+            if (col > e[1]) continue;
+            tried = 1;
             if (e[0] == INT16_MIN) {
                 rt_ray_cd(ray);
                 if (rt_coarse_cam_miss(&ray->cd, &rt->oc[item].ccam)) continue;
             }
             if (!sphere_item_hit(rt, item, ray, t_min, limit, hit, 1)) continue;
-        } else if (!rt_item_hit(rt, item, ray, t_min, limit, hit)) {
-            continue;
+        } else {
+            tried = 1;
+            if (!rt_item_hit(rt, item, ray, t_min, limit, hit)) continue;
         }
         limit = hit->t;
         found = 1;
+    }
+    if (!tried && skip < 0) {
+        /* every candidate's interval leaves this column out: so it does for
+         * the columns up to run, the pixels' background (rt_trace_pixel) */
+        rt->bg_row = ray->dxrow;
+        rt->bg_lo = col;
+        rt->bg_hi = run;
+        rt->bg_tests = (uint16_t)nitems;
     }
     return found;
 }

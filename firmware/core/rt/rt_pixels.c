@@ -153,9 +153,30 @@ static void coarse_strip(struct rt_state *rt, struct render_target *t)
     }
 }
 
+/* The plain pixels after col of a background run (rt_state.bg_*) that
+ * covers col in row row (px: the row's RGB565 pixels), written as the
+ * background without their rays
+ * (which rt_trace_pixel would answer so; counted as it counts them); the
+ * last column written, or col. */
+static int background_run(struct rt_state *rt, uint16_t *px, int col, int row)
+{
+    if (rt->bg_row != row || col < rt->bg_lo || col >= rt->bg_hi) return col;
+    int last = rt->bg_hi < rt->w - 1 ? rt->bg_hi : rt->w - 1;
+    uint16_t v = rgb_to_565(rt->s->background);
+    for (int x = col + 1; x <= last; x++) px[x] = v;
+    uint32_t k = (uint32_t)(last - col);
+    rt->n.rays += k;
+    rt->n.primary_rays += k;
+    rt->n.tests += k * rt->bg_tests;
+    return last;
+}
+
 /* Every pixel of the strip (plain, supersampled, or the book's subsampling). */
 static void full_strip(struct rt_state *rt, struct render_target *t)
 {
+    /* plain pixels whose runs of background need nothing but the colour */
+    int runs = rt->ss <= 1 && !rt->ss_adaptive && !rt->round && !rt->shadow_probe && !rt->item_probe &&
+               !t->rgb888 && !t->written;
     for (int row = t->y0; row < t->y1; row++) {
         uint8_t *probe = rt->shadow_probe ? rt->shadow_probe + (size_t)row * rt->w : NULL;
         if (rt->subsample > 1 && rt->w > 1) {
@@ -176,6 +197,14 @@ static void full_strip(struct rt_state *rt, struct render_target *t)
                 continue;
             }
             rgb c = pixel(rt, col, row, 1, have_up, probe ? probe + col : NULL);
+            if (runs) {
+                /* rt_put's work for the RGB565 output alone, without the call */
+                uint16_t *px = t->rgb565 + (size_t)(row - t->y0) * t->width;
+                px[col] = rgb_to_565(c);
+                rt->n.covered += rt->px_covered;
+                col = background_run(rt, px, col, row);
+                continue;
+            }
             rt_put(rt, t, col, row, c, rt->px_covered);
         }
         rt->last_row = row;

@@ -352,6 +352,16 @@ rgb rt_trace_canvas(struct rt_state *rt, num x, num y, struct rt_prim *prim)
 
 rgb rt_trace_pixel(struct rt_state *rt, int col, int row, struct rt_prim *prim)
 {
+    if (row == rt->bg_row && col >= rt->bg_lo && col <= rt->bg_hi) {
+        /* certainly the background (a run closest_prim found): the ray
+         * trace_primary would trace, and its tests, counted */
+        rt->n.rays++;
+        rt->n.primary_rays++;
+        rt->n.tests += rt->bg_tests;
+        prim->item = -1;
+        prim->shadow = 0;
+        return background(rt);
+    }
     prim_list(rt, col, row);
     return trace_primary(rt, pixel_to_viewport(rt, col, row), col, row, prim);
 }

@@ -162,65 +162,68 @@ RAS_HOT static uint32_t SPAN_NAME(const struct ftri *T, const struct frow *R)
     defined(__ARM_ARCH_6M__) && defined(__GNUC__)
         {
             /* ARMv6-M: the loop below by hand (the same operations as the C
-             * loop, so the same bits): the depth entry at a fixed offset
-             * from the pixel; pe, z, u, v, the texels and their row in
-             * r8..r12 and lr, the steps on the stack (ast: dz, the
-             * texels, their row in bytes, du, dv) */
+             * loop, so the same bits; the products' order changes nothing:
+             * every blend is exact modulo 2^32). r0 the pixel, r8 the span's
+             * end, r9 u, r10 v, r11 z, r12 the texels, lr their row in bytes;
+             * on the stack dz, du, dv and the depth entry's offset from the
+             * pixel. A texel's two words and its right neighbour's are
+             * consecutive: one LDM a row, the bottom one into the registers
+             * its address was in. */
             uint16_t *px0 = px;
-            uint32_t off = (uint32_t)(uintptr_t)zp - (uint32_t)(uintptr_t)px;
-            uint32_t t1 = (uint32_t)(uintptr_t)pe, t2 = z, t3 = u, t4 = v, t5 = (uint32_t)(uintptr_t)ast, a0;
             ast[3] = du;
             ast[4] = dv;
+            register uint32_t r0 __asm__("r0") = (uint32_t)(uintptr_t)px;
+            register uint32_t r1 __asm__("r1") = (uint32_t)(uintptr_t)pe;
+            register uint32_t r2 __asm__("r2") = z;
+            register uint32_t r3 __asm__("r3") = u;
+            register uint32_t r4 __asm__("r4") = v;
+            register uint32_t r5 __asm__("r5") = (uint32_t)(uintptr_t)ast;
+            register uint32_t r6 __asm__("r6") = (uint32_t)(uintptr_t)zp - (uint32_t)(uintptr_t)px;
+            register uint32_t r7 __asm__("r7") = 0;
             __asm__ volatile(
                 ".syntax unified\n\t"
-                "mov r8, %[t1]\n\t mov r11, %[t2]\n\t mov r9, %[t3]\n\t mov r10, %[t4]\n\t"
-                "ldr %[t1], [%[t5], #16]\n\t push {%[t1]}\n\t"
-                "ldr %[t1], [%[t5], #12]\n\t push {%[t1]}\n\t"
-                "ldr %[t1], [%[t5], #0]\n\t push {%[t1]}\n\t"
-                "ldr %[t1], [%[t5], #4]\n\t mov r12, %[t1]\n\t"
-                "ldr %[t1], [%[t5], #8]\n\t mov lr, %[t1]\n\t"
-                "cmp %[px], r8\n\t beq 3f\n"
+                "mov r8, r1\n\t mov r11, r2\n\t mov r9, r3\n\t mov r10, r4\n\t push {r6}\n\t"
+                "ldr r1, [r5, #16]\n\t push {r1}\n\t"
+                "ldr r1, [r5, #12]\n\t push {r1}\n\t"
+                "ldr r1, [r5, #0]\n\t push {r1}\n\t"
+                "ldr r1, [r5, #4]\n\t mov r12, r1\n\t"
+                "ldr r1, [r5, #8]\n\t mov lr, r1\n\t"
+                "cmp r0, r8\n\t beq 3f\n"
                 "1:\n\t"
                 /* depth */
-                "mov %[a0], r11\n\t lsrs %[a0], %[a0], #16\n\t ldrh %[t1], [%[px], %[off]]\n\t"
-                "cmp %[a0], %[t1]\n\t bls 2f\n\t strh %[a0], [%[px], %[off]]\n\t"
-                /* t3 = the texels' address, a0 = fx, t1 = fy */
-                "mov %[t1], r10\n\t lsrs %[t3], %[t1], #16\n\t mov %[t4], lr\n\t muls %[t3], %[t4], %[t3]\n\t"
-                "mov %[a0], r9\n\t lsrs %[t4], %[a0], #16\n\t lsls %[t4], %[t4], #3\n\t adds %[t3], %[t3], %[t4]\n\t"
-                "add %[t3], r12\n\t"
-                "lsls %[a0], %[a0], #16\n\t lsrs %[a0], %[a0], #28\n\t lsls %[t1], %[t1], #16\n\t lsrs %[t1], %[t1], #28\n\t"
-                /* green: g0 (t2), g1, their blend: the level in t2 */
-                "ldr %[t2], [%[t3], #4]\n\t ldr %[t4], [%[t3], #12]\n\t subs %[t4], %[t4], %[t2]\n\t"
-                "muls %[t4], %[a0], %[t4]\n\t lsls %[t2], %[t2], #4\n\t adds %[t2], %[t2], %[t4]\n\t"
-                "add %[t3], lr\n\t"
-                "ldr %[t4], [%[t3], #4]\n\t ldr %[t5], [%[t3], #12]\n\t subs %[t5], %[t5], %[t4]\n\t"
-                "muls %[t5], %[a0], %[t5]\n\t lsls %[t4], %[t4], #4\n\t adds %[t4], %[t4], %[t5]\n\t"
-                "subs %[t4], %[t4], %[t2]\n\t muls %[t4], %[t1], %[t4]\n\t lsls %[t2], %[t2], #4\n\t"
-                "adds %[t2], %[t2], %[t4]\n\t lsrs %[t2], %[t2], #26\n\t"
-                /* R and B: rb1 (t4), rb0 (t5), their blend (t5) */
-                "ldr %[t4], [%[t3], #0]\n\t ldr %[t5], [%[t3], #8]\n\t subs %[t5], %[t5], %[t4]\n\t"
-                "muls %[t5], %[a0], %[t5]\n\t lsls %[t4], %[t4], #4\n\t adds %[t4], %[t4], %[t5]\n\t"
-                "mov %[t5], lr\n\t subs %[t3], %[t3], %[t5]\n\t"
-                "ldr %[t5], [%[t3], #0]\n\t ldr %[t3], [%[t3], #8]\n\t subs %[t3], %[t3], %[t5]\n\t"
-                "muls %[t3], %[a0], %[t3]\n\t lsls %[t5], %[t5], #4\n\t adds %[t5], %[t5], %[t3]\n\t"
-                "subs %[t4], %[t4], %[t5]\n\t muls %[t4], %[t1], %[t4]\n\t lsls %[t5], %[t5], #4\n\t"
-                "adds %[t5], %[t5], %[t4]\n\t"
+                "ldr r7, [sp, #12]\n\t mov r1, r11\n\t lsrs r1, r1, #16\n\t ldrh r2, [r0, r7]\n\t"
+                "cmp r1, r2\n\t bls 2f\n\t strh r1, [r0, r7]\n\t"
+                /* r3 = the texels' address, r1 = fx; r2 the top row, r3 the bottom one */
+                "mov r3, r10\n\t lsrs r3, r3, #16\n\t mov r4, lr\n\t muls r3, r4, r3\n\t"
+                "mov r1, r9\n\t lsrs r4, r1, #16\n\t lsls r4, r4, #3\n\t adds r3, r3, r4\n\t add r3, r12\n\t"
+                "lsls r1, r1, #16\n\t lsrs r1, r1, #28\n\t mov r2, r3\n\t add r3, lr\n\t"
+                /* top row: r4 R/B, r5 green */
+                "ldm r2!, {r4, r5, r6, r7}\n\t"
+                "subs r6, r6, r4\n\t muls r6, r1, r6\n\t lsls r4, r4, #4\n\t adds r4, r4, r6\n\t"
+                "subs r7, r7, r5\n\t muls r7, r1, r7\n\t lsls r5, r5, #4\n\t adds r5, r5, r7\n\t"
+                /* bottom row: r2 R/B, r3 green */
+                "ldm r3, {r2, r3, r6, r7}\n\t"
+                "subs r6, r6, r2\n\t muls r6, r1, r6\n\t lsls r2, r2, #4\n\t adds r2, r2, r6\n\t"
+                "subs r7, r7, r3\n\t muls r7, r1, r7\n\t lsls r3, r3, #4\n\t adds r3, r3, r7\n\t"
+                /* fy, the blends down: green's level in r5, R/B in r4 */
+                "mov r1, r10\n\t lsls r1, r1, #16\n\t lsrs r1, r1, #28\n\t"
+                "subs r3, r3, r5\n\t muls r3, r1, r3\n\t lsls r5, r5, #4\n\t adds r5, r5, r3\n\t lsrs r5, r5, #26\n\t"
+                "subs r2, r2, r4\n\t muls r2, r1, r2\n\t lsls r4, r4, #4\n\t adds r4, r4, r2\n\t"
                 /* RGB565 */
-                "lsls %[t4], %[t5], #16\n\t lsrs %[t4], %[t4], #27\n\t lsls %[t4], %[t4], #6\n\t"
-                "orrs %[t4], %[t2]\n\t lsls %[t4], %[t4], #5\n\t lsrs %[t5], %[t5], #27\n\t orrs %[t4], %[t5]\n\t"
-                "strh %[t4], [%[px]]\n"
-                "2:\n\t adds %[px], #2\n\t"
-                "ldr %[t1], [sp, #0]\n\t add r11, %[t1]\n\t"
-                "ldr %[t1], [sp, #4]\n\t add r9, %[t1]\n\t"
-                "ldr %[t1], [sp, #8]\n\t add r10, %[t1]\n\t"
-                "cmp %[px], r8\n\t bne 1b\n"
-                "3:\n\t add sp, #12\n\t mov %[t2], r11\n\t"
+                "lsls r2, r4, #16\n\t lsrs r2, r2, #27\n\t lsls r2, r2, #6\n\t orrs r2, r5\n\t lsls r2, r2, #5\n\t"
+                "lsrs r4, r4, #27\n\t orrs r2, r4\n\t strh r2, [r0]\n"
+                "2:\n\t adds r0, #2\n\t"
+                "ldr r1, [sp, #0]\n\t add r11, r1\n\t"
+                "ldr r1, [sp, #4]\n\t add r9, r1\n\t"
+                "ldr r1, [sp, #8]\n\t add r10, r1\n\t"
+                "cmp r0, r8\n\t bne 1b\n"
+                "3:\n\t add sp, #16\n\t mov r2, r11\n\t"
                 ".syntax divided\n"
-                : [px] "+l"(px), [a0] "=&l"(a0), [t1] "+l"(t1), [t2] "+l"(t2), [t3] "+l"(t3), [t4] "+l"(t4),
-                  [t5] "+l"(t5)
-                : [off] "l"(off)
+                : "+l"(r0), "+l"(r1), "+l"(r2), "+l"(r3), "+l"(r4), "+l"(r5), "+l"(r6), "+l"(r7)
+                :
                 : "r8", "r9", "r10", "r11", "r12", "lr", "cc", "memory");
-            z = t2;
+            px = (uint16_t *)(uintptr_t)r0;
+            z = r2;
             zp += px - px0;
         }
 #else

@@ -175,7 +175,7 @@ static int background_run(struct rt_state *rt, uint16_t *px, int col, int row)
 static void full_strip(struct rt_state *rt, struct render_target *t)
 {
     /* plain pixels whose runs of background need nothing but the colour */
-    int runs = rt->ss <= 1 && !rt->ss_adaptive && !rt->round && !rt->shadow_probe && !rt->item_probe &&
+    int runs = rt->ss <= 1 && !rt->ss_adaptive && rt->subsample <= 1 && !rt->round && !rt->shadow_probe && !rt->item_probe &&
                !t->rgb888 && !t->written;
     for (int row = t->y0; row < t->y1; row++) {
         uint8_t *probe = rt->shadow_probe ? rt->shadow_probe + (size_t)row * rt->w : NULL;
@@ -196,15 +196,18 @@ static void full_strip(struct rt_state *rt, struct render_target *t)
                 rt_put(rt, t, col, row, rt->s->background, 0);
                 continue;
             }
-            rgb c = pixel(rt, col, row, 1, have_up, probe ? probe + col : NULL);
             if (runs) {
-                /* rt_put's work for the RGB565 output alone, without the call */
+                /* pixel()'s and rt_put's work for a plain pixel and the
+                 * RGB565 output alone, without their calls */
+                struct rt_prim pr;
+                rgb c = rt_trace_pixel(rt, col, row, &pr);
                 uint16_t *px = t->rgb565 + (size_t)(row - t->y0) * t->width;
                 px[col] = rgb_to_565(c);
-                rt->n.covered += rt->px_covered;
+                rt->n.covered += pr.item >= 0;
                 col = background_run(rt, px, col, row);
                 continue;
             }
+            rgb c = pixel(rt, col, row, 1, have_up, probe ? probe + col : NULL);
             rt_put(rt, t, col, row, c, rt->px_covered);
         }
         rt->last_row = row;

@@ -55,3 +55,17 @@ void mip_fast_bilinear(const uint8_t *rgb, unsigned w, unsigned h, uint32_t *d)
             d[2 * ((size_t)y * W + x) + 1] = g;
         }
 }
+
+void mip_fast_bilinear_word(const uint8_t *rgb, unsigned w, unsigned h, uint32_t *d)
+{
+    const unsigned W = w + 2u, H = h + 2u;
+    for (unsigned y = 0; y < H; y++)
+        for (unsigned x = 0; x < W; x++) {
+            unsigned sx = x == 0 ? 0 : (x > w ? w - 1u : x - 1u), sy = y == 0 ? 0 : (y > h ? h - 1u : y - 1u);
+            const uint8_t *c = rgb + 3 * ((size_t)sy * w + sx);
+            /* round(c * L / 255) as mip_fast_rgb565 */
+            uint32_t r = ((uint32_t)c[0] * 31 + 127) * 0x8081u >> 23, g = ((uint32_t)c[1] * 63 + 127) * 0x8081u >> 23,
+                     b = ((uint32_t)c[2] * 31 + 127) * 0x8081u >> 23;
+            d[(size_t)y * W + x] = r << 21 | g << 10 | b;
+        }
+}

@@ -54,4 +54,13 @@ void mip_fast_rgb565(const uint8_t *rgb, unsigned w, unsigned h, uint16_t *d);
 static inline size_t mip_fast_bilinear_size(unsigned w, unsigned h) { return (size_t)(w + 2) * (h + 2) * 8; }
 void mip_fast_bilinear(const uint8_t *rgb, unsigned w, unsigned h, uint32_t *d);
 
+/* The fast path's bilinear texels of one word (SPAN_SRC_TEXBW,
+ * `bilinear_weights = coarse`): the same bordered layout, a texel's RGB565
+ * levels (rounded as mip_fast_rgb565 rounds) spread to R in bits 21..25,
+ * G in bits 10..15, B in bits 0..4, so that a blend with weights of 3 bits
+ * across and 2 down (32 in all) leaves each level with 5 bits of fraction
+ * in its own field (B 0..9, G 10..20, R 21..30): 4 bytes a texel. */
+static inline size_t mip_fast_bilinear_word_size(unsigned w, unsigned h) { return (size_t)(w + 2) * (h + 2) * 4; }
+void mip_fast_bilinear_word(const uint8_t *rgb, unsigned w, unsigned h, uint32_t *d);
+
 #endif

@@ -73,6 +73,15 @@ typedef char render_features_fit[RENDER_FEATURE_COUNT <= 31 ? 1 : -1];
 #ifndef FW_FEATURE_SPAN_PHONG_TEXBL
 #define FW_FEATURE_SPAN_PHONG_TEXBL 1
 #endif
+#ifndef FW_FEATURE_SPAN_NONE_TEXBW
+#define FW_FEATURE_SPAN_NONE_TEXBW 1
+#endif
+#ifndef FW_FEATURE_SPAN_LI_TEXBW
+#define FW_FEATURE_SPAN_LI_TEXBW 1
+#endif
+#ifndef FW_FEATURE_SPAN_PHONG_TEXBW
+#define FW_FEATURE_SPAN_PHONG_TEXBW 1
+#endif
 #ifndef FW_FEATURE_SPAN_Z0
 #define FW_FEATURE_SPAN_Z0 1
 #endif

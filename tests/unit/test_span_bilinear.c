@@ -4,7 +4,10 @@
  * span_bl_565, span_bl_888) against a direct computation: texel centres
  * giving their texel, RGB565 levels rounded as rgb_to_565 rounds, blends
  * within one 8-bit step of the exact blend with the 4-bit weights, the
- * border clamping at the edges. */
+ * border clamping at the edges; the one-word texels of `bilinear_weights =
+ * coarse` (mip_fast_bilinear_word, span_bilinear_word, span_bw_565,
+ * span_bw_888): the RGB565 levels blended exactly with weights of 3 bits
+ * across and 2 down, rounded. */
 #include <stdio.h>
 #include <stdlib.h>
 #include "check.h"
@@ -21,6 +24,7 @@ enum { W = 8, H = 4 };
 static uint8_t img[W * H * 3];
 static uint32_t tex[(W + 2) * (H + 2) * 2];
 static const uint32_t ROW = (W + 2) * 2;
+static uint32_t texw[(W + 2) * (H + 2)];
 
 /* the span's coordinates of texture point (x, y) in texels, Q16 */
 static uint32_t cu(int32_t q16) { return (uint32_t)q16 + 0x8800u; }
@@ -104,5 +108,33 @@ int main(void)
         bad += (uint32_t)(p >> 11) != r5 || (uint32_t)((p >> 5) & 63) != g6 || (uint32_t)(p & 31) != r5;
     }
     check(bad == 0, "pack888_565_levels", "%u values off", bad);
+
+    /* one word a texel: each level the exact blend of the texels' RGB565
+     * levels with the weights rounded to 8ths across and 4ths down,
+     * rounded; the 8-bit channels within one step of the level's */
+    check(mip_fast_bilinear_word_size(W, H) == sizeof texw, "texbw_size", "%zu", mip_fast_bilinear_word_size(W, H));
+    mip_fast_bilinear_word(img, W, H, texw);
+    bad = 0;
+    for (int i = 0; i < 100000; i++) {
+        int32_t u = (int32_t)(lcg(&s) % ((W << 16) + 1)), v = (int32_t)(lcg(&s) % ((H << 16) + 1));
+        if (i == 0) u = v = 0;
+        if (i == 1) u = W << 16, v = H << 16;
+        uint32_t t = span_bilinear_word(texw, (uint32_t)u + SPAN_BW_U, (uint32_t)v + SPAN_BW_V, W + 2);
+        uint16_t c = span_bw_565(t);
+        uint32_t c8 = span_bw_888(t);
+        int32_t us = u - 32768 + 4096, vs = v - 32768 + 8192;   /* centres at integers, rounded 8ths, 4ths */
+        int x = (int)((us + 65536) >> 16) - 1, y = (int)((vs + 65536) >> 16) - 1;
+        uint32_t fx = (uint32_t)((us + 65536) >> 13) & 7u, fy = (uint32_t)((vs + 65536) >> 14) & 3u;
+        static const uint32_t L[3] = { 31, 63, 31 }, at[3] = { 11, 5, 0 };
+        for (int k = 0; k < 3; k++) {
+            uint32_t q[4];
+            for (int j = 0; j < 4; j++) q[j] = (texel(x + (j & 1), y + (j >> 1), k) * L[k] * 2 + 255) / 510;
+            uint32_t sum = ((q[0] * (8 - fx) + q[1] * fx) * (4 - fy) + (q[2] * (8 - fx) + q[3] * fx) * fy);
+            uint32_t lv = (sum + 16) / 32, got = (c >> at[k]) & L[k];
+            double want8 = sum * 255.0 / (L[k] * 32.0), got8 = (c8 >> (16 - 8 * k)) & 255u;
+            bad += got != lv || got8 > want8 + 0.52 || got8 < want8 - 0.52;
+        }
+    }
+    check(bad == 0, "bilinear_word_blend", "%u channels off", bad);
     return check_exit();
 }

@@ -134,6 +134,16 @@ int bench_main(void)
         v.ras.lighting = steps[k] == 1 ? RAS_LIGHT_EXACT : s->ras.lighting;
         bad |= measure(&v, step_names[k], step_options[k]);
     }
+    int bilinear = 0;
+    for (uint16_t i = 0; i < s->ntextures; i++) bilinear |= s->textures[i].filter == TEX_BILINEAR;
+    if (bilinear && !s->ras.bl_weights) {
+        /* the one-word texels (made by render_init: scenec's, if any, are
+         * the scene's own format) */
+        v = *s;
+        v.ras.bl_weights = 1;
+        v.tex_fast = NULL;
+        bad |= measure(&v, "bilinear_weights=coarse", "bilinear_weights=coarse");
+    }
     if (s->ras.shading == SHADE_PHONG) {
         v = *s;
         v.ras.lighting = RAS_LIGHT_EXACT;

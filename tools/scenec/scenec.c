@@ -299,12 +299,14 @@ static int any_fast_tex(const struct scene *s)
 }
 
 /* A texture's fast-path texels as const data (scenec --fast-textures
- * flash): two words a texel for bilinear filtering, RGB565 otherwise. */
+ * flash): two words a texel for bilinear filtering (one with
+ * `bilinear_weights = coarse`), RGB565 otherwise. */
 static int emit_oom;   /* a buffer could not be had: the output is refused */
-static void emit_fast_texels(const struct ras_texture *x, int t)
+static void emit_fast_texels(const struct scene *s, const struct ras_texture *x, int t)
 {
-    int bl = x->filter == TEX_BILINEAR;
-    size_t size = bl ? mip_fast_bilinear_size(x->w, x->h) : (size_t)x->w * x->h * 2;
+    int bl = x->filter == TEX_BILINEAR, bw = bl && s->ras.bl_weights;
+    size_t size = bw ? mip_fast_bilinear_word_size(x->w, x->h)
+                     : (bl ? mip_fast_bilinear_size(x->w, x->h) : (size_t)x->w * x->h * 2);
     size_t esz = bl ? 4 : 2, n = size / esz;
     flash_bytes += size;
     texture_bytes += size;
@@ -314,7 +316,9 @@ static void emit_fast_texels(const struct ras_texture *x, int t)
         emit_oom = 1;
         return;
     }
-    if (bl)
+    if (bw)
+        mip_fast_bilinear_word(x->rgb, x->w, x->h, d);
+    else if (bl)
         mip_fast_bilinear(x->rgb, x->w, x->h, d);
     else
         mip_fast_rgb565(x->rgb, x->w, x->h, d);
@@ -343,7 +347,7 @@ static void emit_textures(const struct scene *s)
             w = w > 1 ? w / 2 : 1;
             h = h > 1 ? h / 2 : 1;
         }
-        if (fast_tex(x)) emit_fast_texels(x, t);
+        if (fast_tex(x)) emit_fast_texels(s, x, t);
         if (x->mip_levels > 1) {
             emit("static const uint8_t *const tex%d_mip[%d] = {", t, x->mip_levels);
             for (int l = 0; l < x->mip_levels; l++) emit(" tex%d_level%d,", t, l);

@@ -74,7 +74,7 @@ static int fast_describe(struct ras_ctx *rc, const struct ras_def_tri *dt, struc
         if (!t5->p || !o->perspective_uv || dt->shading == SHADE_FLAT) return 0;
         ft->shade = (uint8_t)(phong ? SPAN_SHADE_PHONG : (gour ? SPAN_SHADE_LI : SPAN_SHADE_NONE));
         int bl = rc->s->textures[dt->tex].filter == TEX_BILINEAR;
-        ft->src = bl ? SPAN_SRC_TEXBL : SPAN_SRC_TEX;
+        ft->src = bl ? (o->bl_weights ? SPAN_SRC_TEXBW : SPAN_SRC_TEXBL) : SPAN_SRC_TEX;
         ft->tex = t5->p;
         ft->wlog2 = t5->wlog2;
         ft->wmask = (1u << t5->wlog2) - 1;

@@ -17,6 +17,10 @@
  *                            G in the other, mip_fast_bilinear) blended with
  *                            4-bit weights, a border for the clamp at the
  *                            edges, power-of-two sides
+ *          SPAN_SRC_TEXBW    bilinear, `bilinear_weights = coarse`: one word
+ *                            a texel (RGB565 levels spread,
+ *                            mip_fast_bilinear_word) blended with weights of
+ *                            3 bits across and 2 down, the same border
  *   depth  0 (no test), 2 or 4 bytes an entry
  *   out    the board's outputs (RGB565) or also the host's (rgb888, written
  *          map, pixels written): ras_span_board or ras_span_host
@@ -37,7 +41,8 @@
 #define SPAN_SRC_CONST 0
 #define SPAN_SRC_TEX 1
 #define SPAN_SRC_TEXBL 2
-#define SPAN_SRCS 3
+#define SPAN_SRC_TEXBW 3
+#define SPAN_SRCS 4
 #define SPAN_DEPTHS 3            /* 0, 2, 4 bytes an entry: index 0, 1, 2 */
 
 /* x / 2^n rounded toward minus infinity: >> on a negative int32_t, which

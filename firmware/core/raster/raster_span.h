@@ -3,7 +3,7 @@
  * combination of its parameters (raster_fast.h) with these macros set:
  *   SPAN_NAME   function name
  *   SPAN_SHADE  SPAN_SHADE_NONE, _RGB, _LI, _PHONG
- *   SPAN_SRC    SPAN_SRC_CONST, SPAN_SRC_TEX, SPAN_SRC_TEXBL
+ *   SPAN_SRC    SPAN_SRC_CONST, SPAN_SRC_TEX, SPAN_SRC_TEXBL, SPAN_SRC_TEXBW
  *   SPAN_DEPTH  0 (no depth test), 2 (16-bit entries), 4 (32-bit entries)
  *   SPAN_HOST   1: also the host's outputs (rgb888, written map) and the
  *               count of pixels written
@@ -71,10 +71,10 @@ RAS_HOT static uint32_t SPAN_NAME(const struct ftri *T, const struct frow *R)
      * times twice the width, each masked to its integer bits */
     const uint8_t *tex = (const uint8_t *)T->ft->tex;
     const uint32_t um = T->ft->wmask << 1, vm = T->ft->hmask << (T->ft->wlog2 + 1), vs = T->ft->wlog2 + 1;
-#elif SPAN_SRC == SPAN_SRC_TEXBL
+#elif SPAN_SRC == SPAN_SRC_TEXBL || SPAN_SRC == SPAN_SRC_TEXBW
     /* the bordered texels' rows (words) and the coordinates' range */
     const uint32_t *tex = (const uint32_t *)T->ft->tex;
-    const uint32_t row = (T->ft->wmask + 3u) * 2u;
+    const uint32_t row = (T->ft->wmask + 3u) * (SPAN_SRC == SPAN_SRC_TEXBL ? 2u : 1u);
     /* (at most 2^30: no attribute the fast path takes is larger) */
     const int32_t umax = T->ft->wmask < 0x4000u ? (int32_t)((T->ft->wmask + 1u) << 16) : 0x40000000,
                   vmax = T->ft->hmask < 0x4000u ? (int32_t)((T->ft->hmask + 1u) << 16) : 0x40000000;
@@ -92,7 +92,7 @@ RAS_HOT static uint32_t SPAN_NAME(const struct ftri *T, const struct frow *R)
             w1 += T->sa1;
             w2 += T->sa2;
             persp_at(&T->pp, SPAN_NA, w1, w2, nxt);
-#if SPAN_SRC == SPAN_SRC_TEXBL
+#if SPAN_SRC == SPAN_SRC_TEXBL || SPAN_SRC == SPAN_SRC_TEXBW
             span_clamp_uv(nxt + SPAN_A_UV, umax, vmax);
 #endif
             for (int j = 0; j < SPAN_NA; j++) d[j] = asr32(nxt[j] - cur[j], T->slog);
@@ -101,7 +101,7 @@ RAS_HOT static uint32_t SPAN_NAME(const struct ftri *T, const struct frow *R)
             w1 += k * T->a1;
             w2 += k * T->a2;
             persp_at(&T->pp, SPAN_NA, w1, w2, nxt);
-#if SPAN_SRC == SPAN_SRC_TEXBL
+#if SPAN_SRC == SPAN_SRC_TEXBL || SPAN_SRC == SPAN_SRC_TEXBW
             span_clamp_uv(nxt + SPAN_A_UV, umax, vmax);
 #endif
             for (int j = 0; j < SPAN_NA; j++)
@@ -117,6 +117,11 @@ RAS_HOT static uint32_t SPAN_NAME(const struct ftri *T, const struct frow *R)
         /* texel units in Q16 of the bordered texture (one texel more) less
          * half a texel, plus half a 16th: span_bilinear */
         uint32_t u = (uint32_t)cur[SPAN_A_UV] + 0x8800u, v = (uint32_t)cur[SPAN_A_UV + 1] + 0x8800u;
+        const uint32_t du = (uint32_t)d[SPAN_A_UV], dv = (uint32_t)d[SPAN_A_UV + 1];
+#elif SPAN_SRC == SPAN_SRC_TEXBW
+        /* the same less half a texel, plus half an 8th across and half a
+         * 4th down: span_bilinear_word */
+        uint32_t u = (uint32_t)cur[SPAN_A_UV] + SPAN_BW_U, v = (uint32_t)cur[SPAN_A_UV + 1] + SPAN_BW_V;
         const uint32_t du = (uint32_t)d[SPAN_A_UV], dv = (uint32_t)d[SPAN_A_UV + 1];
 #endif
 #if SPAN_SHADE == SPAN_SHADE_PHONG
@@ -226,6 +231,68 @@ RAS_HOT static uint32_t SPAN_NAME(const struct ftri *T, const struct frow *R)
             z = r2;
             zp += px - px0;
         }
+#elif SPAN_SHADE == SPAN_SHADE_NONE && SPAN_SRC == SPAN_SRC_TEXBW && SPAN_DEPTH == 2 && !SPAN_HOST && \
+    defined(__ARM_ARCH_6M__) && defined(__GNUC__)
+        {
+            /* ARMv6-M: the loop below by hand (the same operations as the C
+             * loop, so the same bits). r0 the pixel, r7 the depth entry's
+             * offset from it, r8 the span's end, r9 u, r10 v, r11 z, r12 the
+             * texels, lr their row in bytes; on the stack dz, du, dv and
+             * SPAN_BW_HALF. A texel and its right neighbour: one LDM. */
+            uint16_t *px0 = px;
+            ast[3] = du;
+            ast[4] = dv;
+            register uint32_t r0 __asm__("r0") = (uint32_t)(uintptr_t)px;
+            register uint32_t r1 __asm__("r1") = (uint32_t)(uintptr_t)pe;
+            register uint32_t r2 __asm__("r2") = z;
+            register uint32_t r3 __asm__("r3") = u;
+            register uint32_t r4 __asm__("r4") = v;
+            register uint32_t r5 __asm__("r5") = (uint32_t)(uintptr_t)ast;
+            register uint32_t r6 __asm__("r6") = SPAN_BW_HALF;
+            register uint32_t r7 __asm__("r7") = (uint32_t)(uintptr_t)zp - (uint32_t)(uintptr_t)px;
+            __asm__ volatile(
+                ".syntax unified\n\t"
+                "mov r8, r1\n\t mov r11, r2\n\t mov r9, r3\n\t mov r10, r4\n\t push {r6}\n\t"
+                "ldr r1, [r5, #16]\n\t push {r1}\n\t"
+                "ldr r1, [r5, #12]\n\t push {r1}\n\t"
+                "ldr r1, [r5, #0]\n\t push {r1}\n\t"
+                "ldr r1, [r5, #4]\n\t mov r12, r1\n\t"
+                "ldr r1, [r5, #8]\n\t mov lr, r1\n\t"
+                "cmp r0, r8\n\t beq 3f\n"
+                "1:\n\t"
+                /* depth */
+                "mov r1, r11\n\t lsrs r1, r1, #16\n\t ldrh r2, [r0, r7]\n\t"
+                "cmp r1, r2\n\t bls 2f\n\t strh r1, [r0, r7]\n\t"
+                /* r2 the texel's address, r3 the one below, r1 = fx, r6 = v */
+                "mov r6, r10\n\t lsrs r3, r6, #16\n\t mov r4, lr\n\t muls r3, r4, r3\n\t"
+                "mov r1, r9\n\t lsrs r4, r1, #16\n\t lsls r4, r4, #2\n\t adds r3, r3, r4\n\t add r3, r12\n\t"
+                "lsls r1, r1, #16\n\t lsrs r1, r1, #29\n\t mov r2, r3\n\t add r3, lr\n\t"
+                /* the blend across, top (r4) and bottom (r3) */
+                "ldm r2!, {r4, r5}\n\t"
+                "subs r5, r5, r4\n\t muls r5, r1, r5\n\t lsls r4, r4, #3\n\t adds r4, r4, r5\n\t"
+                "ldm r3, {r3, r5}\n\t"
+                "subs r5, r5, r3\n\t muls r5, r1, r5\n\t lsls r3, r3, #3\n\t adds r3, r3, r5\n\t"
+                /* fy, the blend down, half a level */
+                "lsls r6, r6, #16\n\t lsrs r6, r6, #30\n\t"
+                "subs r3, r3, r4\n\t muls r3, r6, r3\n\t lsls r4, r4, #2\n\t adds r4, r4, r3\n\t"
+                "ldr r1, [sp, #12]\n\t adds r4, r4, r1\n\t"
+                /* RGB565 */
+                "lsrs r2, r4, #26\n\t lsls r2, r2, #6\n\t lsls r3, r4, #11\n\t lsrs r3, r3, #26\n\t orrs r2, r3\n\t"
+                "lsls r2, r2, #5\n\t lsls r4, r4, #22\n\t lsrs r4, r4, #27\n\t orrs r2, r4\n\t strh r2, [r0]\n"
+                "2:\n\t adds r0, #2\n\t"
+                "ldr r1, [sp, #0]\n\t add r11, r1\n\t"
+                "ldr r1, [sp, #4]\n\t add r9, r1\n\t"
+                "ldr r1, [sp, #8]\n\t add r10, r1\n\t"
+                "cmp r0, r8\n\t bne 1b\n"
+                "3:\n\t add sp, #16\n\t mov r2, r11\n\t"
+                ".syntax divided\n"
+                : "+l"(r0), "+l"(r1), "+l"(r2), "+l"(r3), "+l"(r4), "+l"(r5), "+l"(r6), "+l"(r7)
+                :
+                : "r8", "r9", "r10", "r11", "r12", "lr", "cc", "memory");
+            px = (uint16_t *)(uintptr_t)r0;
+            z = r2;
+            zp += px - px0;
+        }
 #else
         for (; px != pe; px++) {
 #if SPAN_DEPTH == 2
@@ -262,6 +329,17 @@ RAS_HOT static uint32_t SPAN_NAME(const struct ftri *T, const struct frow *R)
                 uint32_t t8 = span_bl_888(trb, tg);
 #endif
 #endif
+#elif SPAN_SRC == SPAN_SRC_TEXBW
+                uint32_t tw = span_bilinear_word(tex, u, v, row);
+#if SPAN_SHADE != SPAN_SHADE_NONE
+                uint32_t t8 = light888(span_bw_888(tw), SPAN_LIGHT);
+                uint16_t c = pack888_565(t8);
+#else
+                uint16_t c = span_bw_565(tw);
+#if SPAN_HOST
+                uint32_t t8 = span_bw_888(tw);
+#endif
+#endif
 #else /* SPAN_SRC_TEX */
                 uint16_t c = *(const uint16_t *)(const void *)(tex + (((v >> 16) & vm) | ((u >> 16) & um)));
 #if SPAN_SHADE != SPAN_SHADE_NONE
@@ -281,7 +359,7 @@ RAS_HOT static uint32_t SPAN_NAME(const struct ftri *T, const struct frow *R)
                     o888[0] = T->ft->c888[0];
                     o888[1] = T->ft->c888[1];
                     o888[2] = T->ft->c888[2];
-#elif SPAN_SRC == SPAN_SRC_TEXBL
+#elif SPAN_SRC == SPAN_SRC_TEXBL || SPAN_SRC == SPAN_SRC_TEXBW
                     o888[0] = (uint8_t)(t8 >> 16);
                     o888[1] = (uint8_t)(t8 >> 8);
                     o888[2] = (uint8_t)t8;

@@ -71,6 +71,24 @@
 #define SPAN_TAG phong_texbl
 #include "raster_span_depths.h"
 #endif
+#if FW_FEATURE_SPAN_NONE_TEXBW
+#define SPAN_SHADE SPAN_SHADE_NONE      /* texture, bilinear of one word, unlit */
+#define SPAN_SRC SPAN_SRC_TEXBW
+#define SPAN_TAG none_texbw
+#include "raster_span_depths.h"
+#endif
+#if FW_FEATURE_SPAN_LI_TEXBW
+#define SPAN_SHADE SPAN_SHADE_LI        /* texture, bilinear of one word, Gouraud */
+#define SPAN_SRC SPAN_SRC_TEXBW
+#define SPAN_TAG li_texbw
+#include "raster_span_depths.h"
+#endif
+#if FW_FEATURE_SPAN_PHONG_TEXBW
+#define SPAN_SHADE SPAN_SHADE_PHONG     /* texture, bilinear of one word, fast Phong */
+#define SPAN_SRC SPAN_SRC_TEXBW
+#define SPAN_TAG phong_texbw
+#include "raster_span_depths.h"
+#endif
 
 /* a loop of a depth size the image left out (scene_features.def): no entry */
 #if FW_FEATURE_SPAN_Z0
@@ -121,9 +139,19 @@ const span_fn SPAN_TABLE[SPAN_SHADES][SPAN_SRCS][SPAN_DEPTHS] = {
 #if FW_FEATURE_SPAN_PHONG_TEXBL
     SPAN_ROW(PHONG, TEXBL, phong_texbl),
 #endif
+#if FW_FEATURE_SPAN_NONE_TEXBW
+    SPAN_ROW(NONE, TEXBW, none_texbw),
+#endif
+#if FW_FEATURE_SPAN_LI_TEXBW
+    SPAN_ROW(LI, TEXBW, li_texbw),
+#endif
+#if FW_FEATURE_SPAN_PHONG_TEXBW
+    SPAN_ROW(PHONG, TEXBW, phong_texbw),
+#endif
 #if !(FW_FEATURE_SPAN_NONE_CONST || FW_FEATURE_SPAN_RGB_CONST || FW_FEATURE_SPAN_PHONG_CONST || \
       FW_FEATURE_SPAN_NONE_TEX || FW_FEATURE_SPAN_LI_TEX || FW_FEATURE_SPAN_PHONG_TEX || \
-      FW_FEATURE_SPAN_NONE_TEXBL || FW_FEATURE_SPAN_LI_TEXBL || FW_FEATURE_SPAN_PHONG_TEXBL)
+      FW_FEATURE_SPAN_NONE_TEXBL || FW_FEATURE_SPAN_LI_TEXBL || FW_FEATURE_SPAN_PHONG_TEXBL || \
+      FW_FEATURE_SPAN_NONE_TEXBW || FW_FEATURE_SPAN_LI_TEXBW || FW_FEATURE_SPAN_PHONG_TEXBW)
     { { NULL } },
 #endif
 };

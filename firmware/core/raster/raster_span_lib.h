@@ -70,6 +70,43 @@ static inline uint32_t span_bl_888(uint32_t rb, uint32_t g)
     return r << 16 | gg << 8 | b;
 }
 
+/* One-word bilinear texel at (u, v) of mip_fast_bilinear_word's texels tex
+ * (rows of `row` words): u, v as for span_bilinear but plus half an 8th of
+ * a texel across and half a 4th down (SPAN_BW_U, SPAN_BW_V). Weights of 3
+ * bits across and 2 down, each step a + (b - a) * f on the whole word,
+ * then half a level added to each field: the levels in bits 26..30 (R),
+ * 15..20 (G), 5..9 (B), rounded. */
+#define SPAN_BW_U 0x9000u
+#define SPAN_BW_V 0xA000u
+#define SPAN_BW_HALF (16u << 21 | 16u << 10 | 16u)
+static inline uint32_t span_bilinear_word(const uint32_t *tex, uint32_t u, uint32_t v, uint32_t row)
+{
+    const uint32_t *p = tex + (v >> 16) * row + (u >> 16);
+    const uint32_t fx = (u >> 13) & 7u, fy = (v >> 14) & 3u;
+    uint32_t t0 = (p[0] << 3) + (p[1] - p[0]) * fx;
+    p += row;
+    uint32_t t1 = (p[0] << 3) + (p[1] - p[0]) * fx;
+    return (t0 << 2) + (t1 - t0) * fy + SPAN_BW_HALF;
+}
+
+/* RGB565 of a one-word blend */
+static inline uint16_t span_bw_565(uint32_t t)
+{
+    return (uint16_t)((t >> 26) << 11 | ((t << 11) >> 26) << 5 | (t << 22) >> 27);
+}
+
+/* 0x00RRGGBB of a one-word blend: each field F (its level in 32nds, half
+ * a level added) back to 8 bits, (F - 16) * 255 / (L * 32) rounded (by a
+ * product: 255 / 992 as 16846 / 2^16, 255 / 2016 as 8290 / 2^16), at most
+ * 255 */
+static inline uint32_t span_bw_888(uint32_t t)
+{
+    uint32_t r = ((((t >> 21) & 1023u) - 16u) * 16846u + 32768u) >> 16,
+             g = ((((t >> 10) & 2047u) - 16u) * 8290u + 32768u) >> 16,
+             b = (((t & 1023u) - 16u) * 16846u + 32768u) >> 16;
+    return r << 16 | g << 8 | b;
+}
+
 /* Each 8-bit channel of 0x00RRGGBB times intensity ii (Q12), rounded,
  * clamped to 255. */
 static inline uint32_t light888(uint32_t t, uint32_t ii)

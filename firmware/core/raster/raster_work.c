@@ -45,14 +45,16 @@ static int log2_exact(uint32_t v)
 }
 
 /* Bytes of the copy of texture t the fast path samples: nearest (RGB565,
- * 2 bytes a texel) or bilinear (mip_fast_bilinear_size: 8 bytes a texel, a border) filtering,
+ * 2 bytes a texel) or bilinear (mip_fast_bilinear_size: 8 bytes a texel, a border; with
+ * bilinear_weights = coarse mip_fast_bilinear_word_size, 4 bytes a texel) filtering,
  * power-of-two sides, at most 2^15 texels (a byte offset of 16 bits); 0
  * when it does not qualify. */
 static size_t tex565_size(const struct scene *s, const struct ras_texture *t)
 {
     if (!fast_path(s) || (t->filter != TEX_NEAREST && t->filter != TEX_BILINEAR) || !t->rgb) return 0;
     if (log2_exact(t->w) < 0 || log2_exact(t->h) < 0 || log2_exact(t->w) + log2_exact(t->h) > 15) return 0;
-    return t->filter == TEX_BILINEAR ? mip_fast_bilinear_size(t->w, t->h) : (size_t)t->w * t->h * 2;
+    if (t->filter != TEX_BILINEAR) return (size_t)t->w * t->h * 2;
+    return s->ras.bl_weights ? mip_fast_bilinear_word_size(t->w, t->h) : mip_fast_bilinear_size(t->w, t->h);
 }
 
 /* Texture i's texels made by scenec (in flash), or NULL. */
@@ -353,7 +355,10 @@ static void init_textures(struct ras_ctx *rc)
         } else {
             /* (the builders only in an image with their span loops:
              * render_init refuses a scene whose loops it lacks) */
-            if (tx->filter == TEX_BILINEAR) {
+            if (tx->filter == TEX_BILINEAR && s->ras.bl_weights) {
+                if (FW_FEATURE_SPAN_NONE_TEXBW || FW_FEATURE_SPAN_LI_TEXBW || FW_FEATURE_SPAN_PHONG_TEXBW)
+                    mip_fast_bilinear_word(tx->rgb, tx->w, tx->h, (uint32_t *)(void *)tm);
+            } else if (tx->filter == TEX_BILINEAR) {
                 if (FW_FEATURE_SPAN_NONE_TEXBL || FW_FEATURE_SPAN_LI_TEXBL || FW_FEATURE_SPAN_PHONG_TEXBL)
                     mip_fast_bilinear(tx->rgb, tx->w, tx->h, (uint32_t *)(void *)tm);
             } else if (FW_FEATURE_SPAN_NONE_TEX || FW_FEATURE_SPAN_LI_TEX || FW_FEATURE_SPAN_PHONG_TEX) {
@@ -428,13 +433,15 @@ static uint32_t instance_spans(const struct scene *s, const struct ras_instance 
     if (sh == SHADE_PHONG) {
         if (!phong_fast(s)) return 0;
         if (!tex) return RENDER_F(SPAN_PHONG_CONST);
-        return bl ? RENDER_F(SPAN_PHONG_TEXBL) : RENDER_F(SPAN_PHONG_TEX);
+        if (bl) return o->bl_weights ? RENDER_F(SPAN_PHONG_TEXBW) : RENDER_F(SPAN_PHONG_TEXBL);
+        return RENDER_F(SPAN_PHONG_TEX);
     }
     if (tex) {
         /* (a nearest or bilinear texture whose copy tex565_size refuses
          * takes the exact path: its loops counted all the same) */
         if ((!bl && s->textures[in->texture].filter != TEX_NEAREST) || !o->perspective_uv || sh == SHADE_FLAT)
             return 0;
+        if (bl && o->bl_weights) return sh == SHADE_GOURAUD ? RENDER_F(SPAN_LI_TEXBW) : RENDER_F(SPAN_NONE_TEXBW);
         if (bl) return sh == SHADE_GOURAUD ? RENDER_F(SPAN_LI_TEXBL) : RENDER_F(SPAN_NONE_TEXBL);
         return sh == SHADE_GOURAUD ? RENDER_F(SPAN_LI_TEX) : RENDER_F(SPAN_NONE_TEX);
     }

@@ -76,6 +76,19 @@ int ras_point_inside(const struct ras_ctx *rc, vec3 p)
     return !(num_add(p.y, sy) < 0 || num_sub(sy, p.y) < 0);
 }
 
+int ras_box_inside(const struct ras_ctx *rc, const struct ras_box *b)
+{
+    /* a point's x >= lo[0], <= hi[0] (y alike) and z >= lo[2]; each value
+     * below grows with z (the side slopes are not negative) and with x
+     * (or falls with it): its least over the box is at these corners */
+    if (!b->ok || rc->def.side_x < 0 || rc->def.side_y < 0) return 0;
+    if (num_sub(b->lo[2], rc->def.near_z) < 0) return 0;
+    num sx = num_mul(rc->def.side_x, b->lo[2]);
+    if (num_add(b->lo[0], sx) < 0 || num_sub(sx, b->hi[0]) < 0) return 0;
+    num sy = num_mul(rc->def.side_y, b->lo[2]);
+    return !(num_add(b->lo[1], sy) < 0 || num_sub(sy, b->hi[1]) < 0);
+}
+
 static struct ras_cv lerp_cv(const struct ras_cv *a, const struct ras_cv *b, num t, int na)
 {
     struct ras_cv r;

@@ -99,6 +99,12 @@ static void instance_head(struct ras_ctx *rc, uint16_t i, uint16_t frame, uint32
         ri->m = o->camera_transform ? m4_mul(&rc->cam, &t) : t;
     }
     ri->visible = o->clip ? (uint8_t)ras_instance_visible(rc, ri, m, o->instance_transform ? in->scale : NUM_ONE) : 1;
+    /* its vertices' transform free of saturation, and all of them inside
+     * every plane, known from its model's box (the same bits, the same
+     * decisions) */
+    struct ras_box cb;
+    ri->vfit = (uint8_t)(o->instance_transform && ras_box_transform(&ri->m, &ri->box, &cb));
+    ri->vin = (uint8_t)(ri->vfit && ri->visible && rc->def.pv && ras_box_inside(rc, &cb));
     ri->vlit = (uint8_t)(rc->def.vert_shade && ras_vertex_lit(s, in));
     if (ri->vlit)   /* no vertex lit yet this frame (by either part of the triangles) */
         for (uint32_t k = vb; k < vb + m->nverts; k++) {
@@ -111,7 +117,7 @@ static void instance_head(struct ras_ctx *rc, uint16_t i, uint16_t frame, uint32
 static vec3 cam_point(const struct ras_ctx *rc, const struct ras_instance *in, const struct ras_inst *ri, vec3 p)
 {
     const struct ras_options *o = &rc->s->ras;
-    if (o->instance_transform) return ras_mul_point(&ri->m, p);
+    if (o->instance_transform) return ri->vfit ? ras_mul_point_fit(&ri->m, p) : ras_mul_point(&ri->m, p);
     vec3 c = v3_add(p, in->position);
     return o->camera_transform ? ras_mul_point(&rc->cam, c) : c;
 }
@@ -139,6 +145,30 @@ static void instance_vertices(const struct ras_ctx *rc, uint16_t i, uint32_t k0,
     const struct ras_model *m = &s->models[in->model];
     const struct ras_inst *ri = &rc->inst[i];
     const uint32_t vb = ri->vbase;
+    if (ri->vfit && rc->def.pv && !rc->proj) {
+        /* the default path's vertices of an instance whose transform
+         * cannot saturate, every one inside every plane where ri->vin */
+        const int tested = !ri->vin;
+        for (uint32_t k = k0; k < k1; k++) {
+            const vec3 c = ras_mul_point_fit(&ri->m, m->verts[k]);
+            if (rc->verts) rc->verts[vb + k].c = c;
+            struct ras_pv *q = &rc->def.pv[vb + k];
+            int32_t sx, sy;
+            num iz;
+            uint32_t depth;
+            q->sx = RAS_PV_OUT;
+            if (ri->visible && (!tested || ras_point_inside(rc, c))) {
+                ras_project_sub_depth(rc, c, &sx, &sy, &iz, &depth);
+                if (sx > INT16_MIN && sx <= INT16_MAX && sy >= INT16_MIN && sy <= INT16_MAX) {
+                    q->sx = (int16_t)sx;
+                    q->sy = (int16_t)sy;
+                    q->iz = iz;
+                    q->depth = depth;
+                }
+            }
+        }
+        return;
+    }
     for (uint32_t k = k0; k < k1; k++) {
         const vec3 c = cam_point(rc, in, ri, m->verts[k]);
         if (rc->verts) rc->verts[vb + k].c = c;

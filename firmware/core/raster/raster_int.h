@@ -33,6 +33,9 @@ struct ras_inst {
     uint32_t tbase;  /* first of its triangles in ras_ctx.tri_rows */
     uint8_t visible; /* survived bounding-sphere culling */
     uint8_t vlit;    /* Gouraud lit per vertex (ras_def.vert_shade), not per corner */
+    uint8_t vfit;    /* its vertices to camera space without saturation (ras_mul_point_fit) */
+    uint8_t vin;     /* every vertex inside every clipping plane (no ras_point_inside) */
+    struct ras_box box;  /* its model's coordinates (render_init) */
 };
 
 /* A transformed vertex: camera space. */
@@ -453,6 +456,10 @@ int ras_clip_triangle(const struct ras_ctx *rc, const struct ras_cv in[3], int n
 /* 1 when p is inside every plane of ras_clip_triangle (a triangle of three such
  * corners comes out of it unchanged). */
 int ras_point_inside(const struct ras_ctx *rc, vec3 p);
+/* 1 when every point of camera-space box b (ras_box_transform's) passes
+ * ras_point_inside: the test at the box's extreme corners, each of its
+ * operations monotonic. */
+int ras_box_inside(const struct ras_ctx *rc, const struct ras_box *b);
 
 /* ---- chapter 13: lighting (raster_shading.c) ---- */
 /* The book's ComputeIllumination (chapter 13). */

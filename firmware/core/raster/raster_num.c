@@ -165,6 +165,68 @@ vec3 ras_mul_point(const mat4 *m, vec3 p)
     return r;
 }
 
+void ras_box_of(struct ras_box *b, const vec3 *v, uint32_t n)
+{
+    b->ok = n > 0;
+    if (!n) return;
+    b->lo[0] = b->hi[0] = v[0].x;
+    b->lo[1] = b->hi[1] = v[0].y;
+    b->lo[2] = b->hi[2] = v[0].z;
+    for (uint32_t k = 1; k < n; k++) {
+        const num c[3] = { v[k].x, v[k].y, v[k].z };
+        for (int j = 0; j < 3; j++) {
+            if (c[j] < b->lo[j]) b->lo[j] = c[j];
+            if (c[j] > b->hi[j]) b->hi[j] = c[j];
+        }
+    }
+}
+
+int ras_box_transform(const mat4 *m, const struct ras_box *b, struct ras_box *out)
+{
+    out->ok = 0;
+    if (!b->ok) return 0;
+    for (int i = 0; i < 3; i++) {
+        /* row i's rounded products over the box (num_mul_round, before
+         * num_mul's saturation), their sums' range and the largest
+         * magnitude any partial sum can have */
+        const num t = m->m[i][3];
+        int64_t lo = t, hi = t, mag = t < 0 ? -(int64_t)t : t;
+        for (int j = 0; j < 3; j++) {
+            int64_t p = num_mul_round(m->m[i][j], b->lo[j]), q = num_mul_round(m->m[i][j], b->hi[j]);
+            if (p > q) {
+                const int64_t x = p;
+                p = q;
+                q = x;
+            }
+            lo += p;
+            hi += q;
+            mag += (p < 0 ? -p : p) > (q < 0 ? -q : q) ? (p < 0 ? -p : p) : (q < 0 ? -q : q);
+        }
+        /* every product and partial sum within +-(2^31 - 1): none saturates */
+        if (mag > (int64_t)INT32_MAX) return 0;
+        out->lo[i] = (num)lo;
+        out->hi[i] = (num)hi;
+    }
+    out->ok = 1;
+    return 1;
+}
+
+vec3 ras_mul_point_fit(const mat4 *m, vec3 p)
+{
+    /* ras_mul_point's order: each row from column 0, the translation last */
+    vec3 r;
+    r.x = num_add_fit(num_add_fit(num_add_fit(num_mul_fit(m->m[0][0], p.x), num_mul_fit(m->m[0][1], p.y)),
+                                  num_mul_fit(m->m[0][2], p.z)),
+                      m->m[0][3]);
+    r.y = num_add_fit(num_add_fit(num_add_fit(num_mul_fit(m->m[1][0], p.x), num_mul_fit(m->m[1][1], p.y)),
+                                  num_mul_fit(m->m[1][2], p.z)),
+                      m->m[1][3]);
+    r.z = num_add_fit(num_add_fit(num_add_fit(num_mul_fit(m->m[2][0], p.x), num_mul_fit(m->m[2][1], p.y)),
+                                  num_mul_fit(m->m[2][2], p.z)),
+                      m->m[2][3]);
+    return r;
+}
+
 /* wnum_div(a, z) for z > 0 by the prepared z: its path for a numerator
  * |a| 2^F below 2^63 and a quotient that does not saturate (the same
  * rounding, halves away from zero), wnum_div itself otherwise. */
@@ -320,6 +382,23 @@ num ras_project(num x, num d, num z, num cw, num vw)
 }
 
 vec3 ras_mul_point(const mat4 *m, vec3 p) { return m4_mul_point(m, p); }
+
+void ras_box_of(struct ras_box *b, const vec3 *v, uint32_t n)
+{
+    (void)v;
+    (void)n;
+    b->ok = 0;
+}
+
+int ras_box_transform(const mat4 *m, const struct ras_box *b, struct ras_box *out)
+{
+    (void)m;
+    (void)b;
+    out->ok = 0;
+    return 0;
+}
+
+vec3 ras_mul_point_fit(const mat4 *m, vec3 p) { return m4_mul_point(m, p); }
 
 void ras_div_depth(num x, num y, num z, num unproj, num near_z, num *X, num *Y, num *iz, uint32_t *depth)
 {

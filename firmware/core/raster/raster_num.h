@@ -68,6 +68,20 @@ uint32_t ras_depth32(num near_z, num z);
  * operations (vec.c's are calls: nine products and twelve sums a point). */
 vec3 ras_mul_point(const mat4 *m, vec3 p);
 
+/* The range of a model's coordinates: the least and greatest of each axis
+ * (ok 0: none known; fixed point only, and only for at least one point). */
+struct ras_box { num lo[3], hi[3]; uint8_t ok; };
+void ras_box_of(struct ras_box *b, const vec3 *v, uint32_t n);
+/* *out: the range of ras_mul_point(m, p)'s components over the points p
+ * of box b, exactly (each rounded product is monotonic in p); 1 when no
+ * product or sum of ras_mul_point saturates for any of those points, so
+ * that ras_mul_point_fit gives its bits there; 0 (and out->ok 0) when one
+ * may, or b is not known. */
+int ras_box_transform(const mat4 *m, const struct ras_box *b, struct ras_box *out);
+/* ras_mul_point(m, p) for a point of a box ras_box_transform accepted with
+ * m: the same bits in 32-bit arithmetic, without the saturation checks. */
+vec3 ras_mul_point_fit(const mat4 *m, vec3 p);
+
 /* The divisions of a vertex's projection by its depth z > 0: X and Y =
  * x * unproj / z and y * unproj / z with the products kept wide (as
  * ras_mul_div), iz = 1/z (num_recip) and depth = ras_depth32(near_z, z),

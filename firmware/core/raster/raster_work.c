@@ -396,6 +396,14 @@ int raster_init(void *work, size_t work_size, const struct scene *s, uint16_t wi
         ras_spec_table(rc->fast.spec_tab + 257 * k, exps[k], rc->fast.spec_step + 2 * k);
     init_viewport(rc);
     init_textures(rc);
+    /* each instance's model box (an earlier instance's of the same model) */
+    for (uint16_t i = 0; i < s->ninstances; i++) {
+        const struct ras_model *m = &s->models[s->instances[i].model];
+        uint16_t j = 0;
+        while (j < i && s->instances[j].model != s->instances[i].model) j++;
+        if (j < i) rc->inst[i].box = rc->inst[j].box;
+        else ras_box_of(&rc->inst[i].box, m->verts, m->nverts);
+    }
     if (FW_FEATURE_RAS_CH15) ras_ch15_init(rc);
     return 0;
 }

@@ -150,9 +150,14 @@ void ras_tri_cache(struct ras_ctx *rc, const struct ras_instance *in, const stru
     const struct ras_pv *pv = rc->def.pv + ri->vbase;
     const struct ras_pv *a = &pv[t->v[0]], *b = &pv[t->v[1]], *c = &pv[t->v[2]];
     if (ras_pv_in(a) && ras_pv_in(b) && ras_pv_in(c)) {
-        /* |differences| < 2^16 (ras_pv): the products in 32 x 32 -> 64 bits */
+        /* |differences| < 2^16 (ras_pv): the products in 32 x 32 -> 64 bits;
+         * all four in [-2^14, 2^14) (a triangle of at most 1,024 pixels
+         * a side at 4 sub-pixel bits), the same in 32 bits */
         const int32_t d1x = b->sx - a->sx, d1y = b->sy - a->sy, d2x = c->sx - a->sx, d2y = c->sy - a->sy;
-        const int64_t area = num_smul32(d1x, d2y) - num_smul32(d1y, d2x);
+        const int64_t area = (((uint32_t)d1x + 0x4000u) | ((uint32_t)d1y + 0x4000u) | ((uint32_t)d2x + 0x4000u) |
+                              ((uint32_t)d2y + 0x4000u)) < 0x8000u
+                                 ? (int64_t)(d1x * d2y - d1y * d2x)
+                                 : num_smul32(d1x, d2y) - num_smul32(d1y, d2x);
         /* three projected corners whose area on screen, in the order a
          * front face is drawn, is not positive: whichever way the triangle
          * faces, it draws nothing (a back face is culled, a front face

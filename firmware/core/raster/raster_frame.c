@@ -272,9 +272,12 @@ static void bin_triangles(struct ras_ctx *rc)
     const uint32_t nb = B->nbuckets;
     for (uint32_t b = 0; b <= nb; b++) start[b] = 0;
     for (uint32_t b = 0; b < nb; b++) B->reach[b] = -1;
+    const uint32_t dm = B->div_mul, sr = rc->strip_rows;
     for (uint32_t gi = 0; gi < rc->ntris; gi++) {
         struct ras_trows r = rc->tri_rows[gi];
-        if (r.r0 <= r.r1) start[(uint32_t)ras_trows_first(rc, r) / rc->strip_rows + 1]++;
+        if (r.r0 > r.r1) continue;
+        const uint32_t f = (uint32_t)ras_trows_first(rc, r);
+        start[(dm ? (f * dm) >> 16 : f / sr) + 1]++;
     }
     for (uint32_t b = 1; b <= nb; b++) start[b] = (uint16_t)(start[b] + start[b - 1]);
     /* start[b] walks bucket b's run; afterwards it holds the run's end,
@@ -282,7 +285,7 @@ static void bin_triangles(struct ras_ctx *rc)
     for (uint32_t gi = 0; gi < rc->ntris; gi++) {
         struct ras_trows r = rc->tri_rows[gi];
         if (r.r0 > r.r1) continue;
-        uint32_t b = (uint32_t)ras_trows_first(rc, r) / rc->strip_rows;
+        const uint32_t f = (uint32_t)ras_trows_first(rc, r), b = dm ? (f * dm) >> 16 : f / sr;
         B->order[start[b]++] = (uint16_t)gi;
         if (ras_trows_last(rc, r) > B->reach[b]) B->reach[b] = (int16_t)ras_trows_last(rc, r);
     }

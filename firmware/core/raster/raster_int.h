@@ -193,6 +193,8 @@ struct ras_bins {
     uint16_t *start;         /* nbuckets + 1: bucket b is order[start[b] .. start[b + 1]) */
     int16_t *reach;          /* nbuckets: the last row of bucket b's triangles, -1: none */
     uint16_t *runs;          /* 2 nbuckets: a strip's runs being merged (cursor, end) */
+    uint32_t div_mul;        /* row r's bucket is (r * div_mul) >> 16 for every row
+                                (render_init checks them all); 0: r / strip_rows */
 };
 
 /* A sibling context's own tables (raster_init_sibling): what its strips

@@ -396,6 +396,11 @@ int raster_init(void *work, size_t work_size, const struct scene *s, uint16_t wi
         ras_spec_table(rc->fast.spec_tab + 257 * k, exps[k], rc->fast.spec_step + 2 * k);
     init_viewport(rc);
     init_textures(rc);
+    /* the buckets of the rows by a product: 2^16 / strip_rows + 1, if it
+     * gives every row's quotient */
+    rc->bins.div_mul = strip_rows ? 65536u / strip_rows + 1u : 0;
+    for (uint32_t r = 0; rc->bins.div_mul && r < height; r++)
+        if ((r * rc->bins.div_mul) >> 16 != r / strip_rows) rc->bins.div_mul = 0;
     /* each instance's model box (an earlier instance's of the same model) */
     for (uint16_t i = 0; i < s->ninstances; i++) {
         const struct ras_model *m = &s->models[s->instances[i].model];

@@ -254,8 +254,8 @@ void ras_div_depth(num x, num y, num z, num unproj, num near_z, num *X, num *Y, 
         return;
     }
     const struct num_udiv_pre p = num_udiv_pre_make((uint32_t)z);
-    *X = wdiv_pre(num_mul_wide(x, unproj), z, &p);
-    *Y = wdiv_pre(num_mul_wide(y, unproj), z, &p);
+    *X = wdiv_pre(num_mul_round(x, unproj), z, &p);   /* num_mul_wide's bits, inline */
+    *Y = wdiv_pre(num_mul_round(y, unproj), z, &p);
     *iz = wdiv_pre(wnum_from_num(NUM_ONE), z, &p);   /* num_div(1, z): wnum_div's rounding of 2^F 2^F / z */
     /* 0 < near < z: the quotient fits 32 bits */
     *depth = near_z <= 0 || z <= near_z ? ras_depth32(near_z, z)

@@ -89,6 +89,20 @@ vec3 ras_mul_point_fit(const mat4 *m, vec3 p);
  * reciprocal (num_udiv_pre) serves the four. */
 void ras_div_depth(num x, num y, num z, num unproj, num near_z, num *X, num *Y, num *iz, uint32_t *depth);
 
+/* A canvas coordinate f (pixels) in sub-pixel units, 0 < sb <= 8: floor(f)
+ * 2^sb + floor(frac(f) 2^sb + 1/2), num_floor_int, num_frac, num_mul_int
+ * and num_add's bits (raster_project.c's form); fixed point in integers
+ * where frac(f) 2^sb + 1/2 cannot saturate. */
+static inline int32_t ras_sub_pos(num f, int sb)
+{
+#if NUM_MODE == NUM_MODE_FIXED && NUM_FRAC <= 22
+    return (int32_t)((uint32_t)(f >> NUM_FRAC) << sb) +
+           (int32_t)(((((uint32_t)f & (NUM_ONE_RAW - 1u)) << sb) + (NUM_ONE_RAW >> 1)) >> NUM_FRAC);
+#else
+    return (int32_t)((uint32_t)num_floor_int(f) << sb) + num_floor_int(num_add(num_mul_int(num_frac(f), 1 << sb), NUM_HALF));
+#endif
+}
+
 /* A front face known from the screen: triangle a b c of three projected
  * corners (inside every plane, z >= near) whose doubled area on screen
  * A (sub-pixel units) exceeds 2L + 24 + g (iz_b + 1)(iz_c + 1) 2^-2F (L:

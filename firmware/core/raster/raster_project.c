@@ -93,10 +93,9 @@ static void project_sub_xy(const struct ras_ctx *rc, num X, num Y, int32_t *sx, 
 {
     num fx = num_add(num_from_int(rc->w / 2), X);
     num fy = num_sub(num_from_int(rc->h / 2), Y);
-    int sb = rc->def.sub_bits;
     /* integer and fraction apart, so Q15.16 never holds pixels << 8 */
-    *sx = (int32_t)((uint32_t)num_floor_int(fx) << sb) + num_floor_int(num_add(num_mul_int(num_frac(fx), 1 << sb), NUM_HALF));
-    *sy = (int32_t)((uint32_t)num_floor_int(fy) << sb) + num_floor_int(num_add(num_mul_int(num_frac(fy), 1 << sb), NUM_HALF));
+    *sx = ras_sub_pos(fx, rc->def.sub_bits);
+    *sy = ras_sub_pos(fy, rc->def.sub_bits);
 }
 
 void ras_project_sub(const struct ras_ctx *rc, vec3 p, int32_t *sx, int32_t *sy)

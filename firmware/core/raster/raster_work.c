@@ -167,11 +167,15 @@ static int shade_caches(const struct scene *s)
 
 /* Triangle set-ups the fast path keeps from one strip to the next: a
  * power of two of slots, one a triangle up to RAS_KEEP_MAX (triangle i in
- * slot i mod slots, a mask). */
+ * slot i mod slots, a mask). A frame uses them only when its strips draw
+ * at most twice as many triangles as there are slots (raster_frame_finish);
+ * a scene of more than twice that many triangles (a closed mesh draws
+ * about half of its own, the others facing away) has none. */
 #define RAS_KEEP_MAX 16
-static uint16_t keep_slots(const struct scene *s, uint32_t ntris)
+static uint16_t keep_slots(const struct scene *s, uint32_t ntris, uint16_t h, uint16_t strip_rows)
 {
     if (!fast_path(s) || ntris == 0) return 0;
+    if ((uint64_t)ntris * strip_rows > (uint64_t)4u * RAS_KEEP_MAX * ((uint32_t)h + strip_rows - 1u)) return 0;
     uint16_t n = 1;
     while (n < ntris && n < RAS_KEEP_MAX) n = (uint16_t)(n * 2);
     return n;
@@ -180,11 +184,11 @@ static uint16_t keep_slots(const struct scene *s, uint32_t ntris)
 /* The tables a strip writes (its depth buffer, the runs it merges,
  * the set-ups kept between strips, the stencil): the whole of a sibling
  * context's own memory (struct ras_own), the last of an owner's. */
-static void carve_strip_tables(const struct scene *s, uint16_t w, uint16_t strip_rows, uint32_t ntris,
+static void carve_strip_tables(const struct scene *s, uint16_t w, uint16_t h, uint16_t strip_rows, uint32_t ntris,
                                struct ras_ctx *rc, struct work_carve *c)
 {
     rc->bins.runs = work_take(c, rc->bins.on ? sizeof(uint16_t) * 2 * rc->bins.nbuckets : 0);
-    rc->fast.nkeep = keep_slots(s, ntris);
+    rc->fast.nkeep = keep_slots(s, ntris, h, strip_rows);
     void *keep = work_take(c, sizeof(struct ras_fast_state) * rc->fast.nkeep);
     rc->fast.keep = rc->fast.nkeep ? keep : NULL;
     rc->depth = work_take(c, (size_t)depth_bytes(s) * w * strip_rows);
@@ -263,7 +267,7 @@ static int carve(const struct scene *s, uint16_t w, uint16_t h, uint16_t strip_r
     rc->fast.inst_spec = work_take(c, sizeof(int16_t) * s->ninstances);
     rc->c15.adj = work_take(c, ras_ch15_adj_size(s, ntris));
     rc->c15.smap = work_take(c, ras_ch15_smap_size(s));
-    carve_strip_tables(s, w, strip_rows, ntris, rc, c);
+    carve_strip_tables(s, w, h, strip_rows, ntris, rc, c);
     return 0;
 }
 
@@ -488,12 +492,12 @@ static uint32_t scene_count(const struct scene *s, int verts)
 /* A sibling's own tables: carve_strip_tables', then the part-1 vertex
  * lighting of a split preparation (raster_frame_triangles) where the
  * scene lights vertices. */
-static void carve_sibling(const struct scene *s, uint16_t w, uint16_t strip_rows, struct ras_ctx *rc,
+static void carve_sibling(const struct scene *s, uint16_t w, uint16_t h, uint16_t strip_rows, struct ras_ctx *rc,
                           struct work_carve *c)
 {
     uint32_t ntris = scene_count(s, 0), nverts = scene_count(s, 1);
     (void)work_take(c, sizeof(struct ras_ctx));
-    carve_strip_tables(s, w, strip_rows, ntris, rc, c);
+    carve_strip_tables(s, w, h, strip_rows, ntris, rc, c);
     int vl = (shade_caches(s) & 2) != 0;
     void *vs = work_take(c, vl ? sizeof(num) * nverts : 0);
     void *vb = work_take(c, vl ? (nverts + 7) / 8 : 0);
@@ -515,7 +519,7 @@ size_t raster_sibling_work_size(const struct scene *s, uint16_t width, uint16_t 
     memset(&scratch, 0, sizeof scratch);
     scratch.bins.on = (uint8_t)bins_on(s, scene_count(s, 0));
     scratch.bins.nbuckets = bins_count(scratch.bins.on, height, strip_rows);
-    carve_sibling(s, width, strip_rows, &scratch, &c);
+    carve_sibling(s, width, height, strip_rows, &scratch, &c);
     return c.off + WORK_ALIGN;
 }
 
@@ -539,7 +543,7 @@ int raster_init_sibling(void *work, size_t work_size, const void *owner_work)
     struct ras_ctx *rc = ras_ctx_of(work);
     *rc = *ow;
     struct work_carve c = { (uint8_t *)rc, 0 };
-    carve_sibling(ow->s, ow->w, ow->strip_rows, rc, &c);
+    carve_sibling(ow->s, ow->w, ow->h, ow->strip_rows, rc, &c);
     struct ras_own own = rc->own;
     /* the owner's part-1 vertex lighting lives here: registered with it,
      * nothing lit yet */

@@ -437,7 +437,8 @@ static int fast_setup(const struct ras_ctx *rc, const struct ras_sv *v0, const s
 {
     int32_t box[4];
     ras_sub_box(v0, v1, v2, box);
-    if ((int64_t)box[2] - box[0] > (1 << 14) || (int64_t)box[3] - box[1] > (1 << 14))
+    /* (the box's sides as unsigned differences: box[2] >= box[0], box[3] >= box[1]) */
+    if ((uint32_t)box[2] - (uint32_t)box[0] > (1u << 14) || (uint32_t)box[3] - (uint32_t)box[1] > (1u << 14))
         return ras_edge(v0->x, v0->y, v1->x, v1->y, v2->x, v2->y) <= 0 ? 0 : -1;
     /* twice the area: differences of at most 2^14, products below 2^28 */
     const int32_t area = (v1->x - v0->x) * (v2->y - v0->y) - (v1->y - v0->y) * (v2->x - v0->x);

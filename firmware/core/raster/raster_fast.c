@@ -294,6 +294,7 @@ static int depth_small(const struct ras_sv *v0, const struct ras_sv *v1, const s
     uint32_t n = (uint32_t)(r0 - rtop), f = frac16(rz, A, m) + n * S->gyf;
     S->zhi = d0 + (uint32_t)qz + n * S->gyq + (f >> 16);
     S->zfrac = f & 0xFFFFu;
+    S->zrow = S->gy16 = 0;   /* (unread where z32) */
     S->z32 = 1;
     return 1;
 }
@@ -447,12 +448,14 @@ static int fast_setup(const struct ras_ctx *rc, const struct ras_sv *v0, const s
     int r = fast_edges(rc, box, v0, v1, v2, S, &rtop);
     if (r <= 0) return r;
     S->depth = rc->depth_bytes != 0;
-    S->zrow = S->gy16 = 0;
-    S->gxq = 0;
-    S->gxf = S->dz = 0;
-    S->z32 = 0;
-    S->zhi = S->zfrac = S->gyq = S->gyf = 0;
-    if (S->depth && !depth_small(v0, v1, v2, area, rtop, S) && fast_depth(v0, v1, v2, area, rtop, S) < 0) return -1;
+    if (!S->depth) {
+        S->zrow = S->gy16 = 0;
+        S->gxq = 0;
+        S->gxf = S->dz = 0;
+        S->z32 = 0;
+        S->zhi = S->zfrac = S->gyq = S->gyf = 0;
+    } else if (!depth_small(v0, v1, v2, area, rtop, S) && fast_depth(v0, v1, v2, area, rtop, S) < 0)
+        return -1;       /* (each sets every depth field) */
     const struct ras_sv *const vv[3] = { v0, v1, v2 };
     return fast_attrs(rc, vv, ft, area, S);
 }

@@ -224,6 +224,81 @@ static void depth_words(struct fstate *S, uint32_t d0, uint32_t d1, uint32_t d2)
     S->gyf = (uint32_t)S->gy16 & 0xFFFFu;
 }
 
+/* floor(n / d) and the remainder in [0, d) for 0 < d < 2^16, m = floor((2^32
+ * - 1) / d): the estimate |n| m / 2^32 is below |n| / d by less than 1, so
+ * one step up at most corrects it. */
+static int32_t sdiv16(int32_t n, uint32_t d, uint32_t m, int32_t *rem)
+{
+    uint32_t x = n < 0 ? 0u - (uint32_t)n : (uint32_t)n;
+    uint32_t q = num_mulhi32(x, m), r = x - q * d;
+    if (r >= d) {
+        r -= d;
+        q++;
+    }
+    if (n >= 0) {
+        *rem = (int32_t)r;
+        return (int32_t)q;
+    }
+    *rem = r != 0 ? (int32_t)(d - r) : 0;
+    return -(int32_t)q - (r != 0);
+}
+
+/* a - b for |a - b| < 2^31. */
+static int32_t sdiff(uint32_t a, uint32_t b) { return a >= b ? (int32_t)(a - b) : -(int32_t)(b - a); }
+
+/* floor(r 2^16 / d) for 0 <= r < d < 2^16 (the same m). */
+static uint32_t frac16(int32_t r, uint32_t d, uint32_t m)
+{
+    uint32_t x = (uint32_t)r << 16, q = num_mulhi32(x, m);
+    return q + (x - q * d >= d);
+}
+
+/* fast_depth's plane in 32-bit words for a triangle of doubled area below
+ * 2^16, corners' depths in [2, 2^32 - 2] (depth_words) whose differences
+ * fit 32 bits, edge steps and values below 2^14: the same values. A
+ * numerator sum_i dd_i x_i (dd_i corner i's depth less corner 0's, x_i an
+ * edge value or step) is sum_i (qd_i A + rd_i) x_i with dd_i = qd_i A +
+ * rd_i, rd_i in [0, A): the quotients' part a multiple of A, the
+ * remainders' part below 2^31, so its quotient and remainder by A come
+ * from 32-bit divisions. Returns 1, or 0 where the ranges do not allow it. */
+static int depth_small(const struct ras_sv *v0, const struct ras_sv *v1, const struct ras_sv *v2, int32_t area,
+                       int32_t rtop, struct fstate *S)
+{
+    const uint32_t d0 = v0->depth, d1 = v1->depth, d2 = v2->depth;
+    const int32_t *wr = S->wr, *a = S->a, *b = S->b, r0 = S->row;
+    const int32_t lim = (int32_t)1 << 14;
+    if (area >= (1 << 16)) return 0;
+    uint32_t lo = d0 < d1 ? d0 : d1, hi = d0 < d1 ? d1 : d0;
+    if (d2 < lo) lo = d2;
+    if (d2 > hi) hi = d2;
+    if (lo < 2 || hi > UINT32_MAX - 1 || hi - lo > (uint32_t)INT32_MAX) return 0;
+    int32_t w1t = wr[1] - (r0 - rtop) * b[1], w2t = wr[2] - (r0 - rtop) * b[2];
+    if (a[1] <= -lim || a[1] >= lim || a[2] <= -lim || a[2] >= lim || b[1] <= -lim || b[1] >= lim ||
+        b[2] <= -lim || b[2] >= lim || w1t <= -lim || w1t >= lim || w2t <= -lim || w2t >= lim)
+        return 0;
+    const uint32_t A = (uint32_t)area, m = 0xFFFFFFFFu / A;
+    /* (|dd_i| < 2^31: the depths' range) */
+    int32_t dd1 = sdiff(d1, d0), dd2 = sdiff(d2, d0), rd1, rd2, rx, ry, rz;
+    int32_t qd1 = sdiv16(dd1, A, m, &rd1), qd2 = sdiv16(dd2, A, m, &rd2);
+    if (qd1 <= -(1 << 15) || qd1 >= (1 << 15) || qd2 <= -(1 << 15) || qd2 >= (1 << 15)) return 0;
+    /* quotients' parts below 2^30, remainders' below 2^31 */
+    int32_t qx = qd1 * a[1] + qd2 * a[2] + sdiv16(rd1 * a[1] + rd2 * a[2], A, m, &rx);
+    int32_t qy = qd1 * b[1] + qd2 * b[2] + sdiv16(rd1 * b[1] + rd2 * b[2], A, m, &ry);
+    int32_t qz = qd1 * w1t + qd2 * w2t + sdiv16(rd1 * w1t + rd2 * w2t, A, m, &rz);
+    S->gxq = qx;
+    S->gxf = frac16(rx, A, m);
+    S->dz = (uint32_t)(qx + (qx < 0 && rx != 0));      /* toward zero */
+    S->gyq = (uint32_t)qy;
+    S->gyf = frac16(ry, A, m);
+    /* from the box's top row to r0 (fewer than 2^14 rows) */
+    uint32_t n = (uint32_t)(r0 - rtop), f = frac16(rz, A, m) + n * S->gyf;
+    S->zhi = d0 + (uint32_t)qz + n * S->gyq + (f >> 16);
+    S->zfrac = f & 0xFFFFu;
+    S->zrow = S->gy16 = 0;   /* (unread where z32) */
+    S->z32 = 1;
+    return 1;
+}
+
 static int fast_depth(const struct ras_sv *v0, const struct ras_sv *v1, const struct ras_sv *v2,
                       int32_t area, int32_t rtop, struct fstate *S)
 {
@@ -363,7 +438,8 @@ static int fast_setup(const struct ras_ctx *rc, const struct ras_sv *v0, const s
 {
     int32_t box[4];
     ras_sub_box(v0, v1, v2, box);
-    if ((int64_t)box[2] - box[0] > (1 << 14) || (int64_t)box[3] - box[1] > (1 << 14))
+    /* (the box's sides as unsigned differences: box[2] >= box[0], box[3] >= box[1]) */
+    if ((uint32_t)box[2] - (uint32_t)box[0] > (1u << 14) || (uint32_t)box[3] - (uint32_t)box[1] > (1u << 14))
         return ras_edge(v0->x, v0->y, v1->x, v1->y, v2->x, v2->y) <= 0 ? 0 : -1;
     /* twice the area: differences of at most 2^14, products below 2^28 */
     const int32_t area = (v1->x - v0->x) * (v2->y - v0->y) - (v1->y - v0->y) * (v2->x - v0->x);
@@ -372,12 +448,14 @@ static int fast_setup(const struct ras_ctx *rc, const struct ras_sv *v0, const s
     int r = fast_edges(rc, box, v0, v1, v2, S, &rtop);
     if (r <= 0) return r;
     S->depth = rc->depth_bytes != 0;
-    S->zrow = S->gy16 = 0;
-    S->gxq = 0;
-    S->gxf = S->dz = 0;
-    S->z32 = 0;
-    S->zhi = S->zfrac = S->gyq = S->gyf = 0;
-    if (S->depth && fast_depth(v0, v1, v2, area, rtop, S) < 0) return -1;
+    if (!S->depth) {
+        S->zrow = S->gy16 = 0;
+        S->gxq = 0;
+        S->gxf = S->dz = 0;
+        S->z32 = 0;
+        S->zhi = S->zfrac = S->gyq = S->gyf = 0;
+    } else if (!depth_small(v0, v1, v2, area, rtop, S) && fast_depth(v0, v1, v2, area, rtop, S) < 0)
+        return -1;       /* (each sets every depth field) */
     const struct ras_sv *const vv[3] = { v0, v1, v2 };
     return fast_attrs(rc, vv, ft, area, S);
 }

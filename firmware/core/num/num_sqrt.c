@@ -52,11 +52,22 @@ static const uint16_t rsqrt_seed[384] = {
     33142, 33109, 33076, 33043, 33011, 32978, 32945, 32913, 32881, 32848, 32816, 32784,
 };
 
-uint32_t num_rsqrt_q30(uint32_t xh)
+#if defined(__GNUC__) || defined(__clang__)
+#define SQRT_INLINE static inline __attribute__((always_inline))
+#else
+#define SQRT_INLINE static inline
+#endif
+
+SQRT_INLINE uint32_t rsqrt_q30(uint32_t xh)
 {
     uint32_t y = rsqrt_seed[(xh >> 23) - 128];  /* Q15, in (2^15, 2^16) */
     uint32_t w = num_mulhi32(xh, y * y);        /* u y^2, Q30: 2^30 (1 +- 2^-8) */
     return num_mulhi32(y << 16, 0xC0000000u - w);
+}
+
+uint32_t num_rsqrt_q30(uint32_t xh)
+{
+    return rsqrt_q30(xh);
 }
 
 /* sqrt(x) for x in [2^62, 2^64) given xh = x >> 32 and xm = x >> 20 mod
@@ -65,9 +76,9 @@ uint32_t num_rsqrt_q30(uint32_t xh)
  * arithmetic mod 2^32), then one Newton step r + residual / (2 sqrt(x / 2^20)),
  * with 1 / (2 sqrt(x / 2^20)) = y / 2^53, scaled by 2^10: within 2 units
  * (the dropped low 20 bits of x move the root by < 2^-11). */
-static uint32_t sqrt_core(uint32_t xh, uint32_t xm, uint32_t *ry)
+SQRT_INLINE uint32_t sqrt_core(uint32_t xh, uint32_t xm, uint32_t *ry)
 {
-    uint32_t y = num_rsqrt_q30(xh);
+    uint32_t y = rsqrt_q30(xh);
     uint32_t r = num_mulhi32(xh, y) >> 8;
     int32_t e = (int32_t)(xm - r * r);
     uint32_t c = num_mulhi32((e < 0 ? 0u - (uint32_t)e : (uint32_t)e) << 3, y) >> 14;
@@ -103,12 +114,24 @@ static uint32_t isqrt_fix(uint64_t v, uint32_t r, uint64_t *rem)
     return r;
 }
 
+/* num_sqrt_est and isqrt_fix in one function, in 32-bit halves (ARMv6-M has
+ * no 64-bit shifts), without their calls: the same estimate, so the same
+ * steps; the remainder v - r^2 as a signed 64-bit difference (|.| < 2^35
+ * while the estimate is being stepped). */
 uint64_t num_isqrt64(uint64_t v, uint64_t *rem)
 {
-    if (v == 0) { if (rem) *rem = 0; return 0; }
-    int k;
-    uint32_t r = num_sqrt_est(v, &k, 0);
-    return isqrt_fix(v, r >> k, rem);
+    uint32_t hi = (uint32_t)(v >> 32), lo = (uint32_t)v, xh, xl, y;
+    if (!(hi | lo)) { if (rem) *rem = 0; return 0; }
+    int s = (hi ? num_clz32(hi) : 32 + num_clz32(lo)) & ~1;
+    if (s >= 32) { xh = lo << (s - 32); xl = 0; }
+    else if (s) { xh = hi << s | lo >> (32 - s); xl = lo << s; }
+    else { xh = hi; xl = lo; }
+    uint32_t r = sqrt_core(xh, xh << 12 | xl >> 20, &y) >> (s >> 1);
+    int64_t d = (int64_t)(v - num_umul32(r, r));
+    while (d < 0) { r--; d += 2 * (int64_t)r + 1; }
+    while (d > 2 * (int64_t)r) { d -= 2 * (int64_t)r + 1; r++; }
+    if (rem) *rem = (uint64_t)d;
+    return r;
 }
 
 /* sqrt(v) rounded to nearest, i.e. floor(sqrt(v) + 1/2) (no ties between

@@ -17,7 +17,7 @@
  * x * y and one Newton step on the root (within 2 units of sqrt(x)); then an
  * exact integer correction. Only 32x32 products (four MULS on ARMv6-M). The
  * table and the bounds are checked by tests/unit/test_num_kernels.c. */
-static const uint16_t rsqrt_seed[384] = {
+const uint16_t num_rsqrt_seed[384] = {
     65408, 65155, 64905, 64658, 64414, 64172, 63933, 63697, 63463, 63232, 63003, 62777,
     62553, 62331, 62112, 61896, 61681, 61469, 61259, 61051, 60845, 60641, 60439, 60239,
     60041, 59845, 59651, 59459, 59269, 59081, 58894, 58709, 58526, 58344, 58165, 57986,
@@ -52,19 +52,6 @@ static const uint16_t rsqrt_seed[384] = {
     33142, 33109, 33076, 33043, 33011, 32978, 32945, 32913, 32881, 32848, 32816, 32784,
 };
 
-#if defined(__GNUC__) || defined(__clang__)
-#define SQRT_INLINE static inline __attribute__((always_inline))
-#else
-#define SQRT_INLINE static inline
-#endif
-
-SQRT_INLINE uint32_t rsqrt_q30(uint32_t xh)
-{
-    uint32_t y = rsqrt_seed[(xh >> 23) - 128];  /* Q15, in (2^15, 2^16) */
-    uint32_t w = num_mulhi32(xh, y * y);        /* u y^2, Q30: 2^30 (1 +- 2^-8) */
-    return num_mulhi32(y << 16, 0xC0000000u - w);
-}
-
 uint32_t num_rsqrt_q30(uint32_t xh)
 {
     return rsqrt_q30(xh);
@@ -76,7 +63,7 @@ uint32_t num_rsqrt_q30(uint32_t xh)
  * arithmetic mod 2^32), then one Newton step r + residual / (2 sqrt(x / 2^20)),
  * with 1 / (2 sqrt(x / 2^20)) = y / 2^53, scaled by 2^10: within 2 units
  * (the dropped low 20 bits of x move the root by < 2^-11). */
-SQRT_INLINE uint32_t sqrt_core(uint32_t xh, uint32_t xm, uint32_t *ry)
+NUM_FIX_INLINE uint32_t sqrt_core(uint32_t xh, uint32_t xm, uint32_t *ry)
 {
     uint32_t y = rsqrt_q30(xh);
     uint32_t r = num_mulhi32(xh, y) >> 8;

@@ -20,6 +20,22 @@ static inline num sat_signed(uint64_t q, int neg)
     return neg ? -(num)q : (num)q;
 }
 
+#if defined(__GNUC__) || defined(__clang__)
+#define NUM_FIX_INLINE static inline __attribute__((always_inline))
+#else
+#define NUM_FIX_INLINE static inline
+#endif
+
+/* num_rsqrt_q30 inline (num_sqrt.c's seed table; the estimate is described
+ * there). */
+extern const uint16_t num_rsqrt_seed[384];
+NUM_FIX_INLINE uint32_t rsqrt_q30(uint32_t xh)
+{
+    uint32_t y = num_rsqrt_seed[(xh >> 23) - 128];   /* Q15, in (2^15, 2^16) */
+    uint32_t w = num_mulhi32(xh, y * y);             /* u y^2, Q30: 2^30 (1 +- 2^-8) */
+    return num_mulhi32(y << 16, 0xC0000000u - w);
+}
+
 static inline uint32_t uabs32(int32_t a) { return a < 0 ? 0u - (uint32_t)a : (uint32_t)a; }
 
 /* Pre-scale: components shifted so the largest magnitude lies in

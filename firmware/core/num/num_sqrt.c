@@ -17,7 +17,7 @@
  * x * y and one Newton step on the root (within 2 units of sqrt(x)); then an
  * exact integer correction. Only 32x32 products (four MULS on ARMv6-M). The
  * table and the bounds are checked by tests/unit/test_num_kernels.c. */
-static const uint16_t rsqrt_seed[384] = {
+const uint16_t num_rsqrt_seed[384] = {
     65408, 65155, 64905, 64658, 64414, 64172, 63933, 63697, 63463, 63232, 63003, 62777,
     62553, 62331, 62112, 61896, 61681, 61469, 61259, 61051, 60845, 60641, 60439, 60239,
     60041, 59845, 59651, 59459, 59269, 59081, 58894, 58709, 58526, 58344, 58165, 57986,
@@ -54,9 +54,7 @@ static const uint16_t rsqrt_seed[384] = {
 
 uint32_t num_rsqrt_q30(uint32_t xh)
 {
-    uint32_t y = rsqrt_seed[(xh >> 23) - 128];  /* Q15, in (2^15, 2^16) */
-    uint32_t w = num_mulhi32(xh, y * y);        /* u y^2, Q30: 2^30 (1 +- 2^-8) */
-    return num_mulhi32(y << 16, 0xC0000000u - w);
+    return rsqrt_q30(xh);
 }
 
 /* sqrt(x) for x in [2^62, 2^64) given xh = x >> 32 and xm = x >> 20 mod
@@ -65,9 +63,9 @@ uint32_t num_rsqrt_q30(uint32_t xh)
  * arithmetic mod 2^32), then one Newton step r + residual / (2 sqrt(x / 2^20)),
  * with 1 / (2 sqrt(x / 2^20)) = y / 2^53, scaled by 2^10: within 2 units
  * (the dropped low 20 bits of x move the root by < 2^-11). */
-static uint32_t sqrt_core(uint32_t xh, uint32_t xm, uint32_t *ry)
+NUM_FIX_INLINE uint32_t sqrt_core(uint32_t xh, uint32_t xm, uint32_t *ry)
 {
-    uint32_t y = num_rsqrt_q30(xh);
+    uint32_t y = rsqrt_q30(xh);
     uint32_t r = num_mulhi32(xh, y) >> 8;
     int32_t e = (int32_t)(xm - r * r);
     uint32_t c = num_mulhi32((e < 0 ? 0u - (uint32_t)e : (uint32_t)e) << 3, y) >> 14;
@@ -103,12 +101,24 @@ static uint32_t isqrt_fix(uint64_t v, uint32_t r, uint64_t *rem)
     return r;
 }
 
+/* num_sqrt_est and isqrt_fix in one function, in 32-bit halves (ARMv6-M has
+ * no 64-bit shifts), without their calls: the same estimate, so the same
+ * steps; the remainder v - r^2 as a signed 64-bit difference (|.| < 2^35
+ * while the estimate is being stepped). */
 uint64_t num_isqrt64(uint64_t v, uint64_t *rem)
 {
-    if (v == 0) { if (rem) *rem = 0; return 0; }
-    int k;
-    uint32_t r = num_sqrt_est(v, &k, 0);
-    return isqrt_fix(v, r >> k, rem);
+    uint32_t hi = (uint32_t)(v >> 32), lo = (uint32_t)v, xh, xl, y;
+    if (!(hi | lo)) { if (rem) *rem = 0; return 0; }
+    int s = (hi ? num_clz32(hi) : 32 + num_clz32(lo)) & ~1;
+    if (s >= 32) { xh = lo << (s - 32); xl = 0; }
+    else if (s) { xh = hi << s | lo >> (32 - s); xl = lo << s; }
+    else { xh = hi; xl = lo; }
+    uint32_t r = sqrt_core(xh, xh << 12 | xl >> 20, &y) >> (s >> 1);
+    int64_t d = (int64_t)(v - num_umul32(r, r));
+    while (d < 0) { r--; d += 2 * (int64_t)r + 1; }
+    while (d > 2 * (int64_t)r) { d -= 2 * (int64_t)r + 1; r++; }
+    if (rem) *rem = (uint64_t)d;
+    return r;
 }
 
 /* sqrt(v) rounded to nearest, i.e. floor(sqrt(v) + 1/2) (no ties between

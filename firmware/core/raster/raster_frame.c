@@ -100,11 +100,13 @@ static void instance_head(struct ras_ctx *rc, uint16_t i, uint16_t frame, uint32
     }
     ri->visible = o->clip ? (uint8_t)ras_instance_visible(rc, ri, m, o->instance_transform ? in->scale : NUM_ONE) : 1;
     /* its vertices' transform free of saturation, and all of them inside
-     * every plane, known from its model's box (the same bits, the same
-     * decisions) */
+     * every plane, known from its model's box or the sphere around its
+     * vertices (the same bits, the same decisions) */
     struct ras_box cb;
     ri->vfit = (uint8_t)(o->instance_transform && ras_box_transform(&ri->m, &ri->box, &cb));
-    ri->vin = (uint8_t)(ri->vfit && ri->visible && rc->def.pv && ras_box_inside(rc, &cb));
+    ri->vin = (uint8_t)(ri->vfit && ri->visible && rc->def.pv &&
+                        (ras_box_inside(rc, &cb) ||
+                         ras_sphere_inside(&ri->m, &ri->box, &cb, rc->def.near_z, rc->def.side_x, rc->def.side_y)));
     ri->vlit = (uint8_t)(rc->def.vert_shade && ras_vertex_lit(s, in));
     if (ri->vlit)   /* no vertex lit yet this frame (by either part of the triangles) */
         for (uint32_t k = vb; k < vb + m->nverts; k++) {

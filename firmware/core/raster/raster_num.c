@@ -179,6 +179,24 @@ void ras_box_of(struct ras_box *b, const vec3 *v, uint32_t n)
             if (c[j] > b->hi[j]) b->hi[j] = c[j];
         }
     }
+    /* the sphere: the box's middle, and the greatest squared distance of a
+     * point from it (each difference below 2^31 in magnitude, the sum of
+     * three squares below 2^64), its square root rounded up */
+    uint64_t r2 = 0;
+    for (int j = 0; j < 3; j++) b->c[j] = (num)(b->lo[j] + ((int64_t)b->hi[j] - b->lo[j]) / 2);
+    for (uint32_t k = 0; k < n; k++) {
+        const num c[3] = { v[k].x, v[k].y, v[k].z };
+        uint64_t d2 = 0;
+        for (int j = 0; j < 3; j++) {
+            const int64_t d = (int64_t)c[j] - b->c[j];
+            d2 += (uint64_t)(d * d);
+        }
+        if (d2 > r2) r2 = d2;
+    }
+    uint64_t rem;
+    const uint64_t r = num_isqrt64(r2, &rem) + (rem != 0);
+    b->sphere = r < ((uint64_t)1 << 30);
+    b->r = b->sphere ? (uint32_t)r : 0;
 }
 
 int ras_box_transform(const mat4 *m, const struct ras_box *b, struct ras_box *out)
@@ -208,6 +226,70 @@ int ras_box_transform(const mat4 *m, const struct ras_box *b, struct ras_box *ou
         out->hi[i] = (num)hi;
     }
     out->ok = 1;
+    return 1;
+}
+
+/* |a| / 2^F rounded up; a / 2^F rounded down when down, up otherwise */
+static int64_t q_up_abs(int64_t a)
+{
+    const int64_t u = a < 0 ? -a : a;
+    return (u + (((int64_t)1 << NUM_FRAC) - 1)) / ((int64_t)1 << NUM_FRAC);
+}
+static int64_t q_round(int64_t a, int down)
+{
+    int64_t rem;
+    const int64_t q = ras_floordiv(a, (int64_t)1 << NUM_FRAC, &rem);
+    return down ? q : q + (rem != 0);
+}
+
+int ras_sphere_inside(const mat4 *m, const struct ras_box *b, const struct ras_box *cb, num near_z, num side_x,
+                      num side_y)
+{
+    /* In num's raw units (1 = 2^-F): a point p's camera coordinates
+     * ras_mul_point_fit gives are P + e, P = M p + t exactly and each |e_i|
+     * <= 3/2 (three products rounded to nearest, sums exact). A plane's
+     * test value f . (P + e) + k (f = (1, 0, side_x) for x + side_x z and
+     * alike, k = -near_z for z - near_z) is formed with one product
+     * rounded to nearest, so it is >= 0 whenever the exact f . (P + e) + k
+     * is >= 0. With p = c + d, |d| <= r (b's sphere):
+     *   f . P + k >= f . (M c + t) + k - |M^T f| r,  |f . e| <= 3/2 sum |f_i|,
+     * each bounded below in units of 2^-2F with 64-bit integers: M c + t
+     * exactly (below 2^(33+F): cb bounds each product by 2^31), then
+     * rounded towards the bound; |M^T f| from its components rounded up
+     * to 2^-F, the square root rounded up. No test saturates: cb within
+     * +-2^26 and 0 <= side < 2^(F+4) keep each product below 2^30. */
+    if (!b->sphere || !cb->ok || side_x < 0 || side_y < 0) return 0;
+    const int64_t side_max = (int64_t)1 << (NUM_FRAC + 4), lim = (int64_t)1 << 26;
+    if (side_x >= side_max || side_y >= side_max || near_z < 0) return 0;
+    for (int i = 0; i < 3; i++)
+        if (cb->lo[i] <= -lim || cb->hi[i] >= lim) return 0;
+    int64_t z[3];
+    for (int i = 0; i < 3; i++) {
+        z[i] = (int64_t)m->m[i][3] * ((int64_t)1 << NUM_FRAC);
+        for (int j = 0; j < 3; j++) z[i] += (int64_t)m->m[i][j] * b->c[j];
+    }
+    const int64_t one = (int64_t)1 << NUM_FRAC;
+    const int64_t f[5][3] = {
+        { 0, 0, one }, { one, 0, side_x }, { -one, 0, side_x }, { 0, one, side_y }, { 0, -one, side_y },
+    };
+    for (int pl = 0; pl < 5; pl++) {
+        int64_t a = pl == 0 ? -(int64_t)near_z * one : 0, fsum = 0;
+        uint64_t g2 = 0;
+        for (int i = 0; i < 3; i++) {
+            a += f[pl][i] * q_round(z[i], f[pl][i] >= 0);
+            fsum += f[pl][i] < 0 ? -f[pl][i] : f[pl][i];
+        }
+        for (int j = 0; j < 3; j++) {
+            int64_t g = 0;
+            for (int i = 0; i < 3; i++) g += f[pl][i] * m->m[i][j];
+            const int64_t gu = q_up_abs(g);
+            if (gu >= ((int64_t)1 << 31)) return 0;
+            g2 += (uint64_t)(gu * gu);
+        }
+        uint64_t rem;
+        const uint64_t gn = num_isqrt64(g2, &rem) + (rem != 0);
+        if (a < (int64_t)(gn * b->r) + 2 * fsum) return 0;
+    }
     return 1;
 }
 
@@ -388,6 +470,7 @@ void ras_box_of(struct ras_box *b, const vec3 *v, uint32_t n)
     (void)v;
     (void)n;
     b->ok = 0;
+    b->sphere = 0;
 }
 
 int ras_box_transform(const mat4 *m, const struct ras_box *b, struct ras_box *out)
@@ -399,6 +482,18 @@ int ras_box_transform(const mat4 *m, const struct ras_box *b, struct ras_box *ou
 }
 
 vec3 ras_mul_point_fit(const mat4 *m, vec3 p) { return m4_mul_point(m, p); }
+
+int ras_sphere_inside(const mat4 *m, const struct ras_box *b, const struct ras_box *cb, num near_z, num side_x,
+                      num side_y)
+{
+    (void)m;
+    (void)b;
+    (void)cb;
+    (void)near_z;
+    (void)side_x;
+    (void)side_y;
+    return 0;
+}
 
 void ras_div_depth(num x, num y, num z, num unproj, num near_z, num *X, num *Y, num *iz, uint32_t *depth)
 {

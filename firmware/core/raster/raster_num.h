@@ -69,8 +69,11 @@ uint32_t ras_depth32(num near_z, num z);
 vec3 ras_mul_point(const mat4 *m, vec3 p);
 
 /* The range of a model's coordinates: the least and greatest of each axis
- * (ok 0: none known; fixed point only, and only for at least one point). */
-struct ras_box { num lo[3], hi[3]; uint8_t ok; };
+ * (ok 0: none known; fixed point only, and only for at least one point),
+ * and a sphere holding every point (sphere 1: known): its centre c, the
+ * box's middle, and its radius r, in num's units, the distance from c of
+ * the farthest point rounded up. */
+struct ras_box { num lo[3], hi[3], c[3]; uint32_t r; uint8_t ok, sphere; };
 void ras_box_of(struct ras_box *b, const vec3 *v, uint32_t n);
 /* *out: the range of ras_mul_point(m, p)'s components over the points p
  * of box b, exactly (each rounded product is monotonic in p); 1 when no
@@ -81,6 +84,12 @@ int ras_box_transform(const mat4 *m, const struct ras_box *b, struct ras_box *ou
 /* ras_mul_point(m, p) for a point of a box ras_box_transform accepted with
  * m: the same bits in 32-bit arithmetic, without the saturation checks. */
 vec3 ras_mul_point_fit(const mat4 *m, vec3 p);
+/* 1 when ras_mul_point_fit(m, p) of every point p of model box b (whose
+ * camera-space range cb ras_box_transform gave) passes every clipping
+ * plane's test (ras_point_inside: z >= near_z, |x| <= side_x z, |y| <=
+ * side_y z), known from b's sphere turned by m; 0 when not known. */
+int ras_sphere_inside(const mat4 *m, const struct ras_box *b, const struct ras_box *cb, num near_z, num side_x,
+                      num side_y);
 
 /* The divisions of a vertex's projection by its depth z > 0: X and Y =
  * x * unproj / z and y * unproj / z with the products kept wide (as

@@ -498,13 +498,20 @@ RAS_ALWAYS_INLINE uint32_t fast_rows(const struct ras_ctx *rc, struct fstate *S,
     R.rgb888 = R.written = NULL;
     R.w1 = R.w2 = 0;
     uint32_t total = 0;
+    const int attrs = S->shade != SPAN_SHADE_NONE || S->src != SPAN_SRC_CONST;
+    /* the box's first pixel in the row, stepped by the row length */
+    const size_t w = rc->w;
+    size_t idx0 = (size_t)(r0 - t->y0) * w + (size_t)c0;
+    /* (scan) the edge values with their bias, held across the rows */
+    int32_t wb0 = S->wb[0], wb1 = S->wb[1], wb2 = S->wb[2];
+    int32_t wr1 = wr[1], wr2 = wr[2];
 
-    for (int32_t r = r0; r <= r1; r++) {
+    for (int32_t r = r0; r <= r1; r++, idx0 += w) {
         int32_t lo = 0, hi = kmax;
         int empty = 0;
         if (scan) {
             /* the covered columns: every edge value (bias included) >= 0 */
-            int32_t e0 = S->wb[0], e1 = S->wb[1], e2 = S->wb[2], k = 0;
+            int32_t e0 = wb0, e1 = wb1, e2 = wb2, k = 0;
             while (k <= kmax && ((uint32_t)e0 | (uint32_t)e1 | (uint32_t)e2) >> 31) {
                 e0 += a[0];
                 e1 += a[1];
@@ -526,8 +533,7 @@ RAS_ALWAYS_INLINE uint32_t fast_rows(const struct ras_ctx *rc, struct fstate *S,
                 else if (fe[i].n < 0) empty = 1;
             }
         if (!empty && lo <= hi) {
-            int32_t L = c0 + lo;
-            size_t idx = (size_t)(r - t->y0) * rc->w + (size_t)L;
+            size_t idx = idx0 + (size_t)lo;
             R.n = hi - lo + 1;
             R.px = t->rgb565 + idx;
             R.zb = rc->depth + idx * rc->depth_bytes;
@@ -552,9 +558,9 @@ RAS_ALWAYS_INLINE uint32_t fast_rows(const struct ras_ctx *rc, struct fstate *S,
                     R.dz = dz;
                 }
             }
-            if (S->shade != SPAN_SHADE_NONE || S->src != SPAN_SRC_CONST) {
-                R.w1 = wr[1] + lo * a[1];
-                R.w2 = wr[2] + lo * a[2];
+            if (attrs) {
+                R.w1 = wr1 + lo * a[1];
+                R.w2 = wr2 + lo * a[2];
             }
             uint32_t wrote = fn(Tp, &R);
             total += extra ? wrote : (uint32_t)R.n;
@@ -565,21 +571,30 @@ RAS_ALWAYS_INLINE uint32_t fast_rows(const struct ras_ctx *rc, struct fstate *S,
             zfrac &= 0xFFFFu;
         } else
             zrow += gy16;
+        wr1 += b[1];
+        wr2 += b[2];
         if (scan) {
-            for (int i = 0; i < 3; i++) {
-                wr[i] += b[i];
-                S->wb[i] += b[i];
-            }
+            wb0 += b[0];
+            wb1 += b[1];
+            wb2 += b[2];
             continue;
         }
+        wr[0] += b[0];
         for (int i = 0; i < 3; i++) {
-            wr[i] += b[i];
             struct fedge *e = &fe[i];
             if (e->kind == 0) { e->n += e->dq; continue; }
             e->q += e->dq;
             e->r += e->dr;
             if (e->r >= e->den) { e->q++; e->r -= e->den; }
         }
+    }
+    wr[1] = wr1;
+    wr[2] = wr2;
+    if (scan) {
+        /* (wr[0] is read only through wb[0]) */
+        S->wb[0] = wb0;
+        S->wb[1] = wb1;
+        S->wb[2] = wb2;
     }
     S->zrow = zrow;
     S->zhi = zhi;

@@ -41,13 +41,20 @@ void mip_fast_rgb565(const uint8_t *rgb, unsigned w, unsigned h, uint16_t *d)
     }
 }
 
+/* The source texel under texel (x, y) of a w x h texture's bordered copy
+ * (one texel of border, repeating the edge). */
+static inline const uint8_t *bordered_texel(const uint8_t *rgb, unsigned w, unsigned h, unsigned x, unsigned y)
+{
+    unsigned sx = x == 0 ? 0 : (x > w ? w - 1u : x - 1u), sy = y == 0 ? 0 : (y > h ? h - 1u : y - 1u);
+    return rgb + 3 * ((size_t)sy * w + sx);
+}
+
 void mip_fast_bilinear(const uint8_t *rgb, unsigned w, unsigned h, uint32_t *d)
 {
     const unsigned W = w + 2u, H = h + 2u;
     for (unsigned y = 0; y < H; y++)
         for (unsigned x = 0; x < W; x++) {
-            unsigned sx = x == 0 ? 0 : (x > w ? w - 1u : x - 1u), sy = y == 0 ? 0 : (y > h ? h - 1u : y - 1u);
-            const uint8_t *c = rgb + 3 * ((size_t)sy * w + sx);
+            const uint8_t *c = bordered_texel(rgb, w, h, x, y);
             /* x / 255 as (x * 0x8081) >> 23 (x < 2^16), (x * 0x80808081) >> 39 (x < 2^32) */
             uint32_t r = ((uint32_t)c[0] * 248u * 0x8081u >> 23) + 4u, b = ((uint32_t)c[2] * 248u * 0x8081u >> 23) + 4u;
             uint32_t g = (uint32_t)(((uint64_t)(((uint32_t)c[1] * 63u << 18) + 127u) * 0x80808081u) >> 39) + (1u << 17);
@@ -61,8 +68,7 @@ void mip_fast_bilinear_word(const uint8_t *rgb, unsigned w, unsigned h, uint32_t
     const unsigned W = w + 2u, H = h + 2u;
     for (unsigned y = 0; y < H; y++)
         for (unsigned x = 0; x < W; x++) {
-            unsigned sx = x == 0 ? 0 : (x > w ? w - 1u : x - 1u), sy = y == 0 ? 0 : (y > h ? h - 1u : y - 1u);
-            const uint8_t *c = rgb + 3 * ((size_t)sy * w + sx);
+            const uint8_t *c = bordered_texel(rgb, w, h, x, y);
             /* round(c * L / 255) as mip_fast_rgb565 */
             uint32_t r = ((uint32_t)c[0] * 31 + 127) * 0x8081u >> 23, g = ((uint32_t)c[1] * 63 + 127) * 0x8081u >> 23,
                      b = ((uint32_t)c[2] * 31 + 127) * 0x8081u >> 23;

@@ -137,6 +137,25 @@ vec3 ras_cam_vertex_again(const struct ras_ctx *rc, const struct ras_instance *i
     return e->c;
 }
 
+/* The default path's projected vertex q of camera-space point c: its
+ * sub-pixel position, reciprocal depth and depth where `shown` (visible and
+ * inside every clip plane) and the position fits 16 bits, else RAS_PV_OUT. */
+static inline void store_pv(const struct ras_ctx *rc, struct ras_pv *q, vec3 c, int shown)
+{
+    int32_t sx, sy;
+    num iz;
+    uint32_t depth;
+    q->sx = RAS_PV_OUT;
+    if (!shown) return;
+    ras_project_sub_depth(rc, c, &sx, &sy, &iz, &depth);
+    if (sx > INT16_MIN && sx <= INT16_MAX && sy >= INT16_MIN && sy <= INT16_MAX) {
+        q->sx = (int16_t)sx;
+        q->sy = (int16_t)sy;
+        q->iz = iz;
+        q->depth = depth;
+    }
+}
+
 /* Vertices k0 .. k1 - 1 of instance i (after its instance_head); each
  * vertex writes only its own entries of the frame tables. */
 static void instance_vertices(const struct ras_ctx *rc, uint16_t i, uint32_t k0, uint32_t k1)
@@ -154,20 +173,7 @@ static void instance_vertices(const struct ras_ctx *rc, uint16_t i, uint32_t k0,
         for (uint32_t k = k0; k < k1; k++) {
             const vec3 c = ras_mul_point_fit(&ri->m, m->verts[k]);
             if (rc->verts) rc->verts[vb + k].c = c;
-            struct ras_pv *q = &rc->def.pv[vb + k];
-            int32_t sx, sy;
-            num iz;
-            uint32_t depth;
-            q->sx = RAS_PV_OUT;
-            if (ri->visible && (!tested || ras_point_inside(rc, c))) {
-                ras_project_sub_depth(rc, c, &sx, &sy, &iz, &depth);
-                if (sx > INT16_MIN && sx <= INT16_MAX && sy >= INT16_MIN && sy <= INT16_MAX) {
-                    q->sx = (int16_t)sx;
-                    q->sy = (int16_t)sy;
-                    q->iz = iz;
-                    q->depth = depth;
-                }
-            }
+            store_pv(rc, &rc->def.pv[vb + k], c, ri->visible && (!tested || ras_point_inside(rc, c)));
         }
         return;
     }
@@ -183,20 +189,7 @@ static void instance_vertices(const struct ras_ctx *rc, uint16_t i, uint32_t k0,
             }
         }
         if (rc->def.pv) {
-            struct ras_pv *q = &rc->def.pv[vb + k];
-            int32_t sx, sy;
-            num iz;
-            uint32_t depth;
-            q->sx = RAS_PV_OUT;
-            if (ri->visible && ras_point_inside(rc, c)) {
-                ras_project_sub_depth(rc, c, &sx, &sy, &iz, &depth);
-                if (sx > INT16_MIN && sx <= INT16_MAX && sy >= INT16_MIN && sy <= INT16_MAX) {
-                    q->sx = (int16_t)sx;
-                    q->sy = (int16_t)sy;
-                    q->iz = iz;
-                    q->depth = depth;
-                }
-            }
+            store_pv(rc, &rc->def.pv[vb + k], c, ri->visible && ras_point_inside(rc, c));
         }
     }
 }

@@ -282,6 +282,9 @@ def cube_variants():
           *[Variant("bilinear N=%d" % n, options=["texture.filter=bilinear", "perspective_step=%d" % n])
             for n in (4, 8)],
           Variant("bilinear exact N=1", options=["texture.filter=bilinear", "perspective_step=1"]),
+          *[Variant("bilinear coarse" + ("" if n == 16 else " N=%d" % n),
+                    options=["texture.filter=bilinear", "bilinear_weights=coarse"] +
+                    ([] if n == 16 else ["perspective_step=%d" % n])) for n in (16, 8)],
           Variant("N=16", strip=8), Variant("N=16", strip=240)]
     return v
 

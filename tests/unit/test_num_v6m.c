@@ -1,7 +1,8 @@
 /* SPDX-License-Identifier: MIT */
 /* test_num_v6m.c — the ARMv6-M integer kernels of num_int.h (Thumb-1
  * assembly: num_umul32, num_smul32, num_mul_round; the table-driven
- * num_clz32) give the bits of their definitions, on the emulated Cortex-M0+.
+ * num_clz32; the ray tracer's squares rt_usq32, rt_ssq32 of rt/rt_num.h)
+ * give the bits of their definitions, on the emulated Cortex-M0+.
  *
  * Built as an image for m0plus-qemu at NUM_FRAC 16 (the num_mul_round
  * kernel of its own) and 20 (the general form), run by tools/bench/run.py
@@ -13,6 +14,7 @@
 #include "bench.h"
 #include "num.h"
 #include "num/num_int.h"
+#include "rt/rt_num.h"
 #define TEST_RNG_SEED 0xA0761D6478BD642Full
 #include "test_rng.h"
 
@@ -39,7 +41,7 @@ static uint32_t rnd32(void)
     return (rng() & 1) ? 0u - v : v;
 }
 
-static uint32_t fails_umul, fails_smul, fails_round, fails_clz;
+static uint32_t fails_umul, fails_smul, fails_round, fails_clz, fails_sq;
 
 static void check_pair(uint32_t a, uint32_t b)
 {
@@ -48,6 +50,7 @@ static void check_pair(uint32_t a, uint32_t b)
     if (num_smul32(sa, sb) != (int64_t)sa * sb) fails_smul++;
     if (num_mul_round(sa, sb) != (((int64_t)sa * sb + ((int64_t)1 << (NUM_FRAC - 1))) >> NUM_FRAC)) fails_round++;
     if (a && num_clz32(a) != clz_ref(a)) fails_clz++;
+    if (rt_usq32(a) != (uint64_t)a * a || rt_ssq32(sb) != (int64_t)sb * sb) fails_sq++;
 }
 
 static int verdict(const char *name, uint32_t fails)
@@ -83,6 +86,7 @@ int bench_main(void)
     bad |= verdict("num_smul32_v6m", fails_smul);
     bad |= verdict(NUM_FRAC == 16 ? "num_mul_round_v6m_q16" : "num_mul_round_v6m", fails_round);
     bad |= verdict("num_clz32_v6m", fails_clz);
+    bad |= verdict("rt_usq32_v6m", fails_sq);
 
     uint64_t cost;
     COST(num_umul32(x, y) >> 7);
@@ -91,6 +95,8 @@ int bench_main(void)
     bench_report("op:kernel_smul32", "fixed", "v6m", cost * 1000 / REPS, "op");
     COST(num_mul_round((int32_t)x, (int32_t)y) >> 7);
     bench_report("op:kernel_mul_round", "fixed", NUM_FRAC == 16 ? "v6m-q16" : "v6m", cost * 1000 / REPS, "op");
+    COST(rt_usq32(x) >> 7);
+    bench_report("op:kernel_usq32", "fixed", "v6m", cost * 1000 / REPS, "op");
     COST(num_clz32(x | 1u));
     bench_report("op:kernel_clz32", "fixed", "v6m", cost * 1000 / REPS, "op");
     return bad;

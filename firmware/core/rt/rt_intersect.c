@@ -113,7 +113,7 @@ struct sphere_quad {
  * the row's parts of b and CO x D once a row per sphere (rt_obj_cache),
  * then three products a pixel instead of nine; the same integers, so the
  * same bits as rt_quad_solve. */
-static int sphere_quad_row(struct rt_obj_cache *oc, const struct rt_ray *ray, struct sphere_quad *k, num limit)
+RT_ALWAYS_INLINE int sphere_quad_row(struct rt_obj_cache *oc, const struct rt_ray *ray, struct sphere_quad *k, num limit)
 {
 #if NUM_MODE == NUM_MODE_FIXED
     vec3 co = oc->co_cam;
@@ -525,6 +525,44 @@ int rt_item_hit(struct rt_state *rt, int16_t item, struct rt_ray *ray, num t_min
     return got != 0;
 }
 
+/* sphere_item_hit of a sphere along a primary ray's exact row direction
+ * (from the camera, per-frame c, unturned: sphere_quad_row), for the common
+ * outcome without the general path's layers: the camera outside (c > 0),
+ * the near root c m / q a hit or beyond the limit. Anything else (q = 0, a
+ * zero discriminant, the camera inside, the near root at or before t_min)
+ * goes to sphere_item_hit, which solves the same quadratic again: the same
+ * answer either way. Fixed point only. */
+static int prim_sphere_hit(struct rt_state *rt, int16_t item, struct rt_ray *ray, num t_min, num limit,
+                           struct rt_hit *hit)
+{
+#if NUM_MODE == NUM_MODE_FIXED
+    struct rt_obj_cache *oc = &rt->oc[item];
+    if (oc->c_cam > 0) {
+        struct sphere_quad k;
+        k.c = oc->c_cam;
+        k.a = ray->dxa;
+        k.cm = oc->cm_cam;
+        if (!sphere_quad_row(oc, ray, &k, limit)) return 0;
+        if (k.k.q != 0 && k.k.disc_pos) {
+            struct rt_frac fr;
+            num t2 = rt_quad_near_m(k.cm, &k.k);
+            fr.n = k.cm;
+            fr.d = k.k.q;
+            if (t2 > limit || (t2 == limit && !tie_first(&fr, hit, limit))) return 0;
+            if (t_min < t2) {
+                hit->t = t2;
+                hit->fr.n = fr.n;
+                hit->fr.d = fr.d;
+                hit->item = hit->surf = item;
+                hit->flip = 0;
+                return 1;
+            }
+        }
+    }
+#endif
+    return sphere_item_hit(rt, item, ray, t_min, limit, hit, 1);
+}
+
 /* Conservative ray / bounding-sphere test (robust form, both formulations):
  * 0 only when the ray certainly misses the sphere within t > 0. */
 static int bound_hit(struct rt_state *rt, vec3 c, num r, struct rt_ray *ray)
@@ -551,6 +589,9 @@ static int closest_prim(struct rt_state *rt, struct rt_ray *ray, num t_min, num 
     const struct rt_object *objs = rt->s->objects;
     int16_t *iv = rt->prim_iv, nobj = (int16_t)rt->s->nobjects, col = rt->prim_col, skip = rt->skip_item;
     int found = 0, tried = 0;
+    /* along the row's exact directions with the per-frame constants: the
+     * lean path (prim_sphere_hit) */
+    int lean = NUM_MODE == NUM_MODE_FIXED && rt->cached && ray->dxm && ray->dxrow >= 0 && ray->origin < 0;
     /* the background run's last column (rt_state.bg_*): the tile's last
      * one (its list), then before every later interval */
     int16_t run = rt->prim_items ? (int16_t)(col / RT_TILE * RT_TILE + RT_TILE - 1) : INT16_MAX;
@@ -571,7 +612,9 @@ static int closest_prim(struct rt_state *rt, struct rt_ray *ray, num t_min, num 
                 rt_ray_cd(ray);
                 if (rt_coarse_cam_miss(&ray->cd, &rt->oc[item].ccam)) continue;
             }
-            if (!sphere_item_hit(rt, item, ray, t_min, limit, hit, 1)) continue;
+            if (!(lean ? prim_sphere_hit(rt, item, ray, t_min, limit, hit)
+                       : sphere_item_hit(rt, item, ray, t_min, limit, hit, 1)))
+                continue;
         } else {
             tried = 1;
             if (!rt_item_hit(rt, item, ray, t_min, limit, hit)) continue;

@@ -26,8 +26,7 @@
  * This file sets a triangle up and walks its rows; the loops that draw a
  * row are raster_span.h's (raster_spans.c, raster_spans_host.c), chosen by
  * shade, texture source, depth size and outputs (raster_fast.h). */
-#include "raster_fast.h"
-#include "num/num_int.h"
+#include "raster_span_lib.h"
 
 /* Corner values c0..c2 of attribute j; 0 when they do not fit the
  * fast path's formats (the triangle then takes the exact path). */
@@ -253,6 +252,36 @@ static uint32_t frac16(int32_t r, uint32_t d, uint32_t m)
     return q + (x - q * d >= d);
 }
 
+/* floor((2^32 - 1) / d) for 0 < d < 2^16 (sdiv16's m), for d >= 2^8
+ * without a division: 2^30 / s (rcp30, s = d scaled into [2^14, 2^15))
+ * scaled to 2^32 / d and lowered by 2^-12 of itself, which leaves it below
+ * the quotient; one product by it adds floor(r m / 2^32) <= r / d of the
+ * remainder r = 2^32 - 1 - m d, and at most two steps of d finish it
+ * (checked for every d below 2^16 against the division). */
+static uint32_t area_recip(uint32_t d)
+{
+    if (d < (1u << 8)) return 0xFFFFFFFFu / d;
+    uint32_t s = d;
+    int k = 2;
+    while (s < (1u << 14)) {
+        s <<= 1;
+        k++;
+    }
+    if (s >= (1u << 15)) {     /* (d >= 2^15: its low bit dropped) */
+        s >>= 1;
+        k--;
+    }
+    uint32_t m = rcp30(s) << k;
+    m -= m >> 12;
+    m += num_mulhi32(0xFFFFFFFFu - m * d, m);
+    uint32_t r = 0xFFFFFFFFu - m * d;
+    while (r >= d) {
+        r -= d;
+        m++;
+    }
+    return m;
+}
+
 /* |x| of an int32_t as uint32_t. */
 static uint32_t uabs32(int32_t x) { return x < 0 ? 0u - (uint32_t)x : (uint32_t)x; }
 
@@ -287,7 +316,7 @@ static int depth_small(const struct ras_sv *v0, const struct ras_sv *v1, const s
     const uint32_t A = (uint32_t)area;
     /* (A - 1) M < 2^31, in 32 bits where M < 2^16 (A < 2^16) */
     if (M >= (1u << 16) || (A - 1u) * M >= (1u << 31)) return 0;
-    const uint32_t m = 0xFFFFFFFFu / A;
+    const uint32_t m = area_recip(A);
     /* (|dd_i| < 2^31: the depths' range) */
     int32_t dd1 = sdiff(d1, d0), dd2 = sdiff(d2, d0), rd1, rd2, rx, ry, rz;
     int32_t qd1 = sdiv16(dd1, A, m, &rd1), qd2 = sdiv16(dd2, A, m, &rd2);

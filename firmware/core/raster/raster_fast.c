@@ -26,8 +26,7 @@
  * This file sets a triangle up and walks its rows; the loops that draw a
  * row are raster_span.h's (raster_spans.c, raster_spans_host.c), chosen by
  * shade, texture source, depth size and outputs (raster_fast.h). */
-#include "raster_fast.h"
-#include "num/num_int.h"
+#include "raster_span_lib.h"
 
 /* Corner values c0..c2 of attribute j; 0 when they do not fit the
  * fast path's formats (the triangle then takes the exact path). */
@@ -253,38 +252,81 @@ static uint32_t frac16(int32_t r, uint32_t d, uint32_t m)
     return q + (x - q * d >= d);
 }
 
-/* fast_depth's plane in 32-bit words for a triangle of doubled area below
- * 2^16, corners' depths in [2, 2^32 - 2] (depth_words) whose differences
- * fit 32 bits, edge steps and values below 2^14: the same values. A
- * numerator sum_i dd_i x_i (dd_i corner i's depth less corner 0's, x_i an
- * edge value or step) is sum_i (qd_i A + rd_i) x_i with dd_i = qd_i A +
- * rd_i, rd_i in [0, A): the quotients' part a multiple of A, the
- * remainders' part below 2^31, so its quotient and remainder by A come
- * from 32-bit divisions. Returns 1, or 0 where the ranges do not allow it. */
+/* floor((2^32 - 1) / d) for 0 < d < 2^16 (sdiv16's m), for d >= 2^8
+ * without a division: 2^30 / s (rcp30, s = d scaled into [2^14, 2^15))
+ * scaled to 2^32 / d and lowered by 2^-12 of itself, which leaves it below
+ * the quotient; one product by it adds floor(r m / 2^32) <= r / d of the
+ * remainder r = 2^32 - 1 - m d, and at most two steps of d finish it
+ * (checked for every d below 2^16 against the division). */
+static uint32_t area_recip(uint32_t d)
+{
+    if (d < (1u << 8)) return 0xFFFFFFFFu / d;
+    uint32_t s = d;
+    int k = 2;
+    while (s < (1u << 14)) {
+        s <<= 1;
+        k++;
+    }
+    if (s >= (1u << 15)) {     /* (d >= 2^15: its low bit dropped) */
+        s >>= 1;
+        k--;
+    }
+    uint32_t m = rcp30(s) << k;
+    m -= m >> 12;
+    m += num_mulhi32(0xFFFFFFFFu - m * d, m);
+    uint32_t r = 0xFFFFFFFFu - m * d;
+    while (r >= d) {
+        r -= d;
+        m++;
+    }
+    return m;
+}
+
+/* |x| of an int32_t as uint32_t. */
+static uint32_t uabs32(int32_t x) { return x < 0 ? 0u - (uint32_t)x : (uint32_t)x; }
+
+/* fast_depth's plane in 32-bit words for a triangle of doubled area A below
+ * 2^16 and corners' depths in [2, 2^32 - 2] (depth_words) whose
+ * differences fit 32 bits: the same values. A numerator sum_i dd_i x_i
+ * (dd_i corner i's depth less corner 0's, x_i the column step a_i, the row
+ * step b_i or the edge value at the box's top row) is sum_i (qd_i A + rd_i)
+ * x_i with dd_i = qd_i A + rd_i, rd_i in [0, A): its quotient by A is
+ * sum_i qd_i x_i plus the quotient of the remainders' part sum_i rd_i x_i,
+ * whose magnitude is at most (A - 1) M, M the largest |x_1| + |x_2| of the
+ * three pairs, so below 2^31 where (A - 1) M < 2^31: 32-bit divisions. The
+ * gradients' quotients are at most (Q + 1) M_ab in magnitude (Q the larger
+ * |qd_i|, M_ab that of the steps): exact in 32 bits where that is below
+ * 2^31; the top row's depth is needed modulo 2^32 only (zhi), so its
+ * quotients' part wraps. Returns 1, or 0 where the ranges do not allow it. */
 static int depth_small(const struct ras_sv *v0, const struct ras_sv *v1, const struct ras_sv *v2, int32_t area,
                        int32_t rtop, struct fstate *S)
 {
     const uint32_t d0 = v0->depth, d1 = v1->depth, d2 = v2->depth;
     const int32_t *wr = S->wr, *a = S->a, *b = S->b, r0 = S->row;
-    const int32_t lim = (int32_t)1 << 14;
     if (area >= (1 << 16)) return 0;
     uint32_t lo = d0 < d1 ? d0 : d1, hi = d0 < d1 ? d1 : d0;
     if (d2 < lo) lo = d2;
     if (d2 > hi) hi = d2;
     if (lo < 2 || hi > UINT32_MAX - 1 || hi - lo > (uint32_t)INT32_MAX) return 0;
     int32_t w1t = wr[1] - (r0 - rtop) * b[1], w2t = wr[2] - (r0 - rtop) * b[2];
-    if (a[1] <= -lim || a[1] >= lim || a[2] <= -lim || a[2] >= lim || b[1] <= -lim || b[1] >= lim ||
-        b[2] <= -lim || b[2] >= lim || w1t <= -lim || w1t >= lim || w2t <= -lim || w2t >= lim)
-        return 0;
-    const uint32_t A = (uint32_t)area, m = 0xFFFFFFFFu / A;
+    /* (every edge value and step below 2^30 in magnitude: the sums below 2^31) */
+    uint32_t Mab = uabs32(a[1]) + uabs32(a[2]), Mb = uabs32(b[1]) + uabs32(b[2]), M = uabs32(w1t) + uabs32(w2t);
+    if (Mb > Mab) Mab = Mb;
+    if (Mab > M) M = Mab;
+    const uint32_t A = (uint32_t)area;
+    /* (A - 1) M < 2^31, in 32 bits where M < 2^16 (A < 2^16) */
+    if (M >= (1u << 16) || (A - 1u) * M >= (1u << 31)) return 0;
+    const uint32_t m = area_recip(A);
     /* (|dd_i| < 2^31: the depths' range) */
     int32_t dd1 = sdiff(d1, d0), dd2 = sdiff(d2, d0), rd1, rd2, rx, ry, rz;
     int32_t qd1 = sdiv16(dd1, A, m, &rd1), qd2 = sdiv16(dd2, A, m, &rd2);
-    if (qd1 <= -(1 << 15) || qd1 >= (1 << 15) || qd2 <= -(1 << 15) || qd2 >= (1 << 15)) return 0;
-    /* quotients' parts below 2^30, remainders' below 2^31 */
+    /* (Q + 1) M_ab < 2^31, in 32 bits where Q < 2^16 (M_ab < 2^16) */
+    const uint32_t Q = uabs32(qd1) > uabs32(qd2) ? uabs32(qd1) : uabs32(qd2);
+    if (Q < (1u << 16) ? (Q + 1u) * Mab >= (1u << 31) : num_umul32(Q + 1u, Mab) >= (1u << 31)) return 0;
     int32_t qx = qd1 * a[1] + qd2 * a[2] + sdiv16(rd1 * a[1] + rd2 * a[2], A, m, &rx);
     int32_t qy = qd1 * b[1] + qd2 * b[2] + sdiv16(rd1 * b[1] + rd2 * b[2], A, m, &ry);
-    int32_t qz = qd1 * w1t + qd2 * w2t + sdiv16(rd1 * w1t + rd2 * w2t, A, m, &rz);
+    uint32_t qz = (uint32_t)qd1 * (uint32_t)w1t + (uint32_t)qd2 * (uint32_t)w2t +
+                  (uint32_t)sdiv16(rd1 * w1t + rd2 * w2t, A, m, &rz);
     S->gxq = qx;
     S->gxf = frac16(rx, A, m);
     S->dz = (uint32_t)(qx + (qx < 0 && rx != 0));      /* toward zero */
@@ -292,7 +334,7 @@ static int depth_small(const struct ras_sv *v0, const struct ras_sv *v1, const s
     S->gyf = frac16(ry, A, m);
     /* from the box's top row to r0 (fewer than 2^14 rows) */
     uint32_t n = (uint32_t)(r0 - rtop), f = frac16(rz, A, m) + n * S->gyf;
-    S->zhi = d0 + (uint32_t)qz + n * S->gyq + (f >> 16);
+    S->zhi = d0 + qz + n * S->gyq + (f >> 16);
     S->zfrac = f & 0xFFFFu;
     S->zrow = S->gy16 = 0;   /* (unread where z32) */
     S->z32 = 1;

@@ -329,6 +329,30 @@ static num wdiv_pre(wnum a, num z, const struct num_udiv_pre *p)
     return wnum_div(a, wnum_from_num(z));
 }
 
+/* wdiv_pre(wnum_from_num(NUM_ONE), z, p): 1/z, the numerator 2^2F a power
+ * of two. With k = 2F + s in [32, 62], N = 2^2F 2^s has the high word
+ * nh = 2^(k - 32) < dn and the low word 0, so num_udiv64_32_pre's estimate
+ * nh + mulhi(nh, v) is nh + v >> (64 - k), and its remainder's low word
+ * starts from 0 (the same quotient and remainder, the same rounding). */
+static num recip_pre(num z, const struct num_udiv_pre *p)
+{
+    const uint32_t s = p->s, dn = p->dn, k = 2 * NUM_FRAC + s;
+    if (k < 32 || k > 62) return wdiv_pre(wnum_from_num(NUM_ONE), z, p);
+    const uint32_t j = k - 32, nh = (uint32_t)1 << j;
+    uint32_t q = nh + (j ? p->v >> (32 - j) : 0);
+    const uint64_t qd = num_umul32(q, dn);
+    const uint32_t ql = (uint32_t)qd;
+    uint32_t rl = 0u - ql, rh = nh - (uint32_t)(qd >> 32) - (ql != 0);
+    while (rh || rl >= dn) {
+        rh -= rl < dn;
+        rl -= dn;
+        q++;
+    }
+    const uint32_t rm = rl >> s;
+    if (q < (uint32_t)INT32_MAX || (q == (uint32_t)INT32_MAX && rm < p->d - rm)) return (num)q + (rm >= p->d - rm);
+    return wdiv_pre(wnum_from_num(NUM_ONE), z, p);
+}
+
 void ras_div_depth(num x, num y, num z, num unproj, num near_z, num *X, num *Y, num *iz, uint32_t *depth)
 {
     if (z <= 0) {
@@ -338,7 +362,7 @@ void ras_div_depth(num x, num y, num z, num unproj, num near_z, num *X, num *Y, 
     const struct num_udiv_pre p = num_udiv_pre_make((uint32_t)z);
     *X = wdiv_pre(num_mul_round(x, unproj), z, &p);   /* num_mul_wide's bits, inline */
     *Y = wdiv_pre(num_mul_round(y, unproj), z, &p);
-    *iz = wdiv_pre(wnum_from_num(NUM_ONE), z, &p);   /* num_div(1, z): wnum_div's rounding of 2^F 2^F / z */
+    *iz = recip_pre(z, &p);   /* num_div(1, z): wnum_div's rounding of 2^F 2^F / z */
     /* 0 < near < z: the quotient fits 32 bits */
     *depth = near_z <= 0 || z <= near_z ? ras_depth32(near_z, z)
                                         : num_udiv64_32_pre((uint64_t)(uint32_t)near_z << 32, &p, 0);

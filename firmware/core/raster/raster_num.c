@@ -311,8 +311,9 @@ vec3 ras_mul_point_fit(const mat4 *m, vec3 p)
 
 /* wnum_div(a, z) for z > 0 by the prepared z: its path for a numerator
  * |a| 2^F below 2^63 and a quotient that does not saturate (the same
- * rounding, halves away from zero), wnum_div itself otherwise. */
-static num wdiv_pre(wnum a, num z, const struct num_udiv_pre *p)
+ * rounding, halves away from zero), wnum_div itself otherwise. Inline:
+ * the prepared divisor stays in registers. */
+static inline __attribute__((always_inline)) num wdiv_pre(wnum a, num z, const struct num_udiv_pre *p)
 {
     const uint64_t ua = a < 0 ? (uint64_t)0 - (uint64_t)a : (uint64_t)a;
     if (ua < ((uint64_t)1 << (63 - NUM_FRAC))) {
@@ -333,11 +334,12 @@ static num wdiv_pre(wnum a, num z, const struct num_udiv_pre *p)
  * of two. With k = 2F + s in [32, 62], N = 2^2F 2^s has the high word
  * nh = 2^(k - 32) < dn and the low word 0, so num_udiv64_32_pre's estimate
  * nh + mulhi(nh, v) is nh + v >> (64 - k), and its remainder's low word
- * starts from 0 (the same quotient and remainder, the same rounding). */
+ * starts from 0 (the same quotient and remainder, the same rounding);
+ * wnum_div itself otherwise. */
 static num recip_pre(num z, const struct num_udiv_pre *p)
 {
     const uint32_t s = p->s, dn = p->dn, k = 2 * NUM_FRAC + s;
-    if (k < 32 || k > 62) return wdiv_pre(wnum_from_num(NUM_ONE), z, p);
+    if (k < 32 || k > 62) return wnum_div(wnum_from_num(NUM_ONE), wnum_from_num(z));
     const uint32_t j = k - 32, nh = (uint32_t)1 << j;
     uint32_t q = nh + (j ? p->v >> (32 - j) : 0);
     const uint64_t qd = num_umul32(q, dn);
@@ -350,7 +352,7 @@ static num recip_pre(num z, const struct num_udiv_pre *p)
     }
     const uint32_t rm = rl >> s;
     if (q < (uint32_t)INT32_MAX || (q == (uint32_t)INT32_MAX && rm < p->d - rm)) return (num)q + (rm >= p->d - rm);
-    return wdiv_pre(wnum_from_num(NUM_ONE), z, p);
+    return wnum_div(wnum_from_num(NUM_ONE), wnum_from_num(z));
 }
 
 void ras_div_depth(num x, num y, num z, num unproj, num near_z, num *X, num *Y, num *iz, uint32_t *depth)

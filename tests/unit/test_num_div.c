@@ -8,6 +8,8 @@
  * 128-bit division, the product and sum of wide integers with a clamp after
  * every step (the former v3_dot_wide). Checked:
  *   num_rcp16       its two bounds on every value of dn >> 9 (exhaustive)
+ *   num_rcp32       floor((2^64 - 1) / dn) - 2^32, both ends of every
+ *                   num_rcp16 bucket and 4 million random dn
  *   num_udiv64_32   quotient and remainder, every divisor magnitude (and
  *                   num_udiv64_32_pre, by a prepared divisor, alike)
  *   num_div, num_recip, num_from_ratio, num_div_int, wnum_div
@@ -62,6 +64,26 @@ static void test_rcp16(void)
         }
     }
     check(bad == 0, "num_rcp16_bounds_exhaustive", "%ld buckets out of bounds, e.g. dn >> 9 = %u", bad, badb);
+}
+
+static void test_rcp32(void)
+{
+    /* floor((2^64 - 1) / dn) - 2^32 exactly: both ends of every bucket of
+     * num_rcp16's seed (dn >> 9), the ends of the range, and random dn */
+    long bad = 0;
+    uint32_t badd = 0;
+    const u128 m64 = ((u128)1 << 64) - 1;
+    for (long i = -2; i < (1L << 23) + 4000000; i++) {
+        uint32_t dn;
+        if (i < 0) dn = i == -2 ? 0x80000000u : 0xFFFFFFFFu;
+        else if (i < (1L << 23)) dn = (uint32_t)((1u << 31) | ((uint32_t)(i >> 1) << 9) | (i & 1 ? 511u : 0u));
+        else dn = (uint32_t)rnd_bits(32) | 0x80000000u;
+        if ((u128)num_rcp32(dn) != m64 / dn - ((u128)1 << 32)) {
+            bad++;
+            badd = dn;
+        }
+    }
+    check(bad == 0, "num_rcp32_matches_division", "%ld mismatches, e.g. dn = %u", bad, badd);
 }
 
 static void test_udiv(void)
@@ -308,6 +330,7 @@ static void test_wnum_mul(void)
 int main(void)
 {
     test_rcp16();
+    test_rcp32();
     test_udiv();
     test_div_ops();
     test_wnum_div();

@@ -73,6 +73,37 @@ uint32_t num_rcp16(uint32_t dn)
     return t < 0 ? 0 : (uint32_t)t >> 15;
 }
 
+uint32_t num_rcp32(uint32_t dn)
+{
+    /* V0 = 2^32 + rh 2^16 with 0 < 2^64 / dn - V0 < 2^17 (num_rcp16; V0 <
+     * 2^33 = 2^64 / dn for dn = 2^31, so the difference is never 0), and
+     * e = 2^64 - V0 dn: 0 < e < 2^17 dn, a multiple of 2^16. The result is
+     * V0 - 2^32 + floor((e - 1) / dn).
+     * Et = floor(e / 2^17) < dn from E = e / 2^16 = A 2^16 - B, A = (2^32 -
+     * dn) - rh (dn >> 16) >= 0 and B = rh (dn & 0xFFFF) < 2^32 - 2^17: Et =
+     * A 2^15 - ceil(B / 2), exact modulo 2^32 since Et < 2^32.
+     * The quotient's estimate q = floor(Et V0 / 2^47) = floor(Et / 2^15 + Et
+     * rh / 2^31) in two 16x16 pieces (each below 2^32, their sum too) and
+     * two floors is at most Et 2^17 V0 / 2^64 <= e V0 / 2^64 < e / dn, so
+     * at most floor((e - 1) / dn); it is below e / dn by at most
+     * (e - Et 2^17) / dn < 2^-14, Et 2^17 (2^64 / dn - V0) / 2^64 < 2^49
+     * 2^17 / 2^64 = 4 and the floors (< 2 + 2^-15): at most 6 below. The
+     * remainder 2^64 - 1 - (2^32 + v) dn (< 7 dn < 2^35, in 32-bit halves)
+     * then steps it up. */
+    const uint32_t rh = num_rcp16(dn);
+    const uint32_t a = (0u - dn) - rh * (dn >> 16), b = rh * (dn & 0xFFFFu);
+    const uint32_t et = (a << 15) - ((b >> 1) + (b & 1u));
+    uint32_t v = (rh << 16) + (et >> 15) + (((et >> 16) * rh + (((et & 0xFFFFu) * rh) >> 16)) >> 15);
+    const uint64_t p = num_umul32(v, dn);
+    uint32_t rl = ~(uint32_t)p, rhi = ~dn - (uint32_t)(p >> 32);
+    while (rhi || rl >= dn) {
+        rhi -= rl < dn;
+        rl -= dn;
+        v++;
+    }
+    return v;
+}
+
 #if !NUM_HW_DIV32
 /* One base-2^16 digit of x / dn: x < dn * 2^16 (so the digit is < 2^16),
  * dn in [2^31, 2^32), rh = num_rcp16(dn). The estimate xh (1 + rh / 2^16)

@@ -148,10 +148,16 @@ static inline int num_clz64(uint64_t x)
  * stepped to the exact value by its remainder. */
 uint32_t num_udiv64_32(uint64_t n, uint32_t d, uint32_t *rem);
 
+/* floor((2^64 - 1) / dn) - 2^32 for dn in [2^31, 2^32), exact: num_rcp16's
+ * estimate, one Newton step in 32-bit products (at most 6 below) and the
+ * remainder's correction, without a division (num.c proves the bound). */
+uint32_t num_rcp32(uint32_t dn);
+
 /* A divisor d != 0 prepared for num_udiv64_32_pre, which divides by it
  * with two products instead of a division: dn = d 2^s in [2^31, 2^32) and
- * v = floor((2^64 - 1) / dn) - 2^32 (one num_udiv64_32: the numerator
- * (2^32 - 1 - dn) 2^32 + 2^32 - 1 has its high word below dn). */
+ * v = floor((2^64 - 1) / dn) - 2^32 (num_rcp32 or, with a divide
+ * instruction, one num_udiv64_32: the numerator (2^32 - 1 - dn) 2^32 +
+ * 2^32 - 1 has its high word below dn). */
 struct num_udiv_pre { uint32_t d, dn, v; uint8_t s; };
 static inline struct num_udiv_pre num_udiv_pre_make(uint32_t d)
 {
@@ -159,7 +165,7 @@ static inline struct num_udiv_pre num_udiv_pre_make(uint32_t d)
     p.d = d;
     p.s = (uint8_t)num_clz32(d);
     p.dn = d << p.s;
-    p.v = num_udiv64_32((uint64_t)~p.dn << 32 | 0xFFFFFFFFu, p.dn, 0);
+    p.v = NUM_HW_DIV32 ? num_udiv64_32((uint64_t)~p.dn << 32 | 0xFFFFFFFFu, p.dn, 0) : num_rcp32(p.dn);
     return p;
 }
 

@@ -4,6 +4,7 @@
  * half of the book's RenderInstance), and the binning of every primitive to
  * the rows it may touch, so each strip visits only its own. */
 #include "raster_int.h"
+#include "num/num_int.h"
 
 static struct ras_range rows_of_canvas_y(const struct ras_ctx *rc, num ymin, num ymax)
 {
@@ -194,6 +195,19 @@ static void instance_vertices(const struct ras_ctx *rc, uint16_t i, uint32_t k0,
     }
 }
 
+/* 1 when three projected corners' doubled area on screen, in the order a
+ * front face is drawn, is positive: ras_tri_cache's area (|differences| <
+ * 2^16; all four in [-2^14, 2^14), the products in 32 bits). A triangle
+ * whose area is not positive draws nothing whichever way it faces. */
+static int pv_area_positive(const struct ras_pv *a, const struct ras_pv *b, const struct ras_pv *c)
+{
+    const int32_t d1x = b->sx - a->sx, d1y = b->sy - a->sy, d2x = c->sx - a->sx, d2y = c->sy - a->sy;
+    if ((((uint32_t)d1x + 0x4000u) | ((uint32_t)d1y + 0x4000u) | ((uint32_t)d2x + 0x4000u) |
+         ((uint32_t)d2y + 0x4000u)) < 0x8000u)
+        return d1x * d2y > d1y * d2x;
+    return num_smul32(d1x, d2y) > num_smul32(d1y, d2x);
+}
+
 /* Triangle k of instance i (its frame facts kept), as part `part` of the
  * frame's triangles: the rows the strips visit it on. */
 static struct ras_range instance_triangle(struct ras_ctx *rc, const struct ras_instance *in, const struct ras_model *m,
@@ -223,6 +237,11 @@ static struct ras_range instance_triangle(struct ras_ctx *rc, const struct ras_i
     } else if (FW_FEATURE_RAS_DEFAULT) {
         const struct ras_pv *pa = &rc->def.pv[vb + t->v[0]], *pb = &rc->def.pv[vb + t->v[1]], *pc = &rc->def.pv[vb + t->v[2]];
         const int inside = ras_pv_in(pa) && ras_pv_in(pb) && ras_pv_in(pc);
+        if (inside && o->backface_cull && !pv_area_positive(pa, pb, pc)) {
+            /* ras_tri_cache's first test: culled, whatever its rows */
+            rc->def.tri_flags[tb + k] = 0;
+            return r;
+        }
         const int32_t lo = inside ? min3(pa->sy, pb->sy, pc->sy) : 0, hi = inside ? max3(pa->sy, pb->sy, pc->sy) : 0;
         if (inside) {
             r = sub_rows(rc, lo, hi);

@@ -311,8 +311,9 @@ vec3 ras_mul_point_fit(const mat4 *m, vec3 p)
 
 /* wnum_div(a, z) for z > 0 by the prepared z: its path for a numerator
  * |a| 2^F below 2^63 and a quotient that does not saturate (the same
- * rounding, halves away from zero), wnum_div itself otherwise. */
-static num wdiv_pre(wnum a, num z, const struct num_udiv_pre *p)
+ * rounding, halves away from zero), wnum_div itself otherwise. Inline:
+ * the prepared divisor stays in registers. */
+static inline __attribute__((always_inline)) num wdiv_pre(wnum a, num z, const struct num_udiv_pre *p)
 {
     const uint64_t ua = a < 0 ? (uint64_t)0 - (uint64_t)a : (uint64_t)a;
     if (ua < ((uint64_t)1 << (63 - NUM_FRAC))) {
@@ -329,6 +330,31 @@ static num wdiv_pre(wnum a, num z, const struct num_udiv_pre *p)
     return wnum_div(a, wnum_from_num(z));
 }
 
+/* wdiv_pre(wnum_from_num(NUM_ONE), z, p): 1/z, the numerator 2^2F a power
+ * of two. With k = 2F + s in [32, 62], N = 2^2F 2^s has the high word
+ * nh = 2^(k - 32) < dn and the low word 0, so num_udiv64_32_pre's estimate
+ * nh + mulhi(nh, v) is nh + v >> (64 - k), and its remainder's low word
+ * starts from 0 (the same quotient and remainder, the same rounding);
+ * wnum_div itself otherwise. */
+static num recip_pre(num z, const struct num_udiv_pre *p)
+{
+    const uint32_t s = p->s, dn = p->dn, k = 2 * NUM_FRAC + s;
+    if (k < 32 || k > 62) return wnum_div(wnum_from_num(NUM_ONE), wnum_from_num(z));
+    const uint32_t j = k - 32, nh = (uint32_t)1 << j;
+    uint32_t q = nh + (j ? p->v >> (32 - j) : 0);
+    const uint64_t qd = num_umul32(q, dn);
+    const uint32_t ql = (uint32_t)qd;
+    uint32_t rl = 0u - ql, rh = nh - (uint32_t)(qd >> 32) - (ql != 0);
+    while (rh || rl >= dn) {
+        rh -= rl < dn;
+        rl -= dn;
+        q++;
+    }
+    const uint32_t rm = rl >> s;
+    if (q < (uint32_t)INT32_MAX || (q == (uint32_t)INT32_MAX && rm < p->d - rm)) return (num)q + (rm >= p->d - rm);
+    return wnum_div(wnum_from_num(NUM_ONE), wnum_from_num(z));
+}
+
 void ras_div_depth(num x, num y, num z, num unproj, num near_z, num *X, num *Y, num *iz, uint32_t *depth)
 {
     if (z <= 0) {
@@ -338,7 +364,7 @@ void ras_div_depth(num x, num y, num z, num unproj, num near_z, num *X, num *Y, 
     const struct num_udiv_pre p = num_udiv_pre_make((uint32_t)z);
     *X = wdiv_pre(num_mul_round(x, unproj), z, &p);   /* num_mul_wide's bits, inline */
     *Y = wdiv_pre(num_mul_round(y, unproj), z, &p);
-    *iz = wdiv_pre(wnum_from_num(NUM_ONE), z, &p);   /* num_div(1, z): wnum_div's rounding of 2^F 2^F / z */
+    *iz = recip_pre(z, &p);   /* num_div(1, z): wnum_div's rounding of 2^F 2^F / z */
     /* 0 < near < z: the quotient fits 32 bits */
     *depth = near_z <= 0 || z <= near_z ? ras_depth32(near_z, z)
                                         : num_udiv64_32_pre((uint64_t)(uint32_t)near_z << 32, &p, 0);
@@ -392,11 +418,13 @@ void ras_front_init(struct ras_front *fb, num unproj, num near_z, int32_t w, int
 int ras_front_known(const struct ras_front *fb, int64_t margin, num iza, num izb, num izc)
 {
     if (fb->g == 0 || margin <= 0 || iza < fb->iz_min || izb < fb->iz_min || izc < fb->iz_min) return 0;
-    const int F = fb->frac;
-    /* g (iz_b + 1)(iz_c + 1) 2^-2F, rounded up */
-    uint64_t p = (num_umul32((uint32_t)izb + 1u, (uint32_t)izc + 1u) >> F) + 1;
+    /* g (iz_b + 1)(iz_c + 1) 2^-2F, rounded up (F = fb->frac = NUM_FRAC:
+     * shifts by a constant, and the product's high word tested first) */
+    const uint64_t pp = num_umul32((uint32_t)izb + 1u, (uint32_t)izc + 1u);
+    if ((uint32_t)(pp >> 32) >> (NUM_FRAC - 1)) return 0; /* p >= 2^31 */
+    const uint32_t p = (uint32_t)(pp >> NUM_FRAC) + 1u;
     if (p >> 31) return 0;
-    uint64_t bound = (num_umul32((uint32_t)p, fb->g) >> F) + 1;
+    const uint64_t bound = (num_umul32(p, fb->g) >> NUM_FRAC) + 1;
     return (uint64_t)margin > bound;
 }
 

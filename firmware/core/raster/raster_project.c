@@ -89,10 +89,19 @@ num ras_mul_div(num x, num z, num unproj)
 
 /* Screen position of a camera-space point inside the clip volume, in
  * sub-pixel units (y down): the default path's projection. */
+static inline num centre_num(int32_t i)
+{
+#if NUM_MODE == NUM_MODE_FIXED
+    /* num_from_int without its call where it cannot saturate (i >= 0) */
+    if (i >= 0 && i <= (INT32_MAX >> NUM_FRAC)) return (num)((uint32_t)i << NUM_FRAC);
+#endif
+    return num_from_int(i);
+}
+
 static void project_sub_xy(const struct ras_ctx *rc, num X, num Y, int32_t *sx, int32_t *sy)
 {
-    num fx = num_add(num_from_int(rc->w / 2), X);
-    num fy = num_sub(num_from_int(rc->h / 2), Y);
+    num fx = num_add(centre_num(rc->w / 2), X);
+    num fy = num_sub(centre_num(rc->h / 2), Y);
     /* integer and fraction apart, so Q15.16 never holds pixels << 8 */
     *sx = ras_sub_pos(fx, rc->def.sub_bits);
     *sy = ras_sub_pos(fy, rc->def.sub_bits);

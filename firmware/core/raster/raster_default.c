@@ -178,12 +178,13 @@ void ras_tri_cache(struct ras_ctx *rc, const struct ras_instance *in, const stru
         rc->def.tri_flags[gi] = 0;
         return;
     }
-    rc->def.tri_flags[gi] = (uint8_t)(RAS_TRI_LIVE | (front ? RAS_TRI_FRONT : 0) | (part ? RAS_TRI_PART1 : 0));
+    rc->def.tri_flags[gi] = (uint8_t)(RAS_TRI_LIVE | (front ? RAS_TRI_FRONT : 0));
     if (ri->vlit) {
         /* each vertex lit once (per part), by the first live triangle that
-         * uses it: its corners' normals are all the same, so is their lighting */
+         * uses it: its corners' normals are all the same, so is their
+         * lighting; both parts store it in the same table (the same bits) */
         uint8_t *lit = part ? rc->def.vert_lit1 : rc->def.vert_lit;
-        num *shade = part ? rc->def.vert_shade1 : rc->def.vert_shade;
+        num *shade = rc->def.vert_shade;
         for (int k = 0; k < 3; k++) {
             uint32_t v = ri->vbase + t->v[k];
             uint8_t bit = (uint8_t)(1u << (v & 7));
@@ -393,7 +394,7 @@ void ras_default_render_triangle(struct ras_ctx *rc, const struct ras_instance *
     num vsh[3];
     const num *shade = rc->def.tri_shade ? rc->def.tri_shade + 3 * (size_t)gi : NULL;
     if (ri->vlit) {
-        const num *vs = (rc->def.tri_flags[gi] & RAS_TRI_PART1) ? rc->def.vert_shade1 : rc->def.vert_shade;
+        const num *vs = rc->def.vert_shade;
         for (int k = 0; k < 3; k++) vsh[k] = vs[ri->vbase + t->v[k]];
         shade = vsh;
     }

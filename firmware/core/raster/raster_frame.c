@@ -376,8 +376,8 @@ int raster_frame_triangles(void *work, unsigned part, unsigned parts)
     struct ras_ctx *rc = ras_ctx_of(work);
     if (rc->owner) rc = (struct ras_ctx *)(uintptr_t)rc->owner;   /* the owner's frame */
     if (parts == 0 || parts > 2 || part >= parts) return -1;
-    /* part 1 lights vertices into the sibling's table: one must be there */
-    if (part == 1 && rc->def.vert_shade && !rc->def.vert_shade1) return -1;
+    /* part 1 marks the vertices it lights in the sibling's table: one must be there */
+    if (part == 1 && rc->def.vert_shade && !rc->def.vert_lit1) return -1;
     const struct scene *s = rc->s;
     rc->part_in[part] = rc->part_drawn[part] = 0;
     if (parts == 1) rc->part_in[1] = rc->part_drawn[1] = 0;

@@ -60,9 +60,8 @@ struct ras_pv { int16_t sx, sy; num iz; uint32_t depth; };
 #define RAS_PV_OUT INT16_MIN
 static inline int ras_pv_in(const struct ras_pv *q) { return q->sx != RAS_PV_OUT; }
 
-/* Per-frame facts of a triangle of the default path (PART1: culled and lit
- * by part 1 of a split preparation, its vertices' lighting in vert_shade1). */
-enum { RAS_TRI_FRONT = 1, RAS_TRI_LIVE = 2, RAS_TRI_PART1 = 4 };
+/* Per-frame facts of a triangle of the default path. */
+enum { RAS_TRI_FRONT = 1, RAS_TRI_LIVE = 2 };
 
 /* Screen rows a primitive may touch (inclusive); r0 > r1: none. This is the
  * binning of primitives to strips, computed once per frame. */
@@ -120,12 +119,14 @@ struct ras_def {
     uint8_t *tri_flags;
     num *tri_shade;          /* 3 a triangle: Gouraud corners, or the flat intensity first */
     num *vert_shade;         /* Gouraud lighting of each vertex of vertex-lit instances
-                                (ras_inst.vlit), made when a live triangle first uses it */
-    uint8_t *vert_lit;       /* one bit a vertex: vert_shade made this frame */
-    num *vert_shade1;        /* the same made by the triangles of part 1 of a split
-                                preparation (raster_frame_triangles), in the sibling's
-                                work memory; NULL: no sibling */
-    uint8_t *vert_lit1;
+                                (ras_inst.vlit), made when a live triangle first uses it,
+                                by either part of a split preparation: a vertex's lighting
+                                depends on the vertex only, so both parts store the same
+                                bits, and nothing reads it before both have returned */
+    uint8_t *vert_lit;       /* one bit a vertex: vert_shade made this frame by part 0, */
+    uint8_t *vert_lit1;      /* and by part 1 (raster_frame_triangles), in the sibling's
+                                work memory (each part writes only its own bits); NULL: no
+                                sibling */
     struct ras_vcache *vcache;   /* camera-space vertices of the frame's culling and lighting
                                     (ras_cam_vertex) where ras_ctx.verts is not kept, */
     struct ras_vcache *vcache1;  /* and part 1's (the sibling's work memory); NULL: none */
@@ -205,8 +206,7 @@ struct ras_own {
     struct ras_fast_state *keep;
     uint8_t *stencil;
     struct ras_vcache *vcache;   /* the owner's part-1 camera-space vertices (ras_def.vcache1) */
-    num *vshade;             /* the owner's part-1 vertex lighting (ras_def.vert_shade1) */
-    uint8_t *vlit;
+    uint8_t *vlit;           /* the owner's part-1 vertices lit (ras_def.vert_lit1) */
 };
 
 /* The rasterizer's state, in the caller's work memory: what every path

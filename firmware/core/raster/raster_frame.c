@@ -232,12 +232,11 @@ static struct ras_range instance_triangle(struct ras_ctx *rc, const struct ras_i
                                    ras_cam_vertex(rc, in, ri, m, t->v[1], vc),
                                    ras_cam_vertex(rc, in, ri, m, t->v[2], vc));
         }
-        if (r.r0 > r.r1) { rc->def.tri_flags[tb + k] = 0; return r; }
-        ras_tri_cache(rc, in, ri, m, t, tb + k, part);
+        if (r.r0 > r.r1) return r;
         /* what the strips visit: live triangles only (a culled or
          * degenerate one draws nothing), and those of three projected
          * corners only on the rows of the pixel centres they span */
-        if (!(rc->def.tri_flags[tb + k] & RAS_TRI_LIVE)) return no_rows();
+        if (!ras_tri_cache(rc, in, ri, m, t, tb + k, part)) return no_rows();
         rc->part_drawn[part]++;
         if (rc->bins.on && inside) r = centre_rows(rc, lo, hi);
     }

@@ -245,13 +245,14 @@ static int carve(const struct scene *s, uint16_t w, uint16_t h, uint16_t strip_r
     rc->fast.tex_mem = c->base ? c->base + c->off : NULL;   /* the RGB565 copies, the same way */
     for (uint16_t i = 0; i < s->ntextures; i++) (void)work_take(c, tex565_work(s, i));
     void *pv = work_take(c, frame_cache(s) ? sizeof(struct ras_pv) * nverts : 0);
-    void *flags = work_take(c, frame_cache(s) ? ntris : 0);
+    const int tflags = frame_cache(s) && !s->ras.backface_cull;   /* (struct ras_def.tri_flags) */
+    void *flags = work_take(c, tflags ? ntris : 0);
     int caches = shade_caches(s);
     void *shade = work_take(c, (caches & 1) ? sizeof(num) * 3 * ntris : 0);
     void *vshade = work_take(c, (caches & 2) ? sizeof(num) * nverts : 0);
     void *vlit = work_take(c, (caches & 2) ? (nverts + 7) / 8 : 0);
     rc->def.pv = frame_cache(s) ? pv : NULL;
-    rc->def.tri_flags = frame_cache(s) ? flags : NULL;
+    rc->def.tri_flags = tflags ? flags : NULL;
     rc->def.tri_shade = (caches & 1) ? shade : NULL;
     rc->def.vert_shade = (caches & 2) ? vshade : NULL;
     rc->def.vert_lit = (caches & 2) ? vlit : NULL;

@@ -88,6 +88,27 @@ for f in $(find firmware/scenes -name '*.scene' | sort); do
 done
 [ -n "$report" ] && exit 0
 
+# The 7,350-vertex, 14,700-triangle Gouraud knot (tools/bench/gen_mesh.py
+# --no-uv 245 30, bench/knot-16k-gouraud's scene otherwise) fits the two-core
+# RP2040 image with all code in flash (RP2040_RAM_TEXT=0, 228,896 bytes of
+# work: scenec --target rp2040's RAM budget): its work on the target, core 0 +
+# core 1, with the 8-row strips `make image` builds, against that budget
+# (scenec's flash check counts this host's sizes, docs/firmware.md: not here).
+mkdir "$work/k14"
+if ! python3 tools/bench/gen_mesh.py --no-uv 245 30 "$work/k14/knot.obj" >/dev/null 2>"$work/k14/err"; then
+  echo "FAIL scenec_rp2040_mesh_14k: gen_mesh.py: $(head -n 1 "$work/k14/err")"
+else
+  sed 's/"knot-16k.obj"/"knot.obj"/' firmware/scenes/bench/knot-16k-gouraud.scene >"$work/k14/knot.scene"
+  if ! tw=$(tools/scenec/target_work.sh "$probe" "$work/k14/knot.scene" 240 240 8 2>"$work/k14/err"); then
+    echo "FAIL scenec_rp2040_mesh_14k: $(cat "$work/k14/err")"
+  elif "$scenec" --target rp2040 --flash-budget 64M --size 240x240 --strip-rows 8 --target-work "$tw" \
+       -o "$work/k14/knot.c" "$work/k14/knot.scene" >"$work/k14/log" 2>&1; then
+    echo "PASS scenec_rp2040_mesh_14k (${tw%%:*} + ${tw#*:} of 228896 bytes)"
+  else
+    echo "FAIL scenec_rp2040_mesh_14k: $(tail -n 2 "$work/k14/log")"
+  fi
+fi
+
 # The compiled data equals the parsed scene field by field: one host program
 # per format scenec chose (the generated files #error at a finer one).
 hostcc=${CC:-cc}

@@ -139,8 +139,8 @@ static vec3 tri_centre(const vec3 V[3])
 
 /* Per frame: the facts of triangle gi kept for every strip, and the
  * lighting of its Gouraud corners or flat face (the values
- * default_render_triangle would compute in each strip). */
-void ras_tri_cache(struct ras_ctx *rc, const struct ras_instance *in, const struct ras_inst *ri,
+ * default_render_triangle would compute in each strip); 1 when it is live. */
+int ras_tri_cache(struct ras_ctx *rc, const struct ras_instance *in, const struct ras_inst *ri,
                       const struct ras_model *m, const struct ras_triangle *t, uint32_t gi, int part)
 {
     vec3 V[3], N[3];
@@ -162,10 +162,7 @@ void ras_tri_cache(struct ras_ctx *rc, const struct ras_instance *in, const stru
          * front face is drawn, is not positive: whichever way the triangle
          * faces, it draws nothing (a back face is culled, a front face
          * covers no pixel), so its facing need not be computed */
-        if (rc->s->ras.backface_cull && area <= 0) {
-            rc->def.tri_flags[gi] = 0;
-            return;
-        }
+        if (rc->s->ras.backface_cull && area <= 0) return ras_tri_flag(rc, gi, 0);
         /* one whose area is clear of every rounding is a front face by the
          * camera-space test too (raster_num.h): that test is not made */
         const int32_t L = (d1x < 0 ? -d1x : d1x) + (d1y < 0 ? -d1y : d1y) + (d2x < 0 ? -d2x : d2x) +
@@ -175,15 +172,15 @@ void ras_tri_cache(struct ras_ctx *rc, const struct ras_instance *in, const stru
     if (known) {
         front = 1;
     } else if (!tri_facts(rc, in, ri, m, t, V, N, &front, want_n, vc)) {
-        rc->def.tri_flags[gi] = 0;
-        return;
+        return ras_tri_flag(rc, gi, 0);
     }
-    rc->def.tri_flags[gi] = (uint8_t)(RAS_TRI_LIVE | (front ? RAS_TRI_FRONT : 0) | (part ? RAS_TRI_PART1 : 0));
+    (void)ras_tri_flag(rc, gi, RAS_TRI_LIVE | (front ? RAS_TRI_FRONT : 0));
     if (ri->vlit) {
         /* each vertex lit once (per part), by the first live triangle that
-         * uses it: its corners' normals are all the same, so is their lighting */
+         * uses it: its corners' normals are all the same, so is their
+         * lighting; both parts store it in the same table (the same bits) */
         uint8_t *lit = part ? rc->def.vert_lit1 : rc->def.vert_lit;
-        num *shade = part ? rc->def.vert_shade1 : rc->def.vert_shade;
+        num *shade = rc->def.vert_shade;
         for (int k = 0; k < 3; k++) {
             uint32_t v = ri->vbase + t->v[k];
             uint8_t bit = (uint8_t)(1u << (v & 7));
@@ -192,14 +189,15 @@ void ras_tri_cache(struct ras_ctx *rc, const struct ras_instance *in, const stru
             const vec3 p = known ? ras_cam_vertex(rc, in, ri, m, t->v[k], vc) : V[k];
             shade[v] = ras_compute_illumination(rc, p, ras_corner_normal(ri, t->n[k]), in->specular);
         }
-        return;
+        return 1;
     }
-    if (!rc->def.tri_shade) return;
+    if (!rc->def.tri_shade) return 1;
     num *sh = rc->def.tri_shade + 3 * (size_t)gi;
     if (rc->def.shading == SHADE_GOURAUD)
         for (int k = 0; k < 3; k++) sh[k] = ras_compute_illumination(rc, V[k], N[k], in->specular);
     else
         sh[0] = ras_compute_illumination(rc, tri_centre(V), N[0], in->specular);
+    return 1;
 }
 
 /* The rest of triangle gi begun in the strip above, from its kept set-up:
@@ -229,8 +227,8 @@ static int corners(const struct ras_ctx *rc, const struct ras_instance *in, cons
                    vec3 N[3], int *front)
 {
     *front = 0;
-    if (!rc->def.tri_flags) return tri_facts(rc, in, ri, m, t, V, N, front, 1, NULL);
-    uint8_t f = rc->def.tri_flags[gi];
+    if (!rc->def.pv) return tri_facts(rc, in, ri, m, t, V, N, front, 1, NULL);
+    uint8_t f = ras_tri_flags(rc, gi);
     if (!(f & RAS_TRI_LIVE)) return 0;
     *front = (f & RAS_TRI_FRONT) != 0;
     /* unshaded triangles need no normals: the corners are all they take */
@@ -393,7 +391,7 @@ void ras_default_render_triangle(struct ras_ctx *rc, const struct ras_instance *
     num vsh[3];
     const num *shade = rc->def.tri_shade ? rc->def.tri_shade + 3 * (size_t)gi : NULL;
     if (ri->vlit) {
-        const num *vs = (rc->def.tri_flags[gi] & RAS_TRI_PART1) ? rc->def.vert_shade1 : rc->def.vert_shade;
+        const num *vs = rc->def.vert_shade;
         for (int k = 0; k < 3; k++) vsh[k] = vs[ri->vbase + t->v[k]];
         shade = vsh;
     }
@@ -401,9 +399,9 @@ void ras_default_render_triangle(struct ras_ctx *rc, const struct ras_instance *
     struct ras_sv sv[RAS_CLIP_MAX];
     int n, na;
     const struct ras_pv *pv = rc->def.pv ? rc->def.pv + ri->vbase : NULL;
-    if (rc->def.tri_flags && pv && rc->def.shading != SHADE_PHONG && (shade || rc->def.shading == SHADE_NONE) &&
+    if (pv && rc->def.shading != SHADE_PHONG && (shade || rc->def.shading == SHADE_NONE) &&
         ras_pv_in(&pv[t->v[0]]) && ras_pv_in(&pv[t->v[1]]) && ras_pv_in(&pv[t->v[2]])) {
-        const uint8_t f = rc->def.tri_flags[gi];
+        const uint8_t f = ras_tri_flags(rc, gi);
         if (!(f & RAS_TRI_LIVE)) return;
         na = projected_corners(rc, in, m, t, (f & RAS_TRI_FRONT) != 0, pv, shade, &dt, sv);
         n = 3;

@@ -251,12 +251,11 @@ static struct ras_range instance_triangle(struct ras_ctx *rc, const struct ras_i
                                    ras_cam_vertex(rc, in, ri, m, t->v[1], vc),
                                    ras_cam_vertex(rc, in, ri, m, t->v[2], vc));
         }
-        if (r.r0 > r.r1) { rc->def.tri_flags[tb + k] = 0; return r; }
-        ras_tri_cache(rc, in, ri, m, t, tb + k, part);
+        if (r.r0 > r.r1) return r;
         /* what the strips visit: live triangles only (a culled or
          * degenerate one draws nothing), and those of three projected
          * corners only on the rows of the pixel centres they span */
-        if (!(rc->def.tri_flags[tb + k] & RAS_TRI_LIVE)) return no_rows();
+        if (!ras_tri_cache(rc, in, ri, m, t, tb + k, part)) return no_rows();
         rc->part_drawn[part]++;
         if (rc->bins.on && inside) r = centre_rows(rc, lo, hi);
     }
@@ -395,8 +394,8 @@ int raster_frame_triangles(void *work, unsigned part, unsigned parts)
     struct ras_ctx *rc = ras_ctx_of(work);
     if (rc->owner) rc = (struct ras_ctx *)(uintptr_t)rc->owner;   /* the owner's frame */
     if (parts == 0 || parts > 2 || part >= parts) return -1;
-    /* part 1 lights vertices into the sibling's table: one must be there */
-    if (part == 1 && rc->def.vert_shade && !rc->def.vert_shade1) return -1;
+    /* part 1 marks the vertices it lights in the sibling's table: one must be there */
+    if (part == 1 && rc->def.vert_shade && !rc->def.vert_lit1) return -1;
     const struct scene *s = rc->s;
     rc->part_in[part] = rc->part_drawn[part] = 0;
     if (parts == 1) rc->part_in[1] = rc->part_drawn[1] = 0;

@@ -60,9 +60,8 @@ struct ras_pv { int16_t sx, sy; num iz; uint32_t depth; };
 #define RAS_PV_OUT INT16_MIN
 static inline int ras_pv_in(const struct ras_pv *q) { return q->sx != RAS_PV_OUT; }
 
-/* Per-frame facts of a triangle of the default path (PART1: culled and lit
- * by part 1 of a split preparation, its vertices' lighting in vert_shade1). */
-enum { RAS_TRI_FRONT = 1, RAS_TRI_LIVE = 2, RAS_TRI_PART1 = 4 };
+/* Per-frame facts of a triangle of the default path (ras_def.tri_flags). */
+enum { RAS_TRI_FRONT = 1, RAS_TRI_LIVE = 2 };
 
 /* Screen rows a primitive may touch (inclusive); r0 > r1: none. This is the
  * binning of primitives to strips, computed once per frame. */
@@ -117,15 +116,19 @@ struct ras_def {
     /* per frame: projected vertices, triangle flags and the lighting of
      * Gouraud corners or flat faces (NULL when not kept) */
     struct ras_pv *pv;
-    uint8_t *tri_flags;
+    uint8_t *tri_flags;      /* RAS_TRI_*; NULL with back faces culled: the strips visit
+                                only live triangles (a dead one's rows are none), and a
+                                live one then faces the camera */
     num *tri_shade;          /* 3 a triangle: Gouraud corners, or the flat intensity first */
     num *vert_shade;         /* Gouraud lighting of each vertex of vertex-lit instances
-                                (ras_inst.vlit), made when a live triangle first uses it */
-    uint8_t *vert_lit;       /* one bit a vertex: vert_shade made this frame */
-    num *vert_shade1;        /* the same made by the triangles of part 1 of a split
-                                preparation (raster_frame_triangles), in the sibling's
-                                work memory; NULL: no sibling */
-    uint8_t *vert_lit1;
+                                (ras_inst.vlit), made when a live triangle first uses it,
+                                by either part of a split preparation: a vertex's lighting
+                                depends on the vertex only, so both parts store the same
+                                bits, and nothing reads it before both have returned */
+    uint8_t *vert_lit;       /* one bit a vertex: vert_shade made this frame by part 0, */
+    uint8_t *vert_lit1;      /* and by part 1 (raster_frame_triangles), in the sibling's
+                                work memory (each part writes only its own bits); NULL: no
+                                sibling */
     struct ras_vcache *vcache;   /* camera-space vertices of the frame's culling and lighting
                                     (ras_cam_vertex) where ras_ctx.verts is not kept, */
     struct ras_vcache *vcache1;  /* and part 1's (the sibling's work memory); NULL: none */
@@ -205,8 +208,7 @@ struct ras_own {
     struct ras_fast_state *keep;
     uint8_t *stencil;
     struct ras_vcache *vcache;   /* the owner's part-1 camera-space vertices (ras_def.vcache1) */
-    num *vshade;             /* the owner's part-1 vertex lighting (ras_def.vert_shade1) */
-    uint8_t *vlit;
+    uint8_t *vlit;           /* the owner's part-1 vertices lit (ras_def.vert_lit1) */
 };
 
 /* The rasterizer's state, in the caller's work memory: what every path
@@ -279,6 +281,19 @@ static inline int32_t ras_trows_last(const struct ras_ctx *rc, struct ras_trows 
     return (int32_t)((((uint32_t)p.r1 + 1) << rc->row_shift) - 1);
 }
 
+/* Triangle gi's facts this frame set to f (where kept); f != 0. */
+static inline int ras_tri_flag(struct ras_ctx *rc, uint32_t gi, int f)
+{
+    if (rc->def.tri_flags) rc->def.tri_flags[gi] = (uint8_t)f;
+    return f != 0;
+}
+
+/* Triangle gi's facts this frame, of a triangle the strips visit (live). */
+static inline uint8_t ras_tri_flags(const struct ras_ctx *rc, uint32_t gi)
+{
+    return rc->def.tri_flags ? rc->def.tri_flags[gi] : (uint8_t)(RAS_TRI_LIVE | RAS_TRI_FRONT);
+}
+
 /* The state in the caller's work memory, at its first WORK_ALIGN boundary
  * (raster_work_size counts the slack). */
 static inline struct ras_ctx *ras_ctx_of(void *work)
@@ -330,8 +345,9 @@ void ras_default_render_triangle(struct ras_ctx *rc, const struct ras_instance *
 /* 1 when instance in's Gouraud corners are lit per vertex (raster_work.c). */
 int ras_vertex_lit(const struct scene *s, const struct ras_instance *in);
 /* Per frame: the facts of the default path's triangle gi kept for every
- * strip, and the lighting of its Gouraud corners or flat face. */
-void ras_tri_cache(struct ras_ctx *rc, const struct ras_instance *in, const struct ras_inst *ri,
+ * strip, and the lighting of its Gouraud corners or flat face; 1 when it
+ * is live. */
+int ras_tri_cache(struct ras_ctx *rc, const struct ras_instance *in, const struct ras_inst *ri,
                    const struct ras_model *m, const struct ras_triangle *t, uint32_t gi, int part);
 
 /* ---- the default path's exact fill (raster_triangles.c) ---- */

@@ -245,13 +245,14 @@ static int carve(const struct scene *s, uint16_t w, uint16_t h, uint16_t strip_r
     rc->fast.tex_mem = c->base ? c->base + c->off : NULL;   /* the RGB565 copies, the same way */
     for (uint16_t i = 0; i < s->ntextures; i++) (void)work_take(c, tex565_work(s, i));
     void *pv = work_take(c, frame_cache(s) ? sizeof(struct ras_pv) * nverts : 0);
-    void *flags = work_take(c, frame_cache(s) ? ntris : 0);
+    const int tflags = frame_cache(s) && !s->ras.backface_cull;   /* (struct ras_def.tri_flags) */
+    void *flags = work_take(c, tflags ? ntris : 0);
     int caches = shade_caches(s);
     void *shade = work_take(c, (caches & 1) ? sizeof(num) * 3 * ntris : 0);
     void *vshade = work_take(c, (caches & 2) ? sizeof(num) * nverts : 0);
     void *vlit = work_take(c, (caches & 2) ? (nverts + 7) / 8 : 0);
     rc->def.pv = frame_cache(s) ? pv : NULL;
-    rc->def.tri_flags = frame_cache(s) ? flags : NULL;
+    rc->def.tri_flags = tflags ? flags : NULL;
     rc->def.tri_shade = (caches & 1) ? shade : NULL;
     rc->def.vert_shade = (caches & 2) ? vshade : NULL;
     rc->def.vert_lit = (caches & 2) ? vlit : NULL;
@@ -489,9 +490,9 @@ static uint32_t scene_count(const struct scene *s, int verts)
     return n;
 }
 
-/* A sibling's own tables: carve_strip_tables', then the part-1 vertex
- * lighting of a split preparation (raster_frame_triangles) where the
- * scene lights vertices. */
+/* A sibling's own tables: carve_strip_tables', then the part-1 bits of
+ * the vertices lit by a split preparation (raster_frame_triangles) where
+ * the scene lights vertices (their lighting goes to the owner's table). */
 static void carve_sibling(const struct scene *s, uint16_t w, uint16_t h, uint16_t strip_rows, struct ras_ctx *rc,
                           struct work_carve *c)
 {
@@ -499,7 +500,6 @@ static void carve_sibling(const struct scene *s, uint16_t w, uint16_t h, uint16_
     (void)work_take(c, sizeof(struct ras_ctx));
     carve_strip_tables(s, w, h, strip_rows, ntris, rc, c);
     int vl = (shade_caches(s) & 2) != 0;
-    void *vs = work_take(c, vl ? sizeof(num) * nverts : 0);
     void *vb = work_take(c, vl ? (nverts + 7) / 8 : 0);
     uint32_t nvc = vcache_entries(s, nverts);
     void *vc = work_take(c, sizeof(struct ras_vcache) * nvc);
@@ -508,7 +508,6 @@ static void carve_sibling(const struct scene *s, uint16_t w, uint16_t h, uint16_
     rc->own.keep = rc->fast.keep;
     rc->own.stencil = rc->c15.stencil;
     rc->own.vcache = nvc ? vc : NULL;
-    rc->own.vshade = vl ? vs : NULL;
     rc->own.vlit = vl ? vb : NULL;
 }
 
@@ -545,10 +544,9 @@ int raster_init_sibling(void *work, size_t work_size, const void *owner_work)
     struct work_carve c = { (uint8_t *)rc, 0 };
     carve_sibling(ow->s, ow->w, ow->h, ow->strip_rows, rc, &c);
     struct ras_own own = rc->own;
-    /* the owner's part-1 vertex lighting lives here: registered with it,
-     * nothing lit yet */
+    /* the owner's part-1 vertices lit and camera-space cache live here:
+     * registered with it, nothing lit yet */
     struct ras_ctx *owm = (struct ras_ctx *)(uintptr_t)ow;
-    owm->def.vert_shade1 = own.vshade;
     owm->def.vert_lit1 = own.vlit;
     owm->def.vcache1 = own.vcache;
     for (uint32_t k = 0; own.vcache && k <= ow->def.vcache_mask; k++) own.vcache[k].k = UINT32_MAX;

@@ -239,7 +239,7 @@ static struct ras_range instance_triangle(struct ras_ctx *rc, const struct ras_i
         const int inside = ras_pv_in(pa) && ras_pv_in(pb) && ras_pv_in(pc);
         if (inside && o->backface_cull && !pv_area_positive(pa, pb, pc)) {
             /* ras_tri_cache's first test: culled, whatever its rows */
-            rc->def.tri_flags[tb + k] = 0;
+            (void)ras_tri_flag(rc, tb + k, 0);
             return r;
         }
         const int32_t lo = inside ? min3(pa->sy, pb->sy, pc->sy) : 0, hi = inside ? max3(pa->sy, pb->sy, pc->sy) : 0;

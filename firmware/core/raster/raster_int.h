@@ -281,7 +281,7 @@ static inline int32_t ras_trows_last(const struct ras_ctx *rc, struct ras_trows 
     return (int32_t)((((uint32_t)p.r1 + 1) << rc->row_shift) - 1);
 }
 
-/* Triangle gi's facts this frame set to f (where kept); f != 0. */
+/* Triangle gi's facts this frame set to f (where kept); f != 0: live. */
 static inline int ras_tri_flag(struct ras_ctx *rc, uint32_t gi, int f)
 {
     if (rc->def.tri_flags) rc->def.tri_flags[gi] = (uint8_t)f;

@@ -35,6 +35,26 @@ num num_mul_recip(num a, const struct num_recip *v)
     return sat_signed(q, (a < 0) != (v->d < 0));
 }
 
+/* u0^2 + u1^2 + u2^2 of components <= 2^30, the same value as three
+ * num_umul32 squares. On ARMv6-M (MULS 32x32->32 only) from the 16-bit
+ * halves, u = h 2^16 + l (h <= 2^14, l < 2^16, and l = 0 when h = 2^14):
+ * the h^2 sum <= 3 * 2^28 and the h l sum < 3 * 2^30 fit in 32 bits, and
+ * sum u^2 = (sum h^2) 2^32 + (sum h l) 2^17 + sum l^2: nine products
+ * instead of twelve. */
+static inline uint64_t sumsq3_30(uint32_t u0, uint32_t u1, uint32_t u2)
+{
+#if NUM_V6M_ASM
+    uint32_t h0 = u0 >> 16, h1 = u1 >> 16, h2 = u2 >> 16;
+    uint32_t l0 = u0 & 0xffffu, l1 = u1 & 0xffffu, l2 = u2 & 0xffffu;
+    uint32_t hh = h0 * h0 + h1 * h1 + h2 * h2;
+    uint32_t hl = h0 * l0 + h1 * l1 + h2 * l2;
+    uint64_t ll = (uint64_t)(l0 * l0) + (l1 * l1) + (l2 * l2);
+    return ((uint64_t)hh << 32) + ((uint64_t)hl << 17) + ll;
+#else
+    return num_umul32(u0, u0) + num_umul32(u1, u1) + num_umul32(u2, u2);
+#endif
+}
+
 num v3_div_len(num x, vec3 v)
 {
     uint32_t u0 = uabs32(v.x), u1 = uabs32(v.y), u2 = uabs32(v.z);
@@ -46,7 +66,7 @@ num v3_div_len(num x, vec3 v)
     int sh = num_clz32(mx) - 2;
     if (sh >= 0) { u0 <<= sh; u1 <<= sh; u2 <<= sh; }
     else { sh = -1; u0 >>= 1; u1 >>= 1; u2 >>= 1; }
-    uint64_t s = num_umul32(u0, u0) + num_umul32(u1, u1) + num_umul32(u2, u2);   /* in [2^58, 3 * 2^60) */
+    uint64_t s = sumsq3_30(u0, u1, u2);   /* in [2^58, 3 * 2^60] */
     /* t = s 4^z in [2^62, 2^64); y = num_rsqrt_q30(t / 2^32) ~ 2^46 / sqrt(t / 2^32)
      * (2^-17.4), one more Newton step as num_rsqrt takes it (2^-27 with the
      * truncations). 1 / sqrt(s) = y 2^(z - 62), so x / |v| in raw units is

@@ -54,6 +54,11 @@ num rt_compute_lighting(struct rt_state *rt, vec3 p, vec3 n, int unit_normal, ve
         len_v = v3_len(v);
         have_n = have_v = 1;
     }
+#if NUM_MODE == NUM_MODE_FIXED
+    /* |N_i| and |V_i| at most 2 (2^(F+1) raw): with |L_i| <= 2^26 raw the
+     * products below take 32-bit forms of the same values (rt_dot_small) */
+    int n_small = rt_v3_within(n, NUM_FRAC + 1), v_small = rt_v3_within(v, NUM_FRAC + 1);
+#endif
     for (uint16_t k = rt->amb_k; k < sc->nlights; k++) {
         const struct scene_light *lt = &sc->lights[k];
         if (lt->type == LIGHT_AMBIENT) {
@@ -94,7 +99,13 @@ num rt_compute_lighting(struct rt_state *rt, vec3 p, vec3 n, int unit_normal, ve
                 continue;
             }
         }
+#if NUM_MODE == NUM_MODE_FIXED
+        /* |N_i| <= 2^(F+1), |L_i| <= 2^26: |N.L| <= 3 * 2^27, |2 N.L| <= 3 * 2^28 */
+        int small = n_small && rt_v3_within(l, 26);
+        num n_dot_l = small ? rt_dot_small(n, l) : v3_dot(n, l);
+#else
         num n_dot_l = v3_dot(n, l);
+#endif
         if (o->diffuse && n_dot_l > 0) {
             num in = num_mul(lt->intensity, n_dot_l), q;
             if (unit_n < 0) unit_n = rt_near_unit_err(n, &unit_e);
@@ -111,8 +122,25 @@ num rt_compute_lighting(struct rt_state *rt, vec3 p, vec3 n, int unit_normal, ve
         }
         /* The demos run this step even when n.l <= 0; only shadows stop it. */
         if (o->specular && s >= 0) {
-            vec3 r = v3_sub(v3_scale(n, num_add(n_dot_l, n_dot_l)), l);   /* 2 N.L: a sum, the same bits */
-            num r_dot_v = v3_dot(r, v);
+            vec3 r;
+            num r_dot_v;
+#if NUM_MODE == NUM_MODE_FIXED
+            if (small) {
+                /* |N_i 2 N.L| / 2^F <= 2 * 3 * 2^28 < 2^31 - 2^26 - 1 and |L_i| <= 2^26: the
+                 * rounded products and the differences in 32 bits, never
+                 * saturating (the same bits as v3_scale and v3_sub) */
+                num m = 2 * n_dot_l;
+                r.x = num_mul_round32(n.x, m) - l.x;
+                r.y = num_mul_round32(n.y, m) - l.y;
+                r.z = num_mul_round32(n.z, m) - l.z;
+            } else {
+                r = v3_sub(v3_scale(n, num_add(n_dot_l, n_dot_l)), l);
+            }
+            r_dot_v = v_small && rt_v3_within(r, 28) ? rt_dot_small(v, r) : v3_dot(r, v);
+#else
+            r = v3_sub(v3_scale(n, num_add(n_dot_l, n_dot_l)), l);   /* 2 N.L: a sum, the same bits */
+            r_dot_v = v3_dot(r, v);
+#endif
             if (r_dot_v > 0) {
                 /* cos <= s_zero: pow(cos, s) is exactly 0, and so is the term */
                 if (rt->shortcuts && rt_coarse_cos_at_most(r, v, s_zero)) continue;

@@ -169,6 +169,24 @@ static inline uint64_t rt_usq32(uint32_t a)
 /* a^2 of a signed value (num_smul32(a, a)). */
 static inline int64_t rt_ssq32(int32_t a) { return (int64_t)rt_usq32(rt_uabs(a)); }
 
+/* 1 when every component of v lies in [-2^k, 2^k) (raw, k <= 30): v_i +
+ * 2^k in [0, 2^(k+1)) for each, so their bit-OR is below 2^(k+1). */
+static inline int rt_v3_within(vec3 v, int k)
+{
+    uint32_t b = (uint32_t)1 << k;
+    return (((uint32_t)v.x + b) | ((uint32_t)v.y + b) | ((uint32_t)v.z + b)) < 2 * b;
+}
+
+/* v3_dot(a, b) for |a_i| <= 2^(F+1) and |b_i| <= 2^28 (raw; rt_v3_within):
+ * each |a_i b_i| <= 2^(F+29), so each rounded product is <= 2^29 in
+ * magnitude, their sum at most 3 * 2^29 < 2^31: the 32-bit sum of the
+ * rounded products (num_mul_round32) is exact and v3_dot's saturation
+ * never acts. The same value in fewer instructions. */
+static inline num rt_dot_small(vec3 a, vec3 b)
+{
+    return num_mul_round32(a.x, b.x) + num_mul_round32(a.y, b.y) + num_mul_round32(a.z, b.z);
+}
+
 static inline uint32_t rt_umax3(uint32_t a, uint32_t b, uint32_t c)
 {
     uint32_t m = a > b ? a : b;

@@ -93,15 +93,10 @@ uint32_t num_rcp32(uint32_t dn)
     const uint32_t rh = num_rcp16(dn);
     const uint32_t a = (0u - dn) - rh * (dn >> 16), b = rh * (dn & 0xFFFFu);
     const uint32_t et = (a << 15) - ((b >> 1) + (b & 1u));
-    uint32_t v = (rh << 16) + (et >> 15) + (((et >> 16) * rh + (((et & 0xFFFFu) * rh) >> 16)) >> 15);
-    const uint64_t p = num_umul32(v, dn);
-    uint32_t rl = ~(uint32_t)p, rhi = ~dn - (uint32_t)(p >> 32);
-    while (rhi || rl >= dn) {
-        rhi -= rl < dn;
-        rl -= dn;
-        v++;
-    }
-    return v;
+    const uint32_t v = (rh << 16) + (et >> 15) + (((et >> 16) * rh + (((et & 0xFFFFu) * rh) >> 16)) >> 15);
+    /* 2^64 - 1 - 2^32 dn = ~dn 2^32 + 2^32 - 1, divided by dn from v */
+    uint32_t rl;
+    return num_udiv_step(v, ~dn, 0xFFFFFFFFu, dn, &rl);
 }
 
 #if !NUM_HW_DIV32

@@ -176,13 +176,13 @@ static inline struct num_udiv_pre num_udiv_pre_make(uint32_t d)
  * < 2 + (1 + 2^-31) (Nl < 2^32 <= 2 dn; 2^64 / dn - V < 1 + 1 / dn;
  * Nh < 2^32): q is at most 3 below the quotient, which the remainder
  * N - q dn (< 4 dn < 2^34) steps up to. */
-static inline uint32_t num_udiv64_32_pre(uint64_t n, const struct num_udiv_pre *p, uint32_t *rem)
+/* An estimate q of floor(N / dn), N = nh 2^32 + nl, never above it and
+ * with the remainder N - q dn below 2^32 dn (modulo 2^32 in q: the
+ * quotient's low word), stepped up to it by the remainder, in 32-bit halves
+ * (ARMv6-M has no 64-bit shifts or compares): the remainder rh 2^32 + rl,
+ * *rl_out its low word (then below dn). */
+static inline uint32_t num_udiv_step(uint32_t q, uint32_t nh, uint32_t nl, uint32_t dn, uint32_t *rl_out)
 {
-    /* in 32-bit halves (ARMv6-M has no 64-bit shifts or compares):
-     * N = nh 2^32 + nl, the remainder rh 2^32 + rl */
-    const uint32_t s = p->s, dn = p->dn, hi = (uint32_t)(n >> 32), lo = (uint32_t)n;
-    const uint32_t nh = s ? hi << s | lo >> (32 - s) : hi, nl = lo << s;
-    uint32_t q = nh + num_mulhi32(nh, p->v);
     const uint64_t qd = num_umul32(q, dn);
     const uint32_t ql = (uint32_t)qd;
     uint32_t rl = nl - ql, rh = nh - (uint32_t)(qd >> 32) - (nl < ql);
@@ -191,6 +191,17 @@ static inline uint32_t num_udiv64_32_pre(uint64_t n, const struct num_udiv_pre *
         rl -= dn;
         q++;
     }
+    *rl_out = rl;
+    return q;
+}
+
+static inline uint32_t num_udiv64_32_pre(uint64_t n, const struct num_udiv_pre *p, uint32_t *rem)
+{
+    /* N = n 2^s = nh 2^32 + nl */
+    const uint32_t s = p->s, hi = (uint32_t)(n >> 32), lo = (uint32_t)n;
+    const uint32_t nh = s ? hi << s | lo >> (32 - s) : hi, nl = lo << s;
+    uint32_t rl;
+    const uint32_t q = num_udiv_step(nh + num_mulhi32(nh, p->v), nh, nl, p->dn, &rl);
     if (rem) *rem = rl >> s;
     return q;
 }

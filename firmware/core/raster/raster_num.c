@@ -341,15 +341,8 @@ static num recip_pre(num z, const struct num_udiv_pre *p)
     const uint32_t s = p->s, dn = p->dn, k = 2 * NUM_FRAC + s;
     if (k < 32 || k > 62) return wnum_div(wnum_from_num(NUM_ONE), wnum_from_num(z));
     const uint32_t j = k - 32, nh = (uint32_t)1 << j;
-    uint32_t q = nh + (j ? p->v >> (32 - j) : 0);
-    const uint64_t qd = num_umul32(q, dn);
-    const uint32_t ql = (uint32_t)qd;
-    uint32_t rl = 0u - ql, rh = nh - (uint32_t)(qd >> 32) - (ql != 0);
-    while (rh || rl >= dn) {
-        rh -= rl < dn;
-        rl -= dn;
-        q++;
-    }
+    uint32_t rl;
+    const uint32_t q = num_udiv_step(nh + (j ? p->v >> (32 - j) : 0), nh, 0, dn, &rl);
     const uint32_t rm = rl >> s;
     if (q < (uint32_t)INT32_MAX || (q == (uint32_t)INT32_MAX && rm < p->d - rm)) return (num)q + (rm >= p->d - rm);
     return wnum_div(wnum_from_num(NUM_ONE), wnum_from_num(z));

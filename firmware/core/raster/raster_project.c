@@ -87,17 +87,17 @@ num ras_mul_div(num x, num z, num unproj)
     return wnum_div(num_mul_wide(x, z), wnum_from_num(unproj));
 }
 
-/* Screen position of a camera-space point inside the clip volume, in
- * sub-pixel units (y down): the default path's projection. */
+/* i as a num: num_from_int without its call where it cannot saturate. */
 static inline num centre_num(int32_t i)
 {
 #if NUM_MODE == NUM_MODE_FIXED
-    /* num_from_int without its call where it cannot saturate (i >= 0) */
     if (i >= 0 && i <= (INT32_MAX >> NUM_FRAC)) return (num)((uint32_t)i << NUM_FRAC);
 #endif
     return num_from_int(i);
 }
 
+/* Screen position of a camera-space point inside the clip volume, in
+ * sub-pixel units (y down): the default path's projection. */
 static void project_sub_xy(const struct ras_ctx *rc, num X, num Y, int32_t *sx, int32_t *sy)
 {
     num fx = num_add(centre_num(rc->w / 2), X);

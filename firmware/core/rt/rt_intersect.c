@@ -551,7 +551,7 @@ static int prim_sphere_hit(struct rt_state *rt, int16_t item, struct rt_ray *ray
             if (t2 > limit || (t2 == limit && !tie_first(&fr, hit, limit))) return 0;
             if (t_min < t2) {
                 hit->t = t2;
-                hit->fr.n = fr.n;
+                hit->fr.n = fr.n;   /* field by field: cheaper than the struct copy on ARMv6-M */
                 hit->fr.d = fr.d;
                 hit->item = hit->surf = item;
                 hit->flip = 0;

@@ -123,7 +123,6 @@ num rt_compute_lighting(struct rt_state *rt, vec3 p, vec3 n, int unit_normal, ve
         /* The demos run this step even when n.l <= 0; only shadows stop it. */
         if (o->specular && s >= 0) {
             vec3 r;
-            num r_dot_v;
 #if NUM_MODE == NUM_MODE_FIXED
             if (small) {
                 /* |N_i 2 N.L| / 2^F <= 2 * 3 * 2^28 < 2^31 - 2^26 - 1 and |L_i| <= 2^26: the
@@ -133,13 +132,13 @@ num rt_compute_lighting(struct rt_state *rt, vec3 p, vec3 n, int unit_normal, ve
                 r.x = num_mul_round32(n.x, m) - l.x;
                 r.y = num_mul_round32(n.y, m) - l.y;
                 r.z = num_mul_round32(n.z, m) - l.z;
-            } else {
-                r = v3_sub(v3_scale(n, num_add(n_dot_l, n_dot_l)), l);
-            }
-            r_dot_v = v_small && rt_v3_within(r, 28) ? rt_dot_small(v, r) : v3_dot(r, v);
+            } else
+#endif
+                r = v3_sub(v3_scale(n, num_add(n_dot_l, n_dot_l)), l);   /* 2 N.L: a sum, the same bits */
+#if NUM_MODE == NUM_MODE_FIXED
+            const num r_dot_v = v_small && rt_v3_within(r, 28) ? rt_dot_small(v, r) : v3_dot(r, v);
 #else
-            r = v3_sub(v3_scale(n, num_add(n_dot_l, n_dot_l)), l);   /* 2 N.L: a sum, the same bits */
-            r_dot_v = v3_dot(r, v);
+            const num r_dot_v = v3_dot(r, v);
 #endif
             if (r_dot_v > 0) {
                 /* cos <= s_zero: pow(cos, s) is exactly 0, and so is the term */

@@ -54,7 +54,11 @@ TESTS += tests/system/test_scene_fuzz.sh:$(FUZZ_SCENE):$(FUZZ_SECONDS)
 # --deps names every file the scene made it read (tools/scenec/scenec.c).
 # With an accuracy target (--min-psnr, the scene's quality block) it renders
 # the candidate methods on this host (tools/quality): every core bundle.
+# Its flash figure counts the types of the const data at the target's sizes
+# (--target-work's, the work probe's) or else at this host's fixed-point
+# build's (tools/scenec/scene_layout.c, compiled in fixed point here).
 $(SCENEC): $(call obj,host,double,tools/scenec/scenec.c tools/common/file_id.c tools/scene/scene_format.c $(SCENE_PARSER_SRCS)) \
+           $(call obj,host,fixed,tools/scenec/scene_layout.c) \
            $(call obj,host,none,tools/quality/quality.c) $(call core_bundles,host) \
            $(call core_frac_bundles,host)
 	@mkdir -p $(@D)
@@ -73,7 +77,7 @@ $(foreach f,$(SCENE_FILES),$(call scenec_rule,$(patsubst firmware/scenes/%.scene
 
 # The work probe: core + parser for the Cortex-M0+ at NUM_FRAC 12, run in
 # qemu-system-arm by tools/scenec/target_work.sh (file I/O by semihosting).
-SCENE_PROBE_SRCS := tools/scenec/work_probe.c tools/bench/startup.c $(CORE_SRCS) $(SCENE_SRCS)
+SCENE_PROBE_SRCS := tools/scenec/work_probe.c tools/scenec/scene_layout.c tools/bench/startup.c $(CORE_SRCS) $(SCENE_SRCS)
 SCENE_PROBE_OBJS := $(patsubst %.c,$(BUILD)/scenes/probe-obj/%.o,$(SCENE_PROBE_SRCS))
 $(BUILD)/scenes/probe-obj/%.o: %.c
 	@mkdir -p $(@D)

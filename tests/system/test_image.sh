@@ -26,7 +26,10 @@
 #   - a mesh (the 4,096-triangle knot of firmware/scenes/bench/, its OBJ
 #     next to it): built with the core its features need in SRAM (the
 #     default RP2040_RAM_TEXT), core 1 a sibling of core 0's context; its
-#     frame 0 on both emulated cores equals host_sim's.
+#     frame 0 on both emulated cores equals host_sim's; the flash scenec
+#     counted for the scene (its scenec-summary flash=, at the target's
+#     sizes) is what the linked image's map places in flash from the
+#     scene's object, within 1 %.
 # ~60 s (two cores). usage: test_image.sh BUILD_DIR
 set -u
 b=${1:-build}
@@ -221,6 +224,23 @@ if ! mk SCENES="$t/mesh/knot-4k-gouraud.scene" >"$t/r" 2>&1; then
   fail image_mesh_builds_with_its_features_in_sram "$(grep "^image" "$t/r" | head -n 1)"
 else
   pass "image_mesh_builds_with_its_features_in_sram ($(sed -n 's/.*the RP2040 two-core image has \([0-9]*\).*/\1/p;s/.* \([0-9]*\) bytes of RAM, .*/\1/p' "$t/r" | head -n 1))"
+  # the .rodata input sections of the scene's object at flash addresses (XIP, 0x10000000)
+  log=$(ls "$set_dir"/s*_knot_4k_gouraud.log 2>/dev/null | head -n 1)
+  est=$(sed -n 's/^scenec-summary .* flash=\([0-9]*\) .*/\1/p' "$log" 2>/dev/null)
+  linked=$(python3 -c '
+import re, sys
+obj, n = "/" + sys.argv[2], 0
+for m in re.finditer(r"^ (\.\S+)\s+(0x[0-9a-f]+)\s+(0x[0-9a-f]+)\s+(\S+\.o)$", open(sys.argv[1]).read(), re.M):
+    sec, addr, size, path = m.groups()
+    if sec.startswith(".rodata") and 0x10000000 <= int(addr, 16) < 0x20000000 and path.endswith(obj):
+        n += int(size, 16)
+print(n)' "$img.map" "$(basename "${log%.log}").o" 2>/dev/null)
+  if [ -n "$est" ] && [ "${linked:-0}" -gt 0 ] && [ $((est * 100)) -ge $((linked * 99)) ] &&
+     [ $((est * 100)) -le $((linked * 101)) ]; then
+    pass "image_scene_flash_as_linked (scenec $est bytes, the image's $linked)"
+  else
+    fail image_scene_flash_as_linked "scenec '$est' bytes, the image's map '$linked' ($log)"
+  fi
   frac=$(sed -n 's/^#define NUM_FRAC \([0-9][0-9]*\)$/\1/p' "$set_dir/num_frac.h")
   e=$(sim 1 "$t/knot")
   "$b/host_sim" --scene "$t/mesh/knot-4k-gouraud.scene" --size 240x240 --numeric fixed --num-frac "$frac" \

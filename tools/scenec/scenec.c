@@ -2,7 +2,7 @@
 /* scenec — compiles a scene file into C source for the firmware.
  *
  *   scenec [--size WxH] [--strip-rows N] [--fracs 20,...,12] [--id NAME]
- *          [--allow-wide] [--target-work BYTES[:SIBLING]] [--deps OUT.d]
+ *          [--allow-wide] [--target-work BYTES[:SIBLING[:LAYOUT]]] [--deps OUT.d]
  *          [--target NAME] [--ram-budget N[K|M]] [--flash-budget N[K|M]] [--min-psnr DB]
  *          [--fast-textures ram|flash] -o OUT.c SCENE
  *
@@ -25,6 +25,11 @@
  * core of this 64-bit host (core_api_fixed12), an upper bound: the work
  * structures hold pointers and sizes, 8 bytes here and 4 on the target, and
  * every other member has the same size and alignment on both.
+ * The flash the scene's const data takes is counted at the target's sizes
+ * of its types when --target-work carries them (LAYOUT, the work probe's
+ * sizeof of each, tools/scenec/scene_layout.h; target_work.sh prints all
+ * three fields), else at this host's fixed-point build's, an upper bound
+ * (its pointers take 8 bytes).
  * --deps OUT.d writes a make rule: OUT.c and OUT.h depend on the scene and on
  * every file it made scenec read (images, model and material files), each of
  * those also a target of its own, so that a file that is gone later asks for
@@ -54,6 +59,7 @@
 #include "core_api.h"
 #include "mipmap.h"
 #include "scene_format.h"
+#include "scene_layout.h"
 #include "scene_parse.h"
 #include "suggest.h"
 #include "tools/quality/quality.h"
@@ -119,7 +125,13 @@ static void tmp_discard(void)
             tmp_live[i] = 0;
         }
 }
-static size_t flash_bytes;      /* const data emitted, by sizeof of what we emit */
+static size_t flash_bytes;      /* const data emitted, at layout's sizes */
+/* The sizes the flash is counted at: the target's (--target-work's third
+ * field, the work probe's) or this host's fixed-point build's, an upper
+ * bound (tools/scenec/scene_layout.h); layout_of_target says which. */
+static struct scene_layout layout;
+static int layout_of_target;
+#define LSIZE(name) layout.size[SCENE_LAYOUT_##name]
 static size_t texture_bytes;    /* of which the textures' texels (every mip level) */
 static const char *outh_path;   /* OUT.h (NULL in the dry run) */
 static int fast_in_flash;       /* --fast-textures flash */
@@ -252,7 +264,7 @@ static void emit_lights(const struct scene *s)
         emit(" },\n");
     }
     emit("};\n\n");
-    flash_bytes += s->nlights * sizeof(struct scene_light);
+    flash_bytes += s->nlights * LSIZE(light);
 }
 
 static void emit_objects(const struct scene *s)
@@ -273,13 +285,13 @@ static void emit_objects(const struct scene *s)
             emit("    },\n");
         }
         emit("};\n\n");
-        flash_bytes += s->nobjects * sizeof(struct rt_object);
+        flash_bytes += s->nobjects * LSIZE(object);
     }
     if (s->ncsg) {
         emit("static const struct rt_csg csg[%d] = {\n", s->ncsg);
         for (int i = 0; i < s->ncsg; i++) emit("    { .op = %d, .a = %d, .b = %d },\n", s->csg[i].op, s->csg[i].a, s->csg[i].b);
         emit("};\n\n");
-        flash_bytes += s->ncsg * sizeof(struct rt_csg);
+        flash_bytes += s->ncsg * LSIZE(csg);
     }
 }
 
@@ -352,7 +364,7 @@ static void emit_textures(const struct scene *s)
             emit("static const uint8_t *const tex%d_mip[%d] = {", t, x->mip_levels);
             for (int l = 0; l < x->mip_levels; l++) emit(" tex%d_level%d,", t, l);
             emit(" };\n");
-            flash_bytes += x->mip_levels * sizeof(void *);
+            flash_bytes += x->mip_levels * LSIZE(ptr);
         }
         emit("\n");
     }
@@ -366,14 +378,14 @@ static void emit_textures(const struct scene *s)
             else emit("0 },\n");
         }
         emit("};\n\n");
-        flash_bytes += s->ntextures * sizeof(struct ras_texture);
+        flash_bytes += s->ntextures * LSIZE(texture);
         if (any_fast_tex(s)) {
             emit("static const void *const tex_fast[%d] = {", s->ntextures);
             for (int t = 0; t < s->ntextures; t++)
                 if (fast_tex(&s->textures[t])) emit(" tex%d_fast,", t);
                 else emit(" 0,");
             emit(" };\n\n");
-            flash_bytes += s->ntextures * sizeof(void *);
+            flash_bytes += s->ntextures * LSIZE(ptr);
         }
     }
 }
@@ -399,7 +411,7 @@ static void emit_model_data(const struct ras_model *md, int m)
         emit(" },\n");
     }
     emit("};\n\n");
-    flash_bytes += md->nverts * sizeof(vec3) + md->ntris * sizeof(struct ras_triangle) + strlen(md->name) + 1;
+    flash_bytes += md->nverts * LSIZE(vec3) + md->ntris * LSIZE(tri) + strlen(md->name) + 1;
 }
 
 static void emit_models(const struct scene *s)
@@ -416,7 +428,7 @@ static void emit_models(const struct scene *s)
             emit(", .bound_radius = %s },\n", lit(md->bound_radius));
         }
         emit("};\n\n");
-        flash_bytes += s->nmodels * sizeof(struct ras_model);
+        flash_bytes += s->nmodels * LSIZE(model);
     }
     if (s->ninstances) {
         emit("static const struct ras_instance instances[%d] = {\n", s->ninstances);
@@ -432,7 +444,7 @@ static void emit_models(const struct scene *s)
             emit(" },\n");
         }
         emit("};\n\n");
-        flash_bytes += s->ninstances * sizeof(struct ras_instance);
+        flash_bytes += s->ninstances * LSIZE(instance);
     }
 }
 
@@ -449,7 +461,7 @@ static void emit_primitives(const struct scene *s)
             emit(" },\n");
         }
         emit("};\n\n");
-        flash_bytes += s->nprims * sizeof(struct prim2d);
+        flash_bytes += s->nprims * LSIZE(prim);
     }
     if (s->nlines) {
         emit("static const struct line3d lines[%d] = {\n", s->nlines);
@@ -463,7 +475,7 @@ static void emit_primitives(const struct scene *s)
             emit(" },\n");
         }
         emit("};\n\n");
-        flash_bytes += s->nlines * sizeof(struct line3d);
+        flash_bytes += s->nlines * LSIZE(line);
     }
 }
 
@@ -500,7 +512,7 @@ static void emit_scene_struct(const struct scene *s, const char *id, unsigned fi
     if (any_fast_tex(s)) emit("    .tex_fast = tex_fast,\n");
     emit_members("    .ras = { ", ras_members, sizeof ras_members / sizeof ras_members[0], &s->ras);
     emit("};\n\n");
-    flash_bytes += sizeof(struct scene) + strlen(s->name) + 1;
+    flash_bytes += LSIZE(scene) + strlen(s->name) + 1;
 }
 
 static void emit_scene(const struct scene *s, const char *id, const char *src, int frac, unsigned fits,
@@ -691,9 +703,13 @@ static const char help_text[] =
     "                                firmware/scenes/ without .scene, other characters as _)\n"
     "  --allow-wide                  when no format of --fracs holds the scene, take the\n"
     "                                coarsest of them anyway instead of refusing it\n"
-    "  --target-work BYTES[:SIBLING] the renderer's work memory on the target (and of a\n"
+    "  --target-work BYTES[:SIBLING[:LAYOUT]]\n"
+    "                                the renderer's work memory on the target (and of a\n"
     "                                second core's context), as measured there (default:\n"
-    "                                this host's fixed-point core, an upper bound)\n"
+    "                                this host's fixed-point core, an upper bound); LAYOUT:\n"
+    "                                the target's sizes of the const data's types, which\n"
+    "                                the flash is counted at (tools/scenec/target_work.sh\n"
+    "                                prints all three)\n"
     "  --deps OUT.d                  also write a make rule: OUT.c and OUT.h depend on the\n"
     "                                scene and every file it made scenec read\n"
     "  --target NAME                 the budget of RAM and flash the scene must fit:\n"
@@ -819,6 +835,8 @@ static int parse_args(int argc, char **argv, struct args *a)
                                        "--chosen-scene", "--work-of-choice", "--allow-wide", "--fast-textures",
                                        "--help", NULL };
     memset(a, 0, sizeof *a);
+    scene_layout_of_build(&layout); /* (scene_layout.o is this host's fixed-point build: mk/scene.mk) */
+    layout_of_target = 0;
     a->width = a->height = 240;
     a->strip = 16;
     a->target_work = -1;
@@ -899,15 +917,23 @@ static int parse_args(int argc, char **argv, struct args *a)
                 return usage_error("bad --fast-textures '%s' (ram or flash)", val);
             fast_in_flash = !strcmp(val, "flash");
         } else if (!strcmp(opt, "--target-work")) {
-            char *colon = strchr(val, ':');
+            char *colon = strchr(val, ':'), *colon2 = colon ? strchr(colon + 1, ':') : NULL;
+            int bad_layout = 0;
             if (colon) *colon = 0;
+            if (colon2) *colon2 = 0;
             a->target_work = parse_int(val, 0, 0x7fffffffL);
             if (colon) {
                 *colon = ':';
                 a->target_sibling = parse_int(colon + 1, 0, 0x7fffffffL);
             }
-            if (a->target_work < 0 || (colon && a->target_sibling < 0))
-                return usage_error("bad --target-work '%s' (BYTES or BYTES:SIBLING, each 0..2147483647)", val);
+            if (colon2) {
+                *colon2 = ':';
+                bad_layout = scene_layout_parse(colon2 + 1, &layout) != 0;
+                layout_of_target = !bad_layout;
+            }
+            if (a->target_work < 0 || (colon && a->target_sibling < 0) || bad_layout)
+                return usage_error("bad --target-work '%s' (BYTES, BYTES:SIBLING or BYTES:SIBLING:LAYOUT, each byte "
+                                   "count 0..2147483647, LAYOUT as tools/scenec/target_work.sh prints it)", val);
         } else if (!strcmp(opt, "--deps")) {
             a->deps = val;
         } else if (!strcmp(opt, "--target")) {
@@ -1209,7 +1235,8 @@ static int write_outputs(const struct args *a, const struct scene *s, const char
 
 /* The scene against the budget (--target, --ram-budget, --flash-budget),
  * before anything is written: the flash its const data takes (a dry run of
- * the emission, this host's sizes: an upper bound of the target's) and the
+ * the emission, at the target's sizes or this host's fixed-point build's, an
+ * upper bound of the target's: layout) and the
  * RAM of its work memory. 0, or 2 after one line naming the need, the budget
  * and the option. */
 static int check_budget(const struct args *a, const struct scene *s, const char *id, int frac, unsigned fits,
@@ -1303,10 +1330,11 @@ int main(int argc, char **argv)
                  a.target->what, a.ram_budget, a.flash_budget);
     printf("  memory: RAM %zu bytes of work (%s; this host's core: %zu) + %zu bytes of strip (%dx%d, %d rows);\n"
            "    a second core's context (render_init_sibling) %zu bytes more;\n"
-           "    flash: the const data of %s, %zu bytes (%zu of textures; this host's sizes, an upper bound);\n"
+           "    flash: the const data of %s, %zu bytes (%zu of textures; %s);\n"
            "    %s\n",
            work, a.target_work >= 0 ? "the target's render_work_size" : "this host's render_work_size, an upper bound",
-           host_work, strip_bytes, a.width, a.height, a.strip, sibling, a.outc, flash_bytes, texture_bytes, budget);
+           host_work, strip_bytes, a.width, a.height, a.strip, sibling, a.outc, flash_bytes, texture_bytes,
+           layout_of_target ? "the target's sizes" : "this host's fixed-point sizes, an upper bound", budget);
     char feats[600] = "";
     for (int k = 0, n = 0; k < RENDER_FEATURE_COUNT; k++)
         if (scene_features >> k & 1u)

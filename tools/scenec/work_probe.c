@@ -6,8 +6,10 @@
  *
  *   qemu-system-arm -M mps2-an385 ... -semihosting-config \
  *       enable=on,target=native,arg=probe,arg=SCENE,arg=W,arg=H,arg=STRIP -kernel work_probe.elf
- *   -> "WORK <bytes>" and "SIBLING <bytes>" (render_sibling_work_size: the
- *      second core's context) (exit 0), or "ERROR <message>" (exit 1)
+ *   -> "WORK <bytes>", "SIBLING <bytes>" (render_sibling_work_size: the
+ *      second core's context) and "LAYOUT <sizes>" (the sizes of the types of
+ *      a compiled scene's const data on the target, tools/scenec/scene_layout.h:
+ *      scenec counts its flash with them) (exit 0), or "ERROR <message>" (exit 1)
  *
  * The file is read through semihosting (newlib's rdimon). The work layout
  * depends on the scene's counts and options, not on its numbers, and the
@@ -18,6 +20,7 @@
 #include <string.h>
 #include "bench.h"
 #include "render.h"
+#include "scene_layout.h"
 #include "scene_parse.h"
 
 void initialise_monitor_handles(void);
@@ -42,6 +45,12 @@ int bench_main(void)
     bench_put_u64(n);
     bench_puts("\nSIBLING ");
     bench_put_u64(m);
+    struct scene_layout l;
+    static char layout[400];
+    scene_layout_of_build(&l);
+    if (scene_layout_format(&l, layout, sizeof layout)) return bench_fail("layout text too long");
+    bench_puts("\nLAYOUT ");
+    bench_puts(layout);
     bench_puts("\n");
     return 0;
 }

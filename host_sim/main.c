@@ -837,6 +837,7 @@ struct frame_meas {
     unsigned long coarse_rays;
     uint64_t spi0, bus0;       /* the panel's counters before the frame */
     uint32_t sat0;             /* the core's saturations before it */
+    uint32_t shadow0;          /* the ray tracer's shadow rays before its full pass */
     uint32_t checksum;         /* FNV-1a of the frame's pixels (send_strips) */
     struct render_stats rs;
 };
@@ -1205,6 +1206,7 @@ static int render_frame(struct run_state *r, unsigned fi, struct frame_meas *m)
         m->render_us += m->coarse_us;
         c->api->set_pass(&c->ctx, RENDER_PASS_FULL);
     }
+    m->shadow0 = c->api->shadow_rays(&c->ctx);
     return send_strips(c, *r->pp, r->b->strip, r->b->rgb, fi, &m->rs, &m->render_us, &m->flush_us, &r->lv,
                        &m->checksum);
 }
@@ -1232,6 +1234,7 @@ static void print_frame_stats(const struct run_state *r, unsigned f, const struc
            (unsigned long long)(panel_out_spi_bytes(po) - m->spi0),
            (unsigned long)m->rs.triangles_in, (unsigned long)m->rs.triangles_drawn,
            (unsigned long)m->rs.rays, (unsigned long)(uint32_t)(*c->api->saturations - m->sat0));
+    printf(",\"shadow_rays\":%lu", (unsigned long)(uint32_t)(c->api->shadow_rays(&c->ctx) - m->shadow0));
     printf(",\"checksum\":%lu", (unsigned long)m->checksum);
     if (r->o->progressive)
         printf(",\"coarse_us\":%llu,\"coarse_rays\":%lu", (unsigned long long)m->coarse_us, m->coarse_rays);

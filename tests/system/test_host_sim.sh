@@ -209,7 +209,7 @@ stats_check() {
   python3 - "$1" "$2" <<'PY'
 import json, sys
 want = ["scene", "numeric", "width", "height", "frame", "render_us", "pixels_written",
-        "spi_bytes", "triangles_in", "triangles_drawn", "rays", "saturations", "checksum"]
+        "spi_bytes", "triangles_in", "triangles_drawn", "rays", "shadow_rays", "saturations", "checksum"]
 lines = open(sys.argv[1]).read().splitlines()
 n = int(sys.argv[2])
 if len(lines) != n:

@@ -5,6 +5,7 @@
 #include "scene_parse.h"
 #include "raytracer.h"
 #include "raster.h"
+#include "rt/rt_int.h"
 
 _Static_assert(CORE_SCENE_EINPUT == SCENE_EINPUT && CORE_SCENE_EIO == SCENE_EIO && CORE_SCENE_ENOMEM == SCENE_ENOMEM,
                "core_api.h repeats enum scene_status");
@@ -170,8 +171,13 @@ static void set_tex_fast(void *scene, const void *const *marks)
     s->tex_fast = marks;
 }
 
+static uint32_t shadow_rays(const struct render_ctx *ctx)
+{
+    return ctx->scene->kind == SCENE_RAYTRACE ? rt_state_of(ctx->work)->n.shadow_rays : 0;
+}
+
 const struct core_api API = {
     NUM_NAME, load, parse_text, read_text, free_scene, info, work_size, init, render_begin_frame, render_strip,
     &num_saturations, API_FRAC, format, exact_methods, render_set_pass, set_fits, decision_probe, move_camera,
-    sibling_work_size, instance_facing, features, set_tex_fast,
+    sibling_work_size, instance_facing, features, set_tex_fast, shadow_rays,
 };

@@ -107,6 +107,11 @@ struct core_api {
      * at no texels: for sizes only, never rendered with; the array stays
      * the caller's. */
     void (*set_tex_fast)(void *scene, const void *const *marks);
+    /* The shadow rays the ray tracer has traced since ctx was initialised
+     * (modulo 2^32: the difference of two readings counts those between;
+     * render_stats.rays counts the primary and reflected ones); 0 for a
+     * rasterized scene. */
+    uint32_t (*shadow_rays)(const struct render_ctx *ctx);
 };
 
 extern const struct core_api core_api_fixed, core_api_float, core_api_double;

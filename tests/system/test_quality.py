@@ -14,6 +14,11 @@
   cost_model.ORDER_GAP measured the other way by more than that), and every
   predicted cost is within cost_model.COST_BOUND[class] of the measured one
   (tools/quality/cost_model.py validate);
+- the ray tracer's unit of work is each candidate's own rays (primary,
+  reflected and shadow, x objects): the fixture's work is what host renders
+  of its rows' variants give now (cost_model.py work), and the compiler's
+  prediction of a ray-traced choice is the model's of that candidate's own
+  work;
 - for each lab scene (the held-out ones too), target (m0plus, m4f, rp2040)
   and accuracy target of tools/charts/lab.py, the choice meets the target on its own measured image,
   is a variant the lab measured, and costs at most 10 % more than the
@@ -94,9 +99,40 @@ def main():
                "%d methods; " % len(es) + "; ".join("%s predicted %.4g, measured %.4g, measured dearer than %s" % (
                    e["method"] or "(as written)", e["predicted"], e["measured"], e["inversions"]) for e in bad))
     fpsnr = {n: s["psnr_frames"] for n, s in fx["scenes"].items() if "psnr_frames" in s}
-    for e in quality.check(lab_host_sim, "firmware/scenes", fx["rows"], log=None, fpsnr=fpsnr):
+    choices = quality.check(lab_host_sim, "firmware/scenes", fx["rows"], log=None, fpsnr=fpsnr)
+    for e in choices:
         report("quality_choice_%s_%s_%g" % (re.sub(r"\W", "_", e["scene"]), e["target"], e["min_psnr"]), e["ok"],
                e["why"])
+
+    # the fixture's work, scenes' and ray-traced rows', recomputed from host renders
+    with open(FIXTURE) as f:
+        fresh = json.load(f)
+    stored = json.loads(json.dumps(fresh))
+    cost_model.add_work(lab_host_sim, "firmware/scenes", fresh)
+    stale = ["%s %s %s %r: %s, now %s" % (a["scene"], a["target"], a["numeric"], a["options"], a.get("work"), b["work"])
+             for a, b in zip(stored["rows"], fresh["rows"]) if a.get("work") != b["work"]]
+    stale += ["%s: %s, now %s" % (n, i["work"], fresh["scenes"][n]["work"]) for n, i in stored["scenes"].items()
+              if i["work"] != fresh["scenes"][n]["work"]]
+    own = sum(1 for r in fresh["rows"] if r["work"])
+    report("quality_fixture_work_current", not stale and own > 0,
+           "%d ray-traced rows with work; differs from host renders (make cost-model-refit): %s" % (own, stale[:3]))
+    # a ray-traced choice's prediction (host_sim) is the model's of the candidate's own work
+    labs = {s.name: s for s in cost_model.lab.LAB}
+    preds = {(e["scene"], e["target"], e["method"]): e["predicted"] for es in held.values() for e in es}
+    checked = []
+    for e in choices:
+        s = labs[e["scene"]]
+        if s.quality.cls not in cost_model.OWN_WORK or e["target"] == "rp2040" or s.quality.fit:
+            continue
+        with open("firmware/scenes/%s.scene" % s.name) as f:
+            text = f.read()
+        key = cost_model.lab.method_key({"options": " ".join(s.quality.apply + e["options"].split()), "strip": 16,
+                                         "variant": ""}, s, text, fx["scenes"][s.name]["keys"])
+        p = preds.get((s.name, e["target"], key))
+        checked.append((s.name, e["target"], key, e["predicted"], p))
+    bad = [c for c in checked if c[4] is None or abs(c[3] / c[4] - 1) > 1e-3]
+    report("quality_own_work_predictions", len(checked) >= 6 and not bad,
+           "%d choices; host_sim's prediction against the model's: %s" % (len(checked), bad[:3]))
 
     host_sim = sys.argv[3] if len(sys.argv) == 4 else host_sim
     with tempfile.TemporaryDirectory(prefix="cgfs-test-quality-") as tmp:

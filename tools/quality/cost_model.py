@@ -6,9 +6,15 @@ speed/accuracy lab's measurements (`make charts`, out/charts/pareto.csv).
   cost_model.py fixture --pareto out/charts/pareto.csv --host-sim build/host_sim --out tests/data/quality/lab.json
       the lab's rows the model and its test need, and each lab scene's work
       (host_sim --stats of the scene text the compiler chooses for, in each
-      numeric mode: rays x objects for the ray tracer, pixels written for
-      the rasterizer, the mean over the frames tools/quality checks), and for
-      a scene that animates each candidate's lowest PSNR over those frames
+      numeric mode: every ray the ray tracer traces (primary, reflected and
+      shadow rays) x objects, pixels written for the rasterizer, the mean
+      over the frames tools/quality checks), each ray-traced row's own work
+      (its variant's render: `work`), and for a scene that animates each
+      candidate's lowest PSNR over those frames
+  cost_model.py work --fixture tests/data/quality/lab.json --host-sim build/host_sim
+      the same work figures for the fixture's stored rows, written into it
+      (host renders only: no emulator runs; after a change to what a unit
+      of work counts)
   cost_model.py model --fixture tests/data/quality/lab.json [--write tools/quality/cost_model.def | --check FILE]
       the model from the fixture: written, or compared with FILE (exit 1
       when it differs)
@@ -25,7 +31,20 @@ numeric mode n is
 per_work: the base method's cost a frame over its work, the geometric mean
 over the lab's scenes of that class; factor: the method's cost over the
 base method's on the same scene, target and mode, geometric mean over the
-lab's scenes of that class. RP2040 cycles: the Cortex-M0+ factors, and
+lab's scenes of that class. The ray tracer's classes (OWN_WORK) take each
+candidate's own work instead of the scene's: the rays of its own render
+(primary, reflected and shadow rays, x objects), so that what a method
+leaves out (reflections, pixels it interpolates) is counted, not guessed.
+Their per_work is the base method's cost over its own work (every pixel
+traced), and a method's factor is instead its work beyond its rays, per
+pixel: (its cost / per_work - its work) / pixels, the arithmetic mean over
+the lab's scenes of that class (the adaptive methods' interpolation and
+tests, which their rays do not count; negative where a ray costs less than
+the base method's do on average). Predicted:
+
+    per_work[T, class, n] x (work(candidate, n) + factor x pixels)
+
+at least a tenth of per_work x work(candidate, n). RP2040 cycles: the Cortex-M0+ factors, and
 per_work the M0+'s times rho, the geometric mean of RP2040 cycles over M0+
 instructions of the lab's variants measured on both (rp2040js runs the
 firmware's own images, SPI and XIP cache included).
@@ -47,6 +66,13 @@ import scenetext  # noqa: E402
 
 TARGETS = {"m0plus-qemu": "m0plus", "m4f-qemu": "m4f", "rp2040-sim": "rp2040"}
 COLS = ["scene", "variant", "target", "cost", "psnr", "unit", "numeric", "format", "options", "strip"]
+# Classes whose unit of work is each candidate's own render's (quality.c: the
+# ray tracer's candidates are all rendered before they are ordered): the
+# fixture's rows of their scenes carry it (`work`).
+OWN_WORK = ("rt", "rt-reflective")
+# The lab's render size (scene_work: host_sim --size): the pixels of a
+# factor of an OWN_WORK class.
+PIXELS = 240 * 240
 # A held-out scene's predictions (cost_model.py validate). What decides the
 # choice is the order of the candidates' costs (the scene's work and the
 # class's cost per unit of work scale them all alike): two candidates the
@@ -61,7 +87,9 @@ COST_BOUND = {"rt": 2.0, "rt-reflective": 2.0, "lit": 8.0, "textured": 3.0}
 
 
 def scene_work(host_sim, text, numeric):
-    """Mean work a frame over the frames checked (quality.c render_text)."""
+    """Mean work a frame over the frames checked (quality.c render_text):
+    the ray tracer's rays (primary and reflected) and shadow rays x objects,
+    else the pixels written."""
     toks = scenetext._tokens(text)
     objs = sum(len(scenetext._blocks(toks, k)) for k in ("sphere", "plane", "triangle"))
     with tempfile.TemporaryDirectory(prefix="cgfs-quality-") as tmp:
@@ -76,7 +104,8 @@ def scene_work(host_sim, text, numeric):
     ws = []
     for st in stats:
         if st["frame"] in pick:
-            ws.append(st["rays"] * max(objs, 1) if st["rays"] else st["pixels_written"])
+            rays = st["rays"] + st["shadow_rays"]
+            ws.append(rays * max(objs, 1) if rays else st["pixels_written"])
     return sum(ws) / len(ws)
 
 
@@ -96,27 +125,63 @@ def measure(args):
     write_fixture(args, [{k: cell(k, r.get(k)) for k in COLS} for r in rows])
 
 
+def add_work(host_sim, scenes_dir, out):
+    """Each lab scene's work (out["scenes"][name]["work"], by numeric mode)
+    and each row's own work (`work`: the variant the compiler would render
+    for it, in its numeric mode; OWN_WORK classes' rows, "" otherwise)."""
+    rows = out["rows"]
+    texts = {}
+    for s in lab.LAB:
+        if not s.quality:
+            continue
+        with open(os.path.join(scenes_dir, s.name + ".scene")) as f:
+            texts[s.name] = f.read()
+        qt = s.quality.text(texts[s.name])
+        modes = ("fixed", "float", "double") if s.quality.fit else ("fixed",)
+        work = {n: scene_work(host_sim, qt, n) for n in modes}
+        info = out["scenes"].setdefault(s.name, {})
+        info.update({"class": s.quality.cls, "work": work, "keys": lab.variant_keys(rows, s.name),
+                     "fit": s.quality.fit})
+    labs = {s.name: s for s in lab.LAB}
+    cache = {}
+    for r in rows:
+        s = labs.get(r["scene"])
+        r["work"] = ""
+        if not s or not s.quality or s.quality.cls not in OWN_WORK or r["target"] == "rp2040-sim":
+            continue
+        k = lab.method_key(r, s, texts[s.name], out["scenes"][s.name]["keys"])
+        if k is None:
+            continue
+        if (s.name, k, r["numeric"]) not in cache:
+            vt = scenetext.apply(s.quality.text(texts[s.name]), k.split())
+            cache[(s.name, k, r["numeric"])] = scene_work(host_sim, vt, r["numeric"])
+        r["work"] = "%.10g" % cache[(s.name, k, r["numeric"])]
+
+
 def write_fixture(args, rows):
     labs = {s.name: s for s in lab.LAB}
     rows = [{k: r[k] for k in COLS} for r in rows if lab.quality_row(r, labs.get(r["scene"]))]
     out = {"scenes": {}, "rows": rows}
-    for s in lab.LAB:
-        if not s.quality:
-            continue
-        with open(os.path.join(args.scenes, s.name + ".scene")) as f:
-            text = f.read()
-        qt = s.quality.text(text)
-        modes = ("fixed", "float", "double") if s.quality.fit else ("fixed",)
-        work = {n: scene_work(args.host_sim, qt, n) for n in modes}
-        out["scenes"][s.name] = {"class": s.quality.cls, "work": work, "keys": lab.variant_keys(rows, s.name),
-                                 "fit": s.quality.fit}
+    add_work(args.host_sim, args.scenes, out)
     for name, ps in quality.frames_psnr(args.host_sim, args.scenes, rows).items():
         out["scenes"][name]["psnr_frames"] = {k: round(v, 3) for k, v in ps.items()}
-    with open(args.out + ".tmp", "w") as f:
+    save_fixture(out, args.out)
+
+
+def refresh_work(args):
+    """The work of the fixture's stored rows and scenes, recomputed (host renders only)."""
+    with open(args.fixture) as f:
+        out = json.load(f)
+    add_work(args.host_sim, args.scenes, out)
+    save_fixture(out, args.fixture)
+
+
+def save_fixture(out, path):
+    with open(path + ".tmp", "w") as f:
         json.dump(out, f, indent=0, sort_keys=True)
         f.write("\n")
-    os.replace(args.out + ".tmp", args.out)
-    print("cost_model: %d rows, %d scenes -> %s" % (len(rows), len(out["scenes"]), args.out))
+    os.replace(path + ".tmp", path)
+    print("cost_model: %d rows, %d scenes -> %s" % (len(out["rows"]), len(out["scenes"]), path))
 
 
 def gmean(xs):
@@ -124,8 +189,11 @@ def gmean(xs):
 
 
 def keyed_rows(fx, scenes_dir):
-    """(scene, target, numeric, method key) -> cost, for the rows the model uses."""
+    """(scene, target, numeric, method key) -> cost, for the rows the model
+    uses; and (scene, numeric, method key) -> the row's own work (OWN_WORK
+    classes), in fx["own_work"]."""
     by = {}
+    own = fx.setdefault("own_work", {})
     texts = {}
     for s in lab.LAB:
         with open(os.path.join(scenes_dir, s.name + ".scene")) as f:
@@ -139,6 +207,8 @@ def keyed_rows(fx, scenes_dir):
         if k is None:
             continue
         by.setdefault((r["scene"], TARGETS[r["target"]], r["numeric"], k), float(r["cost"]))
+        if r.get("work"):
+            own.setdefault((r["scene"], r["numeric"], k), float(r["work"]))
     return by, texts
 
 
@@ -180,10 +250,26 @@ def fit(fx, by, texts, scenes):
         if b is None:
             continue
         cls = info["class"]
+        if cls in OWN_WORK:
+            # per its own work: the base method's, and each method's over it
+            wb, wk = own_work(fx, scene, n, bk), own_work(fx, scene, n, k)
+            if k == bk:
+                base.setdefault((t, cls, n), []).append(b / wb)
+            meth.setdefault((t, cls, n, k), []).append(0.0 if k == bk else (cost * wb / b - wk) / PIXELS)
+            continue
         if k == bk:
             base.setdefault((t, cls, n), []).append(b / info["work"][n])
         meth.setdefault((t, cls, n, k), []).append(cost / b)
     return base, meth
+
+
+def own_work(fx, scene, numeric, key):
+    """The work of a ray-traced row's own render (the fixture's `work`)."""
+    w = fx["own_work"].get((scene, numeric, key))
+    if w is None:
+        raise SystemExit("cost_model: %s, %s, %r: no work of its own in the fixture (cost_model.py work)" %
+                         (scene, numeric, key or "(as written)"))
+    return w
 
 
 def fitted(fx):
@@ -228,10 +314,21 @@ def lighting(base, meth, shade, t, cls, n, shading):
     return gmean(base[(t, "lit", n)]) * (gmean(f[shading]) - gmean(f[cs]))
 
 
-def predicted(base, meth, shade, t, cls, n, shading, work, factor):
+def term(cls, xs):
+    """A model term of the lab scenes' values xs: the geometric mean, or the
+    arithmetic one of an OWN_WORK class's factors (work a pixel, of either
+    sign)."""
+    return sum(xs) / len(xs) if cls in OWN_WORK else gmean(xs)
+
+
+def predicted(base, meth, shade, t, cls, n, shading, work, factor, pixels=PIXELS):
     """A method's predicted cost (quality.c): (the class's cost per unit of
     work x the method's factor + lighting) x work, at least a tenth of the
-    first term."""
+    first term; OWN_WORK classes: the class's cost per unit of work x (the
+    candidate's work + factor x pixels), at least a tenth of per_work x
+    work."""
+    if cls in OWN_WORK:
+        return gmean(base[(t, cls, n)]) * max(work + factor * pixels, 0.1 * work)
     pw = gmean(base[(t, cls, n)]) * factor
     return max(pw + lighting(base, meth, shade, t, cls, n, shading), 0.1 * pw) * work
 
@@ -247,28 +344,38 @@ def model(fx, scenes_dir):
              " * from the lab's measurements (make charts). Do not edit.",
              " *",
              " * QUALITY_BASE(target, class, numeric, per_work, scenes): instructions (rp2040: cycles) a frame",
-             " *   of the class's base method per unit of work (rays x objects; pixels written), the geometric",
-             " *   mean over `scenes` lab scenes; rp2040: the M0+'s times rho = %.4f (%d variants measured on both)." % (r, nr),
+             " *   of the class's base method per unit of work (ray tracer: its rays, primary, reflected and",
+             " *   shadow, x objects; rasterizer: pixels written), the geometric mean over `scenes` lab scenes;",
+             " *   rp2040: the M0+'s times rho = %.4f (%d variants measured on both)." % (r, nr),
              " * QUALITY_METHOD(target, class, numeric, options, factor, scenes): a candidate method, its cost",
              " *   over the base method's (geometric mean over `scenes` lab scenes); the RP2040 takes the M0+'s.",
+             " *   QUALITY_OWN_WORK classes: its work beyond its own render's rays, a pixel (arithmetic mean).",
              " * QUALITY_SHADING(class, shading): the shading the class's lab scenes write (textured classes:",
              " *   a scene shaded otherwise has the lit class's per-pixel lighting added or taken out, whatever",
              " *   the method).",
+             " * QUALITY_OWN_WORK(class): a class whose candidates are each rendered first and predicted from",
+             " *   their own work: per_work x (the candidate's work + factor x its pixels), at least a tenth of",
+             " *   per_work x its work.",
              " */",
              "#ifndef QUALITY_BASE", "#define QUALITY_BASE(target, cls, numeric, per_work, scenes)", "#endif",
              "#ifndef QUALITY_METHOD", "#define QUALITY_METHOD(target, cls, numeric, options, factor, scenes)",
-             "#endif", "#ifndef QUALITY_SHADING", "#define QUALITY_SHADING(cls, shading)", "#endif", ""]
+             "#endif", "#ifndef QUALITY_SHADING", "#define QUALITY_SHADING(cls, shading)", "#endif",
+             "#ifndef QUALITY_OWN_WORK", "#define QUALITY_OWN_WORK(cls)", "#endif", ""]
     for (t, cls, n), xs in sorted(base.items()):
         lines.append('QUALITY_BASE("%s", "%s", "%s", %.6g, %d)' % (t, cls, n, gmean(xs), len(xs)))
         if t == "m0plus" and n == "fixed":
             lines.append('QUALITY_BASE("rp2040", "%s", "%s", %.6g, %d)' % (cls, n, gmean(xs) * r, len(xs)))
     lines.append("")
     for (t, cls, n, k), xs in sorted(meth.items()):
-        lines.append('QUALITY_METHOD("%s", "%s", "%s", "%s", %.6g, %d)' % (t, cls, n, k, gmean(xs), len(xs)))
+        lines.append('QUALITY_METHOD("%s", "%s", "%s", "%s", %.6g, %d)' % (t, cls, n, k, term(cls, xs), len(xs)))
+    lines.append("")
+    for cls in OWN_WORK:
+        lines.append('QUALITY_OWN_WORK("%s")' % cls)
     lines.append("")
     for cls, sh in sorted(shade.items()):
         lines.append('QUALITY_SHADING("%s", "%s")' % (cls, sh))
-    lines += ["", "#undef QUALITY_BASE", "#undef QUALITY_METHOD", "#undef QUALITY_SHADING", ""]
+    lines += ["", "#undef QUALITY_BASE", "#undef QUALITY_METHOD", "#undef QUALITY_SHADING", "#undef QUALITY_OWN_WORK",
+              ""]
     return "\n".join(lines)
 
 
@@ -285,9 +392,16 @@ def predictions(fx, by, texts, scene, base, meth, shade):
         if sc != scene or nn != n or (t, cls, n) not in base or (t, cls, n, k) not in meth:
             continue
         b = by.get((scene, t, n, bk))
-        f = gmean(meth[(t, cls, n, k)])
-        out[(t, k)] = (predicted(base, meth, shade, t, cls, n, shading_of(texts[scene]), info["work"][n], f), cost, f,
-                       cost / b if b else None)
+        f = term(cls, meth[(t, cls, n, k)])
+        work = own_work(fx, scene, n, k) if cls in OWN_WORK else info["work"][n]
+        p = predicted(base, meth, shade, t, cls, n, shading_of(texts[scene]), work, f)
+        if cls in OWN_WORK:
+            # the method's work (its rays and the factor's) from the fitted
+            # factor over that from this scene's own: 1 for the base method
+            fm = (cost * own_work(fx, scene, n, bk) / b - work) / PIXELS if b else None
+            out[(t, k)] = (p, cost, work + f * PIXELS, work + fm * PIXELS if fm is not None else None)
+        else:
+            out[(t, k)] = (p, cost, f, cost / b if b else None)
     return out
 
 
@@ -369,6 +483,10 @@ def main():
     v.add_argument("--fixture", required=True)
     v.add_argument("--scenes", default="firmware/scenes")
     v.add_argument("--csv")
+    w = sub.add_parser("work")
+    w.add_argument("--fixture", required=True)
+    w.add_argument("--host-sim", required=True)
+    w.add_argument("--scenes", default="firmware/scenes")
     b = sub.add_parser("model")
     b.add_argument("--fixture", required=True)
     b.add_argument("--scenes", default="firmware/scenes")
@@ -380,6 +498,8 @@ def main():
         return make_fixture(args)
     if args.cmd == "measure":
         return measure(args)
+    if args.cmd == "work":
+        return refresh_work(args)
     with open(args.fixture) as f:
         fx = json.load(f)
     if args.cmd == "validate":

@@ -37,7 +37,21 @@ static const struct shading_row shading_rows[] = {
 #define QUALITY_SHADING(cls, shading) { cls, shading },
 #include "cost_model.def"
 };
+/* Classes whose candidates are predicted from their own work (each one
+ * rendered first): per_work x (its work + factor x its pixels). */
+static const char *const own_work_classes[] = {
+#define QUALITY_OWN_WORK(cls) cls,
+#include "cost_model.def"
+    NULL
+};
 #define NROWS(a) (sizeof(a) / sizeof((a)[0]))
+
+static int own_work(const char *cls)
+{
+    for (size_t i = 0; own_work_classes[i]; i++)
+        if (!strcmp(own_work_classes[i], cls)) return 1;
+    return 0;
+}
 
 static const struct base_row *base_row(const char *target, const char *cls, const char *numeric)
 {
@@ -333,7 +347,7 @@ static void pick_frames(unsigned total, struct frames *fr)
 
 struct render_out {
     uint8_t *rgb; /* fr.n frames of w*h*3 */
-    double work;  /* the scene's work a frame (see quality.h) */
+    double work;  /* the render's work a frame (see quality.h) */
     int num_frac;
 };
 
@@ -378,6 +392,7 @@ static int render_text(const struct quality_request *rq, const char *text, size_
     for (unsigned k = 0; k < fr->n && !rc; k++) {
         struct render_stats st = { 0 };
         uint8_t *rgb = out->rgb + k * npx * 3;
+        uint32_t shadow0 = api->shadow_rays(&ctx);
         if (api->begin_frame(&ctx, (uint16_t)fr->f[k])) {
             snprintf(msg, msglen, "frame %u failed", fr->f[k]);
             rc = -1;
@@ -390,8 +405,11 @@ static int render_text(const struct quality_request *rq, const char *text, size_
                 rc = -1;
             }
         }
-        work_sum += info.kind == SCENE_RAYTRACE ? (double)st.rays * (info.nobjects > 1 ? info.nobjects : 1)
-                                                : (double)st.pixels_written;
+        /* the ray tracer's every ray: primary, reflected and shadow rays */
+        uint32_t shadow = api->shadow_rays(&ctx) - shadow0;
+        work_sum += info.kind == SCENE_RAYTRACE
+                        ? ((double)st.rays + (double)shadow) * (info.nobjects > 1 ? info.nobjects : 1)
+                        : (double)st.pixels_written;
     }
     out->work = work_sum / fr->n;
     free(work);
@@ -417,6 +435,7 @@ static double psnr888(const uint8_t *a, const uint8_t *b, size_t npx)
 struct cand {
     const struct method_row *m;
     double predicted, psnr;
+    double work; /* its render's work a frame (ray tracer: the unit of its cost) */
     unsigned worst_frame;
     int num_frac, failed; /* failed: did not render (msg) */
     char msg[200];
@@ -466,6 +485,70 @@ static void changed(const struct quality_request *rq, const char *renderer, cons
 }
 
 static const char *shown(const char *options) { return *options ? options : "(the scene as written)"; }
+
+/* The scene text with every option of `options` set, one after the other
+ * (malloc'd; NULL: an option cannot be set, or memory), *len its length. */
+static char *cand_text(const struct quality_request *rq, const char *renderer, const char *options, size_t *len)
+{
+    char opts[256], *save = NULL, *t = NULL;
+    size_t tl = rq->len;
+    snprintf(opts, sizeof opts, "%s", options);
+    for (char *p = strtok_r(opts, " ", &save); p; p = strtok_r(NULL, " ", &save)) {
+        char *n = quality_set_option(t ? t : rq->text, t ? tl : rq->len, renderer, p, &tl);
+        free(t);
+        t = n;
+        if (!n) return NULL;
+    }
+    if (!t) { /* no option: the scene as written */
+        t = malloc(rq->len + 1);
+        if (!t) return NULL;
+        memcpy(t, rq->text, rq->len);
+        t[rq->len] = 0;
+    }
+    *len = tl;
+    return t;
+}
+
+/* Candidate x rendered in the request's mode (into got) and measured
+ * against ref: its lowest PSNR over the frames checked, that frame, its
+ * format and its work; x->failed with x->msg when it cannot be set or does
+ * not render. *text (when text is not NULL): its scene text (NULL: the scene
+ * as written). 0, or -2 (memory). */
+static int measure(const struct quality_request *rq, const char *renderer, struct cand *x, const struct frames *fr,
+                   struct render_out *got, const struct render_out *ref, char **text, size_t *len)
+{
+    size_t fbytes = (size_t)rq->width * rq->height * 3, tl = rq->len;
+    char *t = NULL;
+    if (x->m->options[0] && !(t = cand_text(rq, renderer, x->m->options, &tl))) {
+        x->failed = 1;
+        snprintf(x->msg, sizeof x->msg, "cannot set %s", x->m->options);
+        return 0;
+    }
+    int r = render_text(rq, t ? t : rq->text, t ? tl : rq->len, rq->numeric, 0, fr, got, x->msg, sizeof x->msg);
+    if (r) {
+        free(t);
+        if (r == -2) return -2;
+        x->failed = 1;
+        return 0;
+    }
+    x->num_frac = got->num_frac;
+    x->work = got->work;
+    x->psnr = INFINITY;
+    for (unsigned k = 0; k < fr->n; k++) {
+        double p = psnr888(got->rgb + k * fbytes, ref->rgb + k * fbytes, (size_t)rq->width * rq->height);
+        if (p < x->psnr) {
+            x->psnr = p;
+            x->worst_frame = fr->f[k];
+        }
+    }
+    if (text) {
+        *text = t;
+        *len = tl;
+    } else {
+        free(t);
+    }
+    return 0;
+}
 
 int quality_choose(const struct quality_request *rq, struct quality_choice *ch, char *err, size_t errlen)
 {
@@ -534,7 +617,6 @@ int quality_choose(const struct quality_request *rq, struct quality_choice *ch, 
     struct render_out ref = { 0 }, got = { 0 };
     ref.rgb = malloc(fbytes * fr.n);
     got.rgb = malloc(fbytes * fr.n);
-    char *cand_text = NULL;
     int rc = ref.rgb && got.rgb ? 0 : QUALITY_EINTERNAL;
     char msg[600];
     /* the scene's work, as written, in the image's mode */
@@ -546,11 +628,6 @@ int quality_choose(const struct quality_request *rq, struct quality_choice *ch, 
     char shading[PART] = "none";
     if (in.kind != SCENE_RAYTRACE) scene_sets(rq->text, rq->len, renderer, "shading=x", shading, sizeof shading);
     double light = base ? lighting_per_work(base, mt, shading) : 0;
-    for (int i = 0; i < nc; i++) { /* cost_model.py predicted */
-        double pw = base->per_work * c[i].m->factor;
-        c[i].predicted = (pw + light > 0.1 * pw ? pw + light : 0.1 * pw) * work;
-    }
-    qsort(c, (size_t)nc, sizeof *c, by_cost);
     /* the reference: double, exact methods, trilinear where the scene sets no filter */
     char *ref_text = NULL;
     size_t ref_len = rq->len;
@@ -591,62 +668,58 @@ int quality_choose(const struct quality_request *rq, struct quality_choice *ch, 
                 rq->width, rq->height, why_kept[0] ? "; kept as the scene sets it: " : "", why_kept,
                 why_kept[0] ? " (and any other key it sets)" : "");
     }
+    /* a class predicted from each candidate's own work (the ray tracer's:
+       its rays): every one is rendered before they are ordered */
+    int own = own_work(cls);
     int chosen = -1, best = -1;
-    for (int i = 0; i < nc && !rc && chosen < 0; i++) {
-        const char *o = c[i].m->options;
-        size_t tl = rq->len;
-        char *t = NULL;
-        free(cand_text);
-        cand_text = NULL;
-        /* every option of the candidate, one after the other */
-        char opts[256], *save = NULL;
-        snprintf(opts, sizeof opts, "%s", o);
-        int bad = 0;
-        for (char *p = strtok_r(opts, " ", &save); p && !bad; p = strtok_r(NULL, " ", &save)) {
-            char *n = quality_set_option(t ? t : rq->text, t ? tl : rq->len, renderer, p, &tl);
-            free(t);
-            t = n;
-            bad = !n;
-        }
-        if (bad) {
-            c[i].failed = 1;
-            snprintf(c[i].msg, sizeof c[i].msg, "cannot set %s", o);
-            continue;
-        }
-        cand_text = t;
-        const char *ct = t ? t : rq->text;
-        size_t cl = t ? tl : rq->len;
+    for (int i = 0; own && i < nc && !rc; i++) {
         ch->rendered++;
-        int r = render_text(rq, ct, cl, rq->numeric, 0, &fr, &got, c[i].msg, sizeof c[i].msg);
-        if (r == -2) {
+        if (measure(rq, renderer, &c[i], &fr, &got, &ref, NULL, NULL) == -2) {
             rc = QUALITY_EINTERNAL;
             snprintf(err, errlen, "out of memory");
-            break;
         }
-        if (r) {
-            c[i].failed = 1;
-            continue;
-        }
-        c[i].num_frac = got.num_frac;
-        c[i].psnr = INFINITY;
-        for (unsigned k = 0; k < fr.n; k++) {
-            double p = psnr888(got.rgb + k * fbytes, ref.rgb + k * fbytes, (size_t)rq->width * rq->height);
-            if (p < c[i].psnr) {
-                c[i].psnr = p;
-                c[i].worst_frame = fr.f[k];
+    }
+    double npx = (double)rq->width * rq->height;
+    for (int i = 0; i < nc; i++) { /* cost_model.py predicted */
+        double pw = base->per_work * c[i].m->factor, w = c[i].work + c[i].m->factor * npx;
+        if (c[i].failed) c[i].predicted = HUGE_VAL;
+        else if (own) c[i].predicted = base->per_work * (w > 0.1 * c[i].work ? w : 0.1 * c[i].work);
+        else c[i].predicted = (pw + light > 0.1 * pw ? pw + light : 0.1 * pw) * work;
+    }
+    qsort(c, (size_t)nc, sizeof *c, by_cost);
+    for (int i = 0; own && !rc && i < nc; i++) /* the most accurate, for the message when none reaches it */
+        if (!c[i].failed && (best < 0 || c[i].psnr > c[best].psnr)) best = i;
+    for (int i = 0; i < nc && !rc && chosen < 0; i++) {
+        char *t = NULL;
+        size_t tl = rq->len;
+        if (!own) {
+            ch->rendered++;
+            int r = measure(rq, renderer, &c[i], &fr, &got, &ref, &t, &tl);
+            if (r == -2) {
+                rc = QUALITY_EINTERNAL;
+                snprintf(err, errlen, "out of memory");
+                break;
+            }
+            if (!c[i].failed && (best < 0 || c[i].psnr > c[best].psnr)) best = i;
+        } else if (!c[i].failed && c[i].psnr >= rq->min_psnr && c[i].m->options[0]) {
+            t = cand_text(rq, renderer, c[i].m->options, &tl);
+            if (!t) {
+                rc = QUALITY_EINTERNAL;
+                snprintf(err, errlen, "out of memory");
+                break;
             }
         }
-        if (best < 0 || c[i].psnr > c[best].psnr) best = i;
-        if (c[i].psnr >= rq->min_psnr) {
+        if (!c[i].failed && c[i].psnr >= rq->min_psnr) {
             chosen = i;
             ch->text = t ? t : malloc(rq->len + 1);
             if (!t && ch->text) {
                 memcpy(ch->text, rq->text, rq->len);
                 ch->text[rq->len] = 0;
             }
-            cand_text = NULL;
-            ch->len = cl;
+            ch->len = t ? tl : rq->len;
             if (!ch->text) rc = QUALITY_EINTERNAL;
+        } else {
+            free(t);
         }
     }
     ch->candidates = nc;
@@ -700,7 +773,6 @@ int quality_choose(const struct quality_request *rq, struct quality_choice *ch, 
                     tname, rq->min_psnr, ch->options, rq->numeric, x->num_frac, x->predicted, ps, nc, ch->rendered);
         }
     }
-    free(cand_text);
     free(ref_text);
     free(ref.rgb);
     free(got.rgb);

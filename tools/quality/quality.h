@@ -12,19 +12,23 @@
  *               key the scene sets itself (kept as the user wrote it);
  *   cost        predicted: the class's cost per unit of work on the target
  *               times the scene's work (host render of the scene as written:
- *               rays times objects for the ray tracer, pixels written for the
- *               rasterizer) times the method's factor against the class's
- *               base method (a textured scene shaded otherwise than its
- *               class's lab scenes: the lit class's per-pixel lighting added
- *               to each unit of work, or taken out);
+ *               pixels written) times the method's factor against the
+ *               class's base method (a textured scene shaded otherwise than
+ *               its class's lab scenes: the lit class's per-pixel lighting
+ *               added to each unit of work, or taken out); the ray tracer's
+ *               classes (QUALITY_OWN_WORK): the class's cost per unit of work
+ *               times the candidate's own work (its host render's rays,
+ *               primary, reflected and shadow, times objects) plus the
+ *               method's work beyond its rays a pixel times the pixels;
  *   accuracy    measured: each candidate rendered on the host in the image's
  *               numeric mode against the double build with the exact methods
  *               (perspective_step 1, exact lighting, trilinear filtering where
  *               the scene does not set a filter, one ray a pixel), over up to
  *               16 frames (all of a scene's frames up to 16, else 16 evenly
  *               spaced, the first and the last among them): the minimum PSNR.
- * Candidates are tried cheapest first; the first that meets the target on
- * every frame checked is the choice. Host programs only (allocates).
+ * Candidates are tried cheapest first (the ray tracer's all rendered first,
+ * for their work); the first that meets the target on every frame checked
+ * is the choice. Host programs only (allocates).
  */
 #ifndef QUALITY_H
 #define QUALITY_H

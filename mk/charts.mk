@@ -37,11 +37,17 @@ TEST_DEPS += $(SCENEC) $(BUILD)/asan/host_sim
 # into tests/data/quality/lab.json; the model tools/quality/cost_model.def
 # fitted on it; its predictions on the held-out scenes and leave one out
 # ($(OUT)/charts/cost-model-validate.csv).
+# COST_MODEL_ONLY=SCENE,...: those lab scenes alone measured (in the modes of
+# COST_MODEL_NUMERIC=MODE,..., default all; no RP2040 runs), the fixture's
+# other rows kept.
+COST_MODEL_ONLY    ?=
+COST_MODEL_NUMERIC ?=
 .PHONY: cost-model
 cost-model: $(BUILD)/host_sim
 	$(Q)tools/deps.sh bench
 	$(Q)$(CHARTS_PY) tools/quality/cost_model.py measure --host-sim $(BUILD)/host_sim --build $(BUILD) \
-		--scenes firmware/scenes --jobs $(CHARTS_JOBS) --make "$(MAKE)" --out tests/data/quality/lab.json
+		--scenes firmware/scenes --jobs $(CHARTS_JOBS) --make "$(MAKE)" --out tests/data/quality/lab.json \
+		$(if $(COST_MODEL_ONLY),--only $(COST_MODEL_ONLY) --no-rp2040 $(if $(COST_MODEL_NUMERIC),--numeric $(COST_MODEL_NUMERIC)))
 	$(Q)$(CHARTS_PY) tools/quality/cost_model.py model --fixture tests/data/quality/lab.json \
 		--write tools/quality/cost_model.def
 	$(Q)mkdir -p $(OUT)/charts

@@ -11,6 +11,11 @@ speed/accuracy lab's measurements (`make charts`, out/charts/pareto.csv).
       over the frames tools/quality checks), each ray-traced row's own work
       (its variant's render: `work`), and for a scene that animates each
       candidate's lowest PSNR over those frames
+  cost_model.py measure --host-sim build/host_sim --out tests/data/quality/lab.json
+        [--only SCENE,... [--numeric MODE,...] [--no-rp2040]]
+      the lab's variants measured on the emulators (make cost-model), into
+      the fixture; --only: those scenes' alone, replacing their rows of each
+      target and mode measured, every other row kept
   cost_model.py work --fixture tests/data/quality/lab.json --host-sim build/host_sim
       the same work figures for the fixture's stored rows, written into it
       (host renders only: no emulator runs; after a change to what a unit
@@ -118,11 +123,30 @@ def make_fixture(args):
 def measure(args):
     """The lab's variants the model and its checks use, measured (lab.Lab,
     quality_only: the emulators, each run cached under BUILD/charts/cache),
-    into the fixture."""
-    L = lab.Lab(args.host_sim, args.build, jobs=args.jobs, make=args.make)
-    rows = L.run(args.scenes, quality_only=True, numerics=args.numeric.split(",") if args.numeric else None)
+    into the fixture. --only: those lab scenes' variants alone (and
+    --numeric's modes, without the RP2040 runs with --no-rp2040), each
+    (scene, target, numeric mode) measured replacing the --out fixture's
+    rows of it, every other row kept."""
+    only = [n for n in args.only.split(",") if n] if args.only else None
+    names = [s.name for s in lab.LAB if s.quality]
+    if only and any(n not in names for n in only):
+        raise SystemExit("cost_model: --only %s: not a lab scene with a cost model (%s)" % (
+            ",".join(n for n in only if n not in names), ", ".join(names)))
+    L = lab.Lab(args.host_sim, args.build, jobs=args.jobs, make=args.make, rp2040=not args.no_rp2040)
+    rows = L.run(args.scenes, only=only, quality_only=True,
+                 numerics=args.numeric.split(",") if args.numeric else None)
     cell = lambda k, v: ("inf" if k.startswith("psnr") else "") if v is None else str(v)  # noqa: E731 (charts.cell)
-    write_fixture(args, [{k: cell(k, r.get(k)) for k in COLS} for r in rows])
+    rows = [{k: cell(k, r.get(k)) for k in COLS} for r in rows]
+    if only:
+        with open(args.out) as f:
+            stored = json.load(f)["rows"]
+        got = {(r["scene"], r["target"], r["numeric"]) for r in rows}
+        rows = [{k: r[k] for k in COLS} for r in stored if (r["scene"], r["target"], r["numeric"]) not in got] + rows
+        rows.sort(key=lambda r: names.index(r["scene"]) if r["scene"] in names else len(names))
+        print("cost_model: %d rows measured, %d kept from %s" % (sum(1 for r in rows if (
+            r["scene"], r["target"], r["numeric"]) in got), sum(1 for r in rows if (
+                r["scene"], r["target"], r["numeric"]) not in got), args.out))
+    write_fixture(args, rows)
 
 
 def add_work(host_sim, scenes_dir, out):
@@ -479,6 +503,9 @@ def main():
     m.add_argument("--make", default="make")
     m.add_argument("--out", required=True)
     m.add_argument("--numeric", default="", help="only these numeric modes (comma-separated; default: all)")
+    m.add_argument("--only", default="", help="only these lab scenes (comma-separated), the --out fixture's other "
+                   "rows kept")
+    m.add_argument("--no-rp2040", action="store_true", help="no RP2040 runs (with --only: its rows kept)")
     v = sub.add_parser("validate")
     v.add_argument("--fixture", required=True)
     v.add_argument("--scenes", default="firmware/scenes")

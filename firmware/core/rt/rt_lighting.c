@@ -122,19 +122,11 @@ num rt_compute_lighting(struct rt_state *rt, vec3 p, vec3 n, int unit_normal, ve
         }
         /* The demos run this step even when n.l <= 0; only shadows stop it. */
         if (o->specular && s >= 0) {
-            vec3 r;
 #if NUM_MODE == NUM_MODE_FIXED
-            if (small) {
-                /* |N_i 2 N.L| / 2^F <= 2 * 3 * 2^28 < 2^31 - 2^26 - 1 and |L_i| <= 2^26: the
-                 * rounded products and the differences in 32 bits, never
-                 * saturating (the same bits as v3_scale and v3_sub) */
-                num m = 2 * n_dot_l;
-                r.x = num_mul_round32(n.x, m) - l.x;
-                r.y = num_mul_round32(n.y, m) - l.y;
-                r.z = num_mul_round32(n.z, m) - l.z;
-            } else
+            vec3 r = rt_reflect(n, l, n_dot_l, small);
+#else
+            vec3 r = rt_reflect(n, l, n_dot_l, 0);
 #endif
-                r = v3_sub(v3_scale(n, num_add(n_dot_l, n_dot_l)), l);   /* 2 N.L: a sum, the same bits */
 #if NUM_MODE == NUM_MODE_FIXED
             const num r_dot_v = v_small && rt_v3_within(r, 28) ? rt_dot_small(v, r) : v3_dot(r, v);
 #else

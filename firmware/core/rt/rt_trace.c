@@ -14,11 +14,15 @@ static int16_t item_material_object(const struct rt_state *rt, int16_t item)
     return item >= (int16_t)s->nobjects ? (int16_t)s->csg[item - s->nobjects].a : item;
 }
 
-/* ReflectRay: R = N*(2*(V.N)) - V. */
+/* ReflectRay: R = N*(2*(V.N)) - V; fixed point, with |N_i| <= 2^(F+1) and
+ * |V_i| <= 2^26, V.N and R in 32-bit arithmetic (rt_dot_small, rt_reflect:
+ * the same bits). */
 static vec3 reflect_ray(vec3 v, vec3 n)
 {
-    num d = v3_dot(v, n);
-    return v3_sub(v3_scale(n, num_add(d, d)), v);     /* 2 (V.N) as a sum: the same bits */
+#if NUM_MODE == NUM_MODE_FIXED
+    if (rt_v3_within(n, NUM_FRAC + 1) && rt_v3_within(v, 26)) return rt_reflect(n, v, rt_dot_small(n, v), 1);
+#endif
+    return rt_reflect(n, v, v3_dot(v, n), 0);
 }
 
 int rt_refract(vec3 d, vec3 n, num ior, vec3 *out)

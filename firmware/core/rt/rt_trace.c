@@ -50,7 +50,15 @@ static RT_NOINLINE rgb colour_scale_sat(rgb c, num k) { return rgb_scale(c, k); 
 /* the proven case inline, the saturating one a call (code size) */
 RT_ALWAYS_INLINE rgb colour_scale(const struct scene *s, rgb c, num k)
 {
-    if (s->fits & SCENE_FITS_COLOUR) return rgb_make(num_mul_fit(c.r, k), num_mul_fit(c.g, k), num_mul_fit(c.b, k));
+    if (s->fits & SCENE_FITS_COLOUR) {
+#if NUM_MODE == NUM_MODE_FIXED && NUM_FRAC == 16
+        /* a weight in [0, 1): two products a channel (rt_mul_round_u16, the same bits) */
+        if ((uint32_t)k < 0x10000u)
+            return rgb_make(rt_mul_round_u16(c.r, (uint32_t)k), rt_mul_round_u16(c.g, (uint32_t)k),
+                            rt_mul_round_u16(c.b, (uint32_t)k));
+#endif
+        return rgb_make(num_mul_fit(c.r, k), num_mul_fit(c.g, k), num_mul_fit(c.b, k));
+    }
     return colour_scale_sat(c, k);
 }
 static inline rgb colour_add(const struct scene *s, rgb a, rgb b)

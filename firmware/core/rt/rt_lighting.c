@@ -107,7 +107,7 @@ num rt_compute_lighting(struct rt_state *rt, vec3 p, vec3 n, int unit_normal, ve
         num n_dot_l = v3_dot(n, l);
 #endif
         if (o->diffuse && n_dot_l > 0) {
-            num in = num_mul(lt->intensity, n_dot_l), q;
+            num in = rt_mul_weight(n_dot_l, lt->intensity), q;
             if (unit_n < 0) unit_n = rt_near_unit_err(n, &unit_e);
             if (unit_n && rt_div_near_unit(in, unit_e, &q)) {
                 /* (I n.l) / |N| to first order in |N|^2 - 1, then / |L|: a
@@ -139,7 +139,7 @@ num rt_compute_lighting(struct rt_state *rt, vec3 p, vec3 n, int unit_normal, ve
                 num den = num_mul(v3_len(r), len_v);
                 if (rt->shortcuts && rt_div_at_most(r_dot_v, den, s_zero)) continue;
                 num cosb = num_div(r_dot_v, den);
-                i = num_add(i, num_mul(lt->intensity, num_powi(cosb, (uint32_t)num_to_int(s))));
+                i = num_add(i, rt_mul_weight(num_powi(cosb, (uint32_t)num_to_int(s)), lt->intensity));
             }
         }
     }

@@ -330,6 +330,17 @@ static inline uint32_t rt_coarse_big_R(const struct rt_csphere *sp, uint32_t n1)
 }
 #endif
 
+/* num_mul(a, w) for any a and a weight w: with 0 <= w < 1 in Q15.16 the
+ * product is below |a| and never saturates, so rt_mul_round_u16 gives its
+ * bits; anything else is num_mul's. */
+static inline num rt_mul_weight(num a, num w)
+{
+#if NUM_MODE == NUM_MODE_FIXED && NUM_FRAC == 16
+    if ((uint32_t)w < 0x10000u) return rt_mul_round_u16(a, (uint32_t)w);
+#endif
+    return num_mul(a, w);
+}
+
 static inline int rt_coarse_sphere_miss(const struct rt_cdir *cd, const struct rt_csphere *sp)
 {
 #if NUM_MODE == NUM_MODE_FIXED

@@ -6,6 +6,12 @@
 
 static inline rgb rgb_sub(rgb a, rgb b) { return rgb_make(num_sub(a.r, b.r), num_sub(a.g, b.g), num_sub(a.b, b.b)); }
 
+/* rgb_scale by a bilinear weight in [0, 1]: the same bits (rt_mul_weight) */
+static inline rgb rgb_weigh(rgb c, num w)
+{
+    return rgb_make(rt_mul_weight(c.r, w), rt_mul_weight(c.g, w), rt_mul_weight(c.b, w));
+}
+
 /* The samples of image row `row` traced so far: the block corners
  * (columns 0, B, 2B, ... and the last) at once, other columns when a block
  * needs them; kept for the next block row, whose top row it is. */
@@ -126,15 +132,15 @@ static void refine(struct rt_block *bk, int x, int y, int wx, int wy, int right,
         int row = bk->r0 + gy;
         if (row < t->y0 || row >= t->y1) continue;
         num fy = fys[gy - y];
-        rgb lc = rgb_add(s00->c, rgb_scale(rgb_sub(s10->c, s00->c), fy));
-        rgb rc = rgb_add(s01->c, rgb_scale(rgb_sub(s11->c, s01->c), fy));
+        rgb lc = rgb_add(s00->c, rgb_weigh(rgb_sub(s10->c, s00->c), fy));
+        rgb rc = rgb_add(s01->c, rgb_weigh(rgb_sub(s11->c, s01->c), fy));
         rgb dc = rgb_sub(rc, lc);
         int cy = gy == y ? 0 : (gy == y + wy ? 1 : -1);
         for (int gx = x; gx < x + wx + (right ? 1 : 0); gx++) {
             rgb c;
             int cx = gx == x ? 0 : (gx == x + wx ? 1 : -1);
             if (cx >= 0 && cy >= 0) c = (cy ? (cx ? s11 : s10) : (cx ? s01 : s00))->c;
-            else c = rgb_add(lc, rgb_scale(dc, fxs[gx - x]));
+            else c = rgb_add(lc, rgb_weigh(dc, fxs[gx - x]));
             rt_put(bk->rt, t, bk->c0 + gx, row, c, s00->item >= 0);   /* the corners agree on it */
         }
     }

@@ -137,7 +137,7 @@ struct rt_state {
     uint16_t nbvh;
     int16_t *bvh_items;
     int16_t *occluder;         /* per light: last occluder (-1: none) */
-    struct rt_ray *light_ray;  /* per light: directional lights' shadow-ray direction (rt_light_constants) */
+    struct rt_ray *light_ray;  /* per light: directional lights' shadow ray (rt_light_constants; its origin set by each shadow test) */
     num *light_len;            /* per light: |L| of directional lights */
     struct num_divisor *light_div; /* per light: the same, as a divisor */
     uint16_t amb_k;            /* the lights before the first non-ambient one ... */

@@ -76,25 +76,19 @@ num rt_compute_lighting(struct rt_state *rt, vec3 p, vec3 n, int unit_normal, ve
             t_max = NUM_MAX;
         }
         if (o->shadows) {
-            struct rt_ray sr;
+            struct rt_ray sr, *srp = &sr;
             if (directional && rt->shortcuts) {
-                /* the direction's forms are computed once (rt_light_constants) */
-                const struct rt_ray *lr = &rt->light_ray[k];
-                sr.o = p;
-                sr.d = lr->d;
-                rt_cdir_copy_dir(&sr.cd, &lr->cd);
-                rt_cpt_set(&sr.cd.o, p);
-                sr.a = lr->a; sr.as = lr->as; sr.aq = lr->aq; sr.tscale = lr->tscale;
-                sr.ds.x = lr->ds.x; sr.ds.y = lr->ds.y; sr.ds.z = lr->ds.z;   /* no memcpy call */
-                sr.origin = origin;
-                sr.from_camera = 0;
-                sr.exact = 1;
-                sr.cd_todo = 0;
-                sr.dxm = 0;
+                /* the light's own ray (rt_light_constants), the direction's
+                 * forms made once: only its origin changes (the tests
+                 * leave the rest as it is) */
+                srp = &rt->light_ray[k];
+                srp->o.x = p.x; srp->o.y = p.y; srp->o.z = p.z;   /* no memcpy call */
+                rt_cpt_set(&srp->cd.o, p);
+                srp->origin = origin;
             } else {
                 rt_ray_init(&sr, &p, &l, origin, 0);
             }
-            if (in_shadow(rt, &sr, t_max, k)) {
+            if (in_shadow(rt, srp, t_max, k)) {
                 if (shadow_bits && k < 7) *shadow_bits |= (uint8_t)(1u << k);
                 continue;
             }

@@ -6,6 +6,13 @@
 
 static inline rgb rgb_sub(rgb a, rgb b) { return rgb_make(num_sub(a.r, b.r), num_sub(a.g, b.g), num_sub(a.b, b.b)); }
 
+/* Every channel of c in (-2^29, 2^29). */
+static inline int rgb_within29(rgb c)
+{
+    uint32_t b = 1u << 29;
+    return (((uint32_t)c.r + b) | ((uint32_t)c.g + b) | ((uint32_t)c.b + b)) < 2 * b;
+}
+
 /* rgb_scale by a bilinear weight in [0, 1]: the same bits (rt_mul_weight) */
 static inline rgb rgb_weigh(rgb c, num w)
 {
@@ -151,12 +158,19 @@ static void refine(struct rt_block *bk, int x, int y, int wx, int wy, int right,
         rgb lc = rgb_add(s00->c, rgb_weigh(rgb_sub(s10->c, s00->c), fy));
         rgb rc = rgb_add(s01->c, rgb_weigh(rgb_sub(s11->c, s01->c), fy));
         rgb dc = rgb_sub(rc, lc);
+        /* L and R within 2^29: R - L is exact and L + (R - L) fx, with
+         * |(R - L) fx| <= |R - L| < 2^30, stays inside the format, so the
+         * plain sum is rgb_add's */
+        int plain = rgb_within29(lc) && rgb_within29(rc);
         int cy = gy == y ? 0 : (gy == y + wy ? 1 : -1);
         for (int gx = x; gx < x + wx + (right ? 1 : 0); gx++) {
             rgb c;
             int cx = gx == x ? 0 : (gx == x + wx ? 1 : -1);
             if (cx >= 0 && cy >= 0) c = (cy ? (cx ? s11 : s10) : (cx ? s01 : s00))->c;
-            else c = rgb_add(lc, rgb_weigh(dc, fxs[gx - x]));
+            else {
+                rgb d = rgb_weigh(dc, fxs[gx - x]);
+                c = plain ? rgb_make(lc.r + d.r, lc.g + d.g, lc.b + d.b) : rgb_add(lc, d);
+            }
             rt_put(bk->rt, t, bk->c0 + gx, row, c, s00->item >= 0); /* the corners agree on it */
         }
     }

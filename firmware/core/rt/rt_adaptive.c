@@ -6,6 +6,19 @@
 
 static inline rgb rgb_sub(rgb a, rgb b) { return rgb_make(num_sub(a.r, b.r), num_sub(a.g, b.g), num_sub(a.b, b.b)); }
 
+/* Every channel of c in (-2^29, 2^29). */
+static inline int rgb_within29(rgb c)
+{
+    uint32_t b = 1u << 29;
+    return (((uint32_t)c.r + b) | ((uint32_t)c.g + b) | ((uint32_t)c.b + b)) < 2 * b;
+}
+
+/* rgb_scale by a bilinear weight in [0, 1]: the same bits (rt_mul_weight) */
+static inline rgb rgb_weigh(rgb c, num w)
+{
+    return rgb_make(rt_mul_weight(c.r, w), rt_mul_weight(c.g, w), rt_mul_weight(c.b, w));
+}
+
 /* The samples of image row `row` traced so far: the block corners
  * (columns 0, B, 2B, ... and the last) at once, other columns when a block
  * needs them; kept for the next block row, whose top row it is. */
@@ -26,11 +39,6 @@ static int corner_row(struct rt_state *rt, int row)
     return k;
 }
 
-static int samples_agree(const struct rt_sample *a, const struct rt_sample *b, num diff)
-{
-    return a->item == b->item && a->shadow == b->shadow && !rt_colours_differ(a->c, b->c, diff);
-}
-
 /* The block being refined: its samples on a (B+1) x (B+1) grid. Points
  * on its top and bottom rows live in the two row buffers (shared with the
  * blocks beside and, for the bottom row, with the next block row), points
@@ -40,8 +48,8 @@ static int samples_agree(const struct rt_sample *a, const struct rt_sample *b, n
 struct rt_block {
     struct rt_state *rt;
     struct render_target *t;
-    int c0, r0, wx, wy;        /* image position of grid point (0, 0); size */
-    int top, bot;              /* row buffers of rows r0 and r0 + wy */
+    int c0, r0, wx, wy; /* image position of grid point (0, 0); size */
+    int top, bot;       /* row buffers of rows r0 and r0 + wy */
 };
 
 static const struct rt_sample *grid_at(struct rt_block *bk, int gx, int gy)
@@ -69,11 +77,32 @@ static const struct rt_sample *grid_at(struct rt_block *bk, int gx, int gy)
     return sp;
 }
 
+/* The largest minus the smallest of four values (saturating as num_sub):
+ * the largest of rt_colours_differ's pairwise differences. */
+static inline num spread4(num a, num b, num c, num e)
+{
+    num lo = a, hi = a;
+    if (b < lo) lo = b;
+    if (b > hi) hi = b;
+    if (c < lo) lo = c;
+    if (c > hi) hi = c;
+    if (e < lo) lo = e;
+    if (e > hi) hi = e;
+    return num_sub(hi, lo);
+}
+
+/* Every two of the four samples agree (the same item and shadows, no
+ * channel more than d apart as rt_colours_differ decides it), for the six
+ * pairs at once: the items and the shadows all equal s00's (equality is
+ * transitive), and each channel's spread within d (num_sub is monotone, so
+ * the largest and the smallest value are the pair farthest apart). */
 static int rect_agrees(const struct rt_sample *s00, const struct rt_sample *s01, const struct rt_sample *s10,
                        const struct rt_sample *s11, num d)
 {
-    return samples_agree(s00, s01, d) && samples_agree(s00, s10, d) && samples_agree(s00, s11, d) &&
-           samples_agree(s01, s10, d) && samples_agree(s01, s11, d) && samples_agree(s10, s11, d);
+    if (s01->item != s00->item || s10->item != s00->item || s11->item != s00->item) return 0;
+    if (s01->shadow != s00->shadow || s10->shadow != s00->shadow || s11->shadow != s00->shadow) return 0;
+    return spread4(s00->c.r, s01->c.r, s10->c.r, s11->c.r) <= d && spread4(s00->c.g, s01->c.g, s10->c.g, s11->c.g) <= d &&
+           spread4(s00->c.b, s01->c.b, s10->c.b, s11->c.b) <= d;
 }
 
 /* Pixels [x, x + wx) x [y, y + wy) of the block (grid units = pixels),
@@ -84,11 +113,11 @@ static int rect_agrees(const struct rt_sample *s00, const struct rt_sample *s01,
 static void refine(struct rt_block *bk, int x, int y, int wx, int wy, int right, int bottom)
 {
     struct render_target *t = bk->t;
-    int ya = bk->r0 + y, yb = bk->r0 + y + wy + (bottom ? 1 : 0);      /* image rows owned */
+    int ya = bk->r0 + y, yb = bk->r0 + y + wy + (bottom ? 1 : 0); /* image rows owned */
     if (yb <= t->y0 || ya >= t->y1) return;
     if (wx <= 1 && wy <= 1 && !right && !bottom) {
         const struct rt_sample *sp = grid_at(bk, x, y);
-        rt_put(bk->rt, t, bk->c0 + x, ya, sp->c, sp->item >= 0);   /* ya is in the strip */
+        rt_put(bk->rt, t, bk->c0 + x, ya, sp->c, sp->item >= 0); /* ya is in the strip */
         return;
     }
     const struct rt_sample *s00 = grid_at(bk, x, y), *s01 = grid_at(bk, x + wx, y);
@@ -126,16 +155,23 @@ static void refine(struct rt_block *bk, int x, int y, int wx, int wy, int right,
         int row = bk->r0 + gy;
         if (row < t->y0 || row >= t->y1) continue;
         num fy = fys[gy - y];
-        rgb lc = rgb_add(s00->c, rgb_scale(rgb_sub(s10->c, s00->c), fy));
-        rgb rc = rgb_add(s01->c, rgb_scale(rgb_sub(s11->c, s01->c), fy));
+        rgb lc = rgb_add(s00->c, rgb_weigh(rgb_sub(s10->c, s00->c), fy));
+        rgb rc = rgb_add(s01->c, rgb_weigh(rgb_sub(s11->c, s01->c), fy));
         rgb dc = rgb_sub(rc, lc);
+        /* L and R within 2^29: R - L is exact and L + (R - L) fx, with
+         * |(R - L) fx| <= |R - L| < 2^30, stays inside the format, so the
+         * plain sum is rgb_add's */
+        int plain = rgb_within29(lc) && rgb_within29(rc);
         int cy = gy == y ? 0 : (gy == y + wy ? 1 : -1);
         for (int gx = x; gx < x + wx + (right ? 1 : 0); gx++) {
             rgb c;
             int cx = gx == x ? 0 : (gx == x + wx ? 1 : -1);
             if (cx >= 0 && cy >= 0) c = (cy ? (cx ? s11 : s10) : (cx ? s01 : s00))->c;
-            else c = rgb_add(lc, rgb_scale(dc, fxs[gx - x]));
-            rt_put(bk->rt, t, bk->c0 + gx, row, c, s00->item >= 0);   /* the corners agree on it */
+            else {
+                rgb d = rgb_weigh(dc, fxs[gx - x]);
+                c = plain ? rgb_make(lc.r + d.r, lc.g + d.g, lc.b + d.b) : rgb_add(lc, d);
+            }
+            rt_put(bk->rt, t, bk->c0 + gx, row, c, s00->item >= 0); /* the corners agree on it */
         }
     }
 }
@@ -162,9 +198,9 @@ void rt_adaptive_strip(struct rt_state *rt, struct render_target *t)
         return;
     }
     int r0 = t->y0 - t->y0 % b;
-    if (r0 == h - 1) r0 -= b;                    /* the last row belongs to the block above */
+    if (r0 == h - 1) r0 -= b; /* the last row belongs to the block above */
     for (; r0 < t->y1 && r0 < h - 1; r0 += b) {
-        int r1 = r0 + b < h - 1 ? r0 + b : h - 1;   /* bottom corner row */
+        int r1 = r0 + b < h - 1 ? r0 + b : h - 1; /* bottom corner row */
         int top = corner_row(rt, r0), bot = corner_row(rt, r1);
         /* the first block's left column starts empty */
         rt->col_left = 0;
@@ -176,8 +212,7 @@ void rt_adaptive_strip(struct rt_state *rt, struct render_target *t)
             for (int i = 0; i <= b; i++) rt->colbuf_have[1 - rt->col_left][i] = 0;
             struct rt_block bk = { rt, t, c0, r0, c1 - c0, r1 - r0, top, bot };
             refine(&bk, 0, 0, c1 - c0, r1 - r0, c1 == w - 1, r1 == h - 1);
-            rt->col_left = 1 - rt->col_left;   /* this block's right column is the next one's left */
+            rt->col_left = 1 - rt->col_left; /* this block's right column is the next one's left */
         }
     }
 }
-

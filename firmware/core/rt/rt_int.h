@@ -137,7 +137,7 @@ struct rt_state {
     uint16_t nbvh;
     int16_t *bvh_items;
     int16_t *occluder;         /* per light: last occluder (-1: none) */
-    struct rt_ray *light_ray;  /* per light: directional lights' shadow-ray direction (rt_light_constants) */
+    struct rt_ray *light_ray;  /* per light: directional lights' shadow ray (rt_light_constants; its origin set by each shadow test) */
     num *light_len;            /* per light: |L| of directional lights */
     struct num_divisor *light_div; /* per light: the same, as a divisor */
     uint16_t amb_k;            /* the lights before the first non-ambient one ... */
@@ -293,6 +293,29 @@ void rt_adaptive_strip(struct rt_state *rt, struct render_target *t);
 void rt_put(struct rt_state *rt, struct render_target *t, int x, int y, rgb c, int covered);
 /* rt_pixels.c: some channel of a and b more than `diff` apart. */
 int rt_colours_differ(rgb a, rgb b, num diff);
+
+/* N (2 N.L) - L: the book's ReflectRay (L = V) and the specular term's R,
+ * for ndl = N.L as v3_dot rounds it. small (fixed point): |N_i| <= 2^(F+1)
+ * and |L_i| <= 2^26 (rt_v3_within), so |N.L| <= 3 * 2^27 and
+ * |N_i 2 N.L| / 2^F <= 2 * 3 * 2^28 < 2^31 - 2^26 - 1: the rounded products
+ * and the differences in 32 bits, never saturating (the same bits as
+ * v3_scale and v3_sub); 2 N.L as a sum, the same bits as the product. */
+RT_ALWAYS_INLINE vec3 rt_reflect(vec3 n, vec3 l, num ndl, int small)
+{
+#if NUM_MODE == NUM_MODE_FIXED
+    if (small) {
+        vec3 r;
+        num m = 2 * ndl;
+        r.x = num_mul_round32(n.x, m) - l.x;
+        r.y = num_mul_round32(n.y, m) - l.y;
+        r.z = num_mul_round32(n.z, m) - l.z;
+        return r;
+    }
+#else
+    (void)small;
+#endif
+    return v3_sub(v3_scale(n, num_add(ndl, ndl)), l);
+}
 
 /* rt_lighting.c, the book's ComputeLighting: intensity at P (normal N, view V = -D) for specular exponent s
  * (unit_normal: N is a sphere's (P - C) / r, of length 1 up to rounding)

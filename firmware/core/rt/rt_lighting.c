@@ -76,25 +76,19 @@ num rt_compute_lighting(struct rt_state *rt, vec3 p, vec3 n, int unit_normal, ve
             t_max = NUM_MAX;
         }
         if (o->shadows) {
-            struct rt_ray sr;
+            struct rt_ray sr, *srp = &sr;
             if (directional && rt->shortcuts) {
-                /* the direction's forms are computed once (rt_light_constants) */
-                const struct rt_ray *lr = &rt->light_ray[k];
-                sr.o = p;
-                sr.d = lr->d;
-                rt_cdir_copy_dir(&sr.cd, &lr->cd);
-                rt_cpt_set(&sr.cd.o, p);
-                sr.a = lr->a; sr.as = lr->as; sr.aq = lr->aq; sr.tscale = lr->tscale;
-                sr.ds.x = lr->ds.x; sr.ds.y = lr->ds.y; sr.ds.z = lr->ds.z;   /* no memcpy call */
-                sr.origin = origin;
-                sr.from_camera = 0;
-                sr.exact = 1;
-                sr.cd_todo = 0;
-                sr.dxm = 0;
+                /* the light's own ray (rt_light_constants), the direction's
+                 * forms made once: only its origin changes (the tests
+                 * leave the rest as it is) */
+                srp = &rt->light_ray[k];
+                srp->o.x = p.x; srp->o.y = p.y; srp->o.z = p.z;   /* no memcpy call */
+                rt_cpt_set(&srp->cd.o, p);
+                srp->origin = origin;
             } else {
                 rt_ray_init(&sr, &p, &l, origin, 0);
             }
-            if (in_shadow(rt, &sr, t_max, k)) {
+            if (in_shadow(rt, srp, t_max, k)) {
                 if (shadow_bits && k < 7) *shadow_bits |= (uint8_t)(1u << k);
                 continue;
             }
@@ -107,7 +101,7 @@ num rt_compute_lighting(struct rt_state *rt, vec3 p, vec3 n, int unit_normal, ve
         num n_dot_l = v3_dot(n, l);
 #endif
         if (o->diffuse && n_dot_l > 0) {
-            num in = num_mul(lt->intensity, n_dot_l), q;
+            num in = rt_mul_weight(n_dot_l, lt->intensity), q;
             if (unit_n < 0) unit_n = rt_near_unit_err(n, &unit_e);
             if (unit_n && rt_div_near_unit(in, unit_e, &q)) {
                 /* (I n.l) / |N| to first order in |N|^2 - 1, then / |L|: a
@@ -122,19 +116,11 @@ num rt_compute_lighting(struct rt_state *rt, vec3 p, vec3 n, int unit_normal, ve
         }
         /* The demos run this step even when n.l <= 0; only shadows stop it. */
         if (o->specular && s >= 0) {
-            vec3 r;
 #if NUM_MODE == NUM_MODE_FIXED
-            if (small) {
-                /* |N_i 2 N.L| / 2^F <= 2 * 3 * 2^28 < 2^31 - 2^26 - 1 and |L_i| <= 2^26: the
-                 * rounded products and the differences in 32 bits, never
-                 * saturating (the same bits as v3_scale and v3_sub) */
-                num m = 2 * n_dot_l;
-                r.x = num_mul_round32(n.x, m) - l.x;
-                r.y = num_mul_round32(n.y, m) - l.y;
-                r.z = num_mul_round32(n.z, m) - l.z;
-            } else
+            vec3 r = rt_reflect(n, l, n_dot_l, small);
+#else
+            vec3 r = rt_reflect(n, l, n_dot_l, 0);
 #endif
-                r = v3_sub(v3_scale(n, num_add(n_dot_l, n_dot_l)), l);   /* 2 N.L: a sum, the same bits */
 #if NUM_MODE == NUM_MODE_FIXED
             const num r_dot_v = v_small && rt_v3_within(r, 28) ? rt_dot_small(v, r) : v3_dot(r, v);
 #else
@@ -147,7 +133,7 @@ num rt_compute_lighting(struct rt_state *rt, vec3 p, vec3 n, int unit_normal, ve
                 num den = num_mul(v3_len(r), len_v);
                 if (rt->shortcuts && rt_div_at_most(r_dot_v, den, s_zero)) continue;
                 num cosb = num_div(r_dot_v, den);
-                i = num_add(i, num_mul(lt->intensity, num_powi(cosb, (uint32_t)num_to_int(s))));
+                i = num_add(i, rt_mul_weight(num_powi(cosb, (uint32_t)num_to_int(s)), lt->intensity));
             }
         }
     }

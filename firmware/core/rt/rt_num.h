@@ -177,6 +177,18 @@ static inline int rt_v3_within(vec3 v, int k)
     return (((uint32_t)v.x + b) | ((uint32_t)v.y + b) | ((uint32_t)v.z + b)) < 2 * b;
 }
 
+/* num_mul_round32(a, b) for 0 <= b < 2^16 in Q15.16 (a colour by a
+ * weight below 1), in two 16x16 products instead of four: with a = ah 2^16
+ * + al (ah = a >> 16 signed, al unsigned), a b / 2^16 = ah b + al b / 2^16,
+ * |ah b| < 2^31 and al b + 2^15 < 2^32, so ah b + ((al b + 2^15) >> 16) is
+ * the rounded product, modulo 2^32 as num_mul_round32's. */
+static inline int32_t rt_mul_round_u16(int32_t a, uint32_t b)
+{
+    uint32_t al = (uint32_t)a & 0xFFFFu;
+    int32_t ah = a >> 16;
+    return (int32_t)((uint32_t)(ah * (int32_t)b) + ((al * b + 0x8000u) >> 16));
+}
+
 /* v3_dot(a, b) for |a_i| <= 2^(F+1) and |b_i| <= 2^28 (raw; rt_v3_within):
  * each |a_i b_i| <= 2^(F+29), so each rounded product is <= 2^29 in
  * magnitude, their sum at most 3 * 2^29 < 2^31: the 32-bit sum of the
@@ -317,6 +329,17 @@ static inline uint32_t rt_coarse_big_R(const struct rt_csphere *sp, uint32_t n1)
     return sp->rc + ((5u * n1 + (1u << (NUM_FRAC / 2)) - 1) >> (NUM_FRAC / 2)) + 3;
 }
 #endif
+
+/* num_mul(a, w) for any a and a weight w: with 0 <= w < 1 in Q15.16 the
+ * product is below |a| and never saturates, so rt_mul_round_u16 gives its
+ * bits; anything else is num_mul's. */
+static inline num rt_mul_weight(num a, num w)
+{
+#if NUM_MODE == NUM_MODE_FIXED && NUM_FRAC == 16
+    if ((uint32_t)w < 0x10000u) return rt_mul_round_u16(a, (uint32_t)w);
+#endif
+    return num_mul(a, w);
+}
 
 static inline int rt_coarse_sphere_miss(const struct rt_cdir *cd, const struct rt_csphere *sp)
 {

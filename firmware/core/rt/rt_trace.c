@@ -14,11 +14,15 @@ static int16_t item_material_object(const struct rt_state *rt, int16_t item)
     return item >= (int16_t)s->nobjects ? (int16_t)s->csg[item - s->nobjects].a : item;
 }
 
-/* ReflectRay: R = N*(2*(V.N)) - V. */
-static vec3 reflect_ray(vec3 v, vec3 n)
+/* ReflectRay: R = N*(2*(V.N)) - V; fixed point, with |N_i| <= 2^(F+1) and
+ * |V_i| <= 2^26, V.N and R in 32-bit arithmetic (rt_dot_small, rt_reflect:
+ * the same bits). */
+RT_ALWAYS_INLINE vec3 reflect_ray(vec3 v, vec3 n)
 {
-    num d = v3_dot(v, n);
-    return v3_sub(v3_scale(n, num_add(d, d)), v);     /* 2 (V.N) as a sum: the same bits */
+#if NUM_MODE == NUM_MODE_FIXED
+    if (rt_v3_within(n, NUM_FRAC + 1) && rt_v3_within(v, 26)) return rt_reflect(n, v, rt_dot_small(n, v), 1);
+#endif
+    return rt_reflect(n, v, v3_dot(v, n), 0);
 }
 
 int rt_refract(vec3 d, vec3 n, num ior, vec3 *out)
@@ -46,7 +50,15 @@ static RT_NOINLINE rgb colour_scale_sat(rgb c, num k) { return rgb_scale(c, k); 
 /* the proven case inline, the saturating one a call (code size) */
 RT_ALWAYS_INLINE rgb colour_scale(const struct scene *s, rgb c, num k)
 {
-    if (s->fits & SCENE_FITS_COLOUR) return rgb_make(num_mul_fit(c.r, k), num_mul_fit(c.g, k), num_mul_fit(c.b, k));
+    if (s->fits & SCENE_FITS_COLOUR) {
+#if NUM_MODE == NUM_MODE_FIXED && NUM_FRAC == 16
+        /* a weight in [0, 1): two products a channel (rt_mul_round_u16, the same bits) */
+        if ((uint32_t)k < 0x10000u)
+            return rgb_make(rt_mul_round_u16(c.r, (uint32_t)k), rt_mul_round_u16(c.g, (uint32_t)k),
+                            rt_mul_round_u16(c.b, (uint32_t)k));
+#endif
+        return rgb_make(num_mul_fit(c.r, k), num_mul_fit(c.g, k), num_mul_fit(c.b, k));
+    }
     return colour_scale_sat(c, k);
 }
 static inline rgb colour_add(const struct scene *s, rgb a, rgb b)

@@ -678,9 +678,15 @@ RT_ALWAYS_INLINE int rt_quad_solve_x(int64_t bx, uint64_t x0, uint64_t x1, uint6
     int la = rt_bitlen64(ax);
     int ka = la > 31 ? la - 31 : 0, kr = sp->kr;
     uint64_t ar = num_umul32((uint32_t)(ax >> ka), sp->r2s);
-    int e = 2 * kx > ka + kr ? 2 * kx : ka + kr;
-    ar = rt_shr64(ar, e - ka - kr);
-    xx = rt_shr64(xx, e - 2 * kx);
+    /* to the coarser scale e = max(2 kx, ka + kr): one of the two shifts */
+    int e;
+    if (2 * kx > ka + kr) {
+        e = 2 * kx;
+        ar = rt_shr64(ar, e - ka - kr);
+    } else {
+        e = ka + kr;
+        xx = rt_shr64(xx, e - 2 * kx);
+    }
     if (ar < xx) return 0;
     uint64_t dd = ar - xx;
     k->disc_pos = dd > 0;

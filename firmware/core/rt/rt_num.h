@@ -626,6 +626,15 @@ static inline int64_t rt_shr_round(int64_t v, int k)
     uint64_t m = (rt_mag64(v) + ((uint64_t)1 << (k - 1))) >> k;
     return v < 0 ? -(int64_t)m : (int64_t)m;
 }
+/* (uint32_t)(v >> k) for 0 <= k < 64 when v >> k < 2^32, in 32-bit halves
+ * (ARMv6-M has no 64-bit shift): below 32, (hi << 1) << (31 - k) is hi << (32
+ * - k), and 0 for k = 0. */
+static inline uint32_t rt_shr64_to32(uint64_t v, int k)
+{
+    uint32_t hi = (uint32_t)(v >> 32), lo = (uint32_t)v;
+    if (k >= 32) return hi >> (k - 32);
+    return lo >> k | (hi << 1) << (31 - k);
+}
 #endif
 
 /* a = D'.D' as the quadratic takes it (once per ray), from D' and its
@@ -672,7 +681,7 @@ RT_ALWAYS_INLINE int rt_quad_solve_x(int64_t bx, uint64_t x0, uint64_t x1, uint6
     /* |CO x D'|^2 at scale 2^(2 kx), each component >> kx below 2^30 */
     int lx = rt_bitlen64(x0 | x1 | x2);
     int kx = lx > 30 ? lx - 30 : 0;
-    uint32_t s0 = (uint32_t)(x0 >> kx), s1 = (uint32_t)(x1 >> kx), s2 = (uint32_t)(x2 >> kx);
+    uint32_t s0 = rt_shr64_to32(x0, kx), s1 = rt_shr64_to32(x1, kx), s2 = rt_shr64_to32(x2, kx);
     uint64_t xx = rt_usq32(s0) + rt_usq32(s1) + rt_usq32(s2);
     /* a r^2 at scale 2^(ka + kr), both factors below 2^31 */
     int la = rt_bitlen64(ax);

@@ -618,7 +618,16 @@ struct rt_quad {
 #if NUM_MODE == NUM_MODE_FIXED
 static inline uint64_t rt_mag64(int64_t v) { return v < 0 ? (uint64_t)0 - (uint64_t)v : (uint64_t)v; }
 static inline int rt_bitlen64(uint64_t v) { return v ? 64 - num_clz64(v) : 0; }
-static inline uint64_t rt_shr64(uint64_t v, int k) { return k >= 64 ? 0 : v >> k; }
+/* v >> k for k >= 0 (0 from 64 on), in 32-bit halves (ARMv6-M has no
+ * 64-bit shift): below 32, (hi << 1) << (31 - k) is hi << (32 - k), and 0
+ * for k = 0. */
+static inline uint64_t rt_shr64(uint64_t v, int k)
+{
+    uint32_t hi = (uint32_t)(v >> 32), lo = (uint32_t)v;
+    if (k >= 64) return 0;
+    if (k >= 32) return hi >> (k - 32);
+    return (uint64_t)(hi >> k) << 32 | (lo >> k | (hi << 1) << (31 - k));
+}
 /* v / 2^k rounded to nearest (half away from zero), 0 <= k < 63. */
 static inline int64_t rt_shr_round(int64_t v, int k)
 {

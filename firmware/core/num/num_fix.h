@@ -57,7 +57,7 @@ static inline int num_prescale3(vec3 a, uint32_t u[3])
 
 static inline uint64_t num_sumsq3(const uint32_t u[3])
 {
-    return num_umul32(u[0], u[0]) + num_umul32(u[1], u[1]) + num_umul32(u[2], u[2]);
+    return num_usq32(u[0]) + num_usq32(u[1]) + num_usq32(u[2]);
 }
 
 #endif

@@ -140,31 +140,8 @@ static inline struct rt_csphere rt_csphere_make(vec3 center, num r)
 #if NUM_MODE == NUM_MODE_FIXED
 static inline uint32_t rt_uabs(int32_t v) { return v < 0 ? 0u - (uint32_t)v : (uint32_t)v; }
 
-/* a^2, the same value as num_umul32(a, a): on ARMv6-M from three 16x16
- * products, a^2 = ah^2 2^32 + al ah 2^17 + al^2 (10 instructions instead of
- * 17). */
-static inline uint64_t rt_usq32(uint32_t a)
-{
-#if NUM_V6M_ASM
-    uint32_t lo, hi, t;
-    __asm__(NUM_ASM_UNIFIED("uxth  %[lo], %[a]\n\t"
-                            "lsrs  %[hi], %[a], #16\n\t"
-                            "movs  %[t], %[lo]\n\t"
-                            "muls  %[t], %[hi]\n\t"
-                            "muls  %[lo], %[lo]\n\t"
-                            "muls  %[hi], %[hi]\n\t"
-                            "lsls  %[a], %[t], #17\n\t"
-                            "lsrs  %[t], %[t], #15\n\t"
-                            "adds  %[lo], %[lo], %[a]\n\t"
-                            "adcs  %[hi], %[t]")
-            : [lo] "=&l"(lo), [hi] "=&l"(hi), [t] "=&l"(t), [a] "+l"(a)
-            :
-            : "cc");
-    return (uint64_t)hi << 32 | lo;
-#else
-    return num_umul32(a, a);
-#endif
-}
+/* a^2 (num_usq32). */
+static inline uint64_t rt_usq32(uint32_t a) { return num_usq32(a); }
 
 /* a^2 of a signed value (num_smul32(a, a)). */
 static inline int64_t rt_ssq32(int32_t a) { return (int64_t)rt_usq32(rt_uabs(a)); }

@@ -106,6 +106,16 @@ static inline uint32_t num_mulhi32(uint32_t a, uint32_t b)
     return (uint32_t)(num_umul32(a, b) >> 32);
 }
 
+/* num_mulhi32(a, b), the same value, from two 16x16 products when b <
+ * 2^16 (a Newton step's small correction): with a = ah 2^16 + al,
+ * floor(a b / 2^32) = floor((ah b + floor(al b / 2^16)) / 2^16), and that
+ * sum is below 2^32. */
+static inline uint32_t num_mulhi32_small(uint32_t a, uint32_t b)
+{
+    if (b >> 16) return num_mulhi32(a, b);
+    return ((a >> 16) * b + (((a & 0xFFFFu) * b) >> 16)) >> 16;
+}
+
 /* 32x32 -> 64 signed product (two's complement correction of the unsigned one). */
 static inline int64_t num_smul32(int32_t a, int32_t b)
 {

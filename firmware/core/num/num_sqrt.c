@@ -192,8 +192,8 @@ num num_rsqrt(num a)
     if (sh < 17) {
         /* y += y (1 - u y^2) / 2: h = (1 - u y^2) 2^28, |h| < 2^13. */
         uint32_t w = num_mulhi32(xh, (uint32_t)(num_usq32(y) >> 32));
-        if (w <= (1u << 28)) y += num_mulhi32(y, ((1u << 28) - w) << 3);
-        else y -= num_mulhi32(y, (w - (1u << 28)) << 3);
+        if (w <= (1u << 28)) y += num_mulhi32_small(y, ((1u << 28) - w) << 3);
+        else y -= num_mulhi32_small(y, (w - (1u << 28)) << 3);
         margin = 16;                             /* > 2^31 * 2^-28 + truncations */
     }
     /* sh in [1, 34] for F in 8..20 (g/2 in 12..30, s/2 in 0..15) */

@@ -33,7 +33,10 @@ NUM_FIX_INLINE uint32_t rsqrt_q30(uint32_t xh)
 {
     uint32_t y = num_rsqrt_seed[(xh >> 23) - 128];   /* Q15, in (2^15, 2^16) */
     uint32_t w = num_mulhi32(xh, y * y);             /* u y^2, Q30: 2^30 (1 +- 2^-8) */
-    return num_mulhi32(y << 16, 0xC0000000u - w);
+    /* num_mulhi32(y << 16, t) = floor(y t / 2^16) for y < 2^16, from two
+     * 16x16 products: y (t >> 16) + floor(y (t mod 2^16) / 2^16) */
+    uint32_t t = 0xC0000000u - w;
+    return y * (t >> 16) + ((y * (t & 0xFFFFu)) >> 16);
 }
 
 static inline uint32_t uabs32(int32_t a) { return a < 0 ? 0u - (uint32_t)a : (uint32_t)a; }
@@ -57,7 +60,7 @@ static inline int num_prescale3(vec3 a, uint32_t u[3])
 
 static inline uint64_t num_sumsq3(const uint32_t u[3])
 {
-    return num_umul32(u[0], u[0]) + num_umul32(u[1], u[1]) + num_umul32(u[2], u[2]);
+    return num_usq32(u[0]) + num_usq32(u[1]) + num_usq32(u[2]);
 }
 
 #endif

@@ -74,10 +74,46 @@ static inline uint64_t num_umul32(uint32_t a, uint32_t b)
 #endif
 }
 
+/* a^2, the same value as num_umul32(a, a): on ARMv6-M from three 16x16
+ * products, a^2 = ah^2 2^32 + al ah 2^17 + al^2 (10 instructions instead of
+ * 17). */
+static inline uint64_t num_usq32(uint32_t a)
+{
+#if NUM_V6M_ASM
+    uint32_t lo, hi, t;
+    __asm__(NUM_ASM_UNIFIED("uxth  %[lo], %[a]\n\t"
+                            "lsrs  %[hi], %[a], #16\n\t"
+                            "movs  %[t], %[lo]\n\t"
+                            "muls  %[t], %[hi]\n\t"
+                            "muls  %[lo], %[lo]\n\t"
+                            "muls  %[hi], %[hi]\n\t"
+                            "lsls  %[a], %[t], #17\n\t"
+                            "lsrs  %[t], %[t], #15\n\t"
+                            "adds  %[lo], %[lo], %[a]\n\t"
+                            "adcs  %[hi], %[t]")
+            : [lo] "=&l"(lo), [hi] "=&l"(hi), [t] "=&l"(t), [a] "+l"(a)
+            :
+            : "cc");
+    return (uint64_t)hi << 32 | lo;
+#else
+    return num_umul32(a, a);
+#endif
+}
+
 /* High word of the 32x32 product. */
 static inline uint32_t num_mulhi32(uint32_t a, uint32_t b)
 {
     return (uint32_t)(num_umul32(a, b) >> 32);
+}
+
+/* num_mulhi32(a, b), the same value, from two 16x16 products when b <
+ * 2^16 (a Newton step's small correction): with a = ah 2^16 + al,
+ * floor(a b / 2^32) = floor((ah b + floor(al b / 2^16)) / 2^16), and that
+ * sum is below 2^32. */
+static inline uint32_t num_mulhi32_small(uint32_t a, uint32_t b)
+{
+    if (b >> 16) return num_mulhi32(a, b);
+    return ((a >> 16) * b + (((a & 0xFFFFu) * b) >> 16)) >> 16;
 }
 
 /* 32x32 -> 64 signed product (two's complement correction of the unsigned one). */

@@ -75,9 +75,9 @@ num v3_div_len(num x, vec3 v)
     int z = sh32 >> 30 ? 0 : sh32 >> 28 ? 1 : 2;     /* num_clz64(s) >> 1 */
     uint32_t xh = z ? sh32 << (2 * z) | (uint32_t)s >> (32 - 2 * z) : sh32;
     uint32_t y = rsqrt_q30(xh);
-    uint32_t w = num_mulhi32(xh, num_mulhi32(y, y));
-    if (w <= (1u << 28)) y += num_mulhi32(y, ((1u << 28) - w) << 3);
-    else y -= num_mulhi32(y, (w - (1u << 28)) << 3);
+    uint32_t w = num_mulhi32(xh, (uint32_t)(num_usq32(y) >> 32));   /* y y: a square */
+    if (w <= (1u << 28)) y += num_mulhi32_small(y, ((1u << 28) - w) << 3);
+    else y -= num_mulhi32_small(y, (w - (1u << 28)) << 3);
     int r = 62 - NUM_FRAC - sh - z;              /* in [11, 54] */
     uint64_t p = num_umul32(uabs32(x), y);
     uint64_t q = ((p >> (r - 1)) + 1) >> 1;

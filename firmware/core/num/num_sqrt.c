@@ -94,7 +94,7 @@ uint32_t num_sqrt_est32(uint32_t xh)
  * most): stepped exactly with (r+1)^2 = r^2 + 2r + 1; *rem = v - root^2. */
 static uint32_t isqrt_fix(uint64_t v, uint32_t r, uint64_t *rem)
 {
-    uint64_t p = num_umul32(r, r);
+    uint64_t p = num_usq32(r);
     while (p > v) { r--; p -= 2 * (uint64_t)r + 1; }
     while (v - p > 2 * (uint64_t)r) { p += 2 * (uint64_t)r + 1; r++; }
     if (rem) *rem = v - p;
@@ -114,7 +114,7 @@ uint64_t num_isqrt64(uint64_t v, uint64_t *rem)
     else if (s) { xh = hi << s | lo >> (32 - s); xl = lo << s; }
     else { xh = hi; xl = lo; }
     uint32_t r = sqrt_core(xh, xh << 12 | xl >> 20, &y) >> (s >> 1);
-    int64_t d = (int64_t)(v - num_umul32(r, r));
+    int64_t d = (int64_t)(v - num_usq32(r));
     while (d < 0) { r--; d += 2 * (int64_t)r + 1; }
     while (d > 2 * (int64_t)r) { d -= 2 * (int64_t)r + 1; r++; }
     if (rem) *rem = (uint64_t)d;
@@ -191,9 +191,9 @@ num num_rsqrt(num a)
     uint32_t margin = 1u << 15;                  /* > 2^31 * 2^-17, in units of y */
     if (sh < 17) {
         /* y += y (1 - u y^2) / 2: h = (1 - u y^2) 2^28, |h| < 2^13. */
-        uint32_t w = num_mulhi32(xh, num_mulhi32(y, y));
-        if (w <= (1u << 28)) y += num_mulhi32(y, ((1u << 28) - w) << 3);
-        else y -= num_mulhi32(y, (w - (1u << 28)) << 3);
+        uint32_t w = num_mulhi32(xh, (uint32_t)(num_usq32(y) >> 32));
+        if (w <= (1u << 28)) y += num_mulhi32_small(y, ((1u << 28) - w) << 3);
+        else y -= num_mulhi32_small(y, (w - (1u << 28)) << 3);
         margin = 16;                             /* > 2^31 * 2^-28 + truncations */
     }
     /* sh in [1, 34] for F in 8..20 (g/2 in 12..30, s/2 in 0..15) */

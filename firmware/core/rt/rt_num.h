@@ -140,31 +140,8 @@ static inline struct rt_csphere rt_csphere_make(vec3 center, num r)
 #if NUM_MODE == NUM_MODE_FIXED
 static inline uint32_t rt_uabs(int32_t v) { return v < 0 ? 0u - (uint32_t)v : (uint32_t)v; }
 
-/* a^2, the same value as num_umul32(a, a): on ARMv6-M from three 16x16
- * products, a^2 = ah^2 2^32 + al ah 2^17 + al^2 (10 instructions instead of
- * 17). */
-static inline uint64_t rt_usq32(uint32_t a)
-{
-#if NUM_V6M_ASM
-    uint32_t lo, hi, t;
-    __asm__(NUM_ASM_UNIFIED("uxth  %[lo], %[a]\n\t"
-                            "lsrs  %[hi], %[a], #16\n\t"
-                            "movs  %[t], %[lo]\n\t"
-                            "muls  %[t], %[hi]\n\t"
-                            "muls  %[lo], %[lo]\n\t"
-                            "muls  %[hi], %[hi]\n\t"
-                            "lsls  %[a], %[t], #17\n\t"
-                            "lsrs  %[t], %[t], #15\n\t"
-                            "adds  %[lo], %[lo], %[a]\n\t"
-                            "adcs  %[hi], %[t]")
-            : [lo] "=&l"(lo), [hi] "=&l"(hi), [t] "=&l"(t), [a] "+l"(a)
-            :
-            : "cc");
-    return (uint64_t)hi << 32 | lo;
-#else
-    return num_umul32(a, a);
-#endif
-}
+/* a^2 (num_usq32). */
+static inline uint64_t rt_usq32(uint32_t a) { return num_usq32(a); }
 
 /* a^2 of a signed value (num_smul32(a, a)). */
 static inline int64_t rt_ssq32(int32_t a) { return (int64_t)rt_usq32(rt_uabs(a)); }
@@ -641,13 +618,31 @@ struct rt_quad {
 #if NUM_MODE == NUM_MODE_FIXED
 static inline uint64_t rt_mag64(int64_t v) { return v < 0 ? (uint64_t)0 - (uint64_t)v : (uint64_t)v; }
 static inline int rt_bitlen64(uint64_t v) { return v ? 64 - num_clz64(v) : 0; }
-static inline uint64_t rt_shr64(uint64_t v, int k) { return k >= 64 ? 0 : v >> k; }
+/* v >> k for k >= 0 (0 from 64 on), in 32-bit halves (ARMv6-M has no
+ * 64-bit shift): below 32, (hi << 1) << (31 - k) is hi << (32 - k), and 0
+ * for k = 0. */
+static inline uint64_t rt_shr64(uint64_t v, int k)
+{
+    uint32_t hi = (uint32_t)(v >> 32), lo = (uint32_t)v;
+    if (k >= 64) return 0;
+    if (k >= 32) return hi >> (k - 32);
+    return (uint64_t)(hi >> k) << 32 | (lo >> k | (hi << 1) << (31 - k));
+}
 /* v / 2^k rounded to nearest (half away from zero), 0 <= k < 63. */
 static inline int64_t rt_shr_round(int64_t v, int k)
 {
     if (k == 0) return v;
     uint64_t m = (rt_mag64(v) + ((uint64_t)1 << (k - 1))) >> k;
     return v < 0 ? -(int64_t)m : (int64_t)m;
+}
+/* (uint32_t)(v >> k) for 0 <= k < 64 when v >> k < 2^32, in 32-bit halves
+ * (ARMv6-M has no 64-bit shift): below 32, (hi << 1) << (31 - k) is hi << (32
+ * - k), and 0 for k = 0. */
+static inline uint32_t rt_shr64_to32(uint64_t v, int k)
+{
+    uint32_t hi = (uint32_t)(v >> 32), lo = (uint32_t)v;
+    if (k >= 32) return hi >> (k - 32);
+    return lo >> k | (hi << 1) << (31 - k);
 }
 #endif
 
@@ -695,15 +690,21 @@ RT_ALWAYS_INLINE int rt_quad_solve_x(int64_t bx, uint64_t x0, uint64_t x1, uint6
     /* |CO x D'|^2 at scale 2^(2 kx), each component >> kx below 2^30 */
     int lx = rt_bitlen64(x0 | x1 | x2);
     int kx = lx > 30 ? lx - 30 : 0;
-    uint32_t s0 = (uint32_t)(x0 >> kx), s1 = (uint32_t)(x1 >> kx), s2 = (uint32_t)(x2 >> kx);
+    uint32_t s0 = rt_shr64_to32(x0, kx), s1 = rt_shr64_to32(x1, kx), s2 = rt_shr64_to32(x2, kx);
     uint64_t xx = rt_usq32(s0) + rt_usq32(s1) + rt_usq32(s2);
     /* a r^2 at scale 2^(ka + kr), both factors below 2^31 */
     int la = rt_bitlen64(ax);
     int ka = la > 31 ? la - 31 : 0, kr = sp->kr;
     uint64_t ar = num_umul32((uint32_t)(ax >> ka), sp->r2s);
-    int e = 2 * kx > ka + kr ? 2 * kx : ka + kr;
-    ar = rt_shr64(ar, e - ka - kr);
-    xx = rt_shr64(xx, e - 2 * kx);
+    /* to the coarser scale e = max(2 kx, ka + kr): one of the two shifts */
+    int e;
+    if (2 * kx > ka + kr) {
+        e = 2 * kx;
+        ar = rt_shr64(ar, e - ka - kr);
+    } else {
+        e = ka + kr;
+        xx = rt_shr64(xx, e - 2 * kx);
+    }
     if (ar < xx) return 0;
     uint64_t dd = ar - xx;
     k->disc_pos = dd > 0;
@@ -751,13 +752,14 @@ static inline int rt_near_beyond(int64_t bx, wnum n, wnum aq, num limit)
         bx >= ((int64_t)1 << 60) || n <= 0 ||
         n >= ((wnum)1 << (62 - NUM_FRAC)) || aq < ((wnum)1 << 28))
         return 0;
-    /* Qu < 2^(61-F) (bx < 2^60); above 2^31 both sides are divided by 2^s,
-     * Qu rounded up: floor(n 2^F / 2^s) >= (L + 1) (floor(Qu / 2^s) + 1)
-     * implies the unscaled test */
+    /* Qu < 2^(61-F) (bx < 2^60): both sides divided by 2^s, s = 30 - F
+     * (constant shifts; Qu / 2^s < 2^31), Qu rounded up: floor(n 2^F / 2^s)
+     * >= (L + 1) (floor(Qu / 2^s) + 1) implies the unscaled test. (For the
+     * Qu of a pixel's ray, about 2^37, the rounding up costs 2^-23 of it.) */
+    const int s = 30 - NUM_FRAC;
     uint64_t qu = ((uint64_t)bx * 2u + (1u << (NUM_FRAC - 1))) >> NUM_FRAC;
-    int sh = qu >> 31 ? rt_bitlen64(qu) - 31 : 0;
-    uint32_t qs = (uint32_t)(qu >> sh) + (sh > 0);
-    return ((uint64_t)n << NUM_FRAC) >> sh >= num_umul32((uint32_t)limit + 1u, qs);
+    uint32_t qs = (uint32_t)(qu >> s) + 1u;
+    return ((uint64_t)n << NUM_FRAC) >> s >= num_umul32((uint32_t)limit + 1u, qs);
 #else
     (void)bx; (void)n; (void)aq; (void)limit;
     return 0;

@@ -660,7 +660,12 @@ RAS_ALWAYS_INLINE uint32_t fast_rows(const struct ras_ctx *rc, struct fstate *S,
  *   32         stride    a row of pixels in bytes
  *   36         zoff      the depth entry's byte offset from its pixel
  *                        (modulo 2^32)
- *   40, 44     zhi, zfrac (in/out) the plane at (c0, the row)
+ *   40, 44     zq, zf    (in/out) the plane at (c0, the row): zhi + zf's
+ *                        carry and zfrac as a sum of fractions, zf = zfrac0 +
+ *                        (rows drawn) gyf, below 2^32 (at most 80 rows), zq =
+ *                        zhi0 + (rows drawn) gyq modulo 2^32 (the plane at
+ *                        column lo is zq + lo gxq + ((zf + lo gxf) >> 16),
+ *                        fast_rows' value: the carries the same)
  *   48, 52     gxq, gxf  its column gradient, 56, 60 gyq, gyf its row one
  *   64         rows      (> 0) rows to draw, 0 on return
  *   68         total     (in/out) pixels of the spans (R.n summed)
@@ -701,7 +706,7 @@ RAS_HOT __attribute__((noinline)) static void fast_scan_flat(struct fscan *P)
         "2:\n\t movs r6, r0\n\t orrs r6, r1\n\t orrs r6, r2\n\t bpl 3f\n\t"
         "add r0, r8\n\t add r1, r9\n\t add r2, r10\n\t adds r3, #2\n\t cmp r3, r11\n\t bls 2b\n\t"
         "b 6f\n"
-        /* z = zhi + lo gxq + ((zfrac + lo gxf) >> 16), lo the column */
+        /* z = zq + lo gxq + ((zf + lo gxf) >> 16), lo the column */
         "3:\n\t ldr r6, [r7, #24]\n\t subs r6, r3, r6\n\t lsrs r6, r6, #1\n\t str r3, [r7, #72]\n\t"
         "ldr r4, [r7, #52]\n\t muls r4, r6, r4\n\t ldr r5, [r7, #44]\n\t adds r4, r4, r5\n\t lsrs r4, r4, #16\n\t"
         "ldr r5, [r7, #48]\n\t muls r5, r6, r5\n\t adds r4, r4, r5\n\t ldr r5, [r7, #40]\n\t adds r4, r4, r5\n\t"
@@ -714,13 +719,11 @@ RAS_HOT __attribute__((noinline)) static void fast_scan_flat(struct fscan *P)
         "movs r6, r0\n\t orrs r6, r1\n\t orrs r6, r2\n\t bpl 4b\n"
         "7:\n\t ldr r7, [sp]\n\t ldr r5, [r7, #72]\n\t subs r5, r3, r5\n\t lsrs r5, r5, #1\n\t"
         "ldr r6, [r7, #68]\n\t adds r6, r6, r5\n\t str r6, [r7, #68]\n"
-        /* the next row */
-        "6:\n\t ldr r4, [r7, #44]\n\t ldr r5, [r7, #60]\n\t adds r4, r4, r5\n\t lsrs r6, r4, #16\n\t"
-        "uxth r4, r4\n\t str r4, [r7, #44]\n\t"
-        "ldr r4, [r7, #40]\n\t ldr r5, [r7, #56]\n\t adds r4, r4, r5\n\t adds r4, r4, r6\n\t str r4, [r7, #40]\n\t"
-        "ldr r0, [r7, #0]\n\t ldr r4, [r7, #12]\n\t adds r0, r0, r4\n\t str r0, [r7, #0]\n\t"
-        "ldr r1, [r7, #4]\n\t ldr r4, [r7, #16]\n\t adds r1, r1, r4\n\t str r1, [r7, #4]\n\t"
-        "ldr r2, [r7, #8]\n\t ldr r4, [r7, #20]\n\t adds r2, r2, r4\n\t str r2, [r7, #8]\n\t"
+        /* the next row: zf, zq, the edge values (b0..b2 loaded with them), the pixel */
+        "6:\n\t ldr r4, [r7, #44]\n\t ldr r5, [r7, #60]\n\t adds r4, r4, r5\n\t str r4, [r7, #44]\n\t"
+        "ldr r4, [r7, #40]\n\t ldr r5, [r7, #56]\n\t adds r4, r4, r5\n\t str r4, [r7, #40]\n\t"
+        "ldm r7!, {r0, r1, r2, r3, r4, r6}\n\t adds r0, r0, r3\n\t adds r1, r1, r4\n\t adds r2, r2, r6\n\t"
+        "subs r7, #24\n\t stm r7!, {r0, r1, r2}\n\t subs r7, #12\n\t"
         "ldr r3, [r7, #24]\n\t ldr r4, [r7, #32]\n\t adds r3, r3, r4\n\t str r3, [r7, #24]\n\t"
         "ldr r4, [r7, #64]\n\t subs r4, #1\n\t str r4, [r7, #64]\n\t bne 1b\n\t"
         "add sp, #4\n\t"
@@ -761,8 +764,8 @@ static uint32_t fast_run_flat(const struct ras_ctx *rc, struct fstate *S)
         for (int i = 0; i < 3; i++) S->wb[i] = P.wb[i];
         S->wr[1] += (int32_t)rows * S->b[1];
         S->wr[2] += (int32_t)rows * S->b[2];
-        S->zhi = P.zhi;
-        S->zfrac = P.zfrac;
+        S->zhi = P.zhi + (P.zfrac >> 16);
+        S->zfrac = P.zfrac & 0xFFFFu;
         S->row = r1 + 1;
         return P.total;
     }

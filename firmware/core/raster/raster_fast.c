@@ -645,8 +645,258 @@ RAS_ALWAYS_INLINE uint32_t fast_rows(const struct ras_ctx *rc, struct fstate *S,
     return total;
 }
 
+#if defined(__ARM_ARCH_6M__) && defined(__GNUC__)
+#define RAS_SCAN_FLAT_V6M 1
+/* ARMv6-M: fast_rows by hand for the rows most small triangles take (the
+ * box scanned, one colour, 16-bit depth entries in the plane's 32-bit form,
+ * the board's outputs only): each row's span found and drawn in one loop,
+ * with the C loops' operations, so the same bits. fast_scan_flat's block
+ * (its words at these offsets; in/out where it writes them back):
+ *   0, 4, 8    wb0..wb2  (in/out) the edge values with their bias at the
+ *                        row's box column c0
+ *   12, 16, 20 b0..b2    their steps per row
+ *   24         prow      (in/out) the row's pixel at column c0
+ *   28         kmax2     2 kmax, the box's last column's byte offset
+ *   32         stride    a row of pixels in bytes
+ *   36         zoff      the depth entry's byte offset from its pixel
+ *                        (modulo 2^32)
+ *   40, 44     zq, zf    (in/out) the plane at (c0, the row): zhi + zf's
+ *                        carry and zfrac as a sum of fractions, zf = zfrac0 +
+ *                        (rows drawn) gyf, below 2^32 (at most 80 rows), zq =
+ *                        zhi0 + (rows drawn) gyq modulo 2^32 (the plane at
+ *                        column lo is zq + lo gxq + ((zf + lo gxf) >> 16),
+ *                        fast_rows' value: the carries the same)
+ *   48, 52     gxq, gxf  its column gradient, 56, 60 gyq, gyf its row one
+ *   64         rows      (> 0) rows to draw, 0 on return
+ *   68         total     (in/out) pixels of the spans (R.n summed)
+ *   72         (the span's first pixel)
+ *   76..84     a0..a2    the edge values' steps per column
+ *   88         dz        the depth's step per column
+ *   92         col       the colour, RGB565
+ * Registers in the loops: r0-r2 the edge values, r3 the pixel, r4 z, r5,
+ * r6 scratch, r7 the block (between rows) or zoff (in a span); r8-r10 a0..a2,
+ * r11 the row's last pixel of the box, r12 dz, lr col; the block's address
+ * on the stack. */
+struct fscan {
+    int32_t wb[3], b[3];
+    uint16_t *prow;
+    uint32_t kmax2, stride, zoff, zhi, zfrac, gxq, gxf, gyq, gyf, rows, total;
+    uint16_t *plo;
+    int32_t a[3];
+    uint32_t dz, col;
+    uint16_t *spans;   /* (fast_scan_spans) */
+};
+typedef char fscan_layout[offsetof(struct fscan, prow) == 24 && offsetof(struct fscan, zhi) == 40 &&
+                                  offsetof(struct fscan, rows) == 64 && offsetof(struct fscan, a) == 76 &&
+                                  offsetof(struct fscan, col) == 92 && offsetof(struct fscan, spans) == 96
+                              ? 1
+                              : -1];
+
+RAS_HOT __attribute__((noinline)) static void fast_scan_flat(struct fscan *P)
+{
+    register struct fscan *r0 __asm__("r0") = P;
+    __asm__ volatile(
+        ".syntax unified\n\t"
+        "push {r0}\n\t mov r7, r0\n\t"
+        "ldr r6, [r7, #76]\n\t mov r8, r6\n\t ldr r6, [r7, #80]\n\t mov r9, r6\n\t"
+        "ldr r6, [r7, #84]\n\t mov r10, r6\n\t ldr r6, [r7, #88]\n\t mov r12, r6\n\t"
+        "ldr r6, [r7, #92]\n\t mov lr, r6\n\t"
+        "ldr r0, [r7, #0]\n\t ldr r1, [r7, #4]\n\t ldr r2, [r7, #8]\n\t ldr r3, [r7, #24]\n"
+        /* a row: r11 its last pixel, then the first covered column */
+        "1:\n\t ldr r6, [r7, #28]\n\t adds r6, r6, r3\n\t mov r11, r6\n"
+        "2:\n\t movs r6, r0\n\t orrs r6, r1\n\t orrs r6, r2\n\t bpl 3f\n\t"
+        "add r0, r8\n\t add r1, r9\n\t add r2, r10\n\t adds r3, #2\n\t cmp r3, r11\n\t bls 2b\n\t"
+        "b 6f\n"
+        /* z = zq + lo gxq + ((zf + lo gxf) >> 16), lo the column */
+        "3:\n\t ldr r6, [r7, #24]\n\t subs r6, r3, r6\n\t lsrs r6, r6, #1\n\t str r3, [r7, #72]\n\t"
+        "ldr r4, [r7, #52]\n\t muls r4, r6, r4\n\t ldr r5, [r7, #44]\n\t adds r4, r4, r5\n\t lsrs r4, r4, #16\n\t"
+        "ldr r5, [r7, #48]\n\t muls r5, r6, r5\n\t adds r4, r4, r5\n\t ldr r5, [r7, #40]\n\t adds r4, r4, r5\n\t"
+        "ldr r7, [r7, #36]\n"
+        /* the span: depth test, pixel, next column while every edge value >= 0 */
+        "4:\n\t lsrs r5, r4, #16\n\t ldrh r6, [r3, r7]\n\t cmp r5, r6\n\t bls 5f\n\t"
+        "strh r5, [r3, r7]\n\t mov r6, lr\n\t strh r6, [r3]\n"
+        "5:\n\t add r4, r12\n\t adds r3, #2\n\t cmp r3, r11\n\t bhi 7f\n\t"
+        "add r0, r8\n\t add r1, r9\n\t add r2, r10\n\t"
+        "movs r6, r0\n\t orrs r6, r1\n\t orrs r6, r2\n\t bpl 4b\n"
+        "7:\n\t ldr r7, [sp]\n\t ldr r5, [r7, #72]\n\t subs r5, r3, r5\n\t lsrs r5, r5, #1\n\t"
+        "ldr r6, [r7, #68]\n\t adds r6, r6, r5\n\t str r6, [r7, #68]\n"
+        /* the next row: zf, zq, the edge values (b0..b2 loaded with them), the pixel */
+        "6:\n\t ldr r4, [r7, #44]\n\t ldr r5, [r7, #60]\n\t adds r4, r4, r5\n\t str r4, [r7, #44]\n\t"
+        "ldr r4, [r7, #40]\n\t ldr r5, [r7, #56]\n\t adds r4, r4, r5\n\t str r4, [r7, #40]\n\t"
+        "ldm r7!, {r0, r1, r2, r3, r4, r6}\n\t adds r0, r0, r3\n\t adds r1, r1, r4\n\t adds r2, r2, r6\n\t"
+        "subs r7, #24\n\t stm r7!, {r0, r1, r2}\n\t subs r7, #12\n\t"
+        "ldr r3, [r7, #24]\n\t ldr r4, [r7, #32]\n\t adds r3, r3, r4\n\t str r3, [r7, #24]\n\t"
+        "ldr r4, [r7, #64]\n\t subs r4, #1\n\t str r4, [r7, #64]\n\t bne 1b\n\t"
+        "add sp, #4\n\t"
+        ".syntax divided\n"
+        : "+l"(r0)
+        :
+        : "r1", "r2", "r3", "r4", "r5", "r6", "r7", "r8", "r9", "r10", "r11", "r12", "lr", "cc", "memory");
+}
+
+/* ARMv6-M: the spans of the same rows (fast_scan_flat's block, its
+ * offsets 0 to 32, 64, 76 to 84 and at 96 the spans' array, a halfword a
+ * row: lo | n << 8, 0 where the row has none; lo <= 158 and n <= 159, a
+ * scanned box being at most 160 columns wide), for the other span loops:
+ * the columns fast_rows' scan finds, with its operations. Registers: r0-r2
+ * the edge values, r3 the pixel, r4 the row's first one then lo, r5 the
+ * next span, r6 scratch, r7 the block; r8-r10 a0..a2, r11 the row's last
+ * pixel of the box. */
+RAS_HOT __attribute__((noinline)) static void fast_scan_spans(struct fscan *P)
+{
+    register struct fscan *r0 __asm__("r0") = P;
+    __asm__ volatile(
+        ".syntax unified\n\t"
+        "mov r7, r0\n\t"
+        "ldr r6, [r7, #76]\n\t mov r8, r6\n\t ldr r6, [r7, #80]\n\t mov r9, r6\n\t"
+        "ldr r6, [r7, #84]\n\t mov r10, r6\n\t ldr r5, [r7, #96]\n\t"
+        "ldr r0, [r7, #0]\n\t ldr r1, [r7, #4]\n\t ldr r2, [r7, #8]\n\t ldr r3, [r7, #24]\n"
+        "1:\n\t ldr r6, [r7, #28]\n\t adds r6, r6, r3\n\t mov r11, r6\n\t mov r4, r3\n"
+        "2:\n\t movs r6, r0\n\t orrs r6, r1\n\t orrs r6, r2\n\t bpl 3f\n\t"
+        "add r0, r8\n\t add r1, r9\n\t add r2, r10\n\t adds r3, #2\n\t cmp r3, r11\n\t bls 2b\n\t"
+        "movs r6, #0\n\t b 5f\n"
+        "3:\n\t subs r4, r3, r4\n\t lsrs r4, r4, #1\n"
+        "4:\n\t adds r3, #2\n\t cmp r3, r11\n\t bhi 6f\n\t add r0, r8\n\t add r1, r9\n\t add r2, r10\n\t"
+        "movs r6, r0\n\t orrs r6, r1\n\t orrs r6, r2\n\t bpl 4b\n"
+        "6:\n\t ldr r6, [r7, #24]\n\t subs r6, r3, r6\n\t lsrs r6, r6, #1\n\t subs r6, r6, r4\n\t"
+        "lsls r6, r6, #8\n\t orrs r6, r4\n"
+        "5:\n\t strh r6, [r5]\n\t adds r5, #2\n\t"
+        "ldm r7!, {r0, r1, r2, r3, r4, r6}\n\t adds r0, r0, r3\n\t adds r1, r1, r4\n\t adds r2, r2, r6\n\t"
+        "subs r7, #24\n\t stm r7!, {r0, r1, r2}\n\t subs r7, #12\n\t"
+        "ldr r3, [r7, #24]\n\t ldr r4, [r7, #32]\n\t adds r3, r3, r4\n\t str r3, [r7, #24]\n\t"
+        "ldr r4, [r7, #64]\n\t subs r4, #1\n\t str r4, [r7, #64]\n\t bne 1b\n\t"
+        ".syntax divided\n"
+        : "+l"(r0)
+        :
+        : "r1", "r2", "r3", "r4", "r5", "r6", "r7", "r8", "r9", "r10", "r11", "cc", "memory");
+}
+
+/* fast_rows(rc, S, 1) of a scanned triangle whose plane has its 32-bit form
+ * (board outputs): its spans by fast_scan_spans, then drawn by its loop. */
+static uint32_t fast_run_spans(const struct ras_ctx *rc, struct fstate *S)
+{
+    const struct render_target *t = rc->cur.t;
+    const int32_t r0 = S->row, r1 = S->last < (int32_t)t->y1 - 1 ? S->last : (int32_t)t->y1 - 1;
+    if (r1 < r0) {
+        S->row = r1 + 1;
+        return 0;
+    }
+    struct fscan P;
+    uint16_t sp[RAS_SCAN_MAX / 2];
+    const uint32_t rows = (uint32_t)(r1 - r0 + 1);
+    P.wb[0] = S->wb[0];
+    P.wb[1] = S->wb[1];
+    P.wb[2] = S->wb[2];
+    P.b[0] = S->b[0];
+    P.b[1] = S->b[1];
+    P.b[2] = S->b[2];
+    P.a[0] = S->a[0];
+    P.a[1] = S->a[1];
+    P.a[2] = S->a[2];
+    size_t idx0 = (size_t)(r0 - (int32_t)t->y0) * rc->w + (size_t)S->c0;
+    P.prow = t->rgb565 + idx0;
+    P.kmax2 = (uint32_t)S->kmax * 2u;
+    P.stride = (uint32_t)rc->w * 2u;
+    P.rows = rows;
+    P.spans = sp;
+    fast_scan_spans(&P);
+    S->wb[0] = P.wb[0];
+    S->wb[1] = P.wb[1];
+    S->wb[2] = P.wb[2];
+    const span_fn fn = ras_span_board[S->shade][S->src][rc->depth_bytes == 2 ? 1 : 2];
+    struct frow R;
+    R.dz = S->dz;
+    R.rgb888 = R.written = NULL;
+    R.w1 = R.w2 = 0;
+    const int attrs = S->shade != SPAN_SHADE_NONE || S->src != SPAN_SRC_CONST;
+    /* the plane as fast_scan_flat's zq, zf */
+    uint32_t zq = S->zhi, zf = S->zfrac, total = 0;
+    const uint32_t gxq = (uint32_t)S->gxq, gxf = S->gxf, gyq = S->gyq, gyf = S->gyf;
+    int32_t wr1 = S->wr[1], wr2 = S->wr[2];
+    const int32_t a1 = S->a[1], a2 = S->a[2], b1 = S->b[1], b2 = S->b[2];
+    for (uint32_t i = 0; i < rows; i++, idx0 += rc->w) {
+        const uint32_t s = sp[i];
+        if (s >> 8) {
+            const uint32_t lo = s & 255u;
+            const size_t idx = idx0 + lo;
+            R.n = (int32_t)(s >> 8);
+            R.px = t->rgb565 + idx;
+            R.zb = rc->depth + idx * rc->depth_bytes;
+            R.z = zq + lo * gxq + ((zf + lo * gxf) >> 16);
+            if (attrs) {
+                R.w1 = wr1 + (int32_t)lo * a1;
+                R.w2 = wr2 + (int32_t)lo * a2;
+            }
+            fn(&S->T, &R);
+            total += (uint32_t)R.n;
+        }
+        zq += gyq;
+        zf += gyf;
+        wr1 += b1;
+        wr2 += b2;
+    }
+    S->zhi = zq + (zf >> 16);
+    S->zfrac = zf & 0xFFFFu;
+    S->wr[1] = wr1;
+    S->wr[2] = wr2;
+    S->row = r1 + 1;
+    return total;
+}
+
+/* fast_rows(rc, S, 1) of a triangle fast_scan_flat draws. */
+static uint32_t fast_run_flat(const struct ras_ctx *rc, struct fstate *S)
+{
+    const struct render_target *t = rc->cur.t;
+    const int32_t r0 = S->row, r1 = S->last < (int32_t)t->y1 - 1 ? S->last : (int32_t)t->y1 - 1;
+    if (r1 >= r0) {
+        struct fscan P;
+        const uint32_t rows = (uint32_t)(r1 - r0 + 1);
+        for (int i = 0; i < 3; i++) {
+            P.wb[i] = S->wb[i];
+            P.a[i] = S->a[i];
+            P.b[i] = S->b[i];
+        }
+        P.prow = t->rgb565 + (size_t)(r0 - (int32_t)t->y0) * rc->w + (size_t)S->c0;
+        P.kmax2 = (uint32_t)S->kmax * 2u;
+        P.stride = (uint32_t)rc->w * 2u;
+        P.zoff = (uint32_t)(uintptr_t)rc->depth - (uint32_t)(uintptr_t)t->rgb565;
+        P.zhi = S->zhi;
+        P.zfrac = S->zfrac;
+        P.gxq = (uint32_t)S->gxq;
+        P.gxf = S->gxf;
+        P.gyq = S->gyq;
+        P.gyf = S->gyf;
+        P.rows = rows;
+        P.total = 0;
+        P.dz = S->dz;
+        P.col = S->T.ft->c565;
+        fast_scan_flat(&P);
+        for (int i = 0; i < 3; i++) S->wb[i] = P.wb[i];
+        S->wr[1] += (int32_t)rows * S->b[1];
+        S->wr[2] += (int32_t)rows * S->b[2];
+        S->zhi = P.zhi + (P.zfrac >> 16);
+        S->zfrac = P.zfrac & 0xFFFFu;
+        S->row = r1 + 1;
+        return P.total;
+    }
+    S->row = r1 + 1;
+    return 0;
+}
+#else
+#define RAS_SCAN_FLAT_V6M 0
+#endif
+
 static uint32_t fast_run(const struct ras_ctx *rc, struct fstate *S)
 {
+#if RAS_SCAN_FLAT_V6M
+    if (S->scan && S->z32
+#if RENDER_HOST_OUTPUTS
+        && rc->cur.t->rgb888 == NULL && rc->cur.t->written == NULL
+#endif
+    )
+        return rc->depth_bytes == 2 && S->shade == SPAN_SHADE_NONE && S->src == SPAN_SRC_CONST ? fast_run_flat(rc, S)
+                                                                                             : fast_run_spans(rc, S);
+#endif
     return S->scan ? fast_rows(rc, S, 1) : fast_rows(rc, S, 0);
 }
 

@@ -83,6 +83,19 @@ RAS_HOT static uint32_t SPAN_NAME(const struct ftri *T, const struct frow *R)
     uint32_t ast[5] = { dz, (uint32_t)(uintptr_t)tex, row * 4u, 0, 0 };   /* (the loop by hand below) */
 #endif
 #endif
+#if SPAN_SHADE == SPAN_SHADE_RGB && SPAN_DEPTH == 2 && !SPAN_HOST && defined(__ARM_ARCH_6M__) && defined(__GNUC__)
+    if (n == 1) {
+        /* a span of one pixel (most of a small triangle's): the loop's
+         * first pixel, its levels those at the span's first pixel */
+        const uint32_t zz = z >> 16;
+        if (zz > *zp) {
+            *zp = (uint16_t)zz;
+            *px = (uint16_t)(((uint32_t)cur[SPAN_A_SH] >> 16) << 11 | ((uint32_t)cur[SPAN_A_SH + 1] >> 16) << 5 |
+                             (uint32_t)cur[SPAN_A_SH + 2] >> 16);
+        }
+        return written;
+    }
+#endif
     while (n > 0) {
         int32_t m = n;
 #if SPAN_NA

@@ -17,7 +17,7 @@ static int16_t item_material_object(const struct rt_state *rt, int16_t item)
 /* ReflectRay: R = N*(2*(V.N)) - V; fixed point, with |N_i| <= 2^(F+1) and
  * |V_i| <= 2^26, V.N and R in 32-bit arithmetic (rt_dot_small, rt_reflect:
  * the same bits). */
-RT_ALWAYS_INLINE vec3 reflect_ray(vec3 v, vec3 n)
+static vec3 reflect_ray(vec3 v, vec3 n)
 {
 #if NUM_MODE == NUM_MODE_FIXED
     if (rt_v3_within(n, NUM_FRAC + 1) && rt_v3_within(v, 26)) return rt_reflect(n, v, rt_dot_small(n, v), 1);

@@ -84,5 +84,8 @@ void rt_set_item_probe(void *work, int16_t *probe);
 /* Raises probe[k] (nobjects entries) to the largest |P| of the hit points
  * P the render shades on object k. */
 void rt_set_hit_probe(void *work, num *probe);
+/* The shadow rays traced since rt_init (each light's test of a shaded hit
+ * that is not cached). */
+uint32_t rt_shadow_rays(const void *work);
 
 #endif

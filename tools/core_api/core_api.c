@@ -5,7 +5,6 @@
 #include "scene_parse.h"
 #include "raytracer.h"
 #include "raster.h"
-#include "rt/rt_int.h"
 
 _Static_assert(CORE_SCENE_EINPUT == SCENE_EINPUT && CORE_SCENE_EIO == SCENE_EIO && CORE_SCENE_ENOMEM == SCENE_ENOMEM,
                "core_api.h repeats enum scene_status");
@@ -173,7 +172,7 @@ static void set_tex_fast(void *scene, const void *const *marks)
 
 static uint32_t shadow_rays(const struct render_ctx *ctx)
 {
-    return ctx->scene->kind == SCENE_RAYTRACE ? rt_state_of(ctx->work)->n.shadow_rays : 0;
+    return ctx->scene->kind == SCENE_RAYTRACE ? rt_shadow_rays(ctx->work) : 0;
 }
 
 const struct core_api API = {

@@ -86,6 +86,11 @@ void rt_set_hit_probe(void *work, num *probe)
     rt_state_of(work)->hit_probe = probe;
 }
 
+uint32_t rt_shadow_rays(const void *work)
+{
+    return ((const struct rt_state *)work)->n.shadow_rays;
+}
+
 /* The scene's options as the state keeps them (clamped), and adaptive
  * subsampling's bilinear weights. */
 static void init_options(struct rt_state *rt)

@@ -771,6 +771,24 @@ RAS_HOT __attribute__((noinline)) static void fast_scan_spans(struct fscan *P)
         : "r1", "r2", "r3", "r4", "r5", "r6", "r7", "r8", "r9", "r10", "r11", "cc", "memory");
 }
 
+/* The block's fields both scans read: the edge values and their steps, the
+ * first row's pixel at the box's left column, the box's width, the stride
+ * and the rows. */
+static void fscan_begin(const struct ras_ctx *rc, const struct fstate *S, struct fscan *P, int32_t r0,
+                        uint32_t rows)
+{
+    const struct render_target *t = rc->cur.t;
+    for (int i = 0; i < 3; i++) {
+        P->wb[i] = S->wb[i];
+        P->a[i] = S->a[i];
+        P->b[i] = S->b[i];
+    }
+    P->prow = t->rgb565 + (size_t)(r0 - (int32_t)t->y0) * rc->w + (size_t)S->c0;
+    P->kmax2 = (uint32_t)S->kmax * 2u;
+    P->stride = (uint32_t)rc->w * 2u;
+    P->rows = rows;
+}
+
 /* fast_rows(rc, S, 1) of a scanned triangle whose plane has its 32-bit form
  * (board outputs): its spans by fast_scan_spans, then drawn by its loop. */
 static uint32_t fast_run_spans(const struct ras_ctx *rc, struct fstate *S)
@@ -784,20 +802,8 @@ static uint32_t fast_run_spans(const struct ras_ctx *rc, struct fstate *S)
     struct fscan P;
     uint16_t sp[RAS_SCAN_MAX / 2];
     const uint32_t rows = (uint32_t)(r1 - r0 + 1);
-    P.wb[0] = S->wb[0];
-    P.wb[1] = S->wb[1];
-    P.wb[2] = S->wb[2];
-    P.b[0] = S->b[0];
-    P.b[1] = S->b[1];
-    P.b[2] = S->b[2];
-    P.a[0] = S->a[0];
-    P.a[1] = S->a[1];
-    P.a[2] = S->a[2];
-    size_t idx0 = (size_t)(r0 - (int32_t)t->y0) * rc->w + (size_t)S->c0;
-    P.prow = t->rgb565 + idx0;
-    P.kmax2 = (uint32_t)S->kmax * 2u;
-    P.stride = (uint32_t)rc->w * 2u;
-    P.rows = rows;
+    fscan_begin(rc, S, &P, r0, rows);
+    size_t idx0 = (size_t)(P.prow - t->rgb565);
     P.spans = sp;
     fast_scan_spans(&P);
     S->wb[0] = P.wb[0];
@@ -851,14 +857,7 @@ static uint32_t fast_run_flat(const struct ras_ctx *rc, struct fstate *S)
     if (r1 >= r0) {
         struct fscan P;
         const uint32_t rows = (uint32_t)(r1 - r0 + 1);
-        for (int i = 0; i < 3; i++) {
-            P.wb[i] = S->wb[i];
-            P.a[i] = S->a[i];
-            P.b[i] = S->b[i];
-        }
-        P.prow = t->rgb565 + (size_t)(r0 - (int32_t)t->y0) * rc->w + (size_t)S->c0;
-        P.kmax2 = (uint32_t)S->kmax * 2u;
-        P.stride = (uint32_t)rc->w * 2u;
+        fscan_begin(rc, S, &P, r0, rows);
         P.zoff = (uint32_t)(uintptr_t)rc->depth - (uint32_t)(uintptr_t)t->rgb565;
         P.zhi = S->zhi;
         P.zfrac = S->zfrac;
@@ -866,7 +865,6 @@ static uint32_t fast_run_flat(const struct ras_ctx *rc, struct fstate *S)
         P.gxf = S->gxf;
         P.gyq = S->gyq;
         P.gyf = S->gyf;
-        P.rows = rows;
         P.total = 0;
         P.dz = S->dz;
         P.col = S->T.ft->c565;

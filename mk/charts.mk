@@ -53,6 +53,8 @@ cost-model: $(BUILD)/host_sim
 	$(Q)mkdir -p $(OUT)/charts
 	$(Q)$(CHARTS_PY) tools/quality/cost_model.py validate --fixture tests/data/quality/lab.json \
 		--csv $(OUT)/charts/cost-model-validate.csv
+	$(Q)$(CHARTS_PY) tools/quality/cost_model.py choices --fixture tests/data/quality/lab.json \
+		--host-sim $(BUILD)/host_sim --write docs/charts.md
 # The same from the fixture's stored rows, without an emulator run: the work
 # of each lab scene and ray-traced row recomputed by host renders (after a
 # change to what a unit of work counts), the model fitted, its predictions.
@@ -65,6 +67,15 @@ cost-model-refit: $(BUILD)/host_sim
 	$(Q)mkdir -p $(OUT)/charts
 	$(Q)$(CHARTS_PY) tools/quality/cost_model.py validate --fixture tests/data/quality/lab.json \
 		--csv $(OUT)/charts/cost-model-validate.csv
+	$(Q)$(CHARTS_PY) tools/quality/cost_model.py choices --fixture tests/data/quality/lab.json \
+		--host-sim $(BUILD)/host_sim --write docs/charts.md
+
+# docs/charts.md's table of choices, made of the fixture's rows (the
+# compiler's choices as tests/system/test_quality.py checks them).
+.PHONY: choices-table
+choices-table: $(BUILD)/host_sim
+	$(Q)$(CHARTS_PY) tools/quality/cost_model.py choices --fixture tests/data/quality/lab.json \
+		--host-sim $(BUILD)/host_sim --write docs/charts.md
 
 # Accuracy fields of the scene measurements (contract: psnr, ssim, max_err,
 # pct_diff against the double build), added once every bench step has run.

@@ -25,6 +25,8 @@
   cheapest of the compiler's candidates the lab measured that meets it
   (tools/charts/quality.py; RP2040: the Cortex-M0+ instructions of the same
   variants);
+- docs/charts.md's table of choices is the one these choices make
+  (`make choices-table`);
 - a choice meets its target on the image rendered with it, measured here
   against the double build's exact render (every frame the compiler checks);
 - options the scene sets and --numeric stay as given;
@@ -98,11 +100,17 @@ def main():
         report("quality_held_out_%s_%s" % (re.sub(r"\W", "_", sc), t), len(es) >= 3 and not bad,
                "%d methods; " % len(es) + "; ".join("%s predicted %.4g, measured %.4g, measured dearer than %s" % (
                    e["method"] or "(as written)", e["predicted"], e["measured"], e["inversions"]) for e in bad))
-    fpsnr = {n: s["psnr_frames"] for n, s in fx["scenes"].items() if "psnr_frames" in s}
-    choices = quality.check(lab_host_sim, "firmware/scenes", fx["rows"], log=None, fpsnr=fpsnr)
+    choices = cost_model.fixture_choices(fx, lab_host_sim, "firmware/scenes")
     for e in choices:
         report("quality_choice_%s_%s_%g" % (re.sub(r"\W", "_", e["scene"]), e["target"], e["min_psnr"]), e["ok"],
                e["why"])
+    # docs/charts.md's table of choices is these choices' (make choices-table)
+    with open("docs/charts.md") as f:
+        doc = f.read()
+    new = quality.put_table(doc, quality.doc_table(choices))
+    report("quality_choices_table_current", new == doc,
+           "docs/charts.md's table of choices differs from the fixture's choices (make choices-table)" if new
+           else "docs/charts.md has no choices-table block")
 
     # the fixture's work, scenes' and ray-traced rows', recomputed from host renders
     with open(FIXTURE) as f:

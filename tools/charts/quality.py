@@ -199,3 +199,55 @@ def check(host_sim, scenes_dir, rows, log=print, fpsnr=None):
 
 COLUMNS = ["scene", "target", "min_psnr", "options", "predicted", "measured", "unit", "psnr", "best", "best_options",
            "rp2040_cycles", "ok", "why"]
+
+
+BEGIN = "<!-- begin choices-table (tools/quality/cost_model.py choices) -->"
+END = "<!-- end choices-table -->"
+
+
+def _m(x):
+    return "%.3g M" % (x / 1e6) if x is not None else "-"
+
+
+def doc_table(choices):
+    """The table of choices of docs/charts.md ("The choices"), one row per
+    scene and run of accuracy targets whose M0+ and M4F choices agree in
+    every column: options, predicted and measured costs (millions of
+    instructions a frame) and the compiler's measured PSNR. choices: check()'s."""
+    fit = {s.name: s.quality.fit for s in lab.LAB if s.quality}
+    by = {}
+    for e in choices:
+        by.setdefault((e["scene"], e["min_psnr"]), {})[e["target"]] = e
+    rows = []
+    for (scene, db), t in sorted(by.items(), key=lambda kv: (not fit[kv[0][0]], [s.name for s in lab.LAB].index(
+            kv[0][0]), kv[0][1])):
+        m0, m4 = t.get("m0plus"), t.get("m4f")
+        if not m0 or not m4:
+            continue
+        if m0["options"] == m4["options"]:
+            opts = "`%s`" % m0["options"] if m0["options"] else "as written"
+        else:
+            opts = "M0+ %s, M4F %s" % tuple("`%s`" % o if o else "as written" for o in (m0["options"], m4["options"]))
+        psnr = [e["psnr"] for e in (m0, m4)]
+        ps = "/".join(sorted({"identical" if math.isinf(p) else "%.1f dB" % p for p in psnr}))
+        cells = [opts, "%s / %s" % (_m(m0["predicted"]), _m(m0["measured"])),
+                 "%s / %s" % (_m(m4["predicted"]), _m(m4["measured"])), ps]
+        name = scene if fit[scene] else scene + " (held out)"
+        if rows and rows[-1][0] == name and rows[-1][2:] == cells:
+            rows[-1][1].append(db)
+        else:
+            rows.append([name, [db]] + cells)
+    out = ["| scene | target dB | chosen (M0+ and M4F) | M0+ predicted / measured | M4F predicted / measured | PSNR |",
+           "|---|---|---|---|---|---|"]
+    for r in rows:
+        out.append("| %s | %s | %s |" % (r[0], ", ".join("%g" % d for d in r[1]), " | ".join(r[2:])))
+    return "\n".join(out) + "\n"
+
+
+def put_table(doc, table):
+    """doc's text with the block between BEGIN and END replaced by table;
+    None when the markers are not there once each, in order."""
+    i, j = doc.find(BEGIN + "\n"), doc.find(END)
+    if i < 0 or j < i or doc.count(BEGIN) != 1 or doc.count(END) != 1:
+        return None
+    return doc[:i + len(BEGIN) + 1] + table + doc[j:]

@@ -487,6 +487,41 @@ def validate(fx, scenes_dir, log=print):
     return out
 
 
+def fixture_choices(fx, host_sim, scenes):
+    """quality.check's choices on the fixture's rows, each animated scene held
+    to its stored lowest PSNR over the frames the compiler checks."""
+    fpsnr = {n: s["psnr_frames"] for n, s in fx["scenes"].items() if "psnr_frames" in s}
+    return quality.check(host_sim, scenes, fx["rows"], log=None, fpsnr=fpsnr)
+
+
+def choices_table(args):
+    """Writes (or checks) the table of choices in a document: the block
+    between quality.BEGIN and quality.END."""
+    with open(args.fixture) as f:
+        fx = json.load(f)
+    table = quality.doc_table(fixture_choices(fx, args.host_sim, args.scenes))
+    doc = args.write or args.check
+    if not doc:
+        sys.stdout.write(table)
+        return 0
+    with open(doc) as f:
+        old = f.read()
+    new = quality.put_table(old, table)
+    if new is None:
+        print("cost_model: %s: no single %r ... %r block" % (doc, quality.BEGIN, quality.END), file=sys.stderr)
+        return 1
+    if args.check:
+        if new != old:
+            print("cost_model: %s: the table of choices differs from the fixture's (make choices-table)" % doc)
+            return 1
+        print("cost_model: %s: the table of choices matches %s" % (doc, args.fixture))
+        return 0
+    with open(doc + ".tmp", "w") as f:
+        f.write(new)
+    os.replace(doc + ".tmp", doc)
+    return 0
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     sub = ap.add_subparsers(dest="cmd", required=True)
@@ -514,6 +549,13 @@ def main():
     w.add_argument("--fixture", required=True)
     w.add_argument("--host-sim", required=True)
     w.add_argument("--scenes", default="firmware/scenes")
+    c = sub.add_parser("choices", help="the table of choices of docs/charts.md from the fixture's rows")
+    c.add_argument("--fixture", required=True)
+    c.add_argument("--host-sim", required=True)
+    c.add_argument("--scenes", default="firmware/scenes")
+    g = c.add_mutually_exclusive_group()
+    g.add_argument("--write", metavar="DOC")
+    g.add_argument("--check", metavar="DOC")
     b = sub.add_parser("model")
     b.add_argument("--fixture", required=True)
     b.add_argument("--scenes", default="firmware/scenes")
@@ -527,6 +569,8 @@ def main():
         return measure(args)
     if args.cmd == "work":
         return refresh_work(args)
+    if args.cmd == "choices":
+        return choices_table(args)
     with open(args.fixture) as f:
         fx = json.load(f)
     if args.cmd == "validate":

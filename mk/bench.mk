@@ -63,6 +63,10 @@ TESTS     += tests/system/test_bench_accuracy.py:$(BUILD)/host_sim \
              tests/system/test_bench_accuracy.py:$(BUILD)/host_sim:$(subst $(eval) ,:,$(BENCH_ACC_IMAGES))
 TEST_DEPS += $(BUILD)/host_sim $(BENCH_ACC_IMAGES)
 
+# tools/bench/profile.py's self and inclusive figures and calls on a made-up
+# block trace (calls, a tail call, recursion, exceptions, a long jump).
+TESTS     += tests/system/test_profile.py
+
 # The measured tables of README.md and docs/*.md come from results.jsonl
 # (tools/bench/doc_tables.py: each between comments naming its generator).
 # `make bench` ends by listing the tables its figures made stale;

@@ -83,10 +83,14 @@ static rgb trace_ray(struct rt_state *rt, struct rt_ray *ray, num t_min, num t_m
     if (prim) prim->item = hit.item;
     int16_t mo = item_material_object(rt, hit.item);
     const struct rt_material *m = &s->objects[mo].mat;
-    /* P = O + D t; D t in 32-bit arithmetic when every hit is proven to lie
-     * on a bounded object (SCENE_FITS_HIT) */
+    /* P = O + D t; D t and the sum in 32-bit arithmetic when every hit is
+     * proven to lie on a bounded object (SCENE_FITS_HIT: O and P, a camera
+     * or hit point and a hit point, are positions, each within half the
+     * format, so the sum is P itself, never saturated: v3_add's bits) */
     vec3 p = s->fits & SCENE_FITS_HIT
-                 ? v3_add(ray->o, v3_make(num_mul_fit(ray->d.x, hit.t), num_mul_fit(ray->d.y, hit.t), num_mul_fit(ray->d.z, hit.t)))
+                 ? v3_make(num_add_fit(ray->o.x, num_mul_fit(ray->d.x, hit.t)),
+                           num_add_fit(ray->o.y, num_mul_fit(ray->d.y, hit.t)),
+                           num_add_fit(ray->o.z, num_mul_fit(ray->d.z, hit.t)))
              : hit.t == RT_T_FAR ? rt_far_point(ray)
                                  : v3_add(ray->o, v3_scale(ray->d, hit.t));
     if (rt->hit_probe) {

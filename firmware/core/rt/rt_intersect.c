@@ -915,7 +915,13 @@ vec3 rt_hit_normal(const struct rt_state *rt, const struct rt_hit *hit, const ve
     const struct rt_object *o = &rt->s->objects[hit->surf];
     vec3 n;
     if (o->shape == RT_SPHERE) {
-        n = v3_sub(*p, o->center);
+        /* a hit point and a centre proven within half the format
+         * (SCENE_FITS_HIT): their difference in 32 bits is never saturated,
+         * v3_sub's bits */
+        if (rt->s->fits & SCENE_FITS_HIT)
+            n = v3_make(num_add_fit(p->x, -o->center.x), num_add_fit(p->y, -o->center.y), num_add_fit(p->z, -o->center.z));
+        else
+            n = v3_sub(*p, o->center);
         if (rt->book) {
             n = v3_scale(n, num_div(NUM_ONE, v3_len(n)));  /* N * (1/|N|), as the demos */
         } else {

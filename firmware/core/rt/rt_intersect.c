@@ -589,6 +589,7 @@ static int closest_prim(struct rt_state *rt, struct rt_ray *ray, num t_min, num 
     const struct rt_object *objs = rt->s->objects;
     int16_t *iv = rt->prim_iv, nobj = (int16_t)rt->s->nobjects, col = rt->prim_col, skip = rt->skip_item;
     int found = 0, tried = 0;
+    uint32_t tests = 0;   /* the sphere tests, counted once at the end */
     /* along the row's exact directions with the per-frame constants: the
      * lean path (prim_sphere_hit) */
     int lean = NUM_MODE == NUM_MODE_FIXED && rt->cached && ray->dxm && ray->dxrow >= 0 && ray->origin < 0;
@@ -599,7 +600,7 @@ static int closest_prim(struct rt_state *rt, struct rt_ray *ray, num t_min, num 
         int16_t item = items[i];
         if (item == skip) continue;
         if (item < nobj && objs[item].shape == RT_SPHERE) {
-            rt->n.tests++;
+            tests++;
             int16_t *e = iv + 2 * item;
             if (e[0] == RT_IV_TODO) rt_row_interval(rt, item, e);
             if (col < e[0]) {
@@ -622,6 +623,7 @@ static int closest_prim(struct rt_state *rt, struct rt_ray *ray, num t_min, num 
         limit = hit->t;
         found = 1;
     }
+    rt->n.tests += tests;
     if (!tried && skip < 0) {
         /* every candidate's interval leaves this column out: so it does for
          * the columns up to run, the pixels' background (rt_trace_pixel) */

@@ -591,8 +591,11 @@ static int closest_prim(struct rt_state *rt, struct rt_ray *ray, num t_min, num 
     int found = 0, tried = 0;
     uint32_t tests = 0;   /* the sphere tests, counted once at the end */
     /* along the row's exact directions with the per-frame constants: the
-     * lean path (prim_sphere_hit) */
-    int lean = NUM_MODE == NUM_MODE_FIXED && rt->cached && ray->dxm && ray->dxrow >= 0 && ray->origin < 0;
+     * lean path (prim_sphere_hit). Always, in fixed point: rt->prim_iv is
+     * set only for a pixel's primary ray from the camera (origin -1) with
+     * its unturned exact direction (dxm = H, dxrow its row) and the
+     * per-frame constants in use (exact_dir, row_iv in rt_trace.c). */
+    const int lean = NUM_MODE == NUM_MODE_FIXED;
     /* the background run's last column (rt_state.bg_*): the tile's last
      * one (its list), then before every later interval */
     int16_t run = rt->prim_items ? (int16_t)(col / RT_TILE * RT_TILE + RT_TILE - 1) : INT16_MAX;

@@ -587,7 +587,9 @@ static int closest_prim(struct rt_state *rt, struct rt_ray *ray, num t_min, num 
                         const int16_t *items, uint16_t nitems)
 {
     const struct rt_object *objs = rt->s->objects;
-    int16_t *iv = rt->prim_iv, nobj = (int16_t)rt->s->nobjects, col = rt->prim_col, skip = rt->skip_item;
+    /* (rt->skip_item is -1: it is set only around a shadow ray's search,
+     * rt_lighting.c) */
+    int16_t *iv = rt->prim_iv, nobj = (int16_t)rt->s->nobjects, col = rt->prim_col;
     int found = 0, tried = 0;
     uint32_t tests = 0;   /* the sphere tests, counted once at the end */
     /* along the row's exact directions with the per-frame constants: the
@@ -601,7 +603,6 @@ static int closest_prim(struct rt_state *rt, struct rt_ray *ray, num t_min, num 
     int16_t run = rt->prim_items ? (int16_t)(col / RT_TILE * RT_TILE + RT_TILE - 1) : INT16_MAX;
     for (uint16_t i = 0; i < nitems; i++) {
         int16_t item = items[i];
-        if (item == skip) continue;
         if (item < nobj && objs[item].shape == RT_SPHERE) {
             tests++;
             int16_t *e = iv + 2 * item;
@@ -627,7 +628,7 @@ static int closest_prim(struct rt_state *rt, struct rt_ray *ray, num t_min, num 
         found = 1;
     }
     rt->n.tests += tests;
-    if (!tried && skip < 0) {
+    if (!tried) {
         /* every candidate's interval leaves this column out: so it does for
          * the columns up to run, the pixels' background (rt_trace_pixel) */
         rt->bg_row = ray->dxrow;

@@ -149,7 +149,8 @@ struct rt_state {
     num row_y;                 /* viewport y of row row_y_row */
     int32_t row_y_row;
     /* exact primary directions (rt_exact_comp): row dx_row's y vh, d h and
-     * their squares' sum at 2F bits; dx_ok 0 when they do not fit */
+     * their squares' sum at 2F bits; dx_ok bit 1: they fit, bit 2: every
+     * column's x vh fits (rt_init.c, init_viewport) */
     int32_t dx_row;
     num dx_y, dx_z;
     wnum dx_yz;

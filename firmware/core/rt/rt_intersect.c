@@ -120,7 +120,7 @@ RT_ALWAYS_INLINE int sphere_quad_row(struct rt_obj_cache *oc, const struct rt_ra
     if (oc->px_row != ray->dxrow) {
         oc->px_row = ray->dxrow;
         oc->px_b = -(num_smul32(co.y, ray->dx.y) + num_smul32(co.z, ray->dx.z));
-        oc->px_x0 = num_smul32(co.y, ray->dx.z) - num_smul32(co.z, ray->dx.y);
+        oc->px_x0 = rt_mag64(num_smul32(co.y, ray->dx.z) - num_smul32(co.z, ray->dx.y));
         oc->px_x2 = num_smul32(co.x, ray->dx.y);
         oc->px_cxd = num_smul32(co.x, ray->dx.z);
     }
@@ -128,7 +128,7 @@ RT_ALWAYS_INLINE int sphere_quad_row(struct rt_obj_cache *oc, const struct rt_ra
     if (k->c > 0 && bx <= 0) return 0;
     /* the near root certainly beyond the limit (rt_near_beyond) */
     if (oc->near_ok && rt_near_beyond(bx, k->cm, k->a, limit)) return 0;
-    return rt_quad_solve_x(bx, rt_mag64(oc->px_x0), rt_mag64(num_smul32(co.z, ray->dx.x) - oc->px_cxd),
+    return rt_quad_solve_x(bx, oc->px_x0, rt_mag64(num_smul32(co.z, ray->dx.x) - oc->px_cxd),
                            rt_mag64(oc->px_x2 - num_smul32(co.y, ray->dx.x)), k->a, &oc->qs, &k->k);
 #else
     (void)oc; (void)ray; (void)k; (void)limit;

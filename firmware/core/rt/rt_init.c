@@ -137,6 +137,11 @@ static void init_viewport(struct rt_state *rt)
         rt->col_x[c] = wnum_div(num_mul_wide(num_from_int(c - rt->w / 2), rt->vw), wnum_from_num(rt->wn));
     rt->row_y_row = -1;
     rt->dx_row = -1;
+    /* bit 2 of dx_ok: every column's x vh fits the exact directions
+     * (rt_exact_comp at both ends: |x vh| grows with |x|), formed in
+     * exact_dir without the checks */
+    num v0, v1;
+    rt->dx_ok = (uint8_t)(rt_exact_comp(rt->vh, -(rt->w / 2), &v0) && rt_exact_comp(rt->vh, rt->w - 1 - rt->w / 2, &v1) ? 2 : 0);
     if (rt->row_y_tab)
         for (int r = 0; r < rt->h; r++)
             rt->row_y_tab[r] = num_div(num_mul(num_from_int(rt->h / 2 - 1 - r), rt->vh), rt->hn);

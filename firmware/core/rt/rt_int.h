@@ -87,10 +87,11 @@ struct rt_obj_cache {
                            * quotient is then P - C rounded by a shift), else -1 */
     /* exact primary directions (x vh, y vh, d h) from the camera: CO x D
      * and -CO.D at 2F fraction bits are linear in x, so a row's part is
-     * kept (row px_row; -1: none): -CO.D = px_b + -co.x (x vh), (CO x D).x
-     * = px_x0, .y = co.z (x vh) - px_cxd, .z = px_x2 - co.y (x vh) */
+     * kept (row px_row; -1: none): -CO.D = px_b + -co.x (x vh), |(CO x
+     * D).x| = px_x0, .y = co.z (x vh) - px_cxd, .z = px_x2 - co.y (x vh) */
     int32_t px_row;
-    int64_t px_b, px_x0, px_x2, px_cxd;
+    int64_t px_b, px_x2, px_cxd;
+    uint64_t px_x0;
     uint8_t near_ok;      /* rt_near_c_ok of c_cam: near roots beyond a limit found before the square root */
     struct rt_ivsphere ivs;   /* its per-frame part of the row intervals (rt_num.h) */
 };
@@ -149,7 +150,8 @@ struct rt_state {
     num row_y;                 /* viewport y of row row_y_row */
     int32_t row_y_row;
     /* exact primary directions (rt_exact_comp): row dx_row's y vh, d h and
-     * their squares' sum at 2F bits; dx_ok 0 when they do not fit */
+     * their squares' sum at 2F bits; dx_ok bit 1: they fit, bit 2: every
+     * column's x vh fits (rt_init.c, init_viewport) */
     int32_t dx_row;
     num dx_y, dx_z;
     wnum dx_yz;

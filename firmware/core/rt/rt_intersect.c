@@ -120,7 +120,7 @@ RT_ALWAYS_INLINE int sphere_quad_row(struct rt_obj_cache *oc, const struct rt_ra
     if (oc->px_row != ray->dxrow) {
         oc->px_row = ray->dxrow;
         oc->px_b = -(num_smul32(co.y, ray->dx.y) + num_smul32(co.z, ray->dx.z));
-        oc->px_x0 = num_smul32(co.y, ray->dx.z) - num_smul32(co.z, ray->dx.y);
+        oc->px_x0 = rt_mag64(num_smul32(co.y, ray->dx.z) - num_smul32(co.z, ray->dx.y));
         oc->px_x2 = num_smul32(co.x, ray->dx.y);
         oc->px_cxd = num_smul32(co.x, ray->dx.z);
     }
@@ -128,7 +128,7 @@ RT_ALWAYS_INLINE int sphere_quad_row(struct rt_obj_cache *oc, const struct rt_ra
     if (k->c > 0 && bx <= 0) return 0;
     /* the near root certainly beyond the limit (rt_near_beyond) */
     if (oc->near_ok && rt_near_beyond(bx, k->cm, k->a, limit)) return 0;
-    return rt_quad_solve_x(bx, rt_mag64(oc->px_x0), rt_mag64(num_smul32(co.z, ray->dx.x) - oc->px_cxd),
+    return rt_quad_solve_x(bx, oc->px_x0, rt_mag64(num_smul32(co.z, ray->dx.x) - oc->px_cxd),
                            rt_mag64(oc->px_x2 - num_smul32(co.y, ray->dx.x)), k->a, &oc->qs, &k->k);
 #else
     (void)oc; (void)ray; (void)k; (void)limit;
@@ -587,19 +587,24 @@ static int closest_prim(struct rt_state *rt, struct rt_ray *ray, num t_min, num 
                         const int16_t *items, uint16_t nitems)
 {
     const struct rt_object *objs = rt->s->objects;
-    int16_t *iv = rt->prim_iv, nobj = (int16_t)rt->s->nobjects, col = rt->prim_col, skip = rt->skip_item;
+    /* (rt->skip_item is -1: it is set only around a shadow ray's search,
+     * rt_lighting.c) */
+    int16_t *iv = rt->prim_iv, nobj = (int16_t)rt->s->nobjects, col = rt->prim_col;
     int found = 0, tried = 0;
+    uint32_t tests = 0;   /* the sphere tests, counted once at the end */
     /* along the row's exact directions with the per-frame constants: the
-     * lean path (prim_sphere_hit) */
-    int lean = NUM_MODE == NUM_MODE_FIXED && rt->cached && ray->dxm && ray->dxrow >= 0 && ray->origin < 0;
+     * lean path (prim_sphere_hit). Always, in fixed point: rt->prim_iv is
+     * set only for a pixel's primary ray from the camera (origin -1) with
+     * its unturned exact direction (dxm = H, dxrow its row) and the
+     * per-frame constants in use (exact_dir, row_iv in rt_trace.c). */
+    const int lean = NUM_MODE == NUM_MODE_FIXED;
     /* the background run's last column (rt_state.bg_*): the tile's last
      * one (its list), then before every later interval */
     int16_t run = rt->prim_items ? (int16_t)(col / RT_TILE * RT_TILE + RT_TILE - 1) : INT16_MAX;
     for (uint16_t i = 0; i < nitems; i++) {
         int16_t item = items[i];
-        if (item == skip) continue;
         if (item < nobj && objs[item].shape == RT_SPHERE) {
-            rt->n.tests++;
+            tests++;
             int16_t *e = iv + 2 * item;
             if (e[0] == RT_IV_TODO) rt_row_interval(rt, item, e);
             if (col < e[0]) {
@@ -622,7 +627,8 @@ static int closest_prim(struct rt_state *rt, struct rt_ray *ray, num t_min, num 
         limit = hit->t;
         found = 1;
     }
-    if (!tried && skip < 0) {
+    rt->n.tests += tests;
+    if (!tried) {
         /* every candidate's interval leaves this column out: so it does for
          * the columns up to run, the pixels' background (rt_trace_pixel) */
         rt->bg_row = ray->dxrow;
@@ -915,7 +921,13 @@ vec3 rt_hit_normal(const struct rt_state *rt, const struct rt_hit *hit, const ve
     const struct rt_object *o = &rt->s->objects[hit->surf];
     vec3 n;
     if (o->shape == RT_SPHERE) {
-        n = v3_sub(*p, o->center);
+        /* a hit point and a centre proven within half the format
+         * (SCENE_FITS_HIT): their difference in 32 bits is never saturated,
+         * v3_sub's bits */
+        if (rt->s->fits & SCENE_FITS_HIT)
+            n = v3_make(num_add_fit(p->x, -o->center.x), num_add_fit(p->y, -o->center.y), num_add_fit(p->z, -o->center.z));
+        else
+            n = v3_sub(*p, o->center);
         if (rt->book) {
             n = v3_scale(n, num_div(NUM_ONE, v3_len(n)));  /* N * (1/|N|), as the demos */
         } else {

@@ -190,6 +190,10 @@ static void full_strip(struct rt_state *rt, struct render_target *t)
         /* a round glass: plain pixels outside its circle are not traced */
         int32_t d = rt->w < rt->h ? rt->w : rt->h, dy = 2 * row + 1 - rt->h;
         int skip = rt->round && rt->ss <= 1;
+        /* the row's RGB565 pixels and its covered count for the plain
+         * pixels' loop, once a row */
+        uint16_t *px = runs ? t->rgb565 + (size_t)(row - t->y0) * t->width : NULL;
+        uint32_t covered = 0;
         for (int col = 0; col < rt->w; col++) {
             int32_t dx = 2 * col + 1 - rt->w;
             if (skip && dx * dx + dy * dy > d * d) {
@@ -201,15 +205,15 @@ static void full_strip(struct rt_state *rt, struct render_target *t)
                  * RGB565 output alone, without their calls */
                 struct rt_prim pr;
                 rgb c = rt_trace_pixel(rt, col, row, &pr);
-                uint16_t *px = t->rgb565 + (size_t)(row - t->y0) * t->width;
                 px[col] = rgb_to_565(c);
-                rt->n.covered += pr.item >= 0;
+                covered += pr.item >= 0;
                 col = background_run(rt, px, col, row);
                 continue;
             }
             rgb c = pixel(rt, col, row, 1, have_up, probe ? probe + col : NULL);
             rt_put(rt, t, col, row, c, rt->px_covered);
         }
+        rt->n.covered += covered;
         rt->last_row = row;
     }
 }

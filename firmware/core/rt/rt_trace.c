@@ -83,10 +83,14 @@ static rgb trace_ray(struct rt_state *rt, struct rt_ray *ray, num t_min, num t_m
     if (prim) prim->item = hit.item;
     int16_t mo = item_material_object(rt, hit.item);
     const struct rt_material *m = &s->objects[mo].mat;
-    /* P = O + D t; D t in 32-bit arithmetic when every hit is proven to lie
-     * on a bounded object (SCENE_FITS_HIT) */
+    /* P = O + D t; D t and the sum in 32-bit arithmetic when every hit is
+     * proven to lie on a bounded object (SCENE_FITS_HIT: O and P, a camera
+     * or hit point and a hit point, are positions, each within half the
+     * format, so the sum is P itself, never saturated: v3_add's bits) */
     vec3 p = s->fits & SCENE_FITS_HIT
-                 ? v3_add(ray->o, v3_make(num_mul_fit(ray->d.x, hit.t), num_mul_fit(ray->d.y, hit.t), num_mul_fit(ray->d.z, hit.t)))
+                 ? v3_make(num_add_fit(ray->o.x, num_mul_fit(ray->d.x, hit.t)),
+                           num_add_fit(ray->o.y, num_mul_fit(ray->d.y, hit.t)),
+                           num_add_fit(ray->o.z, num_mul_fit(ray->d.z, hit.t)))
              : hit.t == RT_T_FAR ? rt_far_point(ray)
                                  : v3_add(ray->o, v3_scale(ray->d, hit.t));
     if (rt->hit_probe) {
@@ -312,14 +316,17 @@ static void exact_dir(struct rt_state *rt, struct rt_ray *ray, int col, int row)
 {
     if (rt->dx_row != row) {
         rt->dx_row = row;
-        rt->dx_ok = (uint8_t)(rt->h <= 1024 && rt_exact_comp(rt->vh, rt->h / 2 - 1 - row, &rt->dx_y) &&
-                              rt_exact_comp(rt->d, rt->h, &rt->dx_z));
-        if (rt->dx_ok && rt->cam_rotated) rt_exact_turn_row(rt->cam_q29, rt->dx_y, rt->dx_z, rt->dx_turn);
-        else if (rt->dx_ok) rt->dx_yz = rt_exact_sq(rt->dx_y) + rt_exact_sq(rt->dx_z);
-        rt->dx_iv = rt->dx_ok && !rt->cam_rotated ? row_iv(rt, row) : NULL;
+        int ok = rt->h <= 1024 && rt_exact_comp(rt->vh, rt->h / 2 - 1 - row, &rt->dx_y) &&
+                 rt_exact_comp(rt->d, rt->h, &rt->dx_z);
+        rt->dx_ok = (uint8_t)((rt->dx_ok & 2) | ok);   /* the columns' bit is the render's */
+        if (ok && rt->cam_rotated) rt_exact_turn_row(rt->cam_q29, rt->dx_y, rt->dx_z, rt->dx_turn);
+        else if (ok) rt->dx_yz = rt_exact_sq(rt->dx_y) + rt_exact_sq(rt->dx_z);
+        rt->dx_iv = ok && !rt->cam_rotated ? row_iv(rt, row) : NULL;
     }
     num vx;
-    if (!rt->dx_ok || !rt_exact_comp(rt->vh, col - rt->w / 2, &vx)) return;
+    if (!(rt->dx_ok & 1)) return;
+    if (rt->dx_ok & 2) vx = rt->vh * (col - rt->w / 2);   /* every column fits (init_viewport) */
+    else if (!rt_exact_comp(rt->vh, col - rt->w / 2, &vx)) return;
     if (!rt->cam_rotated) {
         ray->dx.x = vx;
         ray->dx.y = rt->dx_y;

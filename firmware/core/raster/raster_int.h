@@ -35,6 +35,7 @@ struct ras_inst {
     uint8_t vlit;    /* Gouraud lit per vertex (ras_def.vert_shade), not per corner */
     uint8_t vfit;    /* its vertices to camera space without saturation (ras_mul_point_fit) */
     uint8_t vin;     /* every vertex inside every clipping plane (no ras_point_inside) */
+    uint8_t vsplit;  /* vfit's products in 32 bits (ras_mul_point_fit_split's s), 0: none */
     struct ras_box box;  /* its model's coordinates (render_init) */
 };
 

@@ -309,6 +309,63 @@ vec3 ras_mul_point_fit(const mat4 *m, vec3 p)
     return r;
 }
 
+int ras_fit_split(const mat4 *m, const struct ras_box *b)
+{
+    /* a coordinate a = ah 2^s + al (ah = a >> s, al in [0, 2^s)) and an
+     * entry e of m: (e a + 2^(F-1)) >> F, num_mul_round's value, is
+     * (e ah + ((e al + 2^(F-1)) >> s)) >> (F - s) (nested floors), exact in
+     * 32 bits when |e| <= M and |a| <= A give
+     *   w = e al + 2^(F-1):  |w| <= M (2^s - 1) + 2^(F-1) < 2^31,
+     *   u = e ah:            |u| <= M ((A >> s) + 1) < 2^31,
+     *   u + (w >> s):        |.| <= that + (|w| >> s) + 1 < 2^31;
+     * s the largest that keeps w (the others only get easier with s) */
+    if (!b->ok) return 0;
+    int64_t M = 0, A = 0;
+    for (int i = 0; i < 3; i++)
+        for (int j = 0; j < 3; j++) {
+            const int64_t e = m->m[i][j] < 0 ? -(int64_t)m->m[i][j] : m->m[i][j];
+            if (e > M) M = e;
+        }
+    for (int j = 0; j < 3; j++) {
+        const int64_t lo = b->lo[j] < 0 ? -(int64_t)b->lo[j] : b->lo[j];
+        const int64_t hi = b->hi[j] < 0 ? -(int64_t)b->hi[j] : b->hi[j];
+        if (lo > A) A = lo;
+        if (hi > A) A = hi;
+    }
+    const int64_t lim = INT32_MAX, half = (int64_t)1 << (NUM_FRAC - 1);
+    for (int s = NUM_FRAC < 30 ? NUM_FRAC : 30; s >= 1; s--) {
+        const int64_t w = M * (((int64_t)1 << s) - 1) + half;
+        if (w > lim) continue;
+        const int64_t u = M * ((A >> s) + 1);
+        return u + (w >> s) + 1 <= lim ? s : 0;
+    }
+    return 0;
+}
+
+/* (e a + 2^(F-1)) >> F from a's halves (ras_fit_split) */
+static inline int32_t mul_split(int32_t e, int32_t ah, int32_t al, int s, int fs)
+{
+    return (e * ah + ((e * al + ((int32_t)1 << (NUM_FRAC - 1))) >> s)) >> fs;
+}
+
+vec3 ras_mul_point_fit_split(const mat4 *m, vec3 p, int s)
+{
+    const int fs = NUM_FRAC - s;
+    const uint32_t mask = ((uint32_t)1 << s) - 1u;
+    const int32_t xh = p.x >> s, yh = p.y >> s, zh = p.z >> s;
+    const int32_t xl = (int32_t)((uint32_t)p.x & mask), yl = (int32_t)((uint32_t)p.y & mask),
+                  zl = (int32_t)((uint32_t)p.z & mask);
+    /* (sums modulo 2^32 as num_add_fit's: the same in any order) */
+    vec3 r;
+    r.x = (num)((uint32_t)mul_split(m->m[0][0], xh, xl, s, fs) + (uint32_t)mul_split(m->m[0][1], yh, yl, s, fs) +
+                (uint32_t)mul_split(m->m[0][2], zh, zl, s, fs) + (uint32_t)m->m[0][3]);
+    r.y = (num)((uint32_t)mul_split(m->m[1][0], xh, xl, s, fs) + (uint32_t)mul_split(m->m[1][1], yh, yl, s, fs) +
+                (uint32_t)mul_split(m->m[1][2], zh, zl, s, fs) + (uint32_t)m->m[1][3]);
+    r.z = (num)((uint32_t)mul_split(m->m[2][0], xh, xl, s, fs) + (uint32_t)mul_split(m->m[2][1], yh, yl, s, fs) +
+                (uint32_t)mul_split(m->m[2][2], zh, zl, s, fs) + (uint32_t)m->m[2][3]);
+    return r;
+}
+
 /* wnum_div(a, z) for z > 0 by the prepared z: its path for a numerator
  * |a| 2^F below 2^63 and a quotient that does not saturate (the same
  * rounding, halves away from zero), wnum_div itself otherwise. Inline:
@@ -503,6 +560,19 @@ int ras_box_transform(const mat4 *m, const struct ras_box *b, struct ras_box *ou
 }
 
 vec3 ras_mul_point_fit(const mat4 *m, vec3 p) { return m4_mul_point(m, p); }
+
+int ras_fit_split(const mat4 *m, const struct ras_box *b)
+{
+    (void)m;
+    (void)b;
+    return 0;
+}
+
+vec3 ras_mul_point_fit_split(const mat4 *m, vec3 p, int s)
+{
+    (void)s;
+    return m4_mul_point(m, p);
+}
 
 int ras_sphere_inside(const mat4 *m, const struct ras_box *b, const struct ras_box *cb, num near_z, num side_x,
                       num side_y)

@@ -366,6 +366,25 @@ vec3 ras_mul_point_fit_split(const mat4 *m, vec3 p, int s)
     return r;
 }
 
+/* num_udiv64_32_pre(n, p, rem) for a divisor below 2^30 (p->s >= 2): its
+ * estimate q is at most 3 below the quotient, so the remainder n - q d
+ * lies below 4 d < 2^32 and is its low word, n's low word less q d modulo
+ * 2^32 (one 32-bit product instead of the 64-bit one): the same quotient
+ * and remainder. */
+static inline __attribute__((always_inline)) uint32_t udiv_pre_small(uint64_t n, const struct num_udiv_pre *p,
+                                                                     uint32_t *rem)
+{
+    const uint32_t s = p->s, d = p->d, hi = (uint32_t)(n >> 32), lo = (uint32_t)n;
+    const uint32_t nh = hi << s | lo >> (32 - s);
+    uint32_t q = nh + num_mulhi32(nh, p->v), r = lo - q * d;
+    while (r >= d) {
+        r -= d;
+        q++;
+    }
+    *rem = r;
+    return q;
+}
+
 /* wnum_div(a, z) for z > 0 by the prepared z: its path for a numerator
  * |a| 2^F below 2^63 and a quotient that does not saturate (the same
  * rounding, halves away from zero), wnum_div itself otherwise. Inline:
@@ -377,7 +396,7 @@ static inline __attribute__((always_inline)) num wdiv_pre(wnum a, num z, const s
         const uint64_t n = ua << NUM_FRAC;
         if ((n >> 32) < p->d) {
             uint32_t rm;
-            const uint32_t q = num_udiv64_32_pre(n, p, &rm);
+            const uint32_t q = p->s >= 2 ? udiv_pre_small(n, p, &rm) : num_udiv64_32_pre(n, p, &rm);
             if (q < (uint32_t)INT32_MAX || (q == (uint32_t)INT32_MAX && rm < p->d - rm)) {
                 const num r = (num)q + (rm >= p->d - rm);
                 return a < 0 ? -r : r;
@@ -398,9 +417,20 @@ static num recip_pre(num z, const struct num_udiv_pre *p)
     const uint32_t s = p->s, dn = p->dn, k = 2 * NUM_FRAC + s;
     if (k < 32 || k > 62) return wnum_div(wnum_from_num(NUM_ONE), wnum_from_num(z));
     const uint32_t j = k - 32, nh = (uint32_t)1 << j;
-    uint32_t rl;
-    const uint32_t q = num_udiv_step(nh + (j ? p->v >> (32 - j) : 0), nh, 0, dn, &rl);
-    const uint32_t rm = rl >> s;
+    uint32_t q = nh + (j ? p->v >> (32 - j) : 0), rm;
+    if (s >= 2) {
+        /* the remainder 2^2F - q d below 4 d < 2^32 (udiv_pre_small) */
+        const uint32_t d = p->d;
+        rm = (uint32_t)((uint64_t)1 << (2 * NUM_FRAC)) - q * d;
+        while (rm >= d) {
+            rm -= d;
+            q++;
+        }
+    } else {
+        uint32_t rl;
+        q = num_udiv_step(q, nh, 0, dn, &rl);
+        rm = rl >> s;
+    }
     if (q < (uint32_t)INT32_MAX || (q == (uint32_t)INT32_MAX && rm < p->d - rm)) return (num)q + (rm >= p->d - rm);
     return wnum_div(wnum_from_num(NUM_ONE), wnum_from_num(z));
 }
@@ -416,7 +446,9 @@ void ras_div_depth(num x, num y, num z, num unproj, num near_z, num *X, num *Y, 
     *Y = wdiv_pre(num_mul_round(y, unproj), z, &p);
     *iz = recip_pre(z, &p);   /* num_div(1, z): wnum_div's rounding of 2^F 2^F / z */
     /* 0 < near < z: the quotient fits 32 bits */
+    uint32_t rd;
     *depth = near_z <= 0 || z <= near_z ? ras_depth32(near_z, z)
+             : p.s >= 2                 ? udiv_pre_small((uint64_t)(uint32_t)near_z << 32, &p, &rd)
                                         : num_udiv64_32_pre((uint64_t)(uint32_t)near_z << 32, &p, 0);
 }
 

@@ -377,6 +377,91 @@ static void trilinear_lod(const struct ras_ctx *rc, const struct ras_texture *tx
     dt->iz_eff = num_div_int(num_add(num_add(a->iz, b->iz), c->iz), 3);
 }
 
+int ras_default_lean(const struct ras_ctx *rc)
+{
+    const int sh = rc->def.shading;
+    /* the fast loops take the pass, no set-up is kept between strips, and
+     * every triangle the strips visit is a live front face (no flag byte:
+     * back faces culled) */
+    return FW_FEATURE_RAS_FAST && rc->fast.on && !rc->fast.keep_on && !rc->cur.depth_only &&
+           rc->cur.depth_func == RAS_DEPTH_LESS_WRITE && rc->def.pv && !rc->def.tri_flags &&
+           (sh == SHADE_NONE || sh == SHADE_FLAT || sh == SHADE_GOURAUD);
+}
+
+/* ras_default_render_triangle of an untextured triangle of three projected
+ * corners lit by the frame (or unlit) where rc->cur.lean: what
+ * projected_corners and fast_describe give (clockwise corners: a front
+ * face), straight to the fast loops. 0 when it does not apply or the fast
+ * loops decline it (nothing drawn: the full path then takes it). */
+static int render_lean(struct ras_ctx *rc, const struct ras_instance *in, const struct ras_inst *ri,
+                       const struct ras_model *m, const struct ras_triangle *t, uint32_t gi)
+{
+    if (in->texture >= 0 && in->texture < rc->s->ntextures && m->has_uvs) return 0;
+    const struct ras_pv *pv = rc->def.pv + ri->vbase;
+    const uint32_t v0 = t->v[0], v1 = t->v[1], v2 = t->v[2];
+    const struct ras_pv *q0 = &pv[v0], *q1 = &pv[v1], *q2 = &pv[v2];
+    if (!ras_pv_in(q0) || !ras_pv_in(q1) || !ras_pv_in(q2)) return 0;
+    struct ras_sv sv[3];
+    struct ras_fast_tri ft;
+    sv[0].x = q0->sx;
+    sv[0].y = q0->sy;
+    sv[0].iz = q0->iz;
+    sv[0].depth = q0->depth;
+    sv[1].x = q1->sx;
+    sv[1].y = q1->sy;
+    sv[1].iz = q1->iz;
+    sv[1].depth = q1->depth;
+    sv[2].x = q2->sx;
+    sv[2].y = q2->sy;
+    sv[2].iz = q2->iz;
+    sv[2].depth = q2->depth;
+    ft.src = SPAN_SRC_CONST;
+    ft.ai_i = ft.ai_uv = 0;
+    const int sh = rc->def.shading;
+    if (sh == SHADE_GOURAUD) {
+        if (ri->vlit) {
+            const num *vs = rc->def.vert_shade + ri->vbase;
+            sv[0].a[0] = vs[v0];
+            sv[1].a[0] = vs[v1];
+            sv[2].a[0] = vs[v2];
+        } else if (rc->def.tri_shade) {
+            const num *ts = rc->def.tri_shade + 3 * (size_t)gi;
+            sv[0].a[0] = ts[0];
+            sv[1].a[0] = ts[1];
+            sv[2].a[0] = ts[2];
+        } else {
+            return 0;
+        }
+        ft.shade = SPAN_SHADE_RGB;
+        if (!levels_memo(rc, t->color, &ft)) return 0;
+    } else {
+        rgb c = t->color;
+        if (sh == SHADE_FLAT) {
+            num fi;
+            if (ri->vlit) fi = rc->def.vert_shade[ri->vbase + v0];
+            else if (rc->def.tri_shade) fi = rc->def.tri_shade[3 * (size_t)gi];
+            else return 0;
+            c = rgb_scale(c, fi);
+        }
+        ft.shade = SPAN_SHADE_NONE;
+        struct ras_colour_memo *mo = &rc->fast.memo;
+        if (!mo->valid || !rgb_same(mo->c, c)) {
+            mo->c = c;
+            mo->c565 = rgb_to_565(c);
+            rgb_to_888(c, mo->c888);
+            mo->valid = 1;
+        }
+        ft.c565 = mo->c565;
+        ft.c888[0] = mo->c888[0];
+        ft.c888[1] = mo->c888[1];
+        ft.c888[2] = mo->c888[2];
+    }
+    const int32_t drawn = ras_fast_fill(rc, &sv[0], &sv[1], &sv[2], &ft, NULL);
+    if (drawn < 0) return 0;
+    rc->cur.st->pixels_written += (uint32_t)drawn;
+    return 1;
+}
+
 /* RenderTriangle of the default path: the triangle's corners (the frame's
  * cache), attributes, clipping and projection, then the fan of its
  * polygon, each by the fast span loops where they take it (ft) and by the
@@ -384,6 +469,7 @@ static void trilinear_lod(const struct ras_ctx *rc, const struct ras_texture *tx
 void ras_default_render_triangle(struct ras_ctx *rc, const struct ras_instance *in, const struct ras_inst *ri,
                                  const struct ras_model *m, const struct ras_triangle *t, uint32_t gi)
 {
+    if (rc->cur.lean && render_lean(rc, in, ri, m, t, gi)) return;
     struct ras_fast_state *slot;
     if (resume_kept(rc, gi, &slot)) return;
     vec3 V[3], N[3];

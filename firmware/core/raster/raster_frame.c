@@ -105,6 +105,7 @@ static void instance_head(struct ras_ctx *rc, uint16_t i, uint16_t frame, uint32
      * vertices (the same bits, the same decisions) */
     struct ras_box cb;
     ri->vfit = (uint8_t)(o->instance_transform && ras_box_transform(&ri->m, &ri->box, &cb));
+    ri->vsplit = (uint8_t)(ri->vfit ? ras_fit_split(&ri->m, &ri->box) : 0);
     ri->vin = (uint8_t)(ri->vfit && ri->visible && rc->def.pv &&
                         (ras_box_inside(rc, &cb) ||
                          ras_sphere_inside(&ri->m, &ri->box, &cb, rc->def.near_z, rc->def.side_x, rc->def.side_y)));
@@ -120,7 +121,9 @@ static void instance_head(struct ras_ctx *rc, uint16_t i, uint16_t frame, uint32
 static vec3 cam_point(const struct ras_ctx *rc, const struct ras_instance *in, const struct ras_inst *ri, vec3 p)
 {
     const struct ras_options *o = &rc->s->ras;
-    if (o->instance_transform) return ri->vfit ? ras_mul_point_fit(&ri->m, p) : ras_mul_point(&ri->m, p);
+    if (o->instance_transform)
+        return ri->vsplit ? ras_mul_point_fit_split(&ri->m, p, ri->vsplit)
+                          : (ri->vfit ? ras_mul_point_fit(&ri->m, p) : ras_mul_point(&ri->m, p));
     vec3 c = v3_add(p, in->position);
     return o->camera_transform ? ras_mul_point(&rc->cam, c) : c;
 }
@@ -170,9 +173,9 @@ static void instance_vertices(const struct ras_ctx *rc, uint16_t i, uint32_t k0,
     if (ri->vfit && rc->def.pv && !rc->proj) {
         /* the default path's vertices of an instance whose transform
          * cannot saturate, every one inside every plane where ri->vin */
-        const int tested = !ri->vin;
+        const int tested = !ri->vin, sp = ri->vsplit;
         for (uint32_t k = k0; k < k1; k++) {
-            const vec3 c = ras_mul_point_fit(&ri->m, m->verts[k]);
+            const vec3 c = sp ? ras_mul_point_fit_split(&ri->m, m->verts[k], sp) : ras_mul_point_fit(&ri->m, m->verts[k]);
             if (rc->verts) rc->verts[vb + k].c = c;
             store_pv(rc, &rc->def.pv[vb + k], c, ri->visible && (!tested || ras_point_inside(rc, c)));
         }

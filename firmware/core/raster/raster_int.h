@@ -35,6 +35,7 @@ struct ras_inst {
     uint8_t vlit;    /* Gouraud lit per vertex (ras_def.vert_shade), not per corner */
     uint8_t vfit;    /* its vertices to camera space without saturation (ras_mul_point_fit) */
     uint8_t vin;     /* every vertex inside every clipping plane (no ras_point_inside) */
+    uint8_t vsplit;  /* vfit's products in 32 bits (ras_mul_point_fit_split's s), 0: none */
     struct ras_box box;  /* its model's coordinates (render_init) */
 };
 
@@ -99,6 +100,7 @@ struct ras_cur {
      * (shadow-volume fragments behind the surface: depth-fail) */
     uint8_t depth_func;
     uint8_t depth_only;      /* render_triangle writes depth, no colour */
+    uint8_t lean;            /* ras_default_lean: the pass's triangles may take the lean path */
 };
 
 /* The default path's own state (book_exact = 0, not wireframe). */
@@ -342,6 +344,9 @@ void ras_book_render_triangle(struct ras_ctx *rc, const struct ras_instance *in,
 /* The default path's triangle gi (its index in the frame's tables). */
 void ras_default_render_triangle(struct ras_ctx *rc, const struct ras_instance *in, const struct ras_inst *ri,
                                  const struct ras_model *m, const struct ras_triangle *t, uint32_t gi);
+/* 1 when the current pass's default-path triangles may take its lean path
+ * (ras_cur.lean; set by render_scene for each pass). */
+int ras_default_lean(const struct ras_ctx *rc);
 /* 1 when instance in's Gouraud corners are lit per vertex (raster_work.c). */
 int ras_vertex_lit(const struct scene *s, const struct ras_instance *in);
 /* Per frame: the facts of the default path's triangle gi kept for every

@@ -309,6 +309,82 @@ vec3 ras_mul_point_fit(const mat4 *m, vec3 p)
     return r;
 }
 
+int ras_fit_split(const mat4 *m, const struct ras_box *b)
+{
+    /* a coordinate a = ah 2^s + al (ah = a >> s, al in [0, 2^s)) and an
+     * entry e of m: (e a + 2^(F-1)) >> F, num_mul_round's value, is
+     * (e ah + ((e al + 2^(F-1)) >> s)) >> (F - s) (nested floors), exact in
+     * 32 bits when |e| <= M and |a| <= A give
+     *   w = e al + 2^(F-1):  |w| <= M (2^s - 1) + 2^(F-1) < 2^31,
+     *   u = e ah:            |u| <= M ((A >> s) + 1) < 2^31,
+     *   u + (w >> s):        |.| <= that + (|w| >> s) + 1 < 2^31;
+     * s the largest that keeps w (the others only get easier with s) */
+    if (!b->ok) return 0;
+    int64_t M = 0, A = 0;
+    for (int i = 0; i < 3; i++)
+        for (int j = 0; j < 3; j++) {
+            const int64_t e = m->m[i][j] < 0 ? -(int64_t)m->m[i][j] : m->m[i][j];
+            if (e > M) M = e;
+        }
+    for (int j = 0; j < 3; j++) {
+        const int64_t lo = b->lo[j] < 0 ? -(int64_t)b->lo[j] : b->lo[j];
+        const int64_t hi = b->hi[j] < 0 ? -(int64_t)b->hi[j] : b->hi[j];
+        if (lo > A) A = lo;
+        if (hi > A) A = hi;
+    }
+    const int64_t lim = INT32_MAX, half = (int64_t)1 << (NUM_FRAC - 1);
+    for (int s = NUM_FRAC < 30 ? NUM_FRAC : 30; s >= 1; s--) {
+        const int64_t w = M * (((int64_t)1 << s) - 1) + half;
+        if (w > lim) continue;
+        const int64_t u = M * ((A >> s) + 1);
+        return u + (w >> s) + 1 <= lim ? s : 0;
+    }
+    return 0;
+}
+
+/* (e a + 2^(F-1)) >> F from a's halves (ras_fit_split) */
+static inline int32_t mul_split(int32_t e, int32_t ah, int32_t al, int s, int fs)
+{
+    return (e * ah + ((e * al + ((int32_t)1 << (NUM_FRAC - 1))) >> s)) >> fs;
+}
+
+vec3 ras_mul_point_fit_split(const mat4 *m, vec3 p, int s)
+{
+    const int fs = NUM_FRAC - s;
+    const uint32_t mask = ((uint32_t)1 << s) - 1u;
+    const int32_t xh = p.x >> s, yh = p.y >> s, zh = p.z >> s;
+    const int32_t xl = (int32_t)((uint32_t)p.x & mask), yl = (int32_t)((uint32_t)p.y & mask),
+                  zl = (int32_t)((uint32_t)p.z & mask);
+    /* (sums modulo 2^32 as num_add_fit's: the same in any order) */
+    vec3 r;
+    r.x = (num)((uint32_t)mul_split(m->m[0][0], xh, xl, s, fs) + (uint32_t)mul_split(m->m[0][1], yh, yl, s, fs) +
+                (uint32_t)mul_split(m->m[0][2], zh, zl, s, fs) + (uint32_t)m->m[0][3]);
+    r.y = (num)((uint32_t)mul_split(m->m[1][0], xh, xl, s, fs) + (uint32_t)mul_split(m->m[1][1], yh, yl, s, fs) +
+                (uint32_t)mul_split(m->m[1][2], zh, zl, s, fs) + (uint32_t)m->m[1][3]);
+    r.z = (num)((uint32_t)mul_split(m->m[2][0], xh, xl, s, fs) + (uint32_t)mul_split(m->m[2][1], yh, yl, s, fs) +
+                (uint32_t)mul_split(m->m[2][2], zh, zl, s, fs) + (uint32_t)m->m[2][3]);
+    return r;
+}
+
+/* num_udiv64_32_pre(n, p, rem) for a divisor below 2^30 (p->s >= 2): its
+ * estimate q is at most 3 below the quotient, so the remainder n - q d
+ * lies below 4 d < 2^32 and is its low word, n's low word less q d modulo
+ * 2^32 (one 32-bit product instead of the 64-bit one): the same quotient
+ * and remainder. */
+static inline __attribute__((always_inline)) uint32_t udiv_pre_small(uint64_t n, const struct num_udiv_pre *p,
+                                                                     uint32_t *rem)
+{
+    const uint32_t s = p->s, d = p->d, hi = (uint32_t)(n >> 32), lo = (uint32_t)n;
+    const uint32_t nh = hi << s | lo >> (32 - s);
+    uint32_t q = nh + num_mulhi32(nh, p->v), r = lo - q * d;
+    while (r >= d) {
+        r -= d;
+        q++;
+    }
+    *rem = r;
+    return q;
+}
+
 /* wnum_div(a, z) for z > 0 by the prepared z: its path for a numerator
  * |a| 2^F below 2^63 and a quotient that does not saturate (the same
  * rounding, halves away from zero), wnum_div itself otherwise. Inline:
@@ -320,7 +396,7 @@ static inline __attribute__((always_inline)) num wdiv_pre(wnum a, num z, const s
         const uint64_t n = ua << NUM_FRAC;
         if ((n >> 32) < p->d) {
             uint32_t rm;
-            const uint32_t q = num_udiv64_32_pre(n, p, &rm);
+            const uint32_t q = p->s >= 2 ? udiv_pre_small(n, p, &rm) : num_udiv64_32_pre(n, p, &rm);
             if (q < (uint32_t)INT32_MAX || (q == (uint32_t)INT32_MAX && rm < p->d - rm)) {
                 const num r = (num)q + (rm >= p->d - rm);
                 return a < 0 ? -r : r;
@@ -341,9 +417,20 @@ static num recip_pre(num z, const struct num_udiv_pre *p)
     const uint32_t s = p->s, dn = p->dn, k = 2 * NUM_FRAC + s;
     if (k < 32 || k > 62) return wnum_div(wnum_from_num(NUM_ONE), wnum_from_num(z));
     const uint32_t j = k - 32, nh = (uint32_t)1 << j;
-    uint32_t rl;
-    const uint32_t q = num_udiv_step(nh + (j ? p->v >> (32 - j) : 0), nh, 0, dn, &rl);
-    const uint32_t rm = rl >> s;
+    uint32_t q = nh + (j ? p->v >> (32 - j) : 0), rm;
+    if (s >= 2) {
+        /* the remainder 2^2F - q d below 4 d < 2^32 (udiv_pre_small) */
+        const uint32_t d = p->d;
+        rm = (uint32_t)((uint64_t)1 << (2 * NUM_FRAC)) - q * d;
+        while (rm >= d) {
+            rm -= d;
+            q++;
+        }
+    } else {
+        uint32_t rl;
+        q = num_udiv_step(q, nh, 0, dn, &rl);
+        rm = rl >> s;
+    }
     if (q < (uint32_t)INT32_MAX || (q == (uint32_t)INT32_MAX && rm < p->d - rm)) return (num)q + (rm >= p->d - rm);
     return wnum_div(wnum_from_num(NUM_ONE), wnum_from_num(z));
 }
@@ -359,7 +446,9 @@ void ras_div_depth(num x, num y, num z, num unproj, num near_z, num *X, num *Y, 
     *Y = wdiv_pre(num_mul_round(y, unproj), z, &p);
     *iz = recip_pre(z, &p);   /* num_div(1, z): wnum_div's rounding of 2^F 2^F / z */
     /* 0 < near < z: the quotient fits 32 bits */
+    uint32_t rd;
     *depth = near_z <= 0 || z <= near_z ? ras_depth32(near_z, z)
+             : p.s >= 2                 ? udiv_pre_small((uint64_t)(uint32_t)near_z << 32, &p, &rd)
                                         : num_udiv64_32_pre((uint64_t)(uint32_t)near_z << 32, &p, 0);
 }
 
@@ -503,6 +592,19 @@ int ras_box_transform(const mat4 *m, const struct ras_box *b, struct ras_box *ou
 }
 
 vec3 ras_mul_point_fit(const mat4 *m, vec3 p) { return m4_mul_point(m, p); }
+
+int ras_fit_split(const mat4 *m, const struct ras_box *b)
+{
+    (void)m;
+    (void)b;
+    return 0;
+}
+
+vec3 ras_mul_point_fit_split(const mat4 *m, vec3 p, int s)
+{
+    (void)s;
+    return m4_mul_point(m, p);
+}
 
 int ras_sphere_inside(const mat4 *m, const struct ras_box *b, const struct ras_box *cb, num near_z, num side_x,
                       num side_y)

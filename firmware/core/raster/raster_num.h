@@ -84,6 +84,14 @@ int ras_box_transform(const mat4 *m, const struct ras_box *b, struct ras_box *ou
 /* ras_mul_point(m, p) for a point of a box ras_box_transform accepted with
  * m: the same bits in 32-bit arithmetic, without the saturation checks. */
 vec3 ras_mul_point_fit(const mat4 *m, vec3 p);
+/* The split of ras_mul_point_fit_split for m over the points of model box
+ * b: s in [1, NUM_FRAC] where every product of it stays in 32 bits, or 0
+ * (none: ras_mul_point_fit). */
+int ras_fit_split(const mat4 *m, const struct ras_box *b);
+/* ras_mul_point_fit(m, p) for a point p of the box ras_fit_split gave
+ * split s > 0 for: the same bits, each coordinate split once at bit s and
+ * each rounded product from two 32-bit products. */
+vec3 ras_mul_point_fit_split(const mat4 *m, vec3 p, int s);
 /* 1 when ras_mul_point_fit(m, p) of every point p of model box b (whose
  * camera-space range cb ras_box_transform gave) passes every clipping
  * plane's test (ras_point_inside: z >= near_z, |x| <= side_x z, |y| <=

@@ -136,6 +136,7 @@ static void render_scene(struct ras_ctx *rc, const struct render_target *t)
         if (pass == 1) { if (FW_FEATURE_RAS_CH15) ras_shadow_volumes(rc); continue; }
         rc->cur.depth_only = (uint8_t)(pass == 0);
         rc->cur.depth_func = (uint8_t)(rc->c15.sv_on && pass == 2 ? RAS_DEPTH_EQUAL : RAS_DEPTH_LESS_WRITE);
+        rc->cur.lean = (uint8_t)(FW_FEATURE_RAS_DEFAULT && ras_default_lean(rc));
         if (FW_FEATURE_RAS_DEFAULT && rc->bins.on) render_bins(rc, t);
         else
             for (uint16_t i = 0; i < rc->s->ninstances; i++) render_instance(rc, i, t);
@@ -186,6 +187,7 @@ int raster_strip(void *work, struct render_target *t, struct render_stats *st)
     }
     render_scene(rc, t);
     rc->cur.depth_only = 0;
+    rc->cur.lean = 0;
     rc->cur.depth_func = RAS_DEPTH_LESS_WRITE;
     if (t->y0 == 0) {
         st->triangles_in += rc->tris_in;

@@ -245,11 +245,14 @@ static int32_t sdiv16(int32_t n, uint32_t d, uint32_t m, int32_t *rem)
 /* a - b for |a - b| < 2^31. */
 static int32_t sdiff(uint32_t a, uint32_t b) { return a >= b ? (int32_t)(a - b) : -(int32_t)(b - a); }
 
-/* floor(r 2^16 / d) for 0 <= r < d < 2^16 (the same m). */
+/* floor(r 2^16 / d) for 0 <= r < d < 2^16 (the same m). The estimate
+ * floor(r 2^16 m / 2^32) = floor(r m / 2^16) is below 2^16 (r m < 2^32), so
+ * it is r mh + floor(r ml / 2^16) with m = mh 2^16 + ml: two 32-bit
+ * products (num_mulhi32's value). */
 static uint32_t frac16(int32_t r, uint32_t d, uint32_t m)
 {
-    uint32_t x = (uint32_t)r << 16, q = num_mulhi32(x, m);
-    return q + (x - q * d >= d);
+    const uint32_t ur = (uint32_t)r, q = ur * (m >> 16) + ((ur * (m & 0xFFFFu)) >> 16);
+    return q + ((ur << 16) - q * d >= d);
 }
 
 /* floor((2^32 - 1) / d) for 0 < d < 2^16 (sdiv16's m), for d >= 2^8

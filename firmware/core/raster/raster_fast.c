@@ -239,7 +239,13 @@ static void depth_words(struct fstate *S, uint32_t d0, uint32_t d1, uint32_t d2)
 /* floor(n / d) and the remainder in [0, d) for 0 < d < 2^16, m = floor((2^32
  * - 1) / d): the estimate |n| m / 2^32 is below |n| / d by less than 1, so
  * one step up at most corrects it. */
-static int32_t sdiv16(int32_t n, uint32_t d, uint32_t m, int32_t *rem)
+#if defined(__GNUC__) || defined(__clang__)
+#define RAS_SETUP_INLINE static inline __attribute__((always_inline))
+#else
+#define RAS_SETUP_INLINE static inline
+#endif
+/* (inline: five calls a triangle, their remainders in registers) */
+RAS_SETUP_INLINE int32_t sdiv16(int32_t n, uint32_t d, uint32_t m, int32_t *rem)
 {
     uint32_t x = n < 0 ? 0u - (uint32_t)n : (uint32_t)n;
     uint32_t q = num_mulhi32(x, m), r = x - q * d;
@@ -262,7 +268,7 @@ static int32_t sdiff(uint32_t a, uint32_t b) { return a >= b ? (int32_t)(a - b) 
  * floor(r 2^16 m / 2^32) = floor(r m / 2^16) is below 2^16 (r m < 2^32), so
  * it is r mh + floor(r ml / 2^16) with m = mh 2^16 + ml: two 32-bit
  * products (num_mulhi32's value). */
-static uint32_t frac16(int32_t r, uint32_t d, uint32_t m)
+RAS_SETUP_INLINE uint32_t frac16(int32_t r, uint32_t d, uint32_t m)
 {
     const uint32_t ur = (uint32_t)r, q = ur * (m >> 16) + ((ur * (m & 0xFFFFu)) >> 16);
     return q + ((ur << 16) - q * d >= d);

@@ -495,10 +495,33 @@ static int fast_attrs(const struct ras_ctx *rc, const struct ras_sv *const vv[3]
     return 1;
 }
 
-/* Set-up of triangle v0 v1 v2 for rows from the strip's first on.
- * Returns 1, 0 (nothing to draw) or -1 (the exact path's triangle). */
+/* Whether a scanned box's rows in this strip hold a covered pixel: its
+ * edge values stepped across them as fast_rows' scan does. */
+static int fast_covers(const struct ras_ctx *rc, const struct fstate *S)
+{
+    const int32_t r1 = S->last < (int32_t)rc->cur.t->y1 - 1 ? S->last : (int32_t)rc->cur.t->y1 - 1;
+    const int32_t a0 = S->a[0], a1 = S->a[1], a2 = S->a[2], kmax = S->kmax;
+    int32_t w0 = S->wb[0], w1 = S->wb[1], w2 = S->wb[2];
+    for (int32_t r = S->row; r <= r1; r++) {
+        int32_t e0 = w0, e1 = w1, e2 = w2;
+        for (int32_t k = 0; k <= kmax; k++) {
+            if (!(((uint32_t)e0 | (uint32_t)e1 | (uint32_t)e2) >> 31)) return 1;
+            e0 += a0;
+            e1 += a1;
+            e2 += a2;
+        }
+        w0 += S->b[0];
+        w1 += S->b[1];
+        w2 += S->b[2];
+    }
+    return 0;
+}
+
+/* Set-up of triangle v0 v1 v2 for rows from the strip's first on (lazy:
+ * none where a scanned box covers no pixel in this strip, for a set-up not
+ * kept). Returns 1, 0 (nothing to draw) or -1 (the exact path's triangle). */
 static int fast_setup(const struct ras_ctx *rc, const struct ras_sv *v0, const struct ras_sv *v1,
-                      const struct ras_sv *v2, const struct ras_fast_tri *ft, struct fstate *S)
+                      const struct ras_sv *v2, const struct ras_fast_tri *ft, struct fstate *S, int lazy)
 {
     int32_t box[4];
     /* (ras_sub_box's box) */
@@ -518,7 +541,7 @@ static int fast_setup(const struct ras_ctx *rc, const struct ras_sv *v0, const s
     if (area <= 0) return 0;
     int32_t rtop;
     int r = fast_edges(rc, box, v0, v1, v2, S, &rtop);
-    if (r <= 0) return r;
+    if (r <= 0 || (lazy && S->scan && !fast_covers(rc, S))) return 0;
     S->depth = rc->depth_bytes != 0;
     if (!S->depth) {
         S->zrow = S->gy16 = 0;
@@ -932,7 +955,7 @@ int32_t ras_fast_fill(struct ras_ctx *rc, const struct ras_sv *v0, const struct 
                       const struct ras_fast_tri *ft, struct ras_fast_state *keep)
 {
     struct fstate local, *S = keep ? (struct fstate *)(void *)keep : &local;
-    int r = fast_setup(rc, v0, v1, v2, ft, S);
+    int r = fast_setup(rc, v0, v1, v2, ft, S, keep == NULL);
     if (r <= 0) {
         if (keep) S->row = -1;
         return r;

@@ -115,7 +115,7 @@ struct fstate {
      * every span's depths are proven to lie in [1, 2^32 - 2] */
     int z32;
     uint32_t zhi, zfrac, gyq, gyf;
-    int32_t c0, kmax, row, last; /* box column, width - 1, next row, last row */
+    int32_t c0, kmax, row, last; /* box column, last column less c0, next row, last row */
     int shade, src, depth;       /* the span loop: raster_fast.h */
 };
 typedef char ras_fast_state_fits[sizeof(struct fstate) <= sizeof(struct ras_fast_state) ? 1 : -1];
@@ -125,6 +125,22 @@ typedef char ras_fast_state_fits[sizeof(struct fstate) <= sizeof(struct ras_fast
  * first on, into S; *rtop = the box's top row. Returns 1 or 0 (nothing to
  * draw). */
 #define RAS_SCAN_MAX 160
+/* Edge i from (ax, ay) by (dx, dy): its value at the box's first pixel
+ * (px, py), its steps and, where not scanned, its row bounds. */
+static inline void fast_edge(struct fstate *S, int i, int32_t ax, int32_t ay, int32_t dx, int32_t dy, int32_t px,
+                             int32_t py, int32_t one)
+{
+    const int32_t bias = (dy < 0 || (dy == 0 && dx > 0)) ? 0 : -1;
+    /* ras_edge's value in 32 bits: the pixel lies within a pixel of the
+     * box, so |dx|, |dy| <= 2^14 and the other factors < 2^14 + 2^9 */
+    const int32_t w = dx * (py - ay) - dy * (px - ax);
+    S->wr[i] = w;
+    S->a[i] = -dy * one;
+    S->b[i] = dx * one;
+    S->wb[i] = w + bias;
+    if (!S->scan) fedge_init(&S->fe[i], S->a[i], S->b[i], w, bias);
+}
+
 static int fast_edges(const struct ras_ctx *rc, const int32_t box[4], const struct ras_sv *v0,
                       const struct ras_sv *v1, const struct ras_sv *v2, struct fstate *S, int32_t *rtop)
 {
@@ -137,34 +153,31 @@ static int fast_edges(const struct ras_ctx *rc, const int32_t box[4], const stru
     /* the box's columns; its rows those of the pixel centres within it (the
      * depth plane is taken at the row above, rtop, in every case) */
     int32_t c0 = minx >> sb, c1 = (maxx >> sb) + 1, r0 = (miny - half + one - 1) >> sb, r1 = (maxy - half) >> sb;
+    /* the columns of the pixel centres within it, cl to cr: no pixel
+     * outside them is covered */
+    int32_t cl = (minx - half + one - 1) >> sb, cr = (maxx - half) >> sb;
     *rtop = miny >> sb;
     if (c0 < 0) c0 = 0;
     if (r0 < (int32_t)t->y0) r0 = t->y0;
     if (c1 > (int32_t)rc->w - 1) c1 = rc->w - 1;
     if (r1 > (int32_t)rc->h - 1) r1 = rc->h - 1;
-    if (c0 > c1 || r0 > r1 || r0 >= (int32_t)t->y1) return 0;
+    if (cl < c0) cl = c0;
+    if (cr > c1) cr = c1;
+    if (cl > cr || r0 > r1 || r0 >= (int32_t)t->y1) return 0;
 
     /* the exact path's edge functions at (c0, r0) and their steps; every
      * value inside the box is below 2^29 in magnitude */
     int32_t px = (c0 << sb) + half, py = (r0 << sb) + half;
-    const struct ras_sv *ea[3] = { v1, v2, v0 }, *eb[3] = { v2, v0, v1 };
     /* a box of few pixels a row (for the rows left) finds each row's span
      * by stepping the edge values across it, cheaper than the divisions
      * that bound it (the same columns either way) */
     S->scan = (c1 - c0 + 2) * (r1 - r0 + 1) <= RAS_SCAN_MAX;
-    for (int i = 0; i < 3; i++) {
-        int32_t dx = eb[i]->x - ea[i]->x, dy = eb[i]->y - ea[i]->y;
-        int32_t bias = (dy < 0 || (dy == 0 && dx > 0)) ? 0 : -1;
-        /* ras_edge's value in 32 bits: the pixel lies within a pixel of the
-         * box, so |dx|, |dy| <= 2^14 and the other factors < 2^14 + 2^9 */
-        S->wr[i] = dx * (py - ea[i]->y) - dy * (px - ea[i]->x);
-        S->a[i] = -dy * one;
-        S->b[i] = dx * one;
-        S->wb[i] = S->wr[i] + bias;
-        if (!S->scan) fedge_init(&S->fe[i], S->a[i], S->b[i], S->wr[i], bias);
-    }
+    const int32_t x0 = v0->x, y0 = v0->y, x1 = v1->x, y1 = v1->y, x2 = v2->x, y2 = v2->y;
+    fast_edge(S, 0, x1, y1, x2 - x1, y2 - y1, px, py, one);
+    fast_edge(S, 1, x2, y2, x0 - x2, y0 - y2, px, py, one);
+    fast_edge(S, 2, x0, y0, x1 - x0, y1 - y0, px, py, one);
     S->c0 = c0;
-    S->kmax = c1 - c0;
+    S->kmax = cr - c0;
     S->row = r0;
     S->last = r1;
     return 1;
@@ -226,7 +239,13 @@ static void depth_words(struct fstate *S, uint32_t d0, uint32_t d1, uint32_t d2)
 /* floor(n / d) and the remainder in [0, d) for 0 < d < 2^16, m = floor((2^32
  * - 1) / d): the estimate |n| m / 2^32 is below |n| / d by less than 1, so
  * one step up at most corrects it. */
-static int32_t sdiv16(int32_t n, uint32_t d, uint32_t m, int32_t *rem)
+#if defined(__GNUC__) || defined(__clang__)
+#define RAS_SETUP_INLINE static inline __attribute__((always_inline))
+#else
+#define RAS_SETUP_INLINE static inline
+#endif
+/* (inline: five calls a triangle, their remainders in registers) */
+RAS_SETUP_INLINE int32_t sdiv16(int32_t n, uint32_t d, uint32_t m, int32_t *rem)
 {
     uint32_t x = n < 0 ? 0u - (uint32_t)n : (uint32_t)n;
     uint32_t q = num_mulhi32(x, m), r = x - q * d;
@@ -245,11 +264,14 @@ static int32_t sdiv16(int32_t n, uint32_t d, uint32_t m, int32_t *rem)
 /* a - b for |a - b| < 2^31. */
 static int32_t sdiff(uint32_t a, uint32_t b) { return a >= b ? (int32_t)(a - b) : -(int32_t)(b - a); }
 
-/* floor(r 2^16 / d) for 0 <= r < d < 2^16 (the same m). */
-static uint32_t frac16(int32_t r, uint32_t d, uint32_t m)
+/* floor(r 2^16 / d) for 0 <= r < d < 2^16 (the same m). The estimate
+ * floor(r 2^16 m / 2^32) = floor(r m / 2^16) is below 2^16 (r m < 2^32), so
+ * it is r mh + floor(r ml / 2^16) with m = mh 2^16 + ml: two 32-bit
+ * products (num_mulhi32's value). */
+RAS_SETUP_INLINE uint32_t frac16(int32_t r, uint32_t d, uint32_t m)
 {
-    uint32_t x = (uint32_t)r << 16, q = num_mulhi32(x, m);
-    return q + (x - q * d >= d);
+    const uint32_t ur = (uint32_t)r, q = ur * (m >> 16) + ((ur * (m & 0xFFFFu)) >> 16);
+    return q + ((ur << 16) - q * d >= d);
 }
 
 /* floor((2^32 - 1) / d) for 0 < d < 2^16 (sdiv16's m), for d >= 2^8
@@ -473,13 +495,44 @@ static int fast_attrs(const struct ras_ctx *rc, const struct ras_sv *const vv[3]
     return 1;
 }
 
-/* Set-up of triangle v0 v1 v2 for rows from the strip's first on.
- * Returns 1, 0 (nothing to draw) or -1 (the exact path's triangle). */
+/* Whether a scanned box's rows in this strip hold a covered pixel: its
+ * edge values stepped across them as fast_rows' scan does. */
+static int fast_covers(const struct ras_ctx *rc, const struct fstate *S)
+{
+    const int32_t r1 = S->last < (int32_t)rc->cur.t->y1 - 1 ? S->last : (int32_t)rc->cur.t->y1 - 1;
+    const int32_t a0 = S->a[0], a1 = S->a[1], a2 = S->a[2], kmax = S->kmax;
+    int32_t w0 = S->wb[0], w1 = S->wb[1], w2 = S->wb[2];
+    for (int32_t r = S->row; r <= r1; r++) {
+        int32_t e0 = w0, e1 = w1, e2 = w2;
+        for (int32_t k = 0; k <= kmax; k++) {
+            if (!(((uint32_t)e0 | (uint32_t)e1 | (uint32_t)e2) >> 31)) return 1;
+            e0 += a0;
+            e1 += a1;
+            e2 += a2;
+        }
+        w0 += S->b[0];
+        w1 += S->b[1];
+        w2 += S->b[2];
+    }
+    return 0;
+}
+
+/* Set-up of triangle v0 v1 v2 for rows from the strip's first on (lazy:
+ * none where a scanned box covers no pixel in this strip, for a set-up not
+ * kept). Returns 1, 0 (nothing to draw) or -1 (the exact path's triangle). */
 static int fast_setup(const struct ras_ctx *rc, const struct ras_sv *v0, const struct ras_sv *v1,
-                      const struct ras_sv *v2, const struct ras_fast_tri *ft, struct fstate *S)
+                      const struct ras_sv *v2, const struct ras_fast_tri *ft, struct fstate *S, int lazy)
 {
     int32_t box[4];
-    ras_sub_box(v0, v1, v2, box);
+    /* (ras_sub_box's box) */
+    box[0] = v0->x < v1->x ? v0->x : v1->x;
+    box[2] = v0->x < v1->x ? v1->x : v0->x;
+    box[1] = v0->y < v1->y ? v0->y : v1->y;
+    box[3] = v0->y < v1->y ? v1->y : v0->y;
+    if (v2->x < box[0]) box[0] = v2->x;
+    if (v2->x > box[2]) box[2] = v2->x;
+    if (v2->y < box[1]) box[1] = v2->y;
+    if (v2->y > box[3]) box[3] = v2->y;
     /* (the box's sides as unsigned differences: box[2] >= box[0], box[3] >= box[1]) */
     if ((uint32_t)box[2] - (uint32_t)box[0] > (1u << 14) || (uint32_t)box[3] - (uint32_t)box[1] > (1u << 14))
         return ras_edge(v0->x, v0->y, v1->x, v1->y, v2->x, v2->y) <= 0 ? 0 : -1;
@@ -488,7 +541,7 @@ static int fast_setup(const struct ras_ctx *rc, const struct ras_sv *v0, const s
     if (area <= 0) return 0;
     int32_t rtop;
     int r = fast_edges(rc, box, v0, v1, v2, S, &rtop);
-    if (r <= 0) return r;
+    if (r <= 0 || (lazy && S->scan && !fast_covers(rc, S))) return 0;
     S->depth = rc->depth_bytes != 0;
     if (!S->depth) {
         S->zrow = S->gy16 = 0;
@@ -902,7 +955,7 @@ int32_t ras_fast_fill(struct ras_ctx *rc, const struct ras_sv *v0, const struct 
                       const struct ras_fast_tri *ft, struct ras_fast_state *keep)
 {
     struct fstate local, *S = keep ? (struct fstate *)(void *)keep : &local;
-    int r = fast_setup(rc, v0, v1, v2, ft, S);
+    int r = fast_setup(rc, v0, v1, v2, ft, S, keep == NULL);
     if (r <= 0) {
         if (keep) S->row = -1;
         return r;

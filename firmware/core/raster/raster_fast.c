@@ -28,6 +28,24 @@
  * shade, texture source, depth size and outputs (raster_fast.h). */
 #include "raster_span_lib.h"
 
+/* ras_num_to_fix(a, scale), the same value: in fixed point its product
+ * by the inline 32 x 32 -> 64 kernel, a power-of-two scale (the intensity's
+ * 2^20) by a shift. */
+static inline int32_t fast_to_fix(num a, int32_t scale, int pow2)
+{
+#if NUM_MODE == NUM_MODE_FIXED
+    int64_t p = pow2 ? (int64_t)a * ((int64_t)1 << pow2) : num_smul32(a, scale);
+    int64_t h = (int64_t)1 << (NUM_FRAC - 1);
+    int64_t r = p >= 0 ? (p + h) >> NUM_FRAC : -((-p + h) >> NUM_FRAC);
+    if (r > INT32_MAX) return INT32_MAX;
+    if (r < -INT32_MAX) return -INT32_MAX;
+    return (int32_t)r;
+#else
+    (void)pow2;
+    return ras_num_to_fix(a, scale);
+#endif
+}
+
 /* Corner values c0..c2 of attribute j; 0 when they do not fit the
  * fast path's formats (the triangle then takes the exact path). */
 static int persp_attr(struct fpersp *p, int j, int32_t c0, int32_t c1, int32_t c2)
@@ -404,8 +422,8 @@ static int attrs_uv(struct fpersp *pp, int *na, const struct ras_sv *const vv[3]
 {
     int32_t u[3], v[3];
     for (int i = 0; i < 3; i++) {
-        u[i] = ras_num_to_fix(vv[i]->a[ft->ai_uv], ft->uscale);
-        v[i] = ras_num_to_fix(vv[i]->a[ft->ai_uv + 1], ft->vscale);
+        u[i] = fast_to_fix(vv[i]->a[ft->ai_uv], ft->uscale, 0);
+        v[i] = fast_to_fix(vv[i]->a[ft->ai_uv + 1], ft->vscale, 0);
     }
     return persp_attr(pp, (*na)++, u[0], u[1], u[2]) && persp_attr(pp, (*na)++, v[0], v[1], v[2]);
 }
@@ -419,7 +437,7 @@ static int attrs_gouraud(struct fpersp *pp, int *na, const struct ras_sv *const 
 {
     int32_t li[3], imax = 0;
     for (int i = 0; i < 3; i++) {
-        int32_t x = ras_num_to_fix(vv[i]->a[ft->ai_i], 1 << 20);
+        int32_t x = fast_to_fix(vv[i]->a[ft->ai_i], 1 << 20, 20);
         li[i] = x < 0 ? 0 : (x > (8 << 20) - 1 ? (8 << 20) - 1 : x);
         if (li[i] > imax) imax = li[i];
     }

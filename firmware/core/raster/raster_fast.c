@@ -460,6 +460,24 @@ static int attrs_gouraud(struct fpersp *pp, int *na, const struct ras_sv *const 
     return persp_attr(pp, (*na)++, li[0], li[1], li[2]);
 }
 
+/* The perspective weights and the attributes of a shaded or textured
+ * triangle (out of line: a flat triangle's set-up carries none of it).
+ * Returns 1, or -1 when an attribute does not fit the span formats. */
+#if defined(__GNUC__) || defined(__clang__)
+__attribute__((noinline))
+#endif
+static int fast_attrs_persp(struct fpersp *pp, const struct ras_sv *const vv[3], const struct ras_fast_tri *ft,
+                            int32_t area, int *shade)
+{
+    int na = 0;
+    persp_weights(pp, vv, area);
+    if (*shade == SPAN_SHADE_PHONG && !attrs_phong(pp, &na, vv, ft)) return -1;
+    if (ft->src != SPAN_SRC_CONST && !attrs_uv(pp, &na, vv, ft)) return -1;
+    if ((*shade == SPAN_SHADE_RGB || *shade == SPAN_SHADE_LI) && !attrs_gouraud(pp, &na, vv, ft, shade)) return -1;
+    pp->na = na;
+    return 1;
+}
+
 /* The triangle's description (the caller's ft, copied into S only when
  * the set-up is kept: ras_fast_fill) and its span constants, the
  * attributes in raster_fast.h's order. Returns 1, or -1 when an attribute
@@ -469,7 +487,7 @@ static int fast_attrs(const struct ras_ctx *rc, const struct ras_sv *const vv[3]
 {
     struct ftri *Tp = &S->T;
     struct fpersp *pp = &Tp->pp;
-    int na = 0, shade = ft->shade;
+    int shade = ft->shade;
     Tp->ft = ft;
     Tp->slog = rc->fast.persp_log2;
     Tp->seg = (int32_t)1 << Tp->slog;
@@ -478,14 +496,8 @@ static int fast_attrs(const struct ras_ctx *rc, const struct ras_sv *const vv[3]
     Tp->sa1 = S->a[1] * Tp->seg;
     Tp->sa2 = S->a[2] * Tp->seg;
     pp->na = 0;
-    if (shade != SPAN_SHADE_NONE || ft->src != SPAN_SRC_CONST) {
-        persp_weights(pp, vv, area);
-        if (shade == SPAN_SHADE_PHONG && !attrs_phong(pp, &na, vv, ft)) return -1;
-        if (ft->src != SPAN_SRC_CONST && !attrs_uv(pp, &na, vv, ft)) return -1;
-        if ((shade == SPAN_SHADE_RGB || shade == SPAN_SHADE_LI) && !attrs_gouraud(pp, &na, vv, ft, &shade))
-            return -1;
-        pp->na = na;
-    }
+    if ((shade != SPAN_SHADE_NONE || ft->src != SPAN_SRC_CONST) && fast_attrs_persp(pp, vv, ft, area, &shade) < 0)
+        return -1;
     S->shade = shade;
     S->src = ft->src;
     return 1;

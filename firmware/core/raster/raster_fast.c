@@ -28,6 +28,24 @@
  * shade, texture source, depth size and outputs (raster_fast.h). */
 #include "raster_span_lib.h"
 
+/* ras_num_to_fix(a, scale), the same value: in fixed point its product
+ * by the inline 32 x 32 -> 64 kernel, a power-of-two scale (the intensity's
+ * 2^20) by a shift. */
+static inline int32_t fast_to_fix(num a, int32_t scale, int pow2)
+{
+#if NUM_MODE == NUM_MODE_FIXED
+    int64_t p = pow2 ? (int64_t)a * ((int64_t)1 << pow2) : num_smul32(a, scale);
+    int64_t h = (int64_t)1 << (NUM_FRAC - 1);
+    int64_t r = p >= 0 ? (p + h) >> NUM_FRAC : -((-p + h) >> NUM_FRAC);
+    if (r > INT32_MAX) return INT32_MAX;
+    if (r < -INT32_MAX) return -INT32_MAX;
+    return (int32_t)r;
+#else
+    (void)pow2;
+    return ras_num_to_fix(a, scale);
+#endif
+}
+
 /* Corner values c0..c2 of attribute j; 0 when they do not fit the
  * fast path's formats (the triangle then takes the exact path). */
 static int persp_attr(struct fpersp *p, int j, int32_t c0, int32_t c1, int32_t c2)
@@ -426,8 +444,8 @@ static int attrs_uv(struct fpersp *pp, int *na, const struct ras_sv *const vv[3]
 {
     int32_t u[3], v[3];
     for (int i = 0; i < 3; i++) {
-        u[i] = ras_num_to_fix(vv[i]->a[ft->ai_uv], ft->uscale);
-        v[i] = ras_num_to_fix(vv[i]->a[ft->ai_uv + 1], ft->vscale);
+        u[i] = fast_to_fix(vv[i]->a[ft->ai_uv], ft->uscale, 0);
+        v[i] = fast_to_fix(vv[i]->a[ft->ai_uv + 1], ft->vscale, 0);
     }
     return persp_attr(pp, (*na)++, u[0], u[1], u[2]) && persp_attr(pp, (*na)++, v[0], v[1], v[2]);
 }
@@ -441,7 +459,7 @@ static int attrs_gouraud(struct fpersp *pp, int *na, const struct ras_sv *const 
 {
     int32_t li[3], imax = 0;
     for (int i = 0; i < 3; i++) {
-        int32_t x = ras_num_to_fix(vv[i]->a[ft->ai_i], 1 << 20);
+        int32_t x = fast_to_fix(vv[i]->a[ft->ai_i], 1 << 20, 20);
         li[i] = x < 0 ? 0 : (x > (8 << 20) - 1 ? (8 << 20) - 1 : x);
         if (li[i] > imax) imax = li[i];
     }
@@ -464,6 +482,24 @@ static int attrs_gouraud(struct fpersp *pp, int *na, const struct ras_sv *const 
     return persp_attr(pp, (*na)++, li[0], li[1], li[2]);
 }
 
+/* The perspective weights and the attributes of a shaded or textured
+ * triangle (out of line: a flat triangle's set-up carries none of it).
+ * Returns 1, or -1 when an attribute does not fit the span formats. */
+#if defined(__GNUC__) || defined(__clang__)
+__attribute__((noinline))
+#endif
+static int fast_attrs_persp(struct fpersp *pp, const struct ras_sv *const vv[3], const struct ras_fast_tri *ft,
+                            int32_t area, int *shade)
+{
+    int na = 0;
+    persp_weights(pp, vv, area);
+    if (*shade == SPAN_SHADE_PHONG && !attrs_phong(pp, &na, vv, ft)) return -1;
+    if (ft->src != SPAN_SRC_CONST && !attrs_uv(pp, &na, vv, ft)) return -1;
+    if ((*shade == SPAN_SHADE_RGB || *shade == SPAN_SHADE_LI) && !attrs_gouraud(pp, &na, vv, ft, shade)) return -1;
+    pp->na = na;
+    return 1;
+}
+
 /* The triangle's description (the caller's ft, copied into S only when
  * the set-up is kept: ras_fast_fill) and its span constants, the
  * attributes in raster_fast.h's order. Returns 1, or -1 when an attribute
@@ -473,7 +509,7 @@ static int fast_attrs(const struct ras_ctx *rc, const struct ras_sv *const vv[3]
 {
     struct ftri *Tp = &S->T;
     struct fpersp *pp = &Tp->pp;
-    int na = 0, shade = ft->shade;
+    int shade = ft->shade;
     Tp->ft = ft;
     Tp->slog = rc->fast.persp_log2;
     Tp->seg = (int32_t)1 << Tp->slog;
@@ -482,14 +518,8 @@ static int fast_attrs(const struct ras_ctx *rc, const struct ras_sv *const vv[3]
     Tp->sa1 = S->a[1] * Tp->seg;
     Tp->sa2 = S->a[2] * Tp->seg;
     pp->na = 0;
-    if (shade != SPAN_SHADE_NONE || ft->src != SPAN_SRC_CONST) {
-        persp_weights(pp, vv, area);
-        if (shade == SPAN_SHADE_PHONG && !attrs_phong(pp, &na, vv, ft)) return -1;
-        if (ft->src != SPAN_SRC_CONST && !attrs_uv(pp, &na, vv, ft)) return -1;
-        if ((shade == SPAN_SHADE_RGB || shade == SPAN_SHADE_LI) && !attrs_gouraud(pp, &na, vv, ft, &shade))
-            return -1;
-        pp->na = na;
-    }
+    if ((shade != SPAN_SHADE_NONE || ft->src != SPAN_SRC_CONST) && fast_attrs_persp(pp, vv, ft, area, &shade) < 0)
+        return -1;
     S->shade = shade;
     S->src = ft->src;
     return 1;

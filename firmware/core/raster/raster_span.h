@@ -117,8 +117,7 @@ RAS_HOT static uint32_t SPAN_NAME(const struct ftri *T, const struct frow *R)
 #if SPAN_SRC == SPAN_SRC_TEXBL || SPAN_SRC == SPAN_SRC_TEXBW
             span_clamp_uv(nxt + SPAN_A_UV, umax, vmax);
 #endif
-            for (int j = 0; j < SPAN_NA; j++)
-                d[j] = (int32_t)(num_smul32(nxt[j] - cur[j], (int32_t)fast_inv_tab[k]) >> 16);
+            for (int j = 0; j < SPAN_NA; j++) d[j] = span_mul_inv(nxt[j] - cur[j], fast_inv_tab[k]);
         } else {
             for (int j = 0; j < SPAN_NA; j++) { nxt[j] = cur[j]; d[j] = 0; }
         }

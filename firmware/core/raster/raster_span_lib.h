@@ -188,6 +188,16 @@ static inline void persp_at(const struct fpersp *p, int na, int32_t w1, int32_t 
         out[j] = p->at[j].a0 + asr32(q1 * p->at[j].d1 + q2 * p->at[j].d2, 16 - p->at[j].sh);
 }
 
+/* floor(x r / 2^16) for 0 < r <= 2^16 (fast_inv_tab's), in 32-bit
+ * products: x = xh 2^16 + xl with xl in [0, 2^16), so the quotient is xh r
+ * (within [-2^31, 2^31 - 2^16]) plus floor(xl r / 2^16) (xl r < 2^32). */
+static inline int32_t span_mul_inv(int32_t x, uint32_t r)
+{
+    const int32_t xh = asr32(x, 16);
+    const uint32_t xl = (uint32_t)x & 0xFFFFu;
+    return xh * (int32_t)r + (int32_t)((xl * r) >> 16);
+}
+
 /* round(2^16 / k) for the last segment of a span, k = 1..32 */
 static const uint32_t fast_inv_tab[33] = {
     0, 65536, 32768, 21845, 16384, 13107, 10923, 9362, 8192, 7282, 6554, 5958, 5461, 5041, 4681, 4369, 4096,

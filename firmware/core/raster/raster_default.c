@@ -41,6 +41,23 @@ static int levels_memo(struct ras_ctx *rc, rgb c, struct ras_fast_tri *ft)
     return m->kok;
 }
 
+/* A flat colour's RGB565 and RGB888 forms, remembered for the next
+ * triangle of the same colour. */
+static inline __attribute__((always_inline)) void colour_memo(struct ras_ctx *rc, rgb c, struct ras_fast_tri *ft)
+{
+    struct ras_colour_memo *m = &rc->fast.memo;
+    if (!m->valid || !rgb_same(m->c, c)) {
+        m->c = c;
+        m->c565 = rgb_to_565(c);
+        rgb_to_888(c, m->c888);
+        m->valid = 1;
+    }
+    ft->c565 = m->c565;
+    ft->c888[0] = m->c888[0];
+    ft->c888[1] = m->c888[1];
+    ft->c888[2] = m->c888[2];
+}
+
 /* The fast span loops' description of a triangle; 0 when it needs the
  * exact per-pixel path (chapter 15 passes and normal maps, Phong without
  * fast Phong, trilinear or non-power-of-two textures, screen-linear uv,
@@ -93,18 +110,7 @@ static int fast_describe(struct ras_ctx *rc, const struct ras_def_tri *dt, struc
     }
     ft->shade = SPAN_SHADE_NONE;
     ft->src = SPAN_SRC_CONST;
-    rgb c = dt->shading == SHADE_FLAT ? rgb_scale(dt->color, dt->flat_i) : dt->color;
-    struct ras_colour_memo *m = &rc->fast.memo;
-    if (!m->valid || !rgb_same(m->c, c)) {
-        m->c = c;
-        m->c565 = rgb_to_565(c);
-        rgb_to_888(c, m->c888);
-        m->valid = 1;
-    }
-    ft->c565 = m->c565;
-    ft->c888[0] = m->c888[0];
-    ft->c888[1] = m->c888[1];
-    ft->c888[2] = m->c888[2];
+    colour_memo(rc, dt->shading == SHADE_FLAT ? rgb_scale(dt->color, dt->flat_i) : dt->color, ft);
     return 1;
 }
 
@@ -388,6 +394,15 @@ int ras_default_lean(const struct ras_ctx *rc)
            (sh == SHADE_NONE || sh == SHADE_FLAT || sh == SHADE_GOURAUD);
 }
 
+/* A projected corner's screen position, 1/z and depth. */
+static inline void sv_from_pv(struct ras_sv *sv, const struct ras_pv *q)
+{
+    sv->x = q->sx;
+    sv->y = q->sy;
+    sv->iz = q->iz;
+    sv->depth = q->depth;
+}
+
 /* ras_default_render_triangle of an untextured triangle of three projected
  * corners lit by the frame (or unlit) where rc->cur.lean: what
  * projected_corners and fast_describe give (clockwise corners: a front
@@ -403,18 +418,9 @@ static int render_lean(struct ras_ctx *rc, const struct ras_instance *in, const 
     if (!ras_pv_in(q0) || !ras_pv_in(q1) || !ras_pv_in(q2)) return 0;
     struct ras_sv sv[3];
     struct ras_fast_tri ft;
-    sv[0].x = q0->sx;
-    sv[0].y = q0->sy;
-    sv[0].iz = q0->iz;
-    sv[0].depth = q0->depth;
-    sv[1].x = q1->sx;
-    sv[1].y = q1->sy;
-    sv[1].iz = q1->iz;
-    sv[1].depth = q1->depth;
-    sv[2].x = q2->sx;
-    sv[2].y = q2->sy;
-    sv[2].iz = q2->iz;
-    sv[2].depth = q2->depth;
+    sv_from_pv(&sv[0], q0);
+    sv_from_pv(&sv[1], q1);
+    sv_from_pv(&sv[2], q2);
     ft.src = SPAN_SRC_CONST;
     ft.ai_i = ft.ai_uv = 0;
     const int sh = rc->def.shading;
@@ -444,17 +450,7 @@ static int render_lean(struct ras_ctx *rc, const struct ras_instance *in, const 
             c = rgb_scale(c, fi);
         }
         ft.shade = SPAN_SHADE_NONE;
-        struct ras_colour_memo *mo = &rc->fast.memo;
-        if (!mo->valid || !rgb_same(mo->c, c)) {
-            mo->c = c;
-            mo->c565 = rgb_to_565(c);
-            rgb_to_888(c, mo->c888);
-            mo->valid = 1;
-        }
-        ft.c565 = mo->c565;
-        ft.c888[0] = mo->c888[0];
-        ft.c888[1] = mo->c888[1];
-        ft.c888[2] = mo->c888[2];
+        colour_memo(rc, c, &ft);
     }
     const int32_t drawn = ras_fast_fill(rc, &sv[0], &sv[1], &sv[2], &ft, NULL);
     if (drawn < 0) return 0;

@@ -34,12 +34,7 @@
 static inline int32_t fast_to_fix(num a, int32_t scale, int pow2)
 {
 #if NUM_MODE == NUM_MODE_FIXED
-    int64_t p = pow2 ? (int64_t)a * ((int64_t)1 << pow2) : num_smul32(a, scale);
-    int64_t h = (int64_t)1 << (NUM_FRAC - 1);
-    int64_t r = p >= 0 ? (p + h) >> NUM_FRAC : -((-p + h) >> NUM_FRAC);
-    if (r > INT32_MAX) return INT32_MAX;
-    if (r < -INT32_MAX) return -INT32_MAX;
-    return (int32_t)r;
+    return ras_fix_round(pow2 ? (int64_t)a * ((int64_t)1 << pow2) : num_smul32(a, scale));
 #else
     (void)pow2;
     return ras_num_to_fix(a, scale);

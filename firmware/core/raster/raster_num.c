@@ -512,13 +512,8 @@ int ras_front_known(const struct ras_front *fb, int64_t margin, num iza, num izb
 
 int32_t ras_num_to_fix(num a, int32_t scale)
 {
-    /* a * scale in Q.NUM_FRAC, exact in 64 bits; rounded half away from zero */
-    int64_t p = (int64_t)a * scale;
-    int64_t h = (int64_t)1 << (NUM_FRAC - 1);
-    int64_t r = p >= 0 ? (p + h) >> NUM_FRAC : -((-p + h) >> NUM_FRAC);
-    if (r > INT32_MAX) return INT32_MAX;
-    if (r < -INT32_MAX) return -INT32_MAX;
-    return (int32_t)r;
+    /* a * scale in Q.NUM_FRAC, exact in 64 bits */
+    return ras_fix_round((int64_t)a * scale);
 }
 
 #else

@@ -139,4 +139,17 @@ int ras_front_known(const struct ras_front *fb, int64_t margin, num iza, num izb
  * product formed in double. */
 int32_t ras_num_to_fix(num a, int32_t scale);
 
+#if NUM_MODE == NUM_MODE_FIXED
+/* p >> NUM_FRAC rounded half away from zero, saturated to +-(2^31 - 1):
+ * the rounding of ras_num_to_fix's product p = a * scale. */
+static inline int32_t ras_fix_round(int64_t p)
+{
+    const int64_t h = (int64_t)1 << (NUM_FRAC - 1);
+    const int64_t r = p >= 0 ? (p + h) >> NUM_FRAC : -((-p + h) >> NUM_FRAC);
+    if (r > INT32_MAX) return INT32_MAX;
+    if (r < -INT32_MAX) return -INT32_MAX;
+    return (int32_t)r;
+}
+#endif
+
 #endif

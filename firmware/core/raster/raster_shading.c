@@ -32,7 +32,8 @@ num ras_compute_illumination_vis(const struct ras_ctx *rc, vec3 p, vec3 n, num s
          * wide, in the same operation order (the same bits as the narrow
          * forms wherever those fit) */
         if (s->ras.diffuse) {
-            num cos_a = wnum_div(v3_dot_wide(L, n), wnum_mul(wnum_from_num((l->type == LIGHT_DIRECTIONAL ? l->len : v3_len(L))), wnum_from_num(len_n)));
+            const num len_l = l->type == LIGHT_DIRECTIONAL ? l->len : v3_len(L); /* (made once a frame) */
+            num cos_a = wnum_div(v3_dot_wide(L, n), wnum_mul(wnum_from_num(len_l), wnum_from_num(len_n)));
             if (cos_a > 0) i = num_add(i, num_mul(cos_a, li));
         }
         if (s->ras.specular && specular >= 0) {

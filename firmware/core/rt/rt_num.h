@@ -176,6 +176,22 @@ static inline num rt_dot_small(vec3 a, vec3 b)
     return num_mul_round32(a.x, b.x) + num_mul_round32(a.y, b.y) + num_mul_round32(a.z, b.z);
 }
 
+/* rt_dot_small(a, b) when every component of b is an integer (a multiple
+ * of 2^F raw; a directional light such as (1, 4, 4)): each rounded product
+ * a_i b_i / 2^F is a_i (b_i / 2^F) exactly, at most 2^(F+1) 2^(26-F) = 2^27
+ * in magnitude under rt_dot_small's ranges: one 32-bit product each, the
+ * same value. */
+static inline num rt_dot_small_int(vec3 a, vec3 b)
+{
+    return a.x * (b.x >> NUM_FRAC) + a.y * (b.y >> NUM_FRAC) + a.z * (b.z >> NUM_FRAC);
+}
+
+/* 1 when every component of v is an integer (rt_dot_small_int). */
+static inline int rt_v3_integral(vec3 v)
+{
+    return (((uint32_t)v.x | (uint32_t)v.y | (uint32_t)v.z) & ((1u << NUM_FRAC) - 1u)) == 0;
+}
+
 static inline uint32_t rt_umax3(uint32_t a, uint32_t b, uint32_t c)
 {
     uint32_t m = a > b ? a : b;

@@ -688,32 +688,6 @@ static void test_coarse_rejection(void)
     }
     check(bad == 0, "coarse_div_and_power_thresholds_exact", "%ld mismatches", bad);
 
-    /* rt_self_root_in against the division it stands for (a shadow ray
-     * leaving its sphere: t = 2b / a' scaled by 2^-k), limits and t_min
-     * around the quotient, and every claim right */
-    long swrong = 0, sclaims = 0;
-#if NUM_MODE == NUM_MODE_FIXED
-    for (int k = 0; k < 200000; k++) {
-        wnum as = (wnum)(urand(&st) * 3.75 * NUM_ONE_RAW) + NUM_ONE_RAW / 4;
-        wnum n2 = (wnum)(exp((urand(&st) - 0.5) * 30) * (double)NUM_ONE_RAW) + 1;
-        int ks = (int)(urand(&st) * 9);
-        num ts = ks == 0 ? NUM_ONE : (num)(NUM_ONE_RAW >> ks);
-        num q = wnum_div(n2, as), t = ks ? num_mul(q, ts) : q;
-        num t_min = k % 3 ? NUM_C(0.001) : (num)(urand(&st) * 200);
-        int64_t near = (int64_t)t + (int64_t)(urand(&st) * 9) - 4;
-        if (near > NUM_MAX) near = NUM_MAX;
-        if (near < 0) near = 0;
-        num limit = k % 5 == 0 ? NUM_MAX : k % 2 ? NUM_ONE : (num)near;
-        if (k % 7 == 0) t_min = (num)near;
-        int in = rt_self_root_in(n2, as, ts, t_min, limit);
-        if (in < 0) continue;
-        sclaims++;
-        if (in != (t_min < t && t < limit)) swrong++;
-    }
-#endif
-    check(swrong == 0 && (!fixed || sclaims > 150000), "self_root_claims_exact", "%ld of %ld claims wrong", swrong,
-          sclaims);
-
     /* num_div_by: num_div bit for bit, divisors from tiny to huge, quotients
      * around every rounding boundary and up to saturation */
     long dbad = 0;

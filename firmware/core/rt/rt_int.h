@@ -32,8 +32,6 @@ struct rt_ray {
     uint8_t from_camera;  /* O is the camera: per-frame sphere constants apply */
     uint8_t exact;        /* a, ds, as, tscale computed */
     uint8_t cd_todo;      /* cd not yet formed (rt_ray_cd) */
-    uint8_t decide_only;  /* a shadow ray: only whether something is hit is asked (any hit
-                             ends the search), a hit's t may be left unknown */
 };
 
 /* A near root as the fraction n / d it was rounded from (an exact primary
@@ -250,10 +248,6 @@ int rt_closest_intersection(struct rt_state *rt, struct rt_ray *ray, num t_min, 
 /* Whether `item` is hit with t_min < t < t_max. */
 int rt_item_hit(struct rt_state *rt, int16_t item, struct rt_ray *ray, num t_min, num t_max,
                 struct rt_hit *hit);
-/* Whether t = wnum_div(n2, as) scaled by ts (1 or 2^-k) of a ray leaving its
- * sphere (n2 = 2b) lies in (t_min, limit), without the division: 1 yes, 0
- * no, -1 not proven (rt_intersect.c). */
-int rt_self_root_in(wnum n2, wnum as, num ts, num t_min, num limit);
 vec3 rt_hit_normal(const struct rt_state *rt, const struct rt_hit *hit, const vec3 *p);
 vec3 rt_far_point(const struct rt_ray *ray);
 /* The interval of object obj in the traced primary ray's row (rt->dx_row)

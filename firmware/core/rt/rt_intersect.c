@@ -39,7 +39,6 @@ void rt_ray_init(struct rt_ray *r, const vec3 *op, const vec3 *dp, int16_t origi
     o.x = op->x; o.y = op->y; o.z = op->z;
     d.x = dp->x; d.y = dp->y; d.z = dp->z;
     ray_fill(r, &o, &d, origin, from_camera);
-    r->decide_only = 0;   /* read only for a ray leaving a surface (a primary ray never is one) */
     rt_cdir_set(&r->cd, o, d);
     r->cd_todo = 0;
 }
@@ -272,58 +271,6 @@ int rt_intersect_ray_sphere(const struct rt_state *rt, int16_t obj, struct rt_ra
     return 1;
 }
 
-/* rt_self_root_in: whether the root t = scale_t(wnum_div(n2, as), ts) of a ray leaving its
- * sphere (n2 = 2b > 0) lies in (t_min, limit), decided without the division
- * where bounds prove it: 1 yes, 0 no, -1 not proven (fixed point). With X =
- * n2 2^F / as the quotient is R = min(floor(X + 1/2), NUM_MAX) (wnum_div:
- * halves up for positive operands, saturating), and scale_t is R itself
- * (ts = 1) or floor((R + 2^(k-1)) / 2^k) (ts = 2^-k, num_mul's rounding),
- * so t_min < t < limit exactly when R_lo <= R <= R_hi with R_lo = t_min + 1,
- * R_hi = limit - 1, or R_lo = (2 t_min + 1) 2^(k-1), R_hi = (2 limit - 1)
- * 2^(k-1) - 1. X >= R_lo puts R at or above R_lo (R_lo <= NUM_MAX), X <=
- * R_hi at or below R_hi (or R_hi >= NUM_MAX), X < R_lo - 1 below R_lo and
- * X >= R_hi + 1 above R_hi (R_hi < NUM_MAX); each compared as n2 2^F
- * against R as, exact 64-bit products (n2 < 2^(62-F), as and R below
- * 2^32). */
-RT_NOINLINE int rt_self_root_in(wnum n2, wnum as, num ts, num t_min, num limit)
-{
-#if NUM_MODE == NUM_MODE_FIXED
-    if (n2 <= 0 || n2 >= ((wnum)1 << (62 - NUM_FRAC)) || as <= 0 || as > (wnum)UINT32_MAX || t_min < 0 ||
-        limit <= t_min)
-        return -1;
-    /* 2 R_lo - 1 and 2 (R_hi + 1) - 1 at 2^(k-1), k - 1 = k1 (ts = 2^(F-k)) */
-    int k1 = 0;
-    uint32_t a = (uint32_t)t_min, b = (uint32_t)limit;
-    if (ts != NUM_ONE) {
-        if (ts <= 1 || ts > NUM_ONE || (ts & (ts - 1)) != 0) return -1;
-        k1 = NUM_FRAC - 32 + num_clz32((uint32_t)ts);
-        a = 2u * a + 1u;
-        b = 2u * b - 1u;
-    }
-    /* R_lo = t_min + 1 or a 2^k1, R_hi + 1 = limit or b 2^k1: R_lo <= NUM_MAX,
-     * and R_hi >= NUM_MAX when R_hi + 1 passes 2^31 */
-    uint32_t lo, hi1 = 0;
-    if (ts == NUM_ONE) {
-        lo = a + 1u;
-        hi1 = b;
-    } else {
-        if (a >= (1u << (31 - k1))) return -1;
-        lo = a << k1;
-        if (b < (1u << (31 - k1))) hi1 = b << k1;
-    }
-    if (lo > (uint32_t)NUM_MAX) return -1;
-    uint64_t n = (uint64_t)n2 << NUM_FRAC;
-    uint32_t d = (uint32_t)as;
-    if (n < num_umul32(lo - 1u, d)) return 0;
-    if (hi1 && n >= num_umul32(hi1, d)) return 0;
-    if (hi1 && n > num_umul32(hi1 - 1u, d)) return -1;
-    return n >= num_umul32(lo, d) ? 1 : -1;
-#else
-    (void)n2; (void)as; (void)ts; (void)t_min; (void)limit;
-    return -1;
-#endif
-}
-
 /* What rt_item_hit's book-order comparisons pick from rt_intersect_ray_sphere's
  * roots (the smallest in (t_min, limit)), with less work: 1 and *t when
  * there is one. Leaving the sphere, the roots are 0 and 2b/a, so b <= 0
@@ -340,14 +287,6 @@ static int sphere_first_hit(const struct rt_state *rt, int16_t obj, struct rt_ra
         if (rt_coarse_dot_negative(&ray->cd, &rt->oc[obj].cs.c)) return 0;
         wnum b = sphere_self_b(rt, obj, ray);
         if (b <= 0) return 0;
-        if (ray->decide_only) {
-            /* only the answer is used (a shadow ray's): *t is left at limit */
-            int in = rt_self_root_in(wnum_add(b, b), ray->as, ray->tscale, t_min, limit);
-            if (in >= 0) {
-                *t = limit;
-                return in;
-            }
-        }
         t1 = scale_t(wnum_div(wnum_add(b, b), ray->as), ray->tscale);
         if (t_min < t1 && t1 < limit) { *t = t1; return 1; }
         return 0;   /* the other root, 0, is never above t_min */

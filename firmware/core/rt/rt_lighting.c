@@ -87,7 +87,6 @@ num rt_compute_lighting(struct rt_state *rt, vec3 p, vec3 n, int unit_normal, ve
                 srp->origin = origin;
             } else {
                 rt_ray_init(&sr, &p, &l, origin, 0);
-                sr.decide_only = rt->shortcuts;   /* in_shadow's search stops at any hit */
             }
             if (in_shadow(rt, srp, t_max, k)) {
                 if (shadow_bits && k < 7) *shadow_bits |= (uint8_t)(1u << k);

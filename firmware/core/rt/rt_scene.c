@@ -41,7 +41,6 @@ void rt_light_constants(struct rt_state *rt)
         if (s->lights[k].type == LIGHT_DIRECTIONAL) {
             rt->light_ray[k] = rt_make_ray(v3_make(NUM_ZERO, NUM_ZERO, NUM_ZERO), s->lights[k].v, -1, 0);
             rt_ray_exact(&rt->light_ray[k]);
-            rt->light_ray[k].decide_only = rt->shortcuts;   /* a shadow ray (in_shadow) */
             rt->light_len[k] = v3_len(s->lights[k].v);
             rt->light_div[k] = num_divisor_make(rt->light_len[k]);
         }

@@ -92,7 +92,8 @@ struct rt_obj_cache {
     int32_t px_row;
     int64_t px_b, px_x2, px_cxd;
     uint64_t px_x0;
-    uint8_t near_ok;      /* rt_near_c_ok of c_cam: near roots beyond a limit found before the square root */
+    uint8_t near_ok;      /* rt_near_c_ok of c_cam and rt_near_na_ok of cm_cam and every exact primary
+                             direction: near roots beyond a limit found before the square root */
     struct rt_ivsphere ivs;   /* its per-frame part of the row intervals (rt_num.h) */
 };
 

@@ -127,7 +127,7 @@ RT_ALWAYS_INLINE int sphere_quad_row(struct rt_obj_cache *oc, const struct rt_ra
     int64_t bx = oc->px_b - num_smul32(co.x, ray->dx.x);
     if (k->c > 0 && bx <= 0) return 0;
     /* the near root certainly beyond the limit (rt_near_beyond) */
-    if (oc->near_ok && rt_near_beyond(bx, k->cm, k->a, limit)) return 0;
+    if (oc->near_ok && rt_near_beyond_na(bx, k->cm, limit)) return 0;
     return rt_quad_solve_x(bx, oc->px_x0, rt_mag64(num_smul32(co.z, ray->dx.x) - oc->px_cxd),
                            rt_mag64(oc->px_x2 - num_smul32(co.y, ray->dx.x)), k->a, &oc->qs, &k->k);
 #else

@@ -96,7 +96,9 @@ num rt_compute_lighting(struct rt_state *rt, vec3 p, vec3 n, int unit_normal, ve
 #if NUM_MODE == NUM_MODE_FIXED
         /* |N_i| <= 2^(F+1), |L_i| <= 2^26: |N.L| <= 3 * 2^27, |2 N.L| <= 3 * 2^28 */
         int small = n_small && rt_v3_within(l, 26);
-        num n_dot_l = small ? rt_dot_small(n, l) : v3_dot(n, l);
+        /* a directional light's integer components: one product each */
+        num n_dot_l = !small ? v3_dot(n, l) : directional && rt_v3_integral(l) ? rt_dot_small_int(n, l)
+                                                                                : rt_dot_small(n, l);
 #else
         num n_dot_l = v3_dot(n, l);
 #endif

@@ -176,6 +176,22 @@ static inline num rt_dot_small(vec3 a, vec3 b)
     return num_mul_round32(a.x, b.x) + num_mul_round32(a.y, b.y) + num_mul_round32(a.z, b.z);
 }
 
+/* rt_dot_small(a, b) when every component of b is an integer (a multiple
+ * of 2^F raw; a directional light such as (1, 4, 4)): each rounded product
+ * a_i b_i / 2^F is a_i (b_i / 2^F) exactly, at most 2^(F+1) 2^(26-F) = 2^27
+ * in magnitude under rt_dot_small's ranges: one 32-bit product each, the
+ * same value. */
+static inline num rt_dot_small_int(vec3 a, vec3 b)
+{
+    return a.x * (b.x >> NUM_FRAC) + a.y * (b.y >> NUM_FRAC) + a.z * (b.z >> NUM_FRAC);
+}
+
+/* 1 when every component of v is an integer (rt_dot_small_int). */
+static inline int rt_v3_integral(vec3 v)
+{
+    return (((uint32_t)v.x | (uint32_t)v.y | (uint32_t)v.z) & ((1u << NUM_FRAC) - 1u)) == 0;
+}
+
 static inline uint32_t rt_umax3(uint32_t a, uint32_t b, uint32_t c)
 {
     uint32_t m = a > b ? a : b;
@@ -745,12 +761,47 @@ static inline int rt_near_c_ok(wnum c, wnum dot)
 /* 1 only when the near root n / q of the quadratic with b = bx (2F bits),
  * a = aq, c and |CO|^2 passing rt_near_c_ok is certainly above limit (0 in
  * floating modes). */
-static inline int rt_near_beyond(int64_t bx, wnum n, wnum aq, num limit)
+/* n and aq within rt_near_beyond's range (0 in floating modes): checked
+ * once a frame for the camera's spheres (rt_obj_cache.near_ok), aq there
+ * for every exact primary direction (x vh, y vh, d h) at once by
+ * rt_near_dir_ok: a = (x vh)^2 + (y vh)^2 + (d h)^2 >= 2^28 when |d| h >=
+ * 2^14 raw. */
+static inline int rt_near_n_ok(wnum n)
 {
 #if NUM_MODE == NUM_MODE_FIXED
-    if (NUM_FRAC > 20 || limit < 0 || limit >= ((num)1 << 30) || bx < ((int64_t)1 << NUM_FRAC) ||
-        bx >= ((int64_t)1 << 60) || n <= 0 ||
-        n >= ((wnum)1 << (62 - NUM_FRAC)) || aq < ((wnum)1 << 28))
+    return NUM_FRAC <= 20 && n > 0 && n < ((wnum)1 << (62 - NUM_FRAC));
+#else
+    (void)n;
+    return 0;
+#endif
+}
+
+static inline int rt_near_na_ok(wnum n, wnum aq)
+{
+#if NUM_MODE == NUM_MODE_FIXED
+    return rt_near_n_ok(n) && aq >= ((wnum)1 << 28);
+#else
+    (void)n; (void)aq;
+    return 0;
+#endif
+}
+
+static inline int rt_near_dir_ok(num d, uint32_t h)
+{
+#if NUM_MODE == NUM_MODE_FIXED
+    uint32_t ad = d < 0 ? 0u - (uint32_t)d : (uint32_t)d;
+    return ad >= (1u << 14) || ad * h >= (1u << 14);   /* ad < 2^14, h < 2^16: no overflow */
+#else
+    (void)d; (void)h;
+    return 0;
+#endif
+}
+
+/* rt_near_beyond once rt_near_na_ok(n, aq) holds. */
+RT_ALWAYS_INLINE int rt_near_beyond_na(int64_t bx, wnum n, num limit)
+{
+#if NUM_MODE == NUM_MODE_FIXED
+    if (limit < 0 || limit >= ((num)1 << 30) || bx < ((int64_t)1 << NUM_FRAC) || bx >= ((int64_t)1 << 60))
         return 0;
     /* Qu < 2^(61-F) (bx < 2^60): both sides divided by 2^s, s = 30 - F
      * (constant shifts; Qu / 2^s < 2^31), Qu rounded up: floor(n 2^F / 2^s)
@@ -761,9 +812,14 @@ static inline int rt_near_beyond(int64_t bx, wnum n, wnum aq, num limit)
     uint32_t qs = (uint32_t)(qu >> s) + 1u;
     return ((uint64_t)n << NUM_FRAC) >> s >= num_umul32((uint32_t)limit + 1u, qs);
 #else
-    (void)bx; (void)n; (void)aq; (void)limit;
+    (void)bx; (void)n; (void)limit;
     return 0;
 #endif
+}
+
+static inline int rt_near_beyond(int64_t bx, wnum n, wnum aq, num limit)
+{
+    return rt_near_na_ok(n, aq) && rt_near_beyond_na(bx, n, limit);
 }
 
 RT_ALWAYS_INLINE int rt_quad_solve(vec3 co, vec3 d, wnum aq, wnum c, const struct rt_qsphere *sp, struct rt_quad *k)

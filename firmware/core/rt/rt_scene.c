@@ -74,7 +74,10 @@ void rt_frame_constants(struct rt_state *rt)
             /* the near root's numerator along exact pixel directions (rt_exact_comp: multiplier h) */
             oc->cm_cam = rt->book ? 0 : rt_quad_near_num(oc->c_cam, rt->h);
             oc->px_row = -1;   /* the camera may have moved: no row parts */
-            oc->near_ok = (uint8_t)(!rt->book && rt_near_c_ok(oc->c_cam, v3_dot_wide(oc->co_cam, oc->co_cam)));
+            /* and rt_near_beyond's range of n = c H and of a for every exact
+             * primary direction (rt_near_dir_ok) */
+            oc->near_ok = (uint8_t)(!rt->book && rt_near_c_ok(oc->c_cam, v3_dot_wide(oc->co_cam, oc->co_cam)) &&
+                                    rt_near_n_ok(oc->cm_cam) && rt_near_dir_ok(rt->d, rt->h));
 #if NUM_MODE == NUM_MODE_FIXED
             oc->ivs = rt_ivsphere_make(oc->co_cam, oc->qs.r2x, rt->vh);
 #endif

@@ -53,11 +53,12 @@ cost-model: $(BUILD)/host_sim
 	$(Q)mkdir -p $(OUT)/charts
 	$(Q)$(CHARTS_PY) tools/quality/cost_model.py validate --fixture tests/data/quality/lab.json \
 		--csv $(OUT)/charts/cost-model-validate.csv
-	$(Q)$(CHARTS_PY) tools/quality/cost_model.py choices --fixture tests/data/quality/lab.json \
-		--host-sim $(BUILD)/host_sim --write docs/charts.md
+	$(Q)$(MAKE) --no-print-directory choices-table
 # The same from the fixture's stored rows, without an emulator run: the work
 # of each lab scene and ray-traced row recomputed by host renders (after a
 # change to what a unit of work counts), the model fitted, its predictions.
+# Both end with make choices-table in a new make, which first links host_sim
+# again with the model just written (quality.c includes cost_model.def).
 .PHONY: cost-model-refit
 cost-model-refit: $(BUILD)/host_sim
 	$(Q)$(CHARTS_PY) tools/quality/cost_model.py work --fixture tests/data/quality/lab.json \
@@ -67,8 +68,7 @@ cost-model-refit: $(BUILD)/host_sim
 	$(Q)mkdir -p $(OUT)/charts
 	$(Q)$(CHARTS_PY) tools/quality/cost_model.py validate --fixture tests/data/quality/lab.json \
 		--csv $(OUT)/charts/cost-model-validate.csv
-	$(Q)$(CHARTS_PY) tools/quality/cost_model.py choices --fixture tests/data/quality/lab.json \
-		--host-sim $(BUILD)/host_sim --write docs/charts.md
+	$(Q)$(MAKE) --no-print-directory choices-table
 
 # docs/charts.md's table of choices, made of the fixture's rows (the
 # compiler's choices as tests/system/test_quality.py checks them).

@@ -521,23 +521,38 @@ static int fast_attrs(const struct ras_ctx *rc, const struct ras_sv *const vv[3]
 }
 
 /* Whether a scanned box's rows in this strip hold a covered pixel: its
- * edge values stepped across them as fast_rows' scan does. */
-static int fast_covers(const struct ras_ctx *rc, const struct fstate *S)
+ * edge values stepped across them as fast_rows' scan does. S is moved on
+ * to the first row that does (the rows above it cover nothing: neither
+ * scan need walk them, and the depth plane is set up at that row). */
+static int fast_covers(const struct ras_ctx *rc, struct fstate *S)
 {
     const int32_t r1 = S->last < (int32_t)rc->cur.t->y1 - 1 ? S->last : (int32_t)rc->cur.t->y1 - 1;
     const int32_t a0 = S->a[0], a1 = S->a[1], a2 = S->a[2], kmax = S->kmax;
+    const int32_t b0 = S->b[0], b1 = S->b[1], b2 = S->b[2];
     int32_t w0 = S->wb[0], w1 = S->wb[1], w2 = S->wb[2];
     for (int32_t r = S->row; r <= r1; r++) {
         int32_t e0 = w0, e1 = w1, e2 = w2;
         for (int32_t k = 0; k <= kmax; k++) {
-            if (!(((uint32_t)e0 | (uint32_t)e1 | (uint32_t)e2) >> 31)) return 1;
+            if (!(((uint32_t)e0 | (uint32_t)e1 | (uint32_t)e2) >> 31)) {
+                const int32_t n = r - S->row;
+                if (n) {
+                    S->wb[0] = w0;
+                    S->wb[1] = w1;
+                    S->wb[2] = w2;
+                    S->wr[0] += n * b0;
+                    S->wr[1] += n * b1;
+                    S->wr[2] += n * b2;
+                    S->row = r;
+                }
+                return 1;
+            }
             e0 += a0;
             e1 += a1;
             e2 += a2;
         }
-        w0 += S->b[0];
-        w1 += S->b[1];
-        w2 += S->b[2];
+        w0 += b0;
+        w1 += b1;
+        w2 += b2;
     }
     return 0;
 }

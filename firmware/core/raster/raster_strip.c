@@ -85,39 +85,47 @@ static void render_instance(struct ras_ctx *rc, uint16_t i, const struct render_
 /* The binned triangles that reach strip t, in drawing order, each through
  * RenderTriangle: the runs of the buckets begun up to the strip's last row
  * whose triangles reach down to it (ras_bins.reach), the triangles ended
- * above it skipped, merged by index (each run is in drawing order). */
+ * above it skipped, merged by index (each run is in drawing order). Each
+ * run's cursor rests on its next triangle that reaches the strip (skipped
+ * to once, when the cursor moves). */
 static void render_bins(struct ras_ctx *rc, const struct render_target *t)
 {
     const struct ras_bins *B = &rc->bins;
     const struct scene *s = rc->s;
     const struct ras_trows *rows = rc->tri_rows;
+    const uint16_t *order = B->order;
     const int32_t y0 = t->y0;
     const struct trows_strip tb = trows_strip(rc, t);
     uint16_t *cur = B->runs, *end = B->runs + B->nbuckets;
     uint32_t lastb = ((uint32_t)t->y1 - 1) / rc->strip_rows, n = 0;
     for (uint32_t b = 0; b <= lastb && b < B->nbuckets; b++)
         if (B->reach[b] >= y0 && B->start[b] < B->start[b + 1]) {
-            cur[n] = B->start[b];
-            end[n++] = B->start[b + 1];
+            uint32_t c = B->start[b], e = B->start[b + 1];
+            while (c < e && rows[order[c]].r1 < tb.y0) c++;
+            if (c == e) continue;
+            cur[n] = (uint16_t)c;
+            end[n++] = (uint16_t)e;
         }
     uint16_t i = 0;
     while (n) {
-        uint32_t best = UINT32_MAX, bj = 0;
-        for (uint32_t j = 0; j < n;) {
-            uint32_t c = cur[j];
-            while (c < end[j] && rows[B->order[c]].r1 < tb.y0) c++;
-            if (c == end[j]) { /* the run is done: the last one takes its place */
-                n--;
-                cur[j] = cur[n];
-                end[j] = end[n];
-                continue;
+        uint32_t bj = 0, best = order[cur[0]];
+        for (uint32_t j = 1; j < n; j++) {
+            const uint32_t h = order[cur[j]];
+            if (h < best) {
+                best = h;
+                bj = j;
             }
-            cur[j] = (uint16_t)c;
-            if (B->order[c] < best) { best = B->order[c]; bj = j; }
-            j++;
         }
-        if (best == UINT32_MAX) break;
-        cur[bj]++;
+        uint32_t c = cur[bj] + 1u;
+        const uint32_t e = end[bj];
+        while (c < e && rows[order[c]].r1 < tb.y0) c++;
+        if (c == e) { /* the run is done: the last one takes its place */
+            n--;
+            cur[bj] = cur[n];
+            end[bj] = end[n];
+        } else {
+            cur[bj] = (uint16_t)c;
+        }
         if (!trows_hit(rows[best], tb)) continue;
         while (i + 1 < s->ninstances && best >= rc->inst[i + 1].tbase) i++;
         const struct ras_instance *in = &s->instances[i];

@@ -942,8 +942,9 @@ static uint32_t fast_run_spans(const struct ras_ctx *rc, struct fstate *S)
     return total;
 }
 
-/* fast_rows(rc, S, 1) of a triangle fast_scan_flat draws. */
-static uint32_t fast_run_flat(const struct ras_ctx *rc, struct fstate *S)
+/* fast_rows(rc, S, 1) of a triangle fast_scan_flat draws; S is left at
+ * the next row only where kept (a set-up not kept is not read again). */
+static uint32_t fast_run_flat(const struct ras_ctx *rc, struct fstate *S, const int kept)
 {
     const struct render_target *t = rc->cur.t;
     const int32_t r0 = S->row, r1 = S->last < (int32_t)t->y1 - 1 ? S->last : (int32_t)t->y1 - 1;
@@ -962,6 +963,7 @@ static uint32_t fast_run_flat(const struct ras_ctx *rc, struct fstate *S)
         P.dz = S->dz;
         P.col = S->T.ft->c565;
         fast_scan_flat(&P);
+        if (!kept) return P.total;
         for (int i = 0; i < 3; i++) S->wb[i] = P.wb[i];
         S->wr[1] += (int32_t)rows * S->b[1];
         S->wr[2] += (int32_t)rows * S->b[2];
@@ -977,7 +979,7 @@ static uint32_t fast_run_flat(const struct ras_ctx *rc, struct fstate *S)
 #define RAS_SCAN_FLAT_V6M 0
 #endif
 
-static uint32_t fast_run(const struct ras_ctx *rc, struct fstate *S)
+static uint32_t fast_run(const struct ras_ctx *rc, struct fstate *S, const int kept)
 {
 #if RAS_SCAN_FLAT_V6M
     if (S->scan && S->z32
@@ -985,8 +987,10 @@ static uint32_t fast_run(const struct ras_ctx *rc, struct fstate *S)
         && rc->cur.t->rgb888 == NULL && rc->cur.t->written == NULL
 #endif
     )
-        return rc->depth_bytes == 2 && S->shade == SPAN_SHADE_NONE && S->src == SPAN_SRC_CONST ? fast_run_flat(rc, S)
+        return rc->depth_bytes == 2 && S->shade == SPAN_SHADE_NONE && S->src == SPAN_SRC_CONST ? fast_run_flat(rc, S, kept)
                                                                                              : fast_run_spans(rc, S);
+#else
+    (void)kept;
 #endif
     return S->scan ? fast_rows(rc, S, 1) : fast_rows(rc, S, 0);
 }
@@ -1000,7 +1004,7 @@ int32_t ras_fast_fill(struct ras_ctx *rc, const struct ras_sv *v0, const struct 
         if (keep) S->row = -1;
         return r;
     }
-    uint32_t drawn = fast_run(rc, S);
+    uint32_t drawn = fast_run(rc, S, keep != NULL);
     if (keep && S->row <= S->last) {
         /* continued in the next strip: its own copy of the description */
         S->ftc = *ft;
@@ -1013,6 +1017,6 @@ int ras_fast_resume(struct ras_ctx *rc, struct ras_fast_state *keep, uint32_t *d
 {
     struct fstate *S = (struct fstate *)(void *)keep;
     if (S->row != (int32_t)rc->cur.t->y0 || S->row > S->last) return 0;
-    *drawn = fast_run(rc, S);
+    *drawn = fast_run(rc, S, 1);
     return 1;
 }

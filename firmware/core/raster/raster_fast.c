@@ -274,6 +274,28 @@ RAS_SETUP_INLINE int32_t sdiv16(int32_t n, uint32_t d, uint32_t m, int32_t *rem)
     return -(int32_t)q - (r != 0);
 }
 
+/* floor(n / d) and the remainder in [0, d) for n = rd1 x1 + rd2 x2 (rd_i
+ * in [0, d), |x1| + |x2| <= M < 2^16, |n| + 8 d < 2^31) from e_i in
+ * (rd_i 2^15 / d - 2, rd_i 2^15 / d] (0 <= e_i < 2^15): the estimate
+ * (e1 x1 + e2 x2) / 2^15 (|.| < 2^31) is below n / d by less than 2 M /
+ * 2^15 < 4 in magnitude, its floor then corrected by steps of d (the
+ * remainder below 2^31 in magnitude throughout). Two products and a
+ * shift in place of sdiv16's division. */
+RAS_SETUP_INLINE int32_t rdiv_est(int32_t n, int32_t e1, int32_t x1, int32_t e2, int32_t x2, int32_t d, int32_t *rem)
+{
+    int32_t q = asr32(e1 * x1 + e2 * x2, 15), r = n - q * d;
+    while (r < 0) {
+        r += d;
+        q--;
+    }
+    while (r >= d) {
+        r -= d;
+        q++;
+    }
+    *rem = r;
+    return q;
+}
+
 /* a - b for |a - b| < 2^31. */
 static int32_t sdiff(uint32_t a, uint32_t b) { return a >= b ? (int32_t)(a - b) : -(int32_t)(b - a); }
 
@@ -349,8 +371,8 @@ static int depth_small(const struct ras_sv *v0, const struct ras_sv *v1, const s
     if (Mb > Mab) Mab = Mb;
     if (Mab > M) M = Mab;
     const uint32_t A = (uint32_t)area;
-    /* (A - 1) M < 2^31, in 32 bits where M < 2^16 (A < 2^16) */
-    if (M >= (1u << 16) || (A - 1u) * M >= (1u << 31)) return 0;
+    /* (A - 1) M + 8 A < 2^31 (rdiv_est), in 32 bits where M < 2^16 (A < 2^16) */
+    if (M >= (1u << 16) || (A - 1u) * M + 8u * A >= (1u << 31)) return 0;
     const uint32_t m = area_recip(A);
     /* (|dd_i| < 2^31: the depths' range) */
     int32_t dd1 = sdiff(d1, d0), dd2 = sdiff(d2, d0), rd1, rd2, rx, ry, rz;
@@ -358,10 +380,15 @@ static int depth_small(const struct ras_sv *v0, const struct ras_sv *v1, const s
     /* (Q + 1) M_ab < 2^31, in 32 bits where Q < 2^16 (M_ab < 2^16) */
     const uint32_t Q = uabs32(qd1) > uabs32(qd2) ? uabs32(qd1) : uabs32(qd2);
     if (Q < (1u << 16) ? (Q + 1u) * Mab >= (1u << 31) : num_umul32(Q + 1u, Mab) >= (1u << 31)) return 0;
-    int32_t qx = qd1 * a[1] + qd2 * a[2] + sdiv16(rd1 * a[1] + rd2 * a[2], A, m, &rx);
-    int32_t qy = qd1 * b[1] + qd2 * b[2] + sdiv16(rd1 * b[1] + rd2 * b[2], A, m, &ry);
+    /* e_i = floor(rd_i m / 2^17), in (rd_i 2^15 / A - 2, rd_i 2^15 / A] (m
+     * below 2^32 / A by at most 1): floor(rd_i m / 2^16) as frac16 forms it */
+    const uint32_t mh = m >> 16, ml = m & 0xFFFFu;
+    const int32_t e1 = (int32_t)(((uint32_t)rd1 * mh + (((uint32_t)rd1 * ml) >> 16)) >> 1),
+                  e2 = (int32_t)(((uint32_t)rd2 * mh + (((uint32_t)rd2 * ml) >> 16)) >> 1), sA = (int32_t)A;
+    int32_t qx = qd1 * a[1] + qd2 * a[2] + rdiv_est(rd1 * a[1] + rd2 * a[2], e1, a[1], e2, a[2], sA, &rx);
+    int32_t qy = qd1 * b[1] + qd2 * b[2] + rdiv_est(rd1 * b[1] + rd2 * b[2], e1, b[1], e2, b[2], sA, &ry);
     uint32_t qz = (uint32_t)qd1 * (uint32_t)w1t + (uint32_t)qd2 * (uint32_t)w2t +
-                  (uint32_t)sdiv16(rd1 * w1t + rd2 * w2t, A, m, &rz);
+                  (uint32_t)rdiv_est(rd1 * w1t + rd2 * w2t, e1, w1t, e2, w2t, sA, &rz);
     S->gxq = qx;
     S->gxf = frac16(rx, A, m);
     S->dz = (uint32_t)(qx + (qx < 0 && rx != 0));      /* toward zero */

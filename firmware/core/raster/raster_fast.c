@@ -533,17 +533,19 @@ static int fast_attrs(const struct ras_ctx *rc, const struct ras_sv *const vv[3]
     struct fpersp *pp = &Tp->pp;
     int shade = ft->shade;
     Tp->ft = ft;
+    pp->na = 0;
+    S->src = ft->src;
+    S->shade = shade;
+    /* (a flat colour's span loops read the description only) */
+    if (shade == SPAN_SHADE_NONE && ft->src == SPAN_SRC_CONST) return 1;
     Tp->slog = rc->fast.persp_log2;
     Tp->seg = (int32_t)1 << Tp->slog;
     Tp->a1 = S->a[1];
     Tp->a2 = S->a[2];
     Tp->sa1 = S->a[1] * Tp->seg;
     Tp->sa2 = S->a[2] * Tp->seg;
-    pp->na = 0;
-    if ((shade != SPAN_SHADE_NONE || ft->src != SPAN_SRC_CONST) && fast_attrs_persp(pp, vv, ft, area, &shade) < 0)
-        return -1;
+    if (fast_attrs_persp(pp, vv, ft, area, &shade) < 0) return -1;
     S->shade = shade;
-    S->src = ft->src;
     return 1;
 }
 

@@ -973,7 +973,7 @@ static uint32_t fast_run_spans(const struct ras_ctx *rc, struct fstate *S)
 
 /* fast_rows(rc, S, 1) of a triangle fast_scan_flat draws; S is left at
  * the next row only where kept (a set-up not kept is not read again). */
-static uint32_t fast_run_flat(const struct ras_ctx *rc, struct fstate *S, const int kept)
+__attribute__((noinline)) static uint32_t fast_run_flat(const struct ras_ctx *rc, struct fstate *S, const int kept)
 {
     const struct render_target *t = rc->cur.t;
     const int32_t r0 = S->row, r1 = S->last < (int32_t)t->y1 - 1 ? S->last : (int32_t)t->y1 - 1;
@@ -1008,6 +1008,16 @@ static uint32_t fast_run_flat(const struct ras_ctx *rc, struct fstate *S, const 
 #define RAS_SCAN_FLAT_V6M 0
 #endif
 
+/* 1 when fast_run_flat draws S's rows. */
+static inline int fast_flat(const struct ras_ctx *rc, const struct fstate *S)
+{
+    return S->scan && S->z32 &&
+#if RENDER_HOST_OUTPUTS
+           rc->cur.t->rgb888 == NULL && rc->cur.t->written == NULL &&
+#endif
+           rc->depth_bytes == 2 && S->shade == SPAN_SHADE_NONE && S->src == SPAN_SRC_CONST;
+}
+
 static uint32_t fast_run(const struct ras_ctx *rc, struct fstate *S, const int kept)
 {
 #if RAS_SCAN_FLAT_V6M
@@ -1033,7 +1043,12 @@ int32_t ras_fast_fill(struct ras_ctx *rc, const struct ras_sv *v0, const struct 
         if (keep) S->row = -1;
         return r;
     }
+#if RAS_SCAN_FLAT_V6M
+    /* (fast_run_flat called straight: none of fast_run's frame) */
+    uint32_t drawn = fast_flat(rc, S) ? fast_run_flat(rc, S, keep != NULL) : fast_run(rc, S, keep != NULL);
+#else
     uint32_t drawn = fast_run(rc, S, keep != NULL);
+#endif
     if (keep && S->row <= S->last) {
         /* continued in the next strip: its own copy of the description */
         S->ftc = *ft;

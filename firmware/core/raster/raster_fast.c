@@ -141,17 +141,19 @@ typedef char ras_fast_state_fits[sizeof(struct fstate) <= sizeof(struct ras_fast
 /* Edge i from (ax, ay) by (dx, dy): its value at the box's first pixel
  * (px, py), its steps and, where not scanned, its row bounds. */
 static inline void fast_edge(struct fstate *S, int i, int32_t ax, int32_t ay, int32_t dx, int32_t dy, int32_t px,
-                             int32_t py, int32_t one)
+                             int32_t py, int sb, int scan)
 {
     const int32_t bias = (dy < 0 || (dy == 0 && dx > 0)) ? 0 : -1;
     /* ras_edge's value in 32 bits: the pixel lies within a pixel of the
      * box, so |dx|, |dy| <= 2^14 and the other factors < 2^14 + 2^9 */
     const int32_t w = dx * (py - ay) - dy * (px - ax);
+    /* (times 2^sb: |dx|, |dy| <= 2^14) */
+    const int32_t a = -dy * ((int32_t)1 << sb), b = dx * ((int32_t)1 << sb);
     S->wr[i] = w;
-    S->a[i] = -dy * one;
-    S->b[i] = dx * one;
+    S->a[i] = a;
+    S->b[i] = b;
     S->wb[i] = w + bias;
-    if (!S->scan) fedge_init(&S->fe[i], S->a[i], S->b[i], w, bias);
+    if (!scan) fedge_init(&S->fe[i], a, b, w, bias);
 }
 
 static int fast_edges(const struct ras_ctx *rc, const int32_t box[4], const struct ras_sv *v0,
@@ -184,11 +186,12 @@ static int fast_edges(const struct ras_ctx *rc, const int32_t box[4], const stru
     /* a box of few pixels a row (for the rows left) finds each row's span
      * by stepping the edge values across it, cheaper than the divisions
      * that bound it (the same columns either way) */
-    S->scan = (c1 - c0 + 2) * (r1 - r0 + 1) <= RAS_SCAN_MAX;
+    const int scan = (c1 - c0 + 2) * (r1 - r0 + 1) <= RAS_SCAN_MAX;
+    S->scan = scan;
     const int32_t x0 = v0->x, y0 = v0->y, x1 = v1->x, y1 = v1->y, x2 = v2->x, y2 = v2->y;
-    fast_edge(S, 0, x1, y1, x2 - x1, y2 - y1, px, py, one);
-    fast_edge(S, 1, x2, y2, x0 - x2, y0 - y2, px, py, one);
-    fast_edge(S, 2, x0, y0, x1 - x0, y1 - y0, px, py, one);
+    fast_edge(S, 0, x1, y1, x2 - x1, y2 - y1, px, py, sb, scan);
+    fast_edge(S, 1, x2, y2, x0 - x2, y0 - y2, px, py, sb, scan);
+    fast_edge(S, 2, x0, y0, x1 - x0, y1 - y0, px, py, sb, scan);
     S->c0 = c0;
     S->kmax = cr - c0;
     S->row = r0;

@@ -394,12 +394,12 @@ int ras_default_lean(const struct ras_ctx *rc)
            (sh == SHADE_NONE || sh == SHADE_FLAT || sh == SHADE_GOURAUD);
 }
 
-/* A projected corner's screen position, 1/z and depth. */
+/* A projected corner's screen position and depth for the fast loops (its
+ * 1/z left unset: they do not read it). */
 static inline void sv_from_pv(struct ras_sv *sv, const struct ras_pv *q)
 {
     sv->x = q->sx;
     sv->y = q->sy;
-    sv->iz = q->iz;
     sv->depth = q->depth;
 }
 

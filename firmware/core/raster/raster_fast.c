@@ -552,6 +552,46 @@ static int fast_attrs(const struct ras_ctx *rc, const struct ras_sv *const vv[3]
     return 1;
 }
 
+#if defined(__ARM_ARCH_6M__) && defined(__GNUC__)
+/* ARMv6-M: fast_covers' walk by hand. e points at S->wr, followed by a[3],
+ * b[3] and wb[3] (words 3 to 11); kmax the box's last column less c0, rows
+ * (> 0) the rows to walk. Returns the first row (from 0) holding a covered
+ * pixel, its edge values with their bias left in wb, or rows when none
+ * does. Registers: r0-r2 the row's edge values, r3 the columns left, r4-r6
+ * the pixel's, r7 scratch; r8-r10 a0..a2, r11 kmax, r12 the row, lr e. */
+typedef char fstate_edges_layout[offsetof(struct fstate, a) == offsetof(struct fstate, wr) + 12 &&
+                                         offsetof(struct fstate, b) == offsetof(struct fstate, wr) + 24 &&
+                                         offsetof(struct fstate, wb) == offsetof(struct fstate, wr) + 36
+                                     ? 1
+                                     : -1];
+static uint32_t covers_v6m(int32_t *e, uint32_t kmax, uint32_t rows)
+{
+    register int32_t *r0 __asm__("r0") = e;
+    register uint32_t r1 __asm__("r1") = kmax, r2 __asm__("r2") = rows;
+    __asm__ volatile(
+        ".syntax unified\n\t"
+        "mov lr, r0\n\t mov r11, r1\n\t mov r7, r2\n\t"
+        "ldr r6, [r0, #12]\n\t mov r8, r6\n\t ldr r6, [r0, #16]\n\t mov r9, r6\n\t"
+        "ldr r6, [r0, #20]\n\t mov r10, r6\n\t"
+        "ldr r1, [r0, #40]\n\t ldr r2, [r0, #44]\n\t ldr r0, [r0, #36]\n\t"
+        "movs r3, #0\n\t mov r12, r3\n\t push {r7}\n"
+        "1:\n\t movs r4, r0\n\t movs r5, r1\n\t movs r6, r2\n\t mov r3, r11\n"
+        "2:\n\t movs r7, r4\n\t orrs r7, r5\n\t orrs r7, r6\n\t bpl 3f\n\t"
+        "add r4, r8\n\t add r5, r9\n\t add r6, r10\n\t subs r3, #1\n\t bpl 2b\n\t"
+        "mov r7, lr\n\t ldr r3, [r7, #24]\n\t adds r0, r0, r3\n\t ldr r3, [r7, #28]\n\t adds r1, r1, r3\n\t"
+        "ldr r3, [r7, #32]\n\t adds r2, r2, r3\n\t"
+        "mov r7, r12\n\t adds r7, #1\n\t mov r12, r7\n\t ldr r3, [sp]\n\t cmp r7, r3\n\t blo 1b\n\t"
+        "b 4f\n"
+        "3:\n\t mov r7, lr\n\t str r0, [r7, #36]\n\t str r1, [r7, #40]\n\t str r2, [r7, #44]\n"
+        "4:\n\t add sp, #4\n\t mov r0, r12\n\t"
+        ".syntax divided\n"
+        : "+l"(r0), "+l"(r1), "+l"(r2)
+        :
+        : "r3", "r4", "r5", "r6", "r7", "r8", "r9", "r10", "r11", "r12", "lr", "cc", "memory");
+    return (uint32_t)(uintptr_t)r0;
+}
+#endif
+
 /* Whether a scanned box's rows in this strip hold a covered pixel: its
  * edge values stepped across them as fast_rows' scan does. S is moved on
  * to the first row that does (the rows above it cover nothing: neither
@@ -559,6 +599,18 @@ static int fast_attrs(const struct ras_ctx *rc, const struct ras_sv *const vv[3]
 static int fast_covers(const struct ras_ctx *rc, struct fstate *S)
 {
     const int32_t r1 = S->last < (int32_t)rc->cur.t->y1 - 1 ? S->last : (int32_t)rc->cur.t->y1 - 1;
+#if defined(__ARM_ARCH_6M__) && defined(__GNUC__)
+    if (r1 < S->row) return 0;
+    const uint32_t rows = (uint32_t)(r1 - S->row + 1), n = covers_v6m(S->wr, (uint32_t)S->kmax, rows);
+    if (n >= rows) return 0;
+    if (n) {
+        S->wr[0] += (int32_t)n * S->b[0];
+        S->wr[1] += (int32_t)n * S->b[1];
+        S->wr[2] += (int32_t)n * S->b[2];
+        S->row += (int32_t)n;
+    }
+    return 1;
+#else
     const int32_t a0 = S->a[0], a1 = S->a[1], a2 = S->a[2], kmax = S->kmax;
     const int32_t b0 = S->b[0], b1 = S->b[1], b2 = S->b[2];
     int32_t w0 = S->wb[0], w1 = S->wb[1], w2 = S->wb[2];
@@ -587,6 +639,7 @@ static int fast_covers(const struct ras_ctx *rc, struct fstate *S)
         w2 += b2;
     }
     return 0;
+#endif
 }
 
 /* Set-up of triangle v0 v1 v2 for rows from the strip's first on (lazy:

@@ -394,12 +394,12 @@ int ras_default_lean(const struct ras_ctx *rc)
            (sh == SHADE_NONE || sh == SHADE_FLAT || sh == SHADE_GOURAUD);
 }
 
-/* A projected corner's screen position, 1/z and depth. */
+/* A projected corner's screen position and depth for the fast loops (its
+ * 1/z left unset: they do not read it). */
 static inline void sv_from_pv(struct ras_sv *sv, const struct ras_pv *q)
 {
     sv->x = q->sx;
     sv->y = q->sy;
-    sv->iz = q->iz;
     sv->depth = q->depth;
 }
 
@@ -462,10 +462,12 @@ static int render_lean(struct ras_ctx *rc, const struct ras_instance *in, const 
  * cache), attributes, clipping and projection, then the fan of its
  * polygon, each by the fast span loops where they take it (ft) and by the
  * exact per-pixel path otherwise. */
-void ras_default_render_triangle(struct ras_ctx *rc, const struct ras_instance *in, const struct ras_inst *ri,
-                                 const struct ras_model *m, const struct ras_triangle *t, uint32_t gi)
+#if defined(__GNUC__) || defined(__clang__)
+__attribute__((noinline))
+#endif
+static void render_full(struct ras_ctx *rc, const struct ras_instance *in, const struct ras_inst *ri,
+                        const struct ras_model *m, const struct ras_triangle *t, uint32_t gi)
 {
-    if (rc->cur.lean && render_lean(rc, in, ri, m, t, gi)) return;
     struct ras_fast_state *slot;
     if (resume_kept(rc, gi, &slot)) return;
     vec3 V[3], N[3];
@@ -515,4 +517,12 @@ void ras_default_render_triangle(struct ras_ctx *rc, const struct ras_instance *
         rc->def.affine_from = (int8_t)(uv && !rc->s->ras.perspective_uv ? dt.ai_uv : -1);
         ras_fill_triangle(rc, a, b, c, na, rc->cur.depth_only ? NULL : ras_default_pixel, &dt);
     }
+}
+
+/* (render_full apart: a lean triangle's call sets up none of its frame) */
+void ras_default_render_triangle(struct ras_ctx *rc, const struct ras_instance *in, const struct ras_inst *ri,
+                                 const struct ras_model *m, const struct ras_triangle *t, uint32_t gi)
+{
+    if (rc->cur.lean && render_lean(rc, in, ri, m, t, gi)) return;
+    render_full(rc, in, ri, m, t, gi);
 }

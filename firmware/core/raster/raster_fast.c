@@ -141,17 +141,19 @@ typedef char ras_fast_state_fits[sizeof(struct fstate) <= sizeof(struct ras_fast
 /* Edge i from (ax, ay) by (dx, dy): its value at the box's first pixel
  * (px, py), its steps and, where not scanned, its row bounds. */
 static inline void fast_edge(struct fstate *S, int i, int32_t ax, int32_t ay, int32_t dx, int32_t dy, int32_t px,
-                             int32_t py, int32_t one)
+                             int32_t py, int sb, int scan)
 {
     const int32_t bias = (dy < 0 || (dy == 0 && dx > 0)) ? 0 : -1;
     /* ras_edge's value in 32 bits: the pixel lies within a pixel of the
      * box, so |dx|, |dy| <= 2^14 and the other factors < 2^14 + 2^9 */
     const int32_t w = dx * (py - ay) - dy * (px - ax);
+    /* (times 2^sb: |dx|, |dy| <= 2^14) */
+    const int32_t a = -dy * ((int32_t)1 << sb), b = dx * ((int32_t)1 << sb);
     S->wr[i] = w;
-    S->a[i] = -dy * one;
-    S->b[i] = dx * one;
+    S->a[i] = a;
+    S->b[i] = b;
     S->wb[i] = w + bias;
-    if (!S->scan) fedge_init(&S->fe[i], S->a[i], S->b[i], w, bias);
+    if (!scan) fedge_init(&S->fe[i], a, b, w, bias);
 }
 
 static int fast_edges(const struct ras_ctx *rc, const int32_t box[4], const struct ras_sv *v0,
@@ -184,11 +186,12 @@ static int fast_edges(const struct ras_ctx *rc, const int32_t box[4], const stru
     /* a box of few pixels a row (for the rows left) finds each row's span
      * by stepping the edge values across it, cheaper than the divisions
      * that bound it (the same columns either way) */
-    S->scan = (c1 - c0 + 2) * (r1 - r0 + 1) <= RAS_SCAN_MAX;
+    const int scan = (c1 - c0 + 2) * (r1 - r0 + 1) <= RAS_SCAN_MAX;
+    S->scan = scan;
     const int32_t x0 = v0->x, y0 = v0->y, x1 = v1->x, y1 = v1->y, x2 = v2->x, y2 = v2->y;
-    fast_edge(S, 0, x1, y1, x2 - x1, y2 - y1, px, py, one);
-    fast_edge(S, 1, x2, y2, x0 - x2, y0 - y2, px, py, one);
-    fast_edge(S, 2, x0, y0, x1 - x0, y1 - y0, px, py, one);
+    fast_edge(S, 0, x1, y1, x2 - x1, y2 - y1, px, py, sb, scan);
+    fast_edge(S, 1, x2, y2, x0 - x2, y0 - y2, px, py, sb, scan);
+    fast_edge(S, 2, x0, y0, x1 - x0, y1 - y0, px, py, sb, scan);
     S->c0 = c0;
     S->kmax = cr - c0;
     S->row = r0;
@@ -274,6 +277,28 @@ RAS_SETUP_INLINE int32_t sdiv16(int32_t n, uint32_t d, uint32_t m, int32_t *rem)
     return -(int32_t)q - (r != 0);
 }
 
+/* floor(n / d) and the remainder in [0, d) for n = rd1 x1 + rd2 x2 (rd_i
+ * in [0, d), |x1| + |x2| <= M < 2^16, |n| + 8 d < 2^31) from e_i in
+ * (rd_i 2^15 / d - 2, rd_i 2^15 / d] (0 <= e_i < 2^15): the estimate
+ * (e1 x1 + e2 x2) / 2^15 (|.| < 2^31) is below n / d by less than 2 M /
+ * 2^15 < 4 in magnitude, its floor then corrected by steps of d (the
+ * remainder below 2^31 in magnitude throughout). Two products and a
+ * shift in place of sdiv16's division. */
+RAS_SETUP_INLINE int32_t rdiv_est(int32_t n, int32_t e1, int32_t x1, int32_t e2, int32_t x2, int32_t d, int32_t *rem)
+{
+    int32_t q = asr32(e1 * x1 + e2 * x2, 15), r = n - q * d;
+    while (r < 0) {
+        r += d;
+        q--;
+    }
+    while (r >= d) {
+        r -= d;
+        q++;
+    }
+    *rem = r;
+    return q;
+}
+
 /* a - b for |a - b| < 2^31. */
 static int32_t sdiff(uint32_t a, uint32_t b) { return a >= b ? (int32_t)(a - b) : -(int32_t)(b - a); }
 
@@ -349,8 +374,8 @@ static int depth_small(const struct ras_sv *v0, const struct ras_sv *v1, const s
     if (Mb > Mab) Mab = Mb;
     if (Mab > M) M = Mab;
     const uint32_t A = (uint32_t)area;
-    /* (A - 1) M < 2^31, in 32 bits where M < 2^16 (A < 2^16) */
-    if (M >= (1u << 16) || (A - 1u) * M >= (1u << 31)) return 0;
+    /* (A - 1) M + 8 A < 2^31 (rdiv_est), in 32 bits where M < 2^16 (A < 2^16) */
+    if (M >= (1u << 16) || (A - 1u) * M + 8u * A >= (1u << 31)) return 0;
     const uint32_t m = area_recip(A);
     /* (|dd_i| < 2^31: the depths' range) */
     int32_t dd1 = sdiff(d1, d0), dd2 = sdiff(d2, d0), rd1, rd2, rx, ry, rz;
@@ -358,10 +383,15 @@ static int depth_small(const struct ras_sv *v0, const struct ras_sv *v1, const s
     /* (Q + 1) M_ab < 2^31, in 32 bits where Q < 2^16 (M_ab < 2^16) */
     const uint32_t Q = uabs32(qd1) > uabs32(qd2) ? uabs32(qd1) : uabs32(qd2);
     if (Q < (1u << 16) ? (Q + 1u) * Mab >= (1u << 31) : num_umul32(Q + 1u, Mab) >= (1u << 31)) return 0;
-    int32_t qx = qd1 * a[1] + qd2 * a[2] + sdiv16(rd1 * a[1] + rd2 * a[2], A, m, &rx);
-    int32_t qy = qd1 * b[1] + qd2 * b[2] + sdiv16(rd1 * b[1] + rd2 * b[2], A, m, &ry);
+    /* e_i = floor(rd_i m / 2^17), in (rd_i 2^15 / A - 2, rd_i 2^15 / A] (m
+     * below 2^32 / A by at most 1): floor(rd_i m / 2^16) as frac16 forms it */
+    const uint32_t mh = m >> 16, ml = m & 0xFFFFu;
+    const int32_t e1 = (int32_t)(((uint32_t)rd1 * mh + (((uint32_t)rd1 * ml) >> 16)) >> 1),
+                  e2 = (int32_t)(((uint32_t)rd2 * mh + (((uint32_t)rd2 * ml) >> 16)) >> 1), sA = (int32_t)A;
+    int32_t qx = qd1 * a[1] + qd2 * a[2] + rdiv_est(rd1 * a[1] + rd2 * a[2], e1, a[1], e2, a[2], sA, &rx);
+    int32_t qy = qd1 * b[1] + qd2 * b[2] + rdiv_est(rd1 * b[1] + rd2 * b[2], e1, b[1], e2, b[2], sA, &ry);
     uint32_t qz = (uint32_t)qd1 * (uint32_t)w1t + (uint32_t)qd2 * (uint32_t)w2t +
-                  (uint32_t)sdiv16(rd1 * w1t + rd2 * w2t, A, m, &rz);
+                  (uint32_t)rdiv_est(rd1 * w1t + rd2 * w2t, e1, w1t, e2, w2t, sA, &rz);
     S->gxq = qx;
     S->gxf = frac16(rx, A, m);
     S->dz = (uint32_t)(qx + (qx < 0 && rx != 0));      /* toward zero */
@@ -506,40 +536,110 @@ static int fast_attrs(const struct ras_ctx *rc, const struct ras_sv *const vv[3]
     struct fpersp *pp = &Tp->pp;
     int shade = ft->shade;
     Tp->ft = ft;
+    pp->na = 0;
+    S->src = ft->src;
+    S->shade = shade;
+    /* (a flat colour's span loops read the description only) */
+    if (shade == SPAN_SHADE_NONE && ft->src == SPAN_SRC_CONST) return 1;
     Tp->slog = rc->fast.persp_log2;
     Tp->seg = (int32_t)1 << Tp->slog;
     Tp->a1 = S->a[1];
     Tp->a2 = S->a[2];
     Tp->sa1 = S->a[1] * Tp->seg;
     Tp->sa2 = S->a[2] * Tp->seg;
-    pp->na = 0;
-    if ((shade != SPAN_SHADE_NONE || ft->src != SPAN_SRC_CONST) && fast_attrs_persp(pp, vv, ft, area, &shade) < 0)
-        return -1;
+    if (fast_attrs_persp(pp, vv, ft, area, &shade) < 0) return -1;
     S->shade = shade;
-    S->src = ft->src;
     return 1;
 }
 
+#if defined(__ARM_ARCH_6M__) && defined(__GNUC__)
+/* ARMv6-M: fast_covers' walk by hand. e points at S->wr, followed by a[3],
+ * b[3] and wb[3] (words 3 to 11); kmax the box's last column less c0, rows
+ * (> 0) the rows to walk. Returns the first row (from 0) holding a covered
+ * pixel, its edge values with their bias left in wb, or rows when none
+ * does. Registers: r0-r2 the row's edge values, r3 the columns left, r4-r6
+ * the pixel's, r7 scratch; r8-r10 a0..a2, r11 kmax, r12 the row, lr e. */
+typedef char fstate_edges_layout[offsetof(struct fstate, a) == offsetof(struct fstate, wr) + 12 &&
+                                         offsetof(struct fstate, b) == offsetof(struct fstate, wr) + 24 &&
+                                         offsetof(struct fstate, wb) == offsetof(struct fstate, wr) + 36
+                                     ? 1
+                                     : -1];
+static uint32_t covers_v6m(int32_t *e, uint32_t kmax, uint32_t rows)
+{
+    register int32_t *r0 __asm__("r0") = e;
+    register uint32_t r1 __asm__("r1") = kmax, r2 __asm__("r2") = rows;
+    __asm__ volatile(
+        ".syntax unified\n\t"
+        "mov lr, r0\n\t mov r11, r1\n\t mov r7, r2\n\t"
+        "ldr r6, [r0, #12]\n\t mov r8, r6\n\t ldr r6, [r0, #16]\n\t mov r9, r6\n\t"
+        "ldr r6, [r0, #20]\n\t mov r10, r6\n\t"
+        "ldr r1, [r0, #40]\n\t ldr r2, [r0, #44]\n\t ldr r0, [r0, #36]\n\t"
+        "movs r3, #0\n\t mov r12, r3\n\t push {r7}\n"
+        "1:\n\t movs r4, r0\n\t movs r5, r1\n\t movs r6, r2\n\t mov r3, r11\n"
+        "2:\n\t movs r7, r4\n\t orrs r7, r5\n\t orrs r7, r6\n\t bpl 3f\n\t"
+        "add r4, r8\n\t add r5, r9\n\t add r6, r10\n\t subs r3, #1\n\t bpl 2b\n\t"
+        "mov r7, lr\n\t ldr r3, [r7, #24]\n\t adds r0, r0, r3\n\t ldr r3, [r7, #28]\n\t adds r1, r1, r3\n\t"
+        "ldr r3, [r7, #32]\n\t adds r2, r2, r3\n\t"
+        "mov r7, r12\n\t adds r7, #1\n\t mov r12, r7\n\t ldr r3, [sp]\n\t cmp r7, r3\n\t blo 1b\n\t"
+        "b 4f\n"
+        "3:\n\t mov r7, lr\n\t str r0, [r7, #36]\n\t str r1, [r7, #40]\n\t str r2, [r7, #44]\n"
+        "4:\n\t add sp, #4\n\t mov r0, r12\n\t"
+        ".syntax divided\n"
+        : "+l"(r0), "+l"(r1), "+l"(r2)
+        :
+        : "r3", "r4", "r5", "r6", "r7", "r8", "r9", "r10", "r11", "r12", "lr", "cc", "memory");
+    return (uint32_t)(uintptr_t)r0;
+}
+#endif
+
 /* Whether a scanned box's rows in this strip hold a covered pixel: its
- * edge values stepped across them as fast_rows' scan does. */
-static int fast_covers(const struct ras_ctx *rc, const struct fstate *S)
+ * edge values stepped across them as fast_rows' scan does. S is moved on
+ * to the first row that does (the rows above it cover nothing: neither
+ * scan need walk them, and the depth plane is set up at that row). */
+static int fast_covers(const struct ras_ctx *rc, struct fstate *S)
 {
     const int32_t r1 = S->last < (int32_t)rc->cur.t->y1 - 1 ? S->last : (int32_t)rc->cur.t->y1 - 1;
+#if defined(__ARM_ARCH_6M__) && defined(__GNUC__)
+    if (r1 < S->row) return 0;
+    const uint32_t rows = (uint32_t)(r1 - S->row + 1), n = covers_v6m(S->wr, (uint32_t)S->kmax, rows);
+    if (n >= rows) return 0;
+    if (n) {
+        S->wr[0] += (int32_t)n * S->b[0];
+        S->wr[1] += (int32_t)n * S->b[1];
+        S->wr[2] += (int32_t)n * S->b[2];
+        S->row += (int32_t)n;
+    }
+    return 1;
+#else
     const int32_t a0 = S->a[0], a1 = S->a[1], a2 = S->a[2], kmax = S->kmax;
+    const int32_t b0 = S->b[0], b1 = S->b[1], b2 = S->b[2];
     int32_t w0 = S->wb[0], w1 = S->wb[1], w2 = S->wb[2];
     for (int32_t r = S->row; r <= r1; r++) {
         int32_t e0 = w0, e1 = w1, e2 = w2;
         for (int32_t k = 0; k <= kmax; k++) {
-            if (!(((uint32_t)e0 | (uint32_t)e1 | (uint32_t)e2) >> 31)) return 1;
+            if (!(((uint32_t)e0 | (uint32_t)e1 | (uint32_t)e2) >> 31)) {
+                const int32_t n = r - S->row;
+                if (n) {
+                    S->wb[0] = w0;
+                    S->wb[1] = w1;
+                    S->wb[2] = w2;
+                    S->wr[0] += n * b0;
+                    S->wr[1] += n * b1;
+                    S->wr[2] += n * b2;
+                    S->row = r;
+                }
+                return 1;
+            }
             e0 += a0;
             e1 += a1;
             e2 += a2;
         }
-        w0 += S->b[0];
-        w1 += S->b[1];
-        w2 += S->b[2];
+        w0 += b0;
+        w1 += b1;
+        w2 += b2;
     }
     return 0;
+#endif
 }
 
 /* Set-up of triangle v0 v1 v2 for rows from the strip's first on (lazy:
@@ -927,8 +1027,9 @@ static uint32_t fast_run_spans(const struct ras_ctx *rc, struct fstate *S)
     return total;
 }
 
-/* fast_rows(rc, S, 1) of a triangle fast_scan_flat draws. */
-static uint32_t fast_run_flat(const struct ras_ctx *rc, struct fstate *S)
+/* fast_rows(rc, S, 1) of a triangle fast_scan_flat draws; S is left at
+ * the next row only where kept (a set-up not kept is not read again). */
+__attribute__((noinline)) static uint32_t fast_run_flat(const struct ras_ctx *rc, struct fstate *S, const int kept)
 {
     const struct render_target *t = rc->cur.t;
     const int32_t r0 = S->row, r1 = S->last < (int32_t)t->y1 - 1 ? S->last : (int32_t)t->y1 - 1;
@@ -947,6 +1048,7 @@ static uint32_t fast_run_flat(const struct ras_ctx *rc, struct fstate *S)
         P.dz = S->dz;
         P.col = S->T.ft->c565;
         fast_scan_flat(&P);
+        if (!kept) return P.total;
         for (int i = 0; i < 3; i++) S->wb[i] = P.wb[i];
         S->wr[1] += (int32_t)rows * S->b[1];
         S->wr[2] += (int32_t)rows * S->b[2];
@@ -962,7 +1064,17 @@ static uint32_t fast_run_flat(const struct ras_ctx *rc, struct fstate *S)
 #define RAS_SCAN_FLAT_V6M 0
 #endif
 
-static uint32_t fast_run(const struct ras_ctx *rc, struct fstate *S)
+/* 1 when fast_run_flat draws S's rows. */
+static inline int fast_flat(const struct ras_ctx *rc, const struct fstate *S)
+{
+    return S->scan && S->z32 &&
+#if RENDER_HOST_OUTPUTS
+           rc->cur.t->rgb888 == NULL && rc->cur.t->written == NULL &&
+#endif
+           rc->depth_bytes == 2 && S->shade == SPAN_SHADE_NONE && S->src == SPAN_SRC_CONST;
+}
+
+static uint32_t fast_run(const struct ras_ctx *rc, struct fstate *S, const int kept)
 {
 #if RAS_SCAN_FLAT_V6M
     if (S->scan && S->z32
@@ -970,8 +1082,10 @@ static uint32_t fast_run(const struct ras_ctx *rc, struct fstate *S)
         && rc->cur.t->rgb888 == NULL && rc->cur.t->written == NULL
 #endif
     )
-        return rc->depth_bytes == 2 && S->shade == SPAN_SHADE_NONE && S->src == SPAN_SRC_CONST ? fast_run_flat(rc, S)
+        return rc->depth_bytes == 2 && S->shade == SPAN_SHADE_NONE && S->src == SPAN_SRC_CONST ? fast_run_flat(rc, S, kept)
                                                                                              : fast_run_spans(rc, S);
+#else
+    (void)kept;
 #endif
     return S->scan ? fast_rows(rc, S, 1) : fast_rows(rc, S, 0);
 }
@@ -985,7 +1099,12 @@ int32_t ras_fast_fill(struct ras_ctx *rc, const struct ras_sv *v0, const struct 
         if (keep) S->row = -1;
         return r;
     }
-    uint32_t drawn = fast_run(rc, S);
+#if RAS_SCAN_FLAT_V6M
+    /* (fast_run_flat called straight: none of fast_run's frame) */
+    uint32_t drawn = fast_flat(rc, S) ? fast_run_flat(rc, S, keep != NULL) : fast_run(rc, S, keep != NULL);
+#else
+    uint32_t drawn = fast_run(rc, S, keep != NULL);
+#endif
     if (keep && S->row <= S->last) {
         /* continued in the next strip: its own copy of the description */
         S->ftc = *ft;
@@ -998,6 +1117,6 @@ int ras_fast_resume(struct ras_ctx *rc, struct ras_fast_state *keep, uint32_t *d
 {
     struct fstate *S = (struct fstate *)(void *)keep;
     if (S->row != (int32_t)rc->cur.t->y0 || S->row > S->last) return 0;
-    *drawn = fast_run(rc, S);
+    *drawn = fast_run(rc, S, 1);
     return 1;
 }

@@ -212,8 +212,12 @@ static int pv_area_positive(const struct ras_pv *a, const struct ras_pv *b, cons
 }
 
 /* Triangle k of instance i (its frame facts kept), as part `part` of the
- * frame's triangles: the rows the strips visit it on. */
-static struct ras_range instance_triangle(struct ras_ctx *rc, const struct ras_instance *in, const struct ras_model *m,
+ * frame's triangles: the rows the strips visit it on. (Inline: one call a
+ * triangle less, half of them culled in a few instructions.) */
+#if defined(__GNUC__) || defined(__clang__)
+__attribute__((always_inline))
+#endif
+static inline struct ras_range instance_triangle(struct ras_ctx *rc, const struct ras_instance *in, const struct ras_model *m,
                                           const struct ras_inst *ri, uint32_t k, int part)
 {
     const struct ras_options *o = &rc->s->ras;

@@ -13,6 +13,30 @@ typedef uint32_t __attribute__((may_alias)) ras_word;
 #define RAS_HAVE_WORD 1
 #endif
 
+#ifdef RAS_HAVE_WORD
+/* Words w[0 .. 8 n8 - 1] = v (n8 > 0): on ARMv6-M by two four-register
+ * stores a loop, else eight word stores. Returns w + 8 n8. */
+static ras_word *ras_fill8(ras_word *w, size_t n8, uint32_t v)
+{
+#if defined(__ARM_ARCH_6M__)
+    register ras_word *p __asm__("r0") = w;
+    register uint32_t n __asm__("r1") = (uint32_t)n8;
+    register uint32_t a __asm__("r2") = v, b __asm__("r3") = v, c __asm__("r4") = v, d __asm__("r5") = v;
+    __asm__ volatile(".syntax unified\n"
+                     "1:\n\t stmia %[p]!, {%[a], %[b], %[c], %[d]}\n\t stmia %[p]!, {%[a], %[b], %[c], %[d]}\n\t"
+                     "subs %[n], #1\n\t bne 1b\n\t"
+                     ".syntax divided\n"
+                     : [p] "+l"(p), [n] "+l"(n)
+                     : [a] "l"(a), [b] "l"(b), [c] "l"(c), [d] "l"(d)
+                     : "cc", "memory");
+    return p;
+#else
+    for (; n8; n8--, w += 8) { w[0] = v; w[1] = v; w[2] = v; w[3] = v; w[4] = v; w[5] = v; w[6] = v; w[7] = v; }
+    return w;
+#endif
+}
+#endif
+
 /* n RGB565 pixels of value c: 32-bit stores, eight a loop. */
 static void ras_fill16(uint16_t *p, size_t n, uint16_t c)
 {
@@ -20,7 +44,8 @@ static void ras_fill16(uint16_t *p, size_t n, uint16_t c)
     if (n && ((uintptr_t)p & 2u)) { *p++ = c; n--; }
     ras_word *w = (ras_word *)(void *)p, v = (uint32_t)c * 0x00010001u;
     size_t nw = n / 2;
-    for (; nw >= 8; nw -= 8, w += 8) { w[0] = v; w[1] = v; w[2] = v; w[3] = v; w[4] = v; w[5] = v; w[6] = v; w[7] = v; }
+    if (nw >= 8) w = ras_fill8(w, nw / 8, v);
+    nw &= 7u;
     while (nw--) *w++ = v;
     if (n & 1u) p[n - 1] = c;
 #else
@@ -35,7 +60,8 @@ static void ras_fill_zero(uint8_t *p, size_t n)
     if (((uintptr_t)p & 3u) == 0) {
         ras_word *w = (ras_word *)(void *)p;
         size_t nw = n / 4;
-        for (; nw >= 8; nw -= 8, w += 8) { w[0] = 0; w[1] = 0; w[2] = 0; w[3] = 0; w[4] = 0; w[5] = 0; w[6] = 0; w[7] = 0; }
+        if (nw >= 8) w = ras_fill8(w, nw / 8, 0);
+        nw &= 7u;
         while (nw--) *w++ = 0;
         p = (uint8_t *)w;
         n &= 3u;
@@ -85,39 +111,47 @@ static void render_instance(struct ras_ctx *rc, uint16_t i, const struct render_
 /* The binned triangles that reach strip t, in drawing order, each through
  * RenderTriangle: the runs of the buckets begun up to the strip's last row
  * whose triangles reach down to it (ras_bins.reach), the triangles ended
- * above it skipped, merged by index (each run is in drawing order). */
+ * above it skipped, merged by index (each run is in drawing order). Each
+ * run's cursor rests on its next triangle that reaches the strip (skipped
+ * to once, when the cursor moves). */
 static void render_bins(struct ras_ctx *rc, const struct render_target *t)
 {
     const struct ras_bins *B = &rc->bins;
     const struct scene *s = rc->s;
     const struct ras_trows *rows = rc->tri_rows;
+    const uint16_t *order = B->order;
     const int32_t y0 = t->y0;
     const struct trows_strip tb = trows_strip(rc, t);
     uint16_t *cur = B->runs, *end = B->runs + B->nbuckets;
     uint32_t lastb = ((uint32_t)t->y1 - 1) / rc->strip_rows, n = 0;
     for (uint32_t b = 0; b <= lastb && b < B->nbuckets; b++)
         if (B->reach[b] >= y0 && B->start[b] < B->start[b + 1]) {
-            cur[n] = B->start[b];
-            end[n++] = B->start[b + 1];
+            uint32_t c = B->start[b], e = B->start[b + 1];
+            while (c < e && rows[order[c]].r1 < tb.y0) c++;
+            if (c == e) continue;
+            cur[n] = (uint16_t)c;
+            end[n++] = (uint16_t)e;
         }
     uint16_t i = 0;
     while (n) {
-        uint32_t best = UINT32_MAX, bj = 0;
-        for (uint32_t j = 0; j < n;) {
-            uint32_t c = cur[j];
-            while (c < end[j] && rows[B->order[c]].r1 < tb.y0) c++;
-            if (c == end[j]) { /* the run is done: the last one takes its place */
-                n--;
-                cur[j] = cur[n];
-                end[j] = end[n];
-                continue;
+        uint32_t bj = 0, best = order[cur[0]];
+        for (uint32_t j = 1; j < n; j++) {
+            const uint32_t h = order[cur[j]];
+            if (h < best) {
+                best = h;
+                bj = j;
             }
-            cur[j] = (uint16_t)c;
-            if (B->order[c] < best) { best = B->order[c]; bj = j; }
-            j++;
         }
-        if (best == UINT32_MAX) break;
-        cur[bj]++;
+        uint32_t c = cur[bj] + 1u;
+        const uint32_t e = end[bj];
+        while (c < e && rows[order[c]].r1 < tb.y0) c++;
+        if (c == e) { /* the run is done: the last one takes its place */
+            n--;
+            cur[bj] = cur[n];
+            end[bj] = end[n];
+        } else {
+            cur[bj] = (uint16_t)c;
+        }
         if (!trows_hit(rows[best], tb)) continue;
         while (i + 1 < s->ninstances && best >= rc->inst[i + 1].tbase) i++;
         const struct ras_instance *in = &s->instances[i];

@@ -106,6 +106,16 @@ static void instance_head(struct ras_ctx *rc, uint16_t i, uint16_t frame, uint32
     struct ras_box cb;
     ri->vfit = (uint8_t)(o->instance_transform && ras_box_transform(&ri->m, &ri->box, &cb));
     ri->vsplit = (uint8_t)(ri->vfit ? ras_fit_split(&ri->m, &ri->box) : 0);
+    /* the normals' transform likewise, for those within RAS_NORMAL_BOX */
+    {
+        struct ras_box nb, ncb;
+        nb.ok = 1;
+        for (int j = 0; j < 3; j++) {
+            nb.lo[j] = num_neg(RAS_NORMAL_BOX);
+            nb.hi[j] = RAS_NORMAL_BOX;
+        }
+        ri->nsplit = (uint8_t)(ras_box_transform(&ri->nmat, &nb, &ncb) ? ras_fit_split(&ri->nmat, &nb) : 0);
+    }
     ri->vin = (uint8_t)(ri->vfit && ri->visible && rc->def.pv &&
                         (ras_box_inside(rc, &cb) ||
                          ras_sphere_inside(&ri->m, &ri->box, &cb, rc->def.near_z, rc->def.side_x, rc->def.side_y)));

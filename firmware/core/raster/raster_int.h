@@ -37,6 +37,7 @@ struct ras_inst {
     uint8_t vfit;    /* its vertices to camera space without saturation (ras_mul_point_fit) */
     uint8_t vin;     /* every vertex inside every clipping plane (no ras_point_inside) */
     uint8_t vsplit;  /* vfit's products in 32 bits (ras_mul_point_fit_split's s), 0: none */
+    uint8_t nsplit;  /* the same for nmat over normals of RAS_NORMAL_BOX (ras_corner_normal), 0: none */
     struct ras_box box;  /* its model's coordinates (render_init) */
 };
 

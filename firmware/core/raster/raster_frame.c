@@ -341,6 +341,7 @@ int raster_frame_start(void *work, uint16_t frame)
         v = m4_mul_v4(l->type == LIGHT_POINT ? &rc->cam : &rc->cam_rot_t, v);
         rl->v = v3_make(v.x, v.y, v.z);
         rl->len = l->type == LIGHT_DIRECTIONAL ? v3_len(rl->v) : NUM_ZERO;
+        rl->div = num_divisor_make(rl->len);
     }
 
     /* 2D primitives and 3D lines: rows they may touch */

@@ -22,9 +22,9 @@
 #define RAS_CLIP_MAX 10  /* polygon corners after five planes: 3 + 5, plus slack */
 
 /* A light in camera space: direction toward the light (directional) or
- * position (point); len: a directional light's |v| (v3_len), made with v
- * once a frame. */
-struct ras_light { uint8_t type; num intensity; vec3 v; num len; };
+ * position (point); len: a directional light's |v| (v3_len), and div, len
+ * as a divisor, made with v once a frame. */
+struct ras_light { uint8_t type; num intensity; vec3 v; num len; struct num_divisor div; };
 
 /* Per-frame state of an instance. */
 struct ras_inst {

@@ -17,7 +17,7 @@ num ras_compute_illumination_vis(const struct ras_ctx *rc, vec3 p, vec3 n, num s
     num i = NUM_ZERO;
     if (!rc->book) n = v3_normalize(n);
     vec3 view = rc->book ? v3_sub(rc->cam_pos, p) : v3_neg(p);
-    num len_n = v3_len(n);
+    num len_n = rc->book ? v3_len(n) : v3_len_unit(n);
     for (uint16_t k = 0; k < s->nlights; k++) {
         const struct ras_light *l = &rc->lights[k];
         if (l->type == LIGHT_AMBIENT) { i = num_add(i, l->intensity); continue; }
@@ -32,8 +32,16 @@ num ras_compute_illumination_vis(const struct ras_ctx *rc, vec3 p, vec3 n, num s
          * wide, in the same operation order (the same bits as the narrow
          * forms wherever those fit) */
         if (s->ras.diffuse) {
-            const num len_l = l->type == LIGHT_DIRECTIONAL ? l->len : v3_len(L); /* (made once a frame) */
-            num cos_a = wnum_div(v3_dot_wide(L, n), wnum_mul(wnum_from_num(len_l), wnum_from_num(len_n)));
+            const wnum dot = v3_dot_wide(L, n);
+            num cos_a;
+            if (l->type == LIGHT_DIRECTIONAL && len_n == NUM_ONE && wnum_from_num(wnum_to_num(dot)) == dot) {
+                /* |L| |N| is |L|, and a numerator in num's range divides
+                 * as num_div: by the frame's divisor (the same bits) */
+                cos_a = num_div_by(wnum_to_num(dot), &l->div);
+            } else {
+                const num len_l = l->type == LIGHT_DIRECTIONAL ? l->len : v3_len(L); /* (made once a frame) */
+                cos_a = wnum_div(dot, wnum_mul(wnum_from_num(len_l), wnum_from_num(len_n)));
+            }
             if (cos_a > 0) i = num_add(i, num_mul(cos_a, li));
         }
         if (s->ras.specular && specular >= 0) {

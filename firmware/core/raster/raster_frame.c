@@ -120,6 +120,7 @@ static void instance_head(struct ras_ctx *rc, uint16_t i, uint16_t frame, uint32
                         (ras_box_inside(rc, &cb) ||
                          ras_sphere_inside(&ri->m, &ri->box, &cb, rc->def.near_z, rc->def.side_x, rc->def.side_y)));
     ri->vlit = (uint8_t)(rc->def.vert_shade && ras_vertex_lit(s, in));
+    if (rc->def.mlight) ras_model_light_frame(rc, in, ri, &rc->def.mlight[i]);
     if (ri->vlit)   /* no vertex lit yet this frame (by either part of the triangles) */
         for (uint32_t k = vb; k < vb + m->nverts; k++) {
             rc->def.vert_lit[k >> 3] &= (uint8_t)~(1u << (k & 7));

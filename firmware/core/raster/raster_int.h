@@ -26,6 +26,14 @@
  * as a divisor, made with v once a frame. */
 struct ras_light { uint8_t type; num intensity; vec3 v; num len; struct num_divisor div; };
 
+/* Model-space lighting of an instance this frame (light_space = model):
+ * on 1 where it applies (raster_shading.c); amb the ambient lights'
+ * intensities summed; w[k] a directional light's unit direction toward it
+ * in the model's space (the camera-space one turned back by the transpose
+ * of the instance's rotation nmat) times its intensity. */
+#define RAS_ML_LIGHTS 4
+struct ras_mlight { uint8_t on, n; num amb; vec3 w[RAS_ML_LIGHTS]; };
+
 /* Per-frame state of an instance. */
 struct ras_inst {
     mat4 m;          /* model -> camera space */
@@ -129,6 +137,7 @@ struct ras_def {
                                 by either part of a split preparation: a vertex's lighting
                                 depends on the vertex only, so both parts store the same
                                 bits, and nothing reads it before both have returned */
+    struct ras_mlight *mlight;   /* per instance (light_space = model), NULL: none */
     uint8_t *vert_lit;       /* one bit a vertex: vert_shade made this frame by part 0, */
     uint8_t *vert_lit1;      /* and by part 1 (raster_frame_triangles), in the sibling's
                                 work memory (each part writes only its own bits); NULL: no
@@ -489,6 +498,12 @@ int ras_box_inside(const struct ras_ctx *rc, const struct ras_box *b);
 /* ---- chapter 13: lighting (raster_shading.c) ---- */
 /* The book's ComputeIllumination (chapter 13). */
 num ras_compute_illumination(const struct ras_ctx *rc, vec3 p, vec3 n, num specular);
+/* light_space = model: instance in's model-space lights this frame (after
+ * its nmat and the frame's lights), and a vertex's lighting from its model
+ * normal n (unit length). */
+void ras_model_light_frame(const struct ras_ctx *rc, const struct ras_instance *in, const struct ras_inst *ri,
+                           struct ras_mlight *ml);
+num ras_model_light(const struct ras_mlight *ml, vec3 n);
 /* The same with light `shadow_k` (or none if < 0) scaled by vis in [0, 1]. */
 num ras_compute_illumination_vis(const struct ras_ctx *rc, vec3 p, vec3 n, num specular, int shadow_k, num vis);
 

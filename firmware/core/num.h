@@ -203,6 +203,8 @@ num  v3_dot(vec3 a, vec3 b);              /* summed wide, rounded once */
 wnum v3_dot_wide(vec3 a, vec3 b);
 vec3 v3_cross(vec3 a, vec3 b);
 num  v3_len(vec3 a);                      /* correctly rounded (exact sum of squares) */
+num  v3_len_unit(vec3 a);                 /* v3_len(a), the same bits; fast for a length
+                                           * near 1 (v3_normalize's results) */
 /* x / |v|, |v| from the exact sum of squares (never rounded to the format
  * on its own): fixed point multiplies by a reciprocal square root refined
  * to about 2^-27, so the result is within half an ulp plus 2^-26 of itself

@@ -340,6 +340,18 @@ static void edges_fixed(void)
     check(u.x > 0 && u.y < 0 && u.z < 0, "v3_normalize_extreme", "%d %d %d", u.x, u.y, u.z);
     check(v3_len(v3_make(3, 4, 0)) == 5 && v3_len(v3_make(1, 1, 1)) == 2, "v3_len_tiny_exact_rounding", "%d",
           v3_len(v3_make(1, 1, 1)));
+    /* v3_len_unit: v3_len's bits, for normalised vectors (its fast case),
+     * vectors a few ulps off unit length, and any */
+    long bad = 0;
+    for (long i = 0; i < 300000; i++) {
+        vec3 v = rnd_vec(1 + (int)(i % 31));
+        vec3 u = v3_normalize(v);
+        vec3 w = v3_make(u.x + (num)(rng() % 9) - 4, u.y + (num)(rng() % 9) - 4, u.z + (num)(rng() % 9) - 4);
+        bad += v3_len_unit(u) != v3_len(u);
+        bad += v3_len_unit(w) != v3_len(w);
+        bad += v3_len_unit(v) != v3_len(v);
+    }
+    check(bad == 0, "v3_len_unit_is_v3_len", "%ld differ", bad);
 }
 #else
 /* --------------------------------------------------------- floating point */

@@ -144,6 +144,12 @@ int bench_main(void)
         v.tex_fast = NULL;
         bad |= measure(&v, "bilinear_weights=coarse", "bilinear_weights=coarse");
     }
+    if (s->ras.shading == SHADE_GOURAUD && !s->ras.light_space) {
+        /* (the scene's normals as written: the cost of model-space lighting) */
+        v = *s;
+        v.ras.light_space = 1;
+        bad |= measure(&v, "light_space=model", "light_space=model");
+    }
     if (s->ras.shading == SHADE_PHONG) {
         v = *s;
         v.ras.lighting = RAS_LIGHT_EXACT;

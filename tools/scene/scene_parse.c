@@ -2371,6 +2371,16 @@ static void check_top(struct parser *p, const struct node *top, struct top *t, s
     if (b->nlines > MAX_LINES) fail_at(p, 1, 1, "more than %d 3D lines", MAX_LINES);
 }
 
+/* light_space = model: every model normal normalised (v3_normalize), as
+ * the renderer's model-space lighting takes them. */
+static void unit_normals(struct ras_model *m)
+{
+    if (!m->has_normals) return;
+    struct ras_triangle *t = (struct ras_triangle *)(uintptr_t)m->tris;
+    for (uint32_t i = 0; i < m->ntris; i++)
+        for (int k = 0; k < 3; k++) t[i].n[k] = v3_normalize(t[i].n[k]);
+}
+
 /* struct ras_model.vertex_normals: 1 when the corners of each vertex all
  * carry the same normal (bit for bit), so the renderer may light a vertex
  * once for all its corners. 0 when it cannot tell (no memory to look). */
@@ -2527,6 +2537,8 @@ static void read_scene(struct parser *p, const struct node *top, struct scene *s
     s->ncsg = (uint16_t)b.ncsg;
     s->csg = b.csg;
     s->nmodels = (uint16_t)b.nmodels;
+    if (s->ras.light_space) /* lit in model space: the normals of unit length */
+        for (int i = 0; i < b.nmodels; i++) unit_normals(&b.models[i]);
     for (int i = 0; i < b.nmodels; i++) mark_vertex_normals(&b.models[i]);
     s->models = b.models;
     s->ninstances = (uint16_t)b.ninstances;

@@ -257,6 +257,27 @@ num v3_len(vec3 a)
     return (num)l;
 }
 
+/* Each of v3_len's branches gives floor(sqrt(s) + 1/2), s = x^2 + y^2 +
+ * z^2 exactly (a floor of the scaled root rounded half up at 2^sh is
+ * floor((floor(2^sh sqrt(s)) + 2^(sh-1)) / 2^sh), the same). Near unit
+ * length, s = 2^2F + D with |D| <= 2^(F+3): the root is r = 2^F + d,
+ * |d| <= 5, the one with r^2 - r < s <= r^2 + r, i.e.
+ * 2^(F+1) d + d^2 - r < D <= 2^(F+1) d + d^2 + r (32-bit values), d stepped
+ * from D / 2^(F+1). A normalised vector's s lies within 2^(F+2) of 2^2F
+ * (each component within 0.51 ulp of the exact one). */
+num v3_len_unit(vec3 a)
+{
+    const uint64_t s = num_usq32(uabs32(a.x)) + num_usq32(uabs32(a.y)) + num_usq32(uabs32(a.z));
+    const uint64_t lim = (uint64_t)1 << (NUM_FRAC + 3);
+    const uint64_t off = s + lim - ((uint64_t)1 << (2 * NUM_FRAC));   /* D + lim (mod 2^64) */
+    if (off > 2 * lim) return v3_len(a);
+    const int32_t D = (int32_t)off - (int32_t)lim, one = (int32_t)1 << NUM_FRAC;
+    int32_t d = D >> (NUM_FRAC + 1);
+    while (D > d * (2 * one) + d * d + one + d) d++;
+    while (D <= d * (2 * one) + d * d - one - d) d--;
+    return (num)(one + d);
+}
+
 vec3 v3_normalize(vec3 a)
 {
     uint32_t u[3];

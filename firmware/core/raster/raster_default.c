@@ -187,11 +187,17 @@ int ras_tri_cache(struct ras_ctx *rc, const struct ras_instance *in, const struc
          * lighting; both parts store it in the same table (the same bits) */
         uint8_t *lit = part ? rc->def.vert_lit1 : rc->def.vert_lit;
         num *shade = rc->def.vert_shade;
+        const struct ras_mlight *ml = rc->def.mlight ? &rc->def.mlight[ri - rc->inst] : NULL;
+        if (ml && !ml->on) ml = NULL;
         for (int k = 0; k < 3; k++) {
             uint32_t v = ri->vbase + t->v[k];
             uint8_t bit = (uint8_t)(1u << (v & 7));
             if (lit[v >> 3] & bit) continue;
             lit[v >> 3] |= bit;
+            if (ml) {
+                shade[v] = ras_model_light(ml, t->n[k]);   /* (light_space = model) */
+                continue;
+            }
             const vec3 p = known ? ras_cam_vertex(rc, in, ri, m, t->v[k], vc) : V[k];
             shade[v] = ras_compute_illumination(rc, p, ras_corner_normal(ri, t->n[k]), in->specular);
         }

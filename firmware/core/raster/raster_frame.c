@@ -106,10 +106,21 @@ static void instance_head(struct ras_ctx *rc, uint16_t i, uint16_t frame, uint32
     struct ras_box cb;
     ri->vfit = (uint8_t)(o->instance_transform && ras_box_transform(&ri->m, &ri->box, &cb));
     ri->vsplit = (uint8_t)(ri->vfit ? ras_fit_split(&ri->m, &ri->box) : 0);
+    /* the normals' transform likewise, for those within RAS_NORMAL_BOX */
+    {
+        struct ras_box nb, ncb;
+        nb.ok = 1;
+        for (int j = 0; j < 3; j++) {
+            nb.lo[j] = num_neg(RAS_NORMAL_BOX);
+            nb.hi[j] = RAS_NORMAL_BOX;
+        }
+        ri->nsplit = (uint8_t)(ras_box_transform(&ri->nmat, &nb, &ncb) ? ras_fit_split(&ri->nmat, &nb) : 0);
+    }
     ri->vin = (uint8_t)(ri->vfit && ri->visible && rc->def.pv &&
                         (ras_box_inside(rc, &cb) ||
                          ras_sphere_inside(&ri->m, &ri->box, &cb, rc->def.near_z, rc->def.side_x, rc->def.side_y)));
     ri->vlit = (uint8_t)(rc->def.vert_shade && ras_vertex_lit(s, in));
+    if (rc->def.mlight) ras_model_light_frame(rc, in, ri, &rc->def.mlight[i]);
     if (ri->vlit)   /* no vertex lit yet this frame (by either part of the triangles) */
         for (uint32_t k = vb; k < vb + m->nverts; k++) {
             rc->def.vert_lit[k >> 3] &= (uint8_t)~(1u << (k & 7));
@@ -335,6 +346,7 @@ int raster_frame_start(void *work, uint16_t frame)
         v = m4_mul_v4(l->type == LIGHT_POINT ? &rc->cam : &rc->cam_rot_t, v);
         rl->v = v3_make(v.x, v.y, v.z);
         rl->len = l->type == LIGHT_DIRECTIONAL ? v3_len(rl->v) : NUM_ZERO;
+        rl->div = num_divisor_make(rl->len);
     }
 
     /* 2D primitives and 3D lines: rows they may touch */

@@ -22,9 +22,17 @@
 #define RAS_CLIP_MAX 10  /* polygon corners after five planes: 3 + 5, plus slack */
 
 /* A light in camera space: direction toward the light (directional) or
- * position (point); len: a directional light's |v| (v3_len), made with v
- * once a frame. */
-struct ras_light { uint8_t type; num intensity; vec3 v; num len; };
+ * position (point); len: a directional light's |v| (v3_len), and div, len
+ * as a divisor, made with v once a frame. */
+struct ras_light { uint8_t type; num intensity; vec3 v; num len; struct num_divisor div; };
+
+/* Model-space lighting of an instance this frame (light_space = model):
+ * on 1 where it applies (raster_shading.c); amb the ambient lights'
+ * intensities summed; w[k] a directional light's unit direction toward it
+ * in the model's space (the camera-space one turned back by the transpose
+ * of the instance's rotation nmat) times its intensity. */
+#define RAS_ML_LIGHTS 4
+struct ras_mlight { uint8_t on, n; num amb; vec3 w[RAS_ML_LIGHTS]; };
 
 /* Per-frame state of an instance. */
 struct ras_inst {
@@ -37,6 +45,7 @@ struct ras_inst {
     uint8_t vfit;    /* its vertices to camera space without saturation (ras_mul_point_fit) */
     uint8_t vin;     /* every vertex inside every clipping plane (no ras_point_inside) */
     uint8_t vsplit;  /* vfit's products in 32 bits (ras_mul_point_fit_split's s), 0: none */
+    uint8_t nsplit;  /* the same for nmat over normals of RAS_NORMAL_BOX (ras_corner_normal), 0: none */
     struct ras_box box;  /* its model's coordinates (render_init) */
 };
 
@@ -128,6 +137,7 @@ struct ras_def {
                                 by either part of a split preparation: a vertex's lighting
                                 depends on the vertex only, so both parts store the same
                                 bits, and nothing reads it before both have returned */
+    struct ras_mlight *mlight;   /* per instance (light_space = model), NULL: none */
     uint8_t *vert_lit;       /* one bit a vertex: vert_shade made this frame by part 0, */
     uint8_t *vert_lit1;      /* and by part 1 (raster_frame_triangles), in the sibling's
                                 work memory (each part writes only its own bits); NULL: no
@@ -488,6 +498,12 @@ int ras_box_inside(const struct ras_ctx *rc, const struct ras_box *b);
 /* ---- chapter 13: lighting (raster_shading.c) ---- */
 /* The book's ComputeIllumination (chapter 13). */
 num ras_compute_illumination(const struct ras_ctx *rc, vec3 p, vec3 n, num specular);
+/* light_space = model: instance in's model-space lights this frame (after
+ * its nmat and the frame's lights), and a vertex's lighting from its model
+ * normal n (unit length). */
+void ras_model_light_frame(const struct ras_ctx *rc, const struct ras_instance *in, const struct ras_inst *ri,
+                           struct ras_mlight *ml);
+num ras_model_light(const struct ras_mlight *ml, vec3 n);
 /* The same with light `shadow_k` (or none if < 0) scaled by vis in [0, 1]. */
 num ras_compute_illumination_vis(const struct ras_ctx *rc, vec3 p, vec3 n, num specular, int shadow_k, num vis);
 

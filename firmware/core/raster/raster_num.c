@@ -366,6 +366,15 @@ vec3 ras_mul_point_fit_split(const mat4 *m, vec3 p, int s)
     return r;
 }
 
+vec3 ras_mul_normal_split(const mat4 *m, vec3 n, int s)
+{
+    /* |c| <= B as one unsigned comparison of c + B with 2B */
+    const uint32_t b = (uint32_t)RAS_NORMAL_BOX;
+    if ((uint32_t)n.x + b <= 2u * b && (uint32_t)n.y + b <= 2u * b && (uint32_t)n.z + b <= 2u * b)
+        return ras_mul_point_fit_split(m, n, s);
+    return ras_mul_point(m, n);
+}
+
 /* num_udiv64_32_pre(n, p, rem) for a divisor below 2^30 (p->s >= 2): its
  * estimate q is at most 3 below the quotient, so the remainder n - q d
  * lies below 4 d < 2^32 and is its low word, n's low word less q d modulo
@@ -599,6 +608,12 @@ vec3 ras_mul_point_fit_split(const mat4 *m, vec3 p, int s)
 {
     (void)s;
     return m4_mul_point(m, p);
+}
+
+vec3 ras_mul_normal_split(const mat4 *m, vec3 n, int s)
+{
+    (void)s;
+    return m4_mul_point(m, n);
 }
 
 int ras_sphere_inside(const mat4 *m, const struct ras_box *b, const struct ras_box *cb, num near_z, num side_x,

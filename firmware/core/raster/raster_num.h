@@ -92,6 +92,12 @@ int ras_fit_split(const mat4 *m, const struct ras_box *b);
  * split s > 0 for: the same bits, each coordinate split once at bit s and
  * each rounded product from two 32-bit products. */
 vec3 ras_mul_point_fit_split(const mat4 *m, vec3 p, int s);
+/* A normal's transform: s = ras_fit_split(m, b) > 0 for the box b of
+ * every component within +-RAS_NORMAL_BOX, which ras_box_transform
+ * accepted with m. ras_mul_point(m, n)'s bits: ras_mul_point_fit_split's
+ * where n lies in that box (a model's unit normals), else its own. */
+#define RAS_NORMAL_BOX NUM_C(2.0)
+vec3 ras_mul_normal_split(const mat4 *m, vec3 n, int s);
 /* 1 when ras_mul_point_fit(m, p) of every point p of model box b (whose
  * camera-space range cb ras_box_transform gave) passes every clipping
  * plane's test (ras_point_inside: z >= near_z, |x| <= side_x z, |y| <=

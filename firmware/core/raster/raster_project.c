@@ -129,5 +129,5 @@ num ras_scale_canvas(const struct ras_ctx *rc, num v)
 /* A model-space corner normal in camera space (the instance's rotations). */
 vec3 ras_corner_normal(const struct ras_inst *ri, vec3 n)
 {
-    return ras_mul_point(&ri->nmat, n);
+    return ri->nsplit ? ras_mul_normal_split(&ri->nmat, n, ri->nsplit) : ras_mul_point(&ri->nmat, n);
 }

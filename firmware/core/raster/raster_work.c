@@ -251,11 +251,14 @@ static int carve(const struct scene *s, uint16_t w, uint16_t h, uint16_t strip_r
     void *shade = work_take(c, (caches & 1) ? sizeof(num) * 3 * ntris : 0);
     void *vshade = work_take(c, (caches & 2) ? sizeof(num) * nverts : 0);
     void *vlit = work_take(c, (caches & 2) ? (nverts + 7) / 8 : 0);
+    const int mlight = (caches & 2) && s->ras.light_space;
+    void *ml = work_take(c, mlight ? sizeof(struct ras_mlight) * s->ninstances : 0);
     rc->def.pv = frame_cache(s) ? pv : NULL;
     rc->def.tri_flags = tflags ? flags : NULL;
     rc->def.tri_shade = (caches & 1) ? shade : NULL;
     rc->def.vert_shade = (caches & 2) ? vshade : NULL;
     rc->def.vert_lit = (caches & 2) ? vlit : NULL;
+    rc->def.mlight = mlight ? ml : NULL;
     int bins = bins_on(s, ntris);
     rc->bins.on = (uint8_t)bins;
     rc->bins.nbuckets = bins_count(bins, h, strip_rows);

@@ -33,8 +33,9 @@
 #else
 #define SPAN_LIGHT (li >> 8)
 #endif
-/* persp_at's loop unrolled (measured: not for a lit texture, short of registers) */
-#define SPAN_UNROLL (SPAN_SHADE != SPAN_SHADE_LI || SPAN_SRC == SPAN_SRC_CONST)
+/* persp_at's loop unrolled (measured: not for a lit texture, short of registers;
+ * not for Phong's attributes, its code in fast memory) */
+#define SPAN_UNROLL (SPAN_NA <= 3 && (SPAN_SHADE != SPAN_SHADE_LI || SPAN_SRC == SPAN_SRC_CONST))
 
 /* the board's loops in fast memory; the host's variants never run there */
 #if SPAN_HOST

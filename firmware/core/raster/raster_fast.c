@@ -54,7 +54,7 @@ static int persp_attr(struct fpersp *p, int j, int32_t c0, int32_t c1, int32_t c
     while ((m >> sh) >= (1u << 14)) sh++;
     if (sh > 16) return 0;
     p->at[j].a0 = c0;
-    p->at[j].sh = sh;
+    p->at[j].rs = 16 - sh;
     p->at[j].d1 = e1 >= 0 ? e1 >> sh : -(int32_t)(m1 >> sh);
     p->at[j].d2 = e2 >= 0 ? e2 >> sh : -(int32_t)(m2 >> sh);
     return 1;

@@ -61,7 +61,7 @@ struct fpersp {               /* (the scalars first: small offsets for ARMv6-M l
     struct {
         int32_t a0;          /* corner 0's value in the span format, |a0| < 2^30 */
         int32_t d1, d2;      /* (corner 1 - corner 0), (corner 2 - corner 0) >> sh: < 2^14 */
-        int32_t sh;          /* <= 16 */
+        int32_t rs;          /* 16 - sh, sh <= 16 */
     } at[RAS_FAST_NA];       /* (per attribute: the first ones at small offsets) */
 };
 

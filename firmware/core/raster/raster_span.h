@@ -33,6 +33,9 @@
 #else
 #define SPAN_LIGHT (li >> 8)
 #endif
+/* persp_at's loop unrolled (measured: not for a lit texture, short of registers;
+ * not for Phong's attributes, its code in fast memory) */
+#define SPAN_UNROLL (SPAN_NA <= 3 && (SPAN_SHADE != SPAN_SHADE_LI || SPAN_SRC == SPAN_SRC_CONST))
 
 /* the board's loops in fast memory; the host's variants never run there */
 #if SPAN_HOST
@@ -60,7 +63,7 @@ RAS_HOT static uint32_t SPAN_NAME(const struct ftri *T, const struct frow *R)
     const uint16_t col = T->ft->c565;
 #else
     int32_t w1 = R->w1, w2 = R->w2, cur[SPAN_NA], nxt[SPAN_NA];
-    persp_at(&T->pp, SPAN_NA, w1, w2, cur);
+    persp_at(&T->pp, SPAN_NA, w1, w2, cur, SPAN_UNROLL);
     const int32_t seg = T->seg;
 #endif
 #if SPAN_SRC == SPAN_SRC_CONST && (SPAN_SHADE == SPAN_SHADE_LI || SPAN_SHADE == SPAN_SHADE_PHONG)
@@ -104,7 +107,7 @@ RAS_HOT static uint32_t SPAN_NAME(const struct ftri *T, const struct frow *R)
             m = seg;
             w1 += T->sa1;
             w2 += T->sa2;
-            persp_at(&T->pp, SPAN_NA, w1, w2, nxt);
+            persp_at(&T->pp, SPAN_NA, w1, w2, nxt, SPAN_UNROLL);
 #if SPAN_SRC == SPAN_SRC_TEXBL || SPAN_SRC == SPAN_SRC_TEXBW
             span_clamp_uv(nxt + SPAN_A_UV, umax, vmax);
 #endif
@@ -113,7 +116,7 @@ RAS_HOT static uint32_t SPAN_NAME(const struct ftri *T, const struct frow *R)
             int32_t k = n - 1;
             w1 += k * T->a1;
             w2 += k * T->a2;
-            persp_at(&T->pp, SPAN_NA, w1, w2, nxt);
+            persp_at(&T->pp, SPAN_NA, w1, w2, nxt, SPAN_UNROLL);
 #if SPAN_SRC == SPAN_SRC_TEXBL || SPAN_SRC == SPAN_SRC_TEXBW
             span_clamp_uv(nxt + SPAN_A_UV, umax, vmax);
 #endif
@@ -419,3 +422,4 @@ RAS_HOT static uint32_t SPAN_NAME(const struct ftri *T, const struct frow *R)
 #undef SPAN_A_SH
 #undef SPAN_NA
 #undef SPAN_LIGHT
+#undef SPAN_UNROLL

@@ -164,8 +164,9 @@ static uint32_t rcp30(uint32_t s)
     return (uint32_t)(r0 + asr32(r0 * asr32(e, 7), 23));
 }
 
-/* The first na attributes at a pixel with edge values w1, w2. */
-static inline void persp_at(const struct fpersp *p, int na, int32_t w1, int32_t w2, int32_t *out)
+/* The first na attributes at a pixel with edge values w1, w2 (unroll a
+ * constant: the attributes' loop unrolled). */
+static inline void persp_at(const struct fpersp *p, int na, int32_t w1, int32_t w2, int32_t *out, int unroll)
 {
     uint32_t b1 = (uint32_t)w1 >> p->t, b2 = (uint32_t)w2 >> p->t;
     uint32_t b0 = p->area_t - b1 - b2;       /* >= (w0 >> t) >= 0 */
@@ -184,8 +185,14 @@ static inline void persp_at(const struct fpersp *p, int na, int32_t w1, int32_t 
         q1 = (int32_t)((P1 * R) >> 14);      /* Q16; P*R <= 2^31 */
         q2 = (int32_t)((P2 * R) >> 14);
     }
-    for (int j = 0; j < na; j++)
-        out[j] = p->at[j].a0 + asr32(q1 * p->at[j].d1 + q2 * p->at[j].d2, 16 - p->at[j].sh);
+    /* (na a constant of the loop; unrolled where that measured faster) */
+    if (unroll) {
+#if defined(__GNUC__)
+#pragma GCC unroll 8
+#endif
+        for (int j = 0; j < na; j++) out[j] = p->at[j].a0 + asr32(q1 * p->at[j].d1 + q2 * p->at[j].d2, p->at[j].rs);
+    } else
+        for (int j = 0; j < na; j++) out[j] = p->at[j].a0 + asr32(q1 * p->at[j].d1 + q2 * p->at[j].d2, p->at[j].rs);
 }
 
 /* floor(x r / 2^16) for 0 < r <= 2^16 (fast_inv_tab's), in 32-bit

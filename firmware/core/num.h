@@ -214,6 +214,8 @@ num  v3_div_len(num x, vec3 v);
 vec3 v3_normalize(vec3 a);                /* <= 0.51 ulp per component for any non-zero
                                            * input, tiny ones included (pre-scaled);
                                            * zero vector stays zero */
+vec3 v3_normalize_unit(vec3 a);           /* v3_normalize(a), the same bits; fast for a
+                                           * length near 1 (a unit normal turned) */
 vec3 m3_mul_v3(const mat3 *m, vec3 v);
 mat3 m3_mul(const mat3 *a, const mat3 *b);
 mat3 m3_transpose(const mat3 *a);

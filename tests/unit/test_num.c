@@ -352,6 +352,23 @@ static void edges_fixed(void)
         bad += v3_len_unit(v) != v3_len(v);
     }
     check(bad == 0, "v3_len_unit_is_v3_len", "%ld differ", bad);
+    /* v3_normalize_unit: v3_normalize's bits, for vectors near unit length
+     * (up to 2^-11 off, its fast case) and any */
+    bad = 0;
+    for (long i = 0; i < 300000; i++) {
+        vec3 v = rnd_vec(1 + (int)(i % 31));
+        vec3 u = v3_normalize(v);
+        const int es = NUM_FRAC - 12 - (int)(i % 8);
+        const int32_t e = (int32_t)1 << (es > 0 ? es : 0);
+        vec3 w = v3_make(u.x + (num)(rng() % (uint64_t)(2 * e + 1)) - e, u.y + (num)(rng() % (uint64_t)(2 * e + 1)) - e,
+                         u.z + (num)(rng() % (uint64_t)(2 * e + 1)) - e);
+        vec3 a = v3_normalize_unit(u), b = v3_normalize_unit(w), c = v3_normalize_unit(v);
+        vec3 a0 = v3_normalize(u), b0 = v3_normalize(w), c0 = v3_normalize(v);
+        bad += a.x != a0.x || a.y != a0.y || a.z != a0.z;
+        bad += b.x != b0.x || b.y != b0.y || b.z != b0.z;
+        bad += c.x != c0.x || c.y != c0.y || c.z != c0.z;
+    }
+    check(bad == 0, "v3_normalize_unit_is_v3_normalize", "%ld differ", bad);
 }
 #else
 /* --------------------------------------------------------- floating point */

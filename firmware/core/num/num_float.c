@@ -182,6 +182,7 @@ uint8_t num_chan_byte(num c)
 
 num v3_len(vec3 a) { return num_sqrt(v3_dot(a, a)); }
 num v3_len_unit(vec3 a) { return v3_len(a); }
+vec3 v3_normalize_unit(vec3 a) { return v3_normalize(a); }
 
 num v3_div_len(num x, vec3 v) { return num_div(x, v3_len(v)); }
 

@@ -278,6 +278,78 @@ num v3_len_unit(vec3 a)
     return (num)(one + d);
 }
 
+/* v3_normalize(a)'s bits for a of length near 1 (a model's unit normal
+ * turned): with S = |a|^2 exactly, D = S - 2^2F, and v3_normalize's
+ * pre-scale 2^sh making its sum of squares s = 4^sh S, where T = 2^A,
+ * A = F + sh, is 2^29 or 2^30 (the root's scale):
+ *   L = round(sqrt(s)) = T + m, the m with 2Tm + m^2 - T - m < 4^sh D <=
+ *     2Tm + m^2 + T + m, i.e. m^2 - m - T < 2^sh E <= m^2 + m + T with
+ *     E = 2^sh D - 2^(F+1) m, stepped from m = floor(D / 2^(F+1-sh)) less
+ *     m^2 / 2^(A+1);
+ *   R = floor(2^60 / L) = 2^(60-A) - m 2^c + j, c = 60 - 2A: (T + m)
+ *     (2^(60-A) - m 2^c) = 2^60 - m^2 2^c, so j = floor(m^2 2^c / L),
+ *     from (m^2 2^c) / 2^A (at least j) stepped down by the remainder;
+ *   the components from R as v3_normalize's.
+ * No square root and no reciprocal; where |D| < 2^min(2F-10, 30) and
+ * F + 1 > sh, else v3_normalize itself. test_num compares the two. */
+vec3 v3_normalize_unit(vec3 a)
+{
+    const uint32_t n[3] = { uabs32(a.x), uabs32(a.y), uabs32(a.z) };
+    uint32_t mx = n[0] > n[1] ? n[0] : n[1];
+    if (n[2] > mx) mx = n[2];
+    if (mx == 0 || mx >= (1u << 29)) return v3_normalize(a);
+    const int sh = num_clz32(mx) - 2, A = NUM_FRAC + sh;
+    const uint64_t S = num_usq32(n[0]) + num_usq32(n[1]) + num_usq32(n[2]);
+    const int lb = 2 * NUM_FRAC - 10 < 30 ? 2 * NUM_FRAC - 10 : 30;   /* |D| < 2^lb: |a| within 2^-11 of 1 */
+    const uint64_t off = S + ((uint64_t)1 << lb) - ((uint64_t)1 << (2 * NUM_FRAC));   /* D + 2^lb */
+    const int k = NUM_FRAC + 1 - sh;                      /* (F + 1 - A + F: >= 1 for F >= 15) */
+    if ((A != 29 && A != 30) || k < 1 || off >= ((uint64_t)1 << (lb + 1))) return v3_normalize(a);
+    const int32_t D = (int32_t)off - (1 << lb);
+    int32_t m = D >> k;
+    int32_t E = (int32_t)((uint32_t)(D - (int32_t)((uint32_t)m << k)) << sh);   /* in [0, 2^(F+1)) */
+    /* the second-order term: m less m^2 / 2^(A+1) (|m| < 2^(A-11), so
+     * that is below 2^(A-23)), the rest a step or two */
+    const uint64_t mm = num_usq32(uabs32(m));
+    const int32_t dm = (int32_t)((uint32_t)(mm >> 32) << (31 - A) | (uint32_t)mm >> (A + 1));
+    m -= dm;
+    E += (int32_t)((uint32_t)dm << (NUM_FRAC + 1));
+    const uint32_t T = 1u << A;
+    for (;;) {
+        const int64_t e = num_smul32(E, 1 << sh), m2 = (int64_t)num_usq32(uabs32(m));
+        if (e > m2 + m + T) {
+            m++;
+            E -= 1 << (NUM_FRAC + 1);
+        } else if (e <= m2 - m - (int64_t)T) {
+            m--;
+            E += 1 << (NUM_FRAC + 1);
+        } else {
+            break;
+        }
+    }
+    const uint32_t L = T + (uint32_t)m;
+    const int c = 60 - 2 * A;                             /* 0 or 2 */
+    const uint64_t m2c = num_usq32(uabs32(m) << (c >> 1));   /* m^2 2^c */
+    uint32_t j = (uint32_t)(m2c >> 32) << (32 - A) | (uint32_t)m2c >> A;
+    int64_t r = (int64_t)m2c - (int64_t)num_umul32(j, L);
+    while (r < 0) {
+        j--;
+        r += L;
+    }
+    while (r >= (int64_t)L) {
+        j++;
+        r -= L;
+    }
+    const uint32_t R = (1u << (60 - A)) - ((uint32_t)m << c) + j;
+    num cc[3];
+    const num *in[3] = { &a.x, &a.y, &a.z };
+    for (int i = 0; i < 3; i++) {
+        const uint64_t q = num_umul32(n[i] << sh, R);
+        const num v = (num)((q + ((uint64_t)1 << (59 - NUM_FRAC))) >> (60 - NUM_FRAC));
+        cc[i] = *in[i] < 0 ? -v : v;
+    }
+    return v3_make(cc[0], cc[1], cc[2]);
+}
+
 vec3 v3_normalize(vec3 a)
 {
     uint32_t u[3];

@@ -57,7 +57,7 @@ num ras_compute_illumination_vis(const struct ras_ctx *rc, vec3 p, vec3 n, num s
 {
     const struct scene *s = rc->s;
     num i = NUM_ZERO;
-    if (!rc->book) n = v3_normalize(n);
+    if (!rc->book) n = v3_normalize_unit(n);   /* (v3_normalize's bits; fast near unit length) */
     vec3 view = rc->book ? v3_sub(rc->cam_pos, p) : v3_neg(p);
     num len_n = rc->book ? v3_len(n) : v3_len_unit(n);
     for (uint16_t k = 0; k < s->nlights; k++) {

@@ -758,9 +758,6 @@ static inline int rt_near_c_ok(wnum c, wnum dot)
 #endif
 }
 
-/* 1 only when the near root n / q of the quadratic with b = bx (2F bits),
- * a = aq, c and |CO|^2 passing rt_near_c_ok is certainly above limit (0 in
- * floating modes). */
 /* n and aq within rt_near_beyond's range (0 in floating modes): checked
  * once a frame for the camera's spheres (rt_obj_cache.near_ok), aq there
  * for every exact primary direction (x vh, y vh, d h) at once by
@@ -817,6 +814,9 @@ RT_ALWAYS_INLINE int rt_near_beyond_na(int64_t bx, wnum n, num limit)
 #endif
 }
 
+/* 1 only when the near root n / q of the quadratic with b = bx (2F bits),
+ * a = aq, c and |CO|^2 passing rt_near_c_ok is certainly above limit (0 in
+ * floating modes). */
 static inline int rt_near_beyond(int64_t bx, wnum n, wnum aq, num limit)
 {
     return rt_near_na_ok(n, aq) && rt_near_beyond_na(bx, n, limit);

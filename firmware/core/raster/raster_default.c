@@ -145,36 +145,16 @@ static vec3 tri_centre(const vec3 V[3])
 
 /* Per frame: the facts of triangle gi kept for every strip, and the
  * lighting of its Gouraud corners or flat face (the values
- * default_render_triangle would compute in each strip); 1 when it is live. */
+ * default_render_triangle would compute in each strip); 1 when it is live.
+ * known: the caller found it a front face from its three projected corners
+ * (ras_front_known; only where no face normals are wanted, below). */
 int ras_tri_cache(struct ras_ctx *rc, const struct ras_instance *in, const struct ras_inst *ri,
-                      const struct ras_model *m, const struct ras_triangle *t, uint32_t gi, int part)
+                  const struct ras_model *m, const struct ras_triangle *t, uint32_t gi, int part, int known)
 {
     vec3 V[3], N[3];
-    int front = 0, known = 0;
+    int front = 0;
     struct ras_vcache *vc = part ? rc->def.vcache1 : rc->def.vcache;
     const int want_n = !ri->vlit && rc->def.tri_shade;   /* (normals only for the lighting kept below) */
-    const struct ras_pv *pv = rc->def.pv + ri->vbase;
-    const struct ras_pv *a = &pv[t->v[0]], *b = &pv[t->v[1]], *c = &pv[t->v[2]];
-    if (ras_pv_in(a) && ras_pv_in(b) && ras_pv_in(c)) {
-        /* |differences| < 2^16 (ras_pv): the products in 32 x 32 -> 64 bits;
-         * all four in [-2^14, 2^14) (a triangle of at most 1,024 pixels
-         * a side at 4 sub-pixel bits), the same in 32 bits */
-        const int32_t d1x = b->sx - a->sx, d1y = b->sy - a->sy, d2x = c->sx - a->sx, d2y = c->sy - a->sy;
-        const int64_t area = (((uint32_t)d1x + 0x4000u) | ((uint32_t)d1y + 0x4000u) | ((uint32_t)d2x + 0x4000u) |
-                              ((uint32_t)d2y + 0x4000u)) < 0x8000u
-                                 ? (int64_t)(d1x * d2y - d1y * d2x)
-                                 : num_smul32(d1x, d2y) - num_smul32(d1y, d2x);
-        /* three projected corners whose area on screen, in the order a
-         * front face is drawn, is not positive: whichever way the triangle
-         * faces, it draws nothing (a back face is culled, a front face
-         * covers no pixel), so its facing need not be computed */
-        if (rc->s->ras.backface_cull && area <= 0) return ras_tri_flag(rc, gi, 0);
-        /* one whose area is clear of every rounding is a front face by the
-         * camera-space test too (raster_num.h): that test is not made */
-        const int32_t L = (d1x < 0 ? -d1x : d1x) + (d1y < 0 ? -d1y : d1y) + (d2x < 0 ? -d2x : d2x) +
-                          (d2y < 0 ? -d2y : d2y);
-        known = !want_n && ras_front_known(&rc->def.front, area - 2 * (int64_t)L - 24, a->iz, b->iz, c->iz);
-    }
     if (known) {
         front = 1;
     } else if (!tri_facts(rc, in, ri, m, t, V, N, &front, want_n, vc)) {

@@ -209,19 +209,6 @@ static void instance_vertices(const struct ras_ctx *rc, uint16_t i, uint32_t k0,
     }
 }
 
-/* 1 when three projected corners' doubled area on screen, in the order a
- * front face is drawn, is positive: ras_tri_cache's area (|differences| <
- * 2^16; all four in [-2^14, 2^14), the products in 32 bits). A triangle
- * whose area is not positive draws nothing whichever way it faces. */
-static int pv_area_positive(const struct ras_pv *a, const struct ras_pv *b, const struct ras_pv *c)
-{
-    const int32_t d1x = b->sx - a->sx, d1y = b->sy - a->sy, d2x = c->sx - a->sx, d2y = c->sy - a->sy;
-    if ((((uint32_t)d1x + 0x4000u) | ((uint32_t)d1y + 0x4000u) | ((uint32_t)d2x + 0x4000u) |
-         ((uint32_t)d2y + 0x4000u)) < 0x8000u)
-        return d1x * d2y > d1y * d2x;
-    return num_smul32(d1x, d2y) > num_smul32(d1y, d2x);
-}
-
 /* Triangle k of instance i (its frame facts kept), as part `part` of the
  * frame's triangles: the rows the strips visit it on. (Inline: one call a
  * triangle less, half of them culled in a few instructions.) */
@@ -254,28 +241,49 @@ static inline struct ras_range instance_triangle(struct ras_ctx *rc, const struc
         rc->part_drawn[part]++;
     } else if (FW_FEATURE_RAS_DEFAULT) {
         const struct ras_pv *pa = &rc->def.pv[vb + t->v[0]], *pb = &rc->def.pv[vb + t->v[1]], *pc = &rc->def.pv[vb + t->v[2]];
-        const int inside = ras_pv_in(pa) && ras_pv_in(pb) && ras_pv_in(pc);
-        if (inside && o->backface_cull && !pv_area_positive(pa, pb, pc)) {
-            /* ras_tri_cache's first test: culled, whatever its rows */
-            (void)ras_tri_flag(rc, tb + k, 0);
-            return r;
-        }
-        const int32_t lo = inside ? min3(pa->sy, pb->sy, pc->sy) : 0, hi = inside ? max3(pa->sy, pb->sy, pc->sy) : 0;
-        if (inside) {
+        int known = 0;
+        if (ras_pv_in(pa) && ras_pv_in(pb) && ras_pv_in(pc)) {
+            /* the doubled area on screen, in the order a front face is
+             * drawn: |differences| < 2^16 (ras_pv), the products in 32 x 32
+             * -> 64 bits; all four in [-2^14, 2^14) (a triangle of at most
+             * 1,024 pixels a side at 4 sub-pixel bits), the same in 32 bits */
+            const int32_t d1x = pb->sx - pa->sx, d1y = pb->sy - pa->sy, d2x = pc->sx - pa->sx, d2y = pc->sy - pa->sy;
+            const int64_t area = (((uint32_t)d1x + 0x4000u) | ((uint32_t)d1y + 0x4000u) | ((uint32_t)d2x + 0x4000u) |
+                                  ((uint32_t)d2y + 0x4000u)) < 0x8000u
+                                     ? (int64_t)(d1x * d2y - d1y * d2x)
+                                     : num_smul32(d1x, d2y) - num_smul32(d1y, d2x);
+            /* not positive: whichever way the triangle faces, it draws
+             * nothing (a back face is culled, a front face covers no
+             * pixel), so its facing need not be computed */
+            if (o->backface_cull && area <= 0) {
+                (void)ras_tri_flag(rc, tb + k, 0);
+                return r;
+            }
+            const int32_t lo = min3(pa->sy, pb->sy, pc->sy), hi = max3(pa->sy, pb->sy, pc->sy);
             r = sub_rows(rc, lo, hi);
-        } else {
-            struct ras_vcache *vc = part ? rc->def.vcache1 : rc->def.vcache;
-            r = default_tri_rows(rc, ras_cam_vertex(rc, in, ri, m, t->v[0], vc),
-                                   ras_cam_vertex(rc, in, ri, m, t->v[1], vc),
-                                   ras_cam_vertex(rc, in, ri, m, t->v[2], vc));
+            if (r.r0 > r.r1) return r;
+            /* one whose area is clear of every rounding is a front face by
+             * the camera-space test too (raster_num.h): that test is not
+             * made, nor anything else where no lighting is kept */
+            const int32_t L = (d1x < 0 ? -d1x : d1x) + (d1y < 0 ? -d1y : d1y) + (d2x < 0 ? -d2x : d2x) +
+                              (d2y < 0 ? -d2y : d2y);
+            known = (ri->vlit || !rc->def.tri_shade) &&
+                    ras_front_known(&rc->def.front, area - 2 * (int64_t)L - 24, pa->iz, pb->iz, pc->iz);
+            if (!(known && !ri->vlit && !rc->def.tri_shade ? ras_tri_flag(rc, tb + k, RAS_TRI_LIVE | RAS_TRI_FRONT)
+                                                            : ras_tri_cache(rc, in, ri, m, t, tb + k, part, known)))
+                return no_rows();
+            rc->part_drawn[part]++;
+            /* the strips visit it only on the rows of the pixel centres it spans */
+            return rc->bins.on ? centre_rows(rc, lo, hi) : r;
         }
+        struct ras_vcache *vc = part ? rc->def.vcache1 : rc->def.vcache;
+        r = default_tri_rows(rc, ras_cam_vertex(rc, in, ri, m, t->v[0], vc), ras_cam_vertex(rc, in, ri, m, t->v[1], vc),
+                             ras_cam_vertex(rc, in, ri, m, t->v[2], vc));
         if (r.r0 > r.r1) return r;
         /* what the strips visit: live triangles only (a culled or
-         * degenerate one draws nothing), and those of three projected
-         * corners only on the rows of the pixel centres they span */
-        if (!ras_tri_cache(rc, in, ri, m, t, tb + k, part)) return no_rows();
+         * degenerate one draws nothing) */
+        if (!ras_tri_cache(rc, in, ri, m, t, tb + k, part, 0)) return no_rows();
         rc->part_drawn[part]++;
-        if (rc->bins.on && inside) r = centre_rows(rc, lo, hi);
     }
     return r;
 }

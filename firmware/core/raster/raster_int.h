@@ -362,9 +362,10 @@ int ras_default_lean(const struct ras_ctx *rc);
 int ras_vertex_lit(const struct scene *s, const struct ras_instance *in);
 /* Per frame: the facts of the default path's triangle gi kept for every
  * strip, and the lighting of its Gouraud corners or flat face; 1 when it
- * is live. */
+ * is live. known: a front face known from its projected corners
+ * (ras_front_known, made by the caller). */
 int ras_tri_cache(struct ras_ctx *rc, const struct ras_instance *in, const struct ras_inst *ri,
-                   const struct ras_model *m, const struct ras_triangle *t, uint32_t gi, int part);
+                  const struct ras_model *m, const struct ras_triangle *t, uint32_t gi, int part, int known);
 
 /* ---- the default path's exact fill (raster_triangles.c) ---- */
 struct ras_sv {

@@ -216,7 +216,7 @@ static void instance_vertices(const struct ras_ctx *rc, uint16_t i, uint32_t k0,
 __attribute__((always_inline))
 #endif
 static inline struct ras_range instance_triangle(struct ras_ctx *rc, const struct ras_instance *in, const struct ras_model *m,
-                                          const struct ras_inst *ri, uint32_t k, int part)
+                                          const struct ras_inst *ri, uint32_t k, int part, int64_t fbound)
 {
     const struct ras_options *o = &rc->s->ras;
     const uint32_t vb = ri->vbase, tb = ri->tbase;
@@ -267,8 +267,9 @@ static inline struct ras_range instance_triangle(struct ras_ctx *rc, const struc
              * made, nor anything else where no lighting is kept */
             const int32_t L = (d1x < 0 ? -d1x : d1x) + (d1y < 0 ? -d1y : d1y) + (d2x < 0 ? -d2x : d2x) +
                               (d2y < 0 ? -d2y : d2y);
+            const int64_t margin = area - 2 * (int64_t)L - 24;
             known = (ri->vlit || !rc->def.tri_shade) &&
-                    ras_front_known(&rc->def.front, area - 2 * (int64_t)L - 24, pa->iz, pb->iz, pc->iz);
+                    (margin > fbound || ras_front_known(&rc->def.front, margin, pa->iz, pb->iz, pc->iz));
             if (!(known && !ri->vlit && !rc->def.tri_shade ? ras_tri_flag(rc, tb + k, RAS_TRI_LIVE | RAS_TRI_FRONT)
                                                             : ras_tri_cache(rc, in, ri, m, t, tb + k, part, known)))
                 return no_rows();
@@ -299,7 +300,23 @@ static void instance_triangles(struct ras_ctx *rc, uint16_t i, uint32_t k0, uint
     const uint32_t tb = ri->tbase;
     struct ras_trows *rows = rc->tri_rows;
     rc->part_in[part] += k1 - k0;
-    for (uint32_t k = k0; k < k1; k++) rows[tb + k] = ras_trows_pack(rc, instance_triangle(rc, in, m, ri, k, part));
+    /* ras_front_known's bound at the instance's nearest projected vertex,
+     * where every one of them passes its iz_min: a margin above it is one
+     * above every triangle's own bound (INT64_MAX: none) */
+    int64_t fbound = INT64_MAX;
+    if (FW_FEATURE_RAS_DEFAULT && rc->def.pv && rc->def.front.g && ri->visible) {
+        const struct ras_pv *pv = rc->def.pv + ri->vbase;
+        num lo = NUM_MAX, hi = 0;
+        for (uint32_t v = 0; v < m->nverts; v++)
+            if (ras_pv_in(&pv[v])) {
+                if (pv[v].iz < lo) lo = pv[v].iz;
+                if (pv[v].iz > hi) hi = pv[v].iz;
+            }
+        const uint64_t b = lo <= hi && lo >= rc->def.front.iz_min ? ras_front_bound(&rc->def.front, hi, hi) : 0;
+        if (b) fbound = (int64_t)b;
+    }
+    for (uint32_t k = k0; k < k1; k++)
+        rows[tb + k] = ras_trows_pack(rc, instance_triangle(rc, in, m, ri, k, part, fbound));
 }
 
 /* The live triangles of the frame sorted by the bucket of their first row

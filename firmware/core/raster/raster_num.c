@@ -506,17 +506,23 @@ void ras_front_init(struct ras_front *fb, num unproj, num near_z, int32_t w, int
     fb->g = (uint32_t)g;
 }
 
-int ras_front_known(const struct ras_front *fb, int64_t margin, num iza, num izb, num izc)
+uint64_t ras_front_bound(const struct ras_front *fb, num izb, num izc)
 {
-    if (fb->g == 0 || margin <= 0 || iza < fb->iz_min || izb < fb->iz_min || izc < fb->iz_min) return 0;
+    if (fb->g == 0 || izb < fb->iz_min || izc < fb->iz_min) return 0;
     /* g (iz_b + 1)(iz_c + 1) 2^-2F, rounded up (F = fb->frac = NUM_FRAC:
      * shifts by a constant, and the product's high word tested first) */
     const uint64_t pp = num_umul32((uint32_t)izb + 1u, (uint32_t)izc + 1u);
     if ((uint32_t)(pp >> 32) >> (NUM_FRAC - 1)) return 0; /* p >= 2^31 */
     const uint32_t p = (uint32_t)(pp >> NUM_FRAC) + 1u;
     if (p >> 31) return 0;
-    const uint64_t bound = (num_umul32(p, fb->g) >> NUM_FRAC) + 1;
-    return (uint64_t)margin > bound;
+    return (num_umul32(p, fb->g) >> NUM_FRAC) + 1;
+}
+
+int ras_front_known(const struct ras_front *fb, int64_t margin, num iza, num izb, num izc)
+{
+    if (margin <= 0 || iza < fb->iz_min) return 0;
+    const uint64_t bound = ras_front_bound(fb, izb, izc);
+    return bound != 0 && (uint64_t)margin > bound;
 }
 
 int32_t ras_num_to_fix(num a, int32_t scale)
@@ -659,6 +665,12 @@ void ras_front_init(struct ras_front *fb, num unproj, num near_z, int32_t w, int
     fb->g = 0;
     fb->iz_min = 0;
     fb->frac = 0;
+}
+
+uint64_t ras_front_bound(const struct ras_front *fb, num izb, num izc)
+{
+    (void)fb; (void)izb; (void)izc;
+    return 0;
 }
 
 int ras_front_known(const struct ras_front *fb, int64_t margin, num iza, num izb, num izc)

@@ -138,6 +138,10 @@ void ras_front_init(struct ras_front *fb, num unproj, num near_z, int32_t w, int
 /* 1 when margin = A - 2L - 24 (> 0) passes the bound for corners at 1/z
  * iza, izb, izc; 0 when unknown. */
 int ras_front_known(const struct ras_front *fb, int64_t margin, num iza, num izb, num izc);
+/* The bound ras_front_known tests the margin against for corners at 1/z
+ * izb, izc (> 0, non-decreasing in each, where each is at least iz_min);
+ * 0: none (never known). */
+uint64_t ras_front_bound(const struct ras_front *fb, num izb, num izc);
 
 /* round(a * scale) as an integer (halves away from zero), saturated to
  * +-(2^31 - 1): a num turned into the integer formats of the fast span

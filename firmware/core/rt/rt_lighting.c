@@ -37,7 +37,6 @@ static int in_shadow(struct rt_state *rt, struct rt_ray *ray, num t_max, uint16_
     return 1;
 }
 
-#if NUM_MODE == NUM_MODE_FIXED
 /* 1 only when the shadow ray from P along d certainly meets its own sphere
  * obj (P on it, n = (P - C) / r as rt_hit_normal rounds it, unflipped) at
  * the root it takes leaving it, t1 = 2b/a' (rt_intersect.c), with eps < t1
@@ -52,8 +51,9 @@ static int in_shadow(struct rt_state *rt, struct rt_ray *ray, num t_max, uint16_
  * A (1 +- 1.74 u), and the computed t1 within u of tau. So 2 r (m - e1) >=
  * (eps + 16 u) A and 2 r (m + e1) <= (1 - 2^-10) A (m = -ndl) put t1 in
  * (eps, 1). In integers: raw values, products at 2F fraction bits. */
-static RT_NOINLINE int self_shadowed(const struct rt_state *rt, int16_t obj, num ndl, const vec3 *d)
+RT_NOINLINE int rt_self_shadowed(const struct rt_state *rt, int16_t obj, num ndl, const vec3 *d)
 {
+#if NUM_MODE == NUM_MODE_FIXED
     uint32_t r = (uint32_t)rt->s->objects[obj].radius, eps = (uint32_t)rt->s->rt.epsilon;
     uint32_t m = 0u - (uint32_t)ndl;   /* ndl < 0 */
     uint32_t ax = rt_uabs(d->x), ay = rt_uabs(d->y), az = rt_uabs(d->z);
@@ -67,8 +67,11 @@ static RT_NOINLINE int self_shadowed(const struct rt_state *rt, int16_t obj, num
     eps += 16u;
     uint64_t rhs = num_umul32(eps, (uint32_t)a16) + ((uint64_t)(eps * (uint32_t)(a16 >> 32)) << 32);
     return 2 * num_umul32(r, m - e1) >= rhs;
-}
+#else
+    (void)rt; (void)obj; (void)ndl; (void)d;
+    return 0;
 #endif
+}
 
 num rt_compute_lighting(struct rt_state *rt, vec3 p, vec3 n, int unit_normal, vec3 v, num s, num s_zero,
                         int16_t origin, uint8_t *shadow_bits)
@@ -121,9 +124,9 @@ num rt_compute_lighting(struct rt_state *rt, vec3 p, vec3 n, int unit_normal, ve
 #if NUM_MODE == NUM_MODE_FIXED
             /* a light behind the surface of a sphere (no CSG: a plain one,
              * its normal unflipped): its own sphere shadows it
-             * (self_shadowed), without the ray */
+             * (rt_self_shadowed), without the ray */
             if (n_dot_l < 0 && small && unit_normal && rt->shortcuts && sc->ncsg == 0 &&
-                self_shadowed(rt, origin, n_dot_l, &l)) {
+                rt_self_shadowed(rt, origin, n_dot_l, &l)) {
                 rt->n.shadow_rays++;
                 if (shadow_bits && k < 7) *shadow_bits |= (uint8_t)(1u << k);
                 continue;

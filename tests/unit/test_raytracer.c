@@ -703,6 +703,81 @@ static void test_coarse_rejection(void)
     check(dbad == 0, "num_div_by_equals_num_div", "%ld of 60000 differ", dbad);
 }
 
+/* rt_self_shadowed: a shadow ray it claims blocked by its own sphere is:
+ * the sphere's exact test (the root 2b/a' of a ray leaving it) puts a hit in
+ * (epsilon, 1). Radii 0.01 .. 5000 (powers of two among them), points on
+ * the sphere as the normal rounds them, lights behind the surface from
+ * grazing to straight through, near and far, and epsilon 0 .. 0.1. */
+static void test_self_shadow(void)
+{
+    static struct rt_object o[1];
+    struct scene *s = rt_book(5);
+    struct scene save = *s;
+    s->objects = o;
+    s->nobjects = 1;
+    s->ncsg = 0;
+    s->rt.formulation = 2;
+    struct probe_ctx p;
+    uint32_t st = 777;
+    long wrong = 0, claims = 0, tried = 0;
+    static const double epss[] = { 0.0, 0.001, 0.01, 0.1 };
+    for (int round = 0; round < 80; round++) {
+        double r = round % 5 == 0 ? ldexp(1.0, (int)(urand(&st) * 12) - 4)
+                                  : exp(log(0.01) + urand(&st) * (log(5000.0) - log(0.01)));
+        double c[3];
+        for (int i = 0; i < 3; i++) c[i] = (urand(&st) - 0.5) * 40;
+        memset(o, 0, sizeof o);
+        o[0].shape = RT_SPHERE;
+        o[0].center = v3_make(num_from_double(c[0]), num_from_double(c[1]), num_from_double(c[2]));
+        o[0].radius = num_from_double(r);
+        s->rt.epsilon = num_from_double(epss[round % 4]);
+        struct rt_state *rt = open_state(&p, s);
+        if (!rt) break;
+        for (int k = 0; k < 1000; k++) {
+            double u[3], len = 0;
+            for (int i = 0; i < 3; i++) { u[i] = urand(&st) - 0.5; len += u[i] * u[i]; }
+            len = sqrt(len);
+            vec3 P = v3_make(num_from_double(c[0] + u[0] / len * r), num_from_double(c[1] + u[1] / len * r),
+                             num_from_double(c[2] + u[2] / len * r));
+            struct rt_hit hit;
+            memset(&hit, 0, sizeof hit);
+            vec3 n = rt_hit_normal(rt, &hit, &P);
+            /* inward along -u by cos, across by sin: from grazing to straight in */
+            double cs = k % 4 == 0 ? urand(&st) * 0.01 : urand(&st), w[3], wl = 0;
+            for (int i = 0; i < 3; i++) { w[i] = urand(&st) - 0.5; }
+            double wu = (w[0] * u[0] + w[1] * u[1] + w[2] * u[2]) / len;
+            for (int i = 0; i < 3; i++) { w[i] -= wu * u[i] / len; wl += w[i] * w[i]; }
+            wl = sqrt(wl) + 1e-12;
+            double dist = k % 2 ? r * exp((urand(&st) - 0.3) * 6) : exp((urand(&st) - 0.5) * 10);
+            if (dist > 9000) dist = 9000;
+            vec3 d = v3_make(num_from_double((-cs * u[0] / len + sqrt(1 - cs * cs) * w[0] / wl) * dist),
+                             num_from_double((-cs * u[1] / len + sqrt(1 - cs * cs) * w[1] / wl) * dist),
+                             num_from_double((-cs * u[2] / len + sqrt(1 - cs * cs) * w[2] / wl) * dist));
+            if (k % 7 == 0) d = v3_make(num_from_int(1), num_from_int(4), num_from_int(4));   /* a directional light */
+#if NUM_MODE == NUM_MODE_FIXED
+            if (!rt_v3_within(n, NUM_FRAC + 1) || !rt_v3_within(d, 26)) continue;
+            num ndl = rt_v3_integral(d) ? rt_dot_small_int(n, d) : rt_dot_small(n, d);
+#else
+            num ndl = v3_dot(n, d);
+#endif
+            tried++;
+            if (ndl >= 0 || !rt_self_shadowed(rt, 0, ndl, &d)) continue;
+            claims++;
+            struct rt_ray ray = rt_make_ray(P, d, 0, 0);
+            num t1, t2;
+            rt->shortcuts = 0;
+            int got = rt_intersect_ray_sphere(rt, 0, &ray, &t1, &t2, NULL);
+            rt->shortcuts = 1;
+            if (!got || !(s->rt.epsilon < t1 && t1 < NUM_ONE)) wrong++;
+        }
+        free(p.work);
+    }
+    *s = save;
+    int fixed = strcmp(NUM_NAME, "fixed") == 0;
+    check(wrong == 0 && (!fixed || claims * 5 > tried), "self_shadow_only_certain",
+          "%ld of %ld claims wrong (%ld tried)", wrong, claims, tried);
+}
+
 /* Chapter 5 scene renders in every mode; its glass sphere shows the plane through it. */
 /* The format analysis's bound on where hit points lie
  * (scene_format_hit_reach) against every hit point the render shades
@@ -846,6 +921,7 @@ int main(int argc, char **argv)
     test_shortcuts_same_image();
     test_tiles_same_image();
     test_coarse_rejection();
+    test_self_shadow();
 #if NUM_MODE == NUM_MODE_FIXED
     test_row_intervals();
 #endif

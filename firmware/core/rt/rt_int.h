@@ -320,6 +320,12 @@ RT_ALWAYS_INLINE vec3 rt_reflect(vec3 n, vec3 l, num ndl, int small)
     return v3_sub(v3_scale(n, num_add(ndl, ndl)), l);
 }
 
+/* rt_lighting.c, fixed point: 1 only when a shadow ray from P along d (|d_i|
+ * <= 2^26 raw) certainly meets its own plain sphere obj at the root 2b/a'
+ * in (epsilon, 1), for the normal n = rt_hit_normal's (|n_i| <= 2^(F+1))
+ * and ndl = n.d as the lighting rounds it, ndl < 0. */
+int rt_self_shadowed(const struct rt_state *rt, int16_t obj, num ndl, const vec3 *d);
+
 /* rt_lighting.c, the book's ComputeLighting: intensity at P (normal N, view V = -D) for specular exponent s
  * (unit_normal: N is a sphere's (P - C) / r, of length 1 up to rounding)
  * (s_zero: rt_powi_zero_below of it, or -1).

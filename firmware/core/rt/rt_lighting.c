@@ -37,6 +37,42 @@ static int in_shadow(struct rt_state *rt, struct rt_ray *ray, num t_max, uint16_
     return 1;
 }
 
+/* 1 only when the shadow ray from P along d certainly meets its own sphere
+ * obj (P on it, n = (P - C) / r as rt_hit_normal rounds it, unflipped) at
+ * the root it takes leaving it, t1 = 2b/a' (rt_intersect.c), with eps < t1
+ * < 1: a hit in (eps, t_max) for a point light (t_max = 1) and a
+ * directional one, so the light is shadowed whatever else lies in the way.
+ * For |n_i| <= 2^(F+1), |d_i| <= 2^26 raw and u = 2^-F: ndl = n.d as the
+ * lighting rounds it (within 1.5 u), P - C = r n + r h (|h_i| <= 0.51 u),
+ * d' = d 2^-k + e (|e_i| <= u/2, 0 for k = 0; A = d.d >= 1/2 so k >= 0 and
+ * 2^k <= 1.0001 sqrt(A)), so the root's exact value tau = 2 (B - CO.e 2^k)
+ * / (A + 2 d.e 2^k + e.e 4^k), B = -CO.d, lies within 2 r u e1 (e1 = 3 +
+ * floor(4 |d|_1) ulps: 1.5 + 0.51 |d|_1 + 3.01 |d|_1) of 2 r (-ndl) over
+ * A (1 +- 1.74 u), and the computed t1 within u of tau. So 2 r (m - e1) >=
+ * (eps + 16 u) A and 2 r (m + e1) <= (1 - 2^-10) A (m = -ndl) put t1 in
+ * (eps, 1). In integers: raw values, products at 2F fraction bits. */
+RT_NOINLINE int rt_self_shadowed(const struct rt_state *rt, int16_t obj, num ndl, const vec3 *d)
+{
+#if NUM_MODE == NUM_MODE_FIXED
+    uint32_t r = (uint32_t)rt->s->objects[obj].radius, eps = (uint32_t)rt->s->rt.epsilon;
+    uint32_t m = 0u - (uint32_t)ndl;   /* ndl < 0 */
+    uint32_t ax = rt_uabs(d->x), ay = rt_uabs(d->y), az = rt_uabs(d->z);
+    uint32_t e1 = 3u + ((ax + ay + az) >> (NUM_FRAC - 2));
+    /* m > e1, r > 0 and eps in [0, 2^20) */
+    if (m <= e1 || (int32_t)r <= 0 || eps >= (1u << 20)) return 0;
+    uint64_t a = rt_usq32(ax) + rt_usq32(ay) + rt_usq32(az);   /* A, below 2^54 */
+    if (a < ((uint64_t)1 << (2 * NUM_FRAC - 1))) return 0;    /* A < 1/2: k may be negative */
+    if (2 * num_umul32(r, m + e1) > a - (a >> 10) - 1) return 0;
+    uint64_t a16 = (a >> NUM_FRAC) + 1;                       /* >= A / 2^F, below 2^(54-F) + 1 */
+    eps += 16u;
+    uint64_t rhs = num_umul32(eps, (uint32_t)a16) + ((uint64_t)(eps * (uint32_t)(a16 >> 32)) << 32);
+    return 2 * num_umul32(r, m - e1) >= rhs;
+#else
+    (void)rt; (void)obj; (void)ndl; (void)d;
+    return 0;
+#endif
+}
+
 num rt_compute_lighting(struct rt_state *rt, vec3 p, vec3 n, int unit_normal, vec3 v, num s, num s_zero,
                         int16_t origin, uint8_t *shadow_bits)
 {
@@ -75,7 +111,27 @@ num rt_compute_lighting(struct rt_state *rt, vec3 p, vec3 n, int unit_normal, ve
             l = lt->v;
             t_max = NUM_MAX;
         }
+#if NUM_MODE == NUM_MODE_FIXED
+        /* |N_i| <= 2^(F+1), |L_i| <= 2^26: |N.L| <= 3 * 2^27, |2 N.L| <= 3 * 2^28 */
+        int small = n_small && rt_v3_within(l, 26);
+        /* a directional light's integer components: one product each */
+        num n_dot_l = !small ? v3_dot(n, l) : directional && rt_v3_integral(l) ? rt_dot_small_int(n, l)
+                                                                                : rt_dot_small(n, l);
+#else
+        num n_dot_l = v3_dot(n, l);
+#endif
         if (o->shadows) {
+#if NUM_MODE == NUM_MODE_FIXED
+            /* a light behind the surface of a sphere (no CSG: a plain one,
+             * its normal unflipped): its own sphere shadows it
+             * (rt_self_shadowed), without the ray */
+            if (n_dot_l < 0 && small && unit_normal && rt->shortcuts && sc->ncsg == 0 &&
+                rt_self_shadowed(rt, origin, n_dot_l, &l)) {
+                rt->n.shadow_rays++;
+                if (shadow_bits && k < 7) *shadow_bits |= (uint8_t)(1u << k);
+                continue;
+            }
+#endif
             struct rt_ray sr, *srp = &sr;
             if (directional && rt->shortcuts) {
                 /* the light's own ray (rt_light_constants), the direction's
@@ -93,15 +149,6 @@ num rt_compute_lighting(struct rt_state *rt, vec3 p, vec3 n, int unit_normal, ve
                 continue;
             }
         }
-#if NUM_MODE == NUM_MODE_FIXED
-        /* |N_i| <= 2^(F+1), |L_i| <= 2^26: |N.L| <= 3 * 2^27, |2 N.L| <= 3 * 2^28 */
-        int small = n_small && rt_v3_within(l, 26);
-        /* a directional light's integer components: one product each */
-        num n_dot_l = !small ? v3_dot(n, l) : directional && rt_v3_integral(l) ? rt_dot_small_int(n, l)
-                                                                                : rt_dot_small(n, l);
-#else
-        num n_dot_l = v3_dot(n, l);
-#endif
         if (o->diffuse && n_dot_l > 0) {
             num in = rt_mul_weight(n_dot_l, lt->intensity), q;
             if (unit_n < 0) unit_n = rt_near_unit_err(n, &unit_e);

@@ -97,7 +97,11 @@ FW_STRIP_ROWS  ?= 8
 # as const data). A change takes effect on scenes compiled after it (remove
 # $(FW_OUT)/scenes/ to compile them again).
 FW_FAST_TEXTURES ?= ram
-$(FW_OUT)/scenes/%.c $(FW_OUT)/scenes/%.h: SCENEC_FLAGS = --fast-textures $(FW_FAST_TEXTURES)
+# Where fast Phong's specular tables are (scenec --spec-tables): flash
+# (scenec writes them as const data, the default) or ram (render_init makes
+# them in work memory); the same rule for a change.
+FW_SPEC_TABLES ?= flash
+$(FW_OUT)/scenes/%.c $(FW_OUT)/scenes/%.h: SCENEC_FLAGS = --fast-textures $(FW_FAST_TEXTURES) --spec-tables $(FW_SPEC_TABLES)
 fw_scene_id     = $(subst -,_,$(subst /,_,$(1)))
 fw_scene_h      = $(foreach n,$(1),$(FW_OUT)/scenes/$(call fw_scene_id,$(n))$(2).h)
 # once per scene of all the sets (book/raytracer-02 -> book_raytracer_02.c)

@@ -120,3 +120,25 @@ scene-fracs-report: $(BUILD)/host/tests/test_scene_fracs
 # docs/scene-format.md's option tables are generated from it
 # (tools/scene/options_doc.py --write docs/scene-format.md) and checked here.
 TESTS += tools/scene/options_doc.py:--check:docs/scene-format.md tools/scene/options_doc.py:--self-test
+
+# Fast Phong's specular tables scenec writes (--spec-tables flash) against
+# the core's own (tests/unit/test_spec_tables.c): each scene of
+# tests/data/spec/ compiled by scenec (identifier spec_scene), then linked
+# with the host core of every format it holds (the ones its tables are
+# written for): test_spec_tables_<scene>_<F>.
+SPEC_T      := $(BUILD)/tests/spec
+spec_mode    = $(if $(filter 16,$(1)),fixed,fixed$(1))
+SPEC_FRACS_exponents       := 12 13 14 15 16 17 18 19 20
+SPEC_FRACS_exponents-large := 12 13 14 15 16
+define SPEC_SCENE_RULE
+$(SPEC_T)/$(1)/spec_scene.c $(SPEC_T)/$(1)/spec_scene.h &: tests/data/spec/$(1).scene $(SCENEC)
+	@mkdir -p $(SPEC_T)/$(1)
+	$(Q)$(SCENEC) --size 64x64 --id spec_scene --spec-tables flash -o $(SPEC_T)/$(1)/spec_scene.c $$< \
+		>$(SPEC_T)/$(1)/spec_scene.log || { cat $(SPEC_T)/$(1)/spec_scene.log; exit 2; }
+endef
+$(foreach n,exponents exponents-large,$(eval $(call SPEC_SCENE_RULE,$(n))))
+$(foreach n,exponents exponents-large,$(foreach f,$(SPEC_FRACS_$(n)),$(call program,$(SPEC_T)/test_spec_tables_$(n)_$(f),\
+    $(call obj,host,$(call spec_mode,$(f)),tests/unit/test_spec_tables.c $(SPEC_T)/$(n)/spec_scene.c $(CORE_SRCS)),host)\
+    $(eval $(call obj,host,$(call spec_mode,$(f)),$(SPEC_T)/$(n)/spec_scene.c): $(SPEC_T)/$(n)/spec_scene.h)\
+    $(eval TESTS += $(SPEC_T)/test_spec_tables_$(n)_$(f))\
+    $(eval TEST_DEPS += $(SPEC_T)/test_spec_tables_$(n)_$(f))))

@@ -60,6 +60,15 @@ uint32_t raster_features(const struct scene *s);
 /* Work memory for this scene at this size with strips of strip_rows rows;
  * 0 for a scene it cannot lay out (an instance of a missing model). */
 size_t raster_work_size(const struct scene *s, uint16_t width, uint16_t height, uint16_t strip_rows);
+/* Fast Phong's specular exponents, one table each (at most
+ * RASTER_SPEC_MAX; more take the exact path), in table order: their count,
+ * and in exps (if not NULL) the exponents. 0 for a scene without fast Phong. */
+#define RASTER_SPEC_MAX 16
+uint16_t raster_spec_exponents(const struct scene *s, uint32_t exps[RASTER_SPEC_MAX]);
+/* Exponent e's specular table (257 entries of cos^e in Q14) and its index
+ * step and end: the ones render_init makes, which scenec writes as const
+ * data (struct scene's spec_tab, spec_step). */
+void raster_spec_table(uint16_t t[257], uint32_t e, uint32_t step[2]);
 /* Lays out the state in work (any alignment, work_size bytes). 0, or -1. */
 int raster_init(void *work, size_t work_size, const struct scene *s, uint16_t width, uint16_t height,
                 uint16_t strip_rows);

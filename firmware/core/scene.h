@@ -212,6 +212,14 @@ struct scene {
      * flash): RGB565 (nearest) or mip_fast_bilinear's words (bilinear),
      * mipmap.h; NULL (or no array): render_init makes them in work memory */
     const void *const *tex_fast;
+    /* fast Phong's specular tables made by scenec (--spec-tables flash) at
+     * the core's number format: nspec tables of 257 entries and their index
+     * step and end (raster_spec_table), one per exponent in the order
+     * raster_spec_exponents gives; spec_tab NULL, or nspec not that count:
+     * render_init makes them in work memory */
+    uint16_t nspec;
+    const uint16_t *spec_tab;
+    const uint32_t *spec_step;
     const struct prim2d *prims;
     const struct line3d *lines;
     struct ras_options ras;

@@ -58,6 +58,19 @@ for f in $(find firmware/scenes -name '*.scene' | sort); do
   fi
   frac=$(sed -n 's/.*num_frac=\([0-9]*\).*/\1/p' "$work/$id.log")
   host=$(sed -n 's/.*host_work=\([0-9]*\).*/\1/p' "$work/$id.log")
+  # fast Phong's specular tables in flash (scenec --spec-tables flash, the
+  # default): the probe's need less their copies, which this host's core
+  # counts as the target's (arrays of uint16_t and uint32_t): its work with
+  # them made in work memory (--spec-tables ram) less the work without
+  if grep -q '^scenec-summary .*features=[^ ]*RAS_FAST_PHONG' "$work/$id.log"; then
+    if "$scenec" --size 240x240 --strip-rows 16 --spec-tables ram -o "$work/${id}_ram.c" "$f" >"$work/${id}_ram.log" 2>&1
+    then
+      hr=$(sed -n 's/.*host_work=\([0-9]*\).*/\1/p' "$work/${id}_ram.log")
+      target=$((target - (hr - host)))
+    else
+      echo "FAIL scenec_spec_ram_$id: $(tail -n 3 "$work/${id}_ram.log")"
+    fi
+  fi
   est=$(sed -n 's/^scenec-summary .* flash=\([0-9]*\) .*/\1/p' "$work/$id.log")
   pairs="$pairs $f=$frac"
   echo "$f $id $frac" >>"$work/list"
@@ -240,6 +253,35 @@ for c in cube-textured:8192 cube-bilinear:34848; do
     echo "FAIL scenec_fast_textures_$n: $(tail -n 2 "$work/ff.log")"
   fi
 done
+# --spec-tables (flash by default): fast Phong's specular tables as const
+# data, one set per format the file may be compiled at (12 .. its own), that
+# much less work memory (257 uint16_t and 2 uint32_t a table: bench/phong has
+# one exponent, demo/spinning-crate two), one set more flash; ram writes none
+for c in bench/phong:1:20 demo/spinning-crate:2:19; do
+  n=${c%%:*} k=${c#*:}; k=${k%%:*} fr=${c##*:}
+  if "$scenec" --spec-tables ram -o "$work/sr.c" "firmware/scenes/$n.scene" >"$work/sr.log" 2>&1 &&
+     "$scenec" -o "$work/sf.c" "firmware/scenes/$n.scene" >"$work/sf.log" 2>&1; then
+    wr=$(sed -n 's/.* work=\([0-9]*\) .*/\1/p' "$work/sr.log") wf=$(sed -n 's/.* work=\([0-9]*\) .*/\1/p' "$work/sf.log")
+    flr=$(sed -n 's/.* flash=\([0-9]*\) .*/\1/p' "$work/sr.log") flf=$(sed -n 's/.* flash=\([0-9]*\) .*/\1/p' "$work/sf.log")
+    b=$((k * (257 * 2 + 2 * 4))) sets=$(grep -c '^#\(el\)\{0,1\}if NUM_MODE == NUM_MODE_FIXED && NUM_FRAC == ' "$work/sf.c")
+    if [ $((wr - wf)) -ge "$b" ] && [ $((wr - wf)) -le $((b + 8)) ] && [ $((flf - flr)) -eq "$b" ] &&
+       [ "$sets" -eq $((fr - 11)) ] && grep -q "^#define SCENE_SPEC_TABLES $k\$" "$work/sf.c" &&
+       ! grep -q 'spec_tab' "$work/sr.c"; then
+      echo "PASS scenec_spec_tables_$n ($k tables, $sets formats: work $wr -> $wf, flash $flr -> $flf)"
+    else
+      echo "FAIL scenec_spec_tables_$n: work $wr -> $wf, flash $flr -> $flf, $sets formats (want $b bytes moved, $((fr - 11)) formats)"
+    fi
+  else
+    echo "FAIL scenec_spec_tables_$n: $(tail -n 2 "$work/sf.log")"
+  fi
+done
+"$scenec" --spec-tables rom -o "$work/sx.c" firmware/scenes/bench/phong.scene >/dev/null 2>"$work/sx.err"
+rc=$?
+if [ "$rc" -eq 2 ] && grep -q "bad --spec-tables 'rom' (ram or flash)" "$work/sx.err"; then
+  echo "PASS scenec_spec_tables_bad"
+else
+  echo "FAIL scenec_spec_tables_bad: rc $rc $(cat "$work/sx.err")"
+fi
 "$scenec" --fast-textures rom -o "$work/fx.c" firmware/scenes/bench/cube-textured.scene >/dev/null 2>"$work/fx.err"
 rc=$?
 if [ "$rc" -eq 2 ] && grep -q "bad --fast-textures 'rom' (ram or flash)" "$work/fx.err"; then

@@ -170,6 +170,19 @@ static void set_tex_fast(void *scene, const void *const *marks)
     s->tex_fast = marks;
 }
 
+static uint16_t spec_exponents(const void *scene, uint32_t exps[RASTER_SPEC_MAX])
+{
+    return raster_spec_exponents(scene, exps);
+}
+
+static void set_spec_tables(void *scene, uint16_t nspec, const uint16_t *tab, const uint32_t *step)
+{
+    struct scene *s = scene;
+    s->nspec = tab ? nspec : 0;
+    s->spec_tab = tab;
+    s->spec_step = tab ? step : NULL;
+}
+
 static uint32_t shadow_rays(const struct render_ctx *ctx)
 {
     return ctx->scene->kind == SCENE_RAYTRACE ? rt_shadow_rays(ctx->work) : 0;
@@ -178,5 +191,6 @@ static uint32_t shadow_rays(const struct render_ctx *ctx)
 const struct core_api API = {
     NUM_NAME, load, parse_text, read_text, free_scene, info, work_size, init, render_begin_frame, render_strip,
     &num_saturations, API_FRAC, format, exact_methods, render_set_pass, set_fits, decision_probe, move_camera,
-    sibling_work_size, instance_facing, features, set_tex_fast, shadow_rays,
+    sibling_work_size, instance_facing, features, set_tex_fast, shadow_rays, spec_exponents, raster_spec_table,
+    set_spec_tables,
 };

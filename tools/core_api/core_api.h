@@ -13,6 +13,7 @@
 #include <stddef.h>
 #include <stdint.h>
 #include "render.h"
+#include "raster.h"
 #include "scene_format.h"
 
 struct scene_info {
@@ -112,6 +113,16 @@ struct core_api {
      * render_stats.rays counts the primary and reflected ones); 0 for a
      * rasterized scene. */
     uint32_t (*shadow_rays)(const struct render_ctx *ctx);
+    /* Fast Phong's specular tables (raster.h): a loaded scene's exponents in
+     * table order (their count; exps may be NULL), and exponent e's table as
+     * this core makes it (in fixed point the same bits as render_init's on
+     * any target at this NUM_FRAC). */
+    uint16_t (*spec_exponents)(const void *scene, uint32_t exps[RASTER_SPEC_MAX]);
+    void (*spec_table)(uint16_t t[257], uint32_t e, uint32_t step[2]);
+    /* Gives a loaded scene specular tables (struct scene's nspec, spec_tab,
+     * spec_step; scenec --spec-tables flash): render_work_size then leaves
+     * their copies out. NULL tab: none. The arrays stay the caller's. */
+    void (*set_spec_tables)(void *scene, uint16_t nspec, const uint16_t *tab, const uint32_t *step);
 };
 
 extern const struct core_api core_api_fixed, core_api_float, core_api_double;

@@ -43,6 +43,13 @@
  * (mipmap.h: RGB565 for nearest textures, mip_fast_bilinear's words for
  * bilinear ones) as const data too, which render_init then uses instead of
  * making them in work memory: less RAM, more flash (default ram).
+ * --spec-tables flash (the default) writes fast Phong's specular tables
+ * (raster.h's raster_spec_table, one per exponent) as const data, made by
+ * this program's fixed-point core of each NUM_FRAC the file may be compiled
+ * at (12 up to the scene's), the same bits render_init makes on the target:
+ * render_init of a fixed-point core then uses them instead of making them in
+ * work memory (float and double cores still make theirs: OUT.h adds that
+ * work for them).
  */
 #define _XOPEN_SOURCE 700   /* realpath */
 #include <errno.h>
@@ -135,6 +142,19 @@ static int layout_of_target;
 static size_t texture_bytes;    /* of which the textures' texels (every mip level) */
 static const char *outh_path;   /* OUT.h (NULL in the dry run) */
 static int fast_in_flash;       /* --fast-textures flash */
+static int spec_in_flash = 1;   /* --spec-tables flash (the default) */
+/* Fast Phong's specular tables per fixed-point format the scene may be
+ * compiled at (SCENE_FORMAT_FRAC_MIN up to its own): made by that format's
+ * core (make_spec_tables); none when the scene has no fast Phong, with
+ * --spec-tables ram, or when the formats disagree on the exponents. */
+static struct spec_set {
+    uint16_t n;
+    uint32_t exps[RASTER_SPEC_MAX];
+    uint16_t tab[RASTER_SPEC_MAX * 257];
+    uint32_t step[RASTER_SPEC_MAX * 2];
+} spec_sets[SCENE_FORMAT_FRAC_MAX - SCENE_FORMAT_FRAC_MIN + 1];
+static int spec_frac_max;       /* spec_sets[0 .. spec_frac_max - MIN]; below MIN: none */
+static size_t spec_copies;      /* the work the tables in flash save (work_sizes) */
 static int target_work_given;   /* the work size is the target's (--target-work) */
 static uint32_t scene_features; /* render_features of the scene (work_sizes) */
 
@@ -390,6 +410,30 @@ static void emit_textures(const struct scene *s)
     }
 }
 
+/* Fast Phong's specular tables (--spec-tables flash): those of the format
+ * the file is compiled at, one set per format; SCENE_SPEC_TABLES their count
+ * (none in float and double, whose cores make their own). */
+static void emit_spec_tables(void)
+{
+    if (spec_frac_max < SCENE_FORMAT_FRAC_MIN) return;
+    const struct spec_set *t0 = &spec_sets[0];
+    emit("/* fast Phong's specular tables, exponent%s", t0->n > 1 ? "s" : "");
+    for (int k = 0; k < t0->n; k++) emit(" %lu", (unsigned long)t0->exps[k]);
+    emit(" (raster_spec_table), at the core's\n   NUM_FRAC: render_init makes none */\n");
+    for (int f = SCENE_FORMAT_FRAC_MIN; f <= spec_frac_max; f++) {
+        const struct spec_set *t = &spec_sets[f - SCENE_FORMAT_FRAC_MIN];
+        emit("#%s NUM_MODE == NUM_MODE_FIXED && NUM_FRAC == %d\n", f == SCENE_FORMAT_FRAC_MIN ? "if" : "elif", f);
+        emit("#define SCENE_SPEC_TABLES %d\nstatic const uint16_t spec_tab[%d] = {", t->n, 257 * t->n);
+        for (int k = 0; k < 257 * t->n; k++) emit("%s%u,", k % 16 ? " " : "\n   ", (unsigned)t->tab[k]);
+        emit("\n};\nstatic const uint32_t spec_step[%d] = {", 2 * t->n);
+        for (int k = 0; k < 2 * t->n; k++) emit(" %lu,", (unsigned long)t->step[k]);
+        emit(" };\n");
+    }
+    emit("#endif\n\n");
+    /* one set is compiled in: uint16_t and uint32_t take 2 and 4 bytes on every target */
+    flash_bytes += (size_t)t0->n * (257 * 2 + 2 * 4);
+}
+
 static void emit_model_data(const struct ras_model *md, int m)
 {
     emit("static const vec3 model%d_verts[%d] = {\n", m, md->nverts);
@@ -510,6 +554,9 @@ static void emit_scene_struct(const struct scene *s, const char *id, unsigned fi
          s->nmodels ? "models" : "0", s->ninstances ? "instances" : "0", s->ntextures ? "textures" : "0",
          s->nprims ? "prims" : "0", s->nlines ? "lines" : "0");
     if (any_fast_tex(s)) emit("    .tex_fast = tex_fast,\n");
+    if (spec_frac_max >= SCENE_FORMAT_FRAC_MIN)
+        emit("#ifdef SCENE_SPEC_TABLES\n    .nspec = SCENE_SPEC_TABLES, .spec_tab = spec_tab, .spec_step = spec_step,\n"
+             "#endif\n");
     emit_members("    .ras = { ", ras_members, sizeof ras_members / sizeof ras_members[0], &s->ras);
     emit("};\n\n");
     flash_bytes += LSIZE(scene) + strlen(s->name) + 1;
@@ -536,6 +583,7 @@ static void emit_scene(const struct scene *s, const char *id, const char *src, i
     emit_textures(s);
     emit_models(s);
     emit_primitives(s);
+    emit_spec_tables();
     emit_scene_struct(s, id, fits);
     emit("/* render_work_size(scene, %d, %d, %d) of the fixed-point core%s */\n", width, height, strip,
          target_work_given ? " on the target" : " (this host's: an upper bound)");
@@ -724,6 +772,10 @@ static const char help_text[] =
     "  --fast-textures ram|flash     where the fast path's texels are: made in work memory\n"
     "                                by render_init (ram, the default) or written here as\n"
     "                                const data (flash)\n"
+    "  --spec-tables ram|flash       where fast Phong's specular tables are: made in work\n"
+    "                                memory by render_init (ram) or written here as const\n"
+    "                                data, one set per fixed-point format (flash, the\n"
+    "                                default)\n"
     "  --min-psnr DB                 choose the scene's methods for this accuracy (PSNR\n"
     "                                against double's exact render, 1..200): the cheapest on\n"
     "                                --target (m0plus, m4f or rp2040; default: the scene's\n"
@@ -829,11 +881,11 @@ static int parse_args(int argc, char **argv, struct args *a)
     static const int all_fracs[] = { 20, 19, 18, 17, 16, 15, 14, 13, 12 };
     static const char *const with_arg[] = { "--size", "--strip-rows", "--fracs", "--id", "--target-work",
                                             "--deps", "--target", "--ram-budget", "--flash-budget", "--min-psnr",
-                                            "--chosen-scene", "--fast-textures", "-o", NULL };
+                                            "--chosen-scene", "--fast-textures", "--spec-tables", "-o", NULL };
     static const char *const all[] = { "--size", "--strip-rows", "--fracs", "--id", "--target-work",
                                        "--deps", "--target", "--ram-budget", "--flash-budget", "--min-psnr",
                                        "--chosen-scene", "--work-of-choice", "--allow-wide", "--fast-textures",
-                                       "--help", NULL };
+                                       "--spec-tables", "--help", NULL };
     memset(a, 0, sizeof *a);
     scene_layout_of_build(&layout); /* (scene_layout.o is this host's fixed-point build: mk/scene.mk) */
     layout_of_target = 0;
@@ -916,6 +968,10 @@ static int parse_args(int argc, char **argv, struct args *a)
             if (strcmp(val, "ram") && strcmp(val, "flash"))
                 return usage_error("bad --fast-textures '%s' (ram or flash)", val);
             fast_in_flash = !strcmp(val, "flash");
+        } else if (!strcmp(opt, "--spec-tables")) {
+            if (strcmp(val, "ram") && strcmp(val, "flash"))
+                return usage_error("bad --spec-tables '%s' (ram or flash)", val);
+            spec_in_flash = !strcmp(val, "flash");
         } else if (!strcmp(opt, "--target-work")) {
             char *colon = strchr(val, ':'), *colon2 = colon ? strchr(colon + 1, ':') : NULL;
             int bad_layout = 0;
@@ -1107,6 +1163,33 @@ static int analyse(const struct args *a, const struct scene *s, struct scene_for
     return 0;
 }
 
+/* Fast Phong's specular tables of every format from SCENE_FORMAT_FRAC_MIN
+ * to frac, each made by that format's core from the scene's text (the
+ * exponents as that core reads them): spec_sets, spec_frac_max. 0, or the
+ * exit status after the error's line. */
+static int make_spec_tables(const struct args *a, const char *text, size_t len, int frac)
+{
+    spec_frac_max = SCENE_FORMAT_FRAC_MIN - 1;
+    if (!spec_in_flash) return 0;
+    for (int f = SCENE_FORMAT_FRAC_MIN; f <= frac; f++) {
+        const struct core_api *api = core_api_fixed_frac(f);
+        struct spec_set *t = &spec_sets[f - SCENE_FORMAT_FRAC_MIN];
+        char err[600];
+        void *fs = NULL;
+        if (!api || api->scene_parse(a->path, text, len, &fs, err, sizeof err)) {
+            fprintf(stderr, "%s\n", api ? err : "scenec: no fixed-point core of that format");
+            return 2;
+        }
+        t->n = api->spec_exponents(fs, t->exps);
+        api->scene_free(fs);
+        for (int k = 0; k < t->n; k++) api->spec_table(t->tab + 257 * k, t->exps[k], t->step + 2 * k);
+        /* every format the same exponents (else none: render_init makes them) */
+        if (!t->n || t->n != spec_sets[0].n || memcmp(t->exps, spec_sets[0].exps, sizeof t->exps[0] * t->n)) return 0;
+    }
+    spec_frac_max = frac;
+    return 0;
+}
+
 /* The renderer's work memory: *work the target's (--target-work) or else the
  * fixed-point core's on this host, *host_work the latter; *sibling the same
  * of the second core's context. 0, or 2. */
@@ -1136,6 +1219,18 @@ static int work_sizes(const struct args *a, const struct scene *s, const char *t
         free(marks);
         fast_copies = *host_work - w;
         *host_work = w;
+    }
+    spec_copies = 0;
+    if (spec_frac_max >= SCENE_FORMAT_FRAC_MIN) {
+        /* (the format-12 core's tables: the sizes are every format's) */
+        const struct spec_set *t = &spec_sets[12 - SCENE_FORMAT_FRAC_MIN];
+        size_t before = core_api_fixed12.work_size(fs, (uint16_t)a->width, (uint16_t)a->height, (uint16_t)a->strip);
+        core_api_fixed12.set_spec_tables(fs, t->n, t->tab, t->step);
+        size_t w = core_api_fixed12.work_size(fs, (uint16_t)a->width, (uint16_t)a->height, (uint16_t)a->strip);
+        core_api_fixed12.set_spec_tables(fs, 0, NULL, NULL);
+        spec_copies = before - w;
+        fast_copies += spec_copies;
+        *host_work -= spec_copies;
     }
     scene_features = core_api_fixed12.features(fs);
     size_t host_sibling = core_api_fixed12.sibling_work_size(fs, (uint16_t)a->width, (uint16_t)a->height,
@@ -1173,6 +1268,10 @@ static void write_header(FILE *h, const struct args *a, const char *id, int frac
                "#define SCENE_%s_STRIP_ROWS %d\n#define SCENE_%s_WORK_SIZE  %zu\n#define SCENE_%s_STRIP_BYTES %zu\n"
                "#define SCENE_%s_SIBLING_WORK_SIZE %zu\n\n",
             ID, frac, ID, a->width, ID, a->height, ID, a->strip, ID, work, ID, strip_bytes, ID, sibling);
+    if (spec_copies)
+        fprintf(h, "/* float and double cores make fast Phong's specular tables in work memory */\n"
+                   "#if NUM_MODE != NUM_MODE_FIXED\n#undef SCENE_%s_WORK_SIZE\n#define SCENE_%s_WORK_SIZE (%zu + %zu)\n"
+                   "#endif\n\n", ID, ID, work, spec_copies);
     /* the renderer features it needs: one line each (0 or 1), which an
      * image's header merges over its scenes (tools/scenec/features.sh) */
     fprintf(h, "/* the renderer features it needs (firmware/core/scene_features.def, render_features) */\n");
@@ -1308,6 +1407,7 @@ int main(int argc, char **argv)
     struct scene_format F;
     size_t work = 0, host_work = 0, sibling = 0;
     rc = analyse(&a, s, &F);
+    if (!rc) rc = make_spec_tables(&a, text, text_len, F.num_frac);
     if (!rc) rc = work_sizes(&a, s, text, text_len, &work, &host_work, &sibling);
     free(text);
     if (!rc && scene_given_zero(s, F.num_frac, a.path, err, sizeof err)) {

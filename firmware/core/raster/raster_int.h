@@ -160,8 +160,8 @@ struct ras_fast {
     struct ras_tex565 *tex565;   /* per texture */
     uint8_t *tex_mem;            /* the RGB565 copies, texture by texture */
     struct ras_fast_state *keep; /* triangle set-ups kept between strips */
-    uint16_t *spec_tab;      /* fast Phong's specular tables, 257 entries each */
-    uint32_t *spec_step;     /* per table: index step and end (ras_spec_table) */
+    const uint16_t *spec_tab;    /* fast Phong's specular tables, 257 entries each */
+    const uint32_t *spec_step;   /* per table: index step and end (ras_spec_table) */
     int16_t *inst_spec;      /* per instance: its table, -1: no highlight, -2: none left */
     struct ras_fphong fp;    /* fast Phong's lights, per frame */
     struct ras_colour_memo {  /* the last colour fast_describe converted (a mesh's

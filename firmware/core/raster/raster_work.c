@@ -85,9 +85,9 @@ static int phong_fast(const struct scene *s)
 }
 
 /* Distinct specular exponents of fast Phong's instances, one table each
- * (at most RAS_SPEC_MAX; more take the exact path). idx (if not NULL)
+ * (at most RASTER_SPEC_MAX; more take the exact path). idx (if not NULL)
  * receives each instance's table: -1 no highlight, -2 none left. */
-#define RAS_SPEC_MAX 16
+#define RAS_SPEC_MAX RASTER_SPEC_MAX
 static uint16_t spec_exponents(const struct scene *s, int16_t *idx, uint32_t exps[RAS_SPEC_MAX])
 {
     uint32_t seen[RAS_SPEC_MAX];
@@ -110,6 +110,20 @@ static uint16_t spec_exponents(const struct scene *s, int16_t *idx, uint32_t exp
         if (idx) idx[i] = t;
     }
     return n;
+}
+
+uint16_t raster_spec_exponents(const struct scene *s, uint32_t exps[RASTER_SPEC_MAX])
+{
+    return s->kind == SCENE_RASTER ? spec_exponents(s, NULL, exps) : 0;
+}
+
+void raster_spec_table(uint16_t t[257], uint32_t e, uint32_t step[2]) { ras_spec_table(t, e, step); }
+
+/* The scene's own specular tables (scenec's, in flash) for its nspec
+ * exponents: no copies in work memory. */
+static int spec_given(const struct scene *s, uint16_t nspec)
+{
+    return nspec && s->spec_tab && s->spec_step && s->nspec == nspec;
 }
 
 static uint32_t scene_count(const struct scene *s, int verts);
@@ -265,9 +279,9 @@ static int carve(const struct scene *s, uint16_t w, uint16_t h, uint16_t strip_r
     rc->bins.order = work_take(c, bins ? sizeof(uint16_t) * ntris : 0);
     rc->bins.start = work_take(c, bins ? sizeof(uint16_t) * ((size_t)rc->bins.nbuckets + 1) : 0);
     rc->bins.reach = work_take(c, sizeof(int16_t) * rc->bins.nbuckets);
-    uint16_t nspec = spec_exponents(s, NULL, NULL);
-    rc->fast.spec_tab = work_take(c, sizeof(uint16_t) * 257 * nspec);
-    rc->fast.spec_step = work_take(c, sizeof(uint32_t) * 2 * nspec);
+    uint16_t nspec = spec_exponents(s, NULL, NULL), made = spec_given(s, nspec) ? 0 : nspec;
+    rc->fast.spec_tab = work_take(c, sizeof(uint16_t) * 257 * made);
+    rc->fast.spec_step = work_take(c, sizeof(uint32_t) * 2 * made);
     rc->fast.inst_spec = work_take(c, sizeof(int16_t) * s->ninstances);
     rc->c15.adj = work_take(c, ras_ch15_adj_size(s, ntris));
     rc->c15.smap = work_take(c, ras_ch15_smap_size(s));
@@ -405,8 +419,15 @@ int raster_init(void *work, size_t work_size, const struct scene *s, uint16_t wi
     /* fast Phong's specular tables, one per exponent, and each instance's */
     uint32_t exps[RAS_SPEC_MAX];
     uint16_t nspec = spec_exponents(s, rc->fast.inst_spec, exps);
-    for (uint16_t k = 0; FW_FEATURE_RAS_FAST_PHONG && k < nspec; k++)
-        ras_spec_table(rc->fast.spec_tab + 257 * k, exps[k], rc->fast.spec_step + 2 * k);
+    if (spec_given(s, nspec)) {
+        rc->fast.spec_tab = s->spec_tab;   /* scenec's: the same tables, in flash */
+        rc->fast.spec_step = s->spec_step;
+    } else {
+        uint16_t *tab = (uint16_t *)rc->fast.spec_tab;   /* (work memory: carve's) */
+        uint32_t *step = (uint32_t *)rc->fast.spec_step;
+        for (uint16_t k = 0; FW_FEATURE_RAS_FAST_PHONG && k < nspec; k++)
+            ras_spec_table(tab + 257 * k, exps[k], step + 2 * k);
+    }
     init_viewport(rc);
     init_textures(rc);
     /* the buckets of the rows by a product: 2^16 / strip_rows + 1, if it

@@ -107,7 +107,7 @@ uint32_t num_rcp32(uint32_t dn)
     /* 2^64 - 1 - 2^32 dn = ~dn 2^32 + 2^32 - 1, divided by dn from the
      * estimate */
     uint32_t rl;
-    return num_udiv_step(rcp32_est(dn), ~dn, 0xFFFFFFFFu, dn, &rl);
+    return num_udiv_step(num_rcp32_est(dn), ~dn, 0xFFFFFFFFu, dn, &rl);
 }
 
 #if !NUM_HW_DIV32

@@ -51,7 +51,11 @@ int64_t ras_floordiv(int64_t n, int64_t d, int64_t *rem)
 }
 
 /* ras_div_depth's four quotients by z, each its own division (float and
- * double; fixed point where z has no prepared reciprocal) */
+ * double; fixed point where z has no prepared reciprocal, out of line: the
+ * rare case) */
+#if NUM_MODE == NUM_MODE_FIXED
+__attribute__((noinline))
+#endif
 static void div_depth_plain(num x, num y, num z, num unproj, num near_z, num *X, num *Y, num *iz, uint32_t *depth)
 {
     *X = wnum_div(num_mul_wide(x, unproj), wnum_from_num(z));
@@ -540,7 +544,7 @@ void ras_div_sub(const struct ras_subproj *k, num x, num y, num z, struct ras_su
             }
         }
     }
-    ras_div_depth(x, y, z, k->unproj, k->near_z, &X, &Y, &o->iz, &o->depth);
+    div_depth_plain(x, y, z, k->unproj, k->near_z, &X, &Y, &o->iz, &o->depth);
     o->sx = ras_sub_pos(num_add(k->cx, X), (int)k->sb);
     o->sy = ras_sub_pos(num_sub(k->cy, Y), (int)k->sb);
 }

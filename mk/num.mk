@@ -34,7 +34,7 @@ TESTS     += $(foreach m,$(NUM_KERNEL_MODES),$(BUILD)/asan/tests/test_num_kernel
 # fixed, fixed20: the 32-bit hardware-divide digits, as on ARMv7-M).
 NUM_DIV_MODES := $(NUM_KERNEL_MODES) fixed16p
 $(foreach v,$(VARIANTS),$(foreach m,$(NUM_DIV_MODES),\
-    $(call program,$(BUILD)/$(v)/tests/test_num_div_$(m),$(call obj,$(v),$(m),tests/unit/test_num_div.c $(NUM_SRCS)),$(v))))
+    $(call program,$(BUILD)/$(v)/tests/test_num_div_$(m),$(call obj,$(v),$(m),tests/unit/test_num_div.c $(NUM_SRCS) firmware/core/raster/raster_num.c),$(v))))
 TEST_DEPS += $(foreach m,$(NUM_DIV_MODES),$(BUILD)/asan/tests/test_num_div_$(m))
 TESTS     += $(foreach m,$(NUM_DIV_MODES),$(BUILD)/asan/tests/test_num_div_$(m))
 

@@ -9,7 +9,10 @@
  * every step (the former v3_dot_wide). Checked:
  *   num_rcp16       its two bounds on every value of dn >> 9 (exhaustive)
  *   num_rcp32       floor((2^64 - 1) / dn) - 2^32, both ends of every
- *                   num_rcp16 bucket and 4 million random dn
+ *                   num_rcp16 bucket and 4 million random dn (and
+ *                   num_rcp32_est within 6 below it)
+ *   ras_div_sub     a vertex's screen position, 1/z and depth against the
+ *                   plain divisions, edge and random depths
  *   num_udiv64_32   quotient and remainder, every divisor magnitude (and
  *                   num_udiv64_32_pre, by a prepared divisor, alike)
  *   num_div, num_recip, num_from_ratio, num_div_int, wnum_div
@@ -23,6 +26,7 @@
 
 #include "num.h"
 #include "num/num_int.h"
+#include "raster/raster_num.h"
 #include "check.h"
 #define TEST_RNG_SEED 0x9E3779B97F4A7C15ull
 #include "test_rng.h"
@@ -70,20 +74,76 @@ static void test_rcp32(void)
 {
     /* floor((2^64 - 1) / dn) - 2^32 exactly: both ends of every bucket of
      * num_rcp16's seed (dn >> 9), the ends of the range, and random dn */
-    long bad = 0;
-    uint32_t badd = 0;
+    long bad = 0, bade = 0;
+    uint32_t badd = 0, badde = 0;
     const u128 m64 = ((u128)1 << 64) - 1;
     for (long i = -2; i < (1L << 23) + 4000000; i++) {
         uint32_t dn;
         if (i < 0) dn = i == -2 ? 0x80000000u : 0xFFFFFFFFu;
         else if (i < (1L << 23)) dn = (uint32_t)((1u << 31) | ((uint32_t)(i >> 1) << 9) | (i & 1 ? 511u : 0u));
         else dn = (uint32_t)rnd_bits(32) | 0x80000000u;
-        if ((u128)num_rcp32(dn) != m64 / dn - ((u128)1 << 32)) {
+        const u128 v = m64 / dn - ((u128)1 << 32), e = num_rcp32_est(dn);
+        if ((u128)num_rcp32(dn) != v) {
             bad++;
             badd = dn;
         }
+        if (e > v || e + 6 < v) {
+            bade++;
+            badde = dn;
+        }
     }
     check(bad == 0, "num_rcp32_matches_division", "%ld mismatches, e.g. dn = %u", bad, badd);
+    check(bade == 0, "num_rcp32_est_within_6_below", "%ld out of [v - 6, v], e.g. dn = %u", bade, badde);
+}
+
+/* ras_div_sub against the plain forms: wnum_div(num_mul_wide(x, u), z),
+ * num_recip(z), ras_depth32(near, z), and the screen positions
+ * ras_sub_pos(num_add(cx, X), sb), ras_sub_pos(num_sub(cy, Y), sb) */
+static void test_div_sub(void)
+{
+    long bad = 0, n = 0;
+    int32_t bx = 0, by = 0, bz = 0;
+    const num ONE = NUM_ONE_RAW;
+    const num zs[] = { 1, 2, 3, 15, 16, 17, ONE - 1, ONE, ONE + 1, (1 << 27) - 1, 1 << 27, (1 << 28) - 1, 1 << 28,
+                       (1 << 28) + 1, INT32_MAX - 1, INT32_MAX, 0, -1, -ONE, INT32_MIN };
+    for (long i = 0; i < 3000000; i++) {
+        struct ras_subproj k;
+        const int c = (int)(rng() % 8);
+        k.unproj = c == 0 ? rnd_num() : (num)(rng() % ((uint64_t)1 << (NUM_FRAC + 10)));
+        k.near_z = c == 1 ? rnd_num() : (num)(rng() % ((uint64_t)2 << NUM_FRAC)) + 1;
+        k.cx = c == 2 ? rnd_num() : (num)((rng() % 400) << NUM_FRAC);
+        k.cy = c == 3 ? rnd_num() : (num)((rng() % 400) << NUM_FRAC);
+        k.sb = (int32_t)(rng() % 8) + 1;
+        num x = rnd_num(), y = rnd_num(), z;
+        switch (rng() % 4) {
+        case 0: z = zs[rng() % (sizeof zs / sizeof zs[0])]; break;
+        case 1: {
+            const int64_t w = (int64_t)k.near_z + (int64_t)(rng() % 3) - 1;
+            z = w > INT32_MAX ? INT32_MAX : (num)w;
+            break;
+        }
+        default: z = (num)rnd_bits(31); break;
+        }
+        if (rng() % 2) { /* inside a view: |x|, |y| below about z */
+            const int64_t m = (int64_t)(z < 0 ? -(int64_t)z : z) * 2 + 1;
+            x = (num)((int64_t)(rng() % (uint64_t)m) - m / 2);
+            y = (num)((int64_t)(rng() % (uint64_t)m) - m / 2);
+        }
+        struct ras_subpos o;
+        ras_div_sub(&k, x, y, z, &o);
+        const num X = wnum_div(num_mul_wide(x, k.unproj), wnum_from_num(z));
+        const num Y = wnum_div(num_mul_wide(y, k.unproj), wnum_from_num(z));
+        const int32_t sx = ras_sub_pos(num_add(k.cx, X), (int)k.sb), sy = ras_sub_pos(num_sub(k.cy, Y), (int)k.sb);
+        n++;
+        if (o.sx != sx || o.sy != sy || o.iz != num_recip(z) || o.depth != ras_depth32(k.near_z, z)) {
+            bad++;
+            bx = x;
+            by = y;
+            bz = z;
+        }
+    }
+    check(bad == 0, "ras_div_sub_matches_division", "%ld of %ld mismatch, e.g. x %d y %d z %d", bad, n, (int)bx,
+          (int)by, (int)bz);
 }
 
 static void test_udiv(void)
@@ -331,6 +391,7 @@ int main(void)
 {
     test_rcp16();
     test_rcp32();
+    test_div_sub();
     test_udiv();
     test_div_ops();
     test_wnum_div();

@@ -55,7 +55,7 @@ const uint8_t num_clz8_tab[256] = { 8, 7, CLZ2(6), CLZ4(5), CLZ8(4), CLZ16(3), C
 
 static const uint16_t rcp_seed[256] = { RCP64(0), RCP64(64), RCP64(128), RCP64(192) };
 
-uint32_t num_rcp16(uint32_t dn)
+static inline uint32_t rcp16(uint32_t dn)
 {
     /* y0 = 2^16 + seed ~ 2^48 / dn (relative error <= 2^-9 + 2^-17), one
      * Newton-Raphson step y0 (2 - x y0) with x = (dn >> 9) / 2^39:
@@ -73,7 +73,11 @@ uint32_t num_rcp16(uint32_t dn)
     return t < 0 ? 0 : (uint32_t)t >> 15;
 }
 
-uint32_t num_rcp32(uint32_t dn)
+uint32_t num_rcp16(uint32_t dn) { return rcp16(dn); }
+
+/* num_rcp32's value before its last step (the remainder's correction):
+ * v - 6 <= est <= v */
+static inline uint32_t rcp32_est(uint32_t dn)
 {
     /* V0 = 2^32 + rh 2^16 with 0 < 2^64 / dn - V0 < 2^17 (num_rcp16; V0 <
      * 2^33 = 2^64 / dn for dn = 2^31, so the difference is never 0), and
@@ -89,14 +93,21 @@ uint32_t num_rcp32(uint32_t dn)
      * (e - Et 2^17) / dn < 2^-14, Et 2^17 (2^64 / dn - V0) / 2^64 < 2^49
      * 2^17 / 2^64 = 4 and the floors (< 2 + 2^-15): at most 6 below. The
      * remainder 2^64 - 1 - (2^32 + v) dn (< 7 dn < 2^35, in 32-bit halves)
-     * then steps it up. */
-    const uint32_t rh = num_rcp16(dn);
+     * then steps it up (num_rcp32). */
+    const uint32_t rh = rcp16(dn);
     const uint32_t a = (0u - dn) - rh * (dn >> 16), b = rh * (dn & 0xFFFFu);
     const uint32_t et = (a << 15) - ((b >> 1) + (b & 1u));
-    const uint32_t v = (rh << 16) + (et >> 15) + (((et >> 16) * rh + (((et & 0xFFFFu) * rh) >> 16)) >> 15);
-    /* 2^64 - 1 - 2^32 dn = ~dn 2^32 + 2^32 - 1, divided by dn from v */
+    return (rh << 16) + (et >> 15) + (((et >> 16) * rh + (((et & 0xFFFFu) * rh) >> 16)) >> 15);
+}
+
+uint32_t num_rcp32_est(uint32_t dn) { return rcp32_est(dn); }
+
+uint32_t num_rcp32(uint32_t dn)
+{
+    /* 2^64 - 1 - 2^32 dn = ~dn 2^32 + 2^32 - 1, divided by dn from the
+     * estimate */
     uint32_t rl;
-    return num_udiv_step(v, ~dn, 0xFFFFFFFFu, dn, &rl);
+    return num_udiv_step(num_rcp32_est(dn), ~dn, 0xFFFFFFFFu, dn, &rl);
 }
 
 #if !NUM_HW_DIV32

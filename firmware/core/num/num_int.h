@@ -188,6 +188,12 @@ uint32_t num_udiv64_32(uint64_t n, uint32_t d, uint32_t *rem);
  * estimate, one Newton step in 32-bit products (at most 6 below) and the
  * remainder's correction, without a division (num.c proves the bound). */
 uint32_t num_rcp32(uint32_t dn);
+/* num_rcp32(dn)'s estimate before its remainder's correction, est in
+ * [v - 6, v] (v = num_rcp32(dn)), in 32x32->32 products only: a divisor's
+ * reciprocal for quotients whose remainder's correction tolerates up to 6
+ * more steps of the quotient than num_udiv64_32_pre's (nh + mulhi(nh, est)
+ * is never above nh + mulhi(nh, v) and at most 6 below it). */
+uint32_t num_rcp32_est(uint32_t dn);
 
 /* A divisor d != 0 prepared for num_udiv64_32_pre, which divides by it
  * with two products instead of a division: dn = d 2^s in [2^31, 2^32) and

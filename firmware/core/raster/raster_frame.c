@@ -155,19 +155,17 @@ vec3 ras_cam_vertex_again(const struct ras_ctx *rc, const struct ras_instance *i
 /* The default path's projected vertex q of camera-space point c: its
  * sub-pixel position, reciprocal depth and depth where `shown` (visible and
  * inside every clip plane) and the position fits 16 bits, else RAS_PV_OUT. */
-static inline void store_pv(const struct ras_ctx *rc, struct ras_pv *q, vec3 c, int shown)
+static inline void store_pv(const struct ras_subproj *k, struct ras_pv *q, vec3 c, int shown)
 {
-    int32_t sx, sy;
-    num iz;
-    uint32_t depth;
+    struct ras_subpos o;
     q->sx = RAS_PV_OUT;
     if (!shown) return;
-    ras_project_sub_depth(rc, c, &sx, &sy, &iz, &depth);
-    if (sx > INT16_MIN && sx <= INT16_MAX && sy >= INT16_MIN && sy <= INT16_MAX) {
-        q->sx = (int16_t)sx;
-        q->sy = (int16_t)sy;
-        q->iz = iz;
-        q->depth = depth;
+    ras_div_sub(k, c.x, c.y, c.z, &o);   /* ras_project_sub_depth's bits */
+    if (o.sx > INT16_MIN && o.sx <= INT16_MAX && o.sy >= INT16_MIN && o.sy <= INT16_MAX) {
+        q->sx = (int16_t)o.sx;
+        q->sy = (int16_t)o.sy;
+        q->iz = o.iz;
+        q->depth = o.depth;
     }
 }
 
@@ -181,6 +179,8 @@ static void instance_vertices(const struct ras_ctx *rc, uint16_t i, uint32_t k0,
     const struct ras_model *m = &s->models[in->model];
     const struct ras_inst *ri = &rc->inst[i];
     const uint32_t vb = ri->vbase;
+    struct ras_subproj kp;
+    ras_subproj_of(rc, &kp);
     if (ri->vfit && rc->def.pv && !rc->proj) {
         /* the default path's vertices of an instance whose transform
          * cannot saturate, every one inside every plane where ri->vin */
@@ -188,7 +188,7 @@ static void instance_vertices(const struct ras_ctx *rc, uint16_t i, uint32_t k0,
         for (uint32_t k = k0; k < k1; k++) {
             const vec3 c = sp ? ras_mul_point_fit_split(&ri->m, m->verts[k], sp) : ras_mul_point_fit(&ri->m, m->verts[k]);
             if (rc->verts) rc->verts[vb + k].c = c;
-            store_pv(rc, &rc->def.pv[vb + k], c, ri->visible && (!tested || ras_point_inside(rc, c)));
+            store_pv(&kp, &rc->def.pv[vb + k], c, ri->visible && (!tested || ras_point_inside(rc, c)));
         }
         return;
     }
@@ -204,7 +204,7 @@ static void instance_vertices(const struct ras_ctx *rc, uint16_t i, uint32_t k0,
             }
         }
         if (rc->def.pv) {
-            store_pv(rc, &rc->def.pv[vb + k], c, ri->visible && ras_point_inside(rc, c));
+            store_pv(&kp, &rc->def.pv[vb + k], c, ri->visible && ras_point_inside(rc, c));
         }
     }
 }

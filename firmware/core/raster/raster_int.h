@@ -469,6 +469,9 @@ void ras_project_sub(const struct ras_ctx *rc, vec3 p, int32_t *sx, int32_t *sy)
 /* ras_project_sub with num_recip(p.z) and ras_depth32(near_z, p.z), the
  * same bits, the four divisions by p.z made as one (ras_div_depth). */
 void ras_project_sub_depth(const struct ras_ctx *rc, vec3 p, int32_t *sx, int32_t *sy, num *iz, uint32_t *depth);
+/* ras_project_sub_depth's constants now (ras_div_sub: the same bits from
+ * one call a point). */
+void ras_subproj_of(const struct ras_ctx *rc, struct ras_subproj *k);
 /* Scene canvas to render canvas (2D primitives): v*h/canvas_h, one rounding. */
 num ras_scale_canvas(const struct ras_ctx *rc, num v);
 /* A model-space corner normal in camera space (the instance's rotations). */

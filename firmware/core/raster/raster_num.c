@@ -51,7 +51,11 @@ int64_t ras_floordiv(int64_t n, int64_t d, int64_t *rem)
 }
 
 /* ras_div_depth's four quotients by z, each its own division (float and
- * double; fixed point where z has no prepared reciprocal) */
+ * double; fixed point where z has no prepared reciprocal, out of line: the
+ * rare case) */
+#if NUM_MODE == NUM_MODE_FIXED
+__attribute__((noinline))
+#endif
 static void div_depth_plain(num x, num y, num z, num unproj, num near_z, num *X, num *Y, num *iz, uint32_t *depth)
 {
     *X = wnum_div(num_mul_wide(x, unproj), wnum_from_num(z));
@@ -461,6 +465,90 @@ void ras_div_depth(num x, num y, num z, num unproj, num near_z, num *X, num *Y, 
                                         : num_udiv64_32_pre((uint64_t)(uint32_t)near_z << 32, &p, 0);
 }
 
+/* The fast path of ras_div_sub: a divisor d = z in (0, 2^28) (shift s =
+ * clz(d) >= 4) and its reciprocal's estimate v = num_rcp32_est(d 2^s),
+ * at most 6 below num_udiv_pre's. Each quotient's estimate nh +
+ * mulhi(nh, v) is then never above udiv_pre_small's and at most 6 below
+ * it (nh < 2^32), so at most 9 below the quotient: the remainder stays
+ * below 10 d < 2^32, its low word, and the same steps take the quotient
+ * to its exact value. */
+struct div_est { uint32_t d, s, v; };
+
+/* wdiv_pre(num_mul_round(x, u), z, p): 1 and *out where it comes from
+ * udiv_pre_small without saturating, else 0. With P = x u + 2^(F-1)
+ * (|P| < 2^63), num_mul_round is A = floor(P / 2^F), and wdiv_pre's
+ * numerator |A| 2^F (always below 2^63) is P with its low F bits cleared,
+ * negated when negative: its words straight from the product's. */
+static inline __attribute__((always_inline)) int quot_est(num x, num u, const struct div_est *e, num *out)
+{
+    const uint64_t P = (uint64_t)num_smul32(x, u) + ((uint64_t)1 << (NUM_FRAC - 1));
+    const uint32_t d = e->d, s = e->s;
+    uint32_t hi = (uint32_t)(P >> 32), lo = (uint32_t)P >> NUM_FRAC << NUM_FRAC;
+    const uint32_t neg = hi >> 31;
+    if (neg) {
+        hi = ~hi + (lo == 0);
+        lo = 0u - lo;
+    }
+    if (hi >= d) return 0;
+    const uint32_t nh = hi << s | lo >> (32 - s);
+    uint32_t q = nh + num_mulhi32(nh, e->v), r = lo - q * d;
+    while (r >= d) {
+        r -= d;
+        q++;
+    }
+    if (q >= (uint32_t)INT32_MAX) return 0;
+    q += r >= d - r;
+    *out = neg ? -(num)q : (num)q;
+    return 1;
+}
+
+void ras_div_sub(const struct ras_subproj *k, num x, num y, num z, struct ras_subpos *o)
+{
+    num X, Y;
+    /* 2F + s in [32, 62] for recip_pre's form of 1/z */
+    if (z > 0 && z < ((num)1 << 28)) {
+        struct div_est e;
+        e.d = (uint32_t)z;
+        e.s = (uint32_t)num_clz32(e.d);
+        if (2 * NUM_FRAC + e.s >= 32 && 2 * NUM_FRAC + e.s <= 62) {
+            e.v = num_rcp32_est(e.d << e.s);
+            if (quot_est(x, k->unproj, &e, &X) && quot_est(y, k->unproj, &e, &Y)) {
+                /* recip_pre: 2^2F / z, nh = 2^j, the estimate's product a shift */
+                const uint32_t d = e.d, j = 2 * NUM_FRAC + e.s - 32;
+                uint32_t q = ((uint32_t)1 << j) + (j ? e.v >> (32 - j) : 0);
+                uint32_t r = (uint32_t)((uint64_t)1 << (2 * NUM_FRAC)) - q * d;
+                while (r >= d) {
+                    r -= d;
+                    q++;
+                }
+                if (q < (uint32_t)INT32_MAX) {
+                    o->iz = (num)(q + (r >= d - r));
+                    const num near_z = k->near_z;
+                    if (near_z > 0 && z > near_z) {
+                        /* near 2^32 / z, below 2^32: nh = near 2^s, the low word 0 */
+                        const uint32_t nh = (uint32_t)near_z << e.s;
+                        q = nh + num_mulhi32(nh, e.v);
+                        r = 0u - q * d;
+                        while (r >= d) {
+                            r -= d;
+                            q++;
+                        }
+                        o->depth = q;
+                    } else {
+                        o->depth = ras_depth32(near_z, z);
+                    }
+                    o->sx = ras_sub_pos(num_add(k->cx, X), (int)k->sb);
+                    o->sy = ras_sub_pos(num_sub(k->cy, Y), (int)k->sb);
+                    return;
+                }
+            }
+        }
+    }
+    div_depth_plain(x, y, z, k->unproj, k->near_z, &X, &Y, &o->iz, &o->depth);
+    o->sx = ras_sub_pos(num_add(k->cx, X), (int)k->sb);
+    o->sy = ras_sub_pos(num_sub(k->cy, Y), (int)k->sb);
+}
+
 /* Corners a, b, c inside every plane, at depths z >= near: the
  * camera-space test's value f = -a . ((b - a) x (c - a)) is, exactly,
  * D = A_e z_a z_b z_c / (S^2 u^2), A_e the exact projection's doubled area
@@ -637,6 +725,14 @@ int ras_sphere_inside(const mat4 *m, const struct ras_box *b, const struct ras_b
 void ras_div_depth(num x, num y, num z, num unproj, num near_z, num *X, num *Y, num *iz, uint32_t *depth)
 {
     div_depth_plain(x, y, z, unproj, near_z, X, Y, iz, depth);
+}
+
+void ras_div_sub(const struct ras_subproj *k, num x, num y, num z, struct ras_subpos *o)
+{
+    num X, Y;
+    div_depth_plain(x, y, z, k->unproj, k->near_z, &X, &Y, &o->iz, &o->depth);
+    o->sx = ras_sub_pos(num_add(k->cx, X), (int)k->sb);
+    o->sy = ras_sub_pos(num_sub(k->cy, Y), (int)k->sb);
 }
 
 uint32_t ras_depth32(num near_z, num z)

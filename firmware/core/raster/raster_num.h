@@ -112,6 +112,15 @@ int ras_sphere_inside(const mat4 *m, const struct ras_box *b, const struct ras_b
  * reciprocal (num_udiv_pre) serves the four. */
 void ras_div_depth(num x, num y, num z, num unproj, num near_z, num *X, num *Y, num *iz, uint32_t *depth);
 
+/* The default path's projection of a camera-space point (x, y, z), z > 0
+ * expected: ras_div_depth's X, Y, iz and depth with the screen position
+ * taken to sub-pixel units (y down) as ras_sub_pos(num_add(cx, X), sb) and
+ * ras_sub_pos(num_sub(cy, Y), sb) give it, the same bits, in one call.
+ * cx, cy: the canvas centre in num; 0 < sb <= 8. */
+struct ras_subproj { num unproj, near_z, cx, cy; int32_t sb; };
+struct ras_subpos { int32_t sx, sy; num iz; uint32_t depth; };
+void ras_div_sub(const struct ras_subproj *k, num x, num y, num z, struct ras_subpos *o);
+
 /* A canvas coordinate f (pixels) in sub-pixel units, 0 < sb <= 8: floor(f)
  * 2^sb + floor(frac(f) 2^sb + 1/2), num_floor_int, num_frac, num_mul_int
  * and num_add's bits (raster_project.c's form); fixed point in integers

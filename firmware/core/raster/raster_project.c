@@ -112,11 +112,26 @@ void ras_project_sub(const struct ras_ctx *rc, vec3 p, int32_t *sx, int32_t *sy)
     project_sub_xy(rc, ras_mul_div(p.x, rc->unproj, p.z), ras_mul_div(p.y, rc->unproj, p.z), sx, sy);
 }
 
+void ras_subproj_of(const struct ras_ctx *rc, struct ras_subproj *k)
+{
+    /* project_sub_xy's constants: ras_div_sub makes its steps */
+    k->unproj = rc->unproj;
+    k->near_z = rc->def.near_z;
+    k->cx = centre_num(rc->w / 2);
+    k->cy = centre_num(rc->h / 2);
+    k->sb = rc->def.sub_bits;
+}
+
 void ras_project_sub_depth(const struct ras_ctx *rc, vec3 p, int32_t *sx, int32_t *sy, num *iz, uint32_t *depth)
 {
-    num X, Y;
-    ras_div_depth(p.x, p.y, p.z, rc->unproj, rc->def.near_z, &X, &Y, iz, depth);
-    project_sub_xy(rc, X, Y, sx, sy);
+    struct ras_subproj k;
+    struct ras_subpos o;
+    ras_subproj_of(rc, &k);
+    ras_div_sub(&k, p.x, p.y, p.z, &o);
+    *sx = o.sx;
+    *sy = o.sy;
+    *iz = o.iz;
+    *depth = o.depth;
 }
 
 /* Scene canvas to render canvas: v*h/canvas_h with one rounding (exact at

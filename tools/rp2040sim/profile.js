@@ -12,10 +12,11 @@
  *           alias; the others are the same bytes, folded onto it)
  *   cycles  the cycles of the instructions whose address lies in a function,
  *           XIP cache stalls included (self cost: not its callees')
- * The file is JSON: {image, frames, cycles, symbols: [{name, type (func or
- * object), addr, size, reads, cycles}]} with every symbol of non-zero size
- * that was read or executed; frames is the run's frame count, so that
- * reads / frames is a symbol's reads a frame. tools/rp2040_ram_text.py
+ * The file is JSON: {image, frames, frame_cycles, cycles, symbols: [{name,
+ * type (func or object), addr, size, reads, cycles}]} with every symbol of
+ * non-zero size that was read or executed; frames is the run's frame count,
+ * frame_cycles the sum of their cycles (--json's "cycles": from a frame's
+ * begin line to its last pixel), cycles both cores' over the run. tools/rp2040_ram_text.py
  * turns such profiles into the images' SRAM placement.
  */
 const fs = require('fs');
@@ -94,7 +95,7 @@ class Profile {
   }
 
   /* per symbol of the ELF in buf */
-  write(file, image, buf, frames) {
+  write(file, image, buf, frames, frameCycles) {
     const syms = elfSymbols(buf) || [];
     const sum = (arr, base, s) => {
       let t = 0;
@@ -113,7 +114,8 @@ class Profile {
       if (reads || cycles) out.push(Object.assign(s, { reads: Math.round(reads), cycles: Math.round(cycles) }));
     }
     out.sort((a, b) => b.cycles - a.cycles || b.reads - a.reads || (a.name < b.name ? -1 : 1));
-    fs.writeFileSync(file, JSON.stringify({ image, frames, cycles: Math.round(this.cycles), symbols: out }, null, 0)
+    fs.writeFileSync(file, JSON.stringify({ image, frames, frame_cycles: Math.round(frameCycles), cycles: Math.round(this.cycles),
+      symbols: out }, null, 0)
       .replace(/\},\{/g, '},\n{') + '\n');
   }
 }

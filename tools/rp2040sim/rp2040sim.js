@@ -476,7 +476,8 @@ function main() {
       }) + '\n');
     }
   }
-  if (prof) prof.write(o.profile, path.basename(o.image), fs.readFileSync(o.image), frames.length);
+  if (prof) prof.write(o.profile, path.basename(o.image), fs.readFileSync(o.image), frames.length,
+    frames.reduce((a, f) => a + f.ns * cpuHz / 1e9, 0));
   if (o.outRaw) fs.writeFileSync(o.outRaw, rawLE(frames[frames.length - 1].px));
   const simS = (Date.now() - t0) / 1000;
   const torn = frames.filter((f) => f.passes > 1).length;

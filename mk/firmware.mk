@@ -23,11 +23,13 @@
 # name), FW_SPI_HZ (a ceiling for the SPI clock in place of the panel's rated
 # clock: a clock the module was tested at, e.g. 62500000; default none),
 # RP2040_RAM_TEXT (1, the
-# default: the renderer core, with the rasterizer's span loops (RAS_HOT in
-# firmware/core/raster/raster_int.h), is copied to SRAM and runs from there
-# instead of through the 16 KB XIP cache: about 168 KB for the whole core,
-# 64 KB for the cube scenes' features (an image of a scene set carries only
-# what its scenes need, below); raster: only the
+# default: the renderer core's hot functions and tables, the ones the
+# images' profiles on the emulator show a frame reading once a pixel, span,
+# triangle or vertex (firmware/board/rp2040/ram_text/on/ram_text_hot.ld,
+# `make ram-text-profile`, mk/rp2040sim.mk), are copied to SRAM and run from
+# there instead of through the 16 KB XIP cache, the rest of the core from
+# flash (an image of a scene set carries only what its scenes need, below);
+# raster: only the
 # rasterizer's default path and the numeric layer, about 64 KB, which leaves
 # a mesh room for its work memory; 0: everything from flash), FW_SCENE_SRCS
 # (the scene table; default the built-in placeholder), FW_EXTRA (more -D flags).
@@ -225,7 +227,7 @@ $(FW_OUT)/pico/obj-$(1)/boot2_crc.o: $(FW_OUT)/pico/boot2_crc.S
 $(FW_OUT)/pico/$(1).elf: $(patsubst %.c,$(FW_OUT)/pico/obj-$(1)/%.o,$(or $(5),$(RP_SRCS)) $(3)) \
                          $(patsubst %.S,$(FW_OUT)/pico/obj-$(1)/%.o,$(RP_ASM)) \
                          $(FW_OUT)/pico/obj-$(1)/boot2_crc.o $(RP_DIR)/rp2040.ld \
-                         $(RP_DIR)/ram_text/$(or $(4),$(RP_RAM_TEXT_DIR))/ram_text.ld
+                         $(wildcard $(RP_DIR)/ram_text/$(or $(4),$(RP_RAM_TEXT_DIR))/*.ld)
 	$$(Q)$$(ARM_CC) $$(RP_LDFLAGS_BASE) -L$(RP_DIR)/ram_text/$(or $(4),$(RP_RAM_TEXT_DIR)) -Wl,-Map=$(FW_OUT)/pico/$(1).map \
 		$$(filter %.o,$$^) -lc -lgcc -o $$@
 $(FW_OUT)/pico/$(1).bin: $(FW_OUT)/pico/$(1).elf

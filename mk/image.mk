@@ -144,7 +144,7 @@ IMG_BUDGET_OBJS := $(patsubst %.c,$(IMG_OBJ)/%.o,$(RP_SRCS) firmware/app/scenes_
                    $(patsubst %.S,$(IMG_OBJ)/%.o,$(RP_ASM)) $(IMG_OBJ)/boot2_crc.o
 $(IMG_OBJ)/firmware/app/scenes_builtin.o: $(FW_IMG_FRAC_H) $(FW_IMG_FEAT_H)
 $(IMG)/budget.elf: $(IMG_BUDGET_OBJS) $(RP_DIR)/rp2040.ld \
-                   $(RP_DIR)/ram_text/$(RP_RAM_TEXT_DIR)/ram_text.ld
+                   $(wildcard $(RP_DIR)/ram_text/$(RP_RAM_TEXT_DIR)/*.ld)
 	$(Q)$(ARM_CC) $(RP_LDFLAGS) $(filter %.o,$^) -lc -lgcc -o $@
 $(IMG)/fits: $(IMG)/budget.elf $(IMG_C:.c=.log) firmware/app/image_fits.sh
 	$(Q)rm -f $@

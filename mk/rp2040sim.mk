@@ -58,3 +58,32 @@ TESTS     += node:tools/rp2040sim/test_models.js
 # The JavaScript panel (emu_panel.js) replays the vectors the C emulator
 # replays (test_panel_vectors), so the two decoders cannot drift apart.
 TESTS     += node:tools/rp2040sim/replay_vectors.js:tests/vectors/panel
+
+# The SRAM placement of RP2040_RAM_TEXT=1 (firmware/board/rp2040/ram_text/on):
+# which functions and tables of the core, the application, the panel drivers
+# and the board's code run from SRAM is decided from profiles of the images
+# on the emulator (rp2040sim --profile: reads per symbol over a run).
+# `make ram-text-profile` builds the profiled images, runs them
+# as `make bench-rp2040` does (IMAGE:ARGS, ARGS: mk/bench-rp2040.mk's
+# RP2040SIM_ARGS_<ARGS>) and rewrites profile.tsv and ram_text_hot.ld
+# (tools/rp2040_ram_text.py); test_ram_text checks that ram_text_hot.ld is
+# the one profile.tsv gives and that the images place their code as it says.
+RAM_TEXT_DIR := $(RP_DIR)/ram_text/on
+RAM_TEXT_PROFILE_RUNS := cgfs-ili9341:plain320 cgfs-book-bench:book cgfs-cube:cube cgfs-rt:rt cgfs-mesh:mesh
+RP2040SIM_ARGS_plain320 = --panel ili9341_320x240 $(RP2040SIM_ARGS_plain)
+ram_text_field = $(word $(1),$(subst :, ,$(2)))
+define RAM_TEXT_PROFILE_RUN
+	$(Q)node tools/rp2040sim/rp2040sim.js --image $(FW_OUT)/pico/$(call ram_text_field,1,$(1)).elf --variant two-core \
+		$(RP2040SIM_ARGS_$(call ram_text_field,2,$(1))) --profile $(BUILD)/ram_text/$(call ram_text_field,1,$(1)).json >/dev/null
+
+endef
+.PHONY: ram-text-profile
+ram-text-profile: $(RP2040SIM_DEPS) $(foreach r,$(RAM_TEXT_PROFILE_RUNS),$(FW_OUT)/pico/$(call ram_text_field,1,$(r)).elf)
+	@mkdir -p $(BUILD)/ram_text
+	$(foreach r,$(RAM_TEXT_PROFILE_RUNS),$(call RAM_TEXT_PROFILE_RUN,$(r)))
+	$(Q)$(PYTHON) tools/rp2040_ram_text.py collect --out $(RAM_TEXT_DIR)/profile.tsv \
+		$(foreach r,$(RAM_TEXT_PROFILE_RUNS),$(BUILD)/ram_text/$(call ram_text_field,1,$(r)).json:$(FW_OUT)/pico/$(call ram_text_field,1,$(r)).map)
+	$(Q)$(PYTHON) tools/rp2040_ram_text.py ld $(RAM_TEXT_DIR)/profile.tsv --out $(RAM_TEXT_DIR)/ram_text_hot.ld
+TEST_NEEDS_test_ram_text := $(foreach i,cgfs-ili9341 cgfs-book cgfs-cube cgfs-rt,$(FW_OUT)/pico/$(i).elf)
+TEST_DEPS += $(TEST_NEEDS_test_ram_text)
+TESTS     += tests/system/test_ram_text.sh:$(BUILD)

@@ -51,6 +51,8 @@ class DualCore {
     this.core1Absent = !!opts.core1Absent;   /* tests: core 1 never answers the launch */
     /* flash stalls (xip.js): charged to the core whose instruction made them */
     this.xip = opts.xip || { charging: false, take() { return 0; } };
+    /* rp2040sim --profile (profile.js): each instruction's address and cycles */
+    this.prof = opts.prof || null;
     this.local = [0, 0];              /* each core's time, ns */
     this.launched = [true, false];
     this.fifo = [[], []];             /* fifo[i]: words for core i */
@@ -215,6 +217,24 @@ class DualCore {
     if (was && !c.waiting) this.local[i] = Math.max(this.local[i], this.mcu.clock.nanos);
   }
 
+  /* one instruction of core c: its cycles, flash stalls included */
+  step(c) {
+    const prof = this.prof;
+    this.xip.charging = true;
+    if (!prof) {
+      const cycles = c.executeInstruction();
+      this.xip.charging = false;
+      return cycles + this.xip.take();
+    }
+    const pc = c.PC;
+    prof.executing = prof.on;
+    const cycles = c.executeInstruction() + this.xip.take();
+    prof.executing = false;
+    this.xip.charging = false;
+    prof.exec(pc, cycles);
+    return cycles;
+  }
+
   /* Runs up to n instructions (or idle periods); returns false when both
    * cores sleep with nothing to wake them. */
   run(n) {
@@ -232,10 +252,8 @@ class DualCore {
           if (dt <= 0) return false;
           clock.tick(dt);
         } else {
-          this.xip.charging = true;
-          const cycles = c0.executeInstruction();
-          this.xip.charging = false;
-          clock.tick((cycles + this.xip.take()) * 1e9 / mcu.clkSys);
+          const cycles = this.step(c0);
+          clock.tick(cycles * 1e9 / mcu.clkSys);
         }
         this.local[0] = clock.nanos;
         continue;
@@ -256,10 +274,8 @@ class DualCore {
       const c = this.cores[i];
       this.cur = i;
       mcu.core = c;
-      this.xip.charging = true;
-      const cycles = c.executeInstruction();
-      this.xip.charging = false;
-      this.local[i] += (cycles + this.xip.take()) * 1e9 / mcu.clkSys / this.speed[i];
+      const cycles = this.step(c);
+      this.local[i] += cycles * 1e9 / mcu.clkSys / this.speed[i];
       /* the shared clock follows the earlier of the running cores */
       let t = Infinity;
       if (!c0.waiting) t = this.local[0];

@@ -100,6 +100,7 @@ const { DualCore } = require('./dualcore.js');
 const { XipCache, bootThroughBoot2 } = require('./xip.js');
 const { UartTx } = require('./uart.js');
 const { installVreg } = require('./vreg.js');
+const { Profile } = require('./profile.js');
 
 const FLASH_BASE = 0x10000000;
 
@@ -132,6 +133,7 @@ function parseArgs(argv) {
       case '--average': o.average = true; break;
       case '--numeric': o.numeric = val(); break;
       case '--variant': o.variant = val(); break;
+      case '--profile': o.profile = val(); break;
       case '--core1-absent': o.core1Absent = true; break;
       case '--watchdog-reset-at-frame': o.watchdogAt = Number(val()); if (!(o.watchdogAt >= 1)) usage('bad --watchdog-reset-at-frame'); break;
       case '--reset-core0-at-frame': o.resetCore0At = Number(val()); if (!(o.resetCore0At >= 1)) usage('bad --reset-core0-at-frame'); break;
@@ -144,6 +146,7 @@ function parseArgs(argv) {
   }
   if (!o.image) usage('--image FILE is required');
   if (o.average && !o.json) usage('--average needs --json');
+  if (o.profile && !/\.elf$/.test(o.image)) usage('--profile needs an ELF image');
   return o;
 }
 
@@ -220,9 +223,10 @@ function main() {
   loadImage(o.image, mcu.flash);
   installVreg(mcu);
   const xip = new XipCache(mcu);
+  const prof = o.profile ? new Profile(mcu, mcu.flash.length, mcu.sram.length) : null;
   const bootProblem = bootThroughBoot2(mcu);
   if (bootProblem) { process.stderr.write(`rp2040sim: ${o.image}: ${bootProblem}\n`); process.exit(1); }
-  dual = new DualCore(mcu, { core1Speed: o.core1Speed, xip, core1Absent: o.core1Absent });
+  dual = new DualCore(mcu, { core1Speed: o.core1Speed, xip, core1Absent: o.core1Absent, prof });
   /* UART0's transmit FIFO drains at the baud rate (uart.js); the time of an
    * access is the local time of the core making it */
   const uartTx = new UartTx(mcu, mcu.uart[0], () => dual.local[dual.cur]);
@@ -372,6 +376,7 @@ function main() {
     }
   }
   xip.configure();
+  if (prof) prof.on = true;
 
   const t0 = Date.now();
   const maxNs = o.maxCycles / cpuHz * 1e9;
@@ -471,6 +476,8 @@ function main() {
       }) + '\n');
     }
   }
+  if (prof) prof.write(o.profile, path.basename(o.image), fs.readFileSync(o.image), frames.length,
+    frames.reduce((a, f) => a + f.ns * cpuHz / 1e9, 0));
   if (o.outRaw) fs.writeFileSync(o.outRaw, rawLE(frames[frames.length - 1].px));
   const simS = (Date.now() - t0) / 1000;
   const torn = frames.filter((f) => f.passes > 1).length;

@@ -11,9 +11,13 @@
 
 /* Code of the fast path's inner loops: placed in SRAM where the board's
  * build asks for it (RAS_RAM_TEXT: the RP2040 runs from flash through a
- * 16 KB cache otherwise). */
-#if defined(RAS_RAM_TEXT) && (defined(__GNUC__) || defined(__clang__))
+ * 16 KB cache otherwise). RP2040_RAM_TEXT=raster (RP2040_RAM_TEXT_RASTER):
+ * all of them, in .ram_text; RP2040_RAM_TEXT=1: each in its own section,
+ * which the profile of the images places (firmware/board/rp2040/ram_text/on). */
+#if defined(RAS_RAM_TEXT) && defined(RP2040_RAM_TEXT_RASTER) && (defined(__GNUC__) || defined(__clang__))
 #define RAS_HOT __attribute__((section(".ram_text"), noinline))
+#elif defined(RAS_RAM_TEXT) && (defined(__GNUC__) || defined(__clang__))
+#define RAS_HOT __attribute__((noinline))
 #else
 #define RAS_HOT
 #endif

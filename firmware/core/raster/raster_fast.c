@@ -41,6 +41,14 @@ static inline int32_t fast_to_fix(num a, int32_t scale, int pow2)
 #endif
 }
 
+/* The least s with x >> s below 2^b (b < 32): x's bit length less b, from
+ * num_clz32 (on ARMv6-M its table: a dozen instructions, where the loop
+ * that shifts once a step took five a bit). */
+static inline int shift_below(uint32_t x, int b)
+{
+    return x >> b ? 32 - b - num_clz32(x) : 0;
+}
+
 /* Corner values c0..c2 of attribute j; 0 when they do not fit the
  * fast path's formats (the triangle then takes the exact path). */
 static int persp_attr(struct fpersp *p, int j, int32_t c0, int32_t c1, int32_t c2)
@@ -50,8 +58,7 @@ static int persp_attr(struct fpersp *p, int j, int32_t c0, int32_t c1, int32_t c
     int32_t e1 = c1 - c0, e2 = c2 - c0;
     uint32_t m1 = e1 < 0 ? (uint32_t)-e1 : (uint32_t)e1, m2 = e2 < 0 ? (uint32_t)-e2 : (uint32_t)e2;
     uint32_t m = m1 > m2 ? m1 : m2;
-    int sh = 0;
-    while ((m >> sh) >= (1u << 14)) sh++;
+    const int sh = shift_below(m, 14);
     if (sh > 16) return 0;
     p->at[j].a0 = c0;
     p->at[j].rs = 16 - sh;
@@ -435,21 +442,18 @@ static int fast_depth(const struct ras_sv *v0, const struct ras_sv *v1, const st
  * these corners (struct fpersp's t, area_t, dn, u). */
 static void persp_weights(struct fpersp *pp, const struct ras_sv *const vv[3], int32_t area)
 {
-    int tt = 0;
-    while ((area >> tt) >= (1 << 15)) tt++;
+    const int tt = shift_below((uint32_t)area, 15);
     pp->t = tt;
     pp->area_t = (uint32_t)(area >> tt);
     uint32_t dmax = vv[0]->depth;
     if (vv[1]->depth > dmax) dmax = vv[1]->depth;
     if (vv[2]->depth > dmax) dmax = vv[2]->depth;
-    int s = 0;
-    while ((dmax >> s) >= (1u << 16)) s++;
+    const int s = shift_below(dmax, 16);
     for (int i = 0; i < 3; i++) pp->dn[i] = vv[i]->depth >> s;
     uint32_t dnmax = pp->dn[0] > pp->dn[1] ? pp->dn[0] : pp->dn[1];
     if (pp->dn[2] > dnmax) dnmax = pp->dn[2];
     uint32_t smax = pp->area_t * dnmax;  /* < 2^31 */
-    pp->u = 0;
-    while ((smax >> pp->u) >= (1u << 15)) pp->u++;
+    pp->u = shift_below(smax, 15);
 }
 
 /* Fast Phong's attributes: normal (Q14) and camera-space position (Q(pq)). */

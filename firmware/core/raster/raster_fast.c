@@ -30,10 +30,16 @@
 
 /* ras_num_to_fix(a, scale), the same value: in fixed point its product
  * by the inline 32 x 32 -> 64 kernel, a power-of-two scale (the intensity's
- * 2^20) by a shift. */
+ * 2^20) by a shift; one of at least 2^NUM_FRAC leaves nothing to round:
+ * a 2^(pow2 - NUM_FRAC), saturated as ras_fix_round saturates, in 32 bits. */
 static inline int32_t fast_to_fix(num a, int32_t scale, int pow2)
 {
 #if NUM_MODE == NUM_MODE_FIXED
+    if (pow2 >= NUM_FRAC && pow2 - NUM_FRAC <= 30) {
+        const int k = pow2 - NUM_FRAC;
+        const int32_t lim = INT32_MAX >> k;
+        return a > lim ? INT32_MAX : (a < -lim ? -INT32_MAX : a * ((int32_t)1 << k));
+    }
     return ras_fix_round(pow2 ? (int64_t)a * ((int64_t)1 << pow2) : num_smul32(a, scale));
 #else
     (void)pow2;

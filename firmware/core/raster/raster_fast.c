@@ -47,6 +47,33 @@ static inline int32_t fast_to_fix(num a, int32_t scale, int pow2)
 #endif
 }
 
+#if NUM_MODE == NUM_MODE_FIXED
+/* k where scale = 2^W - c, c = scale & 1 (0 or 1) and k = W - NUM_FRAC lies
+ * in [0, 30] (a texture's scale: 2^(16 + its side's log2), less 1 where
+ * nearest); else -1. */
+static inline int scale_pow2_k(int32_t scale)
+{
+    const uint32_t s = (uint32_t)scale + ((uint32_t)scale & 1u);
+    if (scale <= 0 || (s & (s - 1u))) return -1;
+    const int k = 31 - num_clz32(s) - NUM_FRAC;
+    return k >= 0 && k <= 30 ? k : -1;
+}
+
+/* ras_fix_round(a * scale) for scale_pow2_k(scale) = k >= 0: with m = |a|
+ * and h = 2^(NUM_FRAC - 1), a 2^W - c a rounded is sign(a) (m 2^k +
+ * floor((h - c m) / 2^NUM_FRAC)) (m 2^W being a multiple of 2^NUM_FRAC), a
+ * sum in [0, INT32_MAX] where m <= INT32_MAX >> k (nothing to saturate):
+ * 32-bit values there, the 64-bit product and rounding elsewhere. */
+static inline int32_t fix_scale_k(num a, int32_t scale, int k)
+{
+    const uint32_t m = a < 0 ? 0u - (uint32_t)a : (uint32_t)a;
+    if (m > ((uint32_t)INT32_MAX >> k)) return ras_fix_round(num_smul32(a, scale));
+    const int32_t t = (int32_t)(1 << (NUM_FRAC - 1)) - (int32_t)((uint32_t)scale & 1u ? m : 0u);
+    const int32_t q = (int32_t)(m << k) + asr32(t, NUM_FRAC);
+    return a < 0 ? -q : q;
+}
+#endif
+
 /* The least s with x >> s below 2^b (b < 32): x's bit length less b, from
  * num_clz32 (on ARMv6-M its table: a dozen instructions, where the loop
  * that shifts once a step took five a bit). */
@@ -478,10 +505,19 @@ static int attrs_phong(struct fpersp *pp, int *na, const struct ras_sv *const vv
 static int attrs_uv(struct fpersp *pp, int *na, const struct ras_sv *const vv[3], const struct ras_fast_tri *ft)
 {
     int32_t u[3], v[3];
-    for (int i = 0; i < 3; i++) {
-        u[i] = fast_to_fix(vv[i]->a[ft->ai_uv], ft->uscale, 0);
-        v[i] = fast_to_fix(vv[i]->a[ft->ai_uv + 1], ft->vscale, 0);
-    }
+#if NUM_MODE == NUM_MODE_FIXED
+    const int ku = scale_pow2_k(ft->uscale), kv = scale_pow2_k(ft->vscale);
+    if (ku >= 0 && kv >= 0)
+        for (int i = 0; i < 3; i++) {
+            u[i] = fix_scale_k(vv[i]->a[ft->ai_uv], ft->uscale, ku);
+            v[i] = fix_scale_k(vv[i]->a[ft->ai_uv + 1], ft->vscale, kv);
+        }
+    else
+#endif
+        for (int i = 0; i < 3; i++) {
+            u[i] = fast_to_fix(vv[i]->a[ft->ai_uv], ft->uscale, 0);
+            v[i] = fast_to_fix(vv[i]->a[ft->ai_uv + 1], ft->vscale, 0);
+        }
     return persp_attr(pp, (*na)++, u[0], u[1], u[2]) && persp_attr(pp, (*na)++, v[0], v[1], v[2]);
 }
 

@@ -539,14 +539,15 @@ static int attrs_gouraud(struct fpersp *pp, int *na, const struct ras_sv *const 
         if (ft->kr * i12 < (31u << 22) + (1u << 21) - (1u << 16) &&
             ft->kg * i12 < (63u << 22) + (1u << 21) - (1u << 16) &&
             ft->kb * i12 < (31u << 22) + (1u << 21) - (1u << 16)) {
-            const uint32_t kc[3] = { ft->kr, ft->kg, ft->kb };
-            for (int c = 0; c < 3; c++) {
-                int32_t l[3];
-                for (int i = 0; i < 3; i++)   /* level in Q16 + 1/2: Q10 x Q12 >> 6 */
-                    l[i] = (int32_t)((kc[c] * ((uint32_t)li[i] >> 8) + (1u << 5)) >> 6) + (1 << 15);
-                if (!persp_attr(pp, (*na)++, l[0], l[1], l[2])) return 0;
-            }
-            return 1;
+            const uint32_t i0 = (uint32_t)li[0] >> 8, i1 = (uint32_t)li[1] >> 8, i2 = (uint32_t)li[2] >> 8;
+            /* level in Q16 + 1/2: Q10 x Q12 >> 6 */
+#define RAS_LEVEL(k, i) ((int32_t)(((k) * (i) + (1u << 5)) >> 6) + (1 << 15))
+            const int j = *na;
+            *na = j + 3;
+            return persp_attr(pp, j, RAS_LEVEL(ft->kr, i0), RAS_LEVEL(ft->kr, i1), RAS_LEVEL(ft->kr, i2)) &&
+                   persp_attr(pp, j + 1, RAS_LEVEL(ft->kg, i0), RAS_LEVEL(ft->kg, i1), RAS_LEVEL(ft->kg, i2)) &&
+                   persp_attr(pp, j + 2, RAS_LEVEL(ft->kb, i0), RAS_LEVEL(ft->kb, i1), RAS_LEVEL(ft->kb, i2));
+#undef RAS_LEVEL
         }
         *shade = SPAN_SHADE_LI;
     }

@@ -30,15 +30,56 @@
 
 /* ras_num_to_fix(a, scale), the same value: in fixed point its product
  * by the inline 32 x 32 -> 64 kernel, a power-of-two scale (the intensity's
- * 2^20) by a shift. */
+ * 2^20) by a shift; one of at least 2^NUM_FRAC leaves nothing to round:
+ * a 2^(pow2 - NUM_FRAC), saturated as ras_fix_round saturates, in 32 bits. */
 static inline int32_t fast_to_fix(num a, int32_t scale, int pow2)
 {
 #if NUM_MODE == NUM_MODE_FIXED
+    if (pow2 >= NUM_FRAC && pow2 - NUM_FRAC <= 30) {
+        const int k = pow2 - NUM_FRAC;
+        const int32_t lim = INT32_MAX >> k;
+        return a > lim ? INT32_MAX : (a < -lim ? -INT32_MAX : a * ((int32_t)1 << k));
+    }
     return ras_fix_round(pow2 ? (int64_t)a * ((int64_t)1 << pow2) : num_smul32(a, scale));
 #else
     (void)pow2;
     return ras_num_to_fix(a, scale);
 #endif
+}
+
+#if NUM_MODE == NUM_MODE_FIXED
+/* k where scale = 2^W - c, c = scale & 1 (0 or 1) and k = W - NUM_FRAC lies
+ * in [0, 30] (a texture's scale: 2^(16 + its side's log2), less 1 where
+ * nearest); else -1. */
+static inline int scale_pow2_k(int32_t scale)
+{
+    const uint32_t s = (uint32_t)scale + ((uint32_t)scale & 1u);
+    if (scale <= 0 || (s & (s - 1u))) return -1;
+    const int k = 31 - num_clz32(s) - NUM_FRAC;
+    return k >= 0 && k <= 30 ? k : -1;
+}
+
+/* ras_fix_round(a * scale) for scale_pow2_k(scale) = k >= 0: with m = |a|
+ * and h = 2^(NUM_FRAC - 1), a 2^W - c a rounded is sign(a) (m 2^k +
+ * floor((h - c m) / 2^NUM_FRAC)) (m 2^W being a multiple of 2^NUM_FRAC), a
+ * sum in [0, INT32_MAX] where m <= INT32_MAX >> k (nothing to saturate):
+ * 32-bit values there, the 64-bit product and rounding elsewhere. */
+static inline int32_t fix_scale_k(num a, int32_t scale, int k)
+{
+    const uint32_t m = a < 0 ? 0u - (uint32_t)a : (uint32_t)a;
+    if (m > ((uint32_t)INT32_MAX >> k)) return ras_fix_round(num_smul32(a, scale));
+    const int32_t t = (int32_t)(1 << (NUM_FRAC - 1)) - (int32_t)((uint32_t)scale & 1u ? m : 0u);
+    const int32_t q = (int32_t)(m << k) + asr32(t, NUM_FRAC);
+    return a < 0 ? -q : q;
+}
+#endif
+
+/* The least s with x >> s below 2^b (b < 32): x's bit length less b, from
+ * num_clz32 (on ARMv6-M its table: a dozen instructions, where the loop
+ * that shifts once a step took five a bit). */
+static inline int shift_below(uint32_t x, int b)
+{
+    return x >> b ? 32 - b - num_clz32(x) : 0;
 }
 
 /* Corner values c0..c2 of attribute j; 0 when they do not fit the
@@ -50,8 +91,7 @@ static int persp_attr(struct fpersp *p, int j, int32_t c0, int32_t c1, int32_t c
     int32_t e1 = c1 - c0, e2 = c2 - c0;
     uint32_t m1 = e1 < 0 ? (uint32_t)-e1 : (uint32_t)e1, m2 = e2 < 0 ? (uint32_t)-e2 : (uint32_t)e2;
     uint32_t m = m1 > m2 ? m1 : m2;
-    int sh = 0;
-    while ((m >> sh) >= (1u << 14)) sh++;
+    const int sh = shift_below(m, 14);
     if (sh > 16) return 0;
     p->at[j].a0 = c0;
     p->at[j].rs = 16 - sh;
@@ -435,21 +475,18 @@ static int fast_depth(const struct ras_sv *v0, const struct ras_sv *v1, const st
  * these corners (struct fpersp's t, area_t, dn, u). */
 static void persp_weights(struct fpersp *pp, const struct ras_sv *const vv[3], int32_t area)
 {
-    int tt = 0;
-    while ((area >> tt) >= (1 << 15)) tt++;
+    const int tt = shift_below((uint32_t)area, 15);
     pp->t = tt;
     pp->area_t = (uint32_t)(area >> tt);
     uint32_t dmax = vv[0]->depth;
     if (vv[1]->depth > dmax) dmax = vv[1]->depth;
     if (vv[2]->depth > dmax) dmax = vv[2]->depth;
-    int s = 0;
-    while ((dmax >> s) >= (1u << 16)) s++;
+    const int s = shift_below(dmax, 16);
     for (int i = 0; i < 3; i++) pp->dn[i] = vv[i]->depth >> s;
     uint32_t dnmax = pp->dn[0] > pp->dn[1] ? pp->dn[0] : pp->dn[1];
     if (pp->dn[2] > dnmax) dnmax = pp->dn[2];
     uint32_t smax = pp->area_t * dnmax;  /* < 2^31 */
-    pp->u = 0;
-    while ((smax >> pp->u) >= (1u << 15)) pp->u++;
+    pp->u = shift_below(smax, 15);
 }
 
 /* Fast Phong's attributes: normal (Q14) and camera-space position (Q(pq)). */
@@ -468,10 +505,19 @@ static int attrs_phong(struct fpersp *pp, int *na, const struct ras_sv *const vv
 static int attrs_uv(struct fpersp *pp, int *na, const struct ras_sv *const vv[3], const struct ras_fast_tri *ft)
 {
     int32_t u[3], v[3];
-    for (int i = 0; i < 3; i++) {
-        u[i] = fast_to_fix(vv[i]->a[ft->ai_uv], ft->uscale, 0);
-        v[i] = fast_to_fix(vv[i]->a[ft->ai_uv + 1], ft->vscale, 0);
-    }
+#if NUM_MODE == NUM_MODE_FIXED
+    const int ku = scale_pow2_k(ft->uscale), kv = scale_pow2_k(ft->vscale);
+    if (ku >= 0 && kv >= 0)
+        for (int i = 0; i < 3; i++) {
+            u[i] = fix_scale_k(vv[i]->a[ft->ai_uv], ft->uscale, ku);
+            v[i] = fix_scale_k(vv[i]->a[ft->ai_uv + 1], ft->vscale, kv);
+        }
+    else
+#endif
+        for (int i = 0; i < 3; i++) {
+            u[i] = fast_to_fix(vv[i]->a[ft->ai_uv], ft->uscale, 0);
+            v[i] = fast_to_fix(vv[i]->a[ft->ai_uv + 1], ft->vscale, 0);
+        }
     return persp_attr(pp, (*na)++, u[0], u[1], u[2]) && persp_attr(pp, (*na)++, v[0], v[1], v[2]);
 }
 
@@ -493,14 +539,15 @@ static int attrs_gouraud(struct fpersp *pp, int *na, const struct ras_sv *const 
         if (ft->kr * i12 < (31u << 22) + (1u << 21) - (1u << 16) &&
             ft->kg * i12 < (63u << 22) + (1u << 21) - (1u << 16) &&
             ft->kb * i12 < (31u << 22) + (1u << 21) - (1u << 16)) {
-            const uint32_t kc[3] = { ft->kr, ft->kg, ft->kb };
-            for (int c = 0; c < 3; c++) {
-                int32_t l[3];
-                for (int i = 0; i < 3; i++)   /* level in Q16 + 1/2: Q10 x Q12 >> 6 */
-                    l[i] = (int32_t)((kc[c] * ((uint32_t)li[i] >> 8) + (1u << 5)) >> 6) + (1 << 15);
-                if (!persp_attr(pp, (*na)++, l[0], l[1], l[2])) return 0;
-            }
-            return 1;
+            const uint32_t i0 = (uint32_t)li[0] >> 8, i1 = (uint32_t)li[1] >> 8, i2 = (uint32_t)li[2] >> 8;
+            /* level in Q16 + 1/2: Q10 x Q12 >> 6 */
+#define RAS_LEVEL(k, i) ((int32_t)(((k) * (i) + (1u << 5)) >> 6) + (1 << 15))
+            const int j = *na;
+            *na = j + 3;
+            return persp_attr(pp, j, RAS_LEVEL(ft->kr, i0), RAS_LEVEL(ft->kr, i1), RAS_LEVEL(ft->kr, i2)) &&
+                   persp_attr(pp, j + 1, RAS_LEVEL(ft->kg, i0), RAS_LEVEL(ft->kg, i1), RAS_LEVEL(ft->kg, i2)) &&
+                   persp_attr(pp, j + 2, RAS_LEVEL(ft->kb, i0), RAS_LEVEL(ft->kb, i1), RAS_LEVEL(ft->kb, i2));
+#undef RAS_LEVEL
         }
         *shade = SPAN_SHADE_LI;
     }

@@ -381,7 +381,11 @@ FW_ST_IMAGES := $(FW_OUT)/stm32f411/cgfs.bin $(FW_OUT)/stm32f411/cgfs-fixed.bin
 firmware-stm32f411: deps-firmware
 	$(Q)$(MAKE) --no-print-directory $(FW_ST_IMAGES)
 
-firmware: firmware-pico firmware-stm32f411
+# One make builds both boards' images: two recursive makes side by side would
+# each build the host tools the images need (scenec, the core bundles) and
+# race on the same files.
+firmware: deps-firmware
+	$(Q)$(MAKE) --no-print-directory $(FW_RP_IMAGES) $(FW_ST_IMAGES)
 	$(Q)$(ARM_SIZE) $(FW_RP_IMAGES:.uf2=.elf) $(FW_ST_IMAGES:.bin=.elf) $(FW_EXTRA_ELFS)
 	@echo "RAM, flash and renderer code each compiled scene needs (240x240, 16-row strips; tools/scenec):"
 	$(Q)$(MAKE) --no-print-directory scenes-report

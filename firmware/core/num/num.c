@@ -9,6 +9,17 @@
 
 uint32_t num_saturations;
 
+/* Leading zeros of a byte (num_clz32 without CLZ, every numeric mode: the
+ * fast rasterizer's integer set-up uses it in the float builds too). */
+#define CLZ2(v) v, v
+#define CLZ4(v) CLZ2(v), CLZ2(v)
+#define CLZ8(v) CLZ4(v), CLZ4(v)
+#define CLZ16(v) CLZ8(v), CLZ8(v)
+#define CLZ32(v) CLZ16(v), CLZ16(v)
+#define CLZ64(v) CLZ32(v), CLZ32(v)
+#define CLZ128(v) CLZ64(v), CLZ64(v)
+const uint8_t num_clz8_tab[256] = { 8, 7, CLZ2(6), CLZ4(5), CLZ8(4), CLZ16(3), CLZ32(2), CLZ64(1), CLZ128(0) };
+
 #if NUM_MODE == NUM_MODE_FIXED
 
 #include "num_fix.h"
@@ -44,14 +55,6 @@ static num sat64(int64_t v)
 #define RCP4(i) RCP(i), RCP((i) + 1), RCP((i) + 2), RCP((i) + 3)
 #define RCP16(i) RCP4(i), RCP4((i) + 4), RCP4((i) + 8), RCP4((i) + 12)
 #define RCP64(i) RCP16(i), RCP16((i) + 16), RCP16((i) + 32), RCP16((i) + 48)
-#define CLZ2(v) v, v
-#define CLZ4(v) CLZ2(v), CLZ2(v)
-#define CLZ8(v) CLZ4(v), CLZ4(v)
-#define CLZ16(v) CLZ8(v), CLZ8(v)
-#define CLZ32(v) CLZ16(v), CLZ16(v)
-#define CLZ64(v) CLZ32(v), CLZ32(v)
-#define CLZ128(v) CLZ64(v), CLZ64(v)
-const uint8_t num_clz8_tab[256] = { 8, 7, CLZ2(6), CLZ4(5), CLZ8(4), CLZ16(3), CLZ32(2), CLZ64(1), CLZ128(0) };
 
 static const uint16_t rcp_seed[256] = { RCP64(0), RCP64(64), RCP64(128), RCP64(192) };
 

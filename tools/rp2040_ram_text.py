@@ -51,8 +51,12 @@ CODE = re.compile(r"\.(text|rodata)(\.|$)")     # code and constant tables (not 
 CLONE = re.compile(r"(\.(?:isra|constprop|part|lto_priv)\.\d+)+$")
 # the objects placed by the profile: the renderer core, the application and
 # the panel drivers, the board's code (not crt0.o: the reset handler runs
-# before .data is copied)
-CORE = re.compile(r"(?:^|/)((?:firmware/core|firmware/app|hal)/\S+\.o|firmware/board/rp2040/(?:board|fw_board_rp2040)\.o)$")
+# before .data is copied; not scenes_builtin.o, the placeholder table of the
+# images without scenes: an image's scenes keep their const data in flash,
+# and `make image` sizes its SRAM from the placeholder image, so the two
+# must place the same)
+CORE = re.compile(r"(?:^|/)((?:firmware/core|firmware/app|hal)/(?!scenes_builtin\.o$)\S+\.o"
+                  r"|firmware/board/rp2040/(?:board|fw_board_rp2040)\.o)$")
 SECTION = re.compile(r"^ (\.[^\s]+)(?:\s+0x([0-9a-f]+)\s+0x([0-9a-f]+)\s+(\S+))?\s*$")
 CONT = re.compile(r"^\s+0x([0-9a-f]+)\s+0x([0-9a-f]+)\s+(\S+)\s*$")
 

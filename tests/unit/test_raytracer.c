@@ -451,6 +451,29 @@ static double urand(uint32_t *st)
     return (double)(*st >> 8) / 16777216.0;
 }
 
+/* rt_book(5)'s settings (lights, epsilon, depth) over the caller's n
+ * objects, robust formulation, no CSG; *save keeps the scene to restore. */
+static struct scene *probe_spheres_scene(struct rt_object *o, int n, struct scene *save)
+{
+    struct scene *s = rt_book(5);
+    *save = *s;
+    s->objects = o;
+    s->nobjects = n;
+    s->ncsg = 0;
+    s->rt.formulation = 2;
+    return s;
+}
+
+/* o[0] a sphere of radius r at a random centre c in a 40-unit box. */
+static void random_sphere(struct rt_object *o, double r, double c[3], uint32_t *st)
+{
+    for (int i = 0; i < 3; i++) c[i] = (urand(st) - 0.5) * 40;
+    memset(o, 0, sizeof *o);
+    o[0].shape = RT_SPHERE;
+    o[0].center = v3_make(num_from_double(c[0]), num_from_double(c[1]), num_from_double(c[2]));
+    o[0].radius = num_from_double(r);
+}
+
 /* The primary rays' candidate lists change no pixel: raytracer-02's four
  * spheres moved to random places and sizes (0.02 .. 3, and now and then a
  * ground-sized one), seen from random turned cameras, plain, supersampled
@@ -555,23 +578,15 @@ static void test_row_intervals(void)
 static void test_coarse_rejection(void)
 {
     static struct rt_object o[2];
-    struct scene *s = rt_book(5);
-    struct scene save = *s;
-    s->objects = o;
-    s->nobjects = 2;
-    s->ncsg = 0;
-    s->rt.formulation = 2;
+    struct scene save;
+    struct scene *s = probe_spheres_scene(o, 2, &save);
     struct probe_ctx p;
     uint32_t st = 12345;
     long wrong = 0, rejected = 0, total = 0, negwrong = 0, negclaims = 0;
     for (int round = 0; round < 60; round++) {
         double r = exp(log(0.01) + urand(&st) * (log(5000.0) - log(0.01)));
         double c[3];
-        for (int i = 0; i < 3; i++) c[i] = (urand(&st) - 0.5) * 40;
-        memset(o, 0, sizeof o);
-        o[0].shape = RT_SPHERE;
-        o[0].center = v3_make(num_from_double(c[0]), num_from_double(c[1]), num_from_double(c[2]));
-        o[0].radius = num_from_double(r);
+        random_sphere(o, r, c, &st);
         o[1] = o[0];
         struct rt_state *rt = open_state(&p, s);
         if (!rt) break;
@@ -711,12 +726,8 @@ static void test_coarse_rejection(void)
 static void test_self_shadow(void)
 {
     static struct rt_object o[1];
-    struct scene *s = rt_book(5);
-    struct scene save = *s;
-    s->objects = o;
-    s->nobjects = 1;
-    s->ncsg = 0;
-    s->rt.formulation = 2;
+    struct scene save;
+    struct scene *s = probe_spheres_scene(o, 1, &save);
     struct probe_ctx p;
     uint32_t st = 777;
     long wrong = 0, claims = 0, tried = 0;
@@ -725,11 +736,7 @@ static void test_self_shadow(void)
         double r = round % 5 == 0 ? ldexp(1.0, (int)(urand(&st) * 12) - 4)
                                   : exp(log(0.01) + urand(&st) * (log(5000.0) - log(0.01)));
         double c[3];
-        for (int i = 0; i < 3; i++) c[i] = (urand(&st) - 0.5) * 40;
-        memset(o, 0, sizeof o);
-        o[0].shape = RT_SPHERE;
-        o[0].center = v3_make(num_from_double(c[0]), num_from_double(c[1]), num_from_double(c[2]));
-        o[0].radius = num_from_double(r);
+        random_sphere(o, r, c, &st);
         s->rt.epsilon = num_from_double(epss[round % 4]);
         struct rt_state *rt = open_state(&p, s);
         if (!rt) break;

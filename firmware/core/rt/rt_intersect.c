@@ -792,6 +792,15 @@ static inline int64_t rt_s128_shr(struct rt_s128 x, int s)
     return (int64_t)lo;
 }
 
+/* n / d truncated toward zero as C divides int64_t (d != 0), by the
+ * 32-bit division when both lie in (-2^31, 2^31): the same quotient
+ * without the 64-bit division's library call. */
+static inline int64_t rt_div64_narrow(int64_t n, int64_t d)
+{
+    if (n > INT32_MIN && n <= INT32_MAX && d > INT32_MIN && d <= INT32_MAX) return (int32_t)n / (int32_t)d;
+    return n / d;
+}
+
 /* g(k) <= 0 and the condition on its slope (side < 0: A (2k - 1) + 2B >= 0,
  * every k' <= k at or below; side > 0: A (2k + 1) + 2B <= 0, every k' >= k). */
 static RT_NOINLINE int rt_iv_proven(const struct rt_ivsphere *iv, struct rt_s128 b2, struct rt_s128 c, int32_t k, int side)
@@ -861,11 +870,11 @@ int rt_iv_row(const struct rt_ivsphere *iv, wnum c, num y, num z, wnum yz, int32
     int64_t disc = (bs / 2) * (bs / 2) - as * cs;
     int64_t kl, kr;
     if (disc < 0) {
-        kl = kr = (bs / 2) / -as;
+        kl = kr = rt_div64_narrow(bs / 2, -as);
     } else {
         int64_t h = (int64_t)num_isqrt64((uint64_t)disc, 0);
-        kl = (-(bs / 2) + h) / as - 1;
-        kr = (-(bs / 2) - h) / as + 1;
+        kl = rt_div64_narrow(-(bs / 2) + h, as) - 1;
+        kr = rt_div64_narrow(-(bs / 2) - h, as) + 1;
     }
     int32_t l = kmin, r = kmax;
     if (kl >= kmin) {

@@ -598,12 +598,14 @@ static int closest_prim(struct rt_state *rt, struct rt_ray *ray, num t_min, num 
      * its unturned exact direction (dxm = H, dxrow its row) and the
      * per-frame constants in use (exact_dir, row_iv in rt_trace.c). */
     const int lean = NUM_MODE == NUM_MODE_FIXED;
+    /* every item a plain sphere: no item's shape to look up */
+    const int sph = rt->all_spheres;
     /* the background run's last column (rt_state.bg_*): the tile's last
      * one (its list), then before every later interval */
     int16_t run = rt->prim_items ? (int16_t)(col / RT_TILE * RT_TILE + RT_TILE - 1) : INT16_MAX;
     for (uint16_t i = 0; i < nitems; i++) {
         int16_t item = items[i];
-        if (item < nobj && objs[item].shape == RT_SPHERE) {
+        if (sph || (item < nobj && objs[item].shape == RT_SPHERE)) {
             tests++;
             int16_t *e = iv + 2 * item;
             if (e[0] == RT_IV_TODO) rt_row_interval(rt, item, e);

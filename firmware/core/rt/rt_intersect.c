@@ -631,6 +631,10 @@ static int closest_prim(struct rt_state *rt, struct rt_ray *ray, num t_min, num 
     }
     rt->n.tests += tests;
     if (!tried) {
+        /* an empty list: the run goes on through the tiles after it whose
+         * lists are empty too (their rays test nothing either) */
+        if (nitems == 0 && rt->prim_items)
+            for (unsigned tc = (unsigned)col / RT_TILE + 1; tc < rt->ntc && rt->tile_n[tc] == 0; tc++) run += RT_TILE;
         /* every candidate's interval leaves this column out: so it does for
          * the columns up to run, the pixels' background (rt_trace_pixel) */
         rt->bg_row = ray->dxrow;

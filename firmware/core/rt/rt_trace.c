@@ -203,12 +203,10 @@ static vec3 pixel_to_viewport(struct rt_state *rt, int col, int row)
  * behind every ray (the robust test's early-out, c > 0 and b <= 0). The lists keep the book's
  * order, so ties go as without them: the image is the same bits. */
 
-/* Viewport direction of integer canvas point (x, y), as the pixels' own. */
-static vec3 canvas_dir(const struct rt_state *rt, int x, int y)
-{
-    return rotate_direction(rt, v3_make(num_div(num_mul(num_from_int(x), rt->vw), rt->wn),
-                                        num_div(num_mul(num_from_int(y), rt->vh), rt->hn), rt->d));
-}
+/* The viewport x and y of integer canvas coordinates, as the pixels' own;
+ * canvas_dir's direction of (x, y) is rotate_direction of (x, y, d). */
+static num canvas_vx(const struct rt_state *rt, int x) { return num_div(num_mul(num_from_int(x), rt->vw), rt->wn); }
+static num canvas_vy(const struct rt_state *rt, int y) { return num_div(num_mul(num_from_int(y), rt->vh), rt->hn); }
 
 /* 1 when every line from the camera within hh of direction dc (length
  * dclen) certainly misses sphere o, whose per-frame constants are oc (CO
@@ -249,10 +247,12 @@ static RT_NOINLINE void tile_lists(struct rt_state *rt, int32_t tr)
 {
     const struct scene *s = rt->s;
     int r0 = tile_first_row(tr) - 1, r1 = tile_last_row(tr) + 1;
-    int y0 = rt->h / 2 - 1 - r0, y1 = rt->h / 2 - 1 - r1;
+    /* the corners' viewport y once for the tile row, x once a tile */
+    num vy0 = canvas_vy(rt, rt->h / 2 - 1 - r0), vy1 = canvas_vy(rt, rt->h / 2 - 1 - r1);
     for (uint16_t tc = 0; tc < rt->ntc; tc++) {
-        int x0 = tc * RT_TILE - 1 - rt->w / 2, x1 = tc * RT_TILE + RT_TILE - rt->w / 2;
-        vec3 k[4] = { canvas_dir(rt, x0, y0), canvas_dir(rt, x1, y0), canvas_dir(rt, x0, y1), canvas_dir(rt, x1, y1) };
+        num vx0 = canvas_vx(rt, tc * RT_TILE - 1 - rt->w / 2), vx1 = canvas_vx(rt, tc * RT_TILE + RT_TILE - rt->w / 2);
+        vec3 k[4] = { rotate_direction(rt, v3_make(vx0, vy0, rt->d)), rotate_direction(rt, v3_make(vx1, vy0, rt->d)),
+                      rotate_direction(rt, v3_make(vx0, vy1, rt->d)), rotate_direction(rt, v3_make(vx1, vy1, rt->d)) };
         vec3 dc = v3_scale(v3_add(v3_add(k[0], k[1]), v3_add(k[2], k[3])), NUM_C(0.25));
         num dclen = v3_len(dc), hh = NUM_ZERO;
         for (int i = 0; i < 4; i++) hh = num_max(hh, v3_len(v3_sub(k[i], dc)));

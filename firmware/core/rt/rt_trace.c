@@ -105,7 +105,7 @@ static rgb trace_ray(struct rt_state *rt, struct rt_ray *ray, num t_min, num t_m
     } else {
         /* (P - C) / r of a sphere: |N| = 1 up to rounding (the book
          * formulation normalises its own way) */
-        int unit_n = !rt->book && s->objects[hit.surf].shape == RT_SPHERE;
+        int unit_n = !rt->book && (rt->all_spheres || s->objects[hit.surf].shape == RT_SPHERE);
         num i = rt_compute_lighting(rt, p, n, unit_n, v, m->specular, rt->oc[mo].spec_zero, hit.surf,
                                     prim ? &prim->shadow : NULL);
         local = colour_scale(s, m->color, i);

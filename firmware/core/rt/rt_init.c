@@ -168,6 +168,9 @@ int rt_init(void *work, size_t work_size, const struct scene *s, uint16_t width,
     for (uint16_t i = 0; i < s->nobjects; i++)
         if (!s->objects[i].csg_only) rt->items[rt->nitems++] = (int16_t)i;
     for (uint16_t k = 0; k < s->ncsg; k++) rt->items[rt->nitems++] = (int16_t)(s->nobjects + k);
+    rt->all_spheres = 1;
+    for (uint16_t i = 0; i < rt->nitems; i++)
+        if (rt->items[i] >= (int16_t)s->nobjects || s->objects[rt->items[i]].shape != RT_SPHERE) rt->all_spheres = 0;
     for (uint16_t k = 0; k < s->nlights; k++) rt->occluder[k] = -1;
     init_viewport(rt);
     rt->cam_pos = s->camera.position;

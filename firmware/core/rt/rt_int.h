@@ -183,6 +183,7 @@ struct rt_state {
     uint16_t *tile_n;            /* ntc */
     uint16_t ntc;
     uint8_t tiles;               /* lists in use (shortcuts, no hierarchy) */
+    uint8_t all_spheres;         /* every drawn item a plain sphere (rt_init) */
     int32_t tile_row;            /* tile row the lists hold (-1: none) */
     const int16_t *prim_items;   /* the traced primary ray's list (NULL: every item) */
     uint16_t prim_n;

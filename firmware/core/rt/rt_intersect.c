@@ -609,12 +609,14 @@ static int closest_prim(struct rt_state *rt, struct rt_ray *ray, num t_min, num 
      * its unturned exact direction (dxm = H, dxrow its row) and the
      * per-frame constants in use (exact_dir, row_iv in rt_trace.c). */
     const int lean = NUM_MODE == NUM_MODE_FIXED;
+    /* every item a plain sphere: no item's shape to look up */
+    const int sph = rt->all_spheres;
     /* the background run's last column (rt_state.bg_*): the tile's last
      * one (its list), then before every later interval */
     int16_t run = rt->prim_items ? (int16_t)(col / RT_TILE * RT_TILE + RT_TILE - 1) : INT16_MAX;
     for (uint16_t i = 0; i < nitems; i++) {
         int16_t item = items[i];
-        if (item < nobj && objs[item].shape == RT_SPHERE) {
+        if (sph || (item < nobj && objs[item].shape == RT_SPHERE)) {
             tests++;
             int16_t *e = iv + 2 * item;
             if (e[0] == RT_IV_TODO) rt_row_interval(rt, item, e);
@@ -640,6 +642,10 @@ static int closest_prim(struct rt_state *rt, struct rt_ray *ray, num t_min, num 
     }
     rt->n.tests += tests;
     if (!tried) {
+        /* an empty list: the run goes on through the tiles after it whose
+         * lists are empty too (their rays test nothing either) */
+        if (nitems == 0 && rt->prim_items)
+            for (unsigned tc = (unsigned)col / RT_TILE + 1; tc < rt->ntc && rt->tile_n[tc] == 0; tc++) run += RT_TILE;
         /* every candidate's interval leaves this column out: so it does for
          * the columns up to run, the pixels' background (rt_trace_pixel) */
         rt->bg_row = ray->dxrow;
@@ -872,6 +878,15 @@ static RT_NOINLINE int turn_touch(const struct rt_state *rt, vec3 co, const stru
     return 1;
 }
 
+/* n / d truncated toward zero as C divides int64_t (d != 0), by the
+ * 32-bit division when both lie in (-2^31, 2^31): the same quotient
+ * without the 64-bit division's library call. */
+static inline int64_t rt_div64_narrow(int64_t n, int64_t d)
+{
+    if (n > INT32_MIN && n <= INT32_MAX && d > INT32_MIN && d <= INT32_MAX) return (int32_t)n / (int32_t)d;
+    return n / d;
+}
+
 /* g(k) <= 0 and the condition on its slope (side < 0: A (2k - 1) + 2B >= 0,
  * every k' <= k at or below; side > 0: A (2k + 1) + 2B <= 0, every k' >= k). */
 static RT_NOINLINE int rt_iv_proven(const struct rt_ivsphere *iv, struct rt_s128 b2, struct rt_s128 c, int32_t k, int side)
@@ -941,11 +956,11 @@ int rt_iv_row(const struct rt_ivsphere *iv, wnum c, num y, num z, wnum yz, int32
     int64_t disc = (bs / 2) * (bs / 2) - as * cs;
     int64_t kl, kr;
     if (disc < 0) {
-        kl = kr = (bs / 2) / -as;
+        kl = kr = rt_div64_narrow(bs / 2, -as);
     } else {
         int64_t h = (int64_t)num_isqrt64((uint64_t)disc, 0);
-        kl = (-(bs / 2) + h) / as - 1;
-        kr = (-(bs / 2) - h) / as + 1;
+        kl = rt_div64_narrow(-(bs / 2) + h, as) - 1;
+        kr = rt_div64_narrow(-(bs / 2) - h, as) + 1;
     }
     int32_t l = kmin, r = kmax;
     if (kl >= kmin) {

@@ -105,7 +105,7 @@ static rgb trace_ray(struct rt_state *rt, struct rt_ray *ray, num t_min, num t_m
     } else {
         /* (P - C) / r of a sphere: |N| = 1 up to rounding (the book
          * formulation normalises its own way) */
-        int unit_n = !rt->book && s->objects[hit.surf].shape == RT_SPHERE;
+        int unit_n = !rt->book && (rt->all_spheres || s->objects[hit.surf].shape == RT_SPHERE);
         num i = rt_compute_lighting(rt, p, n, unit_n, v, m->specular, rt->oc[mo].spec_zero, hit.surf,
                                     prim ? &prim->shadow : NULL);
         local = colour_scale(s, m->color, i);
@@ -203,25 +203,32 @@ static vec3 pixel_to_viewport(struct rt_state *rt, int col, int row)
  * behind every ray (the robust test's early-out, c > 0 and b <= 0). The lists keep the book's
  * order, so ties go as without them: the image is the same bits. */
 
-/* Viewport direction of integer canvas point (x, y), as the pixels' own. */
-static vec3 canvas_dir(const struct rt_state *rt, int x, int y)
+/* The viewport x and y of integer canvas coordinates, as the pixels' own;
+ * canvas_dir's direction of (x, y) is rotate_direction of (x, y, d). */
+static num canvas_vx(const struct rt_state *rt, int x) { return num_div(num_mul(num_from_int(x), rt->vw), rt->wn); }
+static num canvas_vy(const struct rt_state *rt, int y) { return num_div(num_mul(num_from_int(y), rt->vh), rt->hn); }
+
+/* A sphere's |CO| and margin for tile_misses (the same for every tile of
+ * the frame): 0 when it is not tested (kept in every list). */
+static int tile_sphere(const struct rt_object *o, const struct rt_obj_cache *oc, num *colen, num *eps)
 {
-    return rotate_direction(rt, v3_make(num_div(num_mul(num_from_int(x), rt->vw), rt->wn),
-                                        num_div(num_mul(num_from_int(y), rt->vh), rt->hn), rt->d));
+    /* r + |CO| + 1 below NUM_MAX: rt_tile_eps's sum and r + eps hold */
+    if (o->radius < NUM_C(1.0 / 64) || o->radius >= NUM_MAX / 2) return 0;
+    *colen = v3_len(oc->co_cam);
+    if (*colen >= NUM_MAX / 2 || num_add(o->radius, *colen) >= num_sub(NUM_MAX, NUM_ONE)) return 0;
+    *eps = rt_tile_eps(o->radius, *colen);
+    return 1;
 }
 
 /* 1 when every line from the camera within hh of direction dc (length
  * dclen) certainly misses sphere o, whose per-frame constants are oc (CO
- * and c as the sphere test takes them). Saturation only ever lowers
- * |CO x Dc| (a lower bound stays one); the right side is kept far from it. */
-static int tile_misses(const struct rt_object *o, const struct rt_obj_cache *oc, vec3 dc, num dclen, num hh)
+ * and c as the sphere test takes them) and colen, eps (tile_sphere).
+ * Saturation only ever lowers |CO x Dc| (a lower bound stays one); the
+ * right side is kept far from it. */
+static int tile_misses(const struct rt_object *o, const struct rt_obj_cache *oc, num colen, num eps, vec3 dc,
+                       num dclen, num hh)
 {
-    /* r + |CO| + 1 below NUM_MAX: rt_tile_eps's sum and r + eps hold */
-    if (o->radius < NUM_C(1.0 / 64) || o->radius >= NUM_MAX / 2) return 0;
     vec3 co = oc->co_cam;
-    num colen = v3_len(co);
-    if (colen >= NUM_MAX / 2 || num_add(o->radius, colen) >= num_sub(NUM_MAX, NUM_ONE)) return 0;
-    num eps = rt_tile_eps(o->radius, colen);
     /* the rounding of the lengths and products below: 2^-10 and 16 ulps */
     wnum ulp16 = wnum_from_num(16 * NUM_EPS), rel = wnum_from_num(NUM_C(1.0 / 1024));
     wnum sweep = num_mul_wide(colen, hh);
@@ -231,6 +238,10 @@ static int tile_misses(const struct rt_object *o, const struct rt_obj_cache *oc,
     rhs = wnum_add(rhs, wnum_add(wnum_mul(rhs, rel), ulp16));
     return wnum_from_num(v3_len(v3_cross(co, dc))) > rhs;
 }
+
+/* tile_lists keeps tile_sphere's forms of the first items for the whole
+ * tile row (the others are formed again a tile) */
+#define TILE_KEPT 8
 
 /* The rows tile row tr's lists serve (RT_TILE in rt_int.h). */
 static int tile_first_row(int32_t tr) { return tr * RT_TILE; }
@@ -249,10 +260,19 @@ static RT_NOINLINE void tile_lists(struct rt_state *rt, int32_t tr)
 {
     const struct scene *s = rt->s;
     int r0 = tile_first_row(tr) - 1, r1 = tile_last_row(tr) + 1;
-    int y0 = rt->h / 2 - 1 - r0, y1 = rt->h / 2 - 1 - r1;
+    /* the corners' viewport y once for the tile row, x once a tile */
+    num vy0 = canvas_vy(rt, rt->h / 2 - 1 - r0), vy1 = canvas_vy(rt, rt->h / 2 - 1 - r1);
+    num colen[TILE_KEPT], eps[TILE_KEPT];
+    uint8_t tested[TILE_KEPT];
+    for (uint16_t i = 0; i < rt->nitems && i < TILE_KEPT; i++) {
+        int16_t item = rt->items[i];
+        tested[i] = item < (int16_t)s->nobjects && s->objects[item].shape == RT_SPHERE &&
+                    tile_sphere(&s->objects[item], &rt->oc[item], &colen[i], &eps[i]);
+    }
     for (uint16_t tc = 0; tc < rt->ntc; tc++) {
-        int x0 = tc * RT_TILE - 1 - rt->w / 2, x1 = tc * RT_TILE + RT_TILE - rt->w / 2;
-        vec3 k[4] = { canvas_dir(rt, x0, y0), canvas_dir(rt, x1, y0), canvas_dir(rt, x0, y1), canvas_dir(rt, x1, y1) };
+        num vx0 = canvas_vx(rt, tc * RT_TILE - 1 - rt->w / 2), vx1 = canvas_vx(rt, tc * RT_TILE + RT_TILE - rt->w / 2);
+        vec3 k[4] = { rotate_direction(rt, v3_make(vx0, vy0, rt->d)), rotate_direction(rt, v3_make(vx1, vy0, rt->d)),
+                      rotate_direction(rt, v3_make(vx0, vy1, rt->d)), rotate_direction(rt, v3_make(vx1, vy1, rt->d)) };
         vec3 dc = v3_scale(v3_add(v3_add(k[0], k[1]), v3_add(k[2], k[3])), NUM_C(0.25));
         num dclen = v3_len(dc), hh = NUM_ZERO;
         for (int i = 0; i < 4; i++) hh = num_max(hh, v3_len(v3_sub(k[i], dc)));
@@ -262,9 +282,17 @@ static RT_NOINLINE void tile_lists(struct rt_state *rt, int32_t tr)
         uint16_t n = 0;
         for (uint16_t i = 0; i < rt->nitems; i++) {
             int16_t item = rt->items[i];
-            if (item < (int16_t)s->nobjects && s->objects[item].shape == RT_SPHERE &&
-                tile_misses(&s->objects[item], &rt->oc[item], dc, dclen, hh))
-                continue;
+            num cl = NUM_ZERO, ep = NUM_ZERO;
+            int t;
+            if (i < TILE_KEPT) {
+                t = tested[i];
+                cl = colen[i];
+                ep = eps[i];
+            } else {
+                t = item < (int16_t)s->nobjects && s->objects[item].shape == RT_SPHERE &&
+                    tile_sphere(&s->objects[item], &rt->oc[item], &cl, &ep);
+            }
+            if (t && tile_misses(&s->objects[item], &rt->oc[item], cl, ep, dc, dclen, hh)) continue;
             list[n++] = item;
         }
         rt->tile_n[tc] = n;

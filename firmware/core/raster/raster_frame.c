@@ -185,6 +185,19 @@ static void instance_vertices(const struct ras_ctx *rc, uint16_t i, uint32_t k0,
         /* the default path's vertices of an instance whose transform
          * cannot saturate, every one inside every plane where ri->vin */
         const int tested = !ri->vin, sp = ri->vsplit;
+        if (sp) {
+            /* the transform 16 points at a time */
+            vec3 cb[16];
+            for (uint32_t k = k0; k < k1; k += 16) {
+                const uint32_t n = k1 - k < 16 ? k1 - k : 16;
+                ras_mul_points_fit_split(&ri->m, &m->verts[k], cb, n, sp);
+                if (rc->verts)
+                    for (uint32_t j = 0; j < n; j++) rc->verts[vb + k + j].c = cb[j];
+                for (uint32_t j = 0; j < n; j++)
+                    store_pv(&kp, &rc->def.pv[vb + k + j], cb[j], ri->visible && (!tested || ras_point_inside(rc, cb[j])));
+            }
+            return;
+        }
         for (uint32_t k = k0; k < k1; k++) {
             const vec3 c = sp ? ras_mul_point_fit_split(&ri->m, m->verts[k], sp) : ras_mul_point_fit(&ri->m, m->verts[k]);
             if (rc->verts) rc->verts[vb + k].c = c;

@@ -352,8 +352,62 @@ static inline int32_t mul_split(int32_t e, int32_t ah, int32_t al, int s, int fs
     return (e * ah + ((e * al + ((int32_t)1 << (NUM_FRAC - 1))) >> s)) >> fs;
 }
 
+#if defined(__ARM_ARCH_6M__) && defined(__GNUC__) && !defined(__clang__)
+/* ARMv6-M: n >= 1 points by hand, column by column (each coordinate split
+ * once, its three terms added to the rows' sums), mul_split's operations
+ * in 32-bit registers. Registers: r0, r1 the coordinate's halves ah, al,
+ * r2 the term, r3 the entry, r4 s, r5 F - s, r6 m, r7 the point; r8-r10
+ * the rows' sums (from the translation), r11 2^(F-1), r12 the output, lr
+ * the end of the points. */
+#define XF_TERM(off, acc) \
+    "ldr r3, [r6, #" #off "]\n\t movs r2, r1\n\t muls r2, r3, r2\n\t add r2, r11\n\t asrs r2, r4\n\t" \
+    "muls r3, r0, r3\n\t adds r2, r2, r3\n\t asrs r2, r5\n\t add " acc ", r2\n\t"
+#define XF_COLUMN(off, e0, e1, e2) \
+    "ldr r1, [r7, #" #off "]\n\t movs r0, r1\n\t asrs r0, r4\n\t movs r2, r0\n\t lsls r2, r4\n\t" \
+    "subs r1, r1, r2\n\t" XF_TERM(e0, "r8") XF_TERM(e1, "r9") XF_TERM(e2, "r10")
+#define XF_STR2(x) #x
+#define XF_STR(x) XF_STR2(x)
+static inline __attribute__((always_inline)) void xf_points_v6m(const mat4 *m, const vec3 *p, vec3 *out, uint32_t n, int s)
+{
+    register const mat4 *r0 __asm__("r0") = m;
+    register const vec3 *r1 __asm__("r1") = p;
+    register vec3 *r2 __asm__("r2") = out;
+    register uint32_t r3 __asm__("r3") = n;
+    register int r4 __asm__("r4") = s;
+    __asm__ volatile(
+        ".syntax unified\n\t"
+        "movs r5, #12\n\t muls r3, r5, r3\n\t adds r3, r1, r3\n\t mov lr, r3\n\t mov r12, r2\n\t"
+        "movs r5, #" XF_STR(NUM_FRAC) "\n\t subs r5, r5, r4\n\t"
+        "movs r3, #1\n\t lsls r3, r3, #" XF_STR(NUM_FRAC) " - 1\n\t mov r11, r3\n\t"
+        "mov r6, r0\n\t mov r7, r1\n"
+        "1:\n\t ldr r3, [r6, #12]\n\t mov r8, r3\n\t ldr r3, [r6, #28]\n\t mov r9, r3\n\t"
+        "ldr r3, [r6, #44]\n\t mov r10, r3\n\t"
+        XF_COLUMN(0, 0, 16, 32) XF_COLUMN(4, 4, 20, 36) XF_COLUMN(8, 8, 24, 40)
+        "mov r0, r8\n\t mov r1, r9\n\t mov r2, r10\n\t mov r3, r12\n\t stm r3!, {r0, r1, r2}\n\t mov r12, r3\n\t"
+        "adds r7, #12\n\t cmp r7, lr\n\t bne 1b\n\t"
+        ".syntax divided\n"
+        : "+l"(r0), "+l"(r1), "+l"(r2), "+l"(r3), "+l"(r4)
+        :
+        : "r5", "r6", "r7", "r8", "r9", "r10", "r11", "r12", "lr", "cc", "memory");
+}
+#endif
+
+void ras_mul_points_fit_split(const mat4 *m, const vec3 *p, vec3 *out, uint32_t n, int s)
+{
+#if defined(__ARM_ARCH_6M__) && defined(__GNUC__) && !defined(__clang__)
+    if (n) xf_points_v6m(m, p, out, n, s);
+#else
+    for (uint32_t k = 0; k < n; k++) out[k] = ras_mul_point_fit_split(m, p[k], s);
+#endif
+}
+
 vec3 ras_mul_point_fit_split(const mat4 *m, vec3 p, int s)
 {
+#if defined(__ARM_ARCH_6M__) && defined(__GNUC__) && !defined(__clang__)
+    vec3 r;
+    xf_points_v6m(m, &p, &r, 1, s);
+    return r;
+#else
     const int fs = NUM_FRAC - s;
     const uint32_t mask = ((uint32_t)1 << s) - 1u;
     const int32_t xh = p.x >> s, yh = p.y >> s, zh = p.z >> s;
@@ -368,6 +422,7 @@ vec3 ras_mul_point_fit_split(const mat4 *m, vec3 p, int s)
     r.z = (num)((uint32_t)mul_split(m->m[2][0], xh, xl, s, fs) + (uint32_t)mul_split(m->m[2][1], yh, yl, s, fs) +
                 (uint32_t)mul_split(m->m[2][2], zh, zl, s, fs) + (uint32_t)m->m[2][3]);
     return r;
+#endif
 }
 
 vec3 ras_mul_normal_split(const mat4 *m, vec3 n, int s)
@@ -708,6 +763,12 @@ vec3 ras_mul_normal_split(const mat4 *m, vec3 n, int s)
 {
     (void)s;
     return m4_mul_point(m, n);
+}
+
+void ras_mul_points_fit_split(const mat4 *m, const vec3 *p, vec3 *out, uint32_t n, int s)
+{
+    (void)s;
+    for (uint32_t k = 0; k < n; k++) out[k] = m4_mul_point(m, p[k]);
 }
 
 int ras_sphere_inside(const mat4 *m, const struct ras_box *b, const struct ras_box *cb, num near_z, num side_x,

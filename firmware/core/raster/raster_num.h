@@ -92,6 +92,9 @@ int ras_fit_split(const mat4 *m, const struct ras_box *b);
  * split s > 0 for: the same bits, each coordinate split once at bit s and
  * each rounded product from two 32-bit products. */
 vec3 ras_mul_point_fit_split(const mat4 *m, vec3 p, int s);
+/* ras_mul_point_fit_split(m, p[k], s) into out[k] for k < n: the same
+ * bits, the points in one loop (out may be p). */
+void ras_mul_points_fit_split(const mat4 *m, const vec3 *p, vec3 *out, uint32_t n, int s);
 /* A normal's transform: s = ras_fit_split(m, b) > 0 for the box b of
  * every component within +-RAS_NORMAL_BOX, which ras_box_transform
  * accepted with m. ras_mul_point(m, n)'s bits: ras_mul_point_fit_split's

@@ -62,6 +62,22 @@ struct rt_ray rt_make_ray(vec3 o, vec3 d, int16_t origin, uint8_t from_camera)
     return r;
 }
 
+/* v3_scale(d, ts) for ts = 2^-k (k > 0): in fixed point with ts exactly
+ * 2^(F-k) raw the rounded product (d_i 2^(F-k) + 2^(F-1)) >> F is (d_i +
+ * 2^(k-1)) >> k, never saturating: d_i >> k plus bit k - 1 of d_i, the
+ * same bits without the 64-bit products. */
+static inline vec3 ray_scale_down(vec3 d, num ts, int k)
+{
+#if NUM_MODE == NUM_MODE_FIXED
+    if (k <= NUM_FRAC && ts == (num)((uint32_t)NUM_ONE_RAW >> k))
+        return v3_make((d.x >> k) + ((d.x >> (k - 1)) & 1), (d.y >> k) + ((d.y >> (k - 1)) & 1),
+                       (d.z >> k) + ((d.z >> (k - 1)) & 1));
+#else
+    (void)k;
+#endif
+    return v3_scale(d, ts);
+}
+
 void rt_ray_exact(struct rt_ray *r)
 {
     if (r->exact) return;
@@ -79,7 +95,7 @@ void rt_ray_exact(struct rt_ray *r)
         for (wnum t = a; t < quarter && t > 0 && k > -8; k--) t = wnum_mul4(t);
     if (k > 0) {
         ts = wnum_to_num_shr(wnum_from_num(NUM_ONE), k);
-        d = v3_scale(d, ts);
+        d = ray_scale_down(d, ts, k);
         aq = rt_dot_self2(d, &a);
     } else if (k < 0) {
         ts = num_mul_int(NUM_ONE, 1 << -k);

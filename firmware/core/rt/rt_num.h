@@ -78,12 +78,19 @@ struct rt_cpt {
 #endif
 };
 
+/* A sphere for the coarse tests (per frame). Its margins in fine units are
+ * made once for each class of |co|_1 (n1 < 2^10, then each bit length up
+ * to 19): both bounds grow with n1, so the class's largest n1 bounds every
+ * n1 in it; RT_MF_NONE: the class takes the coarse units. */
+#define RT_MF_N 10
+#define RT_MF_NONE 0xFFFFu
 /* A sphere for the coarse tests (per frame). */
 struct rt_csphere {
     struct rt_cpt c;
 #if NUM_MODE == NUM_MODE_FIXED
     uint32_t rc, rcf;     /* ceil(r / U) in both units (r >= 0) */
     uint32_t inv2r;       /* >= 2^32 / (2 r raw), 0: r too small for the 2 r m bound */
+    uint16_t mf[RT_MF_N]; /* fine units: the margin for n1 < 2^(10 + j) (rt_coarse_sphere_miss) */
     uint8_t ok;           /* 0: no coarse tests (negative radius) */
 #endif
 };
@@ -118,23 +125,6 @@ static inline struct rt_cpt rt_cpt_make(vec3 p)
     struct rt_cpt c;
     rt_cpt_set(&c, p);
     return c;
-}
-
-static inline struct rt_csphere rt_csphere_make(vec3 center, num r)
-{
-    struct rt_csphere s;
-    s.c = rt_cpt_make(center);
-#if NUM_MODE == NUM_MODE_FIXED
-    s.ok = r >= 0;
-    uint32_t ur = r > 0 ? (uint32_t)r : 0u;
-    s.rc = (ur + 4095u) >> 12;
-    s.rcf = NUM_FRAC >= 12 ? (uint32_t)(((uint64_t)ur + (1u << RT_FINE_SHIFT) - 1) >> RT_FINE_SHIFT) : 0u;
-    /* floor(2^32 / 2r) + 1 > 2^32 / 2r; r below 2^-10 gets the other bound */
-    s.inv2r = ur >= (1u << (NUM_FRAC - 10)) ? num_udiv64_32((uint64_t)1 << 32, 2u * ur, 0) + 1u : 0u;
-#else
-    (void)r;
-#endif
-    return s;
 }
 
 #if NUM_MODE == NUM_MODE_FIXED
@@ -323,6 +313,36 @@ static inline uint32_t rt_coarse_big_R(const struct rt_csphere *sp, uint32_t n1)
 }
 #endif
 
+#if NUM_MODE == NUM_MODE_FIXED
+/* The margin rt_coarse_sphere_miss takes in fine units for n1 <= n (< 2^19):
+ * the smaller of the two bounds at n, both non-decreasing in n1; RT_MF_NONE
+ * when R = rcf + m + 3 would not stay below 2^19 + 2^17. */
+static inline uint32_t rt_coarse_margin_fine(const struct rt_csphere *sp, uint32_t n)
+{
+    uint32_t m = rt_coarse_margin_sq(n), m2 = rt_coarse_margin_2r(sp, n);
+    if (m2 < m) m = m2;
+    return sp->rcf + m + 3 < (1u << 19) + (1u << 17) ? m : RT_MF_NONE;
+}
+#endif
+
+static inline struct rt_csphere rt_csphere_make(vec3 center, num r)
+{
+    struct rt_csphere s;
+    s.c = rt_cpt_make(center);
+#if NUM_MODE == NUM_MODE_FIXED
+    s.ok = r >= 0;
+    uint32_t ur = r > 0 ? (uint32_t)r : 0u;
+    s.rc = (ur + 4095u) >> 12;
+    s.rcf = NUM_FRAC >= 12 ? (uint32_t)(((uint64_t)ur + (1u << RT_FINE_SHIFT) - 1) >> RT_FINE_SHIFT) : 0u;
+    /* floor(2^32 / 2r) + 1 > 2^32 / 2r; r below 2^-10 gets the other bound */
+    s.inv2r = ur >= (1u << (NUM_FRAC - 10)) ? num_udiv64_32((uint64_t)1 << 32, 2u * ur, 0) + 1u : 0u;
+    for (int j = 0; j < RT_MF_N; j++) s.mf[j] = (uint16_t)rt_coarse_margin_fine(&s, ((uint32_t)1 << (10 + j)) - 1u);
+#else
+    (void)r;
+#endif
+    return s;
+}
+
 /* num_mul(a, w) for any a and a weight w: with 0 <= w < 1 in Q15.16 the
  * product is below |a| and never saturates, so rt_mul_round_u16 gives its
  * bits; anything else is num_mul's. */
@@ -344,16 +364,12 @@ static inline int rt_coarse_sphere_miss(const struct rt_cdir *cd, const struct r
     co[2] = sp->c.fz - cd->o.fz;
     uint32_t n1 = rt_uabs(co[0]) + rt_uabs(co[1]) + rt_uabs(co[2]);
     if (n1 < (1u << 19)) {
-        uint32_t m = rt_coarse_margin_sq(n1);
-        /* R < 2^19 + 2^17 keeps T below 2^31; larger spheres use U = 2^12 */
-        if (sp->rcf + m + 3 < (1u << 19) + (1u << 17)) {
-            if (rt_coarse_units_miss(cd, co, n1, sp->rcf + m + 3, sp->rcf)) return 1;
-            /* not proven with the first margin: try the 2 r m one, usually
-             * far smaller for spheres that are not tiny */
-            uint32_t m2 = rt_coarse_margin_2r(sp, n1);
-            if (m2 < m) return rt_coarse_units_miss(cd, co, n1, sp->rcf + m2 + 3, sp->rcf);
-            return 0;
-        }
+        /* the margin of n1's class (rt_csphere.mf, made once a frame): x =
+         * n1 >> 10 < 2^9, class = x's bit length. R < 2^19 + 2^17 keeps T
+         * below 2^31; larger spheres use U = 2^12 */
+        uint32_t x = n1 >> 10;
+        uint32_t m = sp->mf[x >> 8 ? 9 : 8 - num_clz8_tab[x]];
+        if (m != RT_MF_NONE) return rt_coarse_units_miss(cd, co, n1, sp->rcf + m + 3, sp->rcf);
     }
     co[0] = sp->c.x - cd->o.x;
     co[1] = sp->c.y - cd->o.y;

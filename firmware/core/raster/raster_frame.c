@@ -222,6 +222,52 @@ static void instance_vertices(const struct ras_ctx *rc, uint16_t i, uint32_t k0,
     }
 }
 
+/* The doubled area on screen of projected corners pa, pb, pc, in the order
+ * a front face is drawn: |differences| < 2^16 (ras_pv), the products in 32
+ * x 32 -> 64 bits; all four in [-2^14, 2^14) (a triangle of at most 1,024
+ * pixels a side at 4 sub-pixel bits), the same in 32 bits. */
+static inline int64_t pv_area(const struct ras_pv *pa, const struct ras_pv *pb, const struct ras_pv *pc)
+{
+    const int32_t d1x = pb->sx - pa->sx, d1y = pb->sy - pa->sy, d2x = pc->sx - pa->sx, d2y = pc->sy - pa->sy;
+    return (((uint32_t)d1x + 0x4000u) | ((uint32_t)d1y + 0x4000u) | ((uint32_t)d2x + 0x4000u) |
+            ((uint32_t)d2y + 0x4000u)) < 0x8000u
+               ? (int64_t)(d1x * d2y - d1y * d2x)
+               : num_smul32(d1x, d2y) - num_smul32(d1y, d2x);
+}
+
+/* The rest of instance_triangle for triangle k of three projected corners
+ * pa, pb, pc of doubled area `area` on screen (not a culled back face): its
+ * rows, its facing where lighting needs it, and its count. (Out of line:
+ * the triangles' loop keeps its registers for the culled ones.) */
+#if defined(__GNUC__) || defined(__clang__)
+__attribute__((noinline))
+#endif
+static struct ras_range pv_live(struct ras_ctx *rc, const struct ras_instance *in, const struct ras_model *m,
+                                const struct ras_inst *ri, uint32_t k, int part, int64_t fbound,
+                                const struct ras_pv *pa, const struct ras_pv *pb, const struct ras_pv *pc, int64_t area)
+{
+    const struct ras_triangle *t = &m->tris[k];
+    const uint32_t tb = ri->tbase;
+    const int32_t d1x = pb->sx - pa->sx, d1y = pb->sy - pa->sy, d2x = pc->sx - pa->sx, d2y = pc->sy - pa->sy;
+    const int32_t lo = min3(pa->sy, pb->sy, pc->sy), hi = max3(pa->sy, pb->sy, pc->sy);
+    const struct ras_range r = sub_rows(rc, lo, hi);
+    if (r.r0 > r.r1) return r;
+    /* one whose area is clear of every rounding is a front face by
+     * the camera-space test too (raster_num.h): that test is not
+     * made, nor anything else where no lighting is kept */
+    const int32_t L = (d1x < 0 ? -d1x : d1x) + (d1y < 0 ? -d1y : d1y) + (d2x < 0 ? -d2x : d2x) +
+                      (d2y < 0 ? -d2y : d2y);
+    const int64_t margin = area - 2 * (int64_t)L - 24;
+    const int known = (ri->vlit || !rc->def.tri_shade) &&
+                                (margin > fbound || ras_front_known(&rc->def.front, margin, pa->iz, pb->iz, pc->iz));
+    if (!(known && !ri->vlit && !rc->def.tri_shade ? ras_tri_flag(rc, tb + k, RAS_TRI_LIVE | RAS_TRI_FRONT)
+                                                    : ras_tri_cache(rc, in, ri, m, t, tb + k, part, known)))
+        return no_rows();
+    rc->part_drawn[part]++;
+    /* the strips visit it only on the rows of the pixel centres it spans */
+    return rc->bins.on ? centre_rows(rc, lo, hi) : r;
+}
+
 /* Triangle k of instance i (its frame facts kept), as part `part` of the
  * frame's triangles: the rows the strips visit it on. (Inline: one call a
  * triangle less, half of them culled in a few instructions.) */
@@ -254,17 +300,8 @@ static inline struct ras_range instance_triangle(struct ras_ctx *rc, const struc
         rc->part_drawn[part]++;
     } else if (FW_FEATURE_RAS_DEFAULT) {
         const struct ras_pv *pa = &rc->def.pv[vb + t->v[0]], *pb = &rc->def.pv[vb + t->v[1]], *pc = &rc->def.pv[vb + t->v[2]];
-        int known = 0;
         if (ras_pv_in(pa) && ras_pv_in(pb) && ras_pv_in(pc)) {
-            /* the doubled area on screen, in the order a front face is
-             * drawn: |differences| < 2^16 (ras_pv), the products in 32 x 32
-             * -> 64 bits; all four in [-2^14, 2^14) (a triangle of at most
-             * 1,024 pixels a side at 4 sub-pixel bits), the same in 32 bits */
-            const int32_t d1x = pb->sx - pa->sx, d1y = pb->sy - pa->sy, d2x = pc->sx - pa->sx, d2y = pc->sy - pa->sy;
-            const int64_t area = (((uint32_t)d1x + 0x4000u) | ((uint32_t)d1y + 0x4000u) | ((uint32_t)d2x + 0x4000u) |
-                                  ((uint32_t)d2y + 0x4000u)) < 0x8000u
-                                     ? (int64_t)(d1x * d2y - d1y * d2x)
-                                     : num_smul32(d1x, d2y) - num_smul32(d1y, d2x);
+            const int64_t area = pv_area(pa, pb, pc);
             /* not positive: whichever way the triangle faces, it draws
              * nothing (a back face is culled, a front face covers no
              * pixel), so its facing need not be computed */
@@ -272,23 +309,7 @@ static inline struct ras_range instance_triangle(struct ras_ctx *rc, const struc
                 (void)ras_tri_flag(rc, tb + k, 0);
                 return r;
             }
-            const int32_t lo = min3(pa->sy, pb->sy, pc->sy), hi = max3(pa->sy, pb->sy, pc->sy);
-            r = sub_rows(rc, lo, hi);
-            if (r.r0 > r.r1) return r;
-            /* one whose area is clear of every rounding is a front face by
-             * the camera-space test too (raster_num.h): that test is not
-             * made, nor anything else where no lighting is kept */
-            const int32_t L = (d1x < 0 ? -d1x : d1x) + (d1y < 0 ? -d1y : d1y) + (d2x < 0 ? -d2x : d2x) +
-                              (d2y < 0 ? -d2y : d2y);
-            const int64_t margin = area - 2 * (int64_t)L - 24;
-            known = (ri->vlit || !rc->def.tri_shade) &&
-                    (margin > fbound || ras_front_known(&rc->def.front, margin, pa->iz, pb->iz, pc->iz));
-            if (!(known && !ri->vlit && !rc->def.tri_shade ? ras_tri_flag(rc, tb + k, RAS_TRI_LIVE | RAS_TRI_FRONT)
-                                                            : ras_tri_cache(rc, in, ri, m, t, tb + k, part, known)))
-                return no_rows();
-            rc->part_drawn[part]++;
-            /* the strips visit it only on the rows of the pixel centres it spans */
-            return rc->bins.on ? centre_rows(rc, lo, hi) : r;
+            return pv_live(rc, in, m, ri, k, part, fbound, pa, pb, pc, area);
         }
         struct ras_vcache *vc = part ? rc->def.vcache1 : rc->def.vcache;
         r = default_tri_rows(rc, ras_cam_vertex(rc, in, ri, m, t->v[0], vc), ras_cam_vertex(rc, in, ri, m, t->v[1], vc),
@@ -327,6 +348,39 @@ static void instance_triangles(struct ras_ctx *rc, uint16_t i, uint32_t k0, uint
             }
         const uint64_t b = lo <= hi && lo >= rc->def.front.iz_min ? ras_front_bound(&rc->def.front, hi, hi) : 0;
         if (b) fbound = (int64_t)b;
+    }
+    if (FW_FEATURE_RAS_DEFAULT && rc->def.pv && ri->visible && !(FW_FEATURE_RAS_BOOK && (rc->book || rc->s->ras.wireframe))) {
+        /* instance_triangle's default path with what the loop reads held
+         * in locals (its stores, bytes, would make every field read again),
+         * a back face of three projected corners dropped here */
+        const struct ras_pv *pv = rc->def.pv + ri->vbase;
+        const struct ras_triangle *tris = m->tris;
+        const uint32_t nv = m->nverts;
+        const int cull = rc->s->ras.backface_cull;
+        uint8_t *flags = rc->def.tri_flags ? rc->def.tri_flags + tb : NULL;
+        struct ras_trows *rk = rows + tb;
+        const struct ras_trows none = { 1, 0 };
+        for (uint32_t k = k0; k < k1; k++) {
+            const struct ras_triangle *t = &tris[k];
+            const uint32_t a = t->v[0], b = t->v[1], c = t->v[2];
+            if (a >= nv || b >= nv || c >= nv) {
+                rk[k] = none;
+                continue;
+            }
+            const struct ras_pv *pa = &pv[a], *pb = &pv[b], *pc = &pv[c];
+            if (!(ras_pv_in(pa) && ras_pv_in(pb) && ras_pv_in(pc))) {
+                rk[k] = ras_trows_pack(rc, instance_triangle(rc, in, m, ri, k, part, fbound));
+                continue;
+            }
+            const int64_t area = pv_area(pa, pb, pc);
+            if (cull && area <= 0) {
+                if (flags) flags[k] = 0;
+                rk[k] = none;
+                continue;
+            }
+            rk[k] = ras_trows_pack(rc, pv_live(rc, in, m, ri, k, part, fbound, pa, pb, pc, area));
+        }
+        return;
     }
     for (uint32_t k = k0; k < k1; k++)
         rows[tb + k] = ras_trows_pack(rc, instance_triangle(rc, in, m, ri, k, part, fbound));

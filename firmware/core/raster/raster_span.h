@@ -69,15 +69,19 @@ RAS_HOT static uint32_t SPAN_NAME(const struct ftri *T, const struct frow *R)
 #define SPAN_RGB_V6M 0
 #endif
 #if SPAN_RGB_V6M
-    if (n == 1) {
-        /* a span of one pixel (most of a small triangle's): its depth test,
-         * then its levels, those at the span's first pixel, where drawn */
-        const uint32_t zz = z >> 16;
-        if (zz > *zp) {
-            persp_at(&T->pp, SPAN_NA, w1, w2, cur, SPAN_UNROLL);
-            *zp = (uint16_t)zz;
-            *px = (uint16_t)(((uint32_t)cur[SPAN_A_SH] >> 16) << 11 | ((uint32_t)cur[SPAN_A_SH + 1] >> 16) << 5 |
-                             (uint32_t)cur[SPAN_A_SH + 2] >> 16);
+    if (n <= 2) {
+        /* a span of one or two pixels (most of a small triangle's): each
+         * pixel's depth test, then its levels, a perspective-correct point's
+         * (the second's the span's last point: its step is the whole
+         * difference), where drawn */
+        for (; n > 0; n--, px++, zp++, z += dz, w1 += T->a1, w2 += T->a2) {
+            const uint32_t zz = z >> 16;
+            if (zz > *zp) {
+                persp_at(&T->pp, SPAN_NA, w1, w2, cur, SPAN_UNROLL);
+                *zp = (uint16_t)zz;
+                *px = (uint16_t)(((uint32_t)cur[SPAN_A_SH] >> 16) << 11 | ((uint32_t)cur[SPAN_A_SH + 1] >> 16) << 5 |
+                                 (uint32_t)cur[SPAN_A_SH + 2] >> 16);
+            }
         }
         return written;
     }

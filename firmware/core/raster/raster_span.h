@@ -63,6 +63,52 @@ RAS_HOT static uint32_t SPAN_NAME(const struct ftri *T, const struct frow *R)
     const uint16_t col = T->ft->c565;
 #else
     int32_t w1 = R->w1, w2 = R->w2, cur[SPAN_NA], nxt[SPAN_NA];
+#if SPAN_SHADE == SPAN_SHADE_RGB && SPAN_DEPTH == 2 && !SPAN_HOST && defined(__ARM_ARCH_6M__) && defined(__GNUC__)
+#define SPAN_RGB_V6M 1
+#else
+#define SPAN_RGB_V6M 0
+#endif
+#if SPAN_RGB_V6M
+    if (n <= 2) {
+        /* a span of one or two pixels (most of a small triangle's): each
+         * pixel's depth test, then its levels, a perspective-correct point's
+         * (the second's the span's last point: its step is the whole
+         * difference), where drawn */
+        for (; n > 0; n--, px++, zp++, z += dz, w1 += T->a1, w2 += T->a2) {
+            const uint32_t zz = z >> 16;
+            if (zz > *zp) {
+                persp_at(&T->pp, SPAN_NA, w1, w2, cur, SPAN_UNROLL);
+                *zp = (uint16_t)zz;
+                *px = (uint16_t)(((uint32_t)cur[SPAN_A_SH] >> 16) << 11 | ((uint32_t)cur[SPAN_A_SH + 1] >> 16) << 5 |
+                                 (uint32_t)cur[SPAN_A_SH + 2] >> 16);
+            }
+        }
+        return written;
+    }
+#elif SPAN_DEPTH && !SPAN_HOST
+    if (n <= 2) {
+        /* a span of one or two pixels (most of a small triangle's): each
+         * pixel's attributes are those of a perspective-correct point (the
+         * second's the span's last point: its step is the whole difference),
+         * so a pixel behind the depth buffer is left out before any is made */
+#if SPAN_DEPTH == 2
+#define SPAN_FRONT(zv, e) ((zv) >> 16 > (e))
+#else
+#define SPAN_FRONT(zv, e) ((zv) > (e))
+#endif
+        if (!SPAN_FRONT(z, *zp)) {
+            if (n == 1 || !SPAN_FRONT(z + dz, zp[1])) return written;
+            px++;
+            zp++;
+            z += dz;
+            w1 += T->a1;
+            w2 += T->a2;
+            n = 1;
+        } else if (n == 2 && !SPAN_FRONT(z + dz, zp[1]))
+            n = 1;
+#undef SPAN_FRONT
+    }
+#endif
     persp_at(&T->pp, SPAN_NA, w1, w2, cur, SPAN_UNROLL);
     const int32_t seg = T->seg;
 #endif
@@ -85,19 +131,6 @@ RAS_HOT static uint32_t SPAN_NAME(const struct ftri *T, const struct frow *R)
 #if SPAN_SHADE == SPAN_SHADE_NONE && SPAN_DEPTH == 2 && !SPAN_HOST && defined(__ARM_ARCH_6M__) && defined(__GNUC__)
     uint32_t ast[5] = { dz, (uint32_t)(uintptr_t)tex, row * 4u, 0, 0 };   /* (the loop by hand below) */
 #endif
-#endif
-#if SPAN_SHADE == SPAN_SHADE_RGB && SPAN_DEPTH == 2 && !SPAN_HOST && defined(__ARM_ARCH_6M__) && defined(__GNUC__)
-    if (n == 1) {
-        /* a span of one pixel (most of a small triangle's): the loop's
-         * first pixel, its levels those at the span's first pixel */
-        const uint32_t zz = z >> 16;
-        if (zz > *zp) {
-            *zp = (uint16_t)zz;
-            *px = (uint16_t)(((uint32_t)cur[SPAN_A_SH] >> 16) << 11 | ((uint32_t)cur[SPAN_A_SH + 1] >> 16) << 5 |
-                             (uint32_t)cur[SPAN_A_SH + 2] >> 16);
-        }
-        return written;
-    }
 #endif
     while (n > 0) {
         int32_t m = n;
@@ -423,3 +456,4 @@ RAS_HOT static uint32_t SPAN_NAME(const struct ftri *T, const struct frow *R)
 #undef SPAN_NA
 #undef SPAN_LIGHT
 #undef SPAN_UNROLL
+#undef SPAN_RGB_V6M

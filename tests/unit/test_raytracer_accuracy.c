@@ -120,8 +120,8 @@ static struct decisions count_decisions(const struct rtacc_api *mode, int sc, in
  * (45 dB at other sizes): half a decibel under what it measures. */
 static double fixed_floor(int sc, int w, int frac)
 {
-    static const double f240[7] = { 0, 0, 82.1, 81.6, 82.3, 68.8, 56.9 };
-    static const double f600[7] = { 0, 0, 81.8, 81.0, 81.1, 70.8, 63.6 };
+    static const double f240[7] = { 0, 0, 82.1, 81.6, 82.3, 68.8, 66.2 };
+    static const double f600[7] = { 0, 0, 81.8, 81.0, 81.1, 70.8, 68.2 };
     static const double q17_240[7] = { 0, 0, 83.7, 83.3, 65.7, 45, 45 };
     static const double q17_600[7] = { 0, 0, 82.5, 82.3, 67.4, 45, 45 };
     if (w == 240) return frac == 17 ? q17_240[sc] : f240[sc];

@@ -196,7 +196,7 @@ struct rt_state {
     uint8_t iv_rows;             /* 1, or B + 2 with adaptive subsampling */
     int16_t *dx_iv;              /* row dx_row's (NULL: none) */
     int16_t *prim_iv;            /* the traced primary ray's row (NULL: none) */
-    int16_t prim_col;            /* ... and its column */
+    int16_t prim_col;            /* ... and its column (also a turned camera's primary ray's: turn_touch) */
     /* a run of primary rays certainly missing everything: row bg_row's
      * columns [bg_lo, bg_hi] (-1: none), where every candidate's interval
      * left the ray at bg_lo out and begins after bg_hi, inside bg_lo's tile

@@ -152,6 +152,11 @@ RT_ALWAYS_INLINE int sphere_quad_row(struct rt_obj_cache *oc, const struct rt_ra
 #endif
 }
 
+#if NUM_MODE == NUM_MODE_FIXED
+static int turn_touch(const struct rt_state *rt, vec3 co, const struct rt_ray *ray, uint64_t r2x, wnum c,
+                      struct rt_quad *k);
+#endif
+
 /* limit: 0 may also mean that the near root is certainly above it (then
  * sphere_first_hit's answer is "no hit" whatever the roots); NUM_MAX for
  * the roots themselves. */
@@ -194,7 +199,13 @@ static int sphere_quad(const struct rt_state *rt, int16_t obj, struct rt_ray *ra
         k->m = 0;
         dir = &ray->ds;
     }
-    return rt_quad_solve(co, *dir, k->a, k->c, &oc->qs, &k->k);
+    int got = rt_quad_solve(co, *dir, k->a, k->c, &oc->qs, &k->k);
+#if NUM_MODE == NUM_MODE_FIXED
+    /* a turned camera's direction, rounded once: a touch along the
+     * unrounded one is kept (turn_touch) */
+    if (!got && k->m && ray->dxrow < 0) got = turn_touch(rt, co, ray, oc->qs.r2x, k->c, &k->k);
+#endif
+    return got;
 }
 
 /* The quadratic's roots (q != 0), t along D: the near one c/q from
@@ -812,6 +823,75 @@ static inline int64_t rt_s128_shr(struct rt_s128 x, int s)
     else if (s < 64) lo = (x.lo >> s) | (x.hi << (64 - s));
     else lo = (uint64_t)((int64_t)x.hi >> (s - 64 > 63 ? 63 : s - 64));
     return (int64_t)lo;
+}
+
+/* x / 2^s rounded toward minus infinity, 0 < s < 64. */
+static inline struct rt_s128 rt_s128_sar(struct rt_s128 x, int s)
+{
+    struct rt_s128 r;
+    r.lo = (x.lo >> s) | (x.hi << (64 - s));
+    r.hi = (uint64_t)((int64_t)x.hi >> s);
+    return r;
+}
+
+/* A turned camera's exact primary direction Dm (rt_exact_turn) is E, the
+ * scene's rotation at 29 fraction bits applied exactly (F + 29 bits),
+ * rounded once: E = 2^29 Dm + rho, |rho_i| <= 2^28. A line along E that
+ * touches or meets the sphere may miss it along Dm (raytracer-06 has one
+ * exactly tangent, in the scene's 0.7071 matrix). When the solve along Dm
+ * finds no root, the discriminant along E decides it:
+ *   r^2 |E|^2 - |CO x E|^2 = 2^58 G + 2^30 S1 + S2,
+ * G = r^2 a - |CO x Dm|^2, S1 = r^2 (Dm.rho) - (CO x Dm).(CO x rho),
+ * S2 = r^2 |rho|^2 - |CO x rho|^2, all from exact products (|CO x Dm_i| <
+ * 2^58, |CO x rho_i| < 2^60, |Dm.rho| < 2^56, r^2 < 2^62 at 2F bits), so its
+ * sign is that of the integer Z = 2^28 G + S1 + floor(S2 / 2^30) (within 1
+ * below the exact quotient), in 128-bit arithmetic for |G| < 2^96. Z >= 0:
+ * the ray touches or meets the sphere, and is taken as tangent along Dm
+ * (q = b, the book's hit at b^2 = a c). Rare: a turned primary ray that
+ * passed the coarse test and missed. */
+/* acc - a b (code size: turn_touch's nine products through one call). */
+static RT_NOINLINE struct rt_s128 rt_s128_submul(struct rt_s128 acc, int64_t a, int64_t b)
+{
+    return rt_s128_add(acc, rt_s128_neg(rt_s128_mul64(a, b)));
+}
+
+static RT_NOINLINE int turn_touch(const struct rt_state *rt, vec3 co, const struct rt_ray *ray, uint64_t r2x, wnum c,
+                                  struct rt_quad *k)
+{
+    const num dm[3] = { ray->dx.x, ray->dx.y, ray->dx.z }, o[3] = { co.x, co.y, co.z };
+    int64_t bx = -(num_smul32(o[0], dm[0]) + num_smul32(o[1], dm[1]) + num_smul32(o[2], dm[2]));
+    if ((c > 0 && bx <= 0) || r2x >= ((uint64_t)1 << 62)) return 0;
+    /* the column's x vh as exact_dir formed it (it fits: |x vh| < 2^(F+10)) */
+    num vx = rt->vh * (rt->prim_col - rt->w / 2);
+    int32_t rho[3];
+    int64_t dmr = 0;
+    for (int i = 0; i < 3; i++) {
+        int64_t e = rt->dx_turn[i] + num_smul32(rt->cam_q29[i][0], vx);
+        rho[i] = (int32_t)(e - (int64_t)dm[i] * ((int64_t)1 << 29));
+        dmr += num_smul32(dm[i], rho[i]);
+    }
+    uint64_t rr = (uint64_t)num_smul32(rho[0], rho[0]) + (uint64_t)num_smul32(rho[1], rho[1]) +
+                  (uint64_t)num_smul32(rho[2], rho[2]);
+    struct rt_s128 g = rt_u128_mul64(r2x, (uint64_t)ray->dxa), s2 = rt_u128_mul64(r2x, rr), s1 = { 0, 0 };
+    s1 = rt_s128_submul(s1, -(int64_t)r2x, dmr);
+    for (int i = 0; i < 3; i++) {
+        /* a component of CO x Dm and of CO x rho (pairs 01, 12, 20) */
+        int j = i == 2 ? 0 : i + 1;
+        int64_t xd = num_smul32(o[i], dm[j]) - num_smul32(o[j], dm[i]);
+        int64_t xr = num_smul32(o[i], rho[j]) - num_smul32(o[j], rho[i]);
+        g = rt_s128_submul(g, xd, xd);
+        s1 = rt_s128_submul(s1, xd, xr);
+        s2 = rt_s128_submul(s2, xr, xr);
+    }
+    if (rt_s128_bits(g) > 96) return 0;
+    struct rt_s128 g28;   /* 2^28 G */
+    g28.lo = g.lo << 28;
+    g28.hi = (g.hi << 28) | (g.lo >> 36);
+    if (rt_s128_isneg(rt_s128_add(rt_s128_add(g28, s1), rt_s128_sar(s2, 30)))) return 0;
+    k->qx = bx;
+    k->q = rt_shr_round(bx, NUM_FRAC);
+    k->disc_pos = 0;
+    return 1;
 }
 
 /* n / d truncated toward zero as C divides int64_t (d != 0), by the

@@ -365,6 +365,7 @@ static void exact_dir(struct rt_state *rt, struct rt_ray *ray, int col, int row)
         rt->prim_col = (int16_t)col;
     } else if (rt_exact_turn(rt->cam_q29, rt->dx_turn, vx, &ray->dx)) {
         ray->dxa = rt_exact_sq(ray->dx.x) + rt_exact_sq(ray->dx.y) + rt_exact_sq(ray->dx.z);
+        rt->prim_col = (int16_t)col;   /* the unrounded direction's column (turn_touch) */
     } else {
         return;
     }

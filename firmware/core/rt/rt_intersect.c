@@ -855,12 +855,46 @@ static RT_NOINLINE struct rt_s128 rt_s128_submul(struct rt_s128 acc, int64_t a, 
     return rt_s128_add(acc, rt_s128_neg(rt_s128_mul64(a, b)));
 }
 
+/* 1 when turn_touch's Z < 0 is certain from 64-bit bounds, before its
+ * 128-bit products. With rho' = rho / 2^29 (|rho'_i| <= 1/2, so |rho'| <
+ * 0.87), the discriminant along E / 2^29 is G + 2 S1' + S2', S1' = r^2
+ * (Dm.rho') - (CO x Dm).(CO x rho'), S2' = r^2 |rho'|^2 - |CO x rho'|^2.
+ * With w = max(|CO|^2, r^2) and |Dm| < 2^h, h = ceil(bitlen(a) / 2):
+ * 2 |S1'| <= 2 |rho'| |Dm| (r^2 + |CO|^2) < 3.47 w |Dm| and S2' < 0.75 w,
+ * so 2 S1' + S2' < 4 w (|Dm| + 1) <= w 2^(h+3). -G is bounded below at
+ * one scale 2^s by |CO x Dm|^2 truncated down less r^2 a rounded up; a
+ * bound above w 2^(h+3) leaves the discriminant along E negative. */
+static RT_NOINLINE int turn_far_miss(const num *o, const num *dm, uint64_t r2x, uint64_t a)
+{
+    uint64_t x0 = rt_mag64(num_smul32(o[1], dm[2]) - num_smul32(o[2], dm[1]));
+    uint64_t x1 = rt_mag64(num_smul32(o[2], dm[0]) - num_smul32(o[0], dm[2]));
+    uint64_t x2 = rt_mag64(num_smul32(o[0], dm[1]) - num_smul32(o[1], dm[0]));
+    int lx = rt_bitlen64(x0 | x1 | x2), kx = lx > 30 ? lx - 30 : 0;
+    /* |CO x Dm|^2 >= xx 2^(2 kx) */
+    uint64_t xx = rt_usq32(rt_shr64_to32(x0, kx)) + rt_usq32(rt_shr64_to32(x1, kx)) +
+                  rt_usq32(rt_shr64_to32(x2, kx));
+    /* r^2 a <= ar 2^(ka + kr), both factors at most 2^31 */
+    int la = rt_bitlen64(a), lr = rt_bitlen64(r2x);
+    int ka = la > 31 ? la - 31 : 0, kr = lr > 31 ? lr - 31 : 0;
+    uint64_t ar = num_umul32(rt_shr64_to32(a, ka) + 1u, rt_shr64_to32(r2x, kr) + 1u);
+    int s = 2 * kx > ka + kr ? 2 * kx : ka + kr;
+    uint64_t lo = rt_shr64(xx, s - 2 * kx), hi = rt_shr64(ar, s - ka - kr) + 1u;
+    if (lo <= hi) return 0;
+    uint64_t d = lo - hi;   /* -G >= d 2^s */
+    uint64_t w = (uint64_t)rt_ssq32(o[0]) + (uint64_t)rt_ssq32(o[1]) + (uint64_t)rt_ssq32(o[2]);
+    if (w < r2x) w = r2x;
+    int t = (la + 1) / 2 + 3 - s;   /* w 2^(h+3) = w 2^t 2^s */
+    if (t >= 0) return rt_bitlen64(w) + t < 64 && d > (w << t);
+    return d > rt_shr64(w, -t) + 1u;
+}
+
 static RT_NOINLINE int turn_touch(const struct rt_state *rt, vec3 co, const struct rt_ray *ray, uint64_t r2x, wnum c,
                                   struct rt_quad *k)
 {
     const num dm[3] = { ray->dx.x, ray->dx.y, ray->dx.z }, o[3] = { co.x, co.y, co.z };
     int64_t bx = -(num_smul32(o[0], dm[0]) + num_smul32(o[1], dm[1]) + num_smul32(o[2], dm[2]));
     if ((c > 0 && bx <= 0) || r2x >= ((uint64_t)1 << 62)) return 0;
+    if (turn_far_miss(o, dm, r2x, (uint64_t)ray->dxa)) return 0;
     /* the column's x vh as exact_dir formed it (it fits: |x vh| < 2^(F+10)) */
     num vx = rt->vh * (rt->prim_col - rt->w / 2);
     int32_t rho[3];

@@ -252,7 +252,7 @@ run --scene "$scene" --panel none --size 32x24 --frames 4
 # (tools/scene/scene_format.c, as scenec chooses it for the firmware), shown
 # as "num_frac" in --stats; --num-frac F overrides it.
 num_frac_of() { sed -n 's/.*"num_frac":\([0-9a-z]*\).*/\1/p' "$tmp/o" | head -n 1; }
-for want in book/raster-06=20 book/raytracer-02=17 book/raytracer-05=16 demo/planet-horizon=12 book/raster-rt-scene=20 demo/ch15-shadow-volume=20; do
+for want in book/raster-06=20 book/raytracer-02=17 book/raytracer-05=16 demo/planet-horizon=13 book/raster-rt-scene=20 demo/ch15-shadow-volume=20; do
   n=${want%=*} f=${want#*=} id=$(basename "${want%=*}")
   run --scene "firmware/scenes/$n.scene" --panel none --size 240x240 --stats
   got=$(num_frac_of)

@@ -882,6 +882,157 @@ static void test_hit_reach(void)
            closest);
 }
 
+/* The tight format argument (tools/scene/scene_format.c, rt_tight_pairs:
+ * positions and the sums and differences the core forms held once) on
+ * worst-case scenes: a ray tracer of spheres alone grown until the analysis
+ * just accepts it at this build's format — a ground sphere whose far side
+ * a reflection reaches (small spheres on it, touching or sunk into it),
+ * reflections to depth 4, shadows, a point light far off — renders without
+ * a saturation, and with the 32-bit paths the analysis allows (struct
+ * scene.fits) gives the same image, and the narrow operations of the
+ * argument's list at their extreme inputs saturate nothing
+ * (tight_extremes). And rt_reflect where 2 N.L is past the range but R is
+ * not. */
+#if NUM_MODE == NUM_MODE_FIXED
+static vec3 v3_of(const double v[3]) { return v3_make(num_from_double(v[0]), num_from_double(v[1]), num_from_double(v[2])); }
+
+/* The narrow operations of the tight argument's list at their extreme
+ * inputs for scene s (spheres alone): for every pair of spheres i, j the
+ * point O of j farthest from i's centre C and the point P of i farthest
+ * from O (CO = O - C, D t = P - O), and for every point light the point P
+ * of each sphere farthest from it with its normal N, L = light - P, N.L
+ * (-|L|), R = N (2 N.L) - L as the lighting forms it, a view direction V
+ * of the longest primary length along R (R.V = |R| |V|) and |R| |V|, and
+ * N.L times the light's intensity. Returns the saturations counted. */
+static uint32_t tight_extremes(const struct scene *s, const struct scene_format *F)
+{
+    uint32_t sat0 = num_saturations;
+    double vmax = sqrt(0.25 * (1 + 2.0 / F->width) * (1 + 2.0 / F->width) +
+                       0.25 * (1 + 2.0 / F->height) * (1 + 2.0 / F->height) + 1);   /* viewport 1 x 1, d = 1 */
+    for (int i = 0; i < s->nobjects; i++) {
+        const struct rt_object *oi = &s->objects[i];
+        double ci[3] = { dd(oi->center.x), dd(oi->center.y), dd(oi->center.z) }, ri = dd(oi->radius);
+        for (int j = 0; j < s->nobjects; j++) {
+            const struct rt_object *oj = &s->objects[j];
+            double cj[3] = { dd(oj->center.x), dd(oj->center.y), dd(oj->center.z) }, rj = dd(oj->radius), u[3];
+            double len = sqrt((cj[0] - ci[0]) * (cj[0] - ci[0]) + (cj[1] - ci[1]) * (cj[1] - ci[1]) +
+                              (cj[2] - ci[2]) * (cj[2] - ci[2]));
+            for (int c = 0; c < 3; c++) u[c] = len > 0 ? (cj[c] - ci[c]) / len : c == 1;
+            double o[3], p[3];
+            for (int c = 0; c < 3; c++) o[c] = cj[c] + rj * u[c], p[c] = ci[c] - ri * u[c];
+            (void)v3_sub(v3_of(o), oi->center);   /* CO */
+            (void)v3_sub(v3_of(p), v3_of(o));     /* D t */
+        }
+        for (int k = 0; k < s->nlights; k++) {
+            const struct scene_light *lt = &s->lights[k];
+            if (lt->type != LIGHT_POINT) continue;
+            double lp[3] = { dd(lt->v.x), dd(lt->v.y), dd(lt->v.z) }, u[3], p[3], nd[3];
+            double len = sqrt((lp[0] - ci[0]) * (lp[0] - ci[0]) + (lp[1] - ci[1]) * (lp[1] - ci[1]) +
+                              (lp[2] - ci[2]) * (lp[2] - ci[2]));
+            for (int c = 0; c < 3; c++) {
+                u[c] = len > 0 ? (lp[c] - ci[c]) / len : c == 1;
+                p[c] = ci[c] - ri * u[c];
+                nd[c] = -u[c];
+            }
+            vec3 n = v3_of(nd), l = v3_sub(lt->v, v3_of(p));
+            num ndl = v3_dot(n, l);
+            int small = rt_v3_within(n, NUM_FRAC + 1) && rt_v3_within(l, 26);
+            vec3 r = rt_reflect(n, l, ndl, small);
+            double rl = sqrt(dd(r.x) * dd(r.x) + dd(r.y) * dd(r.y) + dd(r.z) * dd(r.z));
+            double vd[3] = { dd(r.x) / rl * vmax, dd(r.y) / rl * vmax, dd(r.z) / rl * vmax };
+            vec3 v = v3_of(vd);
+            (void)v3_dot(r, v);
+            (void)num_mul(v3_len(r), v3_len(v));
+            (void)num_mul(v3_len(n), v3_len(l));
+            (void)rt_mul_weight(ndl, lt->intensity);
+        }
+    }
+    return num_saturations - sat0;
+}
+#endif
+
+static void test_tight_bounds(void)
+{
+#if NUM_MODE == NUM_MODE_FIXED
+    enum { W = 40, NGEN = 24 };
+    static uint8_t a[W * W * 3], b[W * W * 3];
+    static const int frac[1] = { NUM_FRAC };
+    double lim = ldexp(1.0, 31 - NUM_FRAC), closest = 0;
+    uint32_t st = 4711;
+    int tried = 0, bad = 0;
+    char text[2048], what[240] = "";
+    for (int k = 0; k < NGEN; k++) {
+        double u[24];
+        for (int i = 0; i < 24; i++) u[i] = urand(&st);
+        struct scene *s = NULL;
+        struct scene_format F;
+        int ok = 0;
+        for (double big = lim / 2; big > 4 && !ok; big *= 0.97) {
+            double h = 0.5 + 2 * u[0], lx = big * (0.05 + 0.4 * u[1]);
+            int n = snprintf(text, sizeof text,
+                             "renderer = raytracer\nviewport { width = 1 height = 1 d = 1 }\n"
+                             "camera { position = (0, 0, 0) rotation { y = %d } }\n"
+                             "raytracer { recursion_depth = %d shadows = %s }\n"
+                             "sphere { center = (0, %.9g, 0) radius = %.9g color = (255, 255, 0) specular = %d "
+                             "reflective = %.2f }\n"
+                             "light { type = ambient intensity = 0.2 }\n"
+                             "light { type = point intensity = %.2f position = (%.6g, %.6g, 0) }\n"
+                             "light { type = directional intensity = 0.2 direction = (1, 4, 4) }\n",
+                             (int)(u[2] * 60) - 30, 1 + (int)(u[3] * 4), u[4] < 0.7 ? "on" : "off", -big - h, big,
+                             10 + (int)(u[5] * 990), 0.2 + 0.6 * u[8], 0.2 + 0.6 * u[6], lx, 1 + u[7] * big * 0.2);
+            for (int i = 0, m = 1 + (int)(u[9] * 4); i < m; i++) {
+                double rad = 0.4 + 1.1 * u[10 + i], y = -h + (u[14 + i] < 0.4 ? 1.0001 * rad : (u[18 + i] - 0.3) * rad);
+                n += snprintf(text + n, sizeof text - (size_t)n,
+                              "sphere { center = (%.4g, %.6g, %.4g) radius = %.4g color = (0, 255, 255) specular = 500 "
+                              "reflective = %.2f }\n",
+                              (u[10 + i] - 0.5) * 6, y, 2.5 + 5 * u[14 + i], rad, 0.2 + 0.6 * u[18 + i]);
+            }
+            char err[256];
+            if (scene_parse_mem("generated", text, strlen(text), &s, err, sizeof err) != 0) {
+                s = NULL;
+                continue;
+            }
+            ok = scene_format_choose(s, W, W, frac, 1, 0, &F) == 0 && F.tight;
+            if (!ok) {
+                scene_free(s);
+                s = NULL;
+            }
+        }
+        if (!ok) continue;
+        tried++;
+        if (F.need / lim > closest) closest = F.need / lim;
+        uint32_t sat_x = tight_extremes(s, &F);
+        if (sat_x && !bad) snprintf(what, sizeof what, "scene %d: %u saturations at the extreme inputs", k, sat_x);
+        s->fits = 0;
+        uint32_t sat0 = num_saturations;
+        int rc = rt_render(s, W, W, 8, a, NULL, NULL);
+        uint32_t sat = num_saturations - sat0;
+        s->fits = (uint8_t)scene_format_fits(&F, NUM_FRAC);
+        int rc2 = rt_render(s, W, W, 8, b, NULL, NULL);
+        if (sat_x || rc || rc2 || sat || memcmp(a, b, sizeof a)) {
+            if (!bad && !sat_x)
+                snprintf(what, sizeof what, "scene %d (need %.6g of %.6g, fits %d): rc %d/%d, %u saturations, %s", k,
+                         F.need, lim, s->fits, rc, rc2, sat, memcmp(a, b, sizeof a) ? "images differ" : "same image");
+            bad++;
+        }
+        scene_free(s);
+    }
+    check(bad == 0 && tried * 2 >= NGEN && closest > 0.9, "tight_format_bounds_hold",
+          "%d of %d worst-case scenes wrong (%d accepted, the closest to the range at %.4f of it); %s", bad, NGEN, tried,
+          closest, what);
+    printf("# tight bounds: %d scenes accepted, the closest to the range at %.4f of it\n", tried, closest);
+    /* N unit along x, L = (3/4 NUM_MAX, -1/8 NUM_MAX, 0): N.L = 3/4 NUM_MAX,
+     * 2 N.L past the range, R = 2 N (N.L) - L = (3/4, 1/8, 0) NUM_MAX */
+    vec3 n = v3_make(NUM_ONE, NUM_ZERO, NUM_ZERO), l = v3_make(NUM_MAX / 4 * 3, -(NUM_MAX / 8), NUM_ZERO);
+    num ndl = v3_dot(n, l);
+    uint32_t sat0 = num_saturations;
+    vec3 r = rt_reflect(n, l, ndl, 0);
+    check(ndl == l.x && r.x == l.x && r.y == -l.y && r.z == 0 && num_saturations == sat0, "reflect_past_half_range",
+          "R = (%ld, %ld, %ld) raw for L = (%ld, %ld, 0), %u saturations", (long)r.x, (long)r.y, (long)r.z, (long)l.x,
+          (long)l.y, num_saturations - sat0);
+#endif
+}
+
 static void test_ch5_scene(void)
 {
     int w = 80, h = 80;
@@ -934,5 +1085,6 @@ int main(int argc, char **argv)
 #endif
     test_ch5_scene();
     test_hit_reach();
+    test_tight_bounds();
     return check_exit();
 }

@@ -10,7 +10,10 @@
  * the object it comes from, and picks the largest NUM_FRAC among the
  * candidates whose range 2^(31 - NUM_FRAC) holds twice the largest quantity
  * (one sum or difference of two of them; longer sums and products are taken
- * wide by the core). docs/scene-format.md states the argument.
+ * wide by the core) — or, for a ray tracer of spheres alone (robust, no CSG
+ * or hierarchy: struct scene_format.tight), every sum and difference of
+ * positions the core forms, each bounded as formed, and the positions held
+ * once. docs/scene-format.md states the argument.
  *
  * Everything in struct scene_format is plain C (no `num`): host programs
  * built without a numeric mode read it through tools/core_api/core_api.h.
@@ -82,8 +85,15 @@ struct scene_format {
                                   from the origin (-1: none) */
     double inside_radius, inside_far;   /* its radius, and |C| + r */
     double inside_limit;       /* SCENE_FORMAT_INSIDE_LIMIT (SCENE_ILL_INSIDE) */
-    struct scene_format_range big;      /* the largest of the five above */
-    double need;               /* 2 x big.value */
+    struct scene_format_range result;   /* ray tracer, tight (below): the sums and differences of
+                                           positions and the other results the core forms and never
+                                           adds to another num, each bound as formed (held once) */
+    int tight;                 /* ray tracer with spheres only, robust, no CSG or hierarchy: positions
+                                  and results are held once, the rest twice (scene_format.c) */
+    struct scene_format_range big;      /* the largest of the six above */
+    double need;               /* 2 x big.value; tight: the larger of twice the largest colour,
+                                  screen, square and other value and the largest position or result
+                                  grown by 2^-10 of itself and 2^-8 */
     int num_frac;              /* the chosen NUM_FRAC; -1 when nothing fits (refused) */
     int coarsest;              /* the smallest candidate NUM_FRAC */
     int wide;                  /* nothing fits, allow_wide: num_frac = coarsest, wide paths assumed */

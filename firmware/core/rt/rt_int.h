@@ -315,6 +315,15 @@ RT_ALWAYS_INLINE vec3 rt_reflect(vec3 n, vec3 l, num ndl, int small)
         r.z = num_mul_round32(n.z, m) - l.z;
         return r;
     }
+    /* 2 N.L past the range (|N.L| > NUM_MAX / 2, with |L| above half the
+     * range: the format analysis holds |L| and |R| = |L| once, not twice):
+     * each component's product (2 N_i) N.L exact and rounded once, as
+     * num_mul rounds N_i (2 N.L), and the difference narrowed once; where
+     * 2 N.L fits, the path below, unchanged */
+    if (ndl > NUM_MAX / 2 || ndl < -(NUM_MAX / 2))
+        return v3_make(wnum_to_num(wnum_sub(num_mul_wide(num_add(n.x, n.x), ndl), wnum_from_num(l.x))),
+                       wnum_to_num(wnum_sub(num_mul_wide(num_add(n.y, n.y), ndl), wnum_from_num(l.y))),
+                       wnum_to_num(wnum_sub(num_mul_wide(num_add(n.z, n.z), ndl), wnum_from_num(l.z))));
 #else
     (void)small;
 #endif

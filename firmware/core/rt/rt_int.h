@@ -142,6 +142,8 @@ struct rt_state {
     struct rt_ray *light_ray;  /* per light: directional lights' shadow ray (rt_light_constants; its origin set by each shadow test) */
     num *light_len;            /* per light: |L| of directional lights */
     struct num_divisor *light_div; /* per light: the same, as a divisor */
+    uint32_t light_fit;        /* bit k: light k (k < 32) a point light whose L = Lpos - P is formed in
+                                  32 bits (rt_init) */
     uint16_t amb_k;            /* the lights before the first non-ambient one ... */
     num amb_i;                 /* ... and their intensities' sum, in the lighting's order */
     rgb *row_c;                /* one row of colours (subsampling/adaptive) */

@@ -107,9 +107,9 @@ num rt_compute_lighting(struct rt_state *rt, vec3 p, vec3 n, int unit_normal, ve
         if (!directional) {
 #if NUM_MODE == NUM_MODE_FIXED
             /* a hit point proven within half the format (SCENE_FITS_HIT)
-             * and a light inside it: the 32-bit difference is never
-             * saturated, v3_sub's bits */
-            if ((sc->fits & SCENE_FITS_HIT) && rt_v3_within(lt->v, 30))
+             * and a light inside it (rt_state.light_fit): the 32-bit
+             * difference is never saturated, v3_sub's bits */
+            if (k < 32 && ((rt->light_fit >> k) & 1u))
                 l = v3_make((num)((uint32_t)lt->v.x - (uint32_t)p.x), (num)((uint32_t)lt->v.y - (uint32_t)p.y),
                             (num)((uint32_t)lt->v.z - (uint32_t)p.z));
             else

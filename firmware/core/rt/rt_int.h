@@ -186,6 +186,8 @@ struct rt_state {
     uint16_t ntc;
     uint8_t tiles;               /* lists in use (shortcuts, no hierarchy) */
     uint8_t all_spheres;         /* every drawn item a plain sphere (rt_init) */
+    uint8_t shadow_test;         /* a shadow ray's search (rt_lighting.c, in_shadow): only whether it hits
+                                    matters, not where (sphere tests decide it without the root's value) */
     int32_t tile_row;            /* tile row the lists hold (-1: none) */
     const int16_t *prim_items;   /* the traced primary ray's list (NULL: every item) */
     uint16_t prim_n;

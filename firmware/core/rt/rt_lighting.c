@@ -24,14 +24,20 @@ static int in_shadow(struct rt_state *rt, struct rt_ray *ray, num t_max, uint16_
     hit.fr.d = 0;   /* no best hit yet (rt_frac); the rest is written by a hit */
     rt->n.shadow_rays++;
     int cache = o->shadow_cache || rt->shortcuts;   /* same image either way */
+    /* only whether something is in the way matters: with the shortcuts on,
+     * the first occluder found answers (same image as the closest), and
+     * the sphere tests need not find where */
+    rt->shadow_test = rt->shortcuts;
     if (cache && rt->occluder[light] >= 0) {
-        if (rt_item_hit(rt, rt->occluder[light], ray, o->epsilon, t_max, &hit)) return 1;
+        if (rt_item_hit(rt, rt->occluder[light], ray, o->epsilon, t_max, &hit)) {
+            rt->shadow_test = 0;
+            return 1;
+        }
         rt->skip_item = rt->occluder[light];   /* tested already */
     }
-    /* only whether something is in the way matters: with the shortcuts on,
-     * the first occluder found answers (same image as the closest) */
     int found = rt_closest_intersection(rt, ray, o->epsilon, t_max, &hit, o->shadow_any_hit || rt->shortcuts);
     rt->skip_item = -1;
+    rt->shadow_test = 0;
     if (!found) return 0;
     if (cache) rt->occluder[light] = hit.item;
     return 1;

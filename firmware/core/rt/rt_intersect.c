@@ -78,6 +78,18 @@ static inline vec3 ray_scale_down(vec3 d, num ts, int k)
     return v3_scale(d, ts);
 }
 
+#if NUM_MODE == NUM_MODE_FIXED
+/* theta_j, the least t with t quartered j times ((t + 2) >> 2 each) at
+ * least 4 (2^(F+2) raw): theta_0 = 2^(F+2), theta_(j+1) = 4 theta_j - 2
+ * ((t + 2) >> 2 >= theta exactly when t >= 4 theta - 2), so theta_j =
+ * 4^j 2^(F+2) - 2 (4^j - 1) / 3. */
+#define RT_QTH(j) ((wnum)((((uint64_t)1 << (NUM_FRAC + 2 + 2 * (j))) - ((((uint64_t)1 << (2 * (j))) - 1) / 3) * 2)))
+static const wnum rt_quarter_th[15] = { RT_QTH(0), RT_QTH(1), RT_QTH(2),  RT_QTH(3),  RT_QTH(4),
+                                        RT_QTH(5), RT_QTH(6), RT_QTH(7),  RT_QTH(8),  RT_QTH(9),
+                                        RT_QTH(10), RT_QTH(11), RT_QTH(12), RT_QTH(13), RT_QTH(14) };
+#undef RT_QTH
+#endif
+
 void rt_ray_exact(struct rt_ray *r)
 {
     if (r->exact) return;
@@ -90,11 +102,24 @@ void rt_ray_exact(struct rt_ray *r)
     wnum four = wnum_from_num(NUM_C(4.0)), quarter = wnum_from_num(NUM_C(0.25));
     int k = 0;
     /* t * 1/4 and t * 4 rounded as wnum_mul rounds them (t >= 0) */
+#if NUM_MODE == NUM_MODE_FIXED
+    /* the quarterings' count from a alone: t_j = a quartered j times
+     * ((t + 2) >> 2 each) is >= 4 exactly when a >= rt_quarter_th[j] */
+    (void)four;
+    while (k < 15 && a >= rt_quarter_th[k]) k++;
+#else
     for (wnum t = a; t >= four && k < 15; k++) t = wnum_div4_round(t);
+#endif
     if (k == 0)
         for (wnum t = a; t < quarter && t > 0 && k > -8; k--) t = wnum_mul4(t);
     if (k > 0) {
+#if NUM_MODE == NUM_MODE_FIXED
+        /* wnum_to_num_shr(2^F raw, k): 2^(F-k) for k <= F, its rounding's
+         * 1 for k = F + 1, else 0 */
+        ts = k <= NUM_FRAC ? (num)(NUM_ONE_RAW >> k) : (num)(k == NUM_FRAC + 1);
+#else
         ts = wnum_to_num_shr(wnum_from_num(NUM_ONE), k);
+#endif
         d = ray_scale_down(d, ts, k);
         aq = rt_dot_self2(d, &a);
     } else if (k < 0) {

@@ -32,6 +32,7 @@ static void carve(const struct scene *s, uint16_t width, uint16_t height, struct
     rt->light_ray = work_take(c, sizeof(struct rt_ray) * nlight1);
     rt->light_len = work_take(c, sizeof(num) * nlight1);
     rt->light_div = work_take(c, sizeof(struct num_divisor) * nlight1);
+    rt->light_self = work_take(c, sizeof(struct rt_self_dir) * nlight1);
     rt->row_c = work_take(c, sizeof(rgb) * width);
     rt->row_item = work_take(c, sizeof(int16_t) * width);
     rt->col_x = work_take(c, sizeof(num) * width);

@@ -367,7 +367,9 @@ static int sphere_first_hit(const struct rt_state *rt, int16_t obj, struct rt_ra
  * rounded (halves up, saturating) and ts = 2^-k, k >= 0. With n = c 2^F:
  * n >= (t_min + 1) 2^k Qu puts w at or above (t_min + 1) 2^k and t above
  * t_min; then n <= (limit - 1) 2^k Ql puts t below limit (a hit), and
- * n >= limit 2^k Qu at or above it (none: sphere_first_hit stops there).
+ * n >= limit 2^k Qu, limit 2^k <= NUM_MAX, at or above it (none:
+ * sphere_first_hit stops there; a larger limit 2^k, which a saturated w
+ * may not reach, is left undecided).
  * 1: a hit, 0: none, -1: not decided (the test as before decides). */
 static int shadow_sphere_decide(const struct rt_state *rt, int16_t obj, struct rt_ray *ray, num t_min, num limit,
                                 int coarse_done)
@@ -406,8 +408,9 @@ static int shadow_sphere_decide(const struct rt_state *rt, int16_t obj, struct r
     if (n < num_umul32(((uint32_t)t_min + 1u) << k, (uint32_t)qu)) return -1;
     uint64_t wmax = (uint64_t)(uint32_t)(limit - 1) << k;
     if (n <= num_umul32(wmax > UINT32_MAX ? UINT32_MAX : (uint32_t)wmax, (uint32_t)ql)) return 1;
+    /* limit 2^k within the format: w, even saturated, is then at or above it */
     uint64_t wlim = (uint64_t)(uint32_t)limit << k;
-    if (wlim <= UINT32_MAX && n >= num_umul32((uint32_t)wlim, (uint32_t)qu)) return 0;
+    if (wlim <= (uint64_t)NUM_MAX && n >= num_umul32((uint32_t)wlim, (uint32_t)qu)) return 0;
     return -1;
 }
 #endif

@@ -32,6 +32,7 @@ static void carve(const struct scene *s, uint16_t width, uint16_t height, struct
     rt->light_ray = work_take(c, sizeof(struct rt_ray) * nlight1);
     rt->light_len = work_take(c, sizeof(num) * nlight1);
     rt->light_div = work_take(c, sizeof(struct num_divisor) * nlight1);
+    rt->light_self = work_take(c, sizeof(struct rt_self_dir) * nlight1);
     rt->row_c = work_take(c, sizeof(rgb) * width);
     rt->row_item = work_take(c, sizeof(int16_t) * width);
     rt->col_x = work_take(c, sizeof(num) * width);
@@ -171,7 +172,17 @@ int rt_init(void *work, size_t work_size, const struct scene *s, uint16_t width,
     rt->all_spheres = 1;
     for (uint16_t i = 0; i < rt->nitems; i++)
         if (rt->items[i] >= (int16_t)s->nobjects || s->objects[rt->items[i]].shape != RT_SPHERE) rt->all_spheres = 0;
-    for (uint16_t k = 0; k < s->nlights; k++) rt->occluder[k] = -1;
+    for (uint16_t k = 0; k < s->nlights; k++) {
+        rt->occluder[k] = -1;
+        /* a hit point proven within half the format (SCENE_FITS_HIT) and a
+         * light inside it: L = Lpos - P in 32 bits is never saturated
+         * (rt_compute_lighting; the lights from 32 on take v3_sub, the
+         * same bits) */
+#if NUM_MODE == NUM_MODE_FIXED
+        if (k < 32 && (s->fits & SCENE_FITS_HIT) && rt_v3_within(s->lights[k].v, 30))
+            rt->light_fit |= (uint32_t)1 << k;
+#endif
+    }
     init_viewport(rt);
     rt->cam_pos = s->camera.position;
     rt->cam_rot = s->camera.rotation;

@@ -68,6 +68,16 @@ struct rt_sample {
  * rt_far_point. Fixed point only: float and double hold such t. */
 #define RT_T_FAR (NUM_MAX - NUM_EPS)
 
+/* rt_self_shadowed's terms of the shadow ray's direction d and epsilon
+ * (rt_lighting.c): e1 = 3 + floor(4 |d|_1) ulps, with A = d.d at 2F
+ * fraction bits alim = A - A / 2^10 - 1 and rhs >= (eps + 16 u) A; ok 0:
+ * the test decides nothing along d. */
+struct rt_self_dir {
+    uint64_t alim, rhs;
+    uint32_t e1;
+    uint8_t ok;
+};
+
 /* Per-object constants, recomputed per frame. */
 struct rt_obj_cache {
     wnum r2;              /* radius^2 */
@@ -142,6 +152,9 @@ struct rt_state {
     struct rt_ray *light_ray;  /* per light: directional lights' shadow ray (rt_light_constants; its origin set by each shadow test) */
     num *light_len;            /* per light: |L| of directional lights */
     struct num_divisor *light_div; /* per light: the same, as a divisor */
+    struct rt_self_dir *light_self; /* per light: a directional light's terms of rt_self_shadowed */
+    uint32_t light_fit;        /* bit k: light k (k < 32) a point light whose L = Lpos - P is formed in
+                                  32 bits (rt_init) */
     uint16_t amb_k;            /* the lights before the first non-ambient one ... */
     num amb_i;                 /* ... and their intensities' sum, in the lighting's order */
     rgb *row_c;                /* one row of colours (subsampling/adaptive) */
@@ -184,6 +197,8 @@ struct rt_state {
     uint16_t ntc;
     uint8_t tiles;               /* lists in use (shortcuts, no hierarchy) */
     uint8_t all_spheres;         /* every drawn item a plain sphere (rt_init) */
+    uint8_t shadow_test;         /* a shadow ray's search (rt_lighting.c, in_shadow): only whether it hits
+                                    matters, not where (sphere tests decide it without the root's value) */
     int32_t tile_row;            /* tile row the lists hold (-1: none) */
     const int16_t *prim_items;   /* the traced primary ray's list (NULL: every item) */
     uint16_t prim_n;
@@ -333,8 +348,11 @@ RT_ALWAYS_INLINE vec3 rt_reflect(vec3 n, vec3 l, num ndl, int small)
 /* rt_lighting.c, fixed point: 1 only when a shadow ray from P along d (|d_i|
  * <= 2^26 raw) certainly meets its own plain sphere obj at the root 2b/a'
  * in (epsilon, 1), for the normal n = rt_hit_normal's (|n_i| <= 2^(F+1))
- * and ndl = n.d as the lighting rounds it, ndl < 0. */
-int rt_self_shadowed(const struct rt_state *rt, int16_t obj, num ndl, const vec3 *d);
+ * and ndl = n.d as the lighting rounds it, ndl < 0; sd: the terms of d
+ * (rt_self_dir_make(d, epsilon), made once for a directional light), or
+ * NULL (made here). */
+int rt_self_shadowed(const struct rt_state *rt, int16_t obj, num ndl, const vec3 *d, const struct rt_self_dir *sd);
+struct rt_self_dir rt_self_dir_make(const vec3 *d, num epsilon);
 
 /* rt_lighting.c, the book's ComputeLighting: intensity at P (normal N, view V = -D) for specular exponent s
  * (unit_normal: N is a sphere's (P - C) / r, of length 1 up to rounding)

@@ -78,6 +78,18 @@ static inline vec3 ray_scale_down(vec3 d, num ts, int k)
     return v3_scale(d, ts);
 }
 
+#if NUM_MODE == NUM_MODE_FIXED
+/* theta_j, the least t with t quartered j times ((t + 2) >> 2 each) at
+ * least 4 (2^(F+2) raw): theta_0 = 2^(F+2), theta_(j+1) = 4 theta_j - 2
+ * ((t + 2) >> 2 >= theta exactly when t >= 4 theta - 2), so theta_j =
+ * 4^j 2^(F+2) - 2 (4^j - 1) / 3. */
+#define RT_QTH(j) ((wnum)((((uint64_t)1 << (NUM_FRAC + 2 + 2 * (j))) - ((((uint64_t)1 << (2 * (j))) - 1) / 3) * 2)))
+static const wnum rt_quarter_th[15] = { RT_QTH(0), RT_QTH(1), RT_QTH(2),  RT_QTH(3),  RT_QTH(4),
+                                        RT_QTH(5), RT_QTH(6), RT_QTH(7),  RT_QTH(8),  RT_QTH(9),
+                                        RT_QTH(10), RT_QTH(11), RT_QTH(12), RT_QTH(13), RT_QTH(14) };
+#undef RT_QTH
+#endif
+
 void rt_ray_exact(struct rt_ray *r)
 {
     if (r->exact) return;
@@ -90,11 +102,24 @@ void rt_ray_exact(struct rt_ray *r)
     wnum four = wnum_from_num(NUM_C(4.0)), quarter = wnum_from_num(NUM_C(0.25));
     int k = 0;
     /* t * 1/4 and t * 4 rounded as wnum_mul rounds them (t >= 0) */
+#if NUM_MODE == NUM_MODE_FIXED
+    /* the quarterings' count from a alone: t_j = a quartered j times
+     * ((t + 2) >> 2 each) is >= 4 exactly when a >= rt_quarter_th[j] */
+    (void)four;
+    while (k < 15 && a >= rt_quarter_th[k]) k++;
+#else
     for (wnum t = a; t >= four && k < 15; k++) t = wnum_div4_round(t);
+#endif
     if (k == 0)
         for (wnum t = a; t < quarter && t > 0 && k > -8; k--) t = wnum_mul4(t);
     if (k > 0) {
+#if NUM_MODE == NUM_MODE_FIXED
+        /* wnum_to_num_shr(2^F raw, k): 2^(F-k) for k <= F, its rounding's
+         * 1 for k = F + 1, else 0 */
+        ts = k <= NUM_FRAC ? (num)(NUM_ONE_RAW >> k) : (num)(k == NUM_FRAC + 1);
+#else
         ts = wnum_to_num_shr(wnum_from_num(NUM_ONE), k);
+#endif
         d = ray_scale_down(d, ts, k);
         aq = rt_dot_self2(d, &a);
     } else if (k < 0) {
@@ -343,12 +368,85 @@ static int sphere_first_hit(const struct rt_state *rt, int16_t obj, struct rt_ra
     return got;
 }
 
-/* rt_item_hit of a plain sphere with the shortcuts on: the hit filled in. */
+#if NUM_MODE == NUM_MODE_FIXED
+/* A shadow test's sphere (not the ray's own): whether sphere_first_hit
+ * finds a hit, for its common outcomes without the square root and the
+ * division. From outside (c > 0, b > 0, a positive discriminant) with c and
+ * a in rt_near_beyond's range the computed square root is at most b, so q
+ * (at F bits) lies in [Ql, Qu], Ql = round(b) >= 1, Qu = round(2b)
+ * (rt_near_beyond); the near root is t = w ts, rounded, with w = c 2^F / q
+ * rounded (halves up, saturating) and ts = 2^-k, k >= 0. With n = c 2^F:
+ * n >= (t_min + 1) 2^k Qu puts w at or above (t_min + 1) 2^k and t above
+ * t_min; then n <= (limit - 1) 2^k Ql puts t below limit (a hit), and
+ * n >= limit 2^k Qu, limit 2^k <= NUM_MAX, at or above it (none:
+ * sphere_first_hit stops there; a larger limit 2^k, which a saturated w
+ * may not reach, is left undecided).
+ * 1: a hit, 0: none, -1: not decided (the test as before decides). */
+static int shadow_sphere_decide(const struct rt_state *rt, int16_t obj, struct rt_ray *ray, num t_min, num limit,
+                                int coarse_done)
+{
+    const struct rt_obj_cache *oc = &rt->oc[obj];
+    /* sphere_quad's steps (a shadow ray: not from the camera, no exact
+     * direction) up to the discriminant */
+    if (!coarse_done) {
+        rt_ray_cd(ray);
+        if (rt_coarse_sphere_miss(&ray->cd, &oc->cs)) return 0;
+    }
+    vec3 co = v3_sub(ray->o, rt->s->objects[obj].center);
+    wnum dot = v3_dot_wide(co, co);
+    wnum c = wnum_sub(dot, oc->r2);
+    rt_ray_exact(ray);
+    vec3 d = ray->ds;
+    int64_t bx = -(num_smul32(co.x, d.x) + num_smul32(co.y, d.y) + num_smul32(co.z, d.z));
+    if (c > 0 && bx <= 0) return 0;
+    uint32_t ts = (uint32_t)ray->tscale;
+    if (bx < ((int64_t)1 << NUM_FRAC) || !rt_near_c_ok(c, dot) || !rt_near_na_ok(c, ray->aq) || t_min < 0 ||
+        t_min >= (1 << 16) || limit <= 0 || ts == 0 || ts > (uint32_t)NUM_ONE_RAW || (ts & (ts - 1u)) != 0)
+        return -1;
+    uint64_t dd;
+    int e;
+    if (!rt_quad_disc_x(rt_mag64(num_smul32(co.y, d.z) - num_smul32(co.z, d.y)),
+                        rt_mag64(num_smul32(co.z, d.x) - num_smul32(co.x, d.z)),
+                        rt_mag64(num_smul32(co.x, d.y) - num_smul32(co.y, d.x)), ray->aq, &oc->qs, &dd, &e))
+        return 0;
+    (void)e;
+    if (dd == 0) return -1;
+    uint64_t qu = ((uint64_t)bx * 2u + (1u << (NUM_FRAC - 1))) >> NUM_FRAC;
+    uint64_t ql = ((uint64_t)bx + (1u << (NUM_FRAC - 1))) >> NUM_FRAC;
+    if (qu > UINT32_MAX) return -1;
+    int k = NUM_FRAC - (31 - num_clz32(ts));   /* ts = 2^(F-k), 0 <= k <= F */
+    uint64_t n = (uint64_t)c << NUM_FRAC;      /* c < 2^(62-F) (rt_near_n_ok) */
+    if (n < num_umul32(((uint32_t)t_min + 1u) << k, (uint32_t)qu)) return -1;
+    uint64_t wmax = (uint64_t)(uint32_t)(limit - 1) << k;
+    if (n <= num_umul32(wmax > UINT32_MAX ? UINT32_MAX : (uint32_t)wmax, (uint32_t)ql)) return 1;
+    /* limit 2^k within the format: w, even saturated, is then at or above it */
+    uint64_t wlim = (uint64_t)(uint32_t)limit << k;
+    if (wlim <= (uint64_t)NUM_MAX && n >= num_umul32((uint32_t)wlim, (uint32_t)qu)) return 0;
+    return -1;
+}
+#endif
+
+/* rt_item_hit of a plain sphere with the shortcuts on: the hit filled in
+ * (a shadow test's, rt_state.shadow_test, without its t: t_max). */
 static int sphere_item_hit(const struct rt_state *rt, int16_t item, struct rt_ray *ray, num t_min, num limit,
                            struct rt_hit *hit, int coarse_done)
 {
     num t;
     struct rt_frac fr;
+#if NUM_MODE == NUM_MODE_FIXED
+    if (rt->shadow_test && item != ray->origin) {
+        int got = shadow_sphere_decide(rt, item, ray, t_min, limit, coarse_done);
+        if (got == 0) return 0;
+        if (got > 0) {
+            hit->t = limit;
+            hit->fr.d = 0;
+            hit->item = hit->surf = item;
+            hit->flip = 0;
+            return 1;
+        }
+        coarse_done = 1;   /* the coarse test has not rejected it */
+    }
+#endif
     if (!sphere_first_hit(rt, item, ray, t_min, limit, hit, &t, &fr, coarse_done)) return 0;
     hit->t = t;
     hit->fr.n = fr.n;   /* by fields: a struct copy is a memcpy call on ARMv6-M */

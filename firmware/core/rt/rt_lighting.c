@@ -24,14 +24,20 @@ static int in_shadow(struct rt_state *rt, struct rt_ray *ray, num t_max, uint16_
     hit.fr.d = 0;   /* no best hit yet (rt_frac); the rest is written by a hit */
     rt->n.shadow_rays++;
     int cache = o->shadow_cache || rt->shortcuts;   /* same image either way */
+    /* only whether something is in the way matters: with the shortcuts on,
+     * the first occluder found answers (same image as the closest), and
+     * the sphere tests need not find where */
+    rt->shadow_test = rt->shortcuts;
     if (cache && rt->occluder[light] >= 0) {
-        if (rt_item_hit(rt, rt->occluder[light], ray, o->epsilon, t_max, &hit)) return 1;
+        if (rt_item_hit(rt, rt->occluder[light], ray, o->epsilon, t_max, &hit)) {
+            rt->shadow_test = 0;
+            return 1;
+        }
         rt->skip_item = rt->occluder[light];   /* tested already */
     }
-    /* only whether something is in the way matters: with the shortcuts on,
-     * the first occluder found answers (same image as the closest) */
     int found = rt_closest_intersection(rt, ray, o->epsilon, t_max, &hit, o->shadow_any_hit || rt->shortcuts);
     rt->skip_item = -1;
+    rt->shadow_test = 0;
     if (!found) return 0;
     if (cache) rt->occluder[light] = hit.item;
     return 1;
@@ -50,25 +56,48 @@ static int in_shadow(struct rt_state *rt, struct rt_ray *ray, num t_max, uint16_
  * floor(4 |d|_1) ulps: 1.5 + 0.51 |d|_1 + 3.01 |d|_1) of 2 r (-ndl) over
  * A (1 +- 1.74 u), and the computed t1 within u of tau. So 2 r (m - e1) >=
  * (eps + 16 u) A and 2 r (m + e1) <= (1 - 2^-10) A (m = -ndl) put t1 in
- * (eps, 1). In integers: raw values, products at 2F fraction bits. */
-RT_NOINLINE int rt_self_shadowed(const struct rt_state *rt, int16_t obj, num ndl, const vec3 *d)
+ * (eps, 1). In integers: raw values, products at 2F fraction bits. The
+ * terms of d and eps alone (rt_self_dir) are made once for a directional
+ * light (rt_light_constants). */
+struct rt_self_dir rt_self_dir_make(const vec3 *d, num epsilon)
 {
+    struct rt_self_dir sd = { 0, 0, 0, 0 };
 #if NUM_MODE == NUM_MODE_FIXED
-    uint32_t r = (uint32_t)rt->s->objects[obj].radius, eps = (uint32_t)rt->s->rt.epsilon;
-    uint32_t m = 0u - (uint32_t)ndl;   /* ndl < 0 */
+    uint32_t eps = (uint32_t)epsilon;
     uint32_t ax = rt_uabs(d->x), ay = rt_uabs(d->y), az = rt_uabs(d->z);
-    uint32_t e1 = 3u + ((ax + ay + az) >> (NUM_FRAC - 2));
-    /* m > e1, r > 0 and eps in [0, 2^20) */
-    if (m <= e1 || (int32_t)r <= 0 || eps >= (1u << 20)) return 0;
+    sd.e1 = 3u + ((ax + ay + az) >> (NUM_FRAC - 2));
+    /* eps in [0, 2^20) */
+    if (eps >= (1u << 20)) return sd;
     uint64_t a = rt_usq32(ax) + rt_usq32(ay) + rt_usq32(az);   /* A, below 2^54 */
-    if (a < ((uint64_t)1 << (2 * NUM_FRAC - 1))) return 0;    /* A < 1/2: k may be negative */
-    if (2 * num_umul32(r, m + e1) > a - (a >> 10) - 1) return 0;
+    if (a < ((uint64_t)1 << (2 * NUM_FRAC - 1))) return sd;   /* A < 1/2: k may be negative */
+    sd.alim = a - (a >> 10) - 1;
     uint64_t a16 = (a >> NUM_FRAC) + 1;                       /* >= A / 2^F, below 2^(54-F) + 1 */
     eps += 16u;
-    uint64_t rhs = num_umul32(eps, (uint32_t)a16) + ((uint64_t)(eps * (uint32_t)(a16 >> 32)) << 32);
-    return 2 * num_umul32(r, m - e1) >= rhs;
+    sd.rhs = num_umul32(eps, (uint32_t)a16) + ((uint64_t)(eps * (uint32_t)(a16 >> 32)) << 32);
+    sd.ok = 1;
 #else
-    (void)rt; (void)obj; (void)ndl; (void)d;
+    (void)d; (void)epsilon;
+#endif
+    return sd;
+}
+
+RT_NOINLINE int rt_self_shadowed(const struct rt_state *rt, int16_t obj, num ndl, const vec3 *d,
+                                 const struct rt_self_dir *sdp)
+{
+#if NUM_MODE == NUM_MODE_FIXED
+    struct rt_self_dir sd;
+    if (!sdp) {
+        sd = rt_self_dir_make(d, rt->s->rt.epsilon);
+        sdp = &sd;
+    }
+    uint32_t r = (uint32_t)rt->s->objects[obj].radius;
+    uint32_t m = 0u - (uint32_t)ndl;   /* ndl < 0 */
+    /* m > e1 and r > 0 */
+    if (!sdp->ok || m <= sdp->e1 || (int32_t)r <= 0) return 0;
+    if (2 * num_umul32(r, m + sdp->e1) > sdp->alim) return 0;
+    return 2 * num_umul32(r, m - sdp->e1) >= sdp->rhs;
+#else
+    (void)rt; (void)obj; (void)ndl; (void)d; (void)sdp;
     return 0;
 #endif
 }
@@ -107,9 +136,9 @@ num rt_compute_lighting(struct rt_state *rt, vec3 p, vec3 n, int unit_normal, ve
         if (!directional) {
 #if NUM_MODE == NUM_MODE_FIXED
             /* a hit point proven within half the format (SCENE_FITS_HIT)
-             * and a light inside it: the 32-bit difference is never
-             * saturated, v3_sub's bits */
-            if ((sc->fits & SCENE_FITS_HIT) && rt_v3_within(lt->v, 30))
+             * and a light inside it (rt_state.light_fit): the 32-bit
+             * difference is never saturated, v3_sub's bits */
+            if (k < 32 && ((rt->light_fit >> k) & 1u))
                 l = v3_make((num)((uint32_t)lt->v.x - (uint32_t)p.x), (num)((uint32_t)lt->v.y - (uint32_t)p.y),
                             (num)((uint32_t)lt->v.z - (uint32_t)p.z));
             else
@@ -135,7 +164,7 @@ num rt_compute_lighting(struct rt_state *rt, vec3 p, vec3 n, int unit_normal, ve
              * its normal unflipped): its own sphere shadows it
              * (rt_self_shadowed), without the ray */
             if (n_dot_l < 0 && small && unit_normal && rt->shortcuts && sc->ncsg == 0 &&
-                rt_self_shadowed(rt, origin, n_dot_l, &l)) {
+                rt_self_shadowed(rt, origin, n_dot_l, &l, directional ? &rt->light_self[k] : NULL)) {
                 rt->n.shadow_rays++;
                 if (shadow_bits && k < 7) *shadow_bits |= (uint8_t)(1u << k);
                 continue;

@@ -715,8 +715,10 @@ static inline wnum rt_dot_self2(vec3 d, wnum *w)
 /* The rest of rt_quad_solve from b and CO x D' at 2F fraction bits (bx,
  * x0, x1, x2 exact, x's as magnitudes), once the caller has rejected
  * c > 0 with bx <= 0 (before forming the cross product). */
-RT_ALWAYS_INLINE int rt_quad_solve_x(int64_t bx, uint64_t x0, uint64_t x1, uint64_t x2, wnum aq,
-                                     const struct rt_qsphere *sp, struct rt_quad *k)
+/* Its discriminant b^2 - a c = a r^2 - |CO x D'|^2 as dd 2^e (at 4F
+ * fraction bits): 0 when it is negative, else 1 with *dd and *ep. */
+RT_ALWAYS_INLINE int rt_quad_disc_x(uint64_t x0, uint64_t x1, uint64_t x2, wnum aq, const struct rt_qsphere *sp,
+                                    uint64_t *dd, int *ep)
 {
     uint64_t ax = (uint64_t)aq;
     /* |CO x D'|^2 at scale 2^(2 kx), each component >> kx below 2^30 */
@@ -738,7 +740,17 @@ RT_ALWAYS_INLINE int rt_quad_solve_x(int64_t bx, uint64_t x0, uint64_t x1, uint6
         xx = rt_shr64(xx, e - 2 * kx);
     }
     if (ar < xx) return 0;
-    uint64_t dd = ar - xx;
+    *dd = ar - xx;
+    *ep = e;
+    return 1;
+}
+
+RT_ALWAYS_INLINE int rt_quad_solve_x(int64_t bx, uint64_t x0, uint64_t x1, uint64_t x2, wnum aq,
+                                     const struct rt_qsphere *sp, struct rt_quad *k)
+{
+    uint64_t dd;
+    int e;
+    if (!rt_quad_disc_x(x0, x1, x2, aq, sp, &dd, &e)) return 0;
     k->disc_pos = dd > 0;
     if (e & 1) { dd <<= 1; e--; }            /* dd < 2^62 */
     int64_t hx = (int64_t)(num_isqrt64(dd, 0) << (e / 2));

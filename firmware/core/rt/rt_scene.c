@@ -43,6 +43,7 @@ void rt_light_constants(struct rt_state *rt)
             rt_ray_exact(&rt->light_ray[k]);
             rt->light_len[k] = v3_len(s->lights[k].v);
             rt->light_div[k] = num_divisor_make(rt->light_len[k]);
+            rt->light_self[k] = rt_self_dir_make(&s->lights[k].v, s->rt.epsilon);
         }
 }
 

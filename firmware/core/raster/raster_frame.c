@@ -387,31 +387,45 @@ static void instance_triangles(struct ras_ctx *rc, uint16_t i, uint32_t k0, uint
 }
 
 /* The live triangles of the frame sorted by the bucket of their first row
- * (struct ras_bins), stable, and the last row each bucket reaches. */
+ * (struct ras_bins), stable, and the last row each bucket reaches. (What
+ * the loops read held in locals; a bucket's reach kept as the packed last
+ * row until the end, then ras_trows_last of it: the same where row_shift
+ * is 0.) */
 static void bin_triangles(struct ras_ctx *rc)
 {
     struct ras_bins *B = &rc->bins;
-    uint16_t *start = B->start;
-    const uint32_t nb = B->nbuckets;
+    uint16_t *start = B->start, *order = B->order;
+    int16_t *reach = B->reach;
+    const struct ras_trows *rows = rc->tri_rows;
+    const uint32_t nb = B->nbuckets, n = rc->ntris, sh = rc->row_shift;
     for (uint32_t b = 0; b <= nb; b++) start[b] = 0;
-    for (uint32_t b = 0; b < nb; b++) B->reach[b] = -1;
+    for (uint32_t b = 0; b < nb; b++) reach[b] = -1;
     const uint32_t dm = B->div_mul, sr = rc->strip_rows;
-    for (uint32_t gi = 0; gi < rc->ntris; gi++) {
-        struct ras_trows r = rc->tri_rows[gi];
-        if (r.r0 > r.r1) continue;
-        const uint32_t f = (uint32_t)ras_trows_first(rc, r);
-        start[(dm ? (f * dm) >> 16 : f / sr) + 1]++;
-    }
+    if (dm)
+        for (uint32_t gi = 0; gi < n; gi++) {
+            const uint32_t r0 = rows[gi].r0;
+            if (r0 > rows[gi].r1) continue;
+            start[(((r0 << sh) * dm) >> 16) + 1]++;
+        }
+    else
+        for (uint32_t gi = 0; gi < n; gi++) {
+            const uint32_t r0 = rows[gi].r0;
+            if (r0 > rows[gi].r1) continue;
+            start[(r0 << sh) / sr + 1]++;
+        }
     for (uint32_t b = 1; b <= nb; b++) start[b] = (uint16_t)(start[b] + start[b - 1]);
     /* start[b] walks bucket b's run; afterwards it holds the run's end,
      * which is bucket b + 1's start */
-    for (uint32_t gi = 0; gi < rc->ntris; gi++) {
-        struct ras_trows r = rc->tri_rows[gi];
-        if (r.r0 > r.r1) continue;
-        const uint32_t f = (uint32_t)ras_trows_first(rc, r), b = dm ? (f * dm) >> 16 : f / sr;
-        B->order[start[b]++] = (uint16_t)gi;
-        if (ras_trows_last(rc, r) > B->reach[b]) B->reach[b] = (int16_t)ras_trows_last(rc, r);
+    for (uint32_t gi = 0; gi < n; gi++) {
+        const uint32_t r0 = rows[gi].r0, r1 = rows[gi].r1;
+        if (r0 > r1) continue;
+        const uint32_t f = r0 << sh, b = dm ? (f * dm) >> 16 : f / sr;
+        order[start[b]++] = (uint16_t)gi;
+        if ((int32_t)r1 > reach[b]) reach[b] = (int16_t)r1;
     }
+    if (sh)
+        for (uint32_t b = 0; b < nb; b++)
+            if (reach[b] >= 0) reach[b] = (int16_t)((((uint32_t)reach[b] + 1u) << sh) - 1u);
     for (uint32_t b = nb; b > 0; b--) start[b] = start[b - 1];
     start[0] = 0;
 }

@@ -180,13 +180,9 @@ typedef char ras_fast_state_fits[sizeof(struct fstate) <= sizeof(struct ras_fast
 #define RAS_SCAN_MAX 160
 /* Edge i from (ax, ay) by (dx, dy): its value at the box's first pixel
  * (px, py), its steps and, where not scanned, its row bounds. */
-static inline void fast_edge(struct fstate *S, int i, int32_t ax, int32_t ay, int32_t dx, int32_t dy, int32_t px,
-                             int32_t py, int sb, int scan)
+static inline void fast_edge_w(struct fstate *S, int i, int32_t w, int32_t dx, int32_t dy, int sb, int scan)
 {
     const int32_t bias = (dy < 0 || (dy == 0 && dx > 0)) ? 0 : -1;
-    /* ras_edge's value in 32 bits: the pixel lies within a pixel of the
-     * box, so |dx|, |dy| <= 2^14 and the other factors < 2^14 + 2^9 */
-    const int32_t w = dx * (py - ay) - dy * (px - ax);
     /* (times 2^sb: |dx|, |dy| <= 2^14) */
     const int32_t a = -dy * ((int32_t)1 << sb), b = dx * ((int32_t)1 << sb);
     S->wr[i] = w;
@@ -196,8 +192,16 @@ static inline void fast_edge(struct fstate *S, int i, int32_t ax, int32_t ay, in
     if (!scan) fedge_init(&S->fe[i], a, b, w, bias);
 }
 
+static inline void fast_edge(struct fstate *S, int i, int32_t ax, int32_t ay, int32_t dx, int32_t dy, int32_t px,
+                             int32_t py, int sb, int scan)
+{
+    /* ras_edge's value in 32 bits: the pixel lies within a pixel of the
+     * box, so |dx|, |dy| <= 2^14 and the other factors < 2^14 + 2^9 */
+    fast_edge_w(S, i, dx * (py - ay) - dy * (px - ax), dx, dy, sb, scan);
+}
+
 static int fast_edges(const struct ras_ctx *rc, const int32_t box[4], const struct ras_sv *v0,
-                      const struct ras_sv *v1, const struct ras_sv *v2, struct fstate *S, int32_t *rtop)
+                      const struct ras_sv *v1, const struct ras_sv *v2, int32_t area, struct fstate *S, int32_t *rtop)
 {
     const struct render_target *t = rc->cur.t;
     int sb = rc->def.sub_bits;
@@ -231,7 +235,11 @@ static int fast_edges(const struct ras_ctx *rc, const int32_t box[4], const stru
     const int32_t x0 = v0->x, y0 = v0->y, x1 = v1->x, y1 = v1->y, x2 = v2->x, y2 = v2->y;
     fast_edge(S, 0, x1, y1, x2 - x1, y2 - y1, px, py, sb, scan);
     fast_edge(S, 1, x2, y2, x0 - x2, y0 - y2, px, py, sb, scan);
-    fast_edge(S, 2, x0, y0, x1 - x0, y1 - y0, px, py, sb, scan);
+    /* the three edge values sum to the doubled area at every point (each
+     * is zero on its own edge, the third the area at the opposite corner,
+     * and their steps cancel): the third without its products, the same
+     * value (|area| < 2^28, each value below 2^29) */
+    fast_edge_w(S, 2, area - S->wr[0] - S->wr[1], x1 - x0, y1 - y0, sb, scan);
     S->c0 = c0;
     S->kmax = cr - c0;
     S->row = r0;
@@ -712,7 +720,7 @@ static int fast_setup(const struct ras_ctx *rc, const struct ras_sv *v0, const s
     const int32_t area = (v1->x - v0->x) * (v2->y - v0->y) - (v1->y - v0->y) * (v2->x - v0->x);
     if (area <= 0) return 0;
     int32_t rtop;
-    int r = fast_edges(rc, box, v0, v1, v2, S, &rtop);
+    int r = fast_edges(rc, box, v0, v1, v2, area, S, &rtop);
     if (r <= 0 || (lazy && S->scan && !fast_covers(rc, S))) return 0;
     S->depth = rc->depth_bytes != 0;
     if (!S->depth) {

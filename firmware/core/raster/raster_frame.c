@@ -268,6 +268,69 @@ static struct ras_range pv_live(struct ras_ctx *rc, const struct ras_instance *i
     return rc->bins.on ? centre_rows(rc, lo, hi) : r;
 }
 
+/* What pv_loop_live reads of an instance's triangles' loop, made once per
+ * loop: the context, the instance, the front-face bound, the part, the
+ * rows' constants and whether lighting is kept. */
+struct tri_loop {
+    struct ras_ctx *rc;
+    const struct ras_instance *in;
+    const struct ras_model *m;
+    const struct ras_inst *ri;
+    int64_t fbound;
+    uint8_t *flags;          /* the instance's flag bytes, NULL: none kept */
+    int part, plain, bins;   /* plain: no lighting kept (!vlit, no tri_shade) */
+    int32_t sb, half, hmax;  /* sub-pixel bits, half a pixel in them, the last row */
+    uint32_t rshift;         /* ras_ctx.row_shift */
+};
+
+/* pv_live's rows packed (ras_trows_pack) for the loop of instance_triangles:
+ * the same decisions, counts and flags, with the loop's constants read from
+ * L (fewer arguments, none of rc's fields read again). */
+#if defined(__GNUC__) || defined(__clang__)
+__attribute__((noinline))
+#endif
+static struct ras_trows pv_loop_live(const struct tri_loop *L, uint32_t k, const struct ras_pv *pa,
+                                     const struct ras_pv *pb, const struct ras_pv *pc, int64_t area)
+{
+    const struct ras_trows none = { 1, 0 };
+    const int32_t ya = pa->sy, yb = pb->sy, yc = pc->sy, sb = L->sb;
+    const int32_t lo = min3(ya, yb, yc), hi = max3(ya, yb, yc);
+    /* sub_rows: one row of margin each side */
+    int32_t r0 = (lo >> sb) - 1, r1 = (hi >> sb) + 1;
+    if (r0 < 0) r0 = 0;
+    if (r1 > L->hmax) r1 = L->hmax;
+    if (r0 > r1) return none;
+    const int32_t d1x = pb->sx - pa->sx, d1y = yb - ya, d2x = pc->sx - pa->sx, d2y = yc - ya;
+    const int32_t Ls = (d1x < 0 ? -d1x : d1x) + (d1y < 0 ? -d1y : d1y) + (d2x < 0 ? -d2x : d2x) +
+                       (d2y < 0 ? -d2y : d2y);
+    const int64_t margin = area - 2 * (int64_t)Ls - 24;
+    struct ras_ctx *rc = L->rc;
+    if (L->plain) {
+        if (margin > L->fbound || ras_front_known(&rc->def.front, margin, pa->iz, pb->iz, pc->iz)) {
+            if (L->flags) L->flags[k] = (uint8_t)(RAS_TRI_LIVE | RAS_TRI_FRONT);
+        } else if (!ras_tri_cache(rc, L->in, L->ri, L->m, &L->m->tris[k], L->ri->tbase + k, L->part, 0))
+            return none;
+    } else {
+        const int known = L->ri->vlit && (margin > L->fbound ||
+                                          ras_front_known(&rc->def.front, margin, pa->iz, pb->iz, pc->iz));
+        if (!ras_tri_cache(rc, L->in, L->ri, L->m, &L->m->tris[k], L->ri->tbase + k, L->part, known))
+            return none;
+    }
+    rc->part_drawn[L->part]++;
+    if (L->bins) {
+        /* centre_rows: the rows of the pixel centres it spans */
+        r0 = (lo + L->half - 1) >> sb;
+        r1 = (hi - L->half) >> sb;
+        if (r0 < 0) r0 = 0;
+        if (r1 > L->hmax) r1 = L->hmax;
+        if (r0 > r1) return none;
+    }
+    struct ras_trows p;
+    p.r0 = (uint8_t)((uint32_t)r0 >> L->rshift);
+    p.r1 = (uint8_t)((uint32_t)r1 >> L->rshift);
+    return p;
+}
+
 /* Triangle k of instance i (its frame facts kept), as part `part` of the
  * frame's triangles: the rows the strips visit it on. (Inline: one call a
  * triangle less, half of them culled in a few instructions.) */
@@ -360,6 +423,20 @@ static void instance_triangles(struct ras_ctx *rc, uint16_t i, uint32_t k0, uint
         uint8_t *flags = rc->def.tri_flags ? rc->def.tri_flags + tb : NULL;
         struct ras_trows *rk = rows + tb;
         const struct ras_trows none = { 1, 0 };
+        struct tri_loop tl;
+        tl.rc = rc;
+        tl.in = in;
+        tl.m = m;
+        tl.ri = ri;
+        tl.fbound = fbound;
+        tl.flags = flags;
+        tl.part = part;
+        tl.plain = !ri->vlit && !rc->def.tri_shade;
+        tl.bins = rc->bins.on;
+        tl.sb = rc->def.sub_bits;
+        tl.half = (int32_t)1 << (tl.sb - 1);
+        tl.hmax = (int32_t)rc->h - 1;
+        tl.rshift = rc->row_shift;
         for (uint32_t k = k0; k < k1; k++) {
             const struct ras_triangle *t = &tris[k];
             const uint32_t a = t->v[0], b = t->v[1], c = t->v[2];
@@ -378,7 +455,7 @@ static void instance_triangles(struct ras_ctx *rc, uint16_t i, uint32_t k0, uint
                 rk[k] = none;
                 continue;
             }
-            rk[k] = ras_trows_pack(rc, pv_live(rc, in, m, ri, k, part, fbound, pa, pb, pc, area));
+            rk[k] = pv_loop_live(&tl, k, pa, pb, pc, area);
         }
         return;
     }
@@ -387,31 +464,45 @@ static void instance_triangles(struct ras_ctx *rc, uint16_t i, uint32_t k0, uint
 }
 
 /* The live triangles of the frame sorted by the bucket of their first row
- * (struct ras_bins), stable, and the last row each bucket reaches. */
+ * (struct ras_bins), stable, and the last row each bucket reaches. (What
+ * the loops read held in locals; a bucket's reach kept as the packed last
+ * row until the end, then ras_trows_last of it: the same where row_shift
+ * is 0.) */
 static void bin_triangles(struct ras_ctx *rc)
 {
     struct ras_bins *B = &rc->bins;
-    uint16_t *start = B->start;
-    const uint32_t nb = B->nbuckets;
+    uint16_t *start = B->start, *order = B->order;
+    int16_t *reach = B->reach;
+    const struct ras_trows *rows = rc->tri_rows;
+    const uint32_t nb = B->nbuckets, n = rc->ntris, sh = rc->row_shift;
     for (uint32_t b = 0; b <= nb; b++) start[b] = 0;
-    for (uint32_t b = 0; b < nb; b++) B->reach[b] = -1;
+    for (uint32_t b = 0; b < nb; b++) reach[b] = -1;
     const uint32_t dm = B->div_mul, sr = rc->strip_rows;
-    for (uint32_t gi = 0; gi < rc->ntris; gi++) {
-        struct ras_trows r = rc->tri_rows[gi];
-        if (r.r0 > r.r1) continue;
-        const uint32_t f = (uint32_t)ras_trows_first(rc, r);
-        start[(dm ? (f * dm) >> 16 : f / sr) + 1]++;
-    }
+    if (dm)
+        for (uint32_t gi = 0; gi < n; gi++) {
+            const uint32_t r0 = rows[gi].r0;
+            if (r0 > rows[gi].r1) continue;
+            start[(((r0 << sh) * dm) >> 16) + 1]++;
+        }
+    else
+        for (uint32_t gi = 0; gi < n; gi++) {
+            const uint32_t r0 = rows[gi].r0;
+            if (r0 > rows[gi].r1) continue;
+            start[(r0 << sh) / sr + 1]++;
+        }
     for (uint32_t b = 1; b <= nb; b++) start[b] = (uint16_t)(start[b] + start[b - 1]);
     /* start[b] walks bucket b's run; afterwards it holds the run's end,
      * which is bucket b + 1's start */
-    for (uint32_t gi = 0; gi < rc->ntris; gi++) {
-        struct ras_trows r = rc->tri_rows[gi];
-        if (r.r0 > r.r1) continue;
-        const uint32_t f = (uint32_t)ras_trows_first(rc, r), b = dm ? (f * dm) >> 16 : f / sr;
-        B->order[start[b]++] = (uint16_t)gi;
-        if (ras_trows_last(rc, r) > B->reach[b]) B->reach[b] = (int16_t)ras_trows_last(rc, r);
+    for (uint32_t gi = 0; gi < n; gi++) {
+        const uint32_t r0 = rows[gi].r0, r1 = rows[gi].r1;
+        if (r0 > r1) continue;
+        const uint32_t f = r0 << sh, b = dm ? (f * dm) >> 16 : f / sr;
+        order[start[b]++] = (uint16_t)gi;
+        if ((int32_t)r1 > reach[b]) reach[b] = (int16_t)r1;
     }
+    if (sh)
+        for (uint32_t b = 0; b < nb; b++)
+            if (reach[b] >= 0) reach[b] = (int16_t)((((uint32_t)reach[b] + 1u) << sh) - 1u);
     for (uint32_t b = nb; b > 0; b--) start[b] = start[b - 1];
     start[0] = 0;
 }

@@ -93,3 +93,14 @@ $(foreach n,$(BENCH_SCENE_NAMES),$(foreach t,$(BENCH_TARGETS),$(foreach m,fixed 
 .PHONY: profile-mesh
 profile-mesh: $(foreach n,knot-4k-flat knot-4k-gouraud,$(BUILD)/bench/m0plus-qemu/fixed/scene-$(n)-default.elf)
 	$(Q)for f in $^; do echo "$$f"; $(PYTHON) tools/bench/profile.py --top 30 $$f || exit 1; done
+
+# The hand-written ARMv6-M projection of a run of points (ras_div_subs) on
+# the emulated Cortex-M0+ against one ras_div_sub per point, at NUM_FRAC 16
+# and 20 (its two forms of the rounding half); it also prints both forms'
+# instructions per point.
+RAS_V6M_SRCS := tests/unit/test_raster_v6m.c firmware/core/raster/raster_num.c $(CORE_NUM_SRCS)
+$(call bench_image,test_raster_v6m_q16,m0plus-qemu,fixed,$(RAS_V6M_SRCS),-Itests/support -DNUM_FRAC=16)
+$(call bench_image,test_raster_v6m_q20,m0plus-qemu,fixed,$(RAS_V6M_SRCS),-Itests/support -DNUM_FRAC=20)
+RAS_V6M_IMAGES := $(BUILD)/bench/m0plus-qemu/fixed/test_raster_v6m_q16.elf $(BUILD)/bench/m0plus-qemu/fixed/test_raster_v6m_q20.elf
+TEST_DEPS += $(RAS_V6M_IMAGES)
+TESTS     += tools/bench/run.py:--smoke:$(subst $(eval) ,:,$(RAS_V6M_IMAGES))

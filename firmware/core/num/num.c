@@ -56,7 +56,7 @@ static num sat64(int64_t v)
 #define RCP16(i) RCP4(i), RCP4((i) + 4), RCP4((i) + 8), RCP4((i) + 12)
 #define RCP64(i) RCP16(i), RCP16((i) + 16), RCP16((i) + 32), RCP16((i) + 48)
 
-static const uint16_t rcp_seed[256] = { RCP64(0), RCP64(64), RCP64(128), RCP64(192) };
+const uint16_t num_rcp_seed[256] = { RCP64(0), RCP64(64), RCP64(128), RCP64(192) };
 
 static inline uint32_t rcp16(uint32_t dn)
 {
@@ -70,7 +70,7 @@ static inline uint32_t rcp16(uint32_t dn)
      * so the result is from below. Newton's error (2^-18 relative) plus the
      * truncations stay below 2^17 units of r: tests/unit/test_num_div.c checks
      * both bounds on every value of dn >> 9 (the only bits used). */
-    uint32_t sd = rcp_seed[(dn >> 23) & 0xFF];
+    uint32_t sd = num_rcp_seed[(dn >> 23) & 0xFF];
     int32_t e0 = (int32_t)(0u - (dn >> 9) * (0x10000u + sd));
     int32_t t = (int32_t)(sd << 15) + (e0 >> 8) + (((int32_t)sd * (e0 >> 16)) >> 8) - 1024;
     return t < 0 ? 0 : (uint32_t)t >> 15;

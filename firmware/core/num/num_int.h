@@ -252,6 +252,9 @@ static inline uint32_t num_udiv64_32_pre(uint64_t n, const struct num_udiv_pre *
  * 2^32 + rh 2^16 + 2^17 (rh < 2^16; depends on dn >> 9 only). Table seed
  * and one Newton-Raphson step in 32x32->32 multiplies. */
 uint32_t num_rcp16(uint32_t dn);
+/* num_rcp16's seed: entry i is (1/x - 1) 2^16 at the centre x of
+ * [1/2 + i/512, 1/2 + (i+1)/512) (for kernels that inline num_rcp16). */
+extern const uint16_t num_rcp_seed[256];
 
 /* floor(sqrt(v)); *rem (if not null) gets v - root^2. Estimate from
  * num_sqrt_est, then exact correction. */

@@ -193,8 +193,11 @@ static void instance_vertices(const struct ras_ctx *rc, uint16_t i, uint32_t k0,
                 ras_mul_points_fit_split(&ri->m, &m->verts[k], cb, n, sp);
                 if (rc->verts)
                     for (uint32_t j = 0; j < n; j++) rc->verts[vb + k + j].c = cb[j];
-                for (uint32_t j = 0; j < n; j++)
-                    store_pv(&kp, &rc->def.pv[vb + k + j], cb[j], ri->visible && (!tested || ras_point_inside(rc, cb[j])));
+                if (ri->visible && !tested)
+                    ras_div_subs(&kp, cb, &rc->def.pv[vb + k], n);
+                else
+                    for (uint32_t j = 0; j < n; j++)
+                        store_pv(&kp, &rc->def.pv[vb + k + j], cb[j], ri->visible && (!tested || ras_point_inside(rc, cb[j])));
             }
             return;
         }

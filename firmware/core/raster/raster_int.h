@@ -63,16 +63,15 @@ struct ras_vcache { uint32_t k; vec3 c; };
 /* The book's projection of a vertex (the book path and wireframes only). */
 struct ras_proj { num px, py; };
 
-/* A vertex of the default path, projected once per frame: sub-pixel
- * screen position, 1/z and near/z, valid unless sx is RAS_PV_OUT (outside
- * a clipping plane; triangles of three valid corners skip the clipper).
- * A vertex inside every plane lies within two pixels of the viewport, so
- * its position fits 16 bits wherever (render size + 3) << sub_bits stays
- * below 2^15 (240 pixels at 4 bits: 3,888); one that does not fit is
- * marked RAS_PV_OUT too and its triangles take the clipper, which returns
- * such a triangle unchanged and projects it the same way. */
-struct ras_pv { int16_t sx, sy; num iz; uint32_t depth; };
-#define RAS_PV_OUT INT16_MIN
+/* A vertex of the default path, projected once per frame (struct ras_pv,
+ * raster_num.h): sub-pixel screen position, 1/z and near/z, valid unless
+ * sx is RAS_PV_OUT (outside a clipping plane; triangles of three valid
+ * corners skip the clipper). A vertex inside every plane lies within two
+ * pixels of the viewport, so its position fits 16 bits wherever (render
+ * size + 3) << sub_bits stays below 2^15 (240 pixels at 4 bits: 3,888); one
+ * that does not fit is marked RAS_PV_OUT too and its triangles take the
+ * clipper, which returns such a triangle unchanged and projects it the
+ * same way. */
 static inline int ras_pv_in(const struct ras_pv *q) { return q->sx != RAS_PV_OUT; }
 
 /* Per-frame facts of a triangle of the default path (ras_def.tri_flags). */

@@ -604,6 +604,149 @@ void ras_div_sub(const struct ras_subproj *k, num x, num y, num z, struct ras_su
     o->sy = ras_sub_pos(num_sub(k->cy, Y), (int)k->sb);
 }
 
+#if defined(__ARM_ARCH_6M__) && defined(__GNUC__) && !defined(__clang__) && NUM_FRAC >= 16 && NUM_FRAC <= 20
+#define RAS_DIV_SUBS_V6M 1
+/* ARMv6-M: ras_div_sub's fast path for a run of points by hand, its
+ * operations in 32-bit registers, the same bits: z in [2^(2F-31), 2^28)
+ * (clz s in [4, 62 - 2F]); s and dn = z 2^s by the byte table, v =
+ * num_rcp32_est(dn) inline (num_rcp16's seed and step, then its
+ * estimate); each of X, Y: P = x u + 2^(F-1) (num_smul32's pieces, the
+ * half added to a middle product, or to al bl at F = 16), its low F bits
+ * cleared and |P| by the sign mask m, the quotient's estimate nh +
+ * mulhi(nh, v) stepped up by the remainder, rounded, signed by m; the
+ * screen position (cx + X + 2^(F-1-sb)) >> (F - sb), ras_sub_pos's value
+ * (the sum's overflow flag: the C path); iz and depth as ras_div_sub. It
+ * stops at a point the C path must take (z out of range, a quotient that
+ * saturates, z <= near) and returns it. Frame (sp): 0 u (its high half for
+ * div_subs_v6m_uh), 4 near_z, 8
+ * cx + 2^(F-1-sb), 12 cy + 2^(F-1-sb), 16 F - sb, 20 num_clz8_tab, 24
+ * num_rcp_seed, 28 the points' end, 32 the output. Registers: r3 z, r8
+ * x then sx, r9 y then sy, r10 v, r11 the next point, r12 s, lr the sign
+ * mask then iz. */
+struct div_subs_frame {
+    num u, near_z, cxc, cyc;
+    int32_t fs;
+    const uint8_t *clz;
+    const uint16_t *seed;
+    const vec3 *end;
+};
+#define DS_STR2(x) #x
+#define DS_STR(x) DS_STR2(x)
+#define DS_F DS_STR(NUM_FRAC)
+/* a far branch to the C path (9) when the condition's opposite fails */
+#define DS_FAIL_UNLESS(cc) "b" cc " 8f\n\t b 9f\n8:\n\t"
+#if NUM_FRAC >= 17
+#define DS_HALF "adds r4, #(1 << (" DS_F " - 17))\n\t"
+#else
+#define DS_HALF "movs r7, #1\n\t lsls r7, r7, #15\n\t adds r2, r2, r7\n\t"
+#endif
+/* r0:r2 = |P| with P's low F bits cleared, r6 the sign mask; r0 = x, r1 = u */
+#define DS_NUM                                                                                 \
+    "uxth r4, r0\n\t asrs r0, r0, #16\n\t uxth r6, r1\n\t asrs r1, r1, #16\n\t"              \
+    "movs r2, r4\n\t muls r2, r6\n\t muls r4, r1\n\t muls r6, r0\n\t muls r0, r1\n\t" DS_HALF \
+    "lsls r7, r4, #16\n\t asrs r4, r4, #16\n\t adds r2, r2, r7\n\t adcs r0, r4\n\t"          \
+    "lsls r7, r6, #16\n\t asrs r6, r6, #16\n\t adds r2, r2, r7\n\t adcs r0, r6\n\t"          \
+    "lsrs r2, r2, #" DS_F "\n\t lsls r2, r2, #" DS_F "\n\t"                                  \
+    "asrs r6, r0, #31\n\t eors r2, r6\n\t eors r0, r6\n\t subs r2, r2, r6\n\t sbcs r0, r6\n\t"
+/* DS_NUM for u = uh 2^16 (its low half 0; r1 = uh < 2^15): with x = xh
+ * 2^16 + xl, P = xh uh 2^32 + (xl uh + 2^(F-17)) 2^16, t = xl uh +
+ * 2^(F-17) < 2^31: hi = xh uh + (t >> 16), lo = t << 16 (at F = 16 the
+ * half lies in the cleared bits) */
+#if NUM_FRAC >= 17
+#define DS_NUM_UH_LO "adds r2, #(1 << (" DS_F " - 17))\n\t lsrs r4, r2, #16\n\t adds r0, r0, r4\n\t" \
+    "lsrs r2, r2, #(" DS_F " - 16)\n\t lsls r2, r2, #" DS_F "\n\t"
+#else
+#define DS_NUM_UH_LO "lsrs r4, r2, #16\n\t adds r0, r0, r4\n\t lsls r2, r2, #16\n\t"
+#endif
+#define DS_NUM_UH                                                                                   \
+    "uxth r2, r0\n\t asrs r0, r0, #16\n\t muls r2, r1\n\t muls r0, r1\n\t" DS_NUM_UH_LO          \
+    "asrs r6, r0, #31\n\t eors r2, r6\n\t eors r0, r6\n\t subs r2, r2, r6\n\t sbcs r0, r6\n\t"
+/* r0 = nh = hi 2^s | lo >> (32 - s) */
+#define DS_NH "mov r4, r12\n\t lsls r0, r4\n\t movs r1, #32\n\t subs r1, r1, r4\n\t movs r4, r2\n\t lsrs r4, r1\n\t orrs r0, r4\n\t"
+/* r0 = nh + mulhi(nh, v) (r1, r4-r7 used) */
+#define DS_QEST                                                                                \
+    "mov r1, r10\n\t uxth r4, r0\n\t lsrs r5, r0, #16\n\t uxth r6, r1\n\t lsrs r1, r1, #16\n\t" \
+    "movs r7, r4\n\t muls r7, r6\n\t muls r4, r1\n\t muls r6, r5\n\t muls r5, r1\n\t"          \
+    "lsls r1, r4, #16\n\t lsrs r4, r4, #16\n\t adds r7, r7, r1\n\t adcs r5, r4\n\t"            \
+    "lsls r1, r6, #16\n\t lsrs r6, r6, #16\n\t adds r7, r7, r1\n\t adcs r5, r6\n\t adds r0, r0, r5\n\t"
+/* the quotient r0 stepped up while the remainder r2 >= d (r3) */
+#define DS_STEP "cmp r2, r3\n\t blo 2f\n1:\n\t subs r2, r2, r3\n\t adds r0, #1\n\t cmp r2, r3\n\t bhs 1b\n2:\n\t"
+/* q < INT32_MAX, then q + (r >= d - r) */
+#define DS_ROUND                                                                     \
+    "adds r1, r0, #1\n\t" DS_FAIL_UNLESS("cc") DS_FAIL_UNLESS("pl") "lsls r1, r2, #1\n\t" \
+    "cmp r1, r3\n\t bcc 1f\n\t adds r0, #1\n1:\n\t"
+/* X or Y of x or y in r0: r0 = ±q (the sign mask in lr) */
+#define DS_QUOT(NUM)                                                                          \
+    "ldr r1, [sp, #0]\n\t" NUM "cmp r0, r3\n\t" DS_FAIL_UNLESS("lo") "mov lr, r6\n\t" DS_NH   \
+        DS_QEST "movs r1, r0\n\t muls r1, r3\n\t subs r2, r2, r1\n\t" DS_STEP DS_ROUND          \
+    "mov r1, lr\n\t eors r0, r1\n\t subs r0, r0, r1\n\t"
+
+/* the run's function NAME with the numerator form NUM (DS_NUM, DS_NUM_UH) */
+#define DS_FUNC(NAME, NUM) \
+static const vec3 *NAME(const struct div_subs_frame *f, const vec3 *c, struct ras_pv *out)                                       \
+{                                                                                                                                \
+    register const void *r0 __asm__("r0") = f;                                                                                   \
+    register const vec3 *r1 __asm__("r1") = c;                                                                                   \
+    register struct ras_pv *r2 __asm__("r2") = out;                                                                              \
+    __asm__ volatile(                                                                                                            \
+        ".syntax unified\n\t"                                                                                                    \
+        "mov r11, r1\n\t push {r2}\n\t ldm r0, {r0-r7}\n\t push {r0-r7}\n"                                                       \
+        "0:\n\t mov r0, r11\n\t ldm r0!, {r1, r2, r3}\n\t mov r11, r0\n\t"                                                       \
+        "lsrs r4, r3, #28\n\t" DS_FAIL_UNLESS("eq") "lsrs r4, r3, #(2 * " DS_F " - 31)\n\t" DS_FAIL_UNLESS("ne")                 \
+        "mov r8, r1\n\t mov r9, r2\n\t"                                                                                          \
+        /* s = clz(z), r4 = dn */                                                                                                \
+        "movs r4, r3\n\t movs r5, #0\n\t lsrs r6, r4, #16\n\t bne 1f\n\t lsls r4, r4, #16\n\t movs r5, #16\n"                    \
+        "1:\n\t lsrs r6, r4, #24\n\t bne 1f\n\t lsls r4, r4, #8\n\t adds r5, #8\n\t lsrs r6, r4, #24\n"                          \
+        "1:\n\t ldr r7, [sp, #20]\n\t ldrb r6, [r7, r6]\n\t adds r5, r5, r6\n\t lsls r4, r4, r6\n\t mov r12, r5\n\t"             \
+        /* num_rcp16(dn) */                                                                                                      \
+        "lsls r6, r4, #1\n\t lsrs r6, r6, #24\n\t lsls r6, r6, #1\n\t ldr r7, [sp, #24]\n\t ldrh r6, [r7, r6]\n\t"               \
+        "lsrs r0, r4, #9\n\t lsls r7, r0, #16\n\t muls r0, r6\n\t adds r0, r0, r7\n\t negs r0, r0\n\t"                           \
+        "asrs r7, r0, #16\n\t muls r7, r6\n\t asrs r7, r7, #8\n\t asrs r0, r0, #8\n\t adds r0, r0, r7\n\t"                       \
+        "lsls r6, r6, #5\n\t subs r6, #1\n\t lsls r6, r6, #10\n\t adds r0, r0, r6\n\t"                                           \
+        "asrs r0, r0, #15\n\t bpl 1f\n\t movs r0, #0\n1:\n\t"                                                                    \
+        /* num_rcp32_est(dn) */                                                                                                  \
+        "lsrs r6, r4, #16\n\t muls r6, r0\n\t negs r7, r4\n\t subs r7, r7, r6\n\t"                                               \
+        "uxth r6, r4\n\t muls r6, r0\n\t adds r6, #1\n\t lsrs r6, r6, #1\n\t"                                                    \
+        "lsls r7, r7, #15\n\t subs r7, r7, r6\n\t"                                                                               \
+        "uxth r6, r7\n\t muls r6, r0\n\t lsrs r6, r6, #16\n\t"                                                                   \
+        "lsrs r1, r7, #16\n\t muls r1, r0\n\t adds r6, r6, r1\n\t lsrs r6, r6, #15\n\t"                                          \
+        "lsrs r7, r7, #15\n\t adds r6, r6, r7\n\t lsls r0, r0, #16\n\t adds r0, r0, r6\n\t mov r10, r0\n\t"                      \
+        /* sx */                                                                                                                 \
+        "mov r0, r8\n\t" DS_QUOT(NUM)                                                                                            \
+        "ldr r1, [sp, #8]\n\t adds r0, r0, r1\n\t" DS_FAIL_UNLESS("vc") "ldr r1, [sp, #16]\n\t asrs r0, r1\n\t mov r8, r0\n\t"   \
+        /* sy */                                                                                                                 \
+        "mov r0, r9\n\t" DS_QUOT(NUM)                                                                                            \
+        "ldr r1, [sp, #12]\n\t subs r0, r1, r0\n\t" DS_FAIL_UNLESS("vc") "ldr r1, [sp, #16]\n\t asrs r0, r1\n\t mov r9, r0\n\t"  \
+        /* iz: 2^2F / z, nh = 2^j (j = 2F + s - 32) */                                                                           \
+        "mov r5, r12\n\t adds r5, #(2 * " DS_F " - 32)\n\t mov r1, r10\n\t movs r4, #32\n\t subs r4, r4, r5\n\t lsrs r1, r4\n\t" \
+        "movs r0, #1\n\t lsls r0, r5\n\t adds r0, r0, r1\n\t movs r2, r0\n\t muls r2, r3\n\t negs r2, r2\n\t"                    \
+        DS_STEP DS_ROUND "mov lr, r0\n\t"                                                                                        \
+        /* depth: near 2^32 / z for 0 < near < z */                                                                              \
+        "ldr r0, [sp, #4]\n\t cmp r3, r0\n\t" DS_FAIL_UNLESS("gt") "mov r5, r12\n\t lsls r0, r5\n\t"                             \
+        DS_QEST "movs r2, r0\n\t muls r2, r3\n\t negs r2, r2\n\t" DS_STEP                                                        \
+        /* store_pv's ranges: sx in (INT16_MIN, INT16_MAX], sy an int16_t */                                                     \
+        "mov r1, r8\n\t mov r2, r9\n\t"                                                                                          \
+        "sxth r4, r1\n\t cmp r4, r1\n\t bne 6f\n\t lsls r4, r1, #16\n\t negs r4, r4\n\t bvs 6f\n\t"                              \
+        "sxth r4, r2\n\t cmp r4, r2\n\t bne 6f\n\t"                                                                              \
+        "uxth r1, r1\n\t lsls r2, r2, #16\n\t orrs r1, r2\n\t mov r2, lr\n\t movs r3, r0\n\t"                                    \
+        "ldr r0, [sp, #32]\n\t stm r0!, {r1, r2, r3}\n\t str r0, [sp, #32]\n"                                                    \
+        "5:\n\t mov r0, r11\n\t ldr r1, [sp, #28]\n\t cmp r0, r1\n\t beq 7f\n\t b 0b\n"                                          \
+        "6:\n\t ldr r0, [sp, #32]\n\t movs r1, #1\n\t lsls r1, r1, #15\n\t strh r1, [r0]\n\t adds r0, #12\n\t"                   \
+        "str r0, [sp, #32]\n\t b 5b\n"                                                                                           \
+        "9:\n\t mov r0, r11\n\t subs r0, #12\n"                                                                                  \
+        "7:\n\t add sp, #36\n\t"                                                                                                 \
+        ".syntax divided\n"                                                                                                      \
+        : "+l"(r0), "+l"(r1), "+l"(r2)                                                                                           \
+        :                                                                                                                        \
+        : "r3", "r4", "r5", "r6", "r7", "r8", "r9", "r10", "r11", "r12", "lr", "cc", "memory");                                  \
+    return (const vec3 *)r0;                                                                                                     \
+}
+DS_FUNC(div_subs_v6m, DS_NUM)
+DS_FUNC(div_subs_v6m_uh, DS_NUM_UH)
+#else
+#define RAS_DIV_SUBS_V6M 0
+#endif
+
 /* Corners a, b, c inside every plane, at depths z >= near: the
  * camera-space test's value f = -a . ((b - a) x (c - a)) is, exactly,
  * D = A_e z_a z_b z_c / (S^2 u^2), A_e the exact projection's doubled area
@@ -846,3 +989,51 @@ int32_t ras_num_to_fix(num a, int32_t scale)
 }
 
 #endif
+
+/* store_pv's entry for a shown point: ras_div_sub's position where it fits
+ * 16 bits, else RAS_PV_OUT */
+static void div_sub_pv(const struct ras_subproj *k, struct ras_pv *q, vec3 c)
+{
+    struct ras_subpos o;
+    q->sx = RAS_PV_OUT;
+    ras_div_sub(k, c.x, c.y, c.z, &o);
+    if (o.sx > INT16_MIN && o.sx <= INT16_MAX && o.sy >= INT16_MIN && o.sy <= INT16_MAX) {
+        q->sx = (int16_t)o.sx;
+        q->sy = (int16_t)o.sy;
+        q->iz = o.iz;
+        q->depth = o.depth;
+    }
+}
+
+#ifndef RAS_DIV_SUBS_V6M
+#define RAS_DIV_SUBS_V6M 0
+#endif
+
+void ras_div_subs(const struct ras_subproj *k, const vec3 *c, struct ras_pv *out, uint32_t n)
+{
+    uint32_t j = 0;
+#if RAS_DIV_SUBS_V6M
+    /* the hand-written runs where cx + X and cy - Y move by 2^(F-1-sb)
+     * (sb < F) without overflow and near_z > 0; the C path for the points
+     * it stops at */
+    const int32_t sb = k->sb;
+    if (n && k->near_z > 0 && sb >= 1 && sb < NUM_FRAC && k->cx >= 0 && k->cy >= 0) {
+        const num h = (num)1 << (NUM_FRAC - 1 - sb);
+        if (k->cx <= NUM_MAX - h && k->cy <= NUM_MAX - h) {
+            /* unproj = uh 2^16 (u > 0, its low half 0: a whole number at F >= 16):
+             * P from two products */
+            const int uh = k->unproj > 0 && !(k->unproj & 0xFFFF);
+            const struct div_subs_frame f = { uh ? k->unproj >> 16 : k->unproj, k->near_z, k->cx + h, k->cy + h,
+                                              NUM_FRAC - sb, num_clz8_tab, num_rcp_seed, c + n };
+            while (j < n) {
+                j = (uint32_t)((uh ? div_subs_v6m_uh(&f, c + j, out + j) : div_subs_v6m(&f, c + j, out + j)) - c);
+                if (j < n) {
+                    div_sub_pv(k, &out[j], c[j]);
+                    j++;
+                }
+            }
+        }
+    }
+#endif
+    for (; j < n; j++) div_sub_pv(k, &out[j], c[j]);
+}

@@ -124,6 +124,16 @@ struct ras_subproj { num unproj, near_z, cx, cy; int32_t sb; };
 struct ras_subpos { int32_t sx, sy; num iz; uint32_t depth; };
 void ras_div_sub(const struct ras_subproj *k, num x, num y, num z, struct ras_subpos *o);
 
+/* A projected vertex of the default path (raster_int.h): ras_div_sub's
+ * sx, sy (as int16_t), iz and depth where sx lies in (INT16_MIN,
+ * INT16_MAX] and sy in [INT16_MIN, INT16_MAX]; else sx alone is written,
+ * RAS_PV_OUT. */
+struct ras_pv { int16_t sx, sy; num iz; uint32_t depth; };
+#define RAS_PV_OUT INT16_MIN
+/* Points c[0 .. n-1] (camera space, each shown) projected into out[0 ..
+ * n-1] so, one ras_div_sub each: the same bits. */
+void ras_div_subs(const struct ras_subproj *k, const vec3 *c, struct ras_pv *out, uint32_t n);
+
 /* A canvas coordinate f (pixels) in sub-pixel units, 0 < sb <= 8: floor(f)
  * 2^sb + floor(frac(f) 2^sb + 1/2), num_floor_int, num_frac, num_mul_int
  * and num_add's bits (raster_project.c's form); fixed point in integers

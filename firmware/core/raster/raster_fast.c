@@ -1141,6 +1141,7 @@ RAS_HOT __attribute__((noinline)) static void fast_rgb_rows(struct frgb *P)
         :
         : "r1", "r2", "r3", "r4", "r5", "r6", "r7", "r8", "r9", "r10", "r11", "r12", "lr", "cc", "memory");
 }
+#endif
 
 /* The block's fields both scans read: the edge values and their steps, the
  * first row's pixel at the box's left column, the box's width, the stride
@@ -1220,6 +1221,7 @@ static uint32_t fast_run_spans(const struct ras_ctx *rc, struct fstate *S)
     return total;
 }
 
+#if FW_FEATURE_SPAN_RGB_CONST
 /* fast_rows(rc, S, 1) of a scanned triangle of Gouraud levels with 16-bit
  * depth entries whose plane has its 32-bit form (board outputs): its spans
  * by fast_scan_spans, then its rows in one loop (fast_rgb_rows), a span

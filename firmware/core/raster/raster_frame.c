@@ -157,16 +157,10 @@ vec3 ras_cam_vertex_again(const struct ras_ctx *rc, const struct ras_instance *i
  * inside every clip plane) and the position fits 16 bits, else RAS_PV_OUT. */
 static inline void store_pv(const struct ras_subproj *k, struct ras_pv *q, vec3 c, int shown)
 {
-    struct ras_subpos o;
-    q->sx = RAS_PV_OUT;
-    if (!shown) return;
-    ras_div_sub(k, c.x, c.y, c.z, &o);   /* ras_project_sub_depth's bits */
-    if (o.sx > INT16_MIN && o.sx <= INT16_MAX && o.sy >= INT16_MIN && o.sy <= INT16_MAX) {
-        q->sx = (int16_t)o.sx;
-        q->sy = (int16_t)o.sy;
-        q->iz = o.iz;
-        q->depth = o.depth;
-    }
+    if (shown)
+        ras_div_sub_pv(k, q, c);   /* ras_project_sub_depth's bits */
+    else
+        q->sx = RAS_PV_OUT;
 }
 
 /* Vertices k0 .. k1 - 1 of instance i (after its instance_head); each

@@ -990,21 +990,6 @@ int32_t ras_num_to_fix(num a, int32_t scale)
 
 #endif
 
-/* store_pv's entry for a shown point: ras_div_sub's position where it fits
- * 16 bits, else RAS_PV_OUT */
-static void div_sub_pv(const struct ras_subproj *k, struct ras_pv *q, vec3 c)
-{
-    struct ras_subpos o;
-    q->sx = RAS_PV_OUT;
-    ras_div_sub(k, c.x, c.y, c.z, &o);
-    if (o.sx > INT16_MIN && o.sx <= INT16_MAX && o.sy >= INT16_MIN && o.sy <= INT16_MAX) {
-        q->sx = (int16_t)o.sx;
-        q->sy = (int16_t)o.sy;
-        q->iz = o.iz;
-        q->depth = o.depth;
-    }
-}
-
 #ifndef RAS_DIV_SUBS_V6M
 #define RAS_DIV_SUBS_V6M 0
 #endif
@@ -1028,12 +1013,12 @@ void ras_div_subs(const struct ras_subproj *k, const vec3 *c, struct ras_pv *out
             while (j < n) {
                 j = (uint32_t)((uh ? div_subs_v6m_uh(&f, c + j, out + j) : div_subs_v6m(&f, c + j, out + j)) - c);
                 if (j < n) {
-                    div_sub_pv(k, &out[j], c[j]);
+                    ras_div_sub_pv(k, &out[j], c[j]);
                     j++;
                 }
             }
         }
     }
 #endif
-    for (; j < n; j++) div_sub_pv(k, &out[j], c[j]);
+    for (; j < n; j++) ras_div_sub_pv(k, &out[j], c[j]);
 }

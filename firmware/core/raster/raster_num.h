@@ -130,6 +130,20 @@ void ras_div_sub(const struct ras_subproj *k, num x, num y, num z, struct ras_su
  * RAS_PV_OUT. */
 struct ras_pv { int16_t sx, sy; num iz; uint32_t depth; };
 #define RAS_PV_OUT INT16_MIN
+/* A shown point's entry: ras_div_sub's position where it fits 16 bits,
+ * else RAS_PV_OUT. */
+static inline void ras_div_sub_pv(const struct ras_subproj *k, struct ras_pv *q, vec3 c)
+{
+    struct ras_subpos o;
+    q->sx = RAS_PV_OUT;
+    ras_div_sub(k, c.x, c.y, c.z, &o);
+    if (o.sx > INT16_MIN && o.sx <= INT16_MAX && o.sy >= INT16_MIN && o.sy <= INT16_MAX) {
+        q->sx = (int16_t)o.sx;
+        q->sy = (int16_t)o.sy;
+        q->iz = o.iz;
+        q->depth = o.depth;
+    }
+}
 /* Points c[0 .. n-1] (camera space, each shown) projected into out[0 ..
  * n-1] so, one ras_div_sub each: the same bits. */
 void ras_div_subs(const struct ras_subproj *k, const vec3 *c, struct ras_pv *out, uint32_t n);

@@ -33,6 +33,7 @@ static void carve(const struct scene *s, uint16_t width, uint16_t height, struct
     rt->light_len = work_take(c, sizeof(num) * nlight1);
     rt->light_div = work_take(c, sizeof(struct num_divisor) * nlight1);
     rt->light_self = work_take(c, sizeof(struct rt_self_dir) * nlight1);
+    rt->shadow_mask = work_take(c, sizeof(uint32_t) * (rt_shadow_masks_fit(s) ? nlight1 * nobj1 : 0u));
     rt->row_c = work_take(c, sizeof(rgb) * width);
     rt->row_item = work_take(c, sizeof(int16_t) * width);
     rt->col_x = work_take(c, sizeof(num) * width);
@@ -192,6 +193,7 @@ int rt_init(void *work, size_t work_size, const struct scene *s, uint16_t width,
         num e = s->objects[i].mat.specular;
         rt->oc[i].spec_zero = e >= 0 ? rt_powi_zero_below((uint32_t)num_to_int(e)) : NUM_C(-1.0);
     }
+    rt_shadow_masks(rt);
     if (s->rt.bvh) rt_build_bvh(rt);
     return 0;
 }

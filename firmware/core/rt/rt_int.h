@@ -155,6 +155,11 @@ struct rt_state {
     struct rt_self_dir *light_self; /* per light: a directional light's terms of rt_self_shadowed */
     uint32_t light_fit;        /* bit k: light k (k < 32) a point light whose L = Lpos - P is formed in
                                   32 bits (rt_init) */
+    /* shadow candidates (rt_shadow_masks, rt_lighting.c): [j nlights + k]
+     * bit i: object i may lie between light k and a point of sphere j
+     * (within r_j (1 + 2^-6) of its centre); NULL: none */
+    uint32_t *shadow_mask;
+    uint32_t shadow_self_ok;   /* bit j: sphere j's radius lets a lit point skip its own test */
     uint16_t amb_k;            /* the lights before the first non-ambient one ... */
     num amb_i;                 /* ... and their intensities' sum, in the lighting's order */
     rgb *row_c;                /* one row of colours (subsampling/adaptive) */
@@ -265,6 +270,11 @@ int rt_closest_intersection(struct rt_state *rt, struct rt_ray *ray, num t_min, 
 /* Whether `item` is hit with t_min < t < t_max. */
 int rt_item_hit(struct rt_state *rt, int16_t item, struct rt_ray *ray, num t_min, num t_max,
                 struct rt_hit *hit);
+/* A shadow ray's search (with the shortcuts) over the objects of mask (bit
+ * i: object i, a plain sphere), in book order: 1 at the first hit, its item
+ * in hit->item. */
+int rt_shadow_search(struct rt_state *rt, struct rt_ray *ray, num t_min, num t_max, uint32_t mask,
+                     struct rt_hit *hit);
 vec3 rt_hit_normal(const struct rt_state *rt, const struct rt_hit *hit, const vec3 *p);
 vec3 rt_far_point(const struct rt_ray *ray);
 /* The interval of object obj in the traced primary ray's row (rt->dx_row)
@@ -353,6 +363,11 @@ RT_ALWAYS_INLINE vec3 rt_reflect(vec3 n, vec3 l, num ndl, int small)
  * NULL (made here). */
 int rt_self_shadowed(const struct rt_state *rt, int16_t obj, num ndl, const vec3 *d, const struct rt_self_dir *sd);
 struct rt_self_dir rt_self_dir_make(const vec3 *d, num epsilon);
+/* rt_lighting.c: the shadow candidates (rt_state.shadow_mask), once at
+ * rt_init (objects and lights do not move). */
+void rt_shadow_masks(struct rt_state *rt);
+/* Whether a scene gets them (its work memory holds them). */
+int rt_shadow_masks_fit(const struct scene *s);
 
 /* rt_lighting.c, the book's ComputeLighting: intensity at P (normal N, view V = -D) for specular exponent s
  * (unit_normal: N is a sphere's (P - C) / r, of length 1 up to rounding)

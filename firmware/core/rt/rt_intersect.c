@@ -688,6 +688,21 @@ static int prim_sphere_hit(struct rt_state *rt, int16_t item, struct rt_ray *ray
     return sphere_item_hit(rt, item, ray, t_min, limit, hit, 1);
 }
 
+int rt_shadow_search(struct rt_state *rt, struct rt_ray *ray, num t_min, num t_max, uint32_t mask,
+                     struct rt_hit *hit)
+{
+    for (int16_t item = 0; mask; item++, mask >>= 1) {
+        if (!(mask & 1u)) continue;
+        rt->n.tests++;
+        /* rt_closest_intersection's sphere case (the ray's own sphere takes
+         * sphere_first_hit's path) */
+        int other = item != ray->origin;
+        if (other && rt_coarse_sphere_miss(&ray->cd, &rt->oc[item].cs)) continue;
+        if (sphere_item_hit(rt, item, ray, t_min, t_max, hit, other)) return 1;
+    }
+    return 0;
+}
+
 /* Conservative ray / bounding-sphere test (robust form, both formulations):
  * 0 only when the ray certainly misses the sphere within t > 0. */
 static int bound_hit(struct rt_state *rt, vec3 c, num r, struct rt_ray *ray)

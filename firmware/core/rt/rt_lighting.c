@@ -17,7 +17,7 @@
 /* Shadow test: is anything between P and the light (t in (epsilon, t_max))?
  * With any-hit the search stops at the first occluder; with the cache the
  * last occluder of this light is tried first (shadows are coherent). */
-static int in_shadow(struct rt_state *rt, struct rt_ray *ray, num t_max, uint16_t light)
+static int in_shadow(struct rt_state *rt, struct rt_ray *ray, num t_max, uint16_t light, const uint32_t *mask)
 {
     const struct rt_options *o = &rt->s->rt;
     struct rt_hit hit;
@@ -28,6 +28,24 @@ static int in_shadow(struct rt_state *rt, struct rt_ray *ray, num t_max, uint16_
      * the first occluder found answers (same image as the closest), and
      * the sphere tests need not find where */
     rt->shadow_test = rt->shortcuts;
+    if (mask) {
+        /* the candidates of the ray's sphere and light (rt_shadow_masks;
+         * the shortcuts on): the others are certainly missed, so the
+         * answer is the same; the cached occluder first when it is one */
+        uint32_t m = *mask;
+        int16_t c = rt->occluder[light];
+        if (c >= 0) {
+            if (((m >> c) & 1u) && rt_item_hit(rt, c, ray, o->epsilon, t_max, &hit)) {
+                rt->shadow_test = 0;
+                return 1;
+            }
+            m &= ~((uint32_t)1 << c);
+        }
+        int got = rt_shadow_search(rt, ray, o->epsilon, t_max, m, &hit);
+        rt->shadow_test = 0;
+        if (got) rt->occluder[light] = hit.item;
+        return got;
+    }
     if (cache && rt->occluder[light] >= 0) {
         if (rt_item_hit(rt, rt->occluder[light], ray, o->epsilon, t_max, &hit)) {
             rt->shadow_test = 0;
@@ -102,6 +120,99 @@ RT_NOINLINE int rt_self_shadowed(const struct rt_state *rt, int16_t obj, num ndl
 #endif
 }
 
+/* ---- shadow candidates per light and receiving sphere -----------------
+ *
+ * A point P within rho = r_j + r_j / 64 + 2^-10 of sphere j's centre C_j
+ * sends its shadow ray along segments P -> L (a point light) or rays P + t l
+ * (a directional one), all inside the capsule (or half-infinite cylinder)
+ * of radius rho around C_j -> L (C_j + t l, t >= 0). A sphere (C, r) whose
+ * centre lies more than R = r + rho + m + 2^-10 (1 + r + X + |a|) from that
+ * axis (a = L - C_j or l, X = |C - C_j| + rho >= |P - C|) is missed by
+ * every such ray. The robust test's discriminant a (r^2 - d^2) (d the
+ * line's distance from C) moves by at most a M, M = 4 u (6.25 X^2 + 25 X +
+ * 42) (the coarse test's bound, docs/raytracer.md, "Shortcuts"), and m =
+ * M / 2r: a line farther than r + m from C is a miss; one nearer meets the
+ * sphere only past an end of the segment (the end lies more than r + m
+ * from C), and its computed roots, t_c +- sqrt(r^2 - d^2 + M) / |D| at
+ * most, stay past it, since (r + m)^2 > r^2 + M. The lengths below carry a
+ * few ulps (tile_misses' relative 2^-10 and 16 ulps). */
+#if NUM_MODE == NUM_MODE_FIXED && NUM_FRAC >= 14
+static int shadow_pair_clear(const struct rt_object *oj, const struct rt_object *os, const struct scene_light *lt)
+{
+    int directional = lt->type != LIGHT_POINT;
+    /* positions, radii below 2^13 and X below 2^10: no sum below saturates */
+    if (!rt_v3_within(oj->center, 29) || !rt_v3_within(os->center, 29) || !rt_v3_within(lt->v, 29)) return 0;
+    if (oj->radius < 0 || os->radius < NUM_C(1.0 / 16) || oj->radius >= NUM_C(4096.0) || os->radius >= NUM_C(4096.0))
+        return 0;
+    num rho = oj->radius + (oj->radius >> 6) + (NUM_ONE >> 10) + 1;
+    vec3 w = v3_sub(os->center, oj->center);
+    vec3 a = directional ? lt->v : v3_sub(lt->v, oj->center);
+    wnum aa = v3_dot_wide(a, a), wa = v3_dot_wide(w, a);
+    if (aa < wnum_from_num(NUM_ONE)) return 0;   /* |a| >= 1 */
+    num wl = v3_len(w), al = v3_len(a);
+    num x = wl + rho + 2;
+    if (x >= NUM_C(1024.0)) return 0;
+    /* m: 4 (6.25 X^2 + 25 X + 42) ulps over 2 r, X rounded up to an integer */
+    uint32_t xi = (uint32_t)(x >> NUM_FRAC) + 1u;
+    uint64_t mraw = 25u * (uint64_t)xi * xi + 100u * (uint64_t)xi + 168u;   /* 4 (...) in ulps */
+    uint64_t m = ((mraw << NUM_FRAC) / (2u * (uint64_t)(uint32_t)os->radius)) + 1u;
+    if (m >= (uint64_t)NUM_C(64.0)) return 0;
+    num eps = (num)m + ((NUM_ONE + os->radius + x + al) >> 10) + 1;
+    num big = os->radius + rho + eps;   /* below 2^14 scene units */
+    wnum lhs, rhs;
+    if (wa < -(wnum)16) {
+        /* the closest point of the axis is C_j (wa certainly negative) */
+        lhs = wnum_from_num(wl);
+        rhs = wnum_from_num(big);
+    } else if (!directional && wa > aa + 16) {
+        /* ... or L */
+        lhs = wnum_from_num(v3_len(v3_sub(os->center, lt->v)));
+        rhs = wnum_from_num(big);
+    } else {
+        /* the line's distance |w x a| / |a| (saturation only lowers it) */
+        lhs = wnum_from_num(v3_len(v3_cross(w, a)));
+        rhs = num_mul_wide(big, al);
+    }
+    rhs = wnum_add(rhs, wnum_add(wnum_mul(rhs, wnum_from_num(NUM_C(1.0 / 1024))), wnum_from_num(16 * NUM_EPS)));
+    return lhs > rhs;
+}
+#endif
+
+int rt_shadow_masks_fit(const struct scene *s)
+{
+#if NUM_MODE == NUM_MODE_FIXED && NUM_FRAC >= 14
+    return s->ncsg == 0 && s->nobjects >= 1 && s->nobjects <= 32;
+#else
+    (void)s;
+    return 0;
+#endif
+}
+
+void rt_shadow_masks(struct rt_state *rt)
+{
+    const struct scene *s = rt->s;
+    rt->shadow_self_ok = 0;
+    if (!rt_shadow_masks_fit(s) || rt->book || !rt->shortcuts || !rt->all_spheres || rt->nitems != s->nobjects ||
+        !s->rt.shadows) {
+        rt->shadow_mask = NULL;
+        return;
+    }
+#if NUM_MODE == NUM_MODE_FIXED && NUM_FRAC >= 14
+    uint32_t all = ~(uint32_t)0 >> (32 - s->nobjects);
+    for (uint16_t j = 0; j < s->nobjects; j++) {
+        const struct rt_object *oj = &s->objects[j];
+        if (oj->radius >= NUM_C(0.25)) rt->shadow_self_ok |= (uint32_t)1 << j;
+        for (uint16_t k = 0; k < s->nlights; k++) {
+            uint32_t m = all;
+            if (s->lights[k].type != LIGHT_AMBIENT)
+                for (uint16_t i = 0; i < s->nobjects; i++)
+                    if (i != j && shadow_pair_clear(oj, &s->objects[i], &s->lights[k])) m &= ~((uint32_t)1 << i);
+            rt->shadow_mask[(size_t)j * s->nlights + k] = m;
+        }
+    }
+#endif
+}
+
 num rt_compute_lighting(struct rt_state *rt, vec3 p, vec3 n, int unit_normal, vec3 v, num s, num s_zero,
                         int16_t origin, uint8_t *shadow_bits)
 {
@@ -123,6 +234,20 @@ num rt_compute_lighting(struct rt_state *rt, vec3 p, vec3 n, int unit_normal, ve
     /* |N_i| and |V_i| at most 2 (2^(F+1) raw): with |L_i| <= 2^26 raw the
      * products below take 32-bit forms of the same values (rt_dot_small) */
     int n_small = rt_v3_within(n, NUM_FRAC + 1), v_small = rt_v3_within(v, NUM_FRAC + 1);
+    /* the shadow candidates of P's sphere (rt_shadow_masks) where P lies
+     * within r (1 + 2^-6) of its centre: n = (P - C) / r rounded, P - C = r
+     * n + r h (|h_i| <= 0.51 u), and with b_i = ceil(|n_i| / 2^(F-14)) the
+     * sum of b_i^2 <= 2^28 + 2^22 gives |n| <= 1 + 2^-7 */
+    const uint32_t *smask = NULL;
+#if NUM_FRAC >= 14
+    if (rt->shadow_mask && unit_normal && n_small && origin >= 0 && o->shadows) {
+        uint32_t bx = (rt_uabs(n.x) + (1u << (NUM_FRAC - 14)) - 1u) >> (NUM_FRAC - 14);
+        uint32_t by = (rt_uabs(n.y) + (1u << (NUM_FRAC - 14)) - 1u) >> (NUM_FRAC - 14);
+        uint32_t bz = (rt_uabs(n.z) + (1u << (NUM_FRAC - 14)) - 1u) >> (NUM_FRAC - 14);
+        if (bx * bx + by * by + bz * bz <= (1u << 28) + (1u << 22))
+            smask = rt->shadow_mask + (size_t)origin * sc->nlights;
+    }
+#endif
 #endif
     for (uint16_t k = rt->amb_k; k < sc->nlights; k++) {
         const struct scene_light *lt = &sc->lights[k];
@@ -170,6 +295,17 @@ num rt_compute_lighting(struct rt_state *rt, vec3 p, vec3 n, int unit_normal, ve
                 continue;
             }
 #endif
+            const uint32_t *mk = NULL;
+#if NUM_MODE == NUM_MODE_FIXED
+            if (smask) {
+                mk = &smask[k];
+                if (*mk == 0) {
+                    /* nothing can lie in the way: not shadowed, without the ray */
+                    rt->n.shadow_rays++;
+                    goto lit;
+                }
+            }
+#endif
             struct rt_ray sr, *srp = &sr;
             if (directional && rt->shortcuts) {
                 /* the light's own ray (rt_light_constants), the direction's
@@ -182,11 +318,14 @@ num rt_compute_lighting(struct rt_state *rt, vec3 p, vec3 n, int unit_normal, ve
             } else {
                 rt_ray_init(&sr, &p, &l, origin, 0);
             }
-            if (in_shadow(rt, srp, t_max, k)) {
+            if (in_shadow(rt, srp, t_max, k, mk)) {
                 if (shadow_bits && k < 7) *shadow_bits |= (uint8_t)(1u << k);
                 continue;
             }
         }
+#if NUM_MODE == NUM_MODE_FIXED
+    lit:
+#endif
         if (o->diffuse && n_dot_l > 0) {
             num in = rt_mul_weight(n_dot_l, lt->intensity), q;
             if (unit_n < 0) unit_n = rt_near_unit_err(n, &unit_e);

@@ -135,7 +135,8 @@ RT_NOINLINE int rt_self_shadowed(const struct rt_state *rt, int16_t obj, num ndl
  * sphere only past an end of the segment (the end lies more than r + m
  * from C), and its computed roots, t_c +- sqrt(r^2 - d^2 + M) / |D| at
  * most, stay past it, since (r + m)^2 > r^2 + M. The lengths below carry a
- * few ulps (tile_misses' relative 2^-10 and 16 ulps). */
+ * few ulps (tile_misses' relative 2^-10 and 16 ulps). A lit point of
+ * its own sphere skips that test too (rt_shadow_self_out). */
 #if NUM_MODE == NUM_MODE_FIXED && NUM_FRAC >= 14
 static int shadow_pair_clear(const struct rt_object *oj, const struct rt_object *os, const struct scene_light *lt)
 {
@@ -212,6 +213,26 @@ void rt_shadow_masks(struct rt_state *rt)
     }
 #endif
 }
+
+#if NUM_MODE == NUM_MODE_FIXED
+/* 1 when the shadow ray from a point P of a plain sphere of radius r >=
+ * 1/4 along d (|d_i| <= 2^26 raw) certainly misses that sphere: its test
+ * (the ray's own sphere, rt_intersect.c) finds b = -CO.d' <= 0, no hit.
+ * For a point that took its sphere's candidates (|n| <= 1 + 2^-7, n as
+ * rt_hit_normal rounds it, ndl = n.d as the lighting rounds it), u = 2^-F
+ * and |d|_1 in scene units: CO = P - C = r n + r h (|h_i| <= 0.51 u), so
+ * CO.d >= r (ndl - 1.5 u - 0.51 u |d|_1) and |CO|_1 <= 1.76 r; d' = d 2^-k
+ * + e (|e_i| <= u/2, 2^k <= 1.0001 |d| for k > 0; exact for k <= 0), so
+ * CO.d' >= 2^-k CO.d - 0.88 r u. With e1 = 3 + floor(4 |d|_1) ulps
+ * (rt_self_dir), ndl > 8 e1 >= (16 + 32 |d|_1) u leaves CO.d' >= 7.6 u for
+ * k > 0 and >= 3.6 u for k <= 0, more than the 1.5 u of b's three rounded
+ * products. */
+static inline int rt_shadow_self_out(num ndl, const vec3 *d)
+{
+    uint32_t e1 = 3u + ((rt_uabs(d->x) + rt_uabs(d->y) + rt_uabs(d->z)) >> (NUM_FRAC - 2));
+    return (uint32_t)ndl > 8u * e1;
+}
+#endif
 
 num rt_compute_lighting(struct rt_state *rt, vec3 p, vec3 n, int unit_normal, vec3 v, num s, num s_zero,
                         int16_t origin, uint8_t *shadow_bits)
@@ -297,8 +318,15 @@ num rt_compute_lighting(struct rt_state *rt, vec3 p, vec3 n, int unit_normal, ve
 #endif
             const uint32_t *mk = NULL;
 #if NUM_MODE == NUM_MODE_FIXED
+            uint32_t mown;
             if (smask) {
                 mk = &smask[k];
+                /* a lit point's ray leaves its own sphere (rt_shadow_self_out) */
+                if (n_dot_l > 0 && small && ((rt->shadow_self_ok >> origin) & 1u) &&
+                    rt_shadow_self_out(n_dot_l, &l)) {
+                    mown = *mk & ~((uint32_t)1 << origin);
+                    mk = &mown;
+                }
                 if (*mk == 0) {
                     /* nothing can lie in the way: not shadowed, without the ray */
                     rt->n.shadow_rays++;

@@ -271,9 +271,10 @@ int rt_closest_intersection(struct rt_state *rt, struct rt_ray *ray, num t_min, 
 int rt_item_hit(struct rt_state *rt, int16_t item, struct rt_ray *ray, num t_min, num t_max,
                 struct rt_hit *hit);
 /* A shadow ray's search (with the shortcuts) over the objects of mask (bit
- * i: object i, a plain sphere), in book order: 1 at the first hit, its item
- * in hit->item. */
-int rt_shadow_search(struct rt_state *rt, struct rt_ray *ray, num t_min, num t_max, uint32_t mask,
+ * i: object i, a plain sphere): first (-1: none) when it is one of them,
+ * then the others in book order; 1 at the first hit, its item in
+ * hit->item. */
+int rt_shadow_search(struct rt_state *rt, struct rt_ray *ray, num t_min, num t_max, uint32_t mask, int16_t first,
                      struct rt_hit *hit);
 vec3 rt_hit_normal(const struct rt_state *rt, const struct rt_hit *hit, const vec3 *p);
 vec3 rt_far_point(const struct rt_ray *ray);

@@ -688,9 +688,15 @@ static int prim_sphere_hit(struct rt_state *rt, int16_t item, struct rt_ray *ray
     return sphere_item_hit(rt, item, ray, t_min, limit, hit, 1);
 }
 
-int rt_shadow_search(struct rt_state *rt, struct rt_ray *ray, num t_min, num t_max, uint32_t mask,
+int rt_shadow_search(struct rt_state *rt, struct rt_ray *ray, num t_min, num t_max, uint32_t mask, int16_t first,
                      struct rt_hit *hit)
 {
+    if (first >= 0 && ((mask >> first) & 1u)) {
+        /* the cached occluder first (rt_item_hit's sphere case) */
+        rt->n.tests++;
+        if (sphere_item_hit(rt, first, ray, t_min, t_max, hit, 0)) return 1;
+        mask &= ~((uint32_t)1 << first);
+    }
     for (int16_t item = 0; mask; item++, mask >>= 1) {
         if (!(mask & 1u)) continue;
         rt->n.tests++;

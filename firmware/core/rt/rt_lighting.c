@@ -14,11 +14,29 @@
  */
 #include "rt_int.h"
 
+/* in_shadow over the candidates of the ray's sphere and light
+ * (rt_shadow_masks; the shortcuts on): the others are certainly missed, so
+ * the answer is the same; the cached occluder first when it is one. A call
+ * of its own: the lighting's code for scenes without them stays as it was. */
+static RT_NOINLINE int in_shadow_masked(struct rt_state *rt, struct rt_ray *ray, num t_max, uint16_t light,
+                                        uint32_t mask)
+{
+    struct rt_hit hit;
+    hit.fr.d = 0;
+    rt->n.shadow_rays++;
+    rt->shadow_test = 1;
+    int got = rt_shadow_search(rt, ray, rt->s->rt.epsilon, t_max, mask, rt->occluder[light], &hit);
+    rt->shadow_test = 0;
+    if (got) rt->occluder[light] = hit.item;
+    return got;
+}
+
 /* Shadow test: is anything between P and the light (t in (epsilon, t_max))?
  * With any-hit the search stops at the first occluder; with the cache the
  * last occluder of this light is tried first (shadows are coherent). */
 static int in_shadow(struct rt_state *rt, struct rt_ray *ray, num t_max, uint16_t light, const uint32_t *mask)
 {
+    if (mask) return in_shadow_masked(rt, ray, t_max, light, *mask);
     const struct rt_options *o = &rt->s->rt;
     struct rt_hit hit;
     hit.fr.d = 0;   /* no best hit yet (rt_frac); the rest is written by a hit */
@@ -28,24 +46,6 @@ static int in_shadow(struct rt_state *rt, struct rt_ray *ray, num t_max, uint16_
      * the first occluder found answers (same image as the closest), and
      * the sphere tests need not find where */
     rt->shadow_test = rt->shortcuts;
-    if (mask) {
-        /* the candidates of the ray's sphere and light (rt_shadow_masks;
-         * the shortcuts on): the others are certainly missed, so the
-         * answer is the same; the cached occluder first when it is one */
-        uint32_t m = *mask;
-        int16_t c = rt->occluder[light];
-        if (c >= 0) {
-            if (((m >> c) & 1u) && rt_item_hit(rt, c, ray, o->epsilon, t_max, &hit)) {
-                rt->shadow_test = 0;
-                return 1;
-            }
-            m &= ~((uint32_t)1 << c);
-        }
-        int got = rt_shadow_search(rt, ray, o->epsilon, t_max, m, &hit);
-        rt->shadow_test = 0;
-        if (got) rt->occluder[light] = hit.item;
-        return got;
-    }
     if (cache && rt->occluder[light] >= 0) {
         if (rt_item_hit(rt, rt->occluder[light], ray, o->epsilon, t_max, &hit)) {
             rt->shadow_test = 0;

@@ -1,0 +1,172 @@
+/* SPDX-License-Identifier: MIT */
+/* test_rt_v6m.c — rt_prim_disc_v6m (rt_prim_v6m.h: the per-pixel part of a
+ * primary ray's lean sphere test, ARMv6-M assembly on the Cortex-M0+)
+ * gives the bits of rt_prim_disc_c, on the emulated Cortex-M0+.
+ *
+ * Built as an image for m0plus-qemu at NUM_FRAC 16 and 20 (the assembly's
+ * range of F, its two ends near them), run by tools/bench/run.py --smoke.
+ * Inputs: the row's parts made from a centre offset CO and a row direction
+ * as sphere_row_parts makes them, with components of every bit length up to
+ * 30 and the edge values (0, +-1, +-(2^30 - 1), +-2^29), a from the
+ * direction or of every bit length up to 62, radii of every bit length (kr
+ * 0 ... 31), limits at and around the near-root test's ends (-1, 0, 2^30 -
+ * 1, 2^30, INT32_MAX) and random, near_ok on and off with c m of every bit
+ * length below 2^(62-F), and rays aimed just past and at the sphere (a
+ * discriminant near 0). Prints a PASS or FAIL line, and the instructions
+ * per call of both forms as BENCH lines. */
+#include <string.h>
+#include "bench.h"
+#include "num.h"
+#include "rt/rt_prim_v6m.h"
+#define TEST_RNG_SEED 0xD1B54A32D192ED03ull
+#include "test_rng.h"
+
+#ifndef RT_PRIM_DISC_V6M
+#error "test_rt_v6m: built for ARMv6-M with 15 <= NUM_FRAC <= 20 only"
+#endif
+
+#define RANDOM_CASES 60000
+
+static uint32_t fails, checked, hits;
+static uint64_t bad_seed;
+
+static __attribute__((noinline)) int ref_disc(const struct rt_obj_cache *oc, const struct rt_ray *ray, num limit,
+                                              struct rt_pdisc *o)
+{
+    return rt_prim_disc_c(oc, ray, limit, o);
+}
+
+static int32_t rnd_signed(int bits)
+{
+    int32_t v = (int32_t)rnd_bits(bits);
+    return (rng() & 1) ? -v : v;
+}
+
+static const int32_t edges[] = { 0, 1, -1, 0x3FFFFFFF, -0x3FFFFFFF, 0x20000000, -0x20000000, 0x10000, -0x10000 };
+#define NEDGES (sizeof edges / sizeof edges[0])
+
+static int32_t comp(void)
+{
+    return (rng() % 8) == 0 ? edges[rng() % NEDGES] : rnd_signed(30);
+}
+
+static const num limits[] = { -1, 0, 1, 0x3FFFFFFF, 0x40000000, INT32_MAX, INT32_MIN };
+
+static void check(const struct rt_obj_cache *oc, const struct rt_ray *ray, num limit, uint64_t seed)
+{
+    struct rt_pdisc got, want;
+    memset(&got, 0x5A, sizeof got);
+    memset(&want, 0x5A, sizeof want);
+    int g = rt_prim_disc_v6m(oc, ray, limit, &got);
+    int w = ref_disc(oc, ray, limit, &want);
+    checked++;
+    hits += w != 0;
+    if (g != w || (w && (got.bx != want.bx || got.dd != want.dd || got.e != want.e))) {
+        if (!fails) bad_seed = seed;
+        fails++;
+    }
+}
+
+/* a sphere, its row's parts and a ray from the generator's state */
+static void make_case(struct rt_obj_cache *oc, struct rt_ray *ray, num *limit)
+{
+    memset(oc, 0, sizeof *oc);
+    memset(ray, 0, sizeof *ray);
+    vec3 co = { comp(), comp(), comp() };
+    ray->dx.x = comp();
+    ray->dx.y = comp();
+    ray->dx.z = comp();
+    if (rng() % 4 == 0) {
+        /* small offsets and directions, as a scene's: a few units at F bits */
+        co.x = rnd_signed(NUM_FRAC + 4);
+        co.y = rnd_signed(NUM_FRAC + 4);
+        co.z = rnd_signed(NUM_FRAC + 4);
+        ray->dx.x = rnd_signed(NUM_FRAC + 2);
+        ray->dx.y = rnd_signed(NUM_FRAC + 2);
+        ray->dx.z = rnd_signed(NUM_FRAC + 2);
+    }
+    oc->co_cam = co;
+    oc->px_b = -(num_smul32(co.y, ray->dx.y) + num_smul32(co.z, ray->dx.z));
+    oc->px_x0 = rt_mag64(num_smul32(co.y, ray->dx.z) - num_smul32(co.z, ray->dx.y));
+    oc->px_x2 = num_smul32(co.x, ray->dx.y);
+    oc->px_cxd = num_smul32(co.x, ray->dx.z);
+    ray->dxa = (rng() % 4) ? rt_quad_a(ray->dx, 0) : (wnum)rnd_bits(62);
+    /* the radius: every bit length, or the distance of the line from the
+     * centre (a discriminant near 0) */
+    num r;
+    if (rng() % 3 == 0) {
+        /* |CO x D| / |D| ~ sqrt(|x|^2 / a), in num units */
+        uint64_t x1 = rt_mag64(num_smul32(co.z, ray->dx.x) - oc->px_cxd);
+        uint64_t x2 = rt_mag64(oc->px_x2 - num_smul32(co.y, ray->dx.x));
+        uint64_t m = oc->px_x0 > x1 ? oc->px_x0 : x1;
+        if (x2 > m) m = x2;
+        uint64_t d = (uint64_t)rt_mag64(ray->dx.x) + rt_mag64(ray->dx.y) + rt_mag64(ray->dx.z);
+        uint64_t q = d ? m / d : m;
+        r = (num)(q > (uint64_t)INT32_MAX ? INT32_MAX : q) + (num)(rng() % 5) - 2;
+        if (r < 0) r = 0;
+    } else {
+        r = (num)rnd_bits(31);
+    }
+    oc->qs = rt_qsphere_make(r);
+    oc->near_ok = (uint8_t)(rng() % 4 != 0);
+    oc->cm_cam = (wnum)rnd_bits(61 - NUM_FRAC);
+    switch (rng() % 4) {
+    case 0: *limit = limits[rng() % (sizeof limits / sizeof limits[0])]; break;
+    case 1: *limit = (num)rnd_bits(30); break;
+    case 2: *limit = rnd_signed(31); break;
+    default: {
+        /* around the near-root test's threshold: cm 2^(2F-30) ~ (L+1) qs */
+        uint64_t bx = (uint64_t)(oc->px_b - num_smul32(co.x, ray->dx.x));
+        uint32_t qs = (uint32_t)(((bx * 2u + (1u << (NUM_FRAC - 1))) >> 30) & 0x7FFFFFFF) + 1u;
+        uint64_t n = ((uint64_t)oc->cm_cam << NUM_FRAC) >> (30 - NUM_FRAC);
+        uint64_t l = n / qs;
+        *limit = (num)((l > 0x40000000u ? 0x40000000u : l) - 1u + (uint32_t)(rng() % 3)) ;
+        break;
+    }
+    }
+}
+
+int bench_main(void)
+{
+    struct rt_obj_cache oc;
+    struct rt_ray ray;
+    num limit;
+    for (uint32_t i = 0; i < RANDOM_CASES; i++) {
+        uint64_t seed = rng_state;
+        make_case(&oc, &ray, &limit);
+        check(&oc, &ray, limit, seed);
+    }
+    /* instructions per call of both forms, on scene-like cases */
+    {
+        struct rt_pdisc o;
+        uint64_t tv = 0, tc = 0;
+        uint32_t n = 0;
+        for (uint32_t i = 0; i < 256; i++) {
+            make_case(&oc, &ray, &limit);
+            uint64_t t0 = bench_now();
+            (void)rt_prim_disc_v6m(&oc, &ray, limit, &o);
+            uint64_t t1 = bench_now();
+            (void)ref_disc(&oc, &ray, limit, &o);
+            uint64_t t2 = bench_now();
+            tv += t1 - t0;
+            tc += t2 - t1;
+            n++;
+        }
+        bench_report("op:rt_prim_disc", "fixed", "v6m", tv * 1000 / n, "op");
+        bench_report("op:rt_prim_disc", "fixed", "c", tc * 1000 / n, "op");
+    }
+    bench_puts(fails ? "FAIL " : "PASS ");
+    bench_puts("rt_prim_disc_v6m: ");
+    bench_put_u64(checked);
+    bench_puts(" cases, ");
+    bench_put_u64(hits);
+    bench_puts(" with a root");
+    if (fails) {
+        bench_puts(", mismatches ");
+        bench_put_u64(fails);
+        bench_puts(" e.g. the generator's state ");
+        bench_put_u64(bad_seed);
+    }
+    bench_puts("\n");
+    return fails != 0;
+}

@@ -13,7 +13,11 @@
  * 1, 2^30, INT32_MAX) and random, near_ok on and off with c m of every bit
  * length below 2^(62-F), and rays aimed just past and at the sphere (a
  * discriminant near 0). Prints a PASS or FAIL line, and the instructions
- * per call of both forms as BENCH lines. */
+ * per call of both forms as BENCH lines. rt_prim_near_v6m (the near root
+ * from it, num_isqrt64 and num_udiv64_32 called) likewise against
+ * rt_prim_near_c: on every case above with a root, and on discriminants,
+ * b and c m of every bit length (q below and above 2^32, quotients at and
+ * around 2^31, a zero discriminant). */
 #include <string.h>
 #include "bench.h"
 #include "num.h"
@@ -34,6 +38,30 @@ static __attribute__((noinline)) int ref_disc(const struct rt_obj_cache *oc, con
                                               struct rt_pdisc *o)
 {
     return rt_prim_disc_c(oc, ray, limit, o);
+}
+
+static __attribute__((noinline)) int ref_near(const struct rt_pdisc *pd, const struct rt_obj_cache *oc,
+                                              struct rt_pnear *o)
+{
+    return rt_prim_near_c(pd, oc, o);
+}
+
+static uint32_t nfails, nchecked, nfast;
+
+/* rt_prim_near of pd and c m (cm_cam) both ways */
+static void check_near(const struct rt_pdisc *pd, struct rt_obj_cache *oc, uint64_t seed)
+{
+    struct rt_pnear got, want;
+    memset(&got, 0x5A, sizeof got);
+    memset(&want, 0x5A, sizeof want);
+    int g = rt_prim_near_v6m(pd, oc, &got);
+    int w = ref_near(pd, oc, &want);
+    nchecked++;
+    nfast += w != 0;
+    if (g != w || (w && (got.q != want.q || got.t != want.t))) {
+        if (!nfails && !fails) bad_seed = seed;
+        nfails++;
+    }
 }
 
 static int32_t rnd_signed(int bits)
@@ -65,6 +93,7 @@ static void check(const struct rt_obj_cache *oc, const struct rt_ray *ray, num l
         if (!fails) bad_seed = seed;
         fails++;
     }
+    if (w) check_near(&want, (struct rt_obj_cache *)oc, seed);
 }
 
 /* a sphere, its row's parts and a ray from the generator's state */
@@ -136,6 +165,32 @@ int bench_main(void)
         make_case(&oc, &ray, &limit);
         check(&oc, &ray, limit, seed);
     }
+    /* the near root from discriminants, b and c m of every bit length: q
+     * below and above 2^32, quotients near 2^31, the division's ends */
+    for (uint32_t i = 0; i < RANDOM_CASES; i++) {
+        uint64_t seed = rng_state;
+        struct rt_pdisc pd;
+        memset(&oc, 0, sizeof oc);
+        pd.bx = (int64_t)rnd_bits(61);
+        pd.dd = (rng() % 16) ? rnd_bits(62) : 0;
+        pd.e = (int32_t)(rng() % 63);
+        if (rng() % 2) pd.e &= 7;
+        oc.cm_cam = (wnum)rnd_bits(62);
+        check_near(&pd, &oc, seed);
+        /* c m near the division's limits for this q */
+        struct rt_pnear r;
+        r.q = 0;
+        if (ref_near(&pd, &oc, &r) || r.q > 0) {
+            uint64_t q = (uint64_t)r.q;
+            int sh = rt_bitlen64(q) > 32 ? rt_bitlen64(q) - 32 : 0;
+            uint64_t d = sh ? (q + ((uint64_t)1 << (sh - 1))) >> sh : q;
+            /* n 2^F = d (2^31 - 1 + j/2), j small: t at and around INT32_MAX */
+            uint64_t n = (d * (uint64_t)0x7FFFFFFF) >> NUM_FRAC;
+            n += (uint64_t)(rng() % 5) * (d >> (NUM_FRAC + 1));
+            oc.cm_cam = (wnum)((sh && sh < 40) ? n << sh : n);
+            if (oc.cm_cam > 0) check_near(&pd, &oc, seed);
+        }
+    }
     /* instructions per call of both forms, on scene-like cases */
     {
         struct rt_pdisc o;
@@ -154,19 +209,36 @@ int bench_main(void)
         }
         bench_report("op:rt_prim_disc", "fixed", "v6m", tv * 1000 / n, "op");
         bench_report("op:rt_prim_disc", "fixed", "c", tc * 1000 / n, "op");
+        /* the near root of a typical pixel: q about 2^37, t a few units */
+        struct rt_pdisc pd = { (int64_t)1 << 36, (uint64_t)1 << 60, 12 };
+        struct rt_pnear pn;
+        oc.cm_cam = (wnum)5 << 50;
+        uint64_t t0 = bench_now();
+        (void)rt_prim_near_v6m(&pd, &oc, &pn);
+        uint64_t t1 = bench_now();
+        (void)ref_near(&pd, &oc, &pn);
+        uint64_t t2 = bench_now();
+        bench_report("op:rt_prim_near", "fixed", "v6m", (t1 - t0) * 1000, "op");
+        bench_report("op:rt_prim_near", "fixed", "c", (t2 - t1) * 1000, "op");
     }
-    bench_puts(fails ? "FAIL " : "PASS ");
+    bench_puts(fails || nfails ? "FAIL " : "PASS ");
     bench_puts("rt_prim_disc_v6m: ");
     bench_put_u64(checked);
     bench_puts(" cases, ");
     bench_put_u64(hits);
-    bench_puts(" with a root");
-    if (fails) {
+    bench_puts(" with a root; rt_prim_near_v6m: ");
+    bench_put_u64(nchecked);
+    bench_puts(" cases, ");
+    bench_put_u64(nfast);
+    bench_puts(" on the fast path");
+    if (fails || nfails) {
         bench_puts(", mismatches ");
         bench_put_u64(fails);
+        bench_puts(" and ");
+        bench_put_u64(nfails);
         bench_puts(" e.g. the generator's state ");
         bench_put_u64(bad_seed);
     }
     bench_puts("\n");
-    return fails != 0;
+    return fails != 0 || nfails != 0;
 }

@@ -43,6 +43,46 @@ RT_ALWAYS_INLINE int rt_prim_disc_c(const struct rt_obj_cache *oc, const struct 
     return 1;
 }
 
+/* The near root along the row's direction (prim_sphere_hit's common case):
+ * from *pd, q (rt_quad_root_x) and t = c m / q (rt_quad_near_m) where its
+ * rt_wdiv takes the 64/32 fast path: 1 with o->q and o->t when the
+ * discriminant is positive, q != 0 and that path applies, else 0 (the
+ * caller then solves the general way: the same values where this gives
+ * them). pd from rt_prim_disc (bx > 0), c m = oc->cm_cam > 0. */
+struct rt_pnear {
+    wnum q;
+    num t;
+};
+
+RT_ALWAYS_INLINE int rt_prim_near_c(const struct rt_pdisc *pd, const struct rt_obj_cache *oc, struct rt_pnear *o)
+{
+    wnum cm = oc->cm_cam;
+    uint64_t dd = pd->dd;
+    int e = (int)pd->e;
+    if (dd == 0) return 0;
+    if (e & 1) { dd <<= 1; e--; }
+    int64_t qx = pd->bx + (int64_t)(num_isqrt64(dd, 0) << (e / 2));
+    wnum q = rt_shr_round(qx, NUM_FRAC);
+    if (q == 0) return 0;
+    o->q = q;
+    /* rt_quad_near_m, then rt_wdiv's fast path */
+    int sh = rt_bitlen64(rt_mag64(q)) - 32;
+    wnum n = cm, d = q;
+    if (sh > 0) {
+        n = rt_shr_round(cm, sh);
+        d = rt_shr_round(q, sh);
+    }
+    if (!(n >= 0 && d > 0 && d <= (wnum)UINT32_MAX && n < ((wnum)1 << (63 - NUM_FRAC)))) return 0;
+    uint64_t nn = (uint64_t)n << NUM_FRAC;
+    uint32_t dv = (uint32_t)d, rm;
+    if ((nn >> 32) >= dv) return 0;
+    uint64_t t = num_udiv64_32(nn, dv, &rm);
+    if (rm >= dv - rm) t++;
+    if (t > (uint64_t)INT32_MAX) return 0;
+    o->t = (num)t;
+    return 1;
+}
+
 #if defined(__ARM_ARCH_6M__) && defined(__GNUC__) && !defined(__clang__) && NUM_FRAC >= 15 && NUM_FRAC <= 20
 #define RT_PRIM_DISC_V6M 1
 /* The offsets the assembly reads (oc, ray, the result). */
@@ -180,6 +220,59 @@ __attribute__((noinline)) static int rt_prim_disc_v6m(const struct rt_obj_cache 
         : "r4", "r5", "r6", "r7", "r8", "r9", "r10", "r11", "r12", "lr", "cc", "memory");
     return (int)r0;
 }
+
+/* rt_prim_near_c in Thumb-1, num_isqrt64 and num_udiv64_32 called (the
+ * stack kept 8-byte aligned, the remainder at sp). Registers: r7 pd, r11
+ * oc, r10 the result; r4 e / 2; q (r1:r0) then d (r0), n (r3:r2), sh r6. */
+_Static_assert(offsetof(struct rt_pnear, q) == 0 && offsetof(struct rt_pnear, t) == 8, "rt_prim_near_v6m: offsets");
+__attribute__((noinline)) static int rt_prim_near_v6m(const struct rt_pdisc *pd, const struct rt_obj_cache *oc,
+                                                      struct rt_pnear *o)
+{
+    register uint32_t r0 __asm__("r0") = (uint32_t)(uintptr_t)pd;
+    register const struct rt_obj_cache *r1 __asm__("r1") = oc;
+    register struct rt_pnear *r2 __asm__("r2") = o;
+    register uint32_t r3 __asm__("r3");
+    __asm__ volatile(
+        ".syntax unified\n\t"
+        "sub sp, #4\n\t mov r10, r2\n\t mov r11, r1\n\t movs r7, r0\n\t"
+        "ldr r0, [r7, #8]\n\t ldr r1, [r7, #12]\n\t movs r2, r0\n\t orrs r2, r1\n\t" RT_PD_RET0_UNLESS("ne")
+        "ldr r4, [r7, #16]\n\t lsrs r4, r4, #1\n\t bcc 1f\n\t adds r0, r0, r0\n\t adcs r1, r1\n1:\n\t"
+        "movs r2, #0\n\t bl num_isqrt64\n\t"
+        /* hx = root << (e / 2) */
+        "cmp r4, #32\n\t bhs 2f\n\t movs r3, #32\n\t subs r3, r3, r4\n\t movs r2, r0\n\t lsrs r2, r2, r3\n\t"
+        "lsls r1, r1, r4\n\t orrs r1, r2\n\t lsls r0, r0, r4\n\t b 3f\n"
+        "2:\n\t subs r4, #32\n\t lsls r0, r0, r4\n\t movs r1, r0\n\t movs r0, #0\n"
+        "3:\n\t ldr r2, [r7, #0]\n\t ldr r3, [r7, #4]\n\t adds r0, r0, r2\n\t adcs r1, r3\n\t"
+        /* q = (qx + 2^(F-1)) >> F */
+        "movs r2, #1\n\t lsls r2, r2, #(" RT_PD_F " - 1)\n\t movs r3, #0\n\t adds r0, r0, r2\n\t adcs r1, r3\n\t"
+        "lsrs r0, r0, #" RT_PD_F "\n\t lsls r2, r1, #(32 - " RT_PD_F ")\n\t orrs r0, r2\n\t lsrs r1, r1, #" RT_PD_F "\n\t"
+        "movs r2, r0\n\t orrs r2, r1\n\t" RT_PD_RET0_UNLESS("ne")
+        "mov r2, r10\n\t str r0, [r2]\n\t str r1, [r2, #4]\n\t"
+        /* n = cm, d = q, both by 2^sh rounded when q >= 2^32 */
+        "mov r3, r11\n\t ldr r2, [r3, #32]\n\t ldr r3, [r3, #36]\n\t"
+        "cmp r1, #0\n\t beq 4f\n\t"
+        "movs r5, r1\n\t" RT_PD_BITLEN("r5", "r6", "r4")
+        "movs r4, #1\n\t subs r5, r6, #1\n\t lsls r4, r4, r5\n\t movs r5, #0\n\t adds r0, r0, r4\n\t adcs r1, r5\n\t"
+        "movs r5, #32\n\t subs r5, r5, r6\n\t lsrs r0, r0, r6\n\t movs r4, r1\n\t lsls r4, r4, r5\n\t orrs r0, r4\n\t"
+        "lsrs r1, r1, r6\n\t cmp r1, #0\n\t" RT_PD_RET0_UNLESS("eq")
+        "movs r4, #1\n\t subs r1, r6, #1\n\t lsls r4, r4, r1\n\t movs r1, #0\n\t adds r2, r2, r4\n\t adcs r3, r1\n\t"
+        "lsrs r2, r2, r6\n\t movs r4, r3\n\t lsls r4, r4, r5\n\t orrs r2, r4\n\t lsrs r3, r3, r6\n"
+        "4:\n\t"
+        /* rt_wdiv's fast path: n >= 0, n < 2^(63-F), (n 2^F) >> 32 < d */
+        "cmp r3, #0\n\t" RT_PD_RET0_UNLESS("ge") "lsrs r4, r3, #(31 - " RT_PD_F ")\n\t" RT_PD_RET0_UNLESS("eq")
+        "lsls r3, r3, #" RT_PD_F "\n\t lsrs r4, r2, #(32 - " RT_PD_F ")\n\t orrs r3, r4\n\t lsls r2, r2, #" RT_PD_F "\n\t"
+        "cmp r3, r0\n\t" RT_PD_RET0_UNLESS("lo")
+        "movs r5, r0\n\t movs r0, r2\n\t movs r1, r3\n\t movs r2, r5\n\t mov r3, sp\n\t bl num_udiv64_32\n\t"
+        "cmp r0, #0\n\t" RT_PD_RET0_UNLESS("ge")
+        "ldr r3, [sp]\n\t subs r2, r5, r3\n\t cmp r3, r2\n\t blo 1f\n\t adds r0, #1\n\t" RT_PD_RET0_UNLESS("pl") "1:\n\t"
+        "mov r2, r10\n\t str r0, [r2, #8]\n\t movs r0, #1\n\t b 0f\n"
+        "9:\n\t movs r0, #0\n"
+        "0:\n\t add sp, #4\n\t .syntax divided\n"
+        : "+l"(r0), "+l"(r1), "+l"(r2), "=l"(r3)
+        :
+        : "r4", "r5", "r6", "r7", "r8", "r9", "r10", "r11", "r12", "lr", "cc", "memory");
+    return (int)r0;
+}
 #endif
 
 /* rt_prim_disc_c, by the assembly where there is one */
@@ -190,6 +283,16 @@ RT_ALWAYS_INLINE int rt_prim_disc(const struct rt_obj_cache *oc, const struct rt
     return rt_prim_disc_v6m(oc, ray, limit, o);
 #else
     return rt_prim_disc_c(oc, ray, limit, o);
+#endif
+}
+
+/* rt_prim_near_c, by the assembly where there is one */
+RT_ALWAYS_INLINE int rt_prim_near(const struct rt_pdisc *pd, const struct rt_obj_cache *oc, struct rt_pnear *o)
+{
+#ifdef RT_PRIM_DISC_V6M
+    return rt_prim_near_v6m(pd, oc, o);
+#else
+    return rt_prim_near_c(pd, oc, o);
 #endif
 }
 

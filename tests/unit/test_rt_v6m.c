@@ -17,7 +17,8 @@
  * from it, num_isqrt64 and num_udiv64_32 called) likewise against
  * rt_prim_near_c: on every case above with a root, and on discriminants,
  * b and c m of every bit length (q below and above 2^32, quotients at and
- * around 2^31, a zero discriminant). */
+ * around 2^31, a zero discriminant); rt_prim_solve_v6m (both in one call)
+ * against rt_prim_solve_c on the first's cases. */
 #include <string.h>
 #include "bench.h"
 #include "num.h"
@@ -46,7 +47,13 @@ static __attribute__((noinline)) int ref_near(const struct rt_pdisc *pd, const s
     return rt_prim_near_c(pd, oc, o);
 }
 
-static uint32_t nfails, nchecked, nfast;
+static uint32_t nfails, nchecked, nfast, sfails;
+
+static __attribute__((noinline)) int ref_solve(const struct rt_obj_cache *oc, const struct rt_ray *ray, num limit,
+                                               struct rt_psolve *o)
+{
+    return rt_prim_solve_c(oc, ray, limit, o);
+}
 
 /* rt_prim_near of pd and c m (cm_cam) both ways */
 static void check_near(const struct rt_pdisc *pd, struct rt_obj_cache *oc, uint64_t seed)
@@ -94,6 +101,18 @@ static void check(const struct rt_obj_cache *oc, const struct rt_ray *ray, num l
         fails++;
     }
     if (w) check_near(&want, (struct rt_obj_cache *)oc, seed);
+    /* both in one call: its result, o->pd for 1 and 2, o->pn for 1 */
+    struct rt_psolve sg, sw;
+    memset(&sg, 0x5A, sizeof sg);
+    memset(&sw, 0x5A, sizeof sw);
+    int gs = rt_prim_solve_v6m(oc, ray, limit, &sg);
+    int ws = ref_solve(oc, ray, limit, &sw);
+    if (gs != ws ||
+        (ws && (sg.pd.bx != sw.pd.bx || sg.pd.dd != sw.pd.dd || sg.pd.e != sw.pd.e)) ||
+        (ws == 1 && (sg.pn.q != sw.pn.q || sg.pn.t != sw.pn.t))) {
+        if (!fails && !nfails && !sfails) bad_seed = seed;
+        sfails++;
+    }
 }
 
 /* a sphere, its row's parts and a ray from the generator's state */
@@ -193,22 +212,22 @@ int bench_main(void)
     }
     /* instructions per call of both forms, on scene-like cases */
     {
-        struct rt_pdisc o;
+        struct rt_psolve o;
         uint64_t tv = 0, tc = 0;
         uint32_t n = 0;
         for (uint32_t i = 0; i < 256; i++) {
             make_case(&oc, &ray, &limit);
             uint64_t t0 = bench_now();
-            (void)rt_prim_disc_v6m(&oc, &ray, limit, &o);
+            (void)rt_prim_solve_v6m(&oc, &ray, limit, &o);
             uint64_t t1 = bench_now();
-            (void)ref_disc(&oc, &ray, limit, &o);
+            (void)ref_solve(&oc, &ray, limit, &o);
             uint64_t t2 = bench_now();
             tv += t1 - t0;
             tc += t2 - t1;
             n++;
         }
-        bench_report("op:rt_prim_disc", "fixed", "v6m", tv * 1000 / n, "op");
-        bench_report("op:rt_prim_disc", "fixed", "c", tc * 1000 / n, "op");
+        bench_report("op:rt_prim_solve", "fixed", "v6m", tv * 1000 / n, "op");
+        bench_report("op:rt_prim_solve", "fixed", "c", tc * 1000 / n, "op");
         /* the near root of a typical pixel: q about 2^37, t a few units */
         struct rt_pdisc pd = { (int64_t)1 << 36, (uint64_t)1 << 60, 12 };
         struct rt_pnear pn;
@@ -221,7 +240,7 @@ int bench_main(void)
         bench_report("op:rt_prim_near", "fixed", "v6m", (t1 - t0) * 1000, "op");
         bench_report("op:rt_prim_near", "fixed", "c", (t2 - t1) * 1000, "op");
     }
-    bench_puts(fails || nfails ? "FAIL " : "PASS ");
+    bench_puts(fails || nfails || sfails ? "FAIL " : "PASS ");
     bench_puts("rt_prim_disc_v6m: ");
     bench_put_u64(checked);
     bench_puts(" cases, ");
@@ -231,14 +250,17 @@ int bench_main(void)
     bench_puts(" cases, ");
     bench_put_u64(nfast);
     bench_puts(" on the fast path");
-    if (fails || nfails) {
+    bench_puts("; rt_prim_solve_v6m on the first's");
+    if (fails || nfails || sfails) {
         bench_puts(", mismatches ");
         bench_put_u64(fails);
-        bench_puts(" and ");
+        bench_puts(", ");
         bench_put_u64(nfails);
+        bench_puts(", ");
+        bench_put_u64(sfails);
         bench_puts(" e.g. the generator's state ");
         bench_put_u64(bad_seed);
     }
     bench_puts("\n");
-    return fails != 0 || nfails != 0;
+    return fails != 0 || nfails != 0 || sfails != 0;
 }

@@ -674,26 +674,25 @@ static int prim_sphere_hit(struct rt_state *rt, int16_t item, struct rt_ray *ray
     struct rt_obj_cache *oc = &rt->oc[item];
     if (oc->c_cam > 0) {
         /* sphere_quad_row's solve with c > 0 (rt_prim_v6m.h) */
-        struct rt_pdisc pd;
-        struct rt_pnear pn;
+        struct rt_psolve ps;
         sphere_row_parts(oc, ray);
-        if (!rt_prim_disc(oc, ray, limit, &pd)) return 0;
-        int near = rt_prim_near(&pd, oc, &pn);
-        if (!near) {
+        int near = rt_prim_solve(oc, ray, limit, &ps);
+        if (!near) return 0;
+        if (near == 2) {
             /* the general way: a zero discriminant or q, or rt_wdiv's slow path */
             struct rt_quad q;
-            rt_quad_root_x(pd.bx, pd.dd, pd.e, &q);
-            if (q.q != 0 && q.disc_pos) {
-                pn.q = q.q;
-                pn.t = rt_quad_near_m(oc->cm_cam, &q);
-                near = 1;
+            rt_quad_root_x(ps.pd.bx, ps.pd.dd, ps.pd.e, &q);
+            near = q.q != 0 && q.disc_pos;
+            if (near) {
+                ps.pn.q = q.q;
+                ps.pn.t = rt_quad_near_m(oc->cm_cam, &q);
             }
         }
         if (near) {
             struct rt_frac fr;
-            num t2 = pn.t;
+            num t2 = ps.pn.t;
             fr.n = oc->cm_cam;
-            fr.d = pn.q;
+            fr.d = ps.pn.q;
             if (t2 > limit || (t2 == limit && !tie_first(&fr, hit, limit))) return 0;
             if (t_min < t2) {
                 hit->t = t2;

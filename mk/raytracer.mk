@@ -68,3 +68,14 @@ profile-raytracer-adaptive: $(BUILD)/bench/m0plus-qemu/fixed/raytracer-prof-adap
 	$(Q)$(PYTHON) tools/bench/profile.py --top 30 $<
 profile-raytracer-02: $(BUILD)/bench/m0plus-qemu/fixed/raytracer-prof-02.elf
 	$(Q)$(PYTHON) tools/bench/profile.py --top 30 $<
+
+# The hand-written ARMv6-M part of a primary ray's lean sphere test
+# (rt_prim_disc_v6m, firmware/core/rt/rt_prim_v6m.h) on the emulated
+# Cortex-M0+ against its C (rt_prim_disc_c), at NUM_FRAC 16 and 20; it also
+# prints both forms' instructions per call.
+RT_V6M_SRCS := tests/unit/test_rt_v6m.c $(CORE_NUM_SRCS)
+$(call bench_image,test_rt_v6m_q16,m0plus-qemu,fixed,$(RT_V6M_SRCS),-Itests/support -DNUM_FRAC=16)
+$(call bench_image,test_rt_v6m_q20,m0plus-qemu,fixed,$(RT_V6M_SRCS),-Itests/support -DNUM_FRAC=20)
+RT_V6M_IMAGES := $(BUILD)/bench/m0plus-qemu/fixed/test_rt_v6m_q16.elf $(BUILD)/bench/m0plus-qemu/fixed/test_rt_v6m_q20.elf
+TEST_DEPS += $(RT_V6M_IMAGES)
+TESTS     += tools/bench/run.py:--smoke:$(subst $(eval) ,:,$(RT_V6M_IMAGES))

@@ -17,6 +17,7 @@
  *   book's ground seen from the camera c = 5001^2 - 5000^2 = 10001 exactly.
  */
 #include "rt_int.h"
+#include "rt_prim_v6m.h"
 
 /* The ray, with a copy of its direction scaled by a power of two for the
  * robust tests: D' = D / 2^k with D'.D' in [0.25, 4), and tscale = 2^-k,
@@ -154,9 +155,10 @@ struct sphere_quad {
  * the row's parts of b and CO x D once a row per sphere (rt_obj_cache),
  * then three products a pixel instead of nine; the same integers, so the
  * same bits as rt_quad_solve. */
-RT_ALWAYS_INLINE int sphere_quad_row(struct rt_obj_cache *oc, const struct rt_ray *ray, struct sphere_quad *k, num limit)
-{
 #if NUM_MODE == NUM_MODE_FIXED
+/* the row's parts of b and CO x D (rt_obj_cache.px_row) for ray's row */
+RT_ALWAYS_INLINE void sphere_row_parts(struct rt_obj_cache *oc, const struct rt_ray *ray)
+{
     vec3 co = oc->co_cam;
     if (oc->px_row != ray->dxrow) {
         oc->px_row = ray->dxrow;
@@ -165,6 +167,14 @@ RT_ALWAYS_INLINE int sphere_quad_row(struct rt_obj_cache *oc, const struct rt_ra
         oc->px_x2 = num_smul32(co.x, ray->dx.y);
         oc->px_cxd = num_smul32(co.x, ray->dx.z);
     }
+}
+#endif
+
+RT_ALWAYS_INLINE int sphere_quad_row(struct rt_obj_cache *oc, const struct rt_ray *ray, struct sphere_quad *k, num limit)
+{
+#if NUM_MODE == NUM_MODE_FIXED
+    vec3 co = oc->co_cam;
+    sphere_row_parts(oc, ray);
     int64_t bx = oc->px_b - num_smul32(co.x, ray->dx.x);
     if (k->c > 0 && bx <= 0) return 0;
     /* the near root certainly beyond the limit (rt_near_beyond) */
@@ -663,16 +673,26 @@ static int prim_sphere_hit(struct rt_state *rt, int16_t item, struct rt_ray *ray
 #if NUM_MODE == NUM_MODE_FIXED
     struct rt_obj_cache *oc = &rt->oc[item];
     if (oc->c_cam > 0) {
-        struct sphere_quad k;
-        k.c = oc->c_cam;
-        k.a = ray->dxa;
-        k.cm = oc->cm_cam;
-        if (!sphere_quad_row(oc, ray, &k, limit)) return 0;
-        if (k.k.q != 0 && k.k.disc_pos) {
+        /* sphere_quad_row's solve with c > 0 (rt_prim_v6m.h) */
+        struct rt_psolve ps;
+        sphere_row_parts(oc, ray);
+        int near = rt_prim_solve(oc, ray, limit, &ps);
+        if (!near) return 0;
+        if (near == 2) {
+            /* the general way: a zero discriminant or q, or rt_wdiv's slow path */
+            struct rt_quad q;
+            rt_quad_root_x(ps.pd.bx, ps.pd.dd, ps.pd.e, &q);
+            near = q.q != 0 && q.disc_pos;
+            if (near) {
+                ps.pn.q = q.q;
+                ps.pn.t = rt_quad_near_m(oc->cm_cam, &q);
+            }
+        }
+        if (near) {
             struct rt_frac fr;
-            num t2 = rt_quad_near_m(k.cm, &k.k);
-            fr.n = k.cm;
-            fr.d = k.k.q;
+            num t2 = ps.pn.t;
+            fr.n = oc->cm_cam;
+            fr.d = ps.pn.q;
             if (t2 > limit || (t2 == limit && !tie_first(&fr, hit, limit))) return 0;
             if (t_min < t2) {
                 hit->t = t2;
@@ -716,7 +736,10 @@ static int bound_hit(struct rt_state *rt, vec3 c, num r, struct rt_ray *ray)
     rt->n.tests++;
     rt_ray_exact(ray);
     wnum a = ray->as;
-    vec3 d = ray->ds;
+    vec3 d;   /* by components: a struct copy here becomes a memcpy call on ARMv6-M */
+    d.x = ray->ds.x;
+    d.y = ray->ds.y;
+    d.z = ray->ds.z;
     vec3 co = v3_sub(ray->o, c);
     wnum cc = wnum_sub(v3_dot_wide(co, co), num_mul_wide(r, r));
     if (cc <= 0) return 1;                 /* origin inside */

@@ -745,17 +745,23 @@ RT_ALWAYS_INLINE int rt_quad_disc_x(uint64_t x0, uint64_t x1, uint64_t x2, wnum 
     return 1;
 }
 
+/* q from b (bx) and the discriminant dd 2^e of rt_quad_disc_x. */
+RT_ALWAYS_INLINE void rt_quad_root_x(int64_t bx, uint64_t dd, int e, struct rt_quad *k)
+{
+    k->disc_pos = dd > 0;
+    if (e & 1) { dd <<= 1; e--; }            /* dd < 2^62 */
+    int64_t hx = (int64_t)(num_isqrt64(dd, 0) << (e / 2));
+    k->qx = bx >= 0 ? bx + hx : bx - hx;
+    k->q = rt_shr_round(k->qx, NUM_FRAC);
+}
+
 RT_ALWAYS_INLINE int rt_quad_solve_x(int64_t bx, uint64_t x0, uint64_t x1, uint64_t x2, wnum aq,
                                      const struct rt_qsphere *sp, struct rt_quad *k)
 {
     uint64_t dd;
     int e;
     if (!rt_quad_disc_x(x0, x1, x2, aq, sp, &dd, &e)) return 0;
-    k->disc_pos = dd > 0;
-    if (e & 1) { dd <<= 1; e--; }            /* dd < 2^62 */
-    int64_t hx = (int64_t)(num_isqrt64(dd, 0) << (e / 2));
-    k->qx = bx >= 0 ? bx + hx : bx - hx;
-    k->q = rt_shr_round(k->qx, NUM_FRAC);
+    rt_quad_root_x(bx, dd, e, k);
     return 1;
 }
 #endif

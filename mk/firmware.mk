@@ -297,11 +297,14 @@ $(call fw_scene_image,cgfs-rt-1core,RT,$(FW_1CORE_FLAGS) -DFW_FRAMES_PER_SCENE=1
 # The 4,096-triangle meshes (Gouraud, flat), FW_MESH_FRAMES frames of each,
 # two cores, with only the rasterizer's default path in SRAM (the whole core
 # there leaves too little work memory for a mesh: RP2040_RAM_TEXT=raster).
-# Its UART log ring is 64 characters (RP2040_LOG_RING, firmware/board/rp2040/board.c),
-# not 512: SRAM has no more room; a frame's two lines (about 113 characters) then
-# wait for the last ~17 to enter the FIFO (uart_stall_cycles).
+# Its strips go through a ring of 8 buffers (FW_RING, firmware/app/main.c;
+# 4 elsewhere): with 4, core 1 often waited for a buffer while core 0, which
+# sends the strips, rendered one of the knot's long strips.
+# Its UART log ring is the default 512 characters (RP2040_LOG_RING,
+# firmware/board/rp2040/board.c): with 64, a frame's two lines (about 113
+# characters) waited for the last ~17 to enter the FIFO (uart_stall_cycles).
 FW_MESH_FRAMES ?= 10
-$(call fw_scene_image,cgfs-mesh,MESH,-DFW_FRAMES_PER_SCENE=$(FW_MESH_FRAMES) -DRAS_RAM_TEXT -DRP2040_RAM_TEXT_RASTER -DRP2040_LOG_RING=64,raster)
+$(call fw_scene_image,cgfs-mesh,MESH,-DFW_FRAMES_PER_SCENE=$(FW_MESH_FRAMES) -DFW_RING=8 -DRAS_RAM_TEXT -DRP2040_RAM_TEXT_RASTER,raster)
 
 # The bring-up pattern (firmware/app/check_main.c, check_pattern.h): no
 # scenes, no renderer core, one core; the pattern sent again every

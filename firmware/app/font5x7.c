@@ -71,11 +71,6 @@ const uint8_t *font5x7_glyph(char c)
     }
 }
 
-static void put(uint16_t *strip, int width, int y0, int y1, int x, int y, uint16_t c)
-{
-    if (x >= 0 && x < width && y >= y0 && y < y1) strip[(y - y0) * width + x] = c;
-}
-
 void font5x7_draw(uint16_t *strip, int width, int y0, int y1, int x, int y, int scale,
                   const char *s, uint16_t fg, uint16_t bg)
 {
@@ -83,18 +78,24 @@ void font5x7_draw(uint16_t *strip, int width, int y0, int y1, int x, int y, int 
     while (s[n]) n++;
     int bw = n * 6 * scale + 3, bh = FONT5X7_BOX_H(scale);
     if (y + bh <= y0 || y >= y1) return;
-    for (int yy = y; yy < y + bh; yy++)
-        for (int xx = x; xx < x + bw; xx++) put(strip, width, y0, y1, xx, yy, bg);
+    /* only the rows of the box inside the strip, and its columns inside the width */
+    const int ya = y > y0 ? y : y0, yb = y + bh < y1 ? y + bh : y1;
+    const int xa = x > 0 ? x : 0, xb = x + bw < width ? x + bw : width;
+    for (int yy = ya; yy < yb; yy++)
+        for (int xx = xa; xx < xb; xx++) strip[(yy - y0) * width + xx] = bg;
     for (int i = 0; i < n; i++) {
         const uint8_t *g = font5x7_glyph(s[i]);
         if (!g) continue;
-        for (int r = 0; r < 7; r++)
+        for (int r = 0; r < 7; r++) {
+            const int ty = y + 2 + r * scale;
+            if (ty + scale <= ya || ty >= yb) continue;
             for (int col = 0; col < 5; col++) {
                 if (!(g[r] & (0x10 >> col))) continue;
-                for (int dy = 0; dy < scale; dy++)
-                    for (int dx = 0; dx < scale; dx++)
-                        put(strip, width, y0, y1, x + 2 + (i * 6 + col) * scale + dx,
-                            y + 2 + r * scale + dy, fg);
+                const int tx = x + 2 + (i * 6 + col) * scale;
+                for (int yy = ty > ya ? ty : ya; yy < ty + scale && yy < yb; yy++)
+                    for (int xx = tx > xa ? tx : xa; xx < tx + scale && xx < xb; xx++)
+                        strip[(yy - y0) * width + xx] = fg;
             }
+        }
     }
 }

@@ -79,6 +79,15 @@ static struct ras_range default_tri_rows(const struct ras_ctx *rc, vec3 a, vec3 
  * ApplyTransform, and projected, ProjectVertex) and instance_triangles
  * (each triangle culled, lit and binned to the rows it may touch).
  * vb, tb: the instance's first vertex and triangle in the frame tables. */
+/* Bits a .. b - 1 of the bit table t cleared (bit k: t[k >> 3] bit k & 7),
+ * the whole bytes among them at once. */
+static void bits_clear(uint8_t *t, uint32_t a, uint32_t b)
+{
+    for (; a < b && (a & 7u); a++) t[a >> 3] &= (uint8_t)~(1u << (a & 7u));
+    for (; b - a >= 8u; a += 8u) t[a >> 3] = 0;
+    for (; a < b; a++) t[a >> 3] &= (uint8_t)~(1u << (a & 7u));
+}
+
 static void instance_head(struct ras_ctx *rc, uint16_t i, uint16_t frame, uint32_t vb, uint32_t tb)
 {
     const struct scene *s = rc->s;
@@ -121,11 +130,10 @@ static void instance_head(struct ras_ctx *rc, uint16_t i, uint16_t frame, uint32
                          ras_sphere_inside(&ri->m, &ri->box, &cb, rc->def.near_z, rc->def.side_x, rc->def.side_y)));
     ri->vlit = (uint8_t)(rc->def.vert_shade && ras_vertex_lit(s, in));
     if (rc->def.mlight) ras_model_light_frame(rc, in, ri, &rc->def.mlight[i]);
-    if (ri->vlit)   /* no vertex lit yet this frame (by either part of the triangles) */
-        for (uint32_t k = vb; k < vb + m->nverts; k++) {
-            rc->def.vert_lit[k >> 3] &= (uint8_t)~(1u << (k & 7));
-            if (rc->def.vert_lit1) rc->def.vert_lit1[k >> 3] &= (uint8_t)~(1u << (k & 7));
-        }
+    if (ri->vlit) {   /* no vertex lit yet this frame (by either part of the triangles) */
+        bits_clear(rc->def.vert_lit, vb, vb + m->nverts);
+        if (rc->def.vert_lit1) bits_clear(rc->def.vert_lit1, vb, vb + m->nverts);
+    }
 }
 
 /* Model point p of instance in to camera space (ApplyTransform). */

@@ -152,24 +152,27 @@ static void fedge_init(struct fedge *e, int32_t a, int32_t b, int32_t w, int32_t
 }
 
 /* Everything a triangle's rows need, kept between strips (struct
- * ras_fast_state is this, opaque to the rest of the rasterizer). */
+ * ras_fast_state is this, opaque to the rest of the rasterizer). The fields
+ * the set-up and the row walks read come first: within 124 bytes of the
+ * start, a word's offset from a base register fits ARMv6-M's LDR and STR
+ * (past it each access first makes its offset). */
 struct fstate {
-    struct ras_fast_tri ftc;     /* the triangle's description, where T.ft points once kept */
-    struct ftri T;
-    struct fedge fe[3];          /* (row bounds by division: scan == 0) */
     int32_t wr[3], a[3], b[3];   /* edge values at (c0, row), steps per column and row */
     int32_t wb[3];               /* (scan) wr + the top-left rule's bias: covered when all >= 0 */
-    int scan;                    /* a narrow box: each row's span found by stepping across it */
-    int64_t zrow, gy16;          /* depth plane at (c0, row), Q32.16 */
+    int32_t c0, kmax, row, last; /* box column, last column less c0, next row, last row */
+    /* z32: the plane below (zrow, gy16) in 32-bit words, zrow = zhi * 2^16
+     * + zfrac and gy16 = gyq * 2^16 + gyf (modulo 2^48; fractions below
+     * 2^16), where every span's depths are proven to lie in [1, 2^32 - 2] */
+    uint32_t zhi, zfrac, gyq, gyf;
     int32_t gxq;                 /* column gradient gxq * 2^16 + gxf */
     uint32_t gxf, dz;
-    /* z32: the same plane in 32-bit words, zrow = zhi * 2^16 + zfrac and
-     * gy16 = gyq * 2^16 + gyf (modulo 2^48; fractions below 2^16), where
-     * every span's depths are proven to lie in [1, 2^32 - 2] */
+    int scan;                    /* a narrow box: each row's span found by stepping across it */
     int z32;
-    uint32_t zhi, zfrac, gyq, gyf;
-    int32_t c0, kmax, row, last; /* box column, last column less c0, next row, last row */
     int shade, src, depth;       /* the span loop: raster_fast.h */
+    int64_t zrow, gy16;          /* depth plane at (c0, row), Q32.16 */
+    struct fedge fe[3];          /* (row bounds by division: scan == 0) */
+    struct ras_fast_tri ftc;     /* the triangle's description, where T.ft points once kept */
+    struct ftri T;
 };
 typedef char ras_fast_state_fits[sizeof(struct fstate) <= sizeof(struct ras_fast_state) ? 1 : -1];
 

@@ -254,7 +254,7 @@ static struct ras_range pv_live(struct ras_ctx *rc, const struct ras_instance *i
      * made, nor anything else where no lighting is kept */
     const int32_t L = (d1x < 0 ? -d1x : d1x) + (d1y < 0 ? -d1y : d1y) + (d2x < 0 ? -d2x : d2x) +
                       (d2y < 0 ? -d2y : d2y);
-    const int64_t margin = area - 2 * (int64_t)L - 24;
+    const int64_t margin = ras_front_margin(&rc->def.front, area, L);
     const int known = (ri->vlit || !rc->def.tri_shade) &&
                                 (margin > fbound || ras_front_known(&rc->def.front, margin, pa->iz, pb->iz, pc->iz));
     if (!(known && !ri->vlit && !rc->def.tri_shade ? ras_tri_flag(rc, tb + k, RAS_TRI_LIVE | RAS_TRI_FRONT)
@@ -300,8 +300,8 @@ static struct ras_trows pv_loop_live(const struct tri_loop *L, uint32_t k, const
     const int32_t d1x = pb->sx - pa->sx, d1y = yb - ya, d2x = pc->sx - pa->sx, d2y = yc - ya;
     const int32_t Ls = (d1x < 0 ? -d1x : d1x) + (d1y < 0 ? -d1y : d1y) + (d2x < 0 ? -d2x : d2x) +
                        (d2y < 0 ? -d2y : d2y);
-    const int64_t margin = area - 2 * (int64_t)Ls - 24;
     struct ras_ctx *rc = L->rc;
+    const int64_t margin = ras_front_margin(&rc->def.front, area, Ls);
     if (L->plain) {
         if (margin > L->fbound || ras_front_known(&rc->def.front, margin, pa->iz, pb->iz, pc->iz)) {
             if (L->flags) L->flags[k] = (uint8_t)(RAS_TRI_LIVE | RAS_TRI_FRONT);
@@ -398,7 +398,7 @@ static void instance_triangles(struct ras_ctx *rc, uint16_t i, uint32_t k0, uint
      * where every one of them passes its iz_min: a margin above it is one
      * above every triangle's own bound (INT64_MAX: none) */
     int64_t fbound = INT64_MAX;
-    if (FW_FEATURE_RAS_DEFAULT && rc->def.pv && rc->def.front.g && ri->visible) {
+    if (FW_FEATURE_RAS_DEFAULT && rc->def.pv && rc->def.front.g1 && ri->visible) {
         const struct ras_pv *pv = rc->def.pv + ri->vbase;
         num lo = NUM_MAX, hi = 0;
         for (uint32_t v = 0; v < m->nverts; v++)
@@ -406,7 +406,7 @@ static void instance_triangles(struct ras_ctx *rc, uint16_t i, uint32_t k0, uint
                 if (pv[v].iz < lo) lo = pv[v].iz;
                 if (pv[v].iz > hi) hi = pv[v].iz;
             }
-        const uint64_t b = lo <= hi && lo >= rc->def.front.iz_min ? ras_front_bound(&rc->def.front, hi, hi) : 0;
+        const uint64_t b = lo <= hi && lo >= rc->def.front.iz_min ? ras_front_bound(&rc->def.front, hi, hi, hi) : 0;
         if (b) fbound = (int64_t)b;
     }
     if (FW_FEATURE_RAS_DEFAULT && rc->def.pv && ri->visible && !(FW_FEATURE_RAS_BOOK && (rc->book || rc->s->ras.wireframe))) {

@@ -228,9 +228,45 @@ struct tri_loop {
     int32_t fbound;
     uint8_t *flags;          /* the instance's flag bytes, NULL: none kept */
     int part, plain, bins;   /* plain: no lighting kept (!vlit, no tri_shade) */
+    int cull;                /* back faces culled */
     int32_t sb, half, hmax;  /* sub-pixel bits, half a pixel in them, the last row */
     uint32_t rshift;         /* ras_ctx.row_shift */
 };
+
+/* The camera-space facing test of triangle t (tri_facts: ras_facing_wide
+ * of its first corner and ras_face_normal_wide of its corners) in a pass
+ * that culls back faces: 1 when its value f > 0 (a front face, live), 0
+ * when not (a back face or degenerate: culled). The same f: the normal's
+ * products in 32 bits where every edge component lies in [-2^15, 2^15)
+ * (|p| <= 2^30, and floor((p + 2^(F-1)) / 2^F) is num_mul_round's, with
+ * nothing for wnum_sub to clamp), num_mul_wide's otherwise. */
+static int cam_front(struct ras_ctx *rc, const struct tri_loop *L, const struct ras_triangle *t)
+{
+    struct ras_vcache *vc = L->part ? rc->def.vcache1 : rc->def.vcache;
+    const vec3 a = ras_cam_vertex(rc, L->in, L->ri, L->m, t->v[0], vc);
+    const vec3 b = ras_cam_vertex(rc, L->in, L->ri, L->m, t->v[1], vc);
+    const vec3 c = ras_cam_vertex(rc, L->in, L->ri, L->m, t->v[2], vc);
+    const vec3 e1 = v3_sub(b, a), e2 = v3_sub(c, a);
+    wnum nx, ny, nz;
+#if NUM_MODE == NUM_MODE_FIXED
+    if ((((uint32_t)e1.x + 0x8000u) | ((uint32_t)e1.y + 0x8000u) | ((uint32_t)e1.z + 0x8000u) |
+         ((uint32_t)e2.x + 0x8000u) | ((uint32_t)e2.y + 0x8000u) | ((uint32_t)e2.z + 0x8000u)) < 0x10000u) {
+        const int32_t h = (int32_t)1 << (NUM_FRAC - 1);
+        nx = (wnum)((e1.y * e2.z + h) >> NUM_FRAC) - (wnum)((e1.z * e2.y + h) >> NUM_FRAC);
+        ny = (wnum)((e1.z * e2.x + h) >> NUM_FRAC) - (wnum)((e1.x * e2.z + h) >> NUM_FRAC);
+        nz = (wnum)((e1.x * e2.y + h) >> NUM_FRAC) - (wnum)((e1.y * e2.x + h) >> NUM_FRAC);
+    } else
+#endif
+    {
+        nx = wnum_sub(num_mul_wide(e1.y, e2.z), num_mul_wide(e1.z, e2.y));
+        ny = wnum_sub(num_mul_wide(e1.z, e2.x), num_mul_wide(e1.x, e2.z));
+        nz = wnum_sub(num_mul_wide(e1.x, e2.y), num_mul_wide(e1.y, e2.x));
+    }
+    wnum f = wnum_mul(wnum_from_num(num_neg(a.x)), nx);
+    f = wnum_add(f, wnum_mul(wnum_from_num(num_neg(a.y)), ny));
+    f = wnum_add(f, wnum_mul(wnum_from_num(num_neg(a.z)), nz));
+    return f > 0;
+}
 
 /* The rest of a triangle k of three projected corners pa, pb, pc of
  * doubled area `area` > 0 on screen (at most INT32_MAX: a larger one's
@@ -261,14 +297,27 @@ static struct ras_trows tri_live(const struct tri_loop *L, uint32_t k, const str
     /* one whose area is clear of every rounding is a front face by the
      * camera-space test too (raster_num.h): that test is not made, nor
      * anything else where no lighting is kept */
+    /* (one it leaves unknown in a culling pass takes cam_front: tri_facts'
+     * decision without its call) */
     if (L->plain) {
-        if (margin > L->fbound || ras_front_known(&rc->def.front, margin, pa->iz, pb->iz, pc->iz)) {
+        if (margin > L->fbound || ras_front_known(&rc->def.front, margin, pa->iz, pb->iz, pc->iz) ||
+            (L->cull && cam_front(rc, L, &L->m->tris[k]))) {
             if (L->flags) L->flags[k] = (uint8_t)(RAS_TRI_LIVE | RAS_TRI_FRONT);
+        } else if (L->cull) {
+            if (L->flags) L->flags[k] = 0;
+            return none;
         } else if (!ras_tri_cache(rc, L->in, L->ri, L->m, &L->m->tris[k], L->ri->tbase + k, L->part, 0))
             return none;
     } else {
-        const int known = L->ri->vlit && (margin > L->fbound ||
-                                          ras_front_known(&rc->def.front, margin, pa->iz, pb->iz, pc->iz));
+        int known = L->ri->vlit && (margin > L->fbound ||
+                                    ras_front_known(&rc->def.front, margin, pa->iz, pb->iz, pc->iz));
+        if (L->ri->vlit && !known && L->cull) {
+            if (!cam_front(rc, L, &L->m->tris[k])) {
+                if (L->flags) L->flags[k] = 0;
+                return none;
+            }
+            known = 1;
+        }
         if (!ras_tri_cache(rc, L->in, L->ri, L->m, &L->m->tris[k], L->ri->tbase + k, L->part, known))
             return none;
     }
@@ -379,6 +428,7 @@ static void instance_triangles(struct ras_ctx *rc, uint16_t i, uint32_t k0, uint
         tl.flags = flags;
         tl.part = part;
         tl.plain = !ri->vlit && !rc->def.tri_shade;
+        tl.cull = cull;
         tl.bins = rc->bins.on;
         tl.sb = rc->def.sub_bits;
         tl.half = (int32_t)1 << (tl.sb - 1);

@@ -42,21 +42,6 @@ static struct ras_range sub_rows(const struct ras_ctx *rc, int32_t lo, int32_t h
 static int32_t min3(int32_t a, int32_t b, int32_t c) { int32_t m = a < b ? a : b; return m < c ? m : c; }
 static int32_t max3(int32_t a, int32_t b, int32_t c) { int32_t m = a > b ? a : b; return m > c ? m : c; }
 
-/* The rows whose pixel centres lie within sub-pixel rows lo..hi (the
- * only rows a triangle of that vertical extent can cover); none when no
- * centre does. */
-static struct ras_range centre_rows(const struct ras_ctx *rc, int32_t lo, int32_t hi)
-{
-    const int sb = rc->def.sub_bits;
-    const int32_t half = (int32_t)1 << (sb - 1), one = (int32_t)1 << sb;
-    int32_t r0 = (lo - half + one - 1) >> sb, r1 = (hi - half) >> sb;   /* ceil, floor */
-    if (r0 < 0) r0 = 0;
-    if (r1 > rc->h - 1) r1 = rc->h - 1;
-    if (r0 > r1) return no_rows();
-    struct ras_range r = { (int16_t)r0, (int16_t)r1 };
-    return r;
-}
-
 static struct ras_range default_tri_rows(const struct ras_ctx *rc, vec3 a, vec3 b, vec3 c)
 {
     struct ras_cv in[3], out[RAS_CLIP_MAX];
@@ -240,62 +225,68 @@ static inline int64_t pv_area(const struct ras_pv *pa, const struct ras_pv *pb, 
                : num_smul32(d1x, d2y) - num_smul32(d1y, d2x);
 }
 
-/* The rest of instance_triangle for triangle k of three projected corners
- * pa, pb, pc of doubled area `area` on screen (not a culled back face): its
- * rows, its facing where lighting needs it, and its count. (Out of line:
- * the triangles' loop keeps its registers for the culled ones.) */
-#if defined(__GNUC__) || defined(__clang__)
-__attribute__((noinline))
-#endif
-static struct ras_range pv_live(struct ras_ctx *rc, const struct ras_instance *in, const struct ras_model *m,
-                                const struct ras_inst *ri, uint32_t k, int part, int64_t fbound,
-                                const struct ras_pv *pa, const struct ras_pv *pb, const struct ras_pv *pc, int64_t area)
-{
-    const struct ras_triangle *t = &m->tris[k];
-    const uint32_t tb = ri->tbase;
-    const int32_t d1x = pb->sx - pa->sx, d1y = pb->sy - pa->sy, d2x = pc->sx - pa->sx, d2y = pc->sy - pa->sy;
-    const int32_t lo = min3(pa->sy, pb->sy, pc->sy), hi = max3(pa->sy, pb->sy, pc->sy);
-    const struct ras_range r = sub_rows(rc, lo, hi);
-    if (r.r0 > r.r1) return r;
-    /* one whose area is clear of every rounding is a front face by
-     * the camera-space test too (raster_num.h): that test is not
-     * made, nor anything else where no lighting is kept */
-    const int32_t L = (d1x < 0 ? -d1x : d1x) + (d1y < 0 ? -d1y : d1y) + (d2x < 0 ? -d2x : d2x) +
-                      (d2y < 0 ? -d2y : d2y);
-    const int64_t margin = area - 2 * (int64_t)L - 24;
-    const int known = (ri->vlit || !rc->def.tri_shade) &&
-                                (margin > fbound || ras_front_known(&rc->def.front, margin, pa->iz, pb->iz, pc->iz));
-    if (!(known && !ri->vlit && !rc->def.tri_shade ? ras_tri_flag(rc, tb + k, RAS_TRI_LIVE | RAS_TRI_FRONT)
-                                                    : ras_tri_cache(rc, in, ri, m, t, tb + k, part, known)))
-        return no_rows();
-    rc->part_drawn[part]++;
-    /* the strips visit it only on the rows of the pixel centres it spans */
-    return rc->bins.on ? centre_rows(rc, lo, hi) : r;
-}
-
-/* What pv_loop_live reads of an instance's triangles' loop, made once per
- * loop: the context, the instance, the front-face bound, the part, the
- * rows' constants and whether lighting is kept. */
+/* What tri_live reads of an instance's triangles' loop, made once per
+ * loop: the context, the instance, the front-face bound (at most
+ * INT32_MAX), the part, the rows' constants and whether lighting is kept. */
 struct tri_loop {
     struct ras_ctx *rc;
     const struct ras_instance *in;
     const struct ras_model *m;
     const struct ras_inst *ri;
-    int64_t fbound;
+    int32_t fbound;
     uint8_t *flags;          /* the instance's flag bytes, NULL: none kept */
     int part, plain, bins;   /* plain: no lighting kept (!vlit, no tri_shade) */
+    int cull;                /* back faces culled */
     int32_t sb, half, hmax;  /* sub-pixel bits, half a pixel in them, the last row */
     uint32_t rshift;         /* ras_ctx.row_shift */
 };
 
-/* pv_live's rows packed (ras_trows_pack) for the loop of instance_triangles:
- * the same decisions, counts and flags, with the loop's constants read from
- * L (fewer arguments, none of rc's fields read again). */
+/* The camera-space facing test of triangle t (tri_facts: ras_facing_wide
+ * of its first corner and ras_face_normal_wide of its corners) in a pass
+ * that culls back faces: 1 when its value f > 0 (a front face, live), 0
+ * when not (a back face or degenerate: culled). The same f: the normal's
+ * products in 32 bits where every edge component lies in [-2^15, 2^15)
+ * (|p| <= 2^30, and floor((p + 2^(F-1)) / 2^F) is num_mul_round's, with
+ * nothing for wnum_sub to clamp), num_mul_wide's otherwise. */
+static int cam_front(struct ras_ctx *rc, const struct tri_loop *L, const struct ras_triangle *t)
+{
+    struct ras_vcache *vc = L->part ? rc->def.vcache1 : rc->def.vcache;
+    const vec3 a = ras_cam_vertex(rc, L->in, L->ri, L->m, t->v[0], vc);
+    const vec3 b = ras_cam_vertex(rc, L->in, L->ri, L->m, t->v[1], vc);
+    const vec3 c = ras_cam_vertex(rc, L->in, L->ri, L->m, t->v[2], vc);
+    const vec3 e1 = v3_sub(b, a), e2 = v3_sub(c, a);
+    wnum nx, ny, nz;
+#if NUM_MODE == NUM_MODE_FIXED
+    if ((((uint32_t)e1.x + 0x8000u) | ((uint32_t)e1.y + 0x8000u) | ((uint32_t)e1.z + 0x8000u) |
+         ((uint32_t)e2.x + 0x8000u) | ((uint32_t)e2.y + 0x8000u) | ((uint32_t)e2.z + 0x8000u)) < 0x10000u) {
+        const int32_t h = (int32_t)1 << (NUM_FRAC - 1);
+        nx = (wnum)((e1.y * e2.z + h) >> NUM_FRAC) - (wnum)((e1.z * e2.y + h) >> NUM_FRAC);
+        ny = (wnum)((e1.z * e2.x + h) >> NUM_FRAC) - (wnum)((e1.x * e2.z + h) >> NUM_FRAC);
+        nz = (wnum)((e1.x * e2.y + h) >> NUM_FRAC) - (wnum)((e1.y * e2.x + h) >> NUM_FRAC);
+    } else
+#endif
+    {
+        nx = wnum_sub(num_mul_wide(e1.y, e2.z), num_mul_wide(e1.z, e2.y));
+        ny = wnum_sub(num_mul_wide(e1.z, e2.x), num_mul_wide(e1.x, e2.z));
+        nz = wnum_sub(num_mul_wide(e1.x, e2.y), num_mul_wide(e1.y, e2.x));
+    }
+    wnum f = wnum_mul(wnum_from_num(num_neg(a.x)), nx);
+    f = wnum_add(f, wnum_mul(wnum_from_num(num_neg(a.y)), ny));
+    f = wnum_add(f, wnum_mul(wnum_from_num(num_neg(a.z)), nz));
+    return f > 0;
+}
+
+/* The rest of a triangle k of three projected corners pa, pb, pc of
+ * doubled area `area` > 0 on screen (at most INT32_MAX: a larger one's
+ * taken as that, which only leaves its facing to the camera-space test),
+ * not a culled back face: its rows packed (ras_trows_pack), its facing
+ * where lighting needs it, its flags and its count. (Out of line: the
+ * triangles' loop keeps its registers for the culled ones.) */
 #if defined(__GNUC__) || defined(__clang__)
 __attribute__((noinline))
 #endif
-static struct ras_trows pv_loop_live(const struct tri_loop *L, uint32_t k, const struct ras_pv *pa,
-                                     const struct ras_pv *pb, const struct ras_pv *pc, int64_t area)
+static struct ras_trows tri_live(const struct tri_loop *L, uint32_t k, const struct ras_pv *pa,
+                                 const struct ras_pv *pb, const struct ras_pv *pc, int32_t area)
 {
     const struct ras_trows none = { 1, 0 };
     const int32_t ya = pa->sy, yb = pb->sy, yc = pc->sy, sb = L->sb;
@@ -305,25 +296,43 @@ static struct ras_trows pv_loop_live(const struct tri_loop *L, uint32_t k, const
     if (r0 < 0) r0 = 0;
     if (r1 > L->hmax) r1 = L->hmax;
     if (r0 > r1) return none;
-    const int32_t d1x = pb->sx - pa->sx, d1y = yb - ya, d2x = pc->sx - pa->sx, d2y = yc - ya;
+    const int32_t xa = pa->sx, d1x = pb->sx - xa, d1y = yb - ya, d2x = pc->sx - xa, d2y = yc - ya;
     const int32_t Ls = (d1x < 0 ? -d1x : d1x) + (d1y < 0 ? -d1y : d1y) + (d2x < 0 ? -d2x : d2x) +
                        (d2y < 0 ? -d2y : d2y);
-    const int64_t margin = area - 2 * (int64_t)Ls - 24;
     struct ras_ctx *rc = L->rc;
+    /* (|d| < 2^16: Ls < 2^18, no overflow) */
+    const int32_t margin = (int32_t)ras_front_margin(&rc->def.front, area, Ls);
+    /* one whose area is clear of every rounding is a front face by the
+     * camera-space test too (raster_num.h): that test is not made, nor
+     * anything else where no lighting is kept */
+    /* (one it leaves unknown in a culling pass takes cam_front: tri_facts'
+     * decision without its call) */
     if (L->plain) {
-        if (margin > L->fbound || ras_front_known(&rc->def.front, margin, pa->iz, pb->iz, pc->iz)) {
+        if (margin > L->fbound || ras_front_known(&rc->def.front, margin, pa->iz, pb->iz, pc->iz) ||
+            (L->cull && cam_front(rc, L, &L->m->tris[k]))) {
             if (L->flags) L->flags[k] = (uint8_t)(RAS_TRI_LIVE | RAS_TRI_FRONT);
+        } else if (L->cull) {
+            if (L->flags) L->flags[k] = 0;
+            return none;
         } else if (!ras_tri_cache(rc, L->in, L->ri, L->m, &L->m->tris[k], L->ri->tbase + k, L->part, 0))
             return none;
     } else {
-        const int known = L->ri->vlit && (margin > L->fbound ||
-                                          ras_front_known(&rc->def.front, margin, pa->iz, pb->iz, pc->iz));
+        int known = L->ri->vlit && (margin > L->fbound ||
+                                    ras_front_known(&rc->def.front, margin, pa->iz, pb->iz, pc->iz));
+        if (L->ri->vlit && !known && L->cull) {
+            if (!cam_front(rc, L, &L->m->tris[k])) {
+                if (L->flags) L->flags[k] = 0;
+                return none;
+            }
+            known = 1;
+        }
         if (!ras_tri_cache(rc, L->in, L->ri, L->m, &L->m->tris[k], L->ri->tbase + k, L->part, known))
             return none;
     }
     rc->part_drawn[L->part]++;
     if (L->bins) {
-        /* centre_rows: the rows of the pixel centres it spans */
+        /* the strips visit it only on the rows whose pixel centres lie
+         * within lo..hi (none when no centre does) */
         r0 = (lo + L->half - 1) >> sb;
         r1 = (hi - L->half) >> sb;
         if (r0 < 0) r0 = 0;
@@ -343,7 +352,7 @@ static struct ras_trows pv_loop_live(const struct tri_loop *L, uint32_t k, const
 __attribute__((always_inline))
 #endif
 static inline struct ras_range instance_triangle(struct ras_ctx *rc, const struct ras_instance *in, const struct ras_model *m,
-                                          const struct ras_inst *ri, uint32_t k, int part, int64_t fbound)
+                                          const struct ras_inst *ri, uint32_t k, int part)
 {
     const struct ras_options *o = &rc->s->ras;
     const uint32_t vb = ri->vbase, tb = ri->tbase;
@@ -367,18 +376,8 @@ static inline struct ras_range instance_triangle(struct ras_ctx *rc, const struc
             return r;
         rc->part_drawn[part]++;
     } else if (FW_FEATURE_RAS_DEFAULT) {
-        const struct ras_pv *pa = &rc->def.pv[vb + t->v[0]], *pb = &rc->def.pv[vb + t->v[1]], *pc = &rc->def.pv[vb + t->v[2]];
-        if (ras_pv_in(pa) && ras_pv_in(pb) && ras_pv_in(pc)) {
-            const int64_t area = pv_area(pa, pb, pc);
-            /* not positive: whichever way the triangle faces, it draws
-             * nothing (a back face is culled, a front face covers no
-             * pixel), so its facing need not be computed */
-            if (o->backface_cull && area <= 0) {
-                (void)ras_tri_flag(rc, tb + k, 0);
-                return r;
-            }
-            return pv_live(rc, in, m, ri, k, part, fbound, pa, pb, pc, area);
-        }
+        /* (a triangle of three projected corners takes tri_live, from
+         * instance_triangles' loop: this is the clipper's) */
         struct ras_vcache *vc = part ? rc->def.vcache1 : rc->def.vcache;
         r = default_tri_rows(rc, ras_cam_vertex(rc, in, ri, m, t->v[0], vc), ras_cam_vertex(rc, in, ri, m, t->v[1], vc),
                              ras_cam_vertex(rc, in, ri, m, t->v[2], vc));
@@ -406,7 +405,7 @@ static void instance_triangles(struct ras_ctx *rc, uint16_t i, uint32_t k0, uint
      * where every one of them passes its iz_min: a margin above it is one
      * above every triangle's own bound (INT64_MAX: none) */
     int64_t fbound = INT64_MAX;
-    if (FW_FEATURE_RAS_DEFAULT && rc->def.pv && rc->def.front.g && ri->visible) {
+    if (FW_FEATURE_RAS_DEFAULT && rc->def.pv && rc->def.front.g1 && ri->visible) {
         const struct ras_pv *pv = rc->def.pv + ri->vbase;
         num lo = NUM_MAX, hi = 0;
         for (uint32_t v = 0; v < m->nverts; v++)
@@ -414,7 +413,7 @@ static void instance_triangles(struct ras_ctx *rc, uint16_t i, uint32_t k0, uint
                 if (pv[v].iz < lo) lo = pv[v].iz;
                 if (pv[v].iz > hi) hi = pv[v].iz;
             }
-        const uint64_t b = lo <= hi && lo >= rc->def.front.iz_min ? ras_front_bound(&rc->def.front, hi, hi) : 0;
+        const uint64_t b = lo <= hi && lo >= rc->def.front.iz_min ? ras_front_bound(&rc->def.front, hi, hi, hi) : 0;
         if (b) fbound = (int64_t)b;
     }
     if (FW_FEATURE_RAS_DEFAULT && rc->def.pv && ri->visible && !(FW_FEATURE_RAS_BOOK && (rc->book || rc->s->ras.wireframe))) {
@@ -433,15 +432,23 @@ static void instance_triangles(struct ras_ctx *rc, uint16_t i, uint32_t k0, uint
         tl.in = in;
         tl.m = m;
         tl.ri = ri;
-        tl.fbound = fbound;
+        tl.fbound = fbound > INT32_MAX ? INT32_MAX : (int32_t)fbound;
         tl.flags = flags;
         tl.part = part;
         tl.plain = !ri->vlit && !rc->def.tri_shade;
+        tl.cull = cull;
         tl.bins = rc->bins.on;
         tl.sb = rc->def.sub_bits;
         tl.half = (int32_t)1 << (tl.sb - 1);
         tl.hmax = (int32_t)rc->h - 1;
         tl.rshift = rc->row_shift;
+        /* every projected corner lies within two pixels of the viewport
+         * (raster_int.h), so on a render of at most 2^14 sub-pixel units
+         * less 32 pixels a side their differences lie within +-2^14 and
+         * the doubled area takes 32-bit products (pv_area's test, made
+         * once) */
+        const uint32_t side = rc->w > rc->h ? rc->w : rc->h;
+        const int small = ((side + 32u) << tl.sb) <= 0x4000u;
         for (uint32_t k = k0; k < k1; k++) {
             const struct ras_triangle *t = &tris[k];
             const uint32_t a = t->v[0], b = t->v[1], c = t->v[2];
@@ -450,22 +457,33 @@ static void instance_triangles(struct ras_ctx *rc, uint16_t i, uint32_t k0, uint
                 continue;
             }
             const struct ras_pv *pa = &pv[a], *pb = &pv[b], *pc = &pv[c];
-            if (!(ras_pv_in(pa) && ras_pv_in(pb) && ras_pv_in(pc))) {
-                rk[k] = ras_trows_pack(rc, instance_triangle(rc, in, m, ri, k, part, fbound));
+            const int32_t xa = pa->sx, xb = pb->sx, xc = pc->sx;
+            if (xa == RAS_PV_OUT || xb == RAS_PV_OUT || xc == RAS_PV_OUT) {
+                rk[k] = ras_trows_pack(rc, instance_triangle(rc, in, m, ri, k, part));
                 continue;
             }
-            const int64_t area = pv_area(pa, pb, pc);
-            if (cull && area <= 0) {
-                if (flags) flags[k] = 0;
-                rk[k] = none;
-                continue;
+            int32_t area32;
+            if (small) {
+                const int32_t ya = pa->sy;
+                area32 = (xb - xa) * (pc->sy - ya) - (pb->sy - ya) * (xc - xa);
+            } else {
+                const int64_t area = pv_area(pa, pb, pc);
+                area32 = area > INT32_MAX ? INT32_MAX : area < 0 ? -1 : (int32_t)area;
             }
-            rk[k] = pv_loop_live(&tl, k, pa, pb, pc, area);
+            if (area32 <= 0) {
+                if (cull) {
+                    if (flags) flags[k] = 0;
+                    rk[k] = none;
+                    continue;
+                }
+                area32 = 0;   /* (no margin: the camera-space test decides) */
+            }
+            rk[k] = tri_live(&tl, k, pa, pb, pc, area32);
         }
         return;
     }
     for (uint32_t k = k0; k < k1; k++)
-        rows[tb + k] = ras_trows_pack(rc, instance_triangle(rc, in, m, ri, k, part, fbound));
+        rows[tb + k] = ras_trows_pack(rc, instance_triangle(rc, in, m, ri, k, part));
 }
 
 /* The live triangles of the frame sorted by the bucket of their first row

@@ -752,31 +752,39 @@ DS_FUNC(div_subs_v6m_uh, DS_NUM_UH)
  * D = A_e z_a z_b z_c / (S^2 u^2), A_e the exact projection's doubled area
  * on screen (S = 2^sub_bits sub-pixel units a pixel, u = unproj), so
  * D > 0 when A_e > 0. Its computed form rounds each of the normal's six
- * products and the three products with a to within ulp/2 = 2^-F/2, with no
- * saturation while the coordinates stay small (iz_min, below), so
- * |f - D| <= ulp (2 (|a.x| + |a.y| + z_a) + 3); with |a.x| + |a.y| <= z_a
- * (W + H + 16) / (2u) (the side planes, two pixels out, and their roundings) the screen area
- * that error stands for is at most
- *   S^2 ulp (2u^2 + u (W + H + 16) + 3u^2 / near) / (z_b z_c) <= g 2^-2F (iz_b + 1)(iz_c + 1).
- * The snapped corners lie within e = 1/2 + S ulp (1/(2 near) + 1) <= 1
- * unit of the exact projection (ras_project_sub), which moves the area by
- * at most 2 e L + 24 e^2. So A > 2L + 24 + that bound gives A_e > the
- * error's area, D > |f - D| and f > 0. */
+ * products to within ulp/2 = 2^-F/2 (each component within ulp) and each
+ * of the three products with a to within ulp/2, with no saturation while
+ * the coordinates stay small (iz_min, below), so
+ * |f - D| <= ulp (|a.x| + |a.y| + z_a + 3/2); with |a.x| + |a.y| <= z_a
+ * (W + H + 16) / (2u) (the side planes, two pixels out, and their
+ * roundings) the screen area that error stands for, |f - D| S^2 u^2 /
+ * (z_a z_b z_c), is at most
+ *   S^2 ulp (u^2 + u (W + H + 16) / 2) / (z_b z_c) + 3/2 S^2 ulp u^2 / (z_a z_b z_c)
+ *   <= (g1 + g2 (iz_a + 1) 2^-F) (iz_b + 1)(iz_c + 1) 2^-2F
+ * (iz in num's bits, within 1 of 2^2F / z). The snapped corners lie within
+ * e = 1/2 + h of the exact projection (ras_project_sub: its rounding to
+ * the sub-pixel grid and h = S ulp (1/(2 near) + 1), the quotient's), which
+ * moves the area by at most 2 e L + 8 e^2 (each difference moves by 2e):
+ * with 2h <= 2^-ks, ks >= 3, that is below L + (L >> ks) + 1 + 3. So A >
+ * L + (L >> ks) + 4 + that bound gives A_e > the error's area, D > |f - D|
+ * and f > 0. */
 void ras_front_init(struct ras_front *fb, num unproj, num near_z, int32_t w, int32_t h, int sub_bits)
 {
     const int F = NUM_FRAC;
-    fb->g = 0;
+    fb->g1 = fb->g2 = 0;
     fb->iz_min = NUM_MAX;
-    fb->frac = F;
+    fb->ks = 0;
     if (F < 8 || unproj <= 0 || near_z <= 0 || sub_bits < 1 || sub_bits > 8) return;
     const uint64_t S = (uint64_t)1 << sub_bits, nr = (uint64_t)near_z, half = (uint64_t)1 << (F - 1);
     const uint64_t u = (uint64_t)(unproj >> F) + 1, wh = (uint64_t)w + (uint64_t)h + 16;
-    /* e <= 1: S (2^(F-1) / near + 1) <= 2^(F-1), in num's bits */
-    if (u > (1u << 16) || S * ((half + nr - 1) / nr + 1) > half) return;
-    const uint64_t t = 2 * u * u + u * wh + ((3 * u * u) << F) / nr + 1;
-    if (t > ((uint64_t)1 << 40)) return;
-    const uint64_t g = ((S * S * t) >> F) + 1;
-    if (g >= ((uint64_t)1 << 31)) return;
+    /* 2h = 2 S (2^(F-1) / near + 1) 2^-F <= 2^-ks, in num's bits */
+    const uint64_t hq = 2 * S * ((half + nr - 1) / nr + 1);
+    int ks = 0;
+    while (ks < 16 && (hq << (ks + 1)) <= ((uint64_t)1 << F)) ks++;
+    if (u > (1u << 16) || ks < 3) return;
+    const uint64_t g1 = ((S * S * (u * u + (u * wh + 1) / 2)) >> F) + 1;
+    const uint64_t g2 = ((3 * S * S * u * u) >> (F + 1)) + 1;
+    if (g1 >= ((uint64_t)1 << 30) || g2 >= ((uint64_t)1 << 30)) return;
     /* coordinates below c = min(NUM_MAX / 4, 2^((55 + 2F) / 3)) in num's
      * bits: their differences do not saturate, nor do the test's wide
      * products (3 c (2 (2c)^2 2^-F) 2^-F < 2^60). |x|, |y|, z <= z (1 +
@@ -789,25 +797,32 @@ void ras_front_init(struct ras_front *fb, num unproj, num near_z, int32_t w, int
     const uint64_t izl = (((uint64_t)1 << (2 * F)) / zlim) + 2;
     if (izl > (uint64_t)NUM_MAX) return;
     fb->iz_min = (num)izl;
-    fb->g = (uint32_t)g;
+    fb->ks = ks;
+    fb->g1 = (uint32_t)g1;
+    fb->g2 = (uint32_t)g2;
 }
 
-uint64_t ras_front_bound(const struct ras_front *fb, num izb, num izc)
+uint64_t ras_front_bound(const struct ras_front *fb, num iza, num izb, num izc)
 {
-    if (fb->g == 0 || izb < fb->iz_min || izc < fb->iz_min) return 0;
-    /* g (iz_b + 1)(iz_c + 1) 2^-2F, rounded up (F = fb->frac = NUM_FRAC:
-     * shifts by a constant, and the product's high word tested first) */
+    if (fb->g1 == 0 || iza < fb->iz_min || izb < fb->iz_min || izc < fb->iz_min) return 0;
+    /* g = g1 + floor(g2 (iz_a + 1) 2^-F) + 1 (below 2^31 + 1 where the
+     * quotient is below 2^30),
+     * then g (iz_b + 1)(iz_c + 1) 2^-2F, rounded up (F = NUM_FRAC: shifts
+     * by a constant, and the product's high word tested first) */
+    const uint64_t q = num_umul32(fb->g2, (uint32_t)iza + 1u) >> NUM_FRAC;
+    if (q >> 30) return 0;
+    const uint32_t g = fb->g1 + (uint32_t)q + 1u;
     const uint64_t pp = num_umul32((uint32_t)izb + 1u, (uint32_t)izc + 1u);
     if ((uint32_t)(pp >> 32) >> (NUM_FRAC - 1)) return 0; /* p >= 2^31 */
     const uint32_t p = (uint32_t)(pp >> NUM_FRAC) + 1u;
     if (p >> 31) return 0;
-    return (num_umul32(p, fb->g) >> NUM_FRAC) + 1;
+    return (num_umul32(p, g) >> NUM_FRAC) + 1;
 }
 
 int ras_front_known(const struct ras_front *fb, int64_t margin, num iza, num izb, num izc)
 {
-    if (margin <= 0 || iza < fb->iz_min) return 0;
-    const uint64_t bound = ras_front_bound(fb, izb, izc);
+    if (margin <= 0) return 0;
+    const uint64_t bound = ras_front_bound(fb, iza, izb, izc);
     return bound != 0 && (uint64_t)margin > bound;
 }
 
@@ -962,14 +977,14 @@ uint32_t ras_depth32(num near_z, num z)
 void ras_front_init(struct ras_front *fb, num unproj, num near_z, int32_t w, int32_t h, int sub_bits)
 {
     (void)unproj; (void)near_z; (void)w; (void)h; (void)sub_bits;
-    fb->g = 0;
+    fb->g1 = fb->g2 = 0;
     fb->iz_min = 0;
-    fb->frac = 0;
+    fb->ks = 0;
 }
 
-uint64_t ras_front_bound(const struct ras_front *fb, num izb, num izc)
+uint64_t ras_front_bound(const struct ras_front *fb, num iza, num izb, num izc)
 {
-    (void)fb; (void)izb; (void)izc;
+    (void)fb; (void)iza; (void)izb; (void)izc;
     return 0;
 }
 

@@ -164,20 +164,27 @@ static inline int32_t ras_sub_pos(num f, int sb)
 
 /* A front face known from the screen: triangle a b c of three projected
  * corners (inside every plane, z >= near) whose doubled area on screen
- * A (sub-pixel units) exceeds 2L + 24 + g (iz_b + 1)(iz_c + 1) 2^-2F (L:
- * the sum of its edges' |dx| + |dy| on screen, iz 1/z in num's bits) is
- * one by the camera-space test too, whatever that test's roundings
- * (raster_num.c derives the bound). Fixed point only: g = 0 (never known)
- * in the floating modes, whose roundings are relative. */
-struct ras_front { uint32_t g; num iz_min; int frac; };
+ * A (sub-pixel units) exceeds L + (L >> ks) + 4 + g (iz_b + 1)(iz_c + 1)
+ * 2^-2F, g = g1 + floor(g2 (iz_a + 1) 2^-F) + 1 (L: the sum of its edges'
+ * |dx| + |dy| on screen, iz 1/z in num's bits, a the corner the
+ * camera-space test is taken at) is one by that test too, whatever its
+ * roundings (raster_num.c derives the bound). Fixed point only: g1 = 0
+ * (never known) in the floating modes, whose roundings are relative. */
+struct ras_front { uint32_t g1, g2; num iz_min; int ks; };
 void ras_front_init(struct ras_front *fb, num unproj, num near_z, int32_t w, int32_t h, int sub_bits);
-/* 1 when margin = A - 2L - 24 (> 0) passes the bound for corners at 1/z
- * iza, izb, izc; 0 when unknown. */
+/* The margin the bound is tested against: A - L - (L >> ks) - 4, for
+ * doubled area A and sum L >= 0. */
+static inline int64_t ras_front_margin(const struct ras_front *fb, int64_t area, int32_t L)
+{
+    return area - L - (L >> fb->ks) - 4;
+}
+/* 1 when margin (ras_front_margin, > 0) passes the bound for corners at
+ * 1/z iza, izb, izc; 0 when unknown. */
 int ras_front_known(const struct ras_front *fb, int64_t margin, num iza, num izb, num izc);
 /* The bound ras_front_known tests the margin against for corners at 1/z
- * izb, izc (> 0, non-decreasing in each, where each is at least iz_min);
- * 0: none (never known). */
-uint64_t ras_front_bound(const struct ras_front *fb, num izb, num izc);
+ * iza, izb, izc (> 0, non-decreasing in each, where each is at least
+ * iz_min); 0: none (never known). */
+uint64_t ras_front_bound(const struct ras_front *fb, num iza, num izb, num izc);
 
 /* round(a * scale) as an integer (halves away from zero), saturated to
  * +-(2^31 - 1): a num turned into the integer formats of the fast span

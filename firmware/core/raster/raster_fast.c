@@ -1007,13 +1007,13 @@ RAS_HOT __attribute__((noinline)) static void fast_scan_spans(struct fscan *P)
         : "r1", "r2", "r3", "r4", "r5", "r6", "r7", "r8", "r9", "r10", "r11", "cc", "memory");
 }
 
-#if FW_FEATURE_SPAN_RGB_CONST
-/* ARMv6-M: the rows of a scanned triangle of Gouraud levels with 16-bit
- * depth entries (span_rgb_const_z2's operations row after row in one
- * loop, fast_scan_spans' spans in the array: the same bits), without a
- * call a span. A span longer than a segment hands back to the caller (the
- * spans pointer at its row). fast_rgb_rows' block (in/out where written
- * back):
+#if FW_FEATURE_SPAN_RGB_CONST || FW_FEATURE_SPAN_LI_TEX
+/* ARMv6-M: the rows of a scanned triangle with 16-bit depth entries (a
+ * span loop's operations row after row in one loop, fast_scan_spans'
+ * spans in the array: the same bits), without a call a span: Gouraud
+ * levels (fast_rgb_rows) and a nearest texture lit by Gouraud intensity
+ * (fast_tex_rows). A span longer than a segment hands back to the caller
+ * (the spans pointer at its row). Their block (in/out where written back):
  *   0, 4       sp, spe   (in/out) the next row's span (lo | n << 8, 0: none)
  *                        and the end of the array
  *   8, 12      zq, zf    (in/out) the plane at (c0, the row), as
@@ -1032,12 +1032,14 @@ RAS_HOT __attribute__((noinline)) static void fast_scan_spans(struct fscan *P)
  *   84         rcp       rcp_tab's address less 512 bytes
  *   88         inv       fast_inv_tab
  *   92..104    (scratch: the span's pixels left, its first point's levels)
+ *   108        tex       (fast_tex_rows) the texels, RGB565
+ *   112, 116   um, vm    the masks of a texel's byte offset across and down
+ *   120        vs        the shift of v: the texture's width's log2 + 1
  * Registers: the block at [sp]; in a span r8 the pixel, r9 z, r10, r11 the
- * edge values; in its loop r0 the pixel, r1-r3 the levels, r4 z, r5 zoff,
- * r8 the span's end, r9 dz, r10-r12 the levels' steps. The point's
- * subroutine (persp_at for the three levels) takes r1, r2 the edge values
- * and r7 the constants, gives the levels in r4-r6 and uses r0-r3. */
-struct frgb {
+ * edge values. The point's subroutine (persp_at for three attributes)
+ * takes r1, r2 the edge values and r7 the constants, gives the attributes
+ * in r4-r6 and uses r0-r3. */
+struct frows {
     const uint16_t *sp, *spe;
     uint32_t zq, zf;
     int32_t w1, w2;
@@ -1052,34 +1054,73 @@ struct frgb {
     uint32_t total, rcp;
     const uint32_t *inv;
     int32_t scratch[4];
+    const uint8_t *tex;
+    uint32_t um, vm, vs;
 };
-typedef char frgb_layout[offsetof(struct frgb, prow) == 24 && offsetof(struct frgb, stride) == 44 &&
-                                 offsetof(struct frgb, dz) == 64 && offsetof(struct frgb, total) == 80 &&
-                                 offsetof(struct frgb, scratch) == 92 && offsetof(struct fpersp, area_t) == 12 &&
-                                 offsetof(struct fpersp, at) == 28 && sizeof(((struct fpersp *)0)->at[0]) == 16
-                             ? 1
-                             : -1];
+typedef char frows_layout[offsetof(struct frows, prow) == 24 && offsetof(struct frows, stride) == 44 &&
+                                  offsetof(struct frows, dz) == 64 && offsetof(struct frows, total) == 80 &&
+                                  offsetof(struct frows, scratch) == 92 && offsetof(struct frows, tex) == 108 &&
+                                  offsetof(struct frows, vs) == 120 && offsetof(struct fpersp, area_t) == 12 &&
+                                  offsetof(struct fpersp, at) == 28 && sizeof(((struct fpersp *)0)->at[0]) == 16
+                              ? 1
+                              : -1];
 
-RAS_HOT __attribute__((noinline)) static void fast_rgb_rows(struct frgb *P)
+/* (the pieces both row loops share: a row's span and its first pixel,
+ * the next row, the point's subroutine) */
+#define FROWS_SPAN \
+        /* a row: its span, or the next row */ \
+        "1:\n\t ldr r7, [sp]\n\t ldm r7!, {r0, r1}\n\t subs r7, #8\n\t cmp r0, r1\n\t bne 20f\n\t b 9f\n" \
+        "20:\n\t ldrh r1, [r0]\n\t lsrs r2, r1, #8\n\t bne 24f\n\t b 8f\n" \
+        "24:\n\t" \
+        "ldr r3, [r7, #76]\n\t cmp r2, r3\n\t ble 21f\n\t b 9f\n" \
+        "21:\n\t str r2, [r7, #92]\n\t ldr r3, [r7, #80]\n\t adds r3, r3, r2\n\t str r3, [r7, #80]\n\t" \
+        "uxtb r1, r1\n\t" \
+        /* the pixel, z = zq + lo gxq + ((zf + lo gxf) >> 16), the edge values */ \
+        "ldr r3, [r7, #24]\n\t lsls r0, r1, #1\n\t adds r3, r3, r0\n\t mov r8, r3\n\t" \
+        "ldr r4, [r7, #52]\n\t muls r4, r1, r4\n\t ldr r5, [r7, #12]\n\t adds r4, r4, r5\n\t lsrs r4, r4, #16\n\t" \
+        "ldr r5, [r7, #48]\n\t muls r5, r1, r5\n\t adds r4, r4, r5\n\t ldr r5, [r7, #8]\n\t adds r4, r4, r5\n\t mov r9, r4\n\t" \
+        "ldr r5, [r7, #56]\n\t muls r5, r1, r5\n\t ldr r6, [r7, #16]\n\t adds r5, r5, r6\n\t mov r10, r5\n\t" \
+        "ldr r6, [r7, #60]\n\t muls r6, r1, r6\n\t ldr r0, [r7, #20]\n\t adds r6, r6, r0\n\t mov r11, r6\n\t" \
+        "cmp r2, #2\n\t bgt 30f\n"
+#define FROWS_NEXT_ROW \
+        /* the next row: the plane, the edge values, the pixel */ \
+        "8:\n\t ldr r7, [sp]\n\t ldr r0, [r7, #0]\n\t adds r0, #2\n\t str r0, [r7, #0]\n\t" \
+        "adds r7, #8\n\t ldm r7!, {r0, r1, r2, r3, r4}\n\t ldm r7!, {r5, r6}\n\t adds r0, r0, r5\n\t adds r1, r1, r6\n\t" \
+        "ldm r7!, {r5, r6}\n\t adds r2, r2, r5\n\t adds r3, r3, r6\n\t ldm r7!, {r5}\n\t adds r4, r4, r5\n\t" \
+        "subs r7, #40\n\t stm r7!, {r0, r1, r2, r3, r4}\n\t b 1b\n"
+#define FROWS_POINT3 \
+        /* the point's levels: persp_at's operations */ \
+        "50:\n\t ldr r0, [r7, #0]\n\t lsrs r1, r0\n\t lsrs r2, r0\n\t ldr r0, [r7, #12]\n\t subs r0, r0, r1\n\t subs r0, r0, r2\n\t" \
+        "ldr r3, [r7, #16]\n\t muls r0, r3, r0\n\t ldr r3, [r7, #20]\n\t muls r1, r3, r1\n\t ldr r3, [r7, #24]\n\t muls r2, r3, r2\n\t" \
+        "adds r0, r0, r1\n\t adds r0, r0, r2\n\t ldr r3, [r7, #4]\n\t lsrs r0, r3\n\t beq 53f\n\t lsrs r1, r3\n\t lsrs r2, r3\n\t" \
+        "movs r3, #1\n\t lsls r3, r3, #14\n\t cmp r0, r3\n\t bhs 52f\n" \
+        "51:\n\t lsls r0, r0, #1\n\t lsls r1, r1, #1\n\t lsls r2, r2, #1\n\t cmp r0, r3\n\t blo 51b\n" \
+        /* rcp30 */ \
+        "52:\n\t lsrs r3, r0, #6\n\t lsls r3, r3, #1\n\t ldr r4, [sp]\n\t ldr r4, [r4, #84]\n\t ldrh r3, [r4, r3]\n\t" \
+        "movs r4, r3\n\t muls r4, r0, r4\n\t movs r5, #1\n\t lsls r5, r5, #30\n\t subs r5, r5, r4\n\t asrs r5, r5, #7\n\t" \
+        "muls r5, r3, r5\n\t asrs r5, r5, #23\n\t adds r3, r3, r5\n\t" \
+        "muls r1, r3, r1\n\t lsrs r1, r1, #14\n\t muls r2, r3, r2\n\t lsrs r2, r2, #14\n\t b 54f\n" \
+        "53:\n\t movs r1, #0\n\t movs r2, #0\n" \
+        /* the three levels */ \
+        "54:\n\t ldr r4, [r7, #32]\n\t muls r4, r1, r4\n\t ldr r0, [r7, #36]\n\t muls r0, r2, r0\n\t adds r4, r4, r0\n\t" \
+        "ldr r0, [r7, #40]\n\t asrs r4, r0\n\t ldr r0, [r7, #28]\n\t adds r4, r4, r0\n\t" \
+        "ldr r5, [r7, #48]\n\t muls r5, r1, r5\n\t ldr r0, [r7, #52]\n\t muls r0, r2, r0\n\t adds r5, r5, r0\n\t" \
+        "ldr r0, [r7, #56]\n\t asrs r5, r0\n\t ldr r0, [r7, #44]\n\t adds r5, r5, r0\n\t" \
+        "ldr r6, [r7, #64]\n\t muls r6, r1, r6\n\t ldr r0, [r7, #68]\n\t muls r0, r2, r0\n\t adds r6, r6, r0\n\t" \
+        "ldr r0, [r7, #72]\n\t asrs r6, r0\n\t ldr r0, [r7, #60]\n\t adds r6, r6, r0\n\t bx lr\n"
+#endif
+
+#if FW_FEATURE_SPAN_RGB_CONST
+/* ARMv6-M: the Gouraud levels' rows (span_rgb_const_z2's operations). In a
+ * span's loop r0 the pixel, r1-r3 the levels, r4 z, r5 zoff, r8 the span's
+ * end, r9 dz, r10-r12 the levels' steps. */
+RAS_HOT __attribute__((noinline)) static void fast_rgb_rows(struct frows *P)
 {
-    register struct frgb *r0 __asm__("r0") = P;
+    register struct frows *r0 __asm__("r0") = P;
     __asm__ volatile(
         ".syntax unified\n\t"
         "push {r0}\n"
-        /* a row: its span, or the next row */
-        "1:\n\t ldr r7, [sp]\n\t ldm r7!, {r0, r1}\n\t subs r7, #8\n\t cmp r0, r1\n\t bne 20f\n\t b 9f\n"
-        "20:\n\t ldrh r1, [r0]\n\t lsrs r2, r1, #8\n\t bne 24f\n\t b 8f\n"
-        "24:\n\t"
-        "ldr r3, [r7, #76]\n\t cmp r2, r3\n\t ble 21f\n\t b 9f\n"
-        "21:\n\t str r2, [r7, #92]\n\t ldr r3, [r7, #80]\n\t adds r3, r3, r2\n\t str r3, [r7, #80]\n\t"
-        "uxtb r1, r1\n\t"
-        /* the pixel, z = zq + lo gxq + ((zf + lo gxf) >> 16), the edge values */
-        "ldr r3, [r7, #24]\n\t lsls r0, r1, #1\n\t adds r3, r3, r0\n\t mov r8, r3\n\t"
-        "ldr r4, [r7, #52]\n\t muls r4, r1, r4\n\t ldr r5, [r7, #12]\n\t adds r4, r4, r5\n\t lsrs r4, r4, #16\n\t"
-        "ldr r5, [r7, #48]\n\t muls r5, r1, r5\n\t adds r4, r4, r5\n\t ldr r5, [r7, #8]\n\t adds r4, r4, r5\n\t mov r9, r4\n\t"
-        "ldr r5, [r7, #56]\n\t muls r5, r1, r5\n\t ldr r6, [r7, #16]\n\t adds r5, r5, r6\n\t mov r10, r5\n\t"
-        "ldr r6, [r7, #60]\n\t muls r6, r1, r6\n\t ldr r0, [r7, #20]\n\t adds r6, r6, r0\n\t mov r11, r6\n\t"
-        "cmp r2, #2\n\t bgt 30f\n"
+        FROWS_SPAN
         /* one or two pixels: each one's depth test, then its levels at a point */
         "22:\n\t mov r0, r9\n\t lsrs r0, r0, #16\n\t mov r3, r8\n\t ldr r1, [r7, #68]\n\t ldrh r2, [r3, r1]\n\t"
         "cmp r0, r2\n\t bls 23f\n\t strh r0, [r3, r1]\n\t"
@@ -1114,30 +1155,95 @@ RAS_HOT __attribute__((noinline)) static void fast_rgb_rows(struct frgb *P)
         "lsrs r6, r1, #16\n\t lsls r6, r6, #11\n\t lsrs r7, r2, #16\n\t lsls r7, r7, #5\n\t orrs r6, r7\n\t"
         "lsrs r7, r3, #16\n\t orrs r6, r7\n\t strh r6, [r0]\n"
         "32:\n\t adds r0, #2\n\t add r4, r9\n\t add r1, r10\n\t add r2, r11\n\t add r3, r12\n\t cmp r0, r8\n\t bne 31b\n"
-        /* the next row: the plane, the edge values, the pixel */
-        "8:\n\t ldr r7, [sp]\n\t ldr r0, [r7, #0]\n\t adds r0, #2\n\t str r0, [r7, #0]\n\t"
-        "adds r7, #8\n\t ldm r7!, {r0, r1, r2, r3, r4}\n\t ldm r7!, {r5, r6}\n\t adds r0, r0, r5\n\t adds r1, r1, r6\n\t"
-        "ldm r7!, {r5, r6}\n\t adds r2, r2, r5\n\t adds r3, r3, r6\n\t ldm r7!, {r5}\n\t adds r4, r4, r5\n\t"
-        "subs r7, #40\n\t stm r7!, {r0, r1, r2, r3, r4}\n\t b 1b\n"
-        /* the point's levels: persp_at's operations */
-        "50:\n\t ldr r0, [r7, #0]\n\t lsrs r1, r0\n\t lsrs r2, r0\n\t ldr r0, [r7, #12]\n\t subs r0, r0, r1\n\t subs r0, r0, r2\n\t"
-        "ldr r3, [r7, #16]\n\t muls r0, r3, r0\n\t ldr r3, [r7, #20]\n\t muls r1, r3, r1\n\t ldr r3, [r7, #24]\n\t muls r2, r3, r2\n\t"
-        "adds r0, r0, r1\n\t adds r0, r0, r2\n\t ldr r3, [r7, #4]\n\t lsrs r0, r3\n\t beq 53f\n\t lsrs r1, r3\n\t lsrs r2, r3\n\t"
-        "movs r3, #1\n\t lsls r3, r3, #14\n\t cmp r0, r3\n\t bhs 52f\n"
-        "51:\n\t lsls r0, r0, #1\n\t lsls r1, r1, #1\n\t lsls r2, r2, #1\n\t cmp r0, r3\n\t blo 51b\n"
-        /* rcp30 */
-        "52:\n\t lsrs r3, r0, #6\n\t lsls r3, r3, #1\n\t ldr r4, [sp]\n\t ldr r4, [r4, #84]\n\t ldrh r3, [r4, r3]\n\t"
-        "movs r4, r3\n\t muls r4, r0, r4\n\t movs r5, #1\n\t lsls r5, r5, #30\n\t subs r5, r5, r4\n\t asrs r5, r5, #7\n\t"
-        "muls r5, r3, r5\n\t asrs r5, r5, #23\n\t adds r3, r3, r5\n\t"
-        "muls r1, r3, r1\n\t lsrs r1, r1, #14\n\t muls r2, r3, r2\n\t lsrs r2, r2, #14\n\t b 54f\n"
-        "53:\n\t movs r1, #0\n\t movs r2, #0\n"
-        /* the three levels */
-        "54:\n\t ldr r4, [r7, #32]\n\t muls r4, r1, r4\n\t ldr r0, [r7, #36]\n\t muls r0, r2, r0\n\t adds r4, r4, r0\n\t"
-        "ldr r0, [r7, #40]\n\t asrs r4, r0\n\t ldr r0, [r7, #28]\n\t adds r4, r4, r0\n\t"
-        "ldr r5, [r7, #48]\n\t muls r5, r1, r5\n\t ldr r0, [r7, #52]\n\t muls r0, r2, r0\n\t adds r5, r5, r0\n\t"
-        "ldr r0, [r7, #56]\n\t asrs r5, r0\n\t ldr r0, [r7, #44]\n\t adds r5, r5, r0\n\t"
-        "ldr r6, [r7, #64]\n\t muls r6, r1, r6\n\t ldr r0, [r7, #68]\n\t muls r0, r2, r0\n\t adds r6, r6, r0\n\t"
-        "ldr r0, [r7, #72]\n\t asrs r6, r0\n\t ldr r0, [r7, #60]\n\t adds r6, r6, r0\n\t bx lr\n"
+        FROWS_NEXT_ROW
+        FROWS_POINT3
+        "9:\n\t add sp, #4\n\t"
+        ".syntax divided\n"
+        : "+l"(r0)
+        :
+        : "r1", "r2", "r3", "r4", "r5", "r6", "r7", "r8", "r9", "r10", "r11", "r12", "lr", "cc", "memory");
+}
+#endif
+
+#if FW_FEATURE_SPAN_LI_TEX
+/* ARMv6-M: the rows of a scanned triangle of a nearest texture lit by
+ * Gouraud intensity with 16-bit depth entries (span_li_tex_z2's
+ * operations row after row in one loop: the same bits), without a call a
+ * span; fast_rgb_rows' walk, block and point (u, v and the intensity for
+ * the three levels). A lit texel: each channel c times ii = li >> 8 (Q12),
+ * (c ii + 2^11) >> 12 as ((c ii >> 11) + 1) >> 1 (c ii < 63 2^24: no
+ * wrap), clamped to its top level. Registers in a span's loop: r0 the
+ * pixel, r1 zoff, r2 the texels, r3 vm, r4-r7 scratch, r8 the span's end,
+ * r9 z, r10 u << 1, r11 v << vs, r12 li, lr dz; on the stack um and the
+ * steps of u << 1, v << vs and li. */
+RAS_HOT __attribute__((noinline)) static void fast_tex_rows(struct frows *P)
+{
+    register struct frows *r0 __asm__("r0") = P;
+    __asm__ volatile(
+        ".syntax unified\n\t"
+        "push {r0}\n"
+        FROWS_SPAN
+        /* one or two pixels: each one's depth test, then its texel at a point */
+        "22:\n\t mov r0, r9\n\t lsrs r0, r0, #16\n\t mov r3, r8\n\t ldr r1, [r7, #68]\n\t ldrh r2, [r3, r1]\n\t"
+        "cmp r0, r2\n\t bls 23f\n\t strh r0, [r3, r1]\n\t"
+        "mov r1, r10\n\t mov r2, r11\n\t ldr r7, [r7, #72]\n\t bl 50f\n\t ldr r7, [sp]\n\t"
+        /* the texel at ((u << 1) >> 16 & um) | ((v << vs) >> 16 & vm) bytes */
+        "lsls r4, r4, #1\n\t lsrs r4, r4, #16\n\t ldr r0, [r7, #112]\n\t ands r4, r0\n\t"
+        "ldr r0, [r7, #120]\n\t lsls r5, r0\n\t lsrs r5, r5, #16\n\t ldr r0, [r7, #116]\n\t ands r5, r0\n\t"
+        "orrs r4, r5\n\t ldr r0, [r7, #108]\n\t ldrh r4, [r0, r4]\n\t lsrs r6, r6, #8\n\t"
+        /* lit: r0 red, r1 green, r4 blue */
+        "lsrs r0, r4, #11\n\t muls r0, r6, r0\n\t lsrs r0, r0, #11\n\t adds r0, #1\n\t lsrs r0, r0, #1\n\t"
+        "cmp r0, #31\n\t bls 26f\n\t movs r0, #31\n"
+        "26:\n\t lsls r1, r4, #21\n\t lsrs r1, r1, #26\n\t muls r1, r6, r1\n\t lsrs r1, r1, #11\n\t adds r1, #1\n\t"
+        "lsrs r1, r1, #1\n\t cmp r1, #63\n\t bls 27f\n\t movs r1, #63\n"
+        "27:\n\t lsls r0, r0, #6\n\t orrs r0, r1\n\t"
+        "lsls r4, r4, #27\n\t lsrs r4, r4, #27\n\t muls r4, r6, r4\n\t lsrs r4, r4, #11\n\t adds r4, #1\n\t"
+        "lsrs r4, r4, #1\n\t cmp r4, #31\n\t bls 28f\n\t movs r4, #31\n"
+        "28:\n\t lsls r0, r0, #5\n\t orrs r0, r4\n\t mov r3, r8\n\t strh r0, [r3]\n"
+        "23:\n\t ldr r0, [r7, #92]\n\t subs r0, #1\n\t bne 25f\n\t b 8f\n"
+        "25:\n\t str r0, [r7, #92]\n\t"
+        "mov r3, r8\n\t adds r3, #2\n\t mov r8, r3\n\t"
+        "ldr r1, [r7, #64]\n\t add r9, r1\n\t ldr r1, [r7, #56]\n\t add r10, r1\n\t ldr r1, [r7, #60]\n\t add r11, r1\n\t"
+        "b 22b\n"
+        /* three pixels or more (at most a segment): the first point's u, v,
+         * li, the last one's, the steps by span_mul_inv's products */
+        "30:\n\t mov r1, r10\n\t mov r2, r11\n\t ldr r7, [r7, #72]\n\t bl 50f\n\t"
+        "ldr r7, [sp]\n\t str r4, [r7, #96]\n\t str r5, [r7, #100]\n\t str r6, [r7, #104]\n\t"
+        "ldr r0, [r7, #92]\n\t subs r0, #1\n\t"
+        "ldr r1, [r7, #56]\n\t muls r1, r0, r1\n\t add r1, r10\n\t"
+        "ldr r2, [r7, #60]\n\t muls r2, r0, r2\n\t add r2, r11\n\t"
+        "ldr r7, [r7, #72]\n\t bl 50f\n\t"
+        "ldr r7, [sp]\n\t ldr r0, [r7, #92]\n\t subs r0, #1\n\t lsls r0, r0, #2\n\t ldr r1, [r7, #88]\n\t ldr r0, [r1, r0]\n\t"
+        "ldr r1, [r7, #96]\n\t subs r4, r4, r1\n\t asrs r2, r4, #16\n\t muls r2, r0, r2\n\t uxth r4, r4\n\t muls r4, r0, r4\n\t"
+        "lsrs r4, r4, #16\n\t adds r4, r4, r2\n\t"
+        "ldr r1, [r7, #100]\n\t subs r5, r5, r1\n\t asrs r2, r5, #16\n\t muls r2, r0, r2\n\t uxth r5, r5\n\t muls r5, r0, r5\n\t"
+        "lsrs r5, r5, #16\n\t adds r5, r5, r2\n\t"
+        "ldr r1, [r7, #104]\n\t subs r6, r6, r1\n\t asrs r2, r6, #16\n\t muls r2, r0, r2\n\t uxth r6, r6\n\t muls r6, r0, r6\n\t"
+        "lsrs r6, r6, #16\n\t adds r6, r6, r2\n\t"
+        /* on the stack um, the steps of u << 1, v << vs, li; then the first
+         * point's values, dz, the span's end, zoff, the texels, vm */
+        "lsls r4, r4, #1\n\t ldr r1, [r7, #120]\n\t lsls r5, r1\n\t ldr r3, [r7, #112]\n\t push {r3, r4, r5, r6}\n\t"
+        "ldr r4, [r7, #96]\n\t lsls r4, r4, #1\n\t mov r10, r4\n\t"
+        "ldr r4, [r7, #100]\n\t lsls r4, r1\n\t mov r11, r4\n\t"
+        "ldr r4, [r7, #104]\n\t mov r12, r4\n\t ldr r4, [r7, #64]\n\t mov lr, r4\n\t"
+        "mov r0, r8\n\t ldr r4, [r7, #92]\n\t lsls r4, r4, #1\n\t adds r4, r0, r4\n\t mov r8, r4\n\t"
+        "ldr r1, [r7, #68]\n\t ldr r2, [r7, #108]\n\t ldr r3, [r7, #116]\n"
+        /* the pixels: raster_span.h's loop of the lit texture */
+        "31:\n\t mov r4, r9\n\t lsrs r4, r4, #16\n\t ldrh r5, [r0, r1]\n\t cmp r4, r5\n\t bls 32f\n\t strh r4, [r0, r1]\n\t"
+        "mov r4, r11\n\t lsrs r4, r4, #16\n\t ands r4, r3\n\t mov r5, r10\n\t lsrs r5, r5, #16\n\t ldr r6, [sp, #0]\n\t"
+        "ands r5, r6\n\t orrs r4, r5\n\t ldrh r4, [r2, r4]\n\t mov r5, r12\n\t lsrs r5, r5, #8\n\t"
+        "lsrs r6, r4, #11\n\t muls r6, r5, r6\n\t lsrs r6, r6, #11\n\t adds r6, #1\n\t lsrs r6, r6, #1\n\t"
+        "cmp r6, #31\n\t bls 33f\n\t movs r6, #31\n"
+        "33:\n\t lsls r7, r4, #21\n\t lsrs r7, r7, #26\n\t muls r7, r5, r7\n\t lsrs r7, r7, #11\n\t adds r7, #1\n\t"
+        "lsrs r7, r7, #1\n\t cmp r7, #63\n\t bls 34f\n\t movs r7, #63\n"
+        "34:\n\t lsls r6, r6, #6\n\t orrs r6, r7\n\t"
+        "lsls r4, r4, #27\n\t lsrs r4, r4, #27\n\t muls r4, r5, r4\n\t lsrs r4, r4, #11\n\t adds r4, #1\n\t"
+        "lsrs r4, r4, #1\n\t cmp r4, #31\n\t bls 35f\n\t movs r4, #31\n"
+        "35:\n\t lsls r6, r6, #5\n\t orrs r6, r4\n\t strh r6, [r0]\n"
+        "32:\n\t adds r0, #2\n\t add r9, lr\n\t ldr r4, [sp, #4]\n\t add r10, r4\n\t ldr r4, [sp, #8]\n\t add r11, r4\n\t"
+        "ldr r4, [sp, #12]\n\t add r12, r4\n\t cmp r0, r8\n\t bne 31b\n\t add sp, #16\n"
+        FROWS_NEXT_ROW
+        FROWS_POINT3
         "9:\n\t add sp, #4\n\t"
         ".syntax divided\n"
         : "+l"(r0)
@@ -1224,12 +1330,14 @@ static uint32_t fast_run_spans(const struct ras_ctx *rc, struct fstate *S)
     return total;
 }
 
-#if FW_FEATURE_SPAN_RGB_CONST
-/* fast_rows(rc, S, 1) of a scanned triangle of Gouraud levels with 16-bit
- * depth entries whose plane has its 32-bit form (board outputs): its spans
- * by fast_scan_spans, then its rows in one loop (fast_rgb_rows), a span
- * longer than a segment by the span loop. */
-__attribute__((noinline)) static uint32_t fast_run_rgb(const struct ras_ctx *rc, struct fstate *S)
+#if FW_FEATURE_SPAN_RGB_CONST || FW_FEATURE_SPAN_LI_TEX
+/* fast_rows(rc, S, 1) of a scanned triangle with 16-bit depth entries whose
+ * plane has its 32-bit form (board outputs) for a row loop of struct
+ * frows' block (rows: fast_rgb_rows, fast_tex_rows; tex: whether it reads
+ * the texture's fields): its spans by fast_scan_spans, then its rows in
+ * one loop, a span longer than a segment by the span loop fn. */
+RAS_ALWAYS_INLINE uint32_t fast_run_rows(const struct ras_ctx *rc, struct fstate *S, void (*rows)(struct frows *),
+                                         const span_fn fn, const int tex)
 {
     const struct render_target *t = rc->cur.t;
     const int32_t r0 = S->row, r1 = S->last < (int32_t)t->y1 - 1 ? S->last : (int32_t)t->y1 - 1;
@@ -1239,21 +1347,20 @@ __attribute__((noinline)) static uint32_t fast_run_rgb(const struct ras_ctx *rc,
     }
     struct fscan P;
     uint16_t sp[RAS_SCAN_MAX / 2];
-    const uint32_t rows = (uint32_t)(r1 - r0 + 1);
-    fscan_begin(rc, S, &P, r0, rows);
+    const uint32_t rows_n = (uint32_t)(r1 - r0 + 1);
+    fscan_begin(rc, S, &P, r0, rows_n);
     uint16_t *const prow = P.prow;
     P.spans = sp;
     fast_scan_spans(&P);
     S->wb[0] = P.wb[0];
     S->wb[1] = P.wb[1];
     S->wb[2] = P.wb[2];
-    const span_fn fn = ras_span_board[SPAN_SHADE_RGB][SPAN_SRC_CONST][1];
     struct frow R;
     R.dz = S->dz;
     R.rgb888 = R.written = NULL;
-    struct frgb G;
+    struct frows G;
     G.sp = sp;
-    G.spe = sp + rows;
+    G.spe = sp + rows_n;
     G.zq = S->zhi;
     G.zf = S->zfrac;
     G.w1 = S->wr[1];
@@ -1275,8 +1382,16 @@ __attribute__((noinline)) static uint32_t fast_run_rgb(const struct ras_ctx *rc,
     G.total = 0;
     G.rcp = (uint32_t)(uintptr_t)rcp_tab - 512u;
     G.inv = fast_inv_tab;
+    if (tex) {
+        /* raster_span.h's byte offsets of a texel: u doubled, v times twice the width */
+        const struct ras_fast_tri *ft = S->T.ft;
+        G.tex = (const uint8_t *)ft->tex;
+        G.um = ft->wmask << 1;
+        G.vm = ft->hmask << (ft->wlog2 + 1);
+        G.vs = ft->wlog2 + 1;
+    }
     for (;;) {
-        fast_rgb_rows(&G);
+        rows(&G);
         if (G.sp == G.spe) break;
         const uint32_t s = *G.sp, lo = s & 255u;
         const size_t idx = (size_t)(G.prow - t->rgb565) + lo;
@@ -1302,6 +1417,23 @@ __attribute__((noinline)) static uint32_t fast_run_rgb(const struct ras_ctx *rc,
     S->wr[2] = G.w2;
     S->row = r1 + 1;
     return G.total;
+}
+#endif
+
+#if FW_FEATURE_SPAN_RGB_CONST
+/* fast_run_rows of Gouraud levels (fast_rgb_rows). */
+__attribute__((noinline)) static uint32_t fast_run_rgb(const struct ras_ctx *rc, struct fstate *S)
+{
+    return fast_run_rows(rc, S, fast_rgb_rows, ras_span_board[SPAN_SHADE_RGB][SPAN_SRC_CONST][1], 0);
+}
+#endif
+
+#if FW_FEATURE_SPAN_LI_TEX
+/* fast_run_rows of a nearest texture lit by Gouraud intensity
+ * (fast_tex_rows). */
+__attribute__((noinline)) static uint32_t fast_run_tex(const struct ras_ctx *rc, struct fstate *S)
+{
+    return fast_run_rows(rc, S, fast_tex_rows, ras_span_board[SPAN_SHADE_LI][SPAN_SRC_TEX][1], 1);
 }
 #endif
 
@@ -1342,15 +1474,16 @@ __attribute__((noinline)) static uint32_t fast_run_flat(const struct ras_ctx *rc
 #define RAS_SCAN_FLAT_V6M 0
 #endif
 
-/* 1 when fast_run_flat (shade SPAN_SHADE_NONE) or fast_run_rgb
- * (SPAN_SHADE_RGB) draws S's rows. */
-static inline int fast_const(const struct ras_ctx *rc, const struct fstate *S)
+/* 1 when fast_run_flat (shade SPAN_SHADE_NONE, src SPAN_SRC_CONST),
+ * fast_run_rgb (SPAN_SHADE_RGB, SPAN_SRC_CONST) or fast_run_tex
+ * (SPAN_SHADE_LI, SPAN_SRC_TEX) draws S's rows. */
+static inline int fast_scan16(const struct ras_ctx *rc, const struct fstate *S)
 {
     return S->scan && S->z32 &&
 #if RENDER_HOST_OUTPUTS
            rc->cur.t->rgb888 == NULL && rc->cur.t->written == NULL &&
 #endif
-           rc->depth_bytes == 2 && S->src == SPAN_SRC_CONST;
+           rc->depth_bytes == 2;
 }
 
 static uint32_t fast_run(const struct ras_ctx *rc, struct fstate *S, const int kept)
@@ -1379,15 +1512,20 @@ int32_t ras_fast_fill(struct ras_ctx *rc, const struct ras_sv *v0, const struct 
         return r;
     }
 #if RAS_SCAN_FLAT_V6M
-    /* (fast_run_flat and fast_run_rgb called straight: none of fast_run's frame) */
+    /* (fast_run_flat, fast_run_rgb and fast_run_tex called straight: none
+     * of fast_run's frame) */
     uint32_t drawn;
-    if (!fast_const(rc, S))
+    if (!fast_scan16(rc, S))
         drawn = fast_run(rc, S, keep != NULL);
-    else if (S->shade == SPAN_SHADE_NONE)
+    else if (S->src == SPAN_SRC_CONST && S->shade == SPAN_SHADE_NONE)
         drawn = fast_run_flat(rc, S, keep != NULL);
 #if FW_FEATURE_SPAN_RGB_CONST
-    else if (S->shade == SPAN_SHADE_RGB)
+    else if (S->src == SPAN_SRC_CONST && S->shade == SPAN_SHADE_RGB)
         drawn = fast_run_rgb(rc, S);
+#endif
+#if FW_FEATURE_SPAN_LI_TEX
+    else if (S->src == SPAN_SRC_TEX && S->shade == SPAN_SHADE_LI)
+        drawn = fast_run_tex(rc, S);
 #endif
     else
         drawn = fast_run(rc, S, keep != NULL);

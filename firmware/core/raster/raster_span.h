@@ -211,6 +211,45 @@ RAS_HOT static uint32_t SPAN_NAME(const struct ftri *T, const struct frow *R)
                 :
                 : "r8", "r9", "r10", "r11", "r12", "cc", "memory");
         }
+#elif SPAN_SHADE == SPAN_SHADE_NONE && SPAN_SRC == SPAN_SRC_TEX && SPAN_DEPTH == 2 && !SPAN_HOST && \
+    defined(__ARM_ARCH_6M__) && defined(__GNUC__)
+        {
+            /* ARMv6-M: the loop below by hand (the same operations as the C
+             * loop, so the same bits). r0 the pixel, r1 the depth entry's
+             * offset from it, r2 the texels, r3 um, r4 vm, r5, r6 scratch,
+             * r7 z, r8 the span's end, r9 u, r10 v, r11 du, r12 dv, lr dz
+             * (the span's end, the steps, u and v handed over in st). */
+            uint16_t *px0 = px;
+            uint32_t st[6] = { (uint32_t)(uintptr_t)pe, du, dv, dz, u, v };
+            register uint32_t r0 __asm__("r0") = (uint32_t)(uintptr_t)px;
+            register uint32_t r1 __asm__("r1") = (uint32_t)(uintptr_t)zp - (uint32_t)(uintptr_t)px;
+            register uint32_t r2 __asm__("r2") = (uint32_t)(uintptr_t)tex;
+            register uint32_t r3 __asm__("r3") = um;
+            register uint32_t r4 __asm__("r4") = vm;
+            register uint32_t r5 __asm__("r5") = (uint32_t)(uintptr_t)st;
+            register uint32_t r6 __asm__("r6") = 0;
+            register uint32_t r7 __asm__("r7") = z;
+            __asm__ volatile(
+                ".syntax unified\n\t"
+                "ldr r6, [r5, #0]\n\t mov r8, r6\n\t ldr r6, [r5, #4]\n\t mov r11, r6\n\t"
+                "ldr r6, [r5, #8]\n\t mov r12, r6\n\t ldr r6, [r5, #12]\n\t mov lr, r6\n\t"
+                "ldr r6, [r5, #16]\n\t mov r9, r6\n\t ldr r6, [r5, #20]\n\t mov r10, r6\n\t"
+                "cmp r0, r8\n\t beq 3f\n"
+                /* depth */
+                "1:\n\t lsrs r5, r7, #16\n\t ldrh r6, [r0, r1]\n\t cmp r5, r6\n\t bls 2f\n\t strh r5, [r0, r1]\n\t"
+                /* the texel at ((v >> 16) & vm) | ((u >> 16) & um) bytes */
+                "mov r5, r10\n\t lsrs r5, r5, #16\n\t ands r5, r4\n\t mov r6, r9\n\t lsrs r6, r6, #16\n\t"
+                "ands r6, r3\n\t orrs r5, r6\n\t ldrh r5, [r2, r5]\n\t strh r5, [r0]\n"
+                "2:\n\t adds r0, #2\n\t add r7, lr\n\t add r9, r11\n\t add r10, r12\n\t cmp r0, r8\n\t bne 1b\n"
+                "3:\n\t"
+                ".syntax divided\n"
+                : "+l"(r0), "+l"(r1), "+l"(r2), "+l"(r3), "+l"(r4), "+l"(r5), "+l"(r6), "+l"(r7)
+                :
+                : "r8", "r9", "r10", "r11", "r12", "lr", "cc", "memory");
+            px = (uint16_t *)(uintptr_t)r0;
+            z = r7;
+            zp += px - px0;
+        }
 #elif SPAN_SHADE == SPAN_SHADE_NONE && SPAN_SRC == SPAN_SRC_TEXBL && SPAN_DEPTH == 2 && !SPAN_HOST && \
     defined(__ARM_ARCH_6M__) && defined(__GNUC__)
         {

@@ -181,12 +181,10 @@ static int shadow_pair_clear(const struct rt_object *oj, const struct rt_object 
 
 int rt_shadow_masks_fit(const struct scene *s)
 {
-#if NUM_MODE == NUM_MODE_FIXED && NUM_FRAC >= 14
-    return s->ncsg == 0 && s->nobjects >= 1 && s->nobjects <= 32;
-#else
-    (void)s;
-    return 0;
-#endif
+    /* The same in every number mode and format: scenec sizes the work
+     * memory once, with the fixed-point core at NUM_FRAC 12 (an upper bound
+     * of the other formats' sizes), where the masks themselves are not made. */
+    return s->ncsg == 0 && s->rt.shadows && s->nobjects >= 1 && s->nobjects <= 32;
 }
 
 void rt_shadow_masks(struct rt_state *rt)
@@ -211,6 +209,8 @@ void rt_shadow_masks(struct rt_state *rt)
             rt->shadow_mask[(size_t)j * s->nlights + k] = m;
         }
     }
+#else
+    rt->shadow_mask = NULL; /* its words stay unused in this mode */
 #endif
 }
 

@@ -158,7 +158,8 @@ static int shadow_pair_clear(const struct rt_object *oj, const struct rt_object 
     uint64_t mraw = 25u * (uint64_t)xi * xi + 100u * (uint64_t)xi + 168u;   /* 4 (...) in ulps */
     uint64_t m = ((mraw << NUM_FRAC) / (2u * (uint64_t)(uint32_t)os->radius)) + 1u;
     if (m >= (uint64_t)NUM_C(64.0)) return 0;
-    num eps = (num)m + ((NUM_ONE + os->radius + x + al) >> 10) + 1;
+    /* |a| may lie near the range's end: the sum in 64 bits */
+    num eps = (num)m + (num)(((int64_t)NUM_ONE + os->radius + x + al) >> 10) + 1;
     num big = os->radius + rho + eps;   /* below 2^14 scene units */
     wnum lhs, rhs;
     if (wa < -(wnum)16) {

@@ -61,3 +61,14 @@ if [ -n "$c1" ] && [ -n "$c03" ] && [ "$c03" -gt $((c1 / 2 * 3)) ]; then
 else
   echo "FAIL rp2040sim_dual_slow_core1_slows_the_frame: ${c1:-?} -> ${c03:-?} cycles"
 fi
+# each core's deepest stack in the raytracer-02 frame (rp2040sim's
+# stack_bytes): both measured, and within the 8 KB stacks (core 0's SCRATCH
+# banks, core 1's core1_stack) with 1 KB to spare for what the frame does
+# not exercise (an exception stacked at the deepest point, the fault report)
+st=$(sed -n 's/.*"stack_bytes":\[\([0-9]*\),\([0-9]*\)\].*/\1 \2/p' "$t/book-1.json")
+set -- $st
+if [ $# -eq 2 ] && [ "$1" -gt 0 ] && [ "$2" -gt 0 ] && [ "$1" -le 7168 ] && [ "$2" -le 7168 ]; then
+  echo "PASS rp2040sim_dual_stacks_fit ($1 and $2 bytes of 8192)"
+else
+  echo "FAIL rp2040sim_dual_stacks_fit: stack_bytes '${st:-?}' (each in 1..7168)"
+fi

@@ -49,12 +49,13 @@ enum { W = 240, H = 240, STRIP = 16 };
 /* Renders frame 0 of path with api into rgb888 (W*H*3). Returns 0, 1 when the
  * scene does not load (out of range for the format, message in err), -1 on a
  * render error. *sat gets the saturations counted while rendering. */
-static int render(const struct core_api *api, const char *path, uint8_t *rgb888, uint32_t *sat, char *err,
-                  size_t errlen)
+static int render(const struct core_api *api, const char *path, uint8_t *rgb888, uint32_t *sat, size_t *wsz,
+                  char *err, size_t errlen)
 {
     void *s = NULL;
     if (api->scene_load(path, &s, err, errlen)) return 1;
     size_t ws = api->work_size(s, W, H, STRIP);
+    *wsz = ws;
     void *work = aligned_alloc(8, (ws + 7) & ~(size_t)7);
     static uint16_t px565[W * STRIP];
     struct render_ctx ctx;
@@ -94,7 +95,9 @@ int main(int argc, char **argv)
         }
         const char *base = strstr(path, "scenes/") ? strstr(path, "scenes/") + 7 : path;
         uint32_t sat;
-        if (render(&core_api_double, path, ref, &sat, err, sizeof err)) {
+        size_t ws, ws12 = 0, wsmax = 0;
+        int fmax = 0;
+        if (render(&core_api_double, path, ref, &sat, &ws, err, sizeof err)) {
             check(0, "scene_fracs_double", "%s: %s", path, err);
             continue;
         }
@@ -113,7 +116,11 @@ int main(int argc, char **argv)
         for (size_t c = 0; c < NCORES; c++) {
             int f = cores[c].frac;
             snprintf(name, sizeof name, "scene_frac%d_%.*s", f, (int)(strlen(base) - 6), base);
-            int rc = render(cores[c].api, path, img, &sat, err, sizeof err);
+            int rc = render(cores[c].api, path, img, &sat, &ws, err, sizeof err);
+            if (rc != 1) {
+                if (f == 12) ws12 = ws;
+                if (ws > wsmax) { wsmax = ws; fmax = f; }
+            }
             if (rc == 1) {
                 if (report) printf("%-28.*s %4d  out of range: %s\n", (int)(strlen(base) - 6), base, f, err);
                 continue;
@@ -137,6 +144,17 @@ int main(int argc, char **argv)
                   r16.ssim, r.pct_within2, r.max_err, (unsigned)sat);
             if (ok) printf("# %s: ssim %.5f (Q15.16 %.5f), %.3f%% within 2 levels, %u saturations\n", name, r.ssim,
                            r16.ssim, r.pct_within2, (unsigned)sat);
+        }
+        /* scenec sizes a scene's work memory once, with the core built at
+         * NUM_FRAC 12 (tools/scenec/work_probe.c), for whichever format it
+         * chooses: that holds only while no format needs more work than
+         * NUM_FRAC 12's. Checked here on the host's core at every format
+         * that holds the scene (the layout's choices are the target's; only
+         * the sizes of pointers differ). */
+        if (!report) {
+            snprintf(name, sizeof name, "scene_work_frac12_bound_%.*s", (int)(strlen(base) - 6), base);
+            check(ws12 > 0 && wsmax <= ws12, name, "NUM_FRAC 12 needs %zu bytes of work, NUM_FRAC %d %zu", ws12, fmax,
+                  wsmax);
         }
     }
     return report ? 0 : check_exit();

@@ -60,6 +60,10 @@ class DualCore {
     this.boot = { seq: 0, words: [] }; /* core 1's boot ROM state */
     this.cur = 0;
     this.launchCount = 0;
+    /* each core's stack: its top (the SP it started the application with)
+     * and the lowest SP an instruction ran with since (stackPeak) */
+    this.spTop = [0, 0];
+    this.spLow = [0, 0];
 
     /* SIO: one RPSIO per core for its divider and interpolators; the
      * shared one (core 0's, the package's own) keeps GPIO and spinlocks */
@@ -194,6 +198,7 @@ class DualCore {
     c1.PC = (pc & ~1) >>> 0;
     c1.waiting = false;
     this.launched[1] = true;
+    this.stackMark(1);
     this.local[1] = Math.max(this.local[1], this.local[0]);
     this.launchCount++;
   }
@@ -217,8 +222,20 @@ class DualCore {
     if (was && !c.waiting) this.local[i] = Math.max(this.local[i], this.mcu.clock.nanos);
   }
 
+  /* core i starts its application now: its SP is the stack's top */
+  stackMark(i) {
+    this.spTop[i] = this.spLow[i] = this.cores[i].SP >>> 0;
+  }
+
+  /* the deepest core i's stack has been since stackMark, in bytes */
+  stackPeak(i) {
+    return this.spTop[i] - this.spLow[i];
+  }
+
   /* one instruction of core c: its cycles, flash stalls included */
   step(c) {
+    const sp = c.SP >>> 0;
+    if (sp < this.spLow[this.cur]) this.spLow[this.cur] = sp;
     const prof = this.prof;
     this.xip.charging = true;
     if (!prof) {

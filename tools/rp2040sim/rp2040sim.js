@@ -39,6 +39,12 @@
  *                       xip_misses, xip_stall_cycles: XIP cache misses in the
  *                       frame and the cycles they cost (xip.js), at
  *                       xip_fill_cycles per miss in boot2's read mode;
+ *                       stack_bytes: [core 0, core 1], the deepest each
+ *                       core's stack has been (the lowest SP an instruction
+ *                       ran with, below the SP the core started its
+ *                       application with) from the start to the end of the
+ *                       frame's period (--average: the deepest of the run;
+ *                       0 for a core that never started);
  *                       frame_checksum: FNV-1a of the frame on the glass at
  *                       its last pixel, RGB565 as little-endian bytes (as
  *                       the benchmark images and host_sim --stats sum theirs)
@@ -284,6 +290,8 @@ function main() {
   const ends = [];       /* frames ended before their line arrived */
   let lastBegin = null, lastEnd = null;
   const snap = () => ({ spi: spiBytes, miss: xip.misses, stall: xip.stallTotal });
+  /* each core's deepest stack since it started its application */
+  const stackNow = () => [dual.stackPeak(0), dual.launched[1] ? dual.stackPeak(1) : 0];
   /* T (32 bits of us) as emulated ns: the latest time at or before now */
   const beginNs = (t) => {
     const nowUs = Math.floor(clock.nanos / 1000);
@@ -313,6 +321,7 @@ function main() {
          * in the UART's FIFO in it */
         if (lastBegin) {
           lastBegin.period_ns = t - lastBegin.t_ns;
+          lastBegin.stack = stackNow();
           lastBegin.uart_stall_ns = uartTx.stallAt(t) - uartTx.stallAt(lastBegin.t_ns);
         }
         /* the first frame's tearing counts its own writes, not the start-up's */
@@ -376,6 +385,7 @@ function main() {
     }
   }
   xip.configure();
+  dual.stackMark(0);
   if (prof) prof.on = true;
 
   const t0 = Date.now();
@@ -415,6 +425,7 @@ function main() {
   if (!fwError && cores === 2 && !dual.launched[1]) fwError = 'a two-core image that never started core 1';
   if (!fwError && uartTx.lost) fwError = `${uartTx.lost} character(s) written to a full UART FIFO were lost`;
   frames.length = Math.min(frames.length, o.frames);
+  for (const f of frames) if (!f.stack) f.stack = stackNow();
   if (panel.violation) { process.stderr.write(`rp2040sim: panel protocol violation: ${panel.violation}\n`); process.exit(3); }
   if (fwError) { process.stderr.write(`rp2040sim: ${fwError}\n`); process.exit(1); }
 
@@ -442,7 +453,7 @@ function main() {
         uart_stall_cycles: Math.round(f.uart_stall_ns * cpuHz / 1e9), spi_bytes: f.spi_bytes,
         torn: f.passes > 1, scan_passes: f.passes, shown: f.shown, xip_misses: f.xip_misses, xip_stall_cycles: f.xip_stall_cycles, xip_fill_cycles: xip.fill.cycles,
         ...(f.first_ns !== undefined ? { first_image_us: Math.round(f.first_ns / 1000) } : {}),
-        frame_checksum: fnv565(f.px),
+        stack_bytes: f.stack, frame_checksum: fnv565(f.px),
       }) + '\n');
     }
   });
@@ -471,6 +482,7 @@ function main() {
         xip_misses: Math.round(r.list.reduce((a, f) => a + f.xip_misses, 0) / n),
         xip_stall_cycles: Math.round(r.list.reduce((a, f) => a + f.xip_stall_cycles, 0) / n),
         xip_fill_cycles: xip.fill.cycles,
+        stack_bytes: [0, 1].map((i) => Math.max(...r.list.map((f) => f.stack[i]))),
         ...(r.list[0].first_ns !== undefined
           ? { first_image_us: Math.round(r.list.reduce((a, f) => a + f.first_ns, 0) / n / 1000) } : {}),
       }) + '\n');
